@@ -1,0 +1,184 @@
+// driver.cpp: inputs, outputs, parallel files, notes, --stats and --json for every subcommand.
+#include "driver.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iterator>
+#include <mutex>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "core/error.h"
+#include "io/mesh_io.h"
+#include "usage_error.h"
+
+namespace shadetool_cli {
+
+namespace fs = std::filesystem;
+using shadetool::Format;
+
+void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh) {
+  sub.add_option("inputs", io.inputs, "Input mesh files (OBJ, PLY, OFF, STL); - reads stdin")->required();
+  sub.add_option("--input-format", io.input_format, "Format of the input when it has no extension (stdin)")
+      ->check(CLI::IsMember({"obj", "ply", "off", "stl"}, CLI::ignore_case));
+  if (writes_mesh) {
+    sub.add_option("-o,--output", io.output, "Output file; - writes stdout (then --format is needed)");
+    sub.add_option("--output-dir", io.output_dir, "Write one output per input into DIR, named after the input");
+    sub.add_option("--format", io.format, "Output format: obj, ply, off or stl (default: from -o's extension)")
+        ->check(CLI::IsMember({"obj", "ply", "off", "stl"}, CLI::ignore_case));
+    auto* a = sub.add_flag("--ascii", io.ascii, "Write PLY/STL as text");
+    auto* b = sub.add_flag("--binary", io.binary, "Write PLY/STL as binary (the default)");
+    a->excludes(b);
+  }
+  sub.add_option("-j,--jobs", io.jobs, "Files processed in parallel (default: number of cores)")
+      ->check(CLI::Range(0, 1024));
+  sub.add_flag("--json", io.json, "Print one JSON object per file on stdout (JSON Lines)");
+  sub.add_flag("-q,--quiet", io.quiet, "Print no notes, only errors");
+  sub.add_flag("--stats", io.stats, "Print counts and time per stage (read, compute, write) on stderr");
+}
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string read_stdin() {
+  std::string data;
+  char buf[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, stdin)) > 0) data.append(buf, n);
+  return data;
+}
+
+// Where one input's output goes ("" when the command writes no mesh).
+std::string output_path_for(const IoOptions& io, const std::string& input, bool writes_mesh) {
+  if (!writes_mesh) return {};
+  if (!io.output.empty()) return io.output;
+  const fs::path in = input == "-" ? fs::path("stdin") : fs::path(input);
+  std::string ext = !io.format.empty() ? io.format : in.extension().string();
+  if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
+  if (ext.empty()) ext = io.input_format;
+  return (fs::path(io.output_dir) / in.stem()).string() + "." + ext;
+}
+
+void validate(const IoOptions& io, bool writes_mesh) {
+  if (io.inputs.empty()) throw UsageError("no input given");
+  const auto stdin_inputs = std::count(io.inputs.begin(), io.inputs.end(), std::string("-"));
+  if (stdin_inputs > 1) throw UsageError("stdin (-) can be read only once");
+  if (stdin_inputs == 1 && io.input_format.empty()) throw UsageError("reading stdin (-) needs --input-format");
+  if (!writes_mesh) return;
+  if (!io.output.empty() && !io.output_dir.empty()) throw UsageError("give -o or --output-dir, not both");
+  if (io.output.empty() && io.output_dir.empty()) throw UsageError("no output given: use -o FILE or --output-dir DIR");
+  if (!io.output.empty() && io.inputs.size() > 1)
+    throw UsageError("-o takes one input; use --output-dir DIR for several");
+  if (io.output == "-" && io.format.empty()) throw UsageError("writing stdout (-o -) needs --format");
+  if (io.output == "-" && io.json) throw UsageError("--json and -o - both write stdout; choose one");
+  if (!io.output_dir.empty() && !fs::is_directory(io.output_dir))
+    throw shadetool::Error(shadetool::located(io.output_dir, 0, "output directory does not exist"));
+}
+
+}  // namespace
+
+int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh) {
+  validate(io, writes_mesh);
+
+  std::mutex out_mutex;  // one line at a time on stdout and stderr
+  std::atomic<std::size_t> next{0};
+  std::atomic<int> failures{0};
+  std::vector<std::string> failed;
+
+  auto process = [&](const std::string& input) {
+    nlohmann::json line = {{"command", command}, {"input", input}};
+    const std::string output = output_path_for(io, input, writes_mesh);
+    if (writes_mesh) line["output"] = output;
+    FileResult result;
+    try {
+      auto t0 = std::chrono::steady_clock::now();
+      shadetool::ReadInfo read_info;
+      const Format in_format =
+          io.input_format.empty() ? Format::Auto : shadetool::parse_format_name(io.input_format, "--input-format");
+      shadetool::Mesh mesh = input == "-" ? shadetool::read_mesh_from_memory(read_stdin(), in_format, "stdin", &read_info)
+                                          : shadetool::read_mesh(input, in_format, &read_info);
+      const double read_ms = ms_since(t0);
+      for (auto& n : read_info.notes) result.notes.push_back(n);
+      if (read_info.merged_vertices > 0) result.stats["merged_vertices"] = read_info.merged_vertices;
+
+      t0 = std::chrono::steady_clock::now();
+      step(mesh, input, result);
+      const double compute_ms = ms_since(t0);
+
+      double write_ms = 0;
+      if (writes_mesh) {
+        t0 = std::chrono::steady_clock::now();
+        shadetool::WriteOptions wo;
+        wo.format = io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format");
+        wo.binary = !io.ascii;
+        shadetool::WriteInfo write_info;
+        shadetool::write_mesh(mesh, output, wo, &write_info);
+        write_ms = ms_since(t0);
+        if (write_info.split_vertices > 0) result.stats["split_vertices"] = write_info.split_vertices;
+      }
+      result.stats["vertices"] = mesh.num_vertices();
+      result.stats["faces"] = mesh.num_faces();
+      line["status"] = "ok";
+      line["time_ms"] = {{"read", read_ms}, {"compute", compute_ms}, {"write", write_ms}};
+      line["stats"] = result.stats;
+
+      std::lock_guard<std::mutex> lock(out_mutex);
+      if (!io.quiet)
+        for (auto& n : result.notes) fmt::print(stderr, "shadetool: {}: {}\n", input, n);
+      if (io.stats) {
+        std::string counts;
+        for (auto it = result.stats.begin(); it != result.stats.end(); ++it)
+          counts += fmt::format(" {}={}", it.key(), it.value().is_string() ? it.value().get<std::string>() : it.value().dump());
+        fmt::print(stderr, "shadetool: {}: read {:.1f} ms, compute {:.1f} ms, write {:.1f} ms;{}\n", input, read_ms,
+                   compute_ms, write_ms, counts);
+      }
+      if (!result.text.empty() && !io.json) fmt::print("{}", result.text);
+      if (io.json) {
+        if (!result.notes.empty()) line["notes"] = result.notes;
+        fmt::print("{}\n", line.dump());
+        std::fflush(stdout);
+      }
+    } catch (const std::exception& e) {
+      failures.fetch_add(1);
+      std::lock_guard<std::mutex> lock(out_mutex);
+      failed.push_back(input);
+      fmt::print(stderr, "shadetool: {}\n", e.what());
+      if (io.json) {
+        line["status"] = "error";
+        line["error"] = e.what();
+        fmt::print("{}\n", line.dump());
+        std::fflush(stdout);
+      }
+    }
+  };
+
+  const std::size_t n = io.inputs.size();
+  unsigned jobs = io.jobs > 0 ? unsigned(io.jobs) : std::max(1u, std::thread::hardware_concurrency());
+  jobs = unsigned(std::min<std::size_t>(jobs, n));
+  auto worker = [&] {
+    for (std::size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) process(io.inputs[i]);
+  };
+  if (jobs <= 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    for (unsigned k = 0; k < jobs; ++k) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+  }
+  if (n > 1 && failures > 0 && !io.json) {
+    std::string list;
+    for (auto& f : failed) list += (list.empty() ? "" : ", ") + f;
+    fmt::print(stderr, "shadetool: {} of {} files failed: {}\n", failures.load(), n, list);
+  }
+  return failures > 0 ? kExitFailure : kExitOk;
+}
+
+}  // namespace shadetool_cli

@@ -1,0 +1,90 @@
+// affine.h: 3x3 matrices and affine maps x -> A x + t, composed and applied in double.
+//
+// Normals transform by the cofactor matrix cof(A) = det(A) A^-T (the inverse transpose up to the
+// positive or negative scale det(A)); see the lecture notes in shared/seeds ("Transforming
+// normals": t.n = 0 must survive the map, so n' = A^-T n). The cofactor needs no division, so it
+// stays defined and accurate when A is badly conditioned. When det(A) < 0 (a mirror) cof(A) n
+// points to the other side of the mapped surface: outward normals are sign(det A) cof(A) n, and a
+// mesh's winding must be reversed to keep faces oriented (transform/ does that).
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "core/vec3.h"
+
+namespace shadetool {
+
+// Row-major 3x3: m[r][c].
+struct Mat3d {
+  std::array<std::array<double, 3>, 3> m{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+
+  static Mat3d identity() { return {}; }
+  static Mat3d diagonal(double a, double b, double c) {
+    Mat3d r;
+    r.m = {{{a, 0, 0}, {0, b, 0}, {0, 0, c}}};
+    return r;
+  }
+  Vec3d row(int r) const { return {m[r][0], m[r][1], m[r][2]}; }
+  Vec3d col(int c) const { return {m[0][c], m[1][c], m[2][c]}; }
+};
+
+inline Mat3d operator*(const Mat3d& a, const Mat3d& b) {
+  Mat3d r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
+  return r;
+}
+inline Vec3d operator*(const Mat3d& a, const Vec3d& v) { return {dot(a.row(0), v), dot(a.row(1), v), dot(a.row(2), v)}; }
+
+inline Mat3d transpose(const Mat3d& a) {
+  Mat3d r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r.m[i][j] = a.m[j][i];
+  return r;
+}
+
+inline double determinant(const Mat3d& a) { return dot(a.row(0), cross(a.row(1), a.row(2))); }
+
+// cof(A): entry (i,j) is (-1)^(i+j) times the minor of A without row i and column j.
+// Built from A's columns c0, c1, c2: A^T cof(A) = det(A) I says column j of cof(A) is orthogonal
+// to every column of A but c_j, so column j = c_(j+1) x c_(j+2) (indices mod 3). Exact products,
+// no division: defined for singular A too (where it is the adjugate's transpose).
+inline Mat3d cofactor(const Mat3d& a) {
+  const Vec3d c0 = a.col(0), c1 = a.col(1), c2 = a.col(2);
+  const Vec3d r0 = cross(c1, c2), r1 = cross(c2, c0), r2 = cross(c0, c1);
+  Mat3d r;
+  for (int i = 0; i < 3; ++i) {
+    r.m[i][0] = r0[i];
+    r.m[i][1] = r1[i];
+    r.m[i][2] = r2[i];
+  }
+  return r;
+}
+
+// An affine map p -> A p + t.
+struct Affine3d {
+  Mat3d A = Mat3d::identity();
+  Vec3d t{0, 0, 0};
+};
+
+// (second o first): apply `first`, then `second`.
+inline Affine3d compose(const Affine3d& second, const Affine3d& first) {
+  return {second.A * first.A, second.A * first.t + second.t};
+}
+
+inline Vec3d transform_point(const Affine3d& M, const Vec3d& p) { return M.A * p + M.t; }
+inline Vec3d transform_vector(const Affine3d& M, const Vec3d& v) { return M.A * v; }
+
+// Normal transform, unnormalised: sign(det A) cof(A) n, so outward stays outward also for mirrors
+// (whose faces are re-wound). Pass cof = cofactor(M.A) and its sign once per mesh.
+inline Vec3d transform_normal(const Mat3d& signed_cofactor, const Vec3d& n) { return signed_cofactor * n; }
+inline Mat3d signed_cofactor(const Mat3d& A) {
+  Mat3d c = cofactor(A);
+  if (determinant(A) < 0)
+    for (auto& row : c.m)
+      for (auto& x : row) x = -x;
+  return c;
+}
+
+}  // namespace shadetool

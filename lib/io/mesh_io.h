@@ -1,0 +1,53 @@
+// mesh_io.h: reading and writing meshes (OBJ, PLY, OFF, STL). The only way data enters or leaves.
+//
+// Contract used by every subcommand and by library users:
+//   read_mesh            file -> Mesh; format from the extension unless given
+//   read_mesh_from_memory bytes -> Mesh (stdin, fuzzers); `name` is used in messages
+//   write_mesh           Mesh -> file, atomically: written to a temporary file in the target
+//                        directory and renamed into place; on any error no output file is left and
+//                        an existing file at `path` is untouched. "-" writes to stdout.
+// Errors throw shadetool::Error with `FILE:LINE: what is wrong` (see core/error.h).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/mesh.h"
+
+namespace shadetool {
+
+enum class Format { Auto, Obj, Ply, Off, Stl };
+
+// "obj", "ply", "off", "stl" (any case) -> Format; throws Error naming `what` otherwise.
+Format parse_format_name(const std::string& name, const std::string& what);
+// From the extension of `path`; throws Error `path: unknown mesh format 'EXT' ...` otherwise.
+Format format_from_extension(const std::string& path);
+const char* format_extension(Format format);  // "obj", ... (no dot)
+
+struct ReadInfo {
+  Format format = Format::Auto;
+  std::size_t merged_vertices = 0;  // STL: identical positions merged into shared vertices
+  std::vector<std::string> notes;   // things the user should know (one line each)
+};
+
+Mesh read_mesh(const std::string& path, Format format = Format::Auto, ReadInfo* info = nullptr);
+Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::string& name,
+                           ReadInfo* info = nullptr);
+
+struct WriteOptions {
+  Format format = Format::Auto;  // Auto: from the extension of the path
+  bool binary = true;            // PLY and STL: binary (default) or ascii
+};
+
+struct WriteInfo {
+  std::size_t split_vertices = 0;  // vertices added to carry per-corner normals in PLY/OFF/STL
+};
+
+void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options,
+                WriteInfo* info = nullptr);
+// Writes to a string (tests, pipes). Same bytes write_mesh would put in a file.
+std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info = nullptr);
+
+}  // namespace shadetool
