@@ -1,0 +1,19 @@
+// face_normals.h: one unit normal per face.
+//
+// Inputs:  mesh      positions #V by 3, faces (triangles or polygons)
+//          precision accumulation precision
+// Output:  #F by 3 flat array of unit normals. Triangles: cross product of the two shortest edges
+//          (best conditioned for slivers); polygons: Newell's method. A degenerate face (zero area,
+//          repeated index, non-finite position) gets (0, 0, 0), never NaN.
+#pragma once
+
+#include <vector>
+
+#include "core/mesh.h"
+#include "normals/weighting.h"
+
+namespace shadetool {
+
+std::vector<double> face_normals(const Mesh& mesh, Precision precision = Precision::Double);
+
+}  // namespace shadetool

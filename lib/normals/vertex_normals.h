@@ -1,0 +1,27 @@
+// vertex_normals.h: one unit normal per vertex from the normals of its faces.
+//
+// Inputs:  mesh      positions #V by 3, faces (triangles or polygons)
+//          weighting see normals/weighting.h (default Angle)
+//          precision accumulation precision
+// Output:  normals   #V by 3 flat array of unit normals
+//          fallback_vertices  how many vertices had no valid face (isolated, or only degenerate
+//          faces) and got the documented fallback instead (never NaN)
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/mesh.h"
+#include "normals/weighting.h"
+
+namespace shadetool {
+
+struct VertexNormals {
+  std::vector<double> normals;
+  std::size_t fallback_vertices = 0;
+};
+
+VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting = Weighting::Angle,
+                             Precision precision = Precision::Double);
+
+}  // namespace shadetool
