@@ -29,6 +29,6 @@ for r in rows:
     elif not os.path.getsize(r["output"]): failures.append(f"{r['output']} is empty")
 if len(os.listdir(out)) != n: failures.append(f"{len(os.listdir(out))} outputs for {n} inputs")
 for f in failures: print("FAIL:", f)
-print(f"{n - len(failures) if len(failures) <= n else 0} passed, {len(failures)} failed")
+print(f"{0 if failures else n} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)
 PY
