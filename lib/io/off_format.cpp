@@ -70,8 +70,10 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
     q = skip_spaces(q, e);
     if (q < e && std::string_view(q, std::size_t(e - q)).substr(0, 6) == "BINARY")
       fail(name, lines.line(), "binary OFF is not supported");
-    if (q == e && !lines.next(b, e)) fail(name, lines.line(), "OFF file ends before the counts line");
-    if (q == e) q = b;
+    if (q == e) {  // the counts are on the next line
+      if (!lines.next(b, e)) fail(name, lines.line(), "OFF file ends before the counts line");
+      q = b;
+    }
   }
   const std::size_t counts_line = lines.line();
   std::int64_t counts[3] = {0, 0, 0};
