@@ -22,9 +22,10 @@ std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* wha
   if (idx > 0 && static_cast<std::uint64_t>(idx) <= count) return static_cast<std::uint32_t>(idx - 1);
   if (idx < 0 && static_cast<std::uint64_t>(-idx) <= count) return static_cast<std::uint32_t>(std::int64_t(count) + idx);
   if (idx == 0) fail(name, line, std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
+  const std::string plural = std::string(what) == "vertex" ? "vertices" : std::string(what) + "s";
   fail(name, line,
-       std::string(what) + " index " + std::to_string(idx) + " out of range (" + std::to_string(count) + " " + what +
-           (count == 1 ? "" : "s") + " defined so far)");
+       std::string(what) + " index " + std::to_string(idx) + " out of range (" + std::to_string(count) + " " +
+           (count == 1 ? std::string(what) : plural) + " defined so far)");
 }
 
 }  // namespace
@@ -48,6 +49,7 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
   int color_channels = 0;                      // 3 or 4 once seen
   std::size_t colored_vertices = 0;
   std::vector<std::uint32_t> cn, ct;           // per corner, kNone where absent (allocated lazily)
+  bool have_cn = false, have_ct = false;
   std::size_t corners_with_normal = 0, corners_with_tex = 0;
   std::size_t skipped_lines = 0;
   std::string skipped_keyword;
@@ -128,15 +130,17 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
           }
           if (q < eol && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
           if (nn != kNone) {
-            if (cn.empty()) cn.assign(mesh.corner_vertex.size() - 1, kNone);
+            if (!have_cn) cn.assign(mesh.corner_vertex.size() - 1, kNone);
+            have_cn = true;
             ++corners_with_normal;
           }
-          if (!cn.empty()) cn.push_back(nn);
+          if (have_cn) cn.push_back(nn);
           if (t != kNone) {
-            if (ct.empty()) ct.assign(mesh.corner_vertex.size() - 1, kNone);
+            if (!have_ct) ct.assign(mesh.corner_vertex.size() - 1, kNone);
+            have_ct = true;
             ++corners_with_tex;
           }
-          if (!ct.empty()) ct.push_back(t);
+          if (have_ct) ct.push_back(t);
         }
         const std::size_t size = mesh.corner_vertex.size() - first_corner;
         if (size < 3)

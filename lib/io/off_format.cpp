@@ -54,7 +54,10 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
 
   bool has_st = false, has_c = false, has_n = false;
   const char* q = b;
-  if (!(*b >= '0' && *b <= '9')) {  // the keyword is optional: a file may start with the counts
+  const char* first_end = b;
+  while (first_end < e && *first_end >= '0' && *first_end <= '9') ++first_end;
+  const bool starts_with_counts = first_end > b && (first_end == e || is_space(*first_end));
+  if (!starts_with_counts) {  // the keyword is optional: a file may start with the counts
     const char* kw = b;
     while (q < e && !is_space(*q)) ++q;
     std::string k(kw, q);

@@ -381,7 +381,6 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
   const bool has_vtex = vtex[0] && vtex[1];
   const int channels = ((has_vcolors && vcolor[3]) || (has_fcolors && fcolor[3])) ? 4 : 3;
   const std::uint64_t nv = vertex ? vertex->count : 0;
-  if (nv > std::numeric_limits<std::uint32_t>::max()) fail(name, vertex->line, "too many vertices (more than 2^32)");
 
   // ---- body
   BodyReader in(p, end, enc, name, line + 1);
@@ -393,6 +392,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       fail(name, e.line, "header claims " + std::to_string(e.count) + " " + e.name + " elements but only " +
                              std::to_string(in.remaining()) + " bytes of data follow");
     if (&e == vertex) {
+      if (nv > std::numeric_limits<std::uint32_t>::max()) fail(name, e.line, "too many vertices (more than 2^32)");
       const std::size_t n = std::size_t(e.count);
       mesh.positions.assign(3 * n, 0.0);
       if (has_vnormals) mesh.vertex_normals.assign(3 * n, 0.0);
@@ -434,6 +434,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       std::vector<double> wedge;  // texcoord list of the current face
       std::vector<double> corner_tex;
       for (std::size_t i = 0; i < n; ++i) {
+        if (in.ascii()) in.skip_ascii_space();
         const std::size_t item_line = in.line();
         bool have_wedge = false;
         wedge.clear();
