@@ -63,16 +63,17 @@ inline Mesh read_text(const std::string& text, Format format, ReadInfo* info = n
 }
 
 // A small mesh with everything a reader can keep: a triangle, a quad and a pentagon sharing
-// vertices, values that are not exact in binary (0.1), per-corner normals (a pool shared by some
-// corners), per-corner texcoords, vertex colours and face colours. Values are floats (precision
-// Float) so every format can carry them exactly.
+// edges (consistently wound, manifold, with a boundary), values that are not exact in binary
+// (0.1), per-corner normals (a pool shared by some corners), per-corner texcoords, vertex
+// colours and face colours. Values are floats (precision Float) so every format can carry them
+// exactly.
 inline Mesh rich_mesh() {
   Mesh m;
-  const double P[7][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0.1}, {2.5, 0.5, 0.1}, {-0.3, 0.7, 1e-3}};
+  const double P[7][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0.1}, {2.5, 0.5, 0.1}, {0.5, 2, 1e-3}};
   for (auto& p : P) m.add_vertex({double(float(p[0])), double(float(p[1])), double(float(p[2]))});
   m.add_face({0, 1, 3});
-  m.add_face({1, 2, 3, 6});
-  m.add_face({1, 4, 5, 2, 3});
+  m.add_face({1, 4, 5, 2});
+  m.add_face({3, 1, 2, 5, 6});
   const double N[3][3] = {{0, 0, 1}, {0.6, 0, 0.8}, {0, -0.28, 0.96}};
   for (auto& n : N)
     for (double x : n) m.corner_normals.push_back(double(float(x)));

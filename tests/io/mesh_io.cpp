@@ -103,7 +103,7 @@ TEST_CASE("round trip: PLY binary and ascii, float and double", "[mesh_io][round
       Mesh back = read_mesh(dir / "r.ply");
       CHECK(back.precision == prec);
       check_same_geometry(m, back, true, true, true, true);
-      CHECK(back.num_vertices() == m.num_vertices() + 3);  // the split for corner normals
+      CHECK(back.num_vertices() == m.num_vertices() + 4);  // the split for corner normals
       // vertex order is kept: the first V vertices are the originals
       for (std::size_t v = 0; v < m.num_vertices(); ++v) CHECK(back.position(v) == m.position(v));
     }

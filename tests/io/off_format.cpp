@@ -35,8 +35,8 @@ TEST_CASE("OFF writer: header letters follow the attributes; round trip of colou
   o.format = Format::Off;
   WriteInfo wi;
   const std::string text = write_mesh_to_memory(m, o, &wi);
-  CHECK(text.rfind("CNOFF\n10 3 0\n", 0) == 0);  // corner normals split into 3 more vertices
-  CHECK(wi.split_vertices == 3);
+  CHECK(text.rfind("CNOFF\n11 3 0\n", 0) == 0);  // corner normals split into 4 more vertices
+  CHECK(wi.split_vertices == 4);
   Mesh back = read_text(text, Format::Off);
   CHECK(back.face_colors == m.face_colors);
   for (std::size_t c = 0; c < m.num_corners(); ++c) {
