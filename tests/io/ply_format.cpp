@@ -227,3 +227,34 @@ TEST_CASE("PLY binary: truncated bodies and counts that disagree with the body",
   c.put<std::uint8_t>(200).put<std::int32_t>(0);
   CHECK(err(c.s) == "m.ply: file is truncated: it ends in face 0 of 1");
 }
+
+TEST_CASE("PLY binary fast paths: triangles then a quad, both byte orders, errors mid-stream", "[ply]") {
+  for (bool big : {false, true}) {
+    Bytes b;
+    b.big = big;
+    b.s = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+          " 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+          "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+    for (int i = 0; i < 15; ++i) b.put(float(i) * 0.5f);
+    const std::string vertices = b.s;
+    b.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+    b.put<std::uint8_t>(4).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2).put<std::int32_t>(3);
+    b.put<std::uint8_t>(3).put<std::int32_t>(2).put<std::int32_t>(3).put<std::int32_t>(4);
+    b.put<std::uint8_t>(3).put<std::int32_t>(4).put<std::int32_t>(3).put<std::int32_t>(0);
+    Mesh m = read_text(b.s, Format::Ply);
+    CHECK(m.positions[3] == 1.5);
+    CHECK(m.positions[14] == 7.0);
+    CHECK(m.face_start == std::vector<std::uint32_t>{0, 3, 7, 10, 13});
+    CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 0, 1, 2, 3, 2, 3, 4, 4, 3, 0});
+    // an index out of range after good triangles is reported for its face
+    Bytes c;
+    c.big = big;
+    c.s = vertices;
+    c.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+    c.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(5).put<std::int32_t>(2);
+    c.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(-1).put<std::int32_t>(2);
+    c.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+    CHECK(error_of([&] { read_text(c.s, Format::Ply, nullptr, "m.ply"); }) ==
+          "m.ply: face 1 of 4: vertex index 5 out of range (5 vertices)");
+  }
+}
