@@ -42,7 +42,7 @@ TEST_CASE("info CLI: human report of the cube", "[cli][info]") {
   CHECK(r.code == 0);
   CHECK(r.out.find(data("cube.obj") + ": OBJ (float)\n") == 0);
   CHECK(r.out.find("  vertices               8\n") != std::string::npos);
-  CHECK(r.out.find("  faces                  12 (3-gons 12)\n") != std::string::npos);
+  CHECK(r.out.find("  faces                  12 (12 triangles)\n") != std::string::npos);
   CHECK(r.out.find("  bounding box           min (-1, -1, -1)  max (1, 1, 1)\n") != std::string::npos);
   CHECK(r.out.find("  closed manifold        yes\n") != std::string::npos);
   CHECK(r.err.empty());
