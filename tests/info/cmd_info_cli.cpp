@@ -2,6 +2,8 @@
 // exit codes.
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
 #include <fstream>
 #include <sstream>
 
@@ -23,13 +25,16 @@ std::string slurp(const std::string& path) {
 }
 
 Run run(const std::string& args) {
-  const std::string out = "cmd_info_cli.stdout", err = "cmd_info_cli.stderr";
+  const std::string base = (std::filesystem::temp_directory_path() / ("shadetool-info-cli-" + std::to_string(::getpid()))).string();
+  const std::string out = base + ".stdout", err = base + ".stderr";
   const std::string cmd = std::string("'") + SHADETOOL_BIN + "' " + args + " > " + out + " 2> " + err;
   const int status = std::system(cmd.c_str());
   Run r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = slurp(out);
   r.err = slurp(err);
+  std::remove(out.c_str());
+  std::remove(err.c_str());
   return r;
 }
 
