@@ -15,6 +15,7 @@
 // grows after the first free), which flatters whichever contender allocates one block of the same
 // size every time (fread). M_MMAP_THRESHOLD is therefore fixed at 1 MiB: every large block,
 // ours and the references', is a fresh mapping in every repetition, as in a one-shot process.
+// BENCH_IO_WARM=1 leaves glibc's default (memory recycled between repetitions) for comparison.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -94,10 +95,11 @@ int main(int argc, char** argv) {
   const std::string dir = argc > 4 ? argv[4] : "/tmp";
   const std::string obj = dir + "/bench_io_torus.obj", ply = dir + "/bench_io_torus.ply";
 
-  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  const bool warm = std::getenv("BENCH_IO_WARM") != nullptr;
+  if (!warm) mallopt(M_MMAP_THRESHOLD, 1 << 20);
   const Mesh m = torus(nu, nv);
-  std::printf("mesh: torus %d x %d: %zu vertices, %zu triangles; %d repetitions, medians\n", nu, nv, m.num_vertices(),
-              m.num_faces(), reps);
+  std::printf("mesh: torus %d x %d: %zu vertices, %zu triangles; %d repetitions, medians; %s memory\n", nu, nv,
+              m.num_vertices(), m.num_faces(), reps, warm ? "recycled (warm)" : "fresh (one-shot process)");
   const double write_obj = median_ms(3, [&] { write_mesh(m, obj, WriteOptions{}); });
   const double write_ply = median_ms(3, [&] { write_mesh(m, ply, WriteOptions{}); });
   std::printf("files: %s %.1f MB, %s %.1f MB\n", obj.c_str(), file_size(obj) / 1e6, ply.c_str(), file_size(ply) / 1e6);

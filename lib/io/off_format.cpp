@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/split_corner_normals.h"
 #include "io/text_parse.h"
@@ -120,6 +121,7 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
   };
 
   const std::size_t per_vertex = 3 + (has_n ? 3 : 0);
+  reserve_bulk(mesh.positions, 3 * nv);
   mesh.positions.resize(3 * nv);
   if (has_n) mesh.vertex_normals.resize(3 * nv);
   std::vector<float> vrgba;
@@ -165,8 +167,8 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
                                    (has_c ? "C" : "") + (has_n ? "N" : "") + "OFF' declares");
   }
 
-  mesh.face_start.reserve(nf + 1);
-  mesh.corner_vertex.reserve(std::min<std::uint64_t>(3 * nf, lines.remaining()));
+  reserve_bulk(mesh.face_start, nf + 1);
+  reserve_bulk(mesh.corner_vertex, std::min<std::uint64_t>(3 * nf, lines.remaining()));
   std::vector<float> frgba;
   bool any_face_color = false;
   for (std::uint64_t f = 0; f < nf; ++f) {

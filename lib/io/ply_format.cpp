@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/split_corner_normals.h"
 #include "io/text_parse.h"
@@ -221,6 +222,7 @@ std::size_t read_binary_vertices_fast(const Element& e, BodyReader& in, Mesh& me
   const std::size_t n = std::size_t(e.count);
   if (n == 0 || n * record > in.remaining()) return 0;  // the general loop reports the truncation
   const char* base = in.pos();
+  reserve_bulk(mesh.positions, 3 * n);
   mesh.positions.resize(3 * n);
   double* out = mesh.positions.data();
   if (only_xyz_float && !in.swap()) {
@@ -264,6 +266,8 @@ std::size_t read_binary_triangles_fast(const Element& e, BodyReader& in, std::ui
   const std::size_t fit = std::min<std::size_t>(n, in.remaining() / 13);
   if (mesh.corner_vertex.size() + 3 * fit >= std::numeric_limits<std::uint32_t>::max()) return 0;
   const std::size_t first_corner = mesh.corner_vertex.size(), first_face = mesh.face_start.size();
+  reserve_bulk(mesh.corner_vertex, first_corner + 3 * fit);
+  reserve_bulk(mesh.face_start, first_face + fit);
   mesh.corner_vertex.resize(first_corner + 3 * fit);
   mesh.face_start.resize(first_face + fit);
   std::uint32_t* cv = mesh.corner_vertex.data() + first_corner;
@@ -477,7 +481,10 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       if (nv > std::numeric_limits<std::uint32_t>::max()) fail(name, e.line, "too many vertices (more than 2^32)");
       const std::size_t n = std::size_t(e.count);
       std::size_t i = in.ascii() ? 0 : read_binary_vertices_fast(e, in, mesh);
-      if (i == 0) mesh.positions.assign(3 * n, 0.0);
+      if (i == 0) {
+        reserve_bulk(mesh.positions, 3 * n);
+        mesh.positions.assign(3 * n, 0.0);
+      }
       if (has_vnormals) mesh.vertex_normals.assign(3 * n, 0.0);
       if (has_vcolors) mesh.vertex_colors.assign(std::size_t(channels) * n, 1.0f);
       if (has_vtex) vtexcoords.assign(2 * n, 0.0);
@@ -510,8 +517,8 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       }
     } else if (&e == face) {
       const std::size_t n = std::size_t(e.count);
-      mesh.face_start.reserve(n + 1);
-      mesh.corner_vertex.reserve(std::min<std::size_t>(3 * n, in.remaining()));
+      reserve_bulk(mesh.face_start, n + 1);
+      reserve_bulk(mesh.corner_vertex, std::min<std::size_t>(3 * n, in.remaining()));
       if (has_fnormals) mesh.face_normals.assign(3 * n, 0.0);
       if (has_fcolors) mesh.face_colors.assign(std::size_t(channels) * n, 1.0f);
       std::vector<double> wedge;  // texcoord list of the current face

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/text_parse.h"
 
@@ -114,9 +115,9 @@ Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
   Mesh mesh;
   mesh.precision = ValuePrecision::Float;
   PositionMerger merger(mesh, std::size_t(n) * 3 / 5);  // closed meshes: V ~ F/2 = 3n/6
-  mesh.positions.reserve(std::size_t(n) * 3 / 2 + 3);
-  mesh.corner_vertex.reserve(3 * std::size_t(n));
-  mesh.face_start.reserve(std::size_t(n) + 1);
+  reserve_bulk(mesh.positions, std::size_t(n) * 3 / 2 + 3);
+  reserve_bulk(mesh.corner_vertex, 3 * std::size_t(n));
+  reserve_bulk(mesh.face_start, std::size_t(n) + 1);
   std::vector<double> normals(3 * std::size_t(n));
   const char* p = bytes.data() + 84;
   for (std::uint32_t t = 0; t < n; ++t, p += 50) {
