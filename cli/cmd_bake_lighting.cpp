@@ -86,7 +86,8 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade);
       const shadetool::ShadeReport& rep = baked.report;
 
-      if (baked.normals_source.rfind("computed", 0) == 0) r.notes.push_back("normals " + baked.normals_source);
+      if (frequency == shadetool::ShadingFrequency::PerVertex && baked.normals_source.rfind("computed", 0) == 0)
+        r.notes.push_back("vertex normals " + baked.normals_source);
       if (baked.normal_fallback_vertices > 0)
         r.notes.push_back(std::to_string(baked.normal_fallback_vertices) +
                           " vertices have no valid face: their normal is the normals module's fallback");
