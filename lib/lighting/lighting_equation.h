@@ -92,9 +92,20 @@ struct EquationSetup {
   Vec3d base{0, 0, 0};       // plan.base
 };
 
+#if defined(__GNUC__)
+#define SHADETOOL_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define SHADETOOL_ALWAYS_INLINE inline
+#endif
+
+// max(x, 0), inline (std::fmax is a libm call in GCC's -O2 code); NaN -> 0.
+inline double positive_part(double x) { return x > 0 ? x : 0.0; }
+
 // The colour at p (in the frame's space) with normal n (in the frame's space, any length).
+// Always inlined into the per-point loop: GCC otherwise keeps a call per point for the
+// General metric (measured: 35% of the time of a one-light lambert bake).
 template <class Metric>
-inline Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq,
+SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq,
                                   const Vec3d& p, Vec3d n, ShadeCounters& count) {
   ++count.points;
   Vec3d color = eq.base;
@@ -160,7 +171,7 @@ inline Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame, co
           ++count.outside_cone;
           continue;
         }
-        spot = light.exponent == 0 ? 1.0 : std::pow(std::fmax(cos_t, 0.0), light.exponent);
+        spot = light.exponent == 0 ? 1.0 : std::pow(positive_part(cos_t), light.exponent);
         if (!inside) spot = 0;
       }
       // kc, kl, kq >= 0, not all zero, and d > 0: the denominator is positive.
@@ -172,7 +183,7 @@ inline Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame, co
     if (light.has_ambient || !eq.early_tests) color += light.ambient * factor;
     const bool lit = n_dot_l > 0;
     if (!lit && eq.early_tests) continue;
-    color += light.diffuse * (factor * std::fmax(n_dot_l, 0.0));
+    color += light.diffuse * (factor * positive_part(n_dot_l));
 
     if (eq.specular && light.has_specular) {
       const double l_dot_v = dot(L, V_lowered);
@@ -180,10 +191,10 @@ inline Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame, co
       if (eq.model == ShadingModel::BlinnPhong) {
         const double h2 = 1.0 + 2.0 * l_dot_v + v_unit;  // |L + V|^2 with |L| = 1, |V|^2 = v_unit
         const double n_dot_h = h2 > 0 ? (n_dot_l + n_dot_v) / std::sqrt(h2) : 0.0;
-        s = std::pow(std::fmax(n_dot_h, 0.0), eq.shininess);
+        s = std::pow(positive_part(n_dot_h), eq.shininess);
       } else {  // Phong
         const double r_dot_v = 2.0 * n_dot_l * n_dot_v - l_dot_v;
-        s = std::pow(std::fmax(r_dot_v, 0.0), eq.shininess);
+        s = std::pow(positive_part(r_dot_v), eq.shininess);
       }
       if (lit) color += light.specular * (factor * s);
     }
