@@ -39,27 +39,34 @@ double thread_cpu_ms() {
   return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
 }
 
-double median_ms(const std::function<void()>& f) {
-  std::vector<double> t;
-  for (int r = 0; r < g_repeats; ++r) {
-    const double t0 = thread_cpu_ms();
-    f();
-    t.push_back(thread_cpu_ms() - t0);
+// Medians of several configurations timed round-robin (A B C A B C ...), so that a change in the
+// machine's load during the run hits every configuration alike.
+std::vector<double> interleaved_medians(const std::vector<std::function<void()>>& fs) {
+  std::vector<std::vector<double>> t(fs.size());
+  for (int r = 0; r < g_repeats; ++r)
+    for (std::size_t k = 0; k < fs.size(); ++k) {
+      const double t0 = thread_cpu_ms();
+      fs[k]();
+      t[k].push_back(thread_cpu_ms() - t0);
+    }
+  std::vector<double> m;
+  for (auto& v : t) {
+    std::sort(v.begin(), v.end());
+    m.push_back(v[v.size() / 2]);
   }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  return m;
 }
 
-double time_shade(const Scene& s, const Points& pts, ShadingSpace space, const SkipOptions& skips,
-                  ShadeReport* report = nullptr) {
-  ShadeOptions o;
-  o.space = space;
-  o.skips = skips;
-  o.parallel = false;
-  return median_ms([&] {
+std::function<void()> shade_job(const Scene& s, const Points& pts, ShadingSpace space, const SkipOptions& skips,
+                                ShadeReport* report = nullptr) {
+  return [&s, &pts, space, skips, report] {
+    ShadeOptions o;
+    o.space = space;
+    o.skips = skips;
+    o.parallel = false;
     const auto c = shade_points(s, pts.p, pts.n, o, report);
     g_sink += c[c.size() / 2];
-  });
+  };
 }
 
 Light directional(const Vec3d& d, const Vec3d& color = {1, 1, 1}) {
@@ -108,8 +115,9 @@ Scene studio() {  // the issue's example scene
 void skip_row(const char* skip, const char* scene_text, const Scene& s, const Points& pts, ShadingSpace space,
               SkipOptions off) {
   ShadeReport on_report, off_report;
-  const double with = time_shade(s, pts, space, SkipOptions{}, &on_report);
-  const double without = time_shade(s, pts, space, off, &off_report);
+  const auto t = interleaved_medians({shade_job(s, pts, space, SkipOptions{}, &on_report),
+                                      shade_job(s, pts, space, off, &off_report)});
+  const double with = t[0], without = t[1];
   std::printf("%-18s %-44s %9.1f %9.1f %7.2fx  %12zu %12zu\n", skip, scene_text, with, without, without / with,
               on_report.counters.vertex_light_evaluations - on_report.counters.back_facing -
                   on_report.counters.outside_cone,
@@ -134,7 +142,7 @@ int main(int argc, char** argv) {
   Points pts;
   pts.p = torus.mesh.positions;
   for (const Vec3d& n : torus.exact_normals) pts.n.insert(pts.n.end(), {n.x, n.y, n.z});
-  std::printf("bench_lighting: %zu points (torus 1000 x 1000), 1 thread, median of %d runs, thread CPU ms\n\n",
+  std::printf("bench_lighting: %zu points (torus 1000 x 1000), 1 thread, median of %d interleaved runs, thread CPU ms\n\n",
               pts.p.size() / 3, g_repeats);
 
   {  // sections (1) and (2) on one thread
@@ -232,9 +240,10 @@ int main(int argc, char** argv) {
     for (SCase& sc : scenes) {
       Scene s = sc.scene;
       s.world_from_object = m.M;
-      const double w = time_shade(s, pts, ShadingSpace::World, {});
-      const double c = time_shade(s, pts, ShadingSpace::Camera, {});
-      const double o = time_shade(s, pts, ShadingSpace::Object, {});
+      const auto t = interleaved_medians({shade_job(s, pts, ShadingSpace::World, {}),
+                                          shade_job(s, pts, ShadingSpace::Camera, {}),
+                                          shade_job(s, pts, ShadingSpace::Object, {})});
+      const double w = t[0], c = t[1], o = t[2];
       ShadeReport r;
       ShadeOptions probe;
       probe.parallel = false;
