@@ -1,7 +1,6 @@
 // look_at: the eye maps to the origin, the target onto -z, up into the +y half-plane; rigid.
 #include <catch2/catch.hpp>
 
-#include "lighting/affine_inverse.h"
 #include "lighting/look_at.h"
 
 using namespace shadetool;
@@ -32,20 +31,4 @@ TEST_CASE("look_at refuses a degenerate camera", "[lighting][look_at]") {
   CHECK_FALSE(look_at({1, 2, 3}, {1, 2, 3}, {0, 1, 0}, V));  // no view direction
   CHECK_FALSE(look_at({0, 5, 0}, {0, 0, 0}, {0, 1, 0}, V));  // up parallel to the view direction
   CHECK(V.t == Vec3d{9, 9, 9});                               // untouched
-}
-
-TEST_CASE("invert_affine inverts, and refuses a singular map", "[lighting][look_at]") {
-  Affine3d M;
-  M.A.m = {{{2, 1, 0}, {0, 1, 3}, {1, 0, 1}}};  // det = 2*1 - 1*(-3) + 0 = 5
-  M.t = {1, -2, 3};
-  Affine3d Mi;
-  REQUIRE(invert_affine(M, Mi));
-  const Vec3d p{0.3, -0.7, 2.5};
-  const Vec3d back = transform_point(Mi, transform_point(M, p));
-  CHECK(length(back - p) <= 1e-14);
-  Affine3d S;
-  S.A = Mat3d::diagonal(1, 0, 1);
-  CHECK_FALSE(invert_affine(S, Mi));
-  CHECK(is_identity(Affine3d{}));
-  CHECK_FALSE(is_identity(M));
 }

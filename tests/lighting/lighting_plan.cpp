@@ -137,16 +137,3 @@ TEST_CASE("turning every skip off changes no bit of the result", "[lighting][pla
     }
   }
 }
-
-TEST_CASE("results do not depend on the number of threads", "[lighting][plan]") {
-  AnalyticMesh t = torus(200, 100);  // 20000 points: several TBB blocks
-  std::vector<double> N;
-  for (const Vec3d& n : t.exact_normals) N.insert(N.end(), {n.x, n.y, n.z});
-  const Scene s = lit_scene();
-  ShadeOptions serial, parallel;
-  serial.parallel = false;
-  ShadeReport a, b;
-  CHECK(shade_points(s, t.mesh.positions, N, serial, &a) == shade_points(s, t.mesh.positions, N, parallel, &b));
-  CHECK(a.counters.vertex_light_evaluations == b.counters.vertex_light_evaluations);
-  CHECK(a.counters.back_facing == b.counters.back_facing);
-}
