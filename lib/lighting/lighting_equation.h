@@ -74,11 +74,11 @@ struct ScaledMetric {
   Vec3d lower(const Vec3d& v) const { return v * s2; }
   double conorm2(const Vec3d& n) const { return inv_s2 * dot(n, n); }
 };
-struct GeneralMetric {
-  Mat3d G, G_inverse;
-  double norm2(const Vec3d& v) const { return dot(v, G * v); }
-  Vec3d lower(const Vec3d& v) const { return G * v; }
-  double conorm2(const Vec3d& n) const { return dot(n, G_inverse * n); }
+struct GeneralMetric {  // G = B^T B, never formed (it would square cond(B))
+  Mat3d B, B_transpose, B_inverse_transpose;
+  double norm2(const Vec3d& v) const { return squared_length(B * v); }
+  Vec3d lower(const Vec3d& v) const { return B_transpose * (B * v); }
+  double conorm2(const Vec3d& n) const { return squared_length(B_inverse_transpose * n); }
 };
 
 // What the per-point evaluation needs besides the frame.

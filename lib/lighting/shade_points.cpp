@@ -96,8 +96,8 @@ std::vector<double> shade_points(const Scene& scene, const std::vector<double>& 
                              N, out.data(), n, options.parallel);
       break;
     case MetricKind::General:
-      r.counters = shade_all(GeneralMetric{frame.metric.G, frame.metric.G_inverse}, frame, eq, map_points, P, N,
-                             out.data(), n, options.parallel);
+      r.counters = shade_all(GeneralMetric{frame.metric.B, transpose(frame.metric.B), frame.metric.B_inverse_transpose},
+                             frame, eq, map_points, P, N, out.data(), n, options.parallel);
       break;
   }
 

@@ -40,10 +40,10 @@ SpaceMetric metric_of(const Mat3d& B) {
     return metric;
   }
   metric.kind = MetricKind::General;
-  metric.G = G;
+  metric.B = B;
   Affine3d b{B, {0, 0, 0}}, b_inv;
   invert_affine(b, b_inv);  // B invertible: validated when the scene was read
-  metric.G_inverse = b_inv.A * transpose(b_inv.A);
+  metric.B_inverse_transpose = transpose(b_inv.A);
   return metric;
 }
 
@@ -53,7 +53,7 @@ double norm2(const SpaceMetric& g, const Vec3d& v) {
   switch (g.kind) {
     case MetricKind::Identity: return dot(v, v);
     case MetricKind::Scaled: return g.scale2 * dot(v, v);
-    case MetricKind::General: return dot(v, g.G * v);
+    case MetricKind::General: return squared_length(g.B * v);
   }
   return dot(v, v);
 }
@@ -62,7 +62,7 @@ Vec3d lower(const SpaceMetric& g, const Vec3d& v) {
   switch (g.kind) {
     case MetricKind::Identity: return v;
     case MetricKind::Scaled: return v * g.scale2;
-    case MetricKind::General: return g.G * v;
+    case MetricKind::General: return transpose(g.B) * (g.B * v);
   }
   return v;
 }
@@ -155,7 +155,7 @@ SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan, const Ski
     double cost = 0;
     if (transforms) cost += 15 + (plan.positions ? 18 : 0);
     if (metric.kind == MetricKind::General)
-      cost += 15 + (plan.view ? 30 : 0) + 15.0 * double(plan.positional_lights);
+      cost += 15 + (plan.view ? 45 : 0) + 15.0 * double(plan.positional_lights);
     const int slot = space == ShadingSpace::World ? 0 : space == ShadingSpace::Camera ? 1 : 2;
     choice.cost[slot] = cost;
     if (k == 0 || cost < best) {

@@ -18,18 +18,19 @@
 //                           G = A^T A: the identity for a rotation, s^2 I for a similarity.
 //
 // Metric kinds: Identity (G = I: plain dot products), Scaled (G = s^2 I: one scale factor),
-// General (G and G^-1 as matrices). A metric is taken as Identity/Scaled when G differs from
+// General (B and B^-T as matrices). A metric is taken as Identity/Scaled when G differs from
 // s^2 I by at most 1e-12 s^2 per entry (relative colour error below 1e-11).
 //
 // Cost model for `auto` (flops per point, beyond what every space does): a point transform costs
 // 18, a normal transform 15 (skipped when the object-to-space map is exactly the identity, and the
 // point transform when no position is read); a General metric costs 15 for the normal's length,
-// 30 for V (length and G V) and 15 per point/spot light (|L|_G). Scaled and Identity metrics cost
+// 45 for V (|B V| and B^T B V) and 15 per point/spot light (|B L|). Scaled and Identity metrics cost
 // nothing. The cheapest space wins; ties go to object, then world, then camera. bench/lighting
 // measures the spaces against this model.
 //
-// Precision: everything in double; G and G^-1 are formed once per mesh (G squares cond(A), so the
-// General metric's relative error is about cond(A)^2 * 2^-53).
+// Precision: everything in double. G is never formed for the General metric (it would square
+// cond(A)): |v|_G = |B v|, |n|_{G^-1} = |B^-T n| and G v = B^T (B v), so the relative error is
+// about cond(A) * 2^-53, as world space's own normal transform.
 #pragma once
 
 #include <string>
@@ -47,9 +48,9 @@ enum class MetricKind { Identity, Scaled, General };
 
 struct SpaceMetric {
   MetricKind kind = MetricKind::Identity;
-  double scale2 = 1;   // s^2 for Scaled (G = s^2 I)
-  Mat3d G;             // General: B^T B
-  Mat3d G_inverse;     // General: B^-1 B^-T
+  double scale2 = 1;            // s^2 for Scaled (G = s^2 I)
+  Mat3d B;                      // General: world_from_S's linear part; |v|_G = |B v|
+  Mat3d B_inverse_transpose;    // General: B^-T; |n|_{G^-1} = |B^-T n|
 };
 
 // The metric G = B^T B of a linear map B (world_from_S), classified as above. B invertible.

@@ -221,7 +221,7 @@ TEST_CASE("metric classification: rotation, similarity, general", "[lighting][sp
   shear.m = {{{1, 0.5, 0}, {0, 1, 0}, {0, 0, 1}}};
   const SpaceMetric g = metric_of(R * shear);
   REQUIRE(g.kind == MetricKind::General);
-  const Mat3d I = g.G * g.G_inverse;
+  const Mat3d I = transpose(g.B_inverse_transpose) * g.B;  // B^-1 B
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) CHECK(I.m[i][j] == Approx(i == j ? 1.0 : 0.0).margin(1e-14));
 }
@@ -247,7 +247,7 @@ TEST_CASE("auto picks the cheapest space", "[lighting][space]") {
   CHECK(report.space == ShadingSpace::Object);
 
   // A shear with two point lights and specular: object space would pay the metric per light
-  // (15 + 30 + 2*15 = 75) against world space's transforms (15 + 18 = 33).
+  // (15 + 45 + 2*15 = 90) against world space's transforms (15 + 18 = 33).
   s.world_from_object.A.m = {{{1, 0.7, 0}, {0, 1, 0}, {0, 0, 2}}};
   shade_one(s, {0, 0, 0}, {0, 0, 1}, {}, &report);
   CHECK(report.space == ShadingSpace::World);
@@ -263,4 +263,24 @@ TEST_CASE("auto picks the cheapest space", "[lighting][space]") {
   // Whatever it picks, auto's cost is the least of the three.
   const SpaceChoice choice = choose_space(s, plan_lighting(s, s.model));
   CHECK(choice.cost[2] <= std::min(choice.cost[0], choice.cost[1]));
+}
+
+TEST_CASE("spaces agree also for a badly conditioned M (cond 1e5)", "[lighting][space]") {
+  // Object space measures with the metric of A; its error must grow like cond(A), as world space's
+  // normal transform does, not like cond(A)^2 (which forming G = A^T A would give).
+  Rng r(99);
+  const Points pts = ellipsoid_points(1, 0.6, 0.8);
+  for (int trial = 0; trial < 10; ++trial) {
+    Scene s = random_scene(r, trial % 2 ? ShadingModel::Phong : ShadingModel::BlinnPhong, false, false);
+    Mat3d H;
+    H.m = {{{1, 0.9, 0.5}, {0, 1, -0.7}, {0, 0, 1}}};
+    s.world_from_object.A = rotation(r.v(-1, 1), r.u(0, 6)) * H * Mat3d::diagonal(300, 1, 1.0 / 300);
+    // lights and eye around the (now very flat, very long) object
+    const auto world = shade_float(s, pts, ShadingSpace::World);
+    const auto object = shade_float(s, pts, ShadingSpace::Object);
+    const auto camera = shade_float(s, pts, ShadingSpace::Camera);
+    INFO("trial " << trial);
+    CHECK(max_abs_difference(world, object) <= 1e-6);
+    CHECK(max_abs_difference(world, camera) <= 1e-6);
+  }
 }
