@@ -10,7 +10,7 @@
 //   compose_in_order(maps)          maps[0] acts first: M = maps[n-1] o ... o maps[1] o maps[0]
 //
 // Rotation: R = cos(a) I + sin(a) [k]x + (1 - cos(a)) k k^T with k = axis / |axis| (Rodrigues
-// 1840; e.g. Murray, Li & Sastry, "A Mathematical Introduction to Robotic Manipulation", eq. 2.14).
+// 1840; e.g. Murray, Li & Sastry, "A Mathematical Introduction to Robotic Manipulation", 1994, ch. 2).
 // The angle is in degrees at this interface (radians only inside) and reduced exactly to
 // [-45, 45] degrees plus a multiple of 90 before sin/cos, so multiples of 90 degrees give exact
 // 0 and +-1 entries (a quarter turn of an integer grid stays an integer grid).
