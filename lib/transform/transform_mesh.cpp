@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/validate.h"
+#include "transform/parallel_ranges.h"
 #include "transform/recompute_normals.h"
 #include "transform/reverse_winding.h"
 #include "transform/transform_normals.h"
@@ -14,23 +15,27 @@ namespace shadetool {
 namespace {
 
 void transform_positions(Mesh& mesh, const Affine3d& M, bool translate_only) {
-  double* p = mesh.positions.data();
-  const std::size_t V = mesh.num_vertices();
-  if (translate_only) {
-    for (std::size_t v = 0; v < V; ++v, p += 3) {
-      p[0] += M.t.x;
-      p[1] += M.t.y;
-      p[2] += M.t.z;
+  double* data = mesh.positions.data();
+  const Affine3d map = M;  // by value: the loop reads locals, not through a reference
+  transform_detail::count_over_ranges(mesh.num_vertices(), [&](std::size_t begin, std::size_t end) {
+    double* p = data + 3 * begin;
+    if (translate_only) {
+      for (std::size_t v = begin; v < end; ++v, p += 3) {
+        p[0] += map.t.x;
+        p[1] += map.t.y;
+        p[2] += map.t.z;
+      }
+      return std::size_t(0);
     }
-    return;
-  }
-  const auto& A = M.A.m;
-  for (std::size_t v = 0; v < V; ++v, p += 3) {
-    const double x = p[0], y = p[1], z = p[2];
-    p[0] = A[0][0] * x + A[0][1] * y + A[0][2] * z + M.t.x;
-    p[1] = A[1][0] * x + A[1][1] * y + A[1][2] * z + M.t.y;
-    p[2] = A[2][0] * x + A[2][1] * y + A[2][2] * z + M.t.z;
-  }
+    const auto& A = map.A.m;
+    for (std::size_t v = begin; v < end; ++v, p += 3) {
+      const double x = p[0], y = p[1], z = p[2];
+      p[0] = A[0][0] * x + A[0][1] * y + A[0][2] * z + map.t.x;
+      p[1] = A[1][0] * x + A[1][1] * y + A[1][2] * z + map.t.y;
+      p[2] = A[2][0] * x + A[2][1] * y + A[2][2] * z + map.t.z;
+    }
+    return std::size_t(0);
+  });
 }
 
 bool has_any_normals(const Mesh& mesh) {
