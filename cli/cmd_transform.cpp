@@ -175,7 +175,12 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
       maps.push_back(map_for(o->get_name(), (*it->second)[i]));
     }
     const shadetool::Affine3d M = shadetool::compose_in_order(maps);
-    const shadetool::AffineClass cls = shadetool::classify_affine(M);
+    shadetool::AffineClass cls;
+    try {
+      cls = shadetool::classify_affine(M);
+    } catch (const shadetool::Error&) {  // finite flags whose product overflowed, e.g. --scale 1e200 twice
+      throw UsageError("the composed transform has an entry that overflows double (|entry| > 1.8e308)");
+    }
     shadetool::TransformOptions options;
     options.normals = policy_from(opt.normals);
     if (cls.path == shadetool::TransformPath::Singular && options.normals == shadetool::NormalsPolicy::Transform)

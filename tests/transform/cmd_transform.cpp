@@ -217,7 +217,8 @@ TEST_CASE("cmd transform: malformed numbers are usage errors with a clear line a
                       "shadetool: --matrix: the last row of a 4x4 matrix must be 0 0 0 1, got 0 0 0.5 1"},
                  Case{"--scale 1,1,0", "shadetool: the transform is singular or nearly so"},
                  Case{"--scale 1,1,1e-12 --normals transform", "--normals drop | --normals recompute"},
-                 Case{"--normals sideways", "--normals"}}) {
+                 Case{"--normals sideways", "--normals"},
+                 Case{"--scale 1e200 --scale 1e200", "shadetool: the composed transform has an entry that overflows"}}) {
     const Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "never.obj" + "' " + c.flags);
     CAPTURE(c.flags, r.err);
     CHECK(r.code == 2);
