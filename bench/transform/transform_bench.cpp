@@ -10,7 +10,8 @@
 // normals and the truth, whether the tool's normals are unit, and which rule it follows (its
 // output compared with normalize(A n) and with normalize(A^-T n)).
 // Time: median of `reps` runs of the transform call alone (positions + vertex normals; copies
-// excluded), as a ratio to Open3D in the same run. assimp's time covers its whole post-processing
+// excluded); shadetool and Open3D alternate run by run and the ratio is the median of the per-run
+// ratios (the machine is shared and noisy). assimp's time covers its whole post-processing
 // step (scene graph flattening included), so it is shown but is not like for like.
 #include <algorithm>
 #include <chrono>
@@ -116,12 +117,13 @@ struct ToolResult {
   Errors err;
   double vs_A_n = 0, vs_inverse_transpose = 0;  // max angle (deg) to normalize(A n) / normalize(A^-T n)
   double median_ms = 0;
+  double ratio = 0;  // median of per-run time ratios to Open3D (assimp: ratio of medians)
 };
 
 void print(const ToolResult& r, double open3d_ms) {
   std::printf("  %-34s max %.3e  mean %.3e  |n|-1 max %.1e   vs A n %.2e  vs A^-T n %.2e   %8.2f ms  x%.2f\n",
               r.name.c_str(), r.err.max_deg, r.err.mean_deg, r.err.max_unit_defect, r.vs_A_n, r.vs_inverse_transpose,
-              r.median_ms, open3d_ms > 0 ? r.median_ms / open3d_ms : 0.0);
+              r.median_ms, r.ratio > 0 ? r.ratio : (open3d_ms > 0 ? r.median_ms / open3d_ms : 0.0));
 }
 
 void run_case(const char* title, const testing::AnalyticMesh& sphere, const Mat3d& R, const Vec3d& scale, int reps) {
@@ -144,8 +146,10 @@ void run_case(const char* title, const testing::AnalyticMesh& sphere, const Mat3
   input.vertex_normals.clear();
   for (const Vec3d& n : sphere.exact_normals) input.vertex_normals.insert(input.vertex_normals.end(), {n.x, n.y, n.z});
 
-  // ---- Open3D
+  // ---- Open3D and shadetool, alternating run by run so that load from other processes hits both
+  // alike; the ratio reported is the median of the per-run ratios.
   ToolResult o3d("Open3D TriangleMesh::Transform");
+  ToolResult st("shadetool transform_mesh"), st_float("shadetool, float in and out");
   {
     open3d::geometry::TriangleMesh base;
     for (std::size_t v = 0; v < V; ++v) {
@@ -159,40 +163,39 @@ void run_case(const char* title, const testing::AnalyticMesh& sphere, const Mat3
       for (int c = 0; c < 3; ++c) T(r, c) = M.A.m[r][c];
       T(r, 3) = M.t[r];
     }
-    std::vector<double> times;
-    open3d::geometry::TriangleMesh out;
+    std::vector<double> o3d_times, st_times, ratios;
+    open3d::geometry::TriangleMesh o3d_out;
+    Mesh st_out;
     for (int k = 0; k < reps; ++k) {
-      open3d::geometry::TriangleMesh m = base;
-      const auto t0 = std::chrono::steady_clock::now();
-      m.Transform(T);
-      times.push_back(ms_since(t0));
-      if (k == 0) out = m;
+      open3d::geometry::TriangleMesh om = base;
+      auto t0 = std::chrono::steady_clock::now();
+      om.Transform(T);
+      o3d_times.push_back(ms_since(t0));
+      Mesh sm = input;
+      t0 = std::chrono::steady_clock::now();
+      transform_mesh(sm, M);
+      st_times.push_back(ms_since(t0));
+      ratios.push_back(st_times.back() / o3d_times.back());
+      if (k == 0) {
+        o3d_out = std::move(om);
+        st_out = std::move(sm);
+      }
     }
-    o3d.median_ms = median(times);
-    auto get = [&](std::size_t i) { const auto& n = out.vertex_normals_[i]; return Vec3d{n.x(), n.y(), n.z()}; };
-    o3d.err = angular_errors(V, truth, get);
-    o3d.vs_A_n = angular_errors(V, by_A, get).max_deg;
-    o3d.vs_inverse_transpose = angular_errors(V, by_inverse_transpose, get).max_deg;
-  }
+    o3d.median_ms = median(o3d_times);
+    o3d.ratio = 1;
+    auto get_o3d = [&](std::size_t i) { const auto& n = o3d_out.vertex_normals_[i]; return Vec3d{n.x(), n.y(), n.z()}; };
+    o3d.err = angular_errors(V, truth, get_o3d);
+    o3d.vs_A_n = angular_errors(V, by_A, get_o3d).max_deg;
+    o3d.vs_inverse_transpose = angular_errors(V, by_inverse_transpose, get_o3d).max_deg;
 
-  // ---- shadetool (double), and its output rounded to float as a float file would hold it
-  ToolResult st("shadetool transform_mesh"), st_float("shadetool, float in and out");
-  {
-    std::vector<double> times;
-    Mesh out;
-    for (int k = 0; k < reps; ++k) {
-      Mesh m = input;
-      const auto t0 = std::chrono::steady_clock::now();
-      transform_mesh(m, M);
-      times.push_back(ms_since(t0));
-      if (k == 0) out = m;
-    }
-    st.median_ms = median(times);
-    auto get = [&](std::size_t i) { return get3(out.vertex_normals, i); };
+    st.median_ms = median(st_times);
+    st.ratio = median(ratios);
+    auto get = [&](std::size_t i) { return get3(st_out.vertex_normals, i); };
     st.err = angular_errors(V, truth, get);
     st.vs_A_n = angular_errors(V, by_A, get).max_deg;
     st.vs_inverse_transpose = angular_errors(V, by_inverse_transpose, get).max_deg;
 
+    // shadetool with float input and output, as a float file would hold them.
     Mesh fin = input;
     for (auto& x : fin.positions) x = f32(x);
     for (auto& x : fin.vertex_normals) x = f32(x);
@@ -203,7 +206,6 @@ void run_case(const char* title, const testing::AnalyticMesh& sphere, const Mat3
     st_float.err = angular_errors(V, truth, getf);
     st_float.vs_A_n = angular_errors(V, by_A, getf).max_deg;
     st_float.vs_inverse_transpose = angular_errors(V, by_inverse_transpose, getf).max_deg;
-    st_float.median_ms = 0;
   }
 
   // ---- assimp (float throughout: ai_real is float in Debian's build)
