@@ -344,3 +344,23 @@ TEST_CASE("transform_mesh: zero and NaN input normals are left as read and count
   CHECK(std::isnan(m.vertex_normals[3]));
   CHECK(get3(m.vertex_normals, 2) == Vec3d(0, 0, 1));
 }
+
+TEST_CASE("transform_mesh: a uniform mirror (--scale -2) turns the sphere inside out and back outward",
+          "[transform_mesh]") {
+  // -2 I = 2 (-I): uniform scale times an improper orthogonal matrix (det -8 < 0). Normals are
+  // mapped by Q = A / s = -I, the faces are re-wound, and the result is outward: n' = p' / |p'|.
+  AnalyticMesh ico = testing::icosphere(2);
+  Mesh m = ico.mesh;
+  m.vertex_normals = flatten(ico.exact_normals);
+  const double volume_before = signed_volume(m);
+  const TransformReport r = transform_mesh(m, scale_map({-2, -2, -2}));
+  CHECK(r.affine.path == TransformPath::UniformScale);
+  CHECK(r.affine.mirror);
+  CHECK(r.winding_reversed);
+  CHECK(signed_volume(m) == Approx(8 * volume_before).epsilon(1e-14));
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    const Vec3d p = m.position(v);
+    CHECK(length(get3(m.vertex_normals, v) - p * 0.5) < 1e-15);  // |p'| = 2
+    CHECK(get3(m.vertex_normals, v) == -ico.exact_normals[v]);
+  }
+}
