@@ -187,6 +187,16 @@ TEST_CASE("cmd transform: --stats names the path", "[cmd_transform]") {
   }
 }
 
+TEST_CASE("cmd transform: --json carries the path, the mirror flag and what happened to the normals", "[cmd_transform]") {
+  TempDir dir;
+  spit(dir / "tri.obj", kTriangleObj);
+  const Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "j.obj" + "' --scale 1,-2,3 --json");
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("\"path\":\"general\"") != std::string::npos);
+  CHECK(r.out.find("\"mirror\":true") != std::string::npos);
+  CHECK(r.out.find("\"normals\":\"transformed\"") != std::string::npos);
+}
+
 TEST_CASE("cmd transform: --scale -1,1,1 re-winds the faces in the file and says so", "[cmd_transform]") {
   TempDir dir;
   spit(dir / "tri.obj", kTriangleObj);
