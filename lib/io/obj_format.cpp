@@ -199,33 +199,24 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
     info.notes.push_back("skipped " + std::to_string(skipped_lines) + " line" + (skipped_lines == 1 ? "" : "s") +
                          " with keywords shadetool does not use (first: '" + skipped_keyword + "')");
 
-  if (any_double) {
-    mesh.precision = ValuePrecision::Double;
-  } else {
-    mesh.precision = ValuePrecision::Float;
-    auto round_to_float = [](std::vector<double>& a) {
-      for (double& x : a) x = static_cast<double>(static_cast<float>(x));
-    };
-    round_to_float(mesh.positions);
-    round_to_float(mesh.corner_normals);
-    round_to_float(mesh.texcoords);
-  }
+  // Values are kept as parsed (the double nearest to the text), never rounded: precision is only
+  // the hint for the value type binary writers use.
+  mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
   return mesh;
 }
 
 void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
-  const ValuePrecision prec = mesh.precision;
   out.reserve(out.size() + mesh.num_vertices() * 40 + mesh.num_corners() * 10);
   out += "# written by shadetool\n";
   const std::size_t nv = mesh.num_vertices();
   const bool colors = mesh.has_vertex_colors() && mesh.vertex_colors.size() == nv * std::size_t(mesh.color_channels);
   for (std::size_t v = 0; v < nv; ++v) {
     out += "v ";
-    append_shortest(out, mesh.positions[3 * v], prec);
+    append_shortest(out, mesh.positions[3 * v]);
     out += ' ';
-    append_shortest(out, mesh.positions[3 * v + 1], prec);
+    append_shortest(out, mesh.positions[3 * v + 1]);
     out += ' ';
-    append_shortest(out, mesh.positions[3 * v + 2], prec);
+    append_shortest(out, mesh.positions[3 * v + 2]);
     if (colors) {
       for (int k = 0; k < mesh.color_channels; ++k) {
         out += ' ';
@@ -241,7 +232,7 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
       out += "vt";
       for (std::size_t k = 0; k < dims; ++k) {
         out += ' ';
-        append_shortest(out, mesh.texcoords[i + k], prec);
+        append_shortest(out, mesh.texcoords[i + k]);
       }
       out += '\n';
     }
@@ -262,11 +253,11 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
   if (pool) {
     for (std::size_t i = 0; i + 3 <= pool->size(); i += 3) {
       out += "vn ";
-      append_shortest(out, (*pool)[i], prec);
+      append_shortest(out, (*pool)[i]);
       out += ' ';
-      append_shortest(out, (*pool)[i + 1], prec);
+      append_shortest(out, (*pool)[i + 1]);
       out += ' ';
-      append_shortest(out, (*pool)[i + 2], prec);
+      append_shortest(out, (*pool)[i + 2]);
       out += '\n';
     }
   }

@@ -224,10 +224,8 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
     mesh.texcoord_dims = 2;
     mesh.corner_texcoord_index = mesh.corner_vertex;
   }
+  // Values kept as parsed, never rounded; precision is the binary writers' value-type hint.
   mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
-  if (!any_double)
-    for (auto* a : {&mesh.positions, &mesh.vertex_normals, &mesh.texcoords})
-      for (double& x : *a) x = double(float(x));
   return mesh;
 }
 
@@ -243,7 +241,6 @@ void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
   const bool vcolors = mesh.has_vertex_colors();
   const bool fcolors = mesh.has_face_colors();
   const int ch = mesh.color_channels;
-  const auto prec = mesh.precision;
   if (mesh.has_face_normals()) info.notes.push_back("face normals not written: OFF has no face normals");
   if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to OFF");
 
@@ -263,12 +260,12 @@ void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
     for (int k = 0; k < 3; ++k) {
       if (k) out += ' ';
-      append_shortest(out, mesh.positions[3 * v + std::size_t(k)], prec);
+      append_shortest(out, mesh.positions[3 * v + std::size_t(k)]);
     }
     if (normals)
       for (int k = 0; k < 3; ++k) {
         out += ' ';
-        append_shortest(out, mesh.vertex_normals[3 * v + std::size_t(k)], prec);
+        append_shortest(out, mesh.vertex_normals[3 * v + std::size_t(k)]);
       }
     if (vcolors)
       for (int k = 0; k < ch; ++k) color(mesh.vertex_colors[std::size_t(ch) * v + std::size_t(k)]);
