@@ -12,8 +12,13 @@
 //
 // Writing: each value in the shortest text that reads back to it (io/number_text.h: a value that
 // is exactly a float prints as the shortest float, 0.1f as "0.1"; any other as the shortest
-// double, at most 17 significant digits). v [rgb(a)], vt, vn and f v/t/n. Normals: corner normals as a pool, else vertex normals
-// (one vn per vertex), else face normals (one vn per face). Face colours have no OBJ form (note).
+// double, at most 17 significant digits). v [rgb(a)], vt, vn and f v/t/n. Normals: corner normals
+// as a pool, else vertex normals (one vn per vertex), else face normals (one vn per face).
+// Face colours (flat shading) have no OBJ form of their own: vertices are split so that every
+// corner's vertex carries its face's colour as `v x y z r g b [a]` (io/split_face_colors.h; a
+// vertex whose faces share one colour is not split). Faces, their order and corner order are
+// unchanged, normals and texcoords stay per corner; WriteInfo::split_vertices counts the vertices
+// added, and a note says so. Vertex colours, if the mesh also has them, give way (note).
 #pragma once
 
 #include <string>

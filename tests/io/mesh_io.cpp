@@ -78,6 +78,7 @@ TEST_CASE("round trip: OBJ keeps polygons, corner normals, texcoords and vertex 
   ScratchDir dir;
   Mesh m = rich_mesh();
   m.colors_are_float = true;
+  m.face_colors.clear();  // no face colours: no vertex is split (see the next test)
   WriteInfo wi;
   write_mesh(m, dir / "r.obj", WriteOptions{}, &wi);
   CHECK(wi.split_vertices == 0);
@@ -96,6 +97,55 @@ TEST_CASE("round trip: OBJ keeps polygons, corner normals, texcoords and vertex 
   // a second trip gives the same bytes
   write_mesh(back, dir / "r2.obj", WriteOptions{});
   CHECK(read_file(dir / "r.obj") == read_file(dir / "r2.obj"));
+}
+
+TEST_CASE("round trip: OBJ carries face colours by splitting vertices; faces, normals, texcoords per corner kept",
+          "[mesh_io][roundtrip]") {
+  ScratchDir dir;
+  const Mesh m = rich_mesh();  // 3 faces, 3 different colours, and vertex colours too
+  WriteInfo wi;
+  write_mesh(m, dir / "f.obj", WriteOptions{}, &wi);
+  // Faces 0 (0 1 3), 1 (1 4 5 2), 2 (3 1 2 5 6): vertex 1 is in all three faces (2 more copies),
+  // vertices 2, 3 and 5 in two each (1 more copy each), 0, 4 and 6 in one: 5 added, 12 in all.
+  CHECK(wi.split_vertices == 5);
+  REQUIRE(wi.notes.size() == 2);
+  CHECK(wi.notes[0] ==
+        "face colours written as vertex colours (v x y z r g b): 5 vertices added so that every face's corners carry its colour");
+  CHECK(wi.notes[1] == "vertex colours replaced by the face colours: OBJ holds one colour per vertex");
+  const Mesh back = read_mesh(dir / "f.obj");
+  CHECK(back.num_vertices() == 12);
+  REQUIRE(back.num_faces() == m.num_faces());
+  CHECK(back.face_start == m.face_start);  // same faces, same sizes, same order
+  REQUIRE(back.has_vertex_colors());
+  REQUIRE(back.color_channels == 3);
+  REQUIRE(back.has_corner_normals());
+  REQUIRE(back.has_texcoords());
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) {
+      INFO("face " << f << " corner " << c);
+      CHECK(same(m.position(m.corner_vertex[c]), back.position(back.corner_vertex[c]), Via::Text));
+      for (int k = 0; k < 3; ++k)  // every corner carries its face's colour (floats print and read back exactly)
+        CHECK(back.vertex_colors[3 * back.corner_vertex[c] + std::size_t(k)] == m.face_colors[3 * f + std::size_t(k)]);
+      CHECK(same(get3(m.corner_normals, m.corner_normal_index[c]), get3(back.corner_normals, back.corner_normal_index[c]),
+                 Via::Text));
+      for (int k = 0; k < 2; ++k)
+        CHECK(same_after_text(m.texcoords[2 * m.corner_texcoord_index[c] + std::size_t(k)],
+                              back.texcoords[2 * back.corner_texcoord_index[c] + std::size_t(k)]));
+    }
+  // the originals keep their place: the first 7 vertices are the input's, in order
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) CHECK(same(m.position(v), back.position(v), Via::Text));
+  // rgba face colours give `v x y z r g b a`
+  Mesh a = rich_mesh();
+  a.vertex_colors.clear();
+  a.color_channels = 4;
+  a.face_colors = {1, 0, 0, 0.5f, 0, 1, 0, 0.25f, 0, 0, 1, 1};
+  write_mesh(a, dir / "a.obj", WriteOptions{});
+  const Mesh ab = read_mesh(dir / "a.obj");
+  REQUIRE(ab.color_channels == 4);
+  for (std::size_t f = 0; f < a.num_faces(); ++f)
+    for (std::uint32_t c = a.face_start[f]; c < a.face_start[f + 1]; ++c)
+      for (int k = 0; k < 4; ++k)
+        CHECK(ab.vertex_colors[4 * ab.corner_vertex[c] + std::size_t(k)] == a.face_colors[4 * f + std::size_t(k)]);
 }
 
 TEST_CASE("round trip: PLY binary and ascii, float and double", "[mesh_io][roundtrip]") {
@@ -171,11 +221,23 @@ TEST_CASE("round trip: the sample meshes in data/ through every format", "[mesh_
         std::vector<double> narrowed = m.positions;
         for (double& x : narrowed) x = double(float(x));
         CHECK(back.positions == narrowed);
-      } else {
+      } else if (!(std::string(ext) == "obj" && m.has_face_colors())) {
         CHECK(same_after_text(m.positions, back.positions));
       }
       CHECK(back.face_start == m.face_start);
-      CHECK(back.corner_vertex == m.corner_vertex);
+      if (std::string(ext) == "obj" && m.has_face_colors()) {
+        // face colours reach OBJ by splitting vertices: per corner, same position and its face's colour
+        REQUIRE(back.num_corners() == m.num_corners());
+        for (std::size_t f = 0; f < m.num_faces(); ++f)
+          for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) {
+            CHECK(same(m.position(m.corner_vertex[c]), back.position(back.corner_vertex[c]), Via::Text));
+            for (int k = 0; k < m.color_channels; ++k)
+              CHECK(back.vertex_colors[std::size_t(back.color_channels) * back.corner_vertex[c] + std::size_t(k)] ==
+                    m.face_colors[std::size_t(m.color_channels) * f + std::size_t(k)]);
+          }
+      } else {
+        CHECK(back.corner_vertex == m.corner_vertex);
+      }
       CHECK(back.precision == m.precision);
     }
   }

@@ -261,6 +261,49 @@ TEST_CASE("OBJ writer: normals as vn pool, per vertex or per face; texcoords as 
   CHECK(t.find("f 1/1/1 2/2/2 3/2/3\n") != std::string::npos);
 }
 
+TEST_CASE("OBJ writer: face colours split the vertices shared by faces of different colours", "[obj][colors]") {
+  Mesh m;  // a square as two triangles, red and blue, sharing the diagonal 0-2
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({1, 1, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_face({0, 1, 2});
+  m.add_face({0, 2, 3});
+  m.face_colors = {1, 0, 0, 0, 0, 1};
+  m.face_normals = {0, 0, 1, 0, 0, 1};
+  WriteOptions o;
+  o.format = Format::Obj;
+  WriteInfo wi;
+  const std::string text = write_mesh_to_memory(m, o, &wi);
+  // vertices 0 and 2 keep red (their first face) and get a blue copy each, appended as 5 and 6
+  CHECK(text ==
+        "# written by shadetool\n"
+        "v 0 0 0 1 0 0\n"
+        "v 1 0 0 1 0 0\n"
+        "v 1 1 0 1 0 0\n"
+        "v 0 1 0 0 0 1\n"
+        "v 0 0 0 0 0 1\n"
+        "v 1 1 0 0 0 1\n"
+        "vn 0 0 1\n"
+        "vn 0 0 1\n"
+        "f 1//1 2//1 3//1\n"
+        "f 5//2 6//2 4//2\n");
+  CHECK(wi.split_vertices == 2);
+  REQUIRE(wi.notes.size() == 1);
+  CHECK(wi.notes[0] == "face colours written as vertex colours (v x y z r g b): 2 vertices added so that every face's corners carry its colour");
+  // one colour for both: nothing to split; an unused vertex is written white, with a note
+  m.face_colors = {0.5f, 0.25f, 1, 0.5f, 0.25f, 1};
+  m.add_vertex({5, 5, 5});
+  wi = WriteInfo{};
+  const std::string one = write_mesh_to_memory(m, o, &wi);
+  CHECK(one.find("v 0 0 0 0.5 0.25 1\nv 1 0 0 0.5 0.25 1\nv 1 1 0 0.5 0.25 1\nv 0 1 0 0.5 0.25 1\nv 5 5 5 1 1 1\nvn") !=
+        std::string::npos);
+  CHECK(one.find("f 1//1 2//1 3//1\nf 1//2 3//2 4//2\n") != std::string::npos);
+  CHECK(wi.split_vertices == 0);
+  REQUIRE(wi.notes.size() == 2);
+  CHECK(wi.notes[1] == "1 vertex used by no face written white");
+}
+
 TEST_CASE("OBJ: errors name the file and line", "[obj][errors]") {
   auto err = [](const std::string& text) { return error_of([&] { read_text(text, Format::Obj, nullptr, "m.obj"); }); };
   CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n") == "m.obj:4: vertex index 4 out of range (3 vertices defined so far)");
