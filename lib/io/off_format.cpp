@@ -244,10 +244,17 @@ void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
   if (mesh.has_face_normals()) info.notes.push_back("face normals not written: OFF has no face normals");
   if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to OFF");
 
+  // Float colours always carry a decimal point or exponent ("1.0", not "1"): the reader takes a
+  // line of integer colour tokens as 0..255, so float 1 0 0 would come back as 1/255 0 0.
   auto color = [&](float c) {
     out += ' ';
-    if (mesh.colors_are_float) append_shortest_float(out, c);
-    else append_uint(out, color_to_uchar(c));
+    if (mesh.colors_are_float) {
+      const std::size_t at = out.size();
+      append_shortest_float(out, c);
+      if (out.find_first_of(".eEn", at) == std::string::npos) out += ".0";  // n: nan, inf
+    } else {
+      append_uint(out, color_to_uchar(c));
+    }
   };
   out.reserve(out.size() + mesh.num_vertices() * 36 * (normals ? 2 : 1) + mesh.num_corners() * 8);
   out += vcolors ? "C" : "";
