@@ -26,6 +26,7 @@
 
 #include "core/mesh.h"
 #include "normals/face_geometry.h"
+#include "normals/interior_angle.h"
 #include "normals/weighting.h"
 
 namespace shadetool::normals_detail {
@@ -44,7 +45,7 @@ inline void triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::s
     const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
     const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
     const T l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
-    const Vec3<T> N = triangle_area_vector(e0, e1, e2, l0, l1, l2);
+    const Vec3<T> N = triangle_area_vector(P, v0, v1, v2, l0, l1, l2);
     if constexpr (W == Weighting::Area) {
       if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) continue;
       sink(c, v0, N); sink(c + 1, v1, N); sink(c + 2, v2, N);
@@ -82,7 +83,7 @@ inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::si
     if (n_corners == 3) {
       const Vec3d p0 = load_position(P, cv[begin]), p1 = load_position(P, cv[begin + 1]), p2 = load_position(P, cv[begin + 2]);
       const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
-      N = triangle_area_vector(e0, e1, e2, dot(e0, e0), dot(e1, e1), dot(e2, e2));
+      N = triangle_area_vector(P, cv[begin], cv[begin + 1], cv[begin + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
     } else {
       N = newell_area_vector<T>(mesh, f);
     }
@@ -110,8 +111,8 @@ inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::si
         } else {
           const T s = dot(cross(a, b), n);  // |a||b| sin(theta), signed about the face normal
           if constexpr (W == Weighting::Angle) {
-            T theta = std::atan2(s, dot(a, b));
-            if (theta < T(0)) theta += T(kTwoPi);  // reflex corner of a concave polygon
+            T theta = interior_angle(std::fabs(s), dot(a, b));
+            if (s < T(0)) theta = T(kTwoPi) - theta;  // reflex corner of a concave polygon
             sink(c, v, n * theta);
           } else {
             const T d = dot(a, a) * dot(b, b);

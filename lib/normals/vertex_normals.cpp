@@ -11,7 +11,9 @@
 // counted in fallback_vertices.
 #include "normals/vertex_normals.h"
 
+#include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
+#include "normals/parallel.h"
 #include "normals/vertex_fallback.h"
 
 namespace shadetool {
@@ -21,30 +23,34 @@ using namespace normals_detail;
 
 template <class T, Weighting W>
 VertexNormals compute(const Mesh& mesh, Precision precision) {
-  const std::size_t V = mesh.num_vertices(), F = mesh.num_faces();
+  const std::size_t V = mesh.num_vertices();
   std::vector<T> sum(3 * V, T(0));
-  auto add = [s = sum.data()](std::size_t, std::uint32_t v, const Vec3<T>& n) {
-    T* o = s + 3 * std::size_t(v);
-    o[0] += n.x; o[1] += n.y; o[2] += n.z;
-  };
-  if (mesh.all_triangles()) triangle_contributions<T, W>(mesh, 0, F, add);
-  else polygon_contributions<T, W>(mesh, 0, F, add);
+  const bool triangles = mesh.all_triangles();
+  accumulate_by_vertex<T>(mesh, [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
+    if (triangles) triangle_contributions<T, W>(mesh, f_begin, f_end, sink);
+    else polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
+  }, sum);
 
   VertexNormals result;
   result.normals.resize(3 * V);
-  std::vector<std::uint32_t> needs_fallback;
-  for (std::size_t v = 0; v < V; ++v) {
-    const Vec3<T> s{sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]};
-    const T len = checked_length(s);
-    if (len > T(0)) {  // divisor checked
-      const T inv = T(1) / len;
-      result.normals[3 * v] = double(s.x * inv);
-      result.normals[3 * v + 1] = double(s.y * inv);
-      result.normals[3 * v + 2] = double(s.z * inv);
-    } else {
-      needs_fallback.push_back(std::uint32_t(v));
+  std::vector<char> failed(V, 0);
+  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
+    for (std::size_t v = v_begin; v < v_end; ++v) {
+      const Vec3<T> s{sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]};
+      const T len = checked_length(s);
+      if (len > T(0)) {  // divisor checked
+        const T inv = T(1) / len;
+        result.normals[3 * v] = double(s.x * inv);
+        result.normals[3 * v + 1] = double(s.y * inv);
+        result.normals[3 * v + 2] = double(s.z * inv);
+      } else {
+        failed[v] = 1;
+      }
     }
-  }
+  });
+  std::vector<std::uint32_t> needs_fallback;
+  for (std::size_t v = 0; v < V; ++v)
+    if (failed[v]) needs_fallback.push_back(std::uint32_t(v));
   result.fallback_vertices = needs_fallback.size();
   if (!needs_fallback.empty()) apply_vertex_fallback(mesh, needs_fallback, precision, result.normals);
   return result;

@@ -1,0 +1,190 @@
+// bench_normals: vertex normals, ours against OpenMesh, on a generated irregular sphere.
+//
+// Usage: bench_normals [--quick] [--faces N] [--reps R] [--csv FILE]
+// Mesh: irregular UV sphere (jittered along the surface + 30% random edge flips), about N
+// triangles (default 1M), exact normals known. Kernels timed in one process, IO excluded,
+// median of R repetitions (default 15), after one warm-up run. Threads: 1 and 2 (TBB arenas).
+// Output: a Markdown table on stdout (time, ratio to OpenMesh update_normals, error against the
+// analytic normals), and optionally CSV.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <tbb/task_arena.h>
+
+#include "normals/corner_normals.h"
+#include "normals/vertex_normals.h"
+#include "support/analytic_meshes.h"
+
+using namespace shadetool;
+using namespace shadetool::testing;
+
+namespace {
+
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+using OMd = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+using OMf = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraits>;
+
+double median_ms(int reps, const std::function<void()>& fn) {
+  fn();  // warm-up (page faults, caches)
+  std::vector<double> t;
+  for (int r = 0; r < reps; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    fn();
+    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+struct Err { double mean = 0, p99 = 0, max = 0; std::size_t bad = 0; };
+
+template <class Get>
+Err error_of(std::size_t V, const std::vector<Vec3d>& exact, Get get) {
+  Err e;
+  std::vector<double> a;
+  a.reserve(V);
+  for (std::size_t v = 0; v < V; ++v) {
+    const Vec3d n = get(v);
+    if (!is_finite(n) || (n.x == 0 && n.y == 0 && n.z == 0)) { ++e.bad; continue; }
+    a.push_back(angle_degrees(n, exact[v]));
+  }
+  std::sort(a.begin(), a.end());
+  for (double x : a) e.mean += x;
+  if (!a.empty()) {
+    e.mean /= double(a.size());
+    e.p99 = a[std::size_t(0.99 * double(a.size() - 1))];
+    e.max = a.back();
+  }
+  return e;
+}
+
+// Error of corner normals: every corner against its vertex's exact normal (a smooth sphere has no
+// crease above 30 degrees, so every corner should carry its vertex's normal).
+Err corner_error(const Mesh& mesh, const CornerNormals& cn, const AnalyticMesh& am) {
+  std::vector<Vec3d> exact(mesh.num_corners());
+  for (std::size_t c = 0; c < mesh.num_corners(); ++c) exact[c] = am.exact_normals[mesh.corner_vertex[c]];
+  return error_of(mesh.num_corners(), exact, [&](std::size_t c) { return get3(cn.normals, cn.corner_index[c]); });
+}
+
+template <class OM>
+void build(OM& om, const Mesh& m) {
+  std::vector<typename OM::VertexHandle> vh;
+  vh.reserve(m.num_vertices());
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    const Vec3d p = m.position(v);
+    vh.push_back(om.add_vertex(typename OM::Point(p.x, p.y, p.z)));
+  }
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    om.add_face(vh[m.corner_vertex[3 * f]], vh[m.corner_vertex[3 * f + 1]], vh[m.corner_vertex[3 * f + 2]]);
+  om.request_face_normals();
+  om.request_vertex_normals();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::size_t faces = 1000000;
+  int reps = 15;
+  std::string csv;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--quick")) { faces = 100000; reps = 5; }
+    else if (!std::strcmp(argv[i], "--faces") && i + 1 < argc) faces = std::stoul(argv[++i]);
+    else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::stoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
+    else { std::fprintf(stderr, "usage: bench_normals [--quick] [--faces N] [--reps R] [--csv FILE]\n"); return 2; }
+  }
+  // UV sphere with nu = 2 nv has 2 nu (nv - 1) triangles.
+  const int nv = std::max(4, int(std::lround(std::sqrt(double(faces) / 4.0))));
+  const AnalyticMesh am = irregular(uv_sphere(2 * nv, nv, 0.15, 11), 13);
+  const Mesh& mesh = am.mesh;
+  const std::size_t V = mesh.num_vertices();
+  std::printf("mesh: irregular UV sphere, %zu vertices, %zu triangles; median of %d runs\n\n", V, mesh.num_faces(), reps);
+
+  struct Row { std::string method; int threads; double ms; Err err; };
+  std::vector<Row> rows;
+
+  // OpenMesh (serial library), double and float points.
+  {
+    OMd om;
+    build(om, mesh);
+    const double t_all = median_ms(reps, [&] { om.update_normals(); });
+    const double t_vert = median_ms(reps, [&] { om.update_vertex_normals(); });
+    auto e = error_of(V, am.exact_normals, [&](std::size_t v) {
+      const auto n = om.normal(OMd::VertexHandle(int(v)));
+      return Vec3d{n[0], n[1], n[2]};
+    });
+    rows.push_back({"OpenMesh update_normals (double)", 1, t_all, e});
+    rows.push_back({"OpenMesh update_vertex_normals (double)", 1, t_vert, e});
+  }
+  {
+    OMf om;
+    build(om, mesh);
+    const double t_all = median_ms(reps, [&] { om.update_normals(); });
+    auto e = error_of(V, am.exact_normals, [&](std::size_t v) {
+      const auto n = om.normal(OMf::VertexHandle(int(v)));
+      return Vec3d{n[0], n[1], n[2]};
+    });
+    rows.push_back({"OpenMesh update_normals (float)", 1, t_all, e});
+  }
+
+  const std::pair<Weighting, const char*> weightings[] = {
+      {Weighting::Area, "area"}, {Weighting::Angle, "angle"}, {Weighting::Max, "max"}, {Weighting::Uniform, "uniform"}};
+  for (int threads : {1, 2}) {
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      for (auto [w, name] : weightings)
+        for (Precision p : {Precision::Double, Precision::Float}) {
+          VertexNormals r;
+          const double ms = median_ms(reps, [&] { r = vertex_normals(mesh, w, p); });
+          rows.push_back({std::string("shadetool vertex_normals ") + name + (p == Precision::Float ? " (float)" : " (double)"),
+                          threads, ms, error_of(V, am.exact_normals, [&](std::size_t v) { return get3(r.normals, v); })});
+        }
+      CornerNormals cn;
+      const double ms = median_ms(reps, [&] { cn = corner_normals(mesh, 30.0 * kPi / 180.0, Weighting::Angle); });
+      rows.push_back({"shadetool corner_normals angle, crease 30 (double)", threads, ms, corner_error(mesh, cn, am)});
+    });
+  }
+
+  const double reference = rows[0].ms;  // OpenMesh update_normals (double)
+  auto find = [&](const std::string& m, int th) {
+    for (auto& r : rows)
+      if (r.method == m && r.threads == th) return r.ms;
+    return 0.0;
+  };
+  std::printf("| method | threads | median ms | speed vs OpenMesh update_normals | mean err deg | p99 err deg | max err deg | NaN/zero |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (auto& r : rows)
+    std::printf("| %s | %d | %.2f | %.1fx | %.3g | %.3g | %.3g | %zu |\n", r.method.c_str(), r.threads, r.ms,
+                reference / r.ms, r.err.mean, r.err.p99, r.err.max, r.err.bad);
+  const double area1 = find("shadetool vertex_normals area (double)", 1), area2 = find("shadetool vertex_normals area (double)", 2);
+  std::printf("\nTargets (issue 8), double precision:\n");
+  std::printf("  area, 1 thread, vs OpenMesh update_normals: %.1fx (target >= 5x)\n", reference / area1);
+  std::printf("  angle / area, 1 thread: %.2f (target <= 2)\n", find("shadetool vertex_normals angle (double)", 1) / area1);
+  std::printf("  max / area, 1 thread: %.2f (target <= 2)\n", find("shadetool vertex_normals max (double)", 1) / area1);
+  for (auto [w, name] : weightings) {
+    const std::string m = std::string("shadetool vertex_normals ") + name + " (double)";
+    std::printf("  %s: 2 threads / 1 thread speed: %.2fx (target >= 1.7x)\n", name, find(m, 1) / find(m, 2));
+  }
+  std::printf("  area 2 threads vs OpenMesh update_normals: %.1fx\n", reference / area2);
+
+  if (!csv.empty()) {
+    FILE* f = std::fopen(csv.c_str(), "w");
+    if (!f) { std::perror(csv.c_str()); return 1; }
+    std::fprintf(f, "method,threads,median_ms,speedup_vs_openmesh_update_normals,mean_err_deg,p99_err_deg,max_err_deg,nan_or_zero\n");
+    for (auto& r : rows)
+      std::fprintf(f, "\"%s\",%d,%.4f,%.3f,%.6g,%.6g,%.6g,%zu\n", r.method.c_str(), r.threads, r.ms, reference / r.ms,
+                   r.err.mean, r.err.p99, r.err.max, r.err.bad);
+    std::fclose(f);
+  }
+  return 0;
+}
