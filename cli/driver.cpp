@@ -10,6 +10,8 @@
 #include <mutex>
 #include <thread>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
@@ -83,6 +85,35 @@ void validate(const IoOptions& io, bool writes_mesh) {
     throw shadetool::Error(shadetool::located(io.output_dir, 0, "output directory does not exist"));
 }
 
+// A one-line progress display on stderr, only when stderr is a terminal and the work is long
+// (several files, or one file over 32 MiB); pipelines and logs get nothing extra.
+class Progress {
+ public:
+  Progress(const IoOptions& io, std::size_t files) : files_(files) {
+    if (io.quiet || io.json || !isatty(STDERR_FILENO)) return;
+    std::error_code ec;
+    const bool big = files == 1 && io.inputs[0] != "-" && fs::file_size(io.inputs[0], ec) > (32u << 20) && !ec;
+    enabled_ = files > 1 || big;
+  }
+  // Called with the output mutex held.
+  void stage(const std::string& input, const char* what) {
+    if (enabled_ && files_ == 1) fmt::print(stderr, "\r\033[Kshadetool: {}: {}...", input, what);
+  }
+  void file_done(bool ok) {
+    ++done_;
+    failed_ += ok ? 0 : 1;
+    if (enabled_ && files_ > 1) fmt::print(stderr, "\r\033[Kshadetool: [{}/{}] files done, {} failed", done_, files_, failed_);
+  }
+  void clear() {
+    if (enabled_) fmt::print(stderr, "\r\033[K");
+  }
+  bool enabled() const { return enabled_; }
+
+ private:
+  std::size_t files_, done_ = 0, failed_ = 0;
+  bool enabled_ = false;
+};
+
 }  // namespace
 
 int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh) {
@@ -92,6 +123,12 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
   std::atomic<std::size_t> next{0};
   std::atomic<int> failures{0};
   std::vector<std::string> failed;
+  Progress progress(io, io.inputs.size());
+  auto show_stage = [&](const std::string& input, const char* what) {
+    if (!progress.enabled()) return;
+    std::lock_guard<std::mutex> lock(out_mutex);
+    progress.stage(input, what);
+  };
 
   auto process = [&](const std::string& input) {
     nlohmann::json line = {{"command", command}, {"input", input}};
@@ -99,6 +136,7 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
     if (writes_mesh) line["output"] = output;
     FileResult result;
     try {
+      show_stage(input, "reading");
       auto t0 = std::chrono::steady_clock::now();
       shadetool::ReadInfo read_info;
       const Format in_format =
@@ -109,12 +147,14 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       for (auto& n : read_info.notes) result.notes.push_back(n);
       if (read_info.merged_vertices > 0) result.stats["merged_vertices"] = read_info.merged_vertices;
 
+      show_stage(input, "computing");
       t0 = std::chrono::steady_clock::now();
       step(mesh, input, result);
       const double compute_ms = ms_since(t0);
 
       double write_ms = 0;
       if (writes_mesh) {
+        show_stage(input, "writing");
         t0 = std::chrono::steady_clock::now();
         shadetool::WriteOptions wo;
         wo.format = io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format");
@@ -131,6 +171,7 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       line["stats"] = result.stats;
 
       std::lock_guard<std::mutex> lock(out_mutex);
+      progress.clear();
       if (!io.quiet)
         for (auto& n : result.notes) fmt::print(stderr, "shadetool: {}: {}\n", input, n);
       if (io.stats) {
@@ -146,10 +187,12 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
         fmt::print("{}\n", line.dump());
         std::fflush(stdout);
       }
+      progress.file_done(true);
     } catch (const std::exception& e) {
       failures.fetch_add(1);
       std::lock_guard<std::mutex> lock(out_mutex);
       failed.push_back(input);
+      progress.clear();
       fmt::print(stderr, "shadetool: {}\n", e.what());
       if (io.json) {
         line["status"] = "error";
@@ -157,6 +200,7 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
         fmt::print("{}\n", line.dump());
         std::fflush(stdout);
       }
+      progress.file_done(false);
     }
   };
 
@@ -173,6 +217,7 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
     for (unsigned k = 0; k < jobs; ++k) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
   }
+  progress.clear();
   if (n > 1 && failures > 0 && !io.json) {
     std::string list;
     for (auto& f : failed) list += (list.empty() ? "" : ", ") + f;
