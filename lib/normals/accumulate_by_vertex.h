@@ -4,7 +4,8 @@
 //
 // Inputs:  mesh        faces (corner_vertex, face_start)
 //          contribute  contribute(f_begin, f_end, sink) calls sink(corner, vertex, Vec3<T>) for the
-//                      corners of faces [f_begin, f_end) in corner order
+//                      corners of faces [f_begin, f_end) in corner order and returns a count
+//                      (of degenerate faces skipped), summed over all faces and returned
 // Output:  sum         #V by 3 (T), zero on entry; sum[v] = contributions of v's corners added in
 //                      ascending corner order, exactly as the serial loop would add them.
 //
@@ -38,7 +39,7 @@
 namespace shadetool::normals_detail {
 
 template <class T, class Contribute>
-void accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, std::vector<T>& sum) {
+std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, std::vector<T>& sum) {
   const std::size_t F = mesh.num_faces(), V = mesh.num_vertices();
   T* s = sum.data();
   auto add_direct = [s](std::size_t, std::uint32_t v, const Vec3<T>& n) {
@@ -47,10 +48,7 @@ void accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, std::v
   };
   const std::size_t threads = std::size_t(tbb::this_task_arena::max_concurrency());
   const std::size_t K = std::min<std::size_t>({F / 8192, 4 * threads, 65535});
-  if (F < kSerialBelow || threads < 2 || K < 2) {
-    contribute(std::size_t(0), F, add_direct);
-    return;
-  }
+  if (F < kSerialBelow || threads < 2 || K < 2) return contribute(std::size_t(0), F, add_direct);
   auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_start[F * k / K]); };  // corner index
   const std::uint32_t* cv = mesh.corner_vertex.data();
 
@@ -78,17 +76,16 @@ void accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, std::v
   });
   std::size_t foreign_corners = 0;
   for (auto n : foreign) foreign_corners += n;
-  if (foreign_corners > mesh.num_corners() / 4) {  // faces in random order: side lists would be huge
-    contribute(std::size_t(0), F, add_direct);
-    return;
-  }
+  if (foreign_corners > mesh.num_corners() / 4)  // faces in random order: side lists would be huge
+    return contribute(std::size_t(0), F, add_direct);
 
   // Pass 3: chunks in parallel; shared vertices' terms go to side lists, in corner order.
   struct Term { std::uint32_t v; T x, y, z; };
   std::vector<std::vector<Term>> side(K);
+  std::vector<std::size_t> counts(K, 0);
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     auto& list = side[k];
-    contribute(F * k / K, F * (k + 1) / K, [&](std::size_t, std::uint32_t v, const Vec3<T>& n) {
+    counts[k] = contribute(F * k / K, F * (k + 1) / K, [&](std::size_t, std::uint32_t v, const Vec3<T>& n) {
       if (shared[v].load(std::memory_order_relaxed)) {
         list.push_back({v, n.x, n.y, n.z});
       } else {
@@ -103,6 +100,9 @@ void accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, std::v
       T* o = s + 3 * std::size_t(t.v);
       o[0] += t.x; o[1] += t.y; o[2] += t.z;
     }
+  std::size_t count = 0;
+  for (auto n : counts) count += n;
+  return count;
 }
 
 }  // namespace shadetool::normals_detail

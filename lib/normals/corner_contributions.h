@@ -35,8 +35,10 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Calls sink(corner, vertex, contribution) for every corner of the triangles in [f_begin, f_end)
 // whose area vector is valid. Requires mesh.all_triangles() (corner = 3 f + k).
+// Returns the number of degenerate faces skipped.
 template <class T, Weighting W, class Sink>
-inline void triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+  std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
   for (std::size_t f = f_begin; f < f_end; ++f) {
@@ -47,10 +49,10 @@ inline void triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::s
     const T l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
     const Vec3<T> N = triangle_area_vector(P, v0, v1, v2, l0, l1, l2);
     if constexpr (W == Weighting::Area) {
-      if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) continue;
+      if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) { ++degenerate; continue; }
       sink(c, v0, N); sink(c + 1, v1, N); sink(c + 2, v2, N);
     } else if constexpr (W == Weighting::Max) {
-      if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) continue;
+      if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) { ++degenerate; continue; }
       // corner 0: edges e0 and -e2; corner 1: e1 and -e0; corner 2: e2 and -e1.
       const T d0 = l0 * l2, d1 = l1 * l0, d2 = l2 * l1;
       if (d0 > T(0)) sink(c, v0, N * (T(1) / d0));
@@ -58,7 +60,7 @@ inline void triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::s
       if (d2 > T(0)) sink(c + 2, v2, N * (T(1) / d2));
     } else {
       const T len = checked_length(N);
-      if (!(len > T(0))) continue;  // degenerate: contributes nothing
+      if (!(len > T(0))) { ++degenerate; continue; }  // degenerate: contributes nothing
       const Vec3<T> n = N * (T(1) / len);
       if constexpr (W == Weighting::Uniform) {
         sink(c, v0, n); sink(c + 1, v1, n); sink(c + 2, v2, n);
@@ -69,16 +71,18 @@ inline void triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::s
       }
     }
   }
+  return degenerate;
 }
 
 // The same for any face sizes (triangles among polygons take the triangle formulas).
 template <class T, Weighting W, class Sink>
-inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+  std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
   for (std::size_t f = f_begin; f < f_end; ++f) {
     const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1], n_corners = end - begin;
-    if (n_corners < 3) continue;
+    if (n_corners < 3) { ++degenerate; continue; }
     Vec3<T> N;
     if (n_corners == 3) {
       const Vec3d p0 = load_position(P, cv[begin]), p1 = load_position(P, cv[begin + 1]), p2 = load_position(P, cv[begin + 2]);
@@ -88,7 +92,7 @@ inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::si
       N = newell_area_vector<T>(mesh, f);
     }
     const T len = checked_length(N);
-    if (!(len > T(0))) continue;  // degenerate: contributes nothing
+    if (!(len > T(0))) { ++degenerate; continue; }  // degenerate: contributes nothing
     const Vec3<T> n = N * (T(1) / len);
     for (std::uint32_t c = begin; c < end; ++c) {
       const std::uint32_t v = cv[c];
@@ -122,6 +126,7 @@ inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::si
       }
     }
   }
+  return degenerate;
 }
 
 template <Weighting W>

@@ -213,6 +213,7 @@ CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision
     }
   });
   for (auto n : fallbacks) out.fallback_corners += n;
+  for (std::size_t f = 0; f < F; ++f) out.degenerate_faces += !face_valid(f);
   return out;
 }
 

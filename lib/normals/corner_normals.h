@@ -38,6 +38,7 @@ struct CornerNormals {
   std::vector<double> normals;
   std::vector<std::uint32_t> corner_index;
   std::size_t fallback_corners = 0;
+  std::size_t degenerate_faces = 0;  // faces that contributed nothing (as in vertex_normals)
 };
 
 CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting = Weighting::Angle,

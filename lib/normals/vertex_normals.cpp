@@ -26,12 +26,12 @@ VertexNormals compute(const Mesh& mesh, Precision precision) {
   const std::size_t V = mesh.num_vertices();
   std::vector<T> sum(3 * V, T(0));
   const bool triangles = mesh.all_triangles();
-  accumulate_by_vertex<T>(mesh, [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
-    if (triangles) triangle_contributions<T, W>(mesh, f_begin, f_end, sink);
-    else polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
+  VertexNormals result;
+  result.degenerate_faces = accumulate_by_vertex<T>(mesh, [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
+    return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
+                     : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
   }, sum);
 
-  VertexNormals result;
   result.normals.resize(3 * V);
   std::vector<char> failed(V, 0);
   parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {

@@ -5,7 +5,10 @@
 //          precision accumulation precision
 // Output:  normals   #V by 3 flat array of unit normals
 //          fallback_vertices  how many vertices had no valid face (isolated, or only degenerate
-//          faces) and got the documented fallback instead (never NaN)
+//          faces) or whose weighted sum cancelled, and got the documented fallback instead
+//          (never NaN; see vertex_fallback.h)
+//          degenerate_faces  faces that contributed nothing (zero area, repeated index, fewer than
+//          3 corners, non-finite position)
 #pragma once
 
 #include <cstddef>
@@ -19,6 +22,7 @@ namespace shadetool {
 struct VertexNormals {
   std::vector<double> normals;
   std::size_t fallback_vertices = 0;
+  std::size_t degenerate_faces = 0;
 };
 
 VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting = Weighting::Angle,
