@@ -15,6 +15,9 @@
 #include <string>
 #include <vector>
 
+// OpenMesh's PropertyT<T>::push_back (push_back(T()) of a default VectorT) trips GCC 12's
+// -Wmaybe-uninitialized when inlined here; the warning is in OpenMesh's code, not ours.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <tbb/task_arena.h>
 
