@@ -38,11 +38,10 @@ VertexNormals compute(const Mesh& mesh, Precision precision) {
     for (std::size_t v = v_begin; v < v_end; ++v) {
       const Vec3<T> s{sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]};
       const T len = checked_length(s);
-      if (len > T(0)) {  // divisor checked
-        const T inv = T(1) / len;
-        result.normals[3 * v] = double(s.x * inv);
-        result.normals[3 * v + 1] = double(s.y * inv);
-        result.normals[3 * v + 2] = double(s.z * inv);
+      if (len > T(0)) {  // divisor checked; divide (not multiply by 1/len): one rounding per component
+        result.normals[3 * v] = double(s.x / len);
+        result.normals[3 * v + 1] = double(s.y / len);
+        result.normals[3 * v + 2] = double(s.z / len);
       } else {
         failed[v] = 1;
       }
