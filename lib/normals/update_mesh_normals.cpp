@@ -12,16 +12,19 @@ namespace {
 
 std::size_t rows(const std::vector<double>& a) { return a.size() / 3; }
 
-// Corner normals referenced by some corner: the pool entries a writer will emit.
+// Invalid corner normals: referenced pool entries that are NaN/Inf/zero, plus corners whose index
+// points outside the pool (a broken file; such a corner has no normal at all).
 std::size_t invalid_corner_normals(const Mesh& mesh) {
   std::vector<double> used;
   std::vector<char> seen(rows(mesh.corner_normals), 0);
-  for (std::uint32_t i : mesh.corner_normal_index)
-    if (i < seen.size() && !seen[i]) {
-      seen[i] = 1;
-      for (int k = 0; k < 3; ++k) used.push_back(mesh.corner_normals[3 * std::size_t(i) + k]);
-    }
-  return count_invalid_normals(used);
+  std::size_t out_of_range = 0;
+  for (std::uint32_t i : mesh.corner_normal_index) {
+    if (i >= seen.size()) { ++out_of_range; continue; }
+    if (seen[i]) continue;
+    seen[i] = 1;
+    for (int k = 0; k < 3; ++k) used.push_back(mesh.corner_normals[3 * std::size_t(i) + k]);
+  }
+  return count_invalid_normals(used) + out_of_range;
 }
 
 std::size_t count_degenerate(const std::vector<double>& face_normals) {

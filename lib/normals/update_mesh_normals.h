@@ -13,6 +13,7 @@
 //   - Without `recompute`, existing normals are kept bitwise and nothing is computed
 //     (report.kept). If any of them is invalid (NaN, Inf or zero length; count_invalid_normals),
 //     nothing is changed and report.invalid_existing says how many: the caller refuses the input.
+//     For corner normals, a corner whose index points outside the pool also counts as invalid.
 //   - Otherwise the kind asked for is computed and stored: Vertex -> mesh.vertex_normals (corner
 //     normals removed); Corner -> mesh.corner_normals + corner_normal_index (vertex normals
 //     removed); Face -> mesh.face_normals, with kFallbackNormal (0,0,1) for degenerate faces
