@@ -52,16 +52,22 @@ SHADETOOL_NORMALS_INLINE Vec3<T> edge(const Vec3d& a, const Vec3d& b) {
 // (p2 - p1) x (p0 - p1). Rounding error is then smallest for slivers. The apex is chosen among
 // vertex indices (integer selects, no branch: which edge is longest is unpredictable on irregular
 // meshes, and a mispredicted branch cost more than the product itself).
+// Corner opposite the longest edge (the apex): 2 when e0 = p1 - p0 is longest, 0 for e1 = p2 - p1,
+// 1 for e2 = p0 - p2 (ties resolved in that order). Its angle is the triangle's largest.
+template <class T>
+SHADETOOL_NORMALS_INLINE int apex_corner(T l0, T l1, T l2) {
+  const bool e0_longest = l0 >= l1 && l0 >= l2;
+  const bool e1_longest = l1 > l0 && l1 >= l2;
+  return e0_longest ? 2 : (e1_longest ? 0 : 1);
+}
+
 template <class T>
 SHADETOOL_NORMALS_INLINE Vec3<T> triangle_area_vector(const double* positions, std::uint32_t v0, std::uint32_t v1,
                                                       std::uint32_t v2, T l0, T l1, T l2) {
-  const bool e0_longest = l0 >= l1 && l0 >= l2;
-  const bool e1_longest = l1 > l0 && l1 >= l2;
-  const std::uint32_t apex = e0_longest ? v2 : (e1_longest ? v0 : v1);
-  const std::uint32_t a = e0_longest ? v0 : (e1_longest ? v1 : v2);
-  const std::uint32_t b = e0_longest ? v1 : (e1_longest ? v2 : v0);
-  const Vec3d p = load_position(positions, apex);
-  return cross(edge<T>(p, load_position(positions, a)), edge<T>(p, load_position(positions, b)));
+  const std::uint32_t v[5] = {v0, v1, v2, v0, v1};
+  const int k = apex_corner(l0, l1, l2);
+  const Vec3d p = load_position(positions, v[k]);
+  return cross(edge<T>(p, load_position(positions, v[k + 1])), edge<T>(p, load_position(positions, v[k + 2])));
 }
 
 // Newell's method about p_0: N = sum_i (p_i - p_0) x (p_{i+1} - p_0) = 2 A n for a planar

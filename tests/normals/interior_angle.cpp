@@ -29,7 +29,7 @@ TEST_CASE("interior_angle: exact at 0, pi/4, pi/2, 3pi/4, pi and for the degener
   CHECK(interior_angle(1.0f, 0.0f) == float(pi / 2));
 }
 
-TEST_CASE("interior_angle: within 4 ulp of std::atan2 over 12 decades, double and float", "[interior_angle]") {
+TEST_CASE("interior_angle: within 4 (double) and 6 (float) ulp of std::atan2 over 12 decades", "[interior_angle]") {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(-1, 1);
   double worst_d = 0, worst_f = 0;
@@ -40,7 +40,7 @@ TEST_CASE("interior_angle: within 4 ulp of std::atan2 over 12 decades, double an
   }
   INFO("worst ulps: double " << worst_d << ", float " << worst_f);
   CHECK(worst_d <= 4);
-  CHECK(worst_f <= 4);
+  CHECK(worst_f <= 6);
 }
 
 TEST_CASE("interior_angle: tiny angles keep full relative accuracy (no acos cancellation)", "[interior_angle]") {
