@@ -1,6 +1,6 @@
 // bench_normals: vertex normals, ours against OpenMesh, on a generated irregular sphere.
 //
-// Usage: bench_normals [--quick] [--faces N] [--reps R] [--csv FILE]
+// Usage: bench_normals [--quick] [--faces N] [--reps R] [--csv FILE] [--only SUBSTRING]
 // Mesh: irregular UV sphere (jittered along the surface + 30% random edge flips), about N
 // triangles (default 1M), exact normals known. Kernels timed in one process, IO excluded,
 // median of R repetitions (default 15), after one warm-up run. Threads: 1 and 2 (TBB arenas).
@@ -20,6 +20,7 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <tbb/task_arena.h>
+#include <type_traits>
 
 #include "normals/corner_normals.h"
 #include "normals/vertex_normals.h"
@@ -36,18 +37,6 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
 };
 using OMd = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 using OMf = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraits>;
-
-double median_ms(int reps, const std::function<void()>& fn) {
-  fn();  // warm-up (page faults, caches)
-  std::vector<double> t;
-  for (int r = 0; r < reps; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    fn();
-    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
 
 struct Err { double mean = 0, p99 = 0, max = 0; std::size_t bad = 0; };
 
@@ -98,13 +87,17 @@ void build(OM& om, const Mesh& m) {
 int main(int argc, char** argv) {
   std::size_t faces = 1000000;
   int reps = 15;
-  std::string csv;
+  std::string csv, only;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) { faces = 100000; reps = 5; }
     else if (!std::strcmp(argv[i], "--faces") && i + 1 < argc) faces = std::stoul(argv[++i]);
     else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::stoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
-    else { std::fprintf(stderr, "usage: bench_normals [--quick] [--faces N] [--reps R] [--csv FILE]\n"); return 2; }
+    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: bench_normals [--quick] [--faces N] [--reps R] [--csv FILE] [--only SUBSTRING]\n");
+      return 2;
+    }
   }
   // UV sphere with nu = 2 nv has 2 nu (nv - 1) triangles.
   const int nv = std::max(4, int(std::lround(std::sqrt(double(faces) / 4.0))));
@@ -116,46 +109,67 @@ int main(int argc, char** argv) {
   struct Row { std::string method; int threads; double ms; Err err; };
   std::vector<Row> rows;
 
-  // OpenMesh (serial library), double and float points.
-  {
-    OMd om;
-    build(om, mesh);
-    const double t_all = median_ms(reps, [&] { om.update_normals(); });
-    const double t_vert = median_ms(reps, [&] { om.update_vertex_normals(); });
-    auto e = error_of(V, am.exact_normals, [&](std::size_t v) {
-      const auto n = om.normal(OMd::VertexHandle(int(v)));
-      return Vec3d{n[0], n[1], n[2]};
-    });
-    rows.push_back({"OpenMesh update_normals (double)", 1, t_all, e});
-    rows.push_back({"OpenMesh update_vertex_normals (double)", 1, t_vert, e});
-  }
-  {
-    OMf om;
-    build(om, mesh);
-    const double t_all = median_ms(reps, [&] { om.update_normals(); });
-    auto e = error_of(V, am.exact_normals, [&](std::size_t v) {
-      const auto n = om.normal(OMf::VertexHandle(int(v)));
-      return Vec3d{n[0], n[1], n[2]};
-    });
-    rows.push_back({"OpenMesh update_normals (float)", 1, t_all, e});
-  }
+  // Every method is a closure run inside a TBB arena of its thread count. Repetitions are
+  // interleaved (rep 1 of every method, then rep 2, ...) so that load from other processes on
+  // this shared machine hits all methods alike; the table reports medians.
+  struct Method { std::string name; int threads; std::function<void()> run; std::function<Err()> error; };
+  std::vector<Method> methods;
+  OMd omd;
+  build(omd, mesh);
+  OMf omf;
+  build(omf, mesh);
+  auto om_error = [&](auto& om) {
+    return [&om, &am, V] {
+      return error_of(V, am.exact_normals, [&](std::size_t v) {
+        const auto n = om.normal(typename std::decay_t<decltype(om)>::VertexHandle(int(v)));
+        return Vec3d{n[0], n[1], n[2]};
+      });
+    };
+  };
+  methods.push_back({"OpenMesh update_normals (double)", 1, [&] { omd.update_normals(); }, om_error(omd)});
+  methods.push_back({"OpenMesh update_vertex_normals (double)", 1, [&] { omd.update_vertex_normals(); }, om_error(omd)});
+  methods.push_back({"OpenMesh update_normals (float)", 1, [&] { omf.update_normals(); }, om_error(omf)});
 
   const std::pair<Weighting, const char*> weightings[] = {
       {Weighting::Area, "area"}, {Weighting::Angle, "angle"}, {Weighting::Max, "max"}, {Weighting::Uniform, "uniform"}};
+  std::vector<VertexNormals> results(2 * 4 * 2);
+  std::vector<CornerNormals> corner_results(2);
+  int slot = 0;
   for (int threads : {1, 2}) {
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-      for (auto [w, name] : weightings)
-        for (Precision p : {Precision::Double, Precision::Float}) {
-          VertexNormals r;
-          const double ms = median_ms(reps, [&] { r = vertex_normals(mesh, w, p); });
-          rows.push_back({std::string("shadetool vertex_normals ") + name + (p == Precision::Float ? " (float)" : " (double)"),
-                          threads, ms, error_of(V, am.exact_normals, [&](std::size_t v) { return get3(r.normals, v); })});
-        }
-      CornerNormals cn;
-      const double ms = median_ms(reps, [&] { cn = corner_normals(mesh, 30.0 * kPi / 180.0, Weighting::Angle); });
-      rows.push_back({"shadetool corner_normals angle, crease 30 (double)", threads, ms, corner_error(mesh, cn, am)});
-    });
+    for (auto [w, name] : weightings)
+      for (Precision p : {Precision::Double, Precision::Float}) {
+        VertexNormals* r = &results[slot++];
+        methods.push_back({std::string("shadetool vertex_normals ") + name + (p == Precision::Float ? " (float)" : " (double)"),
+                           threads, [&mesh, r, w = w, p] { *r = vertex_normals(mesh, w, p); },
+                           [r, &am, V] { return error_of(V, am.exact_normals, [&](std::size_t v) { return get3(r->normals, v); }); }});
+      }
+    CornerNormals* cn = &corner_results[threads - 1];
+    methods.push_back({"shadetool corner_normals angle, crease 30 (double)", threads,
+                       [&mesh, cn] { *cn = corner_normals(mesh, 30.0 * kPi / 180.0, Weighting::Angle); },
+                       [&mesh, cn, &am] { return corner_error(mesh, *cn, am); }});
+  }
+
+  // --only: keep OpenMesh update_normals (the reference) and the methods whose name contains it.
+  if (!only.empty()) {
+    std::vector<Method> kept;
+    for (auto& m : methods)
+      if (m.name == "OpenMesh update_normals (double)" || m.name.find(only) != std::string::npos) kept.push_back(m);
+    methods.swap(kept);
+  }
+  std::vector<std::vector<double>> times(methods.size());
+  for (int rep = -1; rep < reps; ++rep)  // rep -1: warm-up
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      tbb::task_arena arena(methods[m].threads);
+      arena.execute([&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        methods[m].run();
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (rep >= 0) times[m].push_back(ms);
+      });
+    }
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    std::sort(times[m].begin(), times[m].end());
+    rows.push_back({methods[m].name, methods[m].threads, times[m][times[m].size() / 2], methods[m].error()});
   }
 
   const double reference = rows[0].ms;  // OpenMesh update_normals (double)

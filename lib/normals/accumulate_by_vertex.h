@@ -6,7 +6,7 @@
 //          contribute  contribute(f_begin, f_end, sink) calls sink(corner, vertex, Vec3<T>) for the
 //                      corners of faces [f_begin, f_end) in corner order and returns a count
 //                      (of degenerate faces skipped), summed over all faces and returned
-// Output:  sum         #V by 3 (T), zero on entry; sum[v] = contributions of v's corners added in
+// Output:  sum         #V by 3 (T) array, zero on entry; sum[v] = contributions of v's corners added in
 //                      ascending corner order, exactly as the serial loop would add them.
 //
 // Method (why the result does not depend on the thread count): faces are cut into K contiguous
@@ -39,9 +39,9 @@
 namespace shadetool::normals_detail {
 
 template <class T, class Contribute>
-std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, std::vector<T>& sum) {
+std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, T* sum) {
   const std::size_t F = mesh.num_faces(), V = mesh.num_vertices();
-  T* s = sum.data();
+  T* s = sum;
   auto add_direct = [s](std::size_t, std::uint32_t v, const Vec3<T>& n) {
     T* o = s + 3 * std::size_t(v);
     o[0] += n.x; o[1] += n.y; o[2] += n.z;

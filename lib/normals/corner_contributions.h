@@ -7,7 +7,7 @@
 //   Area     N = 2 A n                          (area weighting; OpenMesh update_normals,
 //                                                libigl PER_VERTEX_NORMALS_WEIGHTING_TYPE_AREA)
 //   Angle    theta n, theta = atan2(|a x b|, a.b) (Thuermer & Wuethrich 1998; libigl ANGLE);
-//            in a triangle the largest angle is pi minus the other two
+//            in a triangle the largest angle is pi minus the other two; angles in double
 //   Max      n sin(theta) / (|a| |b|) = (a x b) / (|a|^2 |b|^2) for a triangle (Max 1999, eq. 6)
 // For a triangle, |a x b| = |N| at every corner, so all three corners use the one well-conditioned
 // N. For a polygon (4+ corners), n comes from Newell's method and the corner's own angle is used:
@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #include "core/mesh.h"
@@ -38,6 +39,18 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 // Calls sink(corner, vertex, contribution) for every corner of the triangles in [f_begin, f_end)
 // whose area vector is valid. Requires mesh.all_triangles() (corner = 3 f + k).
 // Returns the number of degenerate faces skipped.
+//
+// Which cross product, per weighting (e_a x e_b has rounding error ~ eps |e_a| |e_b|, i.e.
+// relative error ~ eps / sin(angle between them)):
+//   Area     (p1 - p0) x (p2 - p0): the contribution is the unnormalised N itself, so its error
+//            eps |e0| |e2| is at most eps (longest edge)^2, tiny against the vertex's sum of
+//            areas whatever the triangle's shape: no need to pay for choosing edges.
+//   Uniform, Angle  normalise N per face, and Max divides it by |a|^2 |b|^2: a sliver's error
+//            would be amplified by its aspect ratio, so these take the two shortest edges
+//            (face_geometry.h, triangle_area_vector), whose relative error is ~ 2 eps.
+// Zero-area check: dot(N, N) > 0 is false for a zero and for a NaN vector. A vector that
+// overflows (coordinates beyond ~1e150) passes and makes the vertex sum infinite: that vertex
+// then gets vertex_normals' fallback.
 template <class T, Weighting W, class Sink>
 inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
   std::size_t degenerate = 0;
@@ -47,40 +60,56 @@ inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin,
     const std::size_t c = 3 * f;
     const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
     const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
-    const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
-    const T l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
-    const Vec3<T> N = triangle_area_vector(P, v0, v1, v2, l0, l1, l2);
     if constexpr (W == Weighting::Area) {
-      if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) { ++degenerate; continue; }
+      const Vec3<T> N = cross(edge<T>(p0, p1), edge<T>(p0, p2));
+      if (!(dot(N, N) > T(0))) { ++degenerate; continue; }
       sink(c, v0, N); sink(c + 1, v1, N); sink(c + 2, v2, N);
-    } else if constexpr (W == Weighting::Max) {
-      if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) { ++degenerate; continue; }
-      // corner 0: edges e0 and -e2; corner 1: e1 and -e0; corner 2: e2 and -e1.
-      const T d0 = l0 * l2, d1 = l1 * l0, d2 = l2 * l1;
-      if (d0 > T(0)) sink(c, v0, N * (T(1) / d0));
-      if (d1 > T(0)) sink(c + 1, v1, N * (T(1) / d1));
-      if (d2 > T(0)) sink(c + 2, v2, N * (T(1) / d2));
     } else {
-      const T len = checked_length(N);
-      if (!(len > T(0))) { ++degenerate; continue; }  // degenerate: contributes nothing
-      const Vec3<T> n = N * (T(1) / len);
-      if constexpr (W == Weighting::Uniform) {
-        sink(c, v0, n); sink(c + 1, v1, n); sink(c + 2, v2, n);
+      const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
+      const T l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
+      const Vec3<T> N = triangle_area_vector(P, v0, v1, v2, l0, l1, l2);
+      if constexpr (W == Weighting::Max) {
+        if (!(dot(N, N) > T(0))) { ++degenerate; continue; }
+        // Corner 0 lies between e0 and -e2, corner 1 between e1 and -e0, corner 2 between e2
+        // and -e1: weights 1/(l0 l2), 1/(l1 l0), 1/(l2 l1) = (l1, l2, l0) / (l0 l1 l2), one division.
+        const T q = l0 * l1 * l2;
+        if (q > std::numeric_limits<T>::min() && q < std::numeric_limits<T>::max()) {  // divisor checked
+          const T inv = T(1) / q;
+          sink(c, v0, N * (l1 * inv)); sink(c + 1, v1, N * (l2 * inv)); sink(c + 2, v2, N * (l0 * inv));
+        } else {  // the product under- or overflows: per corner, each divisor checked
+          const T d[3] = {l0 * l2, l1 * l0, l2 * l1};
+          const std::uint32_t v[3] = {v0, v1, v2};
+          for (int k = 0; k < 3; ++k) {
+            if (!(d[k] > T(0))) continue;
+            const Vec3<T> w = N * (T(1) / d[k]);
+            if (is_finite(w)) sink(c + k, v[k], w);
+          }
+        }
       } else {
-        // Angle: the corner at v_k lies between e_k and -e_{k-1}, so cos part -e_k.e_{k-1}.
-        // The two angles at the ends of the longest edge are computed; the apex angle (the
-        // largest, >= pi/3) is pi minus both: its absolute error stays ~1e-15, i.e. relative
-        // ~1e-15, and one arctangent in three is saved.
-        const T cos_part[3] = {-dot(e0, e2), -dot(e1, e0), -dot(e2, e1)};
-        static constexpr int next[3] = {1, 2, 0}, prev[3] = {2, 0, 1};
-        const int apex = apex_corner(l0, l1, l2), a = next[apex], b = prev[apex];
-        T theta[3];
-        theta[a] = interior_angle(len, cos_part[a]);
-        theta[b] = interior_angle(len, cos_part[b]);
-        theta[apex] = T(kPi) - theta[a] - theta[b];
-        sink(c, v0, n * theta[0]);
-        sink(c + 1, v1, n * theta[1]);
-        sink(c + 2, v2, n * theta[2]);
+        const T len = checked_length(N);
+        if (!(len > T(0))) { ++degenerate; continue; }  // degenerate: contributes nothing
+        const Vec3<T> n{N.x / len, N.y / len, N.z / len};
+        if constexpr (W == Weighting::Uniform) {
+          sink(c, v0, n); sink(c + 1, v1, n); sink(c + 2, v2, n);
+        } else {
+          // Angle: the corner at v_k lies between e_k and -e_{k-1}, so its cos part is
+          // -e_k.e_{k-1}, and |e_k x e_{k-1}| = |N| = len at every corner. The two angles at the
+          // ends of the longest edge are computed, as one SSE2 pair, in double for both
+          // precisions (interior_angle.h); the apex angle (the largest, >= pi/3) is pi minus
+          // both: its absolute error stays ~1e-15, and one arctangent in three is saved.
+          const T cos_part[3] = {-dot(e0, e2), -dot(e1, e0), -dot(e2, e1)};
+          static constexpr int next[3] = {1, 2, 0}, prev[3] = {2, 0, 1};
+          const int apex = apex_corner(l0, l1, l2), a = next[apex], b = prev[apex];
+          double ta, tb;
+          interior_angle_pair(double(len), double(cos_part[a]), double(len), double(cos_part[b]), ta, tb);
+          T theta[3];
+          theta[a] = T(ta);
+          theta[b] = T(tb);
+          theta[apex] = T(kPi - ta - tb);
+          sink(c, v0, n * theta[0]);
+          sink(c + 1, v1, n * theta[1]);
+          sink(c + 2, v2, n * theta[2]);
+        }
       }
     }
   }
@@ -120,7 +149,7 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
         if (n_corners == 3) {
           // Triangle among polygons: |a x b| = |N| exactly as in triangle_contributions.
           if constexpr (W == Weighting::Angle) {
-            sink(c, v, n * interior_angle(len, dot(a, b)));
+            sink(c, v, n * T(interior_angle(double(len), double(dot(a, b)))));
           } else {
             const T d = dot(a, a) * dot(b, b);
             if (d > T(0)) sink(c, v, N * (T(1) / d));
@@ -128,9 +157,9 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
         } else {
           const T s = dot(cross(a, b), n);  // |a||b| sin(theta), signed about the face normal
           if constexpr (W == Weighting::Angle) {
-            T theta = interior_angle(std::fabs(s), dot(a, b));
-            if (s < T(0)) theta = T(kTwoPi) - theta;  // reflex corner of a concave polygon
-            sink(c, v, n * theta);
+            double theta = interior_angle(double(std::fabs(s)), double(dot(a, b)));
+            if (s < T(0)) theta = kTwoPi - theta;  // reflex corner of a concave polygon
+            sink(c, v, n * T(theta));
           } else {
             const T d = dot(a, a) * dot(b, b);
             if (d > T(0)) sink(c, v, n * (std::fabs(s) / d));

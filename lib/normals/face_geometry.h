@@ -54,11 +54,14 @@ SHADETOOL_NORMALS_INLINE Vec3<T> edge(const Vec3d& a, const Vec3d& b) {
 // meshes, and a mispredicted branch cost more than the product itself).
 // Corner opposite the longest edge (the apex): 2 when e0 = p1 - p0 is longest, 0 for e1 = p2 - p1,
 // 1 for e2 = p0 - p2 (ties resolved in that order). Its angle is the triangle's largest.
+// Arithmetic on the comparison results, not ?: or &&, so that no branch is emitted (which edge is
+// longest is unpredictable on irregular meshes; a mispredicted branch per triangle cost more than
+// the whole area-weighted kernel).
 template <class T>
 SHADETOOL_NORMALS_INLINE int apex_corner(T l0, T l1, T l2) {
-  const bool e0_longest = l0 >= l1 && l0 >= l2;
-  const bool e1_longest = l1 > l0 && l1 >= l2;
-  return e0_longest ? 2 : (e1_longest ? 0 : 1);
+  const int e0_longest = int(l0 >= l1) & int(l0 >= l2);
+  const int e1_longest = int(l1 > l0) & int(l1 >= l2);
+  return 1 + e0_longest - e1_longest;  // 2, 0, or 1 when e2 is longest
 }
 
 template <class T>

@@ -3,77 +3,98 @@
 // Inputs:  sin_part  |a x b| = |a||b| sin(theta), >= 0
 //          cos_part  a . b   = |a||b| cos(theta)
 // Output:  theta = atan2(sin_part, cos_part) in [0, pi]; 0 when both are 0 (degenerate corner).
+//          interior_angle_pair does two at once (the two angles a triangle kernel needs).
 //
-// Why not std::atan2: the angle-weighted kernel needs three angles per triangle, and the libm
-// call (not inlined, not vectorised) cost more than the whole area-weighted kernel. This is the
-// textbook reduction, inlined, with one division and no data-dependent branch:
-//   1. octant: t = min/max of (sin_part, |cos_part|) in [0, 1]; theta from atan(t) by
-//      pi/2 - . (when sin_part > |cos_part|) and pi - . (when cos_part < 0), from a 4-entry table;
-//   2. table: atan(t) = atan(c_k) + atan((t - c_k) / (1 + t c_k)) with c_k = tan(k pi/32),
-//      k = 0..8 chosen so that the reduced argument x satisfies |x| <= tan(pi/64) = 0.049
-//      (the addition formula for arctangent; e.g. Muller, "Elementary Functions", 3rd ed., 5.2);
-//   3. series: atan(x) = x - x^3/3 + x^5/5 - ... (Taylor), truncated where the first omitted
-//      term is far below half an ulp: 7 terms up to x^13 in double (remainder < 0.049^14/15 <
-//      3e-19 relative), 4 terms up to x^7 in float (remainder < 7e-13 relative).
-// Accuracy: within 4 ulp of std::atan2 in double, 6 ulp in float (tests/normals/interior_angle.cpp).
-// Precision: T = double or float throughout.
+// Why not std::atan2: the angle-weighted kernel needs two angles per triangle, and the libm call
+// (not inlined, not vectorised) cost several times the whole area-weighted kernel. This is the
+// textbook reduction, inlined, branch-free, and for pairs in SSE2 (both lanes at once):
+//   1. octant: t = min / max of (sin_part, |cos_part|) in [0, 1]; theta from atan(t) by
+//      pi/2 - . (when sin_part > |cos_part|) and pi - . (when cos_part < 0);
+//   2. table: atan(t) = atan(c_k) + atan((t - c_k) / (1 + t c_k)) with c_k = k/8 (exact in
+//      binary), k = round(8 t), so the reduced argument x satisfies |x| <= 1/16 (the addition
+//      formula for arctangent; e.g. Muller, "Elementary Functions", 3rd ed., ch. 5);
+//   3. series: atan(x) = x (1 - z/3 + z^2/5 - ... + z^6/13), z = x^2 (Taylor), evaluated by
+//      Estrin's scheme; the first omitted term x^15/15 is below 2e-19 relative.
+// Accuracy: within 4 ulp of std::atan2 (tests/normals/interior_angle.cpp), in double. The float
+// kernels call the double version too (converting in and out): an angle costs the same either way.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "normals/face_geometry.h"  // SHADETOOL_NORMALS_INLINE
 
 namespace shadetool::normals_detail {
 
-// Table of c_k = tan(k pi / 32) rounded to double, atan(c_k) (correctly rounded, so the table
-// is self-consistent whatever c_k's rounding), and the boundaries tan((2k+1) pi / 64).
+// atan(k/8), k = 0..8, correctly rounded.
 struct AtanTable {
-  static constexpr double c[9] = {0.0, 0.09849140335716425, 0.198912367379658, 0.3033466836073424,
-                                  0.41421356237309503, 0.5345111359507916, 0.6681786379192989,
-                                  0.8206787908286602, 1.0};
-  static constexpr double atan_c[9] = {0.0, 0.09817477042468103, 0.19634954084936207, 0.2945243112740431,
-                                       0.39269908169872414, 0.4908738521234052, 0.5890486225480862,
-                                       0.6872233929727672, 0.7853981633974483};
-  static constexpr double bound[8] = {0.049126849769467254, 0.14833598753834742, 0.25048696019130545,
-                                      0.3578057213145241, 0.4729647758913199, 0.5993769336819237,
-                                      0.7416505462720354, 0.906347169019147};
+  static constexpr double atan_k8[9] = {0.0, 0.12435499454676144, 0.24497866312686414, 0.35877067027057225,
+                                        0.4636476090008061, 0.5585993153435624, 0.6435011087932844,
+                                        0.7188299996216245, 0.7853981633974483};
 };
 
-// atan(x) for |x| <= tan(pi/64) by its Taylor series x (1 - z/3 + z^2/5 - ...), z = x^2; the
-// polynomial in z is evaluated by Estrin's scheme (independent halves, short dependency chain).
-SHADETOOL_NORMALS_INLINE double atan_small(double x) {
-  const double z = x * x, z2 = z * z, z4 = z2 * z2;
-  // 1 - z/3 + z^2/5 - z^3/7 + z^4/9 - z^5/11 + z^6/13; first omitted term z^7/15 < 3e-19.
+constexpr double kAtanPi = 3.141592653589793, kAtanHalfPi = 1.5707963267948966;
+
+// 1 - z/3 + z^2/5 - z^3/7 + z^4/9 - z^5/11 + z^6/13 by Estrin's scheme.
+SHADETOOL_NORMALS_INLINE double atan_series(double z) {
+  const double z2 = z * z, z4 = z2 * z2;
   const double a = 1.0 - z * (1.0 / 3), b = 1.0 / 5 - z * (1.0 / 7), c = 1.0 / 9 - z * (1.0 / 11);
-  const double p = (a + z2 * b) + z4 * (c + z2 * (1.0 / 13));
-  return x * p;
-}
-SHADETOOL_NORMALS_INLINE float atan_small(float x) {
-  // 1 - z/3 + z^2/5 - z^3/7; first omitted term z^4/9 < 7e-13.
-  const float z = x * x;
-  return x * ((1.0f - z * (1.0f / 3)) + (z * z) * (1.0f / 5 - z * (1.0f / 7)));
+  return (a + z2 * b) + z4 * (c + z2 * (1.0 / 13));
 }
 
-template <class T>
-SHADETOOL_NORMALS_INLINE T interior_angle(T sin_part, T cos_part) {
-  // Octant: num = min, den = max of (sin_part, |cos_part|) (minsd/maxsd, no branch).
-  const T s = sin_part, c = std::fabs(cos_part);
-  const T num = std::min(s, c), den = std::max(s, c);
-  // Table entry k from t = num / den without dividing: t > b  <=>  num > b den (den >= 0).
-  int k = 0;
-  for (int j = 0; j < 8; ++j) k += int(num > T(AtanTable::bound[j]) * den);
-  const T ck = T(AtanTable::c[k]);
-  // x = (t - c_k) / (1 + t c_k) with t = num / den, as one division. Its divisor is >= den > 0
-  // unless both parts are 0 (degenerate corner): then the numerator is 0 too and 1 is used.
-  const T divisor = den + ck * num;
-  const T x = (num - ck * den) / (divisor > T(0) ? divisor : T(1));
-  const T r = T(AtanTable::atan_c[k]) + atan_small(x);
-  // Undo the octant: theta = offset + sign * r, chosen by (sin_part > |cos_part|, cos_part < 0).
-  static constexpr T offset[4] = {T(0), T(1.5707963267948966), T(3.141592653589793), T(1.5707963267948966)};
-  static constexpr T sign[4] = {T(1), T(-1), T(-1), T(1)};
-  const int octant = int(s > c) + 2 * int(cos_part < T(0));
-  return offset[octant] + sign[octant] * r;
+SHADETOOL_NORMALS_INLINE double interior_angle(double sin_part, double cos_part) {
+  const double s = sin_part, c = std::fabs(cos_part);
+  const double num = std::min(s, c), den = std::max(s, c);
+  const double t = den > 0.0 ? num / den : 0.0;  // divisor checked: both zero is a degenerate corner
+  const int k = int(t * 8.0 + 0.5);
+  const double ck = k * 0.125;
+  const double x = (t - ck) / (1.0 + t * ck);  // 1 + t c_k >= 1
+  double r = AtanTable::atan_k8[k] + x * atan_series(x * x);
+  if (s > c) r = kAtanHalfPi - r;
+  if (cos_part < 0.0) r = kAtanPi - r;
+  return r;
+}
+
+// theta0 = interior_angle(s0, c0), theta1 = interior_angle(s1, c1), computed together.
+SHADETOOL_NORMALS_INLINE void interior_angle_pair(double s0, double c0, double s1, double c1, double& theta0,
+                                                  double& theta1) {
+#if defined(__SSE2__)
+  const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
+  const __m128d sign_bit = _mm_set1_pd(-0.0);
+  const __m128d s = _mm_set_pd(s1, s0), cos_part = _mm_set_pd(c1, c0);
+  const __m128d c = _mm_andnot_pd(sign_bit, cos_part);  // |cos_part|
+  const __m128d num = _mm_min_pd(s, c), den = _mm_max_pd(s, c);
+  // t = num / den, or 0 where den == 0 (then num == 0 too): divide by 1 there.
+  const __m128d den_zero = _mm_cmpeq_pd(den, zero);
+  const __m128d t = _mm_div_pd(num, _mm_or_pd(_mm_andnot_pd(den_zero, den), _mm_and_pd(den_zero, one)));
+  const __m128i k = _mm_cvttpd_epi32(_mm_add_pd(_mm_mul_pd(t, _mm_set1_pd(8.0)), _mm_set1_pd(0.5)));
+  const __m128d ck = _mm_mul_pd(_mm_cvtepi32_pd(k), _mm_set1_pd(0.125));
+  const __m128d x = _mm_div_pd(_mm_sub_pd(t, ck), _mm_add_pd(one, _mm_mul_pd(t, ck)));
+  const int k0 = _mm_cvtsi128_si32(k), k1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(k, 1));
+  const __m128d base = _mm_set_pd(AtanTable::atan_k8[k1], AtanTable::atan_k8[k0]);
+  // series (Estrin), as atan_series
+  const __m128d z = _mm_mul_pd(x, x), z2 = _mm_mul_pd(z, z), z4 = _mm_mul_pd(z2, z2);
+  const __m128d a = _mm_sub_pd(one, _mm_mul_pd(z, _mm_set1_pd(1.0 / 3)));
+  const __m128d b = _mm_sub_pd(_mm_set1_pd(1.0 / 5), _mm_mul_pd(z, _mm_set1_pd(1.0 / 7)));
+  const __m128d cc = _mm_sub_pd(_mm_set1_pd(1.0 / 9), _mm_mul_pd(z, _mm_set1_pd(1.0 / 11)));
+  const __m128d p = _mm_add_pd(_mm_add_pd(a, _mm_mul_pd(z2, b)),
+                               _mm_mul_pd(z4, _mm_add_pd(cc, _mm_mul_pd(z2, _mm_set1_pd(1.0 / 13)))));
+  __m128d r = _mm_add_pd(base, _mm_mul_pd(x, p));
+  // octant: where s > c, r = pi/2 - r; where cos_part < 0, r = pi - r (selects by bit masks).
+  const __m128d swap = _mm_cmpgt_pd(s, c);
+  r = _mm_or_pd(_mm_and_pd(swap, _mm_sub_pd(_mm_set1_pd(kAtanHalfPi), r)), _mm_andnot_pd(swap, r));
+  const __m128d neg = _mm_cmplt_pd(cos_part, zero);
+  r = _mm_or_pd(_mm_and_pd(neg, _mm_sub_pd(_mm_set1_pd(kAtanPi), r)), _mm_andnot_pd(neg, r));
+  theta0 = _mm_cvtsd_f64(r);
+  theta1 = _mm_cvtsd_f64(_mm_unpackhi_pd(r, r));
+#else
+  theta0 = interior_angle(s0, c0);
+  theta1 = interior_angle(s1, c1);
+#endif
 }
 
 }  // namespace shadetool::normals_detail

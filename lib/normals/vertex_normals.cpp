@@ -11,6 +11,9 @@
 // counted in fallback_vertices.
 #include "normals/vertex_normals.h"
 
+#include <algorithm>
+#include <type_traits>
+
 #include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
 #include "normals/parallel.h"
@@ -21,35 +24,54 @@ namespace {
 
 using namespace normals_detail;
 
+// Normalises sum[v] (T) into out[v] (double) for v in [v_begin, v_end); appends the vertices whose
+// sum cannot be normalised to `failed`. `sum` and `out` may be the same array (T = double).
+template <class T>
+void normalise_range(const T* sum, double* out, std::size_t v_begin, std::size_t v_end, std::vector<std::uint32_t>& failed) {
+  for (std::size_t v = v_begin; v < v_end; ++v) {
+    const Vec3<T> s{sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]};
+    const T len = checked_length(s);
+    if (len > T(0)) {  // divisor checked; divide (not multiply by 1/len): one rounding per component
+      out[3 * v] = double(s.x / len);
+      out[3 * v + 1] = double(s.y / len);
+      out[3 * v + 2] = double(s.z / len);
+    } else {
+      failed.push_back(std::uint32_t(v));
+    }
+  }
+}
+
 template <class T, Weighting W>
 VertexNormals compute(const Mesh& mesh, Precision precision) {
   const std::size_t V = mesh.num_vertices();
-  std::vector<T> sum(3 * V, T(0));
-  const bool triangles = mesh.all_triangles();
   VertexNormals result;
+  // In double the output array itself accumulates the sums (normalised in place afterwards): no
+  // second #V by 3 array to allocate, zero and copy. In float a float accumulator is used.
+  result.normals.assign(3 * V, 0.0);
+  std::vector<float> float_sum;
+  T* sum;
+  if constexpr (std::is_same_v<T, double>) {
+    sum = result.normals.data();
+  } else {
+    float_sum.assign(3 * V, 0.0f);
+    sum = float_sum.data();
+  }
+  const bool triangles = mesh.all_triangles();
   result.degenerate_faces = accumulate_by_vertex<T>(mesh, [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
     return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
                      : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
   }, sum);
 
-  result.normals.resize(3 * V);
-  std::vector<char> failed(V, 0);
-  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
-    for (std::size_t v = v_begin; v < v_end; ++v) {
-      const Vec3<T> s{sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]};
-      const T len = checked_length(s);
-      if (len > T(0)) {  // divisor checked; divide (not multiply by 1/len): one rounding per component
-        result.normals[3 * v] = double(s.x / len);
-        result.normals[3 * v + 1] = double(s.y / len);
-        result.normals[3 * v + 2] = double(s.z / len);
-      } else {
-        failed[v] = 1;
-      }
-    }
+  // Normalise in fixed blocks (independent of the thread count); failures listed per block and
+  // concatenated in block order, so needs_fallback is ascending.
+  constexpr std::size_t kBlock = 1 << 14;
+  const std::size_t blocks = (V + kBlock - 1) / kBlock;
+  std::vector<std::vector<std::uint32_t>> failed(blocks);
+  parallel_blocks(blocks, [&](std::size_t b) {
+    normalise_range<T>(sum, result.normals.data(), b * kBlock, std::min(V, (b + 1) * kBlock), failed[b]);
   });
   std::vector<std::uint32_t> needs_fallback;
-  for (std::size_t v = 0; v < V; ++v)
-    if (failed[v]) needs_fallback.push_back(std::uint32_t(v));
+  for (auto& list : failed) needs_fallback.insert(needs_fallback.end(), list.begin(), list.end());
   result.fallback_vertices = needs_fallback.size();
   if (!needs_fallback.empty()) apply_vertex_fallback(mesh, needs_fallback, precision, result.normals);
   return result;
