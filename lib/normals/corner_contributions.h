@@ -88,7 +88,8 @@ inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin,
       } else {
         const T len = checked_length(N);
         if (!(len > T(0))) { ++degenerate; continue; }  // degenerate: contributes nothing
-        const Vec3<T> n{N.x / len, N.y / len, N.z / len};
+        const T inv_len = T(1) / len;  // divisor checked above
+        const Vec3<T> n = N * inv_len;
         if constexpr (W == Weighting::Uniform) {
           sink(c, v0, n); sink(c + 1, v1, n); sink(c + 2, v2, n);
         } else {
