@@ -38,21 +38,29 @@
 
 namespace shadetool::normals_detail {
 
-template <class T, class Contribute>
-std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, T* sum) {
-  const std::size_t F = mesh.num_faces(), V = mesh.num_vertices();
+// accumulate_by_target: the same, but corner c's vector goes to row target[c] of `sum`
+// (#targets by 3) instead of to its vertex (Target = true; corner normals use it with target = the
+// corner's smooth group). accumulate_by_vertex is Target = false: the row is the vertex.
+template <bool Target, class T, class Contribute>
+std::size_t accumulate_by_target(const Mesh& mesh, const std::uint32_t* target, std::size_t num_targets,
+                                 const Contribute& contribute, T* sum) {
+  const std::size_t F = mesh.num_faces(), V = num_targets;
   T* s = sum;
-  auto add_direct = [s](std::size_t, std::uint32_t v, const Vec3<T>& n) {
-    T* o = s + 3 * std::size_t(v);
+  auto row = [target](std::size_t c, std::uint32_t v) -> std::uint32_t {
+    if constexpr (Target) return target[c];
+    else return v;
+  };
+  auto add_direct = [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
+    T* o = s + 3 * std::size_t(row(c, v));
     o[0] += n.x; o[1] += n.y; o[2] += n.z;
   };
   const std::size_t threads = std::size_t(tbb::this_task_arena::max_concurrency());
   const std::size_t K = std::min<std::size_t>({F / 8192, 4 * threads, 65535});
   if (F < kSerialBelow || threads < 2 || K < 2) return contribute(std::size_t(0), F, add_direct);
   auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_start[F * k / K]); };  // corner index
-  const std::uint32_t* cv = mesh.corner_vertex.data();
+  const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
 
-  // Pass 1: last chunk to touch each vertex.
+  // Pass 1: last chunk to touch each vertex (target).
   std::unique_ptr<std::atomic<std::uint16_t>[]> owner(new std::atomic<std::uint16_t>[V]());
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     const auto id = std::uint16_t(k);
@@ -85,7 +93,8 @@ std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute,
   std::vector<std::size_t> counts(K, 0);
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     auto& list = side[k];
-    counts[k] = contribute(F * k / K, F * (k + 1) / K, [&](std::size_t, std::uint32_t v, const Vec3<T>& n) {
+    counts[k] = contribute(F * k / K, F * (k + 1) / K, [&](std::size_t c, std::uint32_t vertex, const Vec3<T>& n) {
+      const std::uint32_t v = row(c, vertex);
       if (shared[v].load(std::memory_order_relaxed)) {
         list.push_back({v, n.x, n.y, n.z});
       } else {
@@ -103,6 +112,11 @@ std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute,
   std::size_t count = 0;
   for (auto n : counts) count += n;
   return count;
+}
+
+template <class T, class Contribute>
+std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, T* sum) {
+  return accumulate_by_target<false>(mesh, nullptr, mesh.num_vertices(), contribute, sum);
 }
 
 }  // namespace shadetool::normals_detail
