@@ -21,7 +21,9 @@
 // borders, so pass 4 is tiny. When the faces are in random order (more than a quarter of the
 // corners would go to side lists) the chunks are abandoned and the serial loop runs instead.
 // Small meshes (< kSerialBelow faces) and one-thread runs take the serial loop directly.
-// Memory: 3 bytes per vertex plus the side lists.
+// Memory: 3 bytes per vertex plus the side lists. plan_chunks (passes 1, 2) and
+// accumulate_by_target (passes 3, 4) are separate so callers can overlap the plan with
+// allocating the sums.
 #pragma once
 
 #include <atomic>
@@ -38,37 +40,34 @@
 
 namespace shadetool::normals_detail {
 
-// accumulate_by_target: the same, but corner c's vector goes to row target[c] of `sum`
-// (#targets by 3) instead of to its vertex (Target = true; corner normals use it with target = the
-// corner's smooth group). accumulate_by_vertex is Target = false: the row is the vertex.
-template <bool Target, class T, class Contribute>
-std::size_t accumulate_by_target(const Mesh& mesh, const std::uint32_t* target, std::size_t num_targets,
-                                 const Contribute& contribute, T* sum) {
-  const std::size_t F = mesh.num_faces(), V = num_targets;
-  T* s = sum;
-  auto row = [target](std::size_t c, std::uint32_t v) -> std::uint32_t {
-    if constexpr (Target) return target[c];
-    else return v;
-  };
-  auto add_direct = [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
-    T* o = s + 3 * std::size_t(row(c, v));
-    o[0] += n.x; o[1] += n.y; o[2] += n.z;
-  };
+// The chunks and the shared rows (passes 1 and 2), computed before the sums so that a caller can
+// overlap them with allocating and zeroing `sum` (tbb::parallel_invoke). K == 0: serial loop.
+struct ChunkPlan {
+  std::size_t K = 0;
+  std::unique_ptr<std::atomic<std::uint8_t>[]> shared;
+};
+
+// Rows are target[c] (Target = true; corner normals use it with target = the corner's smooth
+// group) or the corner's vertex (Target = false, target unused).
+template <bool Target>
+ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t num_rows) {
+  ChunkPlan plan;
+  const std::size_t F = mesh.num_faces(), V = num_rows;
   const std::size_t threads = std::size_t(tbb::this_task_arena::max_concurrency());
   const std::size_t K = std::min<std::size_t>({F / 8192, 4 * threads, 65535});
-  if (F < kSerialBelow || threads < 2 || K < 2) return contribute(std::size_t(0), F, add_direct);
+  if (F < kSerialBelow || threads < 2 || K < 2) return plan;
   auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_start[F * k / K]); };  // corner index
   const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
 
-  // Pass 1: last chunk to touch each vertex (target).
+  // Pass 1: last chunk to touch each row.
   std::unique_ptr<std::atomic<std::uint16_t>[]> owner(new std::atomic<std::uint16_t>[V]());
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     const auto id = std::uint16_t(k);
     for (std::size_t c = chunk_begin(k), e = chunk_begin(k + 1); c < e; ++c)
       owner[cv[c]].store(id, std::memory_order_relaxed);
   });
-  // Pass 2: vertices touched by more than one chunk.
-  std::unique_ptr<std::atomic<std::uint8_t>[]> shared(new std::atomic<std::uint8_t>[V]());
+  // Pass 2: rows touched by more than one chunk.
+  plan.shared.reset(new std::atomic<std::uint8_t>[V]());
   std::vector<std::size_t> foreign(K, 0);
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     const auto id = std::uint16_t(k);
@@ -76,7 +75,7 @@ std::size_t accumulate_by_target(const Mesh& mesh, const std::uint32_t* target, 
     for (std::size_t c = chunk_begin(k), e = chunk_begin(k + 1); c < e; ++c) {
       const std::uint32_t v = cv[c];
       if (owner[v].load(std::memory_order_relaxed) != id) {
-        shared[v].store(1, std::memory_order_relaxed);
+        plan.shared[v].store(1, std::memory_order_relaxed);
         ++n;
       }
     }
@@ -84,13 +83,34 @@ std::size_t accumulate_by_target(const Mesh& mesh, const std::uint32_t* target, 
   });
   std::size_t foreign_corners = 0;
   for (auto n : foreign) foreign_corners += n;
-  if (foreign_corners > mesh.num_corners() / 4)  // faces in random order: side lists would be huge
-    return contribute(std::size_t(0), F, add_direct);
+  if (foreign_corners > mesh.num_corners() / 4) {  // faces in random order: side lists would be huge
+    plan.shared.reset();
+    return plan;
+  }
+  plan.K = K;
+  return plan;
+}
 
-  // Pass 3: chunks in parallel; shared vertices' terms go to side lists, in corner order.
+// Passes 3 and 4 (sum: #rows by 3, zero on entry). Returns the sum of contribute's counts.
+template <bool Target, class T, class Contribute>
+std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const std::uint32_t* target,
+                                 const Contribute& contribute, T* sum) {
+  const std::size_t F = mesh.num_faces(), K = plan.K;
+  T* s = sum;
+  auto row = [target](std::size_t c, std::uint32_t v) -> std::uint32_t {
+    if constexpr (Target) return target[c];
+    else return v;
+  };
+  if (K == 0)
+    return contribute(std::size_t(0), F, [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
+      T* o = s + 3 * std::size_t(row(c, v));
+      o[0] += n.x; o[1] += n.y; o[2] += n.z;
+    });
+  // Pass 3: chunks in parallel; shared rows' terms go to side lists, in corner order.
   struct Term { std::uint32_t v; T x, y, z; };
   std::vector<std::vector<Term>> side(K);
   std::vector<std::size_t> counts(K, 0);
+  const std::atomic<std::uint8_t>* shared = plan.shared.get();
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     auto& list = side[k];
     counts[k] = contribute(F * k / K, F * (k + 1) / K, [&](std::size_t c, std::uint32_t vertex, const Vec3<T>& n) {
@@ -103,7 +123,7 @@ std::size_t accumulate_by_target(const Mesh& mesh, const std::uint32_t* target, 
       }
     });
   });
-  // Pass 4: shared vertices, chunk by chunk in order.
+  // Pass 4: shared rows, chunk by chunk in order.
   for (const auto& list : side)
     for (const Term& t : list) {
       T* o = s + 3 * std::size_t(t.v);
@@ -114,9 +134,11 @@ std::size_t accumulate_by_target(const Mesh& mesh, const std::uint32_t* target, 
   return count;
 }
 
+// Convenience: plan and sum into rows = vertices.
 template <class T, class Contribute>
 std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, T* sum) {
-  return accumulate_by_target<false>(mesh, nullptr, mesh.num_vertices(), contribute, sum);
+  const ChunkPlan plan = plan_chunks<false>(mesh, nullptr, mesh.num_vertices());
+  return accumulate_by_target<false>(mesh, plan, nullptr, contribute, sum);
 }
 
 }  // namespace shadetool::normals_detail

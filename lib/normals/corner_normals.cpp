@@ -18,6 +18,8 @@
 #include <cmath>
 #include <type_traits>
 
+#include <tbb/parallel_invoke.h>
+
 #include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
 #include "normals/face_normals.h"
@@ -175,18 +177,21 @@ CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision
     for (std::size_t c = b; c < e; ++c) out.corner_index[c] += base[mesh.corner_vertex[c]];
   });
 
-  // (5) sums: in the output array itself in double, else in a float accumulator.
-  out.normals.assign(3 * N, 0.0);
+  // (5) sums: in the output array itself in double, else in a float accumulator; the chunk plan
+  // is made beside the (serial) zeroing of the arrays.
   std::vector<float> float_sum;
+  ChunkPlan plan;
+  tbb::parallel_invoke(
+      [&] {
+        out.normals.assign(3 * N, 0.0);
+        if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * N, 0.0f);
+      },
+      [&] { plan = plan_chunks<true>(mesh, out.corner_index.data(), N); });
   T* sum;
-  if constexpr (std::is_same_v<T, double>) {
-    sum = out.normals.data();
-  } else {
-    float_sum.assign(3 * N, 0.0f);
-    sum = float_sum.data();
-  }
+  if constexpr (std::is_same_v<T, double>) sum = out.normals.data();
+  else sum = float_sum.data();
   const bool triangles = mesh.all_triangles();
-  out.degenerate_faces = accumulate_by_target<true, T>(mesh, out.corner_index.data(), N,
+  out.degenerate_faces = accumulate_by_target<true, T>(mesh, plan, out.corner_index.data(),
       [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
         return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
                          : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);

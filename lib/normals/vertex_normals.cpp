@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <type_traits>
 
+#include <tbb/parallel_invoke.h>
+
 #include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
 #include "normals/parallel.h"
@@ -47,20 +49,29 @@ VertexNormals compute(const Mesh& mesh, Precision precision) {
   VertexNormals result;
   // In double the output array itself accumulates the sums (normalised in place afterwards): no
   // second #V by 3 array to allocate, zero and copy. In float a float accumulator is used.
-  result.normals.assign(3 * V, 0.0);
+  // Zeroing (and first-touching) the arrays is serial; it runs beside the chunk plan.
   std::vector<float> float_sum;
-  T* sum;
-  if constexpr (std::is_same_v<T, double>) {
-    sum = result.normals.data();
+  ChunkPlan plan;
+  auto allocate = [&] {
+    result.normals.assign(3 * V, 0.0);
+    if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * V, 0.0f);
+  };
+  auto make_plan = [&] { plan = plan_chunks<false>(mesh, nullptr, V); };
+  if (mesh.num_faces() < kSerialBelow) {
+    allocate();
+    make_plan();
   } else {
-    float_sum.assign(3 * V, 0.0f);
-    sum = float_sum.data();
+    tbb::parallel_invoke(allocate, make_plan);
   }
+  T* sum;
+  if constexpr (std::is_same_v<T, double>) sum = result.normals.data();
+  else sum = float_sum.data();
   const bool triangles = mesh.all_triangles();
-  result.degenerate_faces = accumulate_by_vertex<T>(mesh, [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
-    return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
-                     : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
-  }, sum);
+  result.degenerate_faces = accumulate_by_target<false, T>(mesh, plan, nullptr,
+      [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
+        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
+                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
+      }, sum);
 
   // Normalise in fixed blocks (independent of the thread count); failures listed per block and
   // concatenated in block order, so needs_fallback is ascending.
