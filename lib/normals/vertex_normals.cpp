@@ -3,8 +3,9 @@
 //
 // Precision: Double accumulates in double (default: a vertex of high valence sums hundreds of
 // terms, and double keeps the result exact to ~1e-15 rad); Float forms edge vectors in double,
-// rounds them once to float and computes and accumulates in float (half the accumulator memory and
-// traffic; error ~1e-5 deg against double, measured in tests and the benchmark).
+// rounds them once to float and computes and accumulates in float, angles excepted (they cost the
+// same in double; interior_angle.h): half the accumulator memory and traffic, error ~1e-5 deg
+// against double, measured in tests and the benchmark.
 // Fallback (never NaN): a vertex whose sum is zero or not finite takes the unit normal of its
 // first valid face (by face index) when it has one (contributions cancelled, e.g. a two-sided
 // sheet), else kFallbackNormal = (0, 0, 1) (isolated vertex, or only degenerate faces). Both are

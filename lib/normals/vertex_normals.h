@@ -1,5 +1,13 @@
 // vertex_normals.h: one unit normal per vertex from the normals of its faces.
 //
+// n_v = normalise( sum over the corners of v of w_c n_f ), weights per normals/weighting.h and
+// corner_contributions.h (Gouraud 1971; area; Thuermer & Wuethrich 1998; Max 1999). Polygons use
+// their Newell normal and their own corner at v. Degenerate faces contribute nothing.
+// Precision: Double (default) computes and sums in double. Float forms each edge vector in double,
+// rounds it once, and computes and sums in float (angles: double in both); measured within 1e-3
+// degree of Double (about 1e-5). Threads: TBB over face chunks for meshes of 32768+ faces; the
+// result is bitwise the same for any thread count (accumulate_by_vertex.h).
+//
 // Inputs:  mesh      positions #V by 3, faces (triangles or polygons)
 //          weighting see normals/weighting.h (default Angle)
 //          precision accumulation precision
