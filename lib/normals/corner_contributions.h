@@ -80,9 +80,10 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
       valid[i] = l > T(0);
       const T inv_len = valid[i] ? T(1) / l : T(0);  // divisor checked
       n[i] = N * inv_len;
+      // a degenerate face (possibly NaN) feeds a harmless (1, 0) to the arctangent pass
       len[i] = valid[i] ? double(l) : 1.0;
-      cos0[i] = double(-dot(e0, e2));
-      cos1[i] = double(-dot(e1, e0));
+      cos0[i] = valid[i] ? double(-dot(e0, e2)) : 0.0;
+      cos1[i] = valid[i] ? double(-dot(e1, e0)) : 0.0;
     }
     for (std::size_t i = 0; i < count; ++i) interior_angle_pair(len[i], cos0[i], len[i], cos1[i], t0[i], t1[i]);
     for (std::size_t i = 0; i < count; ++i) {

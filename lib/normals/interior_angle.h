@@ -4,6 +4,7 @@
 //          cos_part  a . b   = |a||b| cos(theta)
 // Output:  theta = atan2(sin_part, cos_part) in [0, pi]; 0 when both are 0 (degenerate corner).
 //          interior_angle_pair does two at once (the two angles a triangle kernel needs).
+//          NaN or Inf input gives NaN or some angle in [0, pi], never an out-of-range table read.
 //
 // Why not std::atan2: the angle-weighted kernel needs two angles per triangle, and the libm call
 // (not inlined, not vectorised) cost several times the whole area-weighted kernel. This is the
@@ -50,7 +51,11 @@ SHADETOOL_NORMALS_INLINE double interior_angle(double sin_part, double cos_part)
   const double s = sin_part, c = std::fabs(cos_part);
   const double num = std::min(s, c), den = std::max(s, c);
   const double t = den > 0.0 ? num / den : 0.0;  // divisor checked: both zero is a degenerate corner
-  const int k = int(t * 8.0 + 0.5);
+  // Table index round(8 t), clamped to [0, 8] so that a NaN input cannot index outside the table.
+  double tk = t * 8.0 + 0.5;
+  if (!(tk >= 0.0)) tk = 0.0;
+  if (tk > 8.5) tk = 8.5;
+  const int k = int(tk);
   const double ck = k * 0.125;
   const double x = (t - ck) / (1.0 + t * ck);  // 1 + t c_k >= 1
   double r = AtanTable::atan_k8[k] + x * atan_series(x * x);
@@ -71,7 +76,9 @@ SHADETOOL_NORMALS_INLINE void interior_angle_pair(double s0, double c0, double s
   // t = num / den, or 0 where den == 0 (then num == 0 too): divide by 1 there.
   const __m128d den_zero = _mm_cmpeq_pd(den, zero);
   const __m128d t = _mm_div_pd(num, _mm_or_pd(_mm_andnot_pd(den_zero, den), _mm_and_pd(den_zero, one)));
-  const __m128i k = _mm_cvttpd_epi32(_mm_add_pd(_mm_mul_pd(t, _mm_set1_pd(8.0)), _mm_set1_pd(0.5)));
+  // round(8 t) clamped to [0, 8] as in interior_angle (max_pd returns its second operand, 0, for NaN)
+  const __m128d tk = _mm_add_pd(_mm_mul_pd(t, _mm_set1_pd(8.0)), _mm_set1_pd(0.5));
+  const __m128i k = _mm_cvttpd_epi32(_mm_min_pd(_mm_max_pd(tk, zero), _mm_set1_pd(8.5)));
   const __m128d ck = _mm_mul_pd(_mm_cvtepi32_pd(k), _mm_set1_pd(0.125));
   const __m128d x = _mm_div_pd(_mm_sub_pd(t, ck), _mm_add_pd(one, _mm_mul_pd(t, ck)));
   const int k0 = _mm_cvtsi128_si32(k), k1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(k, 1));

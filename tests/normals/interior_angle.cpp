@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "normals/interior_angle.h"
@@ -45,6 +46,19 @@ TEST_CASE("interior_angle: within 4 ulp of std::atan2 over 12 decades; the SSE2 
   INFO("worst ulps " << worst);
   CHECK(worst <= 4);
   CHECK(pair_differs == 0);
+}
+
+TEST_CASE("interior_angle: NaN or Inf input reads no table entry out of range", "[interior_angle]") {
+  // The kernels never pass NaN (degenerate faces are skipped first); this guards the table index.
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  auto sane = [](double t) { return std::isnan(t) || (t >= 0 && t <= 3.141592653589794); };
+  CHECK(sane(interior_angle(nan, 1.0)));
+  CHECK(sane(interior_angle(1.0, nan)));
+  CHECK(sane(interior_angle(inf, inf)));
+  double a, b;
+  shadetool::normals_detail::interior_angle_pair(nan, 1.0, inf, inf, a, b);
+  CHECK(sane(a));
+  CHECK(sane(b));
 }
 
 TEST_CASE("interior_angle: tiny angles keep full relative accuracy (no acos cancellation)", "[interior_angle]") {
