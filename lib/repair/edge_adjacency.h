@@ -1,0 +1,53 @@
+// edge_adjacency.h: which corners (half-edges) lie on each undirected edge, as flat arrays.
+//
+// A half-edge is named by its corner: corner c of face f runs from corner_vertex[c] to the vertex
+// of the next corner of f (cyclically). Half-edges whose two ends are the same vertex (a repeated
+// index, e.g. face (a, a, b)) are not edges and get kNoEdge.
+//
+// Inputs:  mesh   faces (face_start #F+1, corner_vertex #C), polygons of any size; positions unused
+//          skip   #F flags or empty: faces whose flag is nonzero contribute no half-edges (repair
+//                 leaves out faces with a repeated index: their (a, b), (b, a) pair would make a
+//                 false non-manifold edge out of a manifold one)
+// Outputs: EdgeAdjacency with
+//   corner_face    #C   face of each corner
+//   corner_next    #C   the next corner of the same face (the half-edge's head is its vertex)
+//   corner_edge    #C   undirected edge of the half-edge starting at the corner, or kNoEdge
+//                       (repeated index, or a skipped face)
+//   edge_start     #E+1 edge e's half-edges are edge_corner[edge_start[e] .. edge_start[e+1])
+//   edge_corner    #H   (H = number of half-edges that are edges) corners grouped by edge, each
+//                       group in increasing corner order
+//   edge_vertices  #E*2 the lower and the higher vertex index of each edge
+// Edges are numbered in increasing (low vertex, high vertex) order: the numbering depends only on
+// the faces' vertex sets, not on their winding.
+//
+// Method: counts, offsets, data in two passes over the half-edges (bucketed by their lower
+// vertex), then each small bucket is sorted by (higher vertex, corner); equal higher vertices
+// form one edge (meshoptimizer's adjacency layout). O(C log d) for vertex degree d, no maps.
+// An edge with 1 half-edge is a boundary edge, 2 a manifold edge, 3 or more non-manifold.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "core/mesh.h"
+
+namespace shadetool {
+
+struct EdgeAdjacency {
+  static constexpr std::uint32_t kNoEdge = std::numeric_limits<std::uint32_t>::max();
+
+  std::vector<std::uint32_t> corner_face;
+  std::vector<std::uint32_t> corner_next;
+  std::vector<std::uint32_t> corner_edge;
+  std::vector<std::uint32_t> edge_start{0};
+  std::vector<std::uint32_t> edge_corner;
+  std::vector<std::uint32_t> edge_vertices;
+
+  std::size_t num_edges() const { return edge_start.size() - 1; }
+  std::uint32_t edge_valence(std::size_t e) const { return edge_start[e + 1] - edge_start[e]; }
+};
+
+EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& skip = {});
+
+}  // namespace shadetool
