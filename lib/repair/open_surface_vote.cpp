@@ -10,13 +10,14 @@ namespace shadetool {
 
 namespace {
 constexpr std::size_t kMaxSamples = 2048;
-constexpr double kBeta = 3.0;  // far-field threshold: a little tighter than the default 2
 }  // namespace
 
 OpenSurfaceVote open_surface_vote(const Mesh& mesh, const ConsistentWinding& winding,
                                   const std::vector<std::uint32_t>& faces) {
   OpenSurfaceVote out;
-  if (faces.empty()) return out;
+  // One face cannot wrap anything: its own face is left out of its sample, so w = 0 exactly.
+  // Returning early spares a tree per face of a triangle soup.
+  if (faces.size() < 2) return out;
   const WindingNumberTree tree = winding_number_tree(mesh, faces, winding.face_reverse);
   const std::size_t n = faces.size(), m = std::min(n, kMaxSamples);
   for (std::size_t j = 0; j < m; ++j) {
@@ -37,7 +38,7 @@ OpenSurfaceVote open_surface_vote(const Mesh& mesh, const ConsistentWinding& win
     const double area = 0.5 * length(twice_area);
     if (!(area > 0) || !std::isfinite(area)) continue;
     const Vec3d q = p0 + offset * (1.0 / double(e - b));
-    const double w = winding_number(tree, q, f, kBeta);
+    const double w = winding_number(tree, q, f);
     out.vote += area * w;
     out.magnitude += area * std::abs(w);
     out.area += area;

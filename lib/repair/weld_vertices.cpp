@@ -55,7 +55,6 @@ WeldResult weld_vertices(Mesh& mesh, double eps) {
   const double extent = lo.x <= hi.x ? std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) : 0.0;
   double h = std::max(eps, extent / kCellsPerAxis);
   if (!(h > 0) || !std::isfinite(h)) h = 1.0;  // all points equal (or none finite): one cell
-  const double eps2 = eps * eps;
 
   std::vector<std::uint32_t> rep(V, kNone), next_in_cell(V, kNone);
   CellHash cells(V);
@@ -74,7 +73,7 @@ WeldResult weld_vertices(Mesh& mesh, double eps) {
     std::int64_t c[3];
     cell_of(p, c);
     std::uint32_t best = kNone;
-    double best_d2 = HUGE_VAL;
+    double best_d = HUGE_VAL;
     for (int dx = -reach; dx <= reach; ++dx)
       for (int dy = -reach; dy <= reach; ++dy)
         for (int dz = -reach; dz <= reach; ++dz) {
@@ -83,8 +82,9 @@ WeldResult weld_vertices(Mesh& mesh, double eps) {
           const std::size_t s = cells.slot(pack(x, y, z));
           if (cells.key[s] == kEmpty) continue;
           for (std::uint32_t r = cells.head[s]; r != kNone; r = next_in_cell[r]) {
-            const double d2 = squared_length(mesh.position(r) - p);
-            if (d2 <= eps2 && (d2 < best_d2 || (d2 == best_d2 && r < best))) { best = r; best_d2 = d2; }
+            // length, not its square: squares of distances below 1e-154 underflow to 0
+            const double d = length(mesh.position(r) - p);
+            if (d <= eps && (d < best_d || (d == best_d && r < best))) { best = r; best_d = d; }
           }
         }
     if (best != kNone) {

@@ -18,7 +18,8 @@
 // which transitive merging (union-find over all close pairs) would. The grid has at most 2^21
 // cells per axis: when eps is tiny for the mesh's extent, h grows beyond eps (still correct,
 // cells just hold more vertices). Vertices with NaN or Inf coordinates are never merged.
-// Precision: distances compared squared in double.
+// Precision: distances in double, compared unsquared (core/vec3.h length: no underflow, so
+// eps = 0 merges only bitwise-equal positions, up to the sign of zero).
 #pragma once
 
 #include <cstddef>

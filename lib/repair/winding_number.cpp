@@ -84,8 +84,13 @@ WindingNumberTree winding_number_tree(const Mesh& mesh, const std::vector<std::u
     }
     // Area-weighted centre; the plain mean when every triangle has zero area.
     node.center = total_area > 0 ? weighted * (1.0 / total_area) : plain * (1.0 / double(task.count));
-    for (std::uint32_t k = task.first; k < task.first + task.count; ++k)
-      for (int j = 0; j < 3; ++j) node.radius = std::max(node.radius, length(t.corners[3 * order[k] + j] - node.center));
+    for (std::uint32_t k = task.first; k < task.first + task.count; ++k) {
+      const std::uint32_t i = order[k];
+      for (int j = 0; j < 3; ++j) node.radius = std::max(node.radius, length(t.corners[3 * i + j] - node.center));
+      const Vec3d offset = centroid[i] - node.center;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) node.moment[3 * r + c] += area_vector[i][r] * offset[c];
+    }
     if (task.count > kLeafSize) {
       const Vec3d extent = chi - clo;
       const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
@@ -125,8 +130,13 @@ double winding_number(const WindingNumberTree& tree, const Vec3d& q_mesh, std::u
     const Vec3d d = n.center - q;
     const double dist = length(d);
     if (dist > beta * n.radius) {
-      // Far field: the node's dipole term; dist > beta * radius >= 0, so dist > 0.
-      omega += dot(n.area_vector, d) / (dist * dist * dist);
+      // Far field (dist > beta * radius >= 0, so dist > 0): dipole plus gradient term.
+      const double inv3 = 1.0 / (dist * dist * dist), inv5 = inv3 / (dist * dist);
+      const double* M = n.moment;
+      const double trace = M[0] + M[4] + M[8];
+      const double dMd = d.x * (M[0] * d.x + M[1] * d.y + M[2] * d.z) + d.y * (M[3] * d.x + M[4] * d.y + M[5] * d.z) +
+                         d.z * (M[6] * d.x + M[7] * d.y + M[8] * d.z);
+      omega += dot(n.area_vector, d) * inv3 + trace * inv3 - 3.0 * dMd * inv5;
       continue;
     }
     if (n.left == 0) {
