@@ -1,0 +1,54 @@
+// face_normals.cpp: one unit normal per face (see face_normals.h).
+//
+// Triangles: cross product of the two shortest edges; polygons: Newell's method (face_geometry.h).
+// Precision: Double computes in double; Float computes in float (edge vectors formed in double, rounded once)
+// and widens the unit normal to double. A degenerate face (fewer than 3 corners, zero area,
+// repeated index, non-finite position) gets (0, 0, 0).
+#include "normals/face_normals.h"
+
+#include "normals/face_geometry.h"
+#include "normals/parallel.h"
+
+namespace shadetool {
+namespace {
+
+using namespace normals_detail;
+
+template <class T>
+void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, double* out) {
+  const double* P = mesh.positions.data();
+  const std::uint32_t* cv = mesh.corner_vertex.data();
+  const bool triangles = mesh.all_triangles();
+  for (std::size_t f = f_begin; f < f_end; ++f) {
+    Vec3<T> N;
+    if (triangles || mesh.face_size(f) == 3) {
+      const std::size_t c = triangles ? 3 * f : mesh.face_start[f];
+      const Vec3d p0 = load_position(P, cv[c]), p1 = load_position(P, cv[c + 1]), p2 = load_position(P, cv[c + 2]);
+      const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
+      N = triangle_area_vector(e0, e1, e2, dot(e0, e0), dot(e1, e1), dot(e2, e2));
+    } else {
+      N = newell_area_vector<T>(mesh, f);
+    }
+    const T l = checked_length(N);
+    double* o = out + 3 * f;
+    if (l > T(0)) {  // divisor checked: non-zero and finite
+      o[0] = double(N.x / l); o[1] = double(N.y / l); o[2] = double(N.z / l);
+    } else {         // degenerate face: zero normal, never NaN
+      o[0] = o[1] = o[2] = 0.0;
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<double> face_normals(const Mesh& mesh, Precision precision) {
+  const std::size_t F = mesh.num_faces();
+  std::vector<double> out(3 * F);
+  normals_detail::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
+    if (precision == Precision::Float) face_normals_range<float>(mesh, b, e, out.data());
+    else face_normals_range<double>(mesh, b, e, out.data());
+  });
+  return out;
+}
+
+}  // namespace shadetool

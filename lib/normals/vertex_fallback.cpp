@@ -1,0 +1,32 @@
+// vertex_fallback.cpp: see vertex_fallback.h.
+#include "normals/vertex_fallback.h"
+
+#include "normals/face_normals.h"
+
+namespace shadetool {
+
+void apply_vertex_fallback(const Mesh& mesh, const std::vector<std::uint32_t>& vertices, Precision precision,
+                           std::vector<double>& normals) {
+  if (vertices.empty()) return;
+  const std::size_t V = mesh.num_vertices();
+  std::vector<char> pending(V, 0);
+  for (auto v : vertices) {
+    pending[v] = 1;
+    for (int k = 0; k < 3; ++k) normals[3 * std::size_t(v) + k] = kFallbackNormal[k];
+  }
+  const std::vector<double> fn = face_normals(mesh, precision);
+  std::size_t left = vertices.size();
+  for (std::size_t f = 0; f < mesh.num_faces() && left > 0; ++f) {
+    const double* n = &fn[3 * f];
+    if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) continue;  // degenerate face
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      const std::uint32_t v = mesh.corner_vertex[c];
+      if (!pending[v]) continue;
+      pending[v] = 0;
+      --left;
+      for (int k = 0; k < 3; ++k) normals[3 * std::size_t(v) + k] = n[k];
+    }
+  }
+}
+
+}  // namespace shadetool
