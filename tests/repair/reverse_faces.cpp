@@ -26,6 +26,7 @@ TEST_CASE("a triangle becomes (a, c, b), a quad (a, d, c, b); twice is the ident
 
 TEST_CASE("a flag array of the wrong size is refused", "[repair][reverse]") {
   Mesh m;
-  m.add_face({0, 1, 2});
+  m.corner_vertex = {0, 1, 2};  // (add_face on a fresh mesh trips GCC 12's bogus -Wstringop-overflow)
+  m.face_start = {0, 3};
   CHECK_THROWS(reverse_faces(m, {1, 1}));
 }
