@@ -7,82 +7,110 @@
 
 namespace shadetool {
 
-namespace {
-
-// The other half-edge of a manifold edge, or kNoEdge when the edge does not propagate.
-inline std::uint32_t mate(const EdgeAdjacency& adj, std::uint32_t c) {
-  const std::uint32_t e = adj.corner_edge[c];
-  if (e == EdgeAdjacency::kNoEdge || adj.edge_valence(e) != 2) return EdgeAdjacency::kNoEdge;
-  const std::uint32_t h0 = adj.edge_corner[adj.edge_start[e]], h1 = adj.edge_corner[adj.edge_start[e] + 1];
-  const std::uint32_t other = h0 == c ? h1 : h0;
-  if (adj.corner_face[other] == adj.corner_face[c]) return EdgeAdjacency::kNoEdge;  // face uses the edge twice
-  return other;
-}
-
-}  // namespace
-
 ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj, const std::vector<std::uint8_t>& skip) {
-  const std::size_t F = mesh.num_faces();
-  if (adj.corner_face.size() != mesh.num_corners())
+  const std::size_t F = mesh.num_faces(), C = mesh.num_corners();
+  if (adj.corner_face.size() != C || adj.corner_across.size() != C)
     fail("consistent_winding", 0, "adjacency was built for another mesh");
   if (!skip.empty() && skip.size() != F) fail("consistent_winding", 0, "skip flags size differs from the face count");
-  const std::vector<std::uint32_t>& cv = mesh.corner_vertex;
+  if (F >= (std::size_t(1) << 31)) fail("consistent_winding", 0, "more than 2^31 - 1 faces");  // state packing
+  const std::uint32_t* cv = mesh.corner_vertex.data();
+  const std::uint32_t* fs = mesh.face_start.data();
+  constexpr std::uint32_t kNone = ConsistentWinding::kNoComponent;
+  const bool triangles = mesh.all_triangles();  // corners 3f .. 3f+2: no face_start lookups
+
+  const std::uint32_t* across = adj.corner_across.data();
 
   ConsistentWinding w;
-  w.face_component.assign(F, ConsistentWinding::kNoComponent);
-  w.face_reverse.assign(F, 0);
+  w.non_manifold_edges = adj.non_manifold_edges;
+  // state[f] = (component << 1) | reverse while the BFS runs; split into the outputs at the end.
+  std::vector<std::uint32_t> state(F, kNone);
 
-  // (neighbour face, edge, same direction) of the face being expanded; sorted by face, then edge.
-  struct Step { std::uint32_t face, edge; std::uint8_t same_direction; };
+  // (neighbour, tie-break key, corner, same direction) of the face being expanded, visited in
+  // increasing (neighbour, key) order; key = the edge's vertex pair, which is winding-free.
+  struct Step {
+    std::uint32_t face;
+    std::uint64_t key;
+    std::uint32_t corner;
+    std::uint8_t same_direction;
+    bool operator<(const Step& o) const { return face != o.face ? face < o.face : key < o.key; }
+  };
   std::vector<Step> steps;
   std::vector<std::uint32_t> queue;
   queue.reserve(F);
 
   for (std::size_t seed = 0; seed < F; ++seed) {
-    if (w.face_component[seed] != ConsistentWinding::kNoComponent || (!skip.empty() && skip[seed])) continue;
+    if (state[seed] != kNone || (!skip.empty() && skip[seed])) continue;
     const std::uint32_t k = std::uint32_t(w.num_components++);
-    w.component_seed.push_back(std::uint32_t(seed));
-    w.component_faces.push_back(0);
-    w.component_reverse_count.push_back(0);
-    w.component_non_orientable.push_back(0);
-    w.face_component[seed] = k;
+    bool non_orientable = false;
+    state[seed] = k << 1;
     queue.clear();
     queue.push_back(std::uint32_t(seed));
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const std::uint32_t f = queue[head];
-      ++w.component_faces[k];
-      w.component_reverse_count[k] += w.face_reverse[f];
+      const std::uint32_t reverse_f = state[f] & 1u;
+      const std::uint32_t b = triangles ? 3 * f : fs[f], e = triangles ? 3 * f + 3 : fs[f + 1];
       steps.clear();
-      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-        const std::uint32_t o = mate(adj, c);
-        if (o == EdgeAdjacency::kNoEdge) continue;
-        steps.push_back({adj.corner_face[o], adj.corner_edge[c], std::uint8_t(cv[o] == cv[c])});
+      for (std::uint32_t c = b; c < e; ++c) {
+        const std::uint32_t a = across[c];
+        if (a == kNone) continue;
+        steps.push_back({a >> 1, 0, c, std::uint8_t(a & 1u)});
       }
-      if (steps.size() > 1)
-        std::sort(steps.begin(), steps.end(),
-                  [](const Step& a, const Step& b) { return a.face != b.face ? a.face < b.face : a.edge < b.edge; });
+      if (steps.size() == 2) {
+        if (steps[1] < steps[0]) std::swap(steps[0], steps[1]);
+      } else if (steps.size() == 3) {  // a triangle: three compare-swaps
+        if (steps[1] < steps[0]) std::swap(steps[0], steps[1]);
+        if (steps[2] < steps[1]) std::swap(steps[1], steps[2]);
+        if (steps[1] < steps[0]) std::swap(steps[0], steps[1]);
+      } else if (steps.size() > 3) {
+        std::sort(steps.begin(), steps.end());
+      }
+      // A neighbour met twice (two faces sharing two edges): order its steps by edge, i.e. by the
+      // edge's vertex pair, which does not depend on the winding. Rare, so keys are made here only.
+      for (std::size_t i = 0; i + 1 < steps.size(); ++i) {
+        if (steps[i].face != steps[i + 1].face) continue;
+        std::size_t j = i;
+        while (j < steps.size() && steps[j].face == steps[i].face) {
+          const std::uint32_t c = steps[j].corner, u = cv[c], v = cv[c + 1 < e ? c + 1 : b];
+          steps[j++].key = (std::uint64_t(std::min(u, v)) << 32) | std::max(u, v);
+        }
+        std::sort(steps.begin() + std::ptrdiff_t(i), steps.begin() + std::ptrdiff_t(j));
+        i = j - 1;
+      }
       for (const Step& s : steps) {
-        if (w.face_component[s.face] != ConsistentWinding::kNoComponent) continue;  // checked below, once per edge
-        w.face_component[s.face] = k;
-        w.face_reverse[s.face] = std::uint8_t(w.face_reverse[f] ^ s.same_direction);
-        queue.push_back(s.face);
+        const std::uint32_t wanted = reverse_f ^ s.same_direction;
+        std::uint32_t& g = state[s.face];
+        if (g == kNone) {
+          g = (k << 1) | wanted;
+          queue.push_back(s.face);
+        } else if ((g & 1u) != wanted) {
+          // A non-tree edge the labels leave inconsistent. It is met from both of its faces (the
+          // neighbour is always labelled by then: expanding a face labels all its neighbours);
+          // count it from the lower face only.
+          non_orientable = true;
+          if (f < s.face) ++w.inconsistent_edges;
+        }
       }
     }
+    w.component_seed.push_back(std::uint32_t(seed));
+    w.component_non_orientable.push_back(non_orientable ? 1 : 0);
   }
 
-  // One pass over the edges: count non-manifold edges and edges the labels leave inconsistent.
-  for (std::size_t e = 0; e < adj.num_edges(); ++e) {
-    const std::uint32_t valence = adj.edge_valence(e);
-    if (valence >= 3) { ++w.non_manifold_edges; continue; }
-    if (valence != 2) continue;
-    const std::uint32_t c0 = adj.edge_corner[adj.edge_start[e]], c1 = adj.edge_corner[adj.edge_start[e] + 1];
-    const std::uint32_t f0 = adj.corner_face[c0], f1 = adj.corner_face[c1];
-    if (f0 == f1) continue;
-    const std::uint8_t same_direction = cv[c0] == cv[c1];
-    if ((w.face_reverse[f0] ^ w.face_reverse[f1]) != same_direction) {
-      ++w.inconsistent_edges;
-      w.component_non_orientable[w.face_component[f0]] = 1;
+  const std::size_t K = w.num_components;
+  w.face_component.resize(F);
+  w.face_reverse.resize(F);
+  w.component_faces.assign(K, 0);
+  w.component_reverse_count.assign(K, 0);
+  for (std::size_t f = 0; f < F; ++f) {
+    const std::uint32_t s = state[f];
+    if (s == kNone) {
+      w.face_component[f] = kNone;
+      w.face_reverse[f] = 0;
+      continue;
     }
+    w.face_component[f] = s >> 1;
+    w.face_reverse[f] = std::uint8_t(s & 1u);
+    ++w.component_faces[s >> 1];
+    w.component_reverse_count[s >> 1] += s & 1u;
   }
   return w;
 }

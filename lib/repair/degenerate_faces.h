@@ -11,7 +11,10 @@
 // vector, Newell's sum for planar polygons) against the bound B = sum |pi - p0| |pi+1 - p0| that
 // its rounding error scales with: |N| <= 64 eps B, i.e. for a triangle sin(angle) <= 1.4e-14,
 // collinear to double precision. The test is scale-free (a face 1e-20 wide is not degenerate if
-// its shape is fine). Precision: double.
+// its shape is fine). Triangles whose squared edge lengths lie in (1e-100, 1e100) compare the
+// squares instead, |N|^2 <= (64 eps)^2 |e1|^2 |e2|^2: the same test without square roots.
+// Precision: double. Faces are classified in parallel (TBB); the result does not depend on the
+// number of threads.
 //
 // remove_faces: deletes the flagged faces, keeping the order of the others and every per-face and
 // per-corner attribute (face normals and colours, corner normal and texcoord indices). Vertices

@@ -10,19 +10,23 @@
 //                 false non-manifold edge out of a manifold one)
 // Outputs: EdgeAdjacency with
 //   corner_face    #C   face of each corner
-//   corner_next    #C   the next corner of the same face (the half-edge's head is its vertex)
-//   corner_edge    #C   undirected edge of the half-edge starting at the corner, or kNoEdge
-//                       (repeated index, or a skipped face)
 //   edge_start     #E+1 edge e's half-edges are edge_corner[edge_start[e] .. edge_start[e+1])
 //   edge_corner    #H   (H = number of half-edges that are edges) corners grouped by edge, each
 //                       group in increasing corner order
 //   edge_vertices  #E*2 the lower and the higher vertex index of each edge
+//   corner_across  #C   the face adjacency: for a half-edge on a manifold edge (exactly two
+//                       half-edges, from two different faces g and f), (g << 1) | s with s = 1
+//                       when both faces run the edge the same way; else kNoEdge. Packed so that
+//                       the BFS of consistent_winding reads one array per face. (#F < 2^31.)
+//   non_manifold_edges  edges with 3 or more half-edges
 // Edges are numbered in increasing (low vertex, high vertex) order: the numbering depends only on
 // the faces' vertex sets, not on their winding.
 //
 // Method: counts, offsets, data in two passes over the half-edges (bucketed by their lower
 // vertex), then each small bucket is sorted by (higher vertex, corner); equal higher vertices
 // form one edge (meshoptimizer's adjacency layout). O(C log d) for vertex degree d, no maps.
+// Parallel over chunks of faces and blocks of vertices (TBB), with the same output for any
+// number of threads. Throws Error if a face refers to a vertex index >= #V.
 // An edge with 1 half-edge is a boundary edge, 2 a manifold edge, 3 or more non-manifold.
 #pragma once
 
@@ -38,11 +42,11 @@ struct EdgeAdjacency {
   static constexpr std::uint32_t kNoEdge = std::numeric_limits<std::uint32_t>::max();
 
   std::vector<std::uint32_t> corner_face;
-  std::vector<std::uint32_t> corner_next;
-  std::vector<std::uint32_t> corner_edge;
+  std::vector<std::uint32_t> corner_across;
   std::vector<std::uint32_t> edge_start{0};
   std::vector<std::uint32_t> edge_corner;
   std::vector<std::uint32_t> edge_vertices;
+  std::size_t non_manifold_edges = 0;
 
   std::size_t num_edges() const { return edge_start.size() - 1; }
   std::uint32_t edge_valence(std::size_t e) const { return edge_start[e + 1] - edge_start[e]; }

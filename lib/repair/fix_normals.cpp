@@ -55,7 +55,9 @@ NormalsFix fix_normals(Mesh& mesh, Weighting weighting) {
     fail("fix_normals", 0, "face normal array size differs from 3 x the face count");
 
   NormalsFix fix;
-  const std::vector<double> face_n = face_normals(mesh, Precision::Double);  // (0,0,0) if degenerate
+  // Face normals ((0,0,0) for a degenerate face) only when stored normals are to be checked.
+  const bool check_stored = mesh.has_vertex_normals() || mesh.has_face_normals();
+  const std::vector<double> face_n = check_stored ? face_normals(mesh, Precision::Double) : std::vector<double>{};
   const VertexNormals recomputed = vertex_normals(mesh, weighting, Precision::Double);
 
   if (!mesh.has_vertex_normals() && !mesh.has_corner_normals()) {

@@ -14,8 +14,14 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
   out.component_invert.assign(K, 0);
   out.component_basis.assign(K, OrientationBasis::Majority);
 
-  const ComponentFaces groups = faces_by_component(winding);
   const ComponentVolumes volumes = component_signed_volumes(mesh, winding);
+  // Face lists are needed only for votes and nesting: built on first use.
+  ComponentFaces groups;
+  bool grouped = false;
+  auto group = [&]() -> const ComponentFaces& {
+    if (!grouped) { groups = faces_by_component(winding); grouped = true; }
+    return groups;
+  };
   std::vector<std::uint32_t> shells;
   std::vector<std::uint32_t> faces;
   for (std::size_t k = 0; k < K; ++k) {
@@ -26,7 +32,9 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
       out.component_basis[k] = OrientationBasis::Volume;
       shells.push_back(std::uint32_t(k));
     } else {
-      faces.assign(groups.faces.begin() + groups.start[k], groups.faces.begin() + groups.start[k + 1]);
+      if (winding.component_faces[k] < 2) continue;  // one face wraps nothing: no evidence
+      const ComponentFaces& g = group();
+      faces.assign(g.faces.begin() + g.start[k], g.faces.begin() + g.start[k + 1]);
       const OpenSurfaceVote vote = open_surface_vote(mesh, winding, faces);
       if (!vote.decided) continue;
       out.component_invert[k] = vote.invert;
@@ -34,7 +42,8 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
     }
   }
 
-  const std::vector<std::uint32_t> depth = shell_nesting_depth(mesh, winding, groups, shells, out.component_invert);
+  const std::vector<std::uint32_t> depth =
+      shells.size() < 2 ? std::vector<std::uint32_t>(K, 0) : shell_nesting_depth(mesh, winding, group(), shells, out.component_invert);
   for (std::uint32_t k : shells)
     if (depth[k] % 2 == 1) {
       out.component_invert[k] ^= 1;

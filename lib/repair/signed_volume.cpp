@@ -23,10 +23,11 @@ ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWind
   for (std::size_t f = 0; f < F; ++f) {
     const std::uint32_t k = winding.face_component[f];
     if (k == ConsistentWinding::kNoComponent) continue;
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      offset_sum[k] += mesh.position(mesh.corner_vertex[c]) - reference[k];
-      corners[k] += 1;
-    }
+    const Vec3d r = reference[k];
+    Vec3d s{};
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) s += mesh.position(mesh.corner_vertex[c]) - r;
+    offset_sum[k] += s;
+    corners[k] += double(mesh.face_size(f));
   }
   for (std::size_t k = 0; k < K; ++k)
     out.centroid[k] = corners[k] > 0 ? reference[k] + offset_sum[k] * (1.0 / corners[k]) : reference[k];

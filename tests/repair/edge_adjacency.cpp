@@ -1,6 +1,8 @@
 // Tests of edge_adjacency: counts checked by hand on small meshes and by Euler's formula on closed ones.
 #include <catch2/catch.hpp>
 
+#include <tbb/task_arena.h>
+
 #include "repair/edge_adjacency.h"
 #include "repair_test_meshes.h"
 
@@ -33,12 +35,13 @@ TEST_CASE("two triangles of a square: four boundary edges and one shared diagona
   // Face 0's corner 2 (3 -> 0) and face 1's corner 3 (0 -> 3) lie on it, in corner order.
   CHECK(adj.edge_corner[adj.edge_start[diagonal]] == 2);
   CHECK(adj.edge_corner[adj.edge_start[diagonal] + 1] == 3);
-  CHECK(adj.corner_edge[2] == diagonal);
-  CHECK(adj.corner_edge[3] == diagonal);
   for (std::uint32_t e : {edge_between(adj, 0, 1), edge_between(adj, 1, 3), edge_between(adj, 3, 2), edge_between(adj, 2, 0)})
     CHECK(adj.edge_valence(e) == 1);
   CHECK(adj.corner_face == std::vector<std::uint32_t>{0, 0, 0, 1, 1, 1});
-  CHECK(adj.corner_next == std::vector<std::uint32_t>{1, 2, 0, 4, 5, 3});
+  const std::uint32_t k = EdgeAdjacency::kNoEdge;
+  // Across the diagonal: face 1 from corner 2, face 0 from corner 3; opposite directions (bit 0).
+  CHECK(adj.corner_across == std::vector<std::uint32_t>{k, k, (1u << 1) | 0u, (0u << 1) | 0u, k, k});
+  CHECK(adj.non_manifold_edges == 0);
 }
 
 TEST_CASE("a closed triangle mesh: every edge has two half-edges, E = 3F/2, V - E + F = 2", "[repair][adjacency]") {
@@ -53,6 +56,8 @@ TEST_CASE("three triangles on one edge: valence 3", "[repair][adjacency]") {
   const EdgeAdjacency adj = edge_adjacency(three_triangles_on_one_edge());
   CHECK(adj.num_edges() == 7);  // (0,1) plus two edges to each of vertices 2, 3, 4
   CHECK(adj.edge_valence(edge_between(adj, 0, 1)) == 3);
+  CHECK(adj.non_manifold_edges == 1);
+  for (std::uint32_t a : adj.corner_across) CHECK(a == EdgeAdjacency::kNoEdge);  // nothing propagates
 }
 
 TEST_CASE("repeated indices and skipped faces contribute no half-edges", "[repair][adjacency]") {
@@ -61,11 +66,34 @@ TEST_CASE("repeated indices and skipped faces contribute no half-edges", "[repai
   m.add_face({0, 0, 1});
   m.add_face({0, 1, 2});
   EdgeAdjacency adj = edge_adjacency(m);
-  CHECK(adj.corner_edge[0] == EdgeAdjacency::kNoEdge);  // 0 -> 0
+  CHECK(adj.num_edges() == 3);                           // 0 -> 0 is no edge
   CHECK(adj.edge_valence(edge_between(adj, 0, 1)) == 3);  // (0,0,1) runs 0->1 and 1->0
+  CHECK(adj.non_manifold_edges == 1);
   adj = edge_adjacency(m, {1, 0});
   CHECK(adj.edge_valence(edge_between(adj, 0, 1)) == 1);
-  for (int c = 0; c < 3; ++c) CHECK(adj.corner_edge[c] == EdgeAdjacency::kNoEdge);
+  CHECK(adj.num_edges() == 3);
+  for (int c = 0; c < 3; ++c) CHECK(adj.corner_across[c] == EdgeAdjacency::kNoEdge);
+}
+
+TEST_CASE("same output for 1 and 2 threads (parallel above 32768 faces)", "[repair][adjacency]") {
+  const Mesh m = testing::torus(300, 150).mesh;  // 90000 faces
+  const EdgeAdjacency serial = tbb::task_arena(1).execute([&] { return edge_adjacency(m); });
+  const EdgeAdjacency two = tbb::task_arena(2).execute([&] { return edge_adjacency(m); });
+  CHECK(serial.edge_start == two.edge_start);
+  CHECK(serial.edge_corner == two.edge_corner);
+  CHECK(serial.edge_vertices == two.edge_vertices);
+  CHECK(serial.corner_across == two.corner_across);
+  CHECK(serial.corner_face == two.corner_face);
+}
+
+TEST_CASE("a vertex index beyond the vertex count is refused", "[repair][adjacency]") {
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({0, 1, 0});
+  m.corner_vertex = {0, 1, 7};
+  m.face_start = {0, 3};
+  CHECK_THROWS(edge_adjacency(m));
 }
 
 TEST_CASE("edge numbering does not depend on the winding", "[repair][adjacency]") {
