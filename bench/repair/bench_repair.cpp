@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
   const Timing t_degenerate = median_ms(reps, [] {}, [&] { degenerate_faces(as_read); });
   const Timing t_adjacency = median_ms(reps, [] {}, [&] { adj = edge_adjacency(as_read, no_skip); });
   const Timing t_winding = median_ms(reps, [] {}, [&] { winding = consistent_winding(as_read, adj, no_skip); });
-  const Timing t_bounds = median_ms(reps, [] {}, [&] { bounds = component_boundaries(adj, winding); });
+  const Timing t_bounds = median_ms(reps, [] {}, [&] { bounds = component_boundaries(as_read, adj, winding); });
   const Timing t_outward = median_ms(reps, [] {}, [&] { outward_orientation(as_read, winding, bounds); });
   std::vector<std::uint8_t> flags(as_read.num_faces());
   for (std::size_t f = 0; f < flags.size(); ++f) flags[f] = winding.face_reverse[f];

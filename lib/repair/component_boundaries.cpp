@@ -15,7 +15,7 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
 
 }  // namespace
 
-ComponentBoundaries component_boundaries(const EdgeAdjacency& adj, const ConsistentWinding& winding) {
+ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& adj, const ConsistentWinding& winding) {
   const std::size_t K = winding.num_components;
   ComponentBoundaries b;
   b.component_boundary_edges.assign(K, 0);
@@ -47,8 +47,9 @@ ComponentBoundaries component_boundaries(const EdgeAdjacency& adj, const Consist
   for (auto [k, e] : boundary) {
     ++b.component_boundary_edges[k];
     b.component_closed[k] = 0;
-    keys.push_back((std::uint64_t(k) << 32) | adj.edge_vertices[2 * e]);
-    keys.push_back((std::uint64_t(k) << 32) | adj.edge_vertices[2 * e + 1]);
+    const auto [v0, v1] = edge_ends(mesh, adj, e);
+    keys.push_back((std::uint64_t(k) << 32) | v0);
+    keys.push_back((std::uint64_t(k) << 32) | v1);
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
@@ -58,8 +59,8 @@ ComponentBoundaries component_boundaries(const EdgeAdjacency& adj, const Consist
   std::vector<std::uint32_t> parent(keys.size());
   std::iota(parent.begin(), parent.end(), 0u);
   for (auto [k, e] : boundary) {
-    const std::uint32_t x = find_root(parent, id(k, adj.edge_vertices[2 * e])),
-                        y = find_root(parent, id(k, adj.edge_vertices[2 * e + 1]));
+    const auto [v0, v1] = edge_ends(mesh, adj, e);
+    const std::uint32_t x = find_root(parent, id(k, v0)), y = find_root(parent, id(k, v1));
     if (x != y) parent[std::max(x, y)] = std::min(x, y);
   }
   // Cycle rank per component: E_b - V_b + (pieces).

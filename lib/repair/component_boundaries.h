@@ -1,6 +1,7 @@
 // component_boundaries.h: which components are closed, and how many boundary loops each has.
 //
-// Inputs:  adj      edge_adjacency(mesh, skip)
+// Inputs:  mesh     faces #F
+//          adj      edge_adjacency(mesh, skip)
 //          winding  consistent_winding(mesh, adj, skip): face_component, num_components (K)
 // Outputs: ComponentBoundaries with
 //   component_boundary_edges #K  edges on which the component has an odd number of half-edges
@@ -35,6 +36,6 @@ struct ComponentBoundaries {
   std::size_t boundary_loops = 0;
 };
 
-ComponentBoundaries component_boundaries(const EdgeAdjacency& adj, const ConsistentWinding& winding);
+ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& adj, const ConsistentWinding& winding);
 
 }  // namespace shadetool

@@ -35,7 +35,8 @@ void for_each_index(std::size_t n, bool parallel, const Body& body) {
   });
 }
 
-void sort_bucket(std::uint64_t* s, std::uint32_t n) {
+// Sorts keys (higher vertex << 32 | corner) ascending.
+void sort_keys(std::uint64_t* s, std::uint32_t n) {
   if (n > 32) {
     std::sort(s, s + n);  // a high-degree vertex (a fan's hub)
     return;
@@ -114,7 +115,8 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& 
   }
   const std::size_t H = offset[V];
 
-  // Pass 2: scatter (higher vertex, corner) packed so that sorting orders by both.
+  // Pass 2: scatter (higher vertex << 32 | corner) into the buckets, so that sorting a bucket
+  // orders it by both.
   std::vector<std::uint64_t> slot(H);
   for_each_index(chunks, parallel, [&](std::size_t k) {
     std::uint32_t* cursor = count[k].data();
@@ -132,7 +134,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& 
     std::uint32_t edges = 0;
     for (std::size_t v = blk * kVertexBlock; v < std::min(V, (blk + 1) * kVertexBlock); ++v) {
       const std::uint32_t b = offset[v], e = offset[v + 1];
-      sort_bucket(slot.data() + b, e - b);
+      sort_keys(slot.data() + b, e - b);
       for (std::uint32_t i = b; i < e; ++i) edges += i == b || (slot[i] >> 32) != (slot[i - 1] >> 32);
     }
     block_edges[blk + 1] = edges;
@@ -140,22 +142,19 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& 
   for (std::size_t blk = 0; blk < blocks; ++blk) block_edges[blk + 1] += block_edges[blk];
   const std::size_t E = block_edges[blocks];
 
-  // Assign edge ids in (low, high) order; fill the edge arrays and the per-corner links.
-  adj.edge_corner.resize(H);
+  // Assign edge ids in (low, high) order; fill the edge arrays and the face adjacency.
   adj.edge_start.resize(E + 1);
-  adj.edge_vertices.resize(2 * E);
+  adj.edge_corner.resize(H);
   std::vector<std::size_t> block_non_manifold(blocks, 0);
   for_each_index(blocks, parallel, [&](std::size_t blk) {
     std::uint32_t edge = block_edges[blk];
     for (std::size_t v = blk * kVertexBlock; v < std::min(V, (blk + 1) * kVertexBlock); ++v) {
       const std::uint32_t b = offset[v], e = offset[v + 1];
       for (std::uint32_t i = b; i < e;) {
-        const std::uint32_t high = std::uint32_t(slot[i] >> 32);
+        const std::uint64_t high = slot[i] >> 32;
         std::uint32_t j = i + 1;
-        while (j < e && std::uint32_t(slot[j] >> 32) == high) ++j;
+        while (j < e && (slot[j] >> 32) == high) ++j;
         adj.edge_start[edge] = i;
-        adj.edge_vertices[2 * std::size_t(edge)] = std::uint32_t(v);
-        adj.edge_vertices[2 * std::size_t(edge) + 1] = high;
         for (std::uint32_t k = i; k < j; ++k) adj.edge_corner[k] = std::uint32_t(slot[k]);
         if (j - i == 2) {
           const std::uint32_t c0 = adj.edge_corner[i], c1 = adj.edge_corner[i + 1];

@@ -36,7 +36,7 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   // Step 1: consistent winding.
   const EdgeAdjacency adj = edge_adjacency(mesh, skip);
   const ConsistentWinding winding = consistent_winding(mesh, adj, skip);
-  const ComponentBoundaries boundaries = component_boundaries(adj, winding);
+  const ComponentBoundaries boundaries = component_boundaries(mesh, adj, winding);
   report.components = winding.num_components;
   report.non_manifold_edges = winding.non_manifold_edges;
   report.inconsistent_edges = winding.inconsistent_edges;

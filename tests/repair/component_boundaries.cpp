@@ -10,7 +10,7 @@ using namespace shadetool::testing;
 namespace {
 ComponentBoundaries bounds(const Mesh& m) {
   const EdgeAdjacency adj = edge_adjacency(m);
-  return component_boundaries(adj, consistent_winding(m, adj));
+  return component_boundaries(m, adj, consistent_winding(m, adj));
 }
 }  // namespace
 

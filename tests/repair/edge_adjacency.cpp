@@ -10,9 +10,14 @@ using namespace shadetool;
 using namespace shadetool::testing;
 
 namespace {
-std::uint32_t edge_between(const EdgeAdjacency& adj, std::uint32_t a, std::uint32_t b) {
+// Edge id by brute force over the half-edges of each edge.
+std::uint32_t edge_between(const Mesh& m, const EdgeAdjacency& adj, std::uint32_t a, std::uint32_t b) {
   for (std::size_t e = 0; e < adj.num_edges(); ++e)
-    if (adj.edge_vertices[2 * e] == std::min(a, b) && adj.edge_vertices[2 * e + 1] == std::max(a, b)) return std::uint32_t(e);
+    for (std::uint32_t i = adj.edge_start[e]; i < adj.edge_start[e + 1]; ++i) {
+      const std::uint32_t c = adj.edge_corner[i], f = adj.corner_face[c];
+      const std::uint32_t u = m.corner_vertex[c], v = m.corner_vertex[c + 1 < m.face_start[f + 1] ? c + 1 : m.face_start[f]];
+      if (std::min(u, v) == std::min(a, b) && std::max(u, v) == std::max(a, b)) return std::uint32_t(e);
+    }
   return EdgeAdjacency::kNoEdge;
 }
 }  // namespace
@@ -27,15 +32,14 @@ TEST_CASE("two triangles of a square: four boundary edges and one shared diagona
   // Numbered by (low, high): (0,1) (0,2) (0,3) (1,3) (2,3).
   const std::uint32_t expected[5][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
   for (int e = 0; e < 5; ++e) {
-    CHECK(adj.edge_vertices[2 * e] == expected[e][0]);
-    CHECK(adj.edge_vertices[2 * e + 1] == expected[e][1]);
+    CHECK(edge_ends(m, adj, e) == std::make_pair(expected[e][0], expected[e][1]));
   }
-  const std::uint32_t diagonal = edge_between(adj, 0, 3);
+  const std::uint32_t diagonal = edge_between(m, adj, 0, 3);
   CHECK(adj.edge_valence(diagonal) == 2);
   // Face 0's corner 2 (3 -> 0) and face 1's corner 3 (0 -> 3) lie on it, in corner order.
   CHECK(adj.edge_corner[adj.edge_start[diagonal]] == 2);
   CHECK(adj.edge_corner[adj.edge_start[diagonal] + 1] == 3);
-  for (std::uint32_t e : {edge_between(adj, 0, 1), edge_between(adj, 1, 3), edge_between(adj, 3, 2), edge_between(adj, 2, 0)})
+  for (std::uint32_t e : {edge_between(m, adj, 0, 1), edge_between(m, adj, 1, 3), edge_between(m, adj, 3, 2), edge_between(m, adj, 2, 0)})
     CHECK(adj.edge_valence(e) == 1);
   CHECK(adj.corner_face == std::vector<std::uint32_t>{0, 0, 0, 1, 1, 1});
   const std::uint32_t k = EdgeAdjacency::kNoEdge;
@@ -53,9 +57,10 @@ TEST_CASE("a closed triangle mesh: every edge has two half-edges, E = 3F/2, V - 
 }
 
 TEST_CASE("three triangles on one edge: valence 3", "[repair][adjacency]") {
-  const EdgeAdjacency adj = edge_adjacency(three_triangles_on_one_edge());
+  const Mesh m = three_triangles_on_one_edge();
+  const EdgeAdjacency adj = edge_adjacency(m);
   CHECK(adj.num_edges() == 7);  // (0,1) plus two edges to each of vertices 2, 3, 4
-  CHECK(adj.edge_valence(edge_between(adj, 0, 1)) == 3);
+  CHECK(adj.edge_valence(edge_between(m, adj, 0, 1)) == 3);
   CHECK(adj.non_manifold_edges == 1);
   for (std::uint32_t a : adj.corner_across) CHECK(a == EdgeAdjacency::kNoEdge);  // nothing propagates
 }
@@ -67,10 +72,10 @@ TEST_CASE("repeated indices and skipped faces contribute no half-edges", "[repai
   m.add_face({0, 1, 2});
   EdgeAdjacency adj = edge_adjacency(m);
   CHECK(adj.num_edges() == 3);                           // 0 -> 0 is no edge
-  CHECK(adj.edge_valence(edge_between(adj, 0, 1)) == 3);  // (0,0,1) runs 0->1 and 1->0
+  CHECK(adj.edge_valence(edge_between(m, adj, 0, 1)) == 3);  // (0,0,1) runs 0->1 and 1->0
   CHECK(adj.non_manifold_edges == 1);
   adj = edge_adjacency(m, {1, 0});
-  CHECK(adj.edge_valence(edge_between(adj, 0, 1)) == 1);
+  CHECK(adj.edge_valence(edge_between(m, adj, 0, 1)) == 1);
   CHECK(adj.num_edges() == 3);
   for (int c = 0; c < 3; ++c) CHECK(adj.corner_across[c] == EdgeAdjacency::kNoEdge);
 }
@@ -81,7 +86,6 @@ TEST_CASE("same output for 1 and 2 threads (parallel above 32768 faces)", "[repa
   const EdgeAdjacency two = tbb::task_arena(2).execute([&] { return edge_adjacency(m); });
   CHECK(serial.edge_start == two.edge_start);
   CHECK(serial.edge_corner == two.edge_corner);
-  CHECK(serial.edge_vertices == two.edge_vertices);
   CHECK(serial.corner_across == two.corner_across);
   CHECK(serial.corner_face == two.corner_face);
 }
@@ -101,7 +105,7 @@ TEST_CASE("edge numbering does not depend on the winding", "[repair][adjacency]"
   Mesh flipped = m;
   flip_random_faces(flipped, 0.5, 3);
   const EdgeAdjacency a = edge_adjacency(m), b = edge_adjacency(flipped);
-  CHECK(a.edge_vertices == b.edge_vertices);
+  for (std::size_t e = 0; e < a.num_edges(); ++e) CHECK(edge_ends(m, a, e) == edge_ends(flipped, b, e));
   CHECK(a.edge_start == b.edge_start);
 }
 
@@ -113,5 +117,5 @@ TEST_CASE("a hub vertex of high degree (a fan of 1000 triangles)", "[repair][adj
   for (int i = 0; i < n; ++i) m.add_face({0u, std::uint32_t(1 + i), std::uint32_t(1 + (i + 1) % n)});
   const EdgeAdjacency adj = edge_adjacency(m);
   CHECK(adj.num_edges() == std::size_t(2 * n));
-  for (int i = 0; i < n; ++i) CHECK(adj.edge_valence(edge_between(adj, 0, 1 + i)) == 2);
+  for (int i = 0; i < n; ++i) CHECK(adj.edge_valence(edge_between(m, adj, 0, 1 + i)) == 2);
 }

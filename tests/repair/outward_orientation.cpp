@@ -22,7 +22,7 @@ TEST_CASE("one scene: closed, nested, open with and without evidence, non-orient
   const EdgeAdjacency adj = edge_adjacency(m);
   const ConsistentWinding w = consistent_winding(m, adj);
   REQUIRE(w.num_components == 5);
-  const OutwardOrientation o = outward_orientation(m, w, component_boundaries(adj, w));
+  const OutwardOrientation o = outward_orientation(m, w, component_boundaries(m, adj, w));
   CHECK(o.component_basis[0] == OrientationBasis::Volume);
   CHECK(o.component_invert[0] == 1);
   CHECK(o.component_basis[1] == OrientationBasis::NestedShell);
@@ -42,12 +42,12 @@ TEST_CASE("majority: the winding most input faces had wins, a tie keeps the seed
   const EdgeAdjacency adj = edge_adjacency(m);
   const ConsistentWinding w = consistent_winding(m, adj);
   REQUIRE(w.component_reverse_count[0] == 12);  // relative to the (flipped) seed
-  OutwardOrientation o = outward_orientation(m, w, component_boundaries(adj, w));
+  OutwardOrientation o = outward_orientation(m, w, component_boundaries(m, adj, w));
   CHECK(o.component_invert[0] == 0);  // the 20 agree with the seed: keep
   for (std::size_t f = 0; f < 4; ++f) swap_corners_1_2(m, f);  // now 16 / 16
   const EdgeAdjacency adj2 = edge_adjacency(m);
   const ConsistentWinding w2 = consistent_winding(m, adj2);
   REQUIRE(w2.component_reverse_count[0] == 16);
-  o = outward_orientation(m, w2, component_boundaries(adj2, w2));
+  o = outward_orientation(m, w2, component_boundaries(m, adj2, w2));
   CHECK(o.component_invert[0] == 0);
 }
