@@ -70,14 +70,15 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   }
   report.faces_flipped = reverse_faces(mesh, reverse);
 
-  // Step 3: degenerate faces removed on request.
+  // Step 4: degenerate faces removed on request, before the normals are computed, so that a
+  // sliver's arbitrary normal (angle weighting gives its middle corner pi) reaches no vertex.
   if (options.remove_degenerate && report.degenerate_faces > 0) {
     std::vector<std::uint8_t> remove(F, 0);
     for (std::size_t f = 0; f < F; ++f) remove[f] = degenerate.kind[f] != DegenerateKind::None;
     report.degenerate_faces_removed = remove_faces(mesh, remove);
   }
 
-  // Step 4: normals on the final faces.
+  // Step 3: normals, on the final faces.
   report.normals = fix_normals(mesh, options.weighting);
   report.faces_out = mesh.num_faces();
   return report;

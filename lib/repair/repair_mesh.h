@@ -13,9 +13,10 @@
 //      majority where there is no evidence. Steps 1 and 2 reverse each face at most once, with
 //      reverse_faces.h (first corner kept, so a face flipped by swapping two corners is restored
 //      exactly), carrying corner normal and texcoord indices.
-//   3. Degenerate faces (degenerate_faces.h) are counted; removed only with remove_degenerate.
-//      No other face is ever removed: faces out = faces in - degenerate_faces_removed.
-//   4. Normals (fix_normals.h), on the final faces.
+//   3. Normals (fix_normals.h), on the final faces.
+//   4. Degenerate faces (degenerate_faces.h, found before step 1) are counted; removed only with
+//      remove_degenerate, and then before step 3, so that no sliver's arbitrary normal reaches
+//      a vertex. No other face is ever removed: faces out = faces in - degenerate_faces_removed.
 // Repairing the output again changes nothing (RepairReport::changes() == 0).
 #pragma once
 
