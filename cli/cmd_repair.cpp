@@ -51,6 +51,7 @@ nlohmann::json report_json(const RepairReport& r, const RepairCliOptions& opt) {
                       {"by_majority", r.oriented_by_majority},
                       {"open_component_method", "generalized winding number"}};
   j["non_manifold_edges"] = r.non_manifold_edges;
+  j["duplicate_faces"] = r.duplicate_faces;
   j["non_orientable_components"] = r.non_orientable_components;
   j["inconsistent_edges"] = r.inconsistent_edges;
   j["boundary_loops"] = r.boundary_loops;
@@ -111,6 +112,7 @@ void add_stats(const RepairReport& r, FileResult& out) {
   s["components_inverted"] = r.components_inverted;
   s["nested_shells"] = r.nested_shells;
   s["non_manifold_edges"] = r.non_manifold_edges;
+  s["duplicate_faces"] = r.duplicate_faces;
   s["non_orientable_components"] = r.non_orientable_components;
   s["boundary_loops"] = r.boundary_loops;
   s["degenerate_faces"] = r.degenerate_faces;

@@ -8,6 +8,7 @@
 #include "repair/component_boundaries.h"
 #include "repair/consistent_winding.h"
 #include "repair/degenerate_faces.h"
+#include "repair/duplicate_faces.h"
 #include "repair/edge_adjacency.h"
 #include "repair/outward_orientation.h"
 #include "repair/reverse_faces.h"
@@ -33,8 +34,16 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   for (std::size_t f = 0; f < F; ++f)
     skip[f] = degenerate.kind[f] == DegenerateKind::TooFewCorners || degenerate.kind[f] == DegenerateKind::RepeatedIndex;
 
-  // Step 1: consistent winding.
-  const EdgeAdjacency adj = edge_adjacency(mesh, skip);
+  // Step 1: consistent winding. Duplicate faces are set aside first (and the adjacency rebuilt
+  // without them, only when there are any).
+  EdgeAdjacency adj = edge_adjacency(mesh, skip);
+  const DuplicateFaces duplicates = duplicate_faces(mesh, adj);
+  report.duplicate_faces = duplicates.count;
+  if (duplicates.count > 0) {
+    for (std::size_t f = 0; f < F; ++f)
+      if (duplicates.original[f] != DuplicateFaces::kNone) skip[f] = 1;
+    adj = edge_adjacency(mesh, skip);
+  }
   const ConsistentWinding winding = consistent_winding(mesh, adj, skip);
   const ComponentBoundaries boundaries = component_boundaries(mesh, adj, winding);
   report.components = winding.num_components;
@@ -68,6 +77,9 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     const std::uint32_t k = winding.face_component[f];
     if (k != ConsistentWinding::kNoComponent) reverse[f] = winding.face_reverse[f] ^ outward.component_invert[k];
   }
+  // A duplicate is reversed with its original: same winding stays same, opposite stays opposite.
+  for (std::size_t f = 0; f < F; ++f)
+    if (duplicates.original[f] != DuplicateFaces::kNone) reverse[f] = reverse[duplicates.original[f]];
   report.faces_flipped = reverse_faces(mesh, reverse);
 
   // Step 4: degenerate faces removed on request, before the normals are computed, so that a

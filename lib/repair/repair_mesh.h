@@ -7,7 +7,8 @@
 //                   weld_eps (< 0: no welding; >= 0: weld_vertices(mesh, weld_eps) first)
 // Output:  mesh repaired in place, and the RepairReport.
 //   1. Consistent winding (consistent_winding.h) over the faces that have one (degenerate faces
-//      with a repeated index or < 3 corners are left out and left alone).
+//      with a repeated index or < 3 corners are left out and left alone). Duplicate faces
+//      (duplicate_faces.h) are set aside and later reversed together with their original.
 //   2. Outward orientation (outward_orientation.h): signed volume for closed components, nesting
 //      parity for shells inside shells, the winding-number vote for open ones, the input's
 //      majority where there is no evidence. Steps 1 and 2 reverse each face at most once, with

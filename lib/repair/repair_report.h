@@ -23,6 +23,8 @@ struct RepairReport {
   std::size_t open_components = 0;
   std::size_t boundary_loops = 0;
   std::size_t non_manifold_edges = 0;          // 3 or more faces on one edge: do not propagate
+                                               // (duplicate faces set aside first)
+  std::size_t duplicate_faces = 0;             // same vertex set as an earlier face: follow it
   std::size_t non_orientable_components = 0;   // a Möbius strip, a Klein bottle
   std::size_t inconsistent_edges = 0;          // left in non-orientable components (the seams)
   std::size_t faces_flipped_for_consistency = 0;  // faces that disagreed with their component's majority

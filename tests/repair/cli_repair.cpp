@@ -76,6 +76,7 @@ TEST_CASE("repair: report JSON fields and one stderr line per step that changed 
   CHECK(j["faces_flipped"] == 12);
   CHECK(j["components_inverted"] == 0);
   CHECK(j["non_manifold_edges"] == 0);
+  CHECK(j["duplicate_faces"] == 0);
   CHECK(j["non_orientable_components"] == 0);
   CHECK(j["boundary_loops"] == 0);
   CHECK(j["degenerate_faces"] == 0);
@@ -99,6 +100,22 @@ TEST_CASE("repair: report JSON fields and one stderr line per step that changed 
     CHECK(k["normals_recomputed"]["total"] == 0);
     CHECK(slurp(err).empty());
   }
+}
+
+TEST_CASE("repair: data/non_manifold.obj (a fin, a bow-tie, a duplicated triangle) is left as it is", "[repair][cli]") {
+  TempDir tmp;
+  const std::string out = tmp / "nm.obj", report = tmp / "nm.json", err = tmp / "err.txt";
+  REQUIRE(run("repair '" + data("non_manifold.obj") + "' -o '" + out + "' --report '" + report + "'", err) == 0);
+  const nlohmann::json j = nlohmann::json::parse(slurp(report));
+  CHECK(j["faces_in"] == 7);
+  CHECK(j["faces_out"] == 7);
+  CHECK(j["non_manifold_edges"] == 1);  // the fin's edge
+  CHECK(j["duplicate_faces"] == 1);
+  CHECK(j["components"] == 6);          // 3 fin triangles, 2 bow-tie triangles, 1 (+ its duplicate)
+  CHECK(j["open_components"] == 6);
+  CHECK(j["boundary_loops"] == 6);
+  CHECK(j["faces_flipped"] == 0);       // flat pieces: no evidence, nothing reversed
+  CHECK(j["orientation"]["by_majority"] == 6);
 }
 
 TEST_CASE("repair: a wholly inverted cube, --remove-degenerate, --weld", "[repair][cli]") {
