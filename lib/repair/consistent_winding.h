@@ -17,19 +17,19 @@
 //   non_manifold_edges    edges with 3 or more half-edges (they do not propagate orientation)
 //
 // Method: for each unvisited face in index order, breadth-first search over manifold edges
-// (adj.corner_across); the
-// neighbour g across half-edge (a -> b) of face f must run (b -> a) after reversal, so
-// reverse[g] = reverse[f] XOR (g runs a -> b too). A face's neighbours are visited in increasing
-// (face, edge) order, which does not depend on the winding: the BFS tree, and so the result, is
-// the same for a mesh and any re-wound copy of it (repair is idempotent). A component is
-// orientable iff the labels leave no edge inconsistent: on an orientable surface the labelling
-// along any spanning tree is the unique consistent one up to a global flip. On a non-orientable
-// one, the inconsistent edges are where the two BFS fronts meet (one cut across a Möbius strip).
-// Edges a face uses twice and non-manifold edges neither propagate nor count as inconsistent.
-// At most 2^31 - 1 faces (a face index and a flag share 32 bits in the BFS's working arrays).
-// Each manifold edge is checked once, from the face that reaches it second. Cost: O(F + C),
-// serial (BFS order is what makes the result winding-free); the visits jump through memory as
-// the front moves, which is what this step's time is spent on.
+// (adj.corner_across): the neighbour g across half-edge (a -> b) of face f must run (b -> a)
+// after reversal, so reverse[g] = reverse[f] XOR (g runs a -> b too). A face's neighbours are
+// visited in increasing (face, edge's vertex pair) order, which does not depend on the winding:
+// the BFS tree, and so the result, is the same for a mesh and any re-wound copy of it (repair is
+// idempotent). A component is orientable iff the labels leave no edge inconsistent: on an
+// orientable surface the labelling along any spanning tree is the unique consistent one up to a
+// global flip. On a non-orientable one, the inconsistent edges are where the BFS fronts meet
+// (one cut across a Möbius strip). Edges a face uses twice and non-manifold edges neither
+// propagate nor count as inconsistent. Each inconsistent edge is counted once, from its
+// lower-numbered face.
+// Cost: O(F + C), serial (the BFS order is what makes the result winding-free); the time goes
+// into the visits jumping through memory as the front moves. At most 2^31 - 1 faces (a face index
+// and a flag share 32 bits).
 #pragma once
 
 #include <cstddef>

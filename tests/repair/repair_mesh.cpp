@@ -404,3 +404,40 @@ TEST_CASE("corner normals: a flat-shaded cube's broken shared normals are rebuil
   for (std::size_t i = 0; i < truth.size(); ++i) CHECK(m.corner_normals[i] == Approx(truth[i]).margin(1e-15));
   CHECK(std::memcmp(&m.corner_normals[6], &truth[6], 12 * sizeof(double)) == 0);  // sides 2..5 untouched
 }
+
+TEST_CASE("polygons: a quad mesh with 30% of its quads reversed is restored exactly", "[repair][polygons]") {
+  // The genus-3 slab with each pair of triangles (q0,q1,q2), (q0,q2,q3) merged back into its quad.
+  const Mesh tri = genus3_slab();
+  Mesh truth;
+  truth.positions = tri.positions;
+  for (std::size_t f = 0; f < tri.num_faces(); f += 2)
+    truth.add_face({tri.corner_vertex[3 * f], tri.corner_vertex[3 * f + 1], tri.corner_vertex[3 * f + 2],
+                    tri.corner_vertex[3 * f + 5]});
+  Mesh m = truth;
+  std::mt19937 rng(59);
+  std::size_t reversed = 0;
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    if (std::uniform_real_distribution<double>(0, 1)(rng) < 0.3) {
+      std::swap(m.corner_vertex[4 * f + 1], m.corner_vertex[4 * f + 3]);  // (q0,q1,q2,q3) -> (q0,q3,q2,q1)
+      ++reversed;
+    }
+  REQUIRE(reversed > 0);
+  const RepairReport r = repair_twice(m);
+  CHECK(same_faces(m, truth));
+  CHECK(r.faces_flipped == reversed);
+  CHECK(r.closed_components == 1);
+}
+
+TEST_CASE("empty and face-less meshes are repaired to nothing without fault", "[repair][edge]") {
+  Mesh empty;
+  RepairReport r = repair_mesh(empty);
+  CHECK(r.components == 0);
+  CHECK(r.changes() == 0);
+  Mesh points;
+  points.add_vertex({0, 0, 0});
+  points.add_vertex({1, 0, 0});
+  r = repair_mesh(points);
+  CHECK(r.components == 0);
+  CHECK(r.normals.missing == 2);  // every vertex gets a (fallback) normal, never NaN
+  for (double x : points.vertex_normals) CHECK(std::isfinite(x));
+}
