@@ -53,22 +53,51 @@ std::vector<std::uint32_t> shell_nesting_depth(const Mesh& mesh, const Consisten
     for (std::size_t j = 0; j < m; ++j) samples[s].push_back(face_centroid(mesh, groups.faces[b + j * n / m]));
   }
 
+  // Candidate containers of A: shells whose box contains A's box, so also A's box centre. A
+  // uniform grid over all boxes (about S cells) lists each box in the cells it overlaps; boxes
+  // over more than 64 cells (a room around many parts) go to one list every shell checks.
+  Box all;
+  for (const Box& b : box) { all.add(b.lo); all.add(b.hi); }
+  const int G = std::max(1, int(std::ceil(std::cbrt(double(S)))));
+  auto cell_of = [&](const Vec3d& p, int axis) {
+    const double extent = all.hi[axis] - all.lo[axis];
+    const double t = extent > 0 ? (p[axis] - all.lo[axis]) / extent : 0.0;  // divisor checked
+    return std::min(G - 1, std::max(0, int(t * G)));
+  };
+  std::vector<std::vector<std::uint32_t>> cell(std::size_t(G) * G * G);
+  std::vector<std::uint32_t> large;
+  for (std::uint32_t b = 0; b < S; ++b) {
+    int lo[3], hi[3];
+    long cells = 1;
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = cell_of(box[b].lo, i);
+      hi[i] = cell_of(box[b].hi, i);
+      cells *= hi[i] - lo[i] + 1;
+    }
+    if (cells > 64) { large.push_back(b); continue; }
+    for (int x = lo[0]; x <= hi[0]; ++x)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int z = lo[2]; z <= hi[2]; ++z) cell[(std::size_t(x) * G + y) * G + z].push_back(b);
+  }
+
   std::vector<std::unique_ptr<WindingNumberTree>> tree(S);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> contained;  // (inner, outer) shell positions
-  for (std::size_t a = 0; a < S; ++a) {
-    for (std::size_t bi = 0; bi < S; ++bi) {
-      if (a == bi || !box[a].inside(box[bi])) continue;
-      const std::uint32_t kb = shells[bi];
-      if (!tree[bi]) {
-        std::vector<std::uint32_t> faces(groups.faces.begin() + groups.start[kb], groups.faces.begin() + groups.start[kb + 1]);
-        tree[bi] = std::make_unique<WindingNumberTree>(winding_number_tree(mesh, faces, winding.face_reverse));
-      }
-      const double sign = shell_invert[kb] ? -1.0 : 1.0;
-      bool inside = true;
-      for (const Vec3d& p : samples[a])
-        if (!(sign * winding_number(*tree[bi], p) > 0.5)) { inside = false; break; }
-      if (inside) contained.emplace_back(std::uint32_t(a), std::uint32_t(bi));
+  auto test = [&](std::size_t a, std::size_t bi) {
+    if (a == bi || !box[a].inside(box[bi])) return;
+    const std::uint32_t kb = shells[bi];
+    if (!tree[bi]) {
+      std::vector<std::uint32_t> faces(groups.faces.begin() + groups.start[kb], groups.faces.begin() + groups.start[kb + 1]);
+      tree[bi] = std::make_unique<WindingNumberTree>(winding_number_tree(mesh, faces, winding.face_reverse));
     }
+    const double sign = shell_invert[kb] ? -1.0 : 1.0;
+    for (const Vec3d& p : samples[a])
+      if (!(sign * winding_number(*tree[bi], p) > 0.5)) return;
+    contained.emplace_back(std::uint32_t(a), std::uint32_t(bi));
+  };
+  for (std::size_t a = 0; a < S; ++a) {
+    const Vec3d centre = box[a].lo * 0.5 + box[a].hi * 0.5;
+    for (std::uint32_t bi : cell[(std::size_t(cell_of(centre, 0)) * G + cell_of(centre, 1)) * G + cell_of(centre, 2)]) test(a, bi);
+    for (std::uint32_t bi : large) test(a, bi);
   }
   // Two shells each "inside" the other are the same surface twice (a duplicated object): their
   // samples sit on each other, where w is 1/2 up to rounding. Neither is nested.

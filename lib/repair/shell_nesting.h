@@ -17,8 +17,10 @@
 // intersect (a character's head sphere pushed into its body) from being called nested. A's
 // points lie on A, not on B, unless the shells touch; then the answer is whichever side rounding
 // puts them, and two shells found inside each other (the same surface twice) count as not
-// nested. Winding numbers use WindingNumberTree (built only for shells that are candidates);
-// pairs are pruned by bounding boxes first, so K shells cost O(K^2) box tests plus O(log F) per
+// nested. Winding numbers use WindingNumberTree (built only for shells that are candidates).
+// Candidates come from a uniform grid of about K cells over the shells' boxes (a container's box
+// holds the centre of the inner shell's box; boxes spanning more than 64 cells are checked by
+// every shell), so K small separate shells cost O(K), not O(K^2), box tests, plus O(log F) per
 // sample actually evaluated.
 #pragma once
 

@@ -1,6 +1,8 @@
 // Tests of shell_nesting_depth: nested, side-by-side, intersecting and duplicated shells.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "repair/shell_nesting.h"
 #include "repair_test_meshes.h"
 
@@ -49,4 +51,19 @@ TEST_CASE("side by side, intersecting, and duplicated shells are not nested", "[
   Mesh twice = sphere_at(1, {});
   append(twice, sphere_at(1, {}));
   CHECK(depths(twice) == std::vector<std::uint32_t>{0, 0});
+}
+
+TEST_CASE("many small shells: side by side depth 0, inside one container depth 1", "[repair][nesting]") {
+  // 10 x 10 x 10 small spheres on a grid, then the same inside one large sphere.
+  Mesh grid;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j)
+      for (int k = 0; k < 10; ++k) append(grid, sphere_at(0.2, {double(i) - 4.5, double(j) - 4.5, double(k) - 4.5}));
+  std::vector<std::uint32_t> d = depths(grid);
+  CHECK(std::count(d.begin(), d.end(), 0u) == 1000);
+  Mesh boxed = grid;
+  append(boxed, sphere_at(20, {}));
+  d = depths(boxed);
+  CHECK(std::count(d.begin(), d.end(), 1u) == 1000);
+  CHECK(d.back() == 0);
 }
