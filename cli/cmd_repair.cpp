@@ -72,34 +72,40 @@ nlohmann::json report_json(const RepairReport& r, const RepairCliOptions& opt) {
   return j;
 }
 
+// "1 face", "2 faces".
+std::string count(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
+
 // One line per step that changed something (the driver prefixes `shadetool: INPUT: `).
 void add_notes(const RepairReport& r, const RepairCliOptions& opt, FileResult& out) {
   if (r.vertices_welded > 0)
-    out.notes.push_back(fmt::format("weld: merged {} vertices within {}", r.vertices_welded, opt.weld));
+    out.notes.push_back(fmt::format("weld: merged {} within {}", count(r.vertices_welded, "vertex", "vertices"), opt.weld));
   if (r.faces_flipped_for_consistency > 0) {
-    std::string s = fmt::format("winding: reversed {} faces to make the winding consistent in {} components",
-                                r.faces_flipped_for_consistency, r.components);
-    if (r.non_manifold_edges > 0) s += fmt::format("; {} non-manifold edges not crossed", r.non_manifold_edges);
+    std::string s = fmt::format("winding: reversed {} to make the winding consistent in {}",
+                                count(r.faces_flipped_for_consistency, "face", "faces"),
+                                count(r.components, "component", "components"));
+    if (r.non_manifold_edges > 0) s += fmt::format("; {} not crossed", count(r.non_manifold_edges, "non-manifold edge", "non-manifold edges"));
     if (r.non_orientable_components > 0)
-      s += fmt::format("; {} non-orientable components, {} edges left inconsistent", r.non_orientable_components,
-                       r.inconsistent_edges);
+      s += fmt::format("; {}, {} left inconsistent", count(r.non_orientable_components, "non-orientable component", "non-orientable components"),
+                       count(r.inconsistent_edges, "edge", "edges"));
     out.notes.push_back(s);
   }
   if (r.components_inverted > 0) {
-    std::string s = fmt::format("orientation: reversed {} of {} components as a whole", r.components_inverted, r.components);
-    if (r.nested_shells > 0) s += fmt::format(" ({} nested shells face their cavity)", r.nested_shells);
+    std::string s = fmt::format("orientation: reversed {} of {} as a whole", r.components_inverted,
+                                count(r.components, "component", "components"));
+    if (r.nested_shells > 0) s += fmt::format(" ({} facing a cavity)", count(r.nested_shells, "nested shell", "nested shells"));
     out.notes.push_back(s);
   }
   if (r.normals.missing > 0)
-    out.notes.push_back(fmt::format("normals: computed {} vertex normals ({} weighting; the mesh had none)", r.normals.missing,
-                                    opt.weight));
+    out.notes.push_back(fmt::format("normals: computed {} ({} weighting; the mesh had none)",
+                                    count(r.normals.missing, "vertex normal", "vertex normals"), opt.weight));
   const std::size_t fixed = r.normals.total() - r.normals.missing;
   if (fixed > 0)
-    out.notes.push_back(fmt::format("normals: recomputed {} stored normals ({} NaN, {} Inf, {} zero, {} against their faces)",
-                                    fixed, r.normals.nan, r.normals.inf, r.normals.zero, r.normals.flipped));
+    out.notes.push_back(fmt::format("normals: recomputed {} ({} NaN, {} Inf, {} zero, {} against their faces)",
+                                    count(fixed, "stored normal", "stored normals"), r.normals.nan, r.normals.inf,
+                                    r.normals.zero, r.normals.flipped));
   if (r.degenerate_faces_removed > 0)
-    out.notes.push_back(fmt::format("degenerate: removed {} faces ({} zero area, {} repeated index, {} fewer than 3 corners, {} NaN/Inf)",
-                                    r.degenerate_faces_removed, r.degenerate_zero_area, r.degenerate_repeated_index,
+    out.notes.push_back(fmt::format("degenerate: removed {} ({} zero area, {} repeated index, {} fewer than 3 corners, {} NaN/Inf)",
+                                    count(r.degenerate_faces_removed, "face", "faces"), r.degenerate_zero_area, r.degenerate_repeated_index,
                                     r.degenerate_too_few_corners, r.degenerate_non_finite));
 }
 
