@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 
 namespace shadetool {
 
@@ -23,7 +24,9 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   ConsistentWinding w;
   w.non_manifold_edges = adj.non_manifold_edges;
   // state[f] = (component << 1) | reverse while the BFS runs; split into the outputs at the end.
-  std::vector<std::uint32_t> state(F, kNone);
+  std::vector<std::uint32_t> state;
+  io::reserve_bulk(state, F);  // huge pages for large fresh arrays (io/bulk_reserve.h)
+  state.assign(F, kNone);
 
   // (neighbour, tie-break key, corner, same direction) of the face being expanded, visited in
   // increasing (neighbour, key) order; key = the edge's vertex pair, which is winding-free.
@@ -36,7 +39,7 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   };
   std::vector<Step> steps;
   std::vector<std::uint32_t> queue;
-  queue.reserve(F);
+  io::reserve_bulk(queue, F);
 
   for (std::size_t seed = 0; seed < F; ++seed) {
     if (state[seed] != kNone || (!skip.empty() && skip[seed])) continue;
@@ -96,6 +99,7 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   }
 
   const std::size_t K = w.num_components;
+  io::reserve_bulk(w.face_component, F);
   w.face_component.resize(F);
   w.face_reverse.resize(F);
   w.component_faces.assign(K, 0);

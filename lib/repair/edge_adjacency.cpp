@@ -15,6 +15,7 @@
 #include <tbb/task_arena.h>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 
 namespace shadetool {
 
@@ -61,8 +62,12 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& 
   const bool parallel = F >= kSerialBelow;
   const bool triangles = mesh.all_triangles();
 
+  // Large fresh arrays: ask for huge pages first (io/bulk_reserve.h), page faults are much of
+  // the cost of filling fresh memory.
   EdgeAdjacency adj;
+  io::reserve_bulk(adj.corner_face, C);
   adj.corner_face.resize(C);
+  io::reserve_bulk(adj.corner_across, C);
   adj.corner_across.assign(C, kNone);
   if (F >= (std::size_t(1) << 31)) fail("edge_adjacency", 0, "more than 2^31 - 1 faces");  // corner_across packing
 
@@ -84,7 +89,11 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& 
   };
 
   // Pass 1: corner -> face, vertex range check, half-edges per lower vertex and chunk.
-  std::vector<std::vector<std::uint32_t>> count(chunks, std::vector<std::uint32_t>(V + 1, 0));
+  std::vector<std::vector<std::uint32_t>> count(chunks);
+  for (auto& n : count) {
+    io::reserve_bulk(n, V + 1);
+    n.assign(V + 1, 0);
+  }
   std::vector<std::uint8_t> out_of_range(chunks, 0);
   for_each_index(chunks, parallel, [&](std::size_t k) {
     std::uint32_t* n = count[k].data();
@@ -100,7 +109,9 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& 
     if (bad) fail("edge_adjacency", 0, "a face refers to a vertex index beyond the vertex count");
 
   // Offsets: bucket v of chunk k starts after all of bucket v's half-edges from chunks < k.
-  std::vector<std::uint32_t> offset(V + 1, 0);
+  std::vector<std::uint32_t> offset;
+  io::reserve_bulk(offset, V + 1);
+  offset.assign(V + 1, 0);
   {
     std::uint32_t sum = 0;
     for (std::size_t v = 0; v < V; ++v) {
@@ -117,7 +128,9 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& 
 
   // Pass 2: scatter (higher vertex << 32 | corner) into the buckets, so that sorting a bucket
   // orders it by both.
-  std::vector<std::uint64_t> slot(H);
+  std::vector<std::uint64_t> slot;
+  io::reserve_bulk(slot, H);
+  slot.resize(H);
   for_each_index(chunks, parallel, [&](std::size_t k) {
     std::uint32_t* cursor = count[k].data();
     for_each_half_edge(chunk_begin(k), chunk_begin(k + 1), [&](std::uint32_t c, std::uint32_t a, std::uint32_t h) {
@@ -143,7 +156,9 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const std::vector<std::uint8_t>& 
   const std::size_t E = block_edges[blocks];
 
   // Assign edge ids in (low, high) order; fill the edge arrays and the face adjacency.
+  io::reserve_bulk(adj.edge_start, E + 1);
   adj.edge_start.resize(E + 1);
+  io::reserve_bulk(adj.edge_corner, H);
   adj.edge_corner.resize(H);
   std::vector<std::size_t> block_non_manifold(blocks, 0);
   for_each_index(blocks, parallel, [&](std::size_t blk) {
