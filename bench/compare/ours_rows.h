@@ -1,0 +1,65 @@
+// ours_rows.h: shadetool's own kernels as rows of a comparison table, so that every anchor program
+// times our kernels on the same mesh in the same process run as the anchor (ratios from one run).
+//
+// Threads: tbb::global_control caps TBB's worker count for the duration of the row; kernels that
+// run serially are unaffected (the 2-thread row then measures the same serial code).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <tbb/global_control.h>
+
+#include "harness.h"
+#include "normals/face_normals.h"
+#include "normals/vertex_normals.h"
+
+namespace shadetool::bench {
+
+inline const char* weighting_name(Weighting w) {
+  switch (w) {
+    case Weighting::Uniform: return "uniform";
+    case Weighting::Area: return "area";
+    case Weighting::Angle: return "angle";
+    case Weighting::Max: return "max";
+  }
+  return "?";
+}
+
+// One row per (weighting, precision, threads): shadetool::vertex_normals. Returns the median of
+// the first row (the reference for ratios).
+inline double ours_vertex_rows(const std::string& program, const BenchMesh& b, int repeats,
+                               const std::vector<Weighting>& weightings, const std::vector<Precision>& precisions,
+                               const std::vector<int>& threads) {
+  double first = 0;
+  for (Weighting w : weightings)
+    for (Precision p : precisions) {
+      std::vector<double> first_result;
+      for (int t : threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(t));
+        VertexNormals result;
+        const Timing time = time_median(repeats_for(b, repeats), [&] { result = VertexNormals{}; },
+                                        [&] { result = vertex_normals(b.am.mesh, w, p); });
+        Row row{program, "shadetool vertex_normals", weighting_name(w), p == Precision::Double ? "double" : "float", "", t};
+        if (first_result.empty()) first_result = result.normals;
+        else if (first_result != result.normals) row.note = "differs from the 1-thread result";
+        if (result.fallback_vertices) row.note += (row.note.empty() ? "" : "; ") + std::to_string(result.fallback_vertices) + " fallback vertices";
+        print_row(b, row, time, angular_error(b, result.normals));
+        if (first == 0) first = time.median_ms;
+      }
+    }
+  return first;
+}
+
+// shadetool::face_normals (no error against vertex truth: reported as timing only).
+inline void ours_face_rows(const std::string& program, const BenchMesh& b, int repeats, const std::vector<int>& threads) {
+  for (int t : threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(t));
+    std::vector<double> fn;
+    const Timing time = time_median(repeats_for(b, repeats), [&] { fn.clear(); fn.shrink_to_fit(); },
+                                    [&] { fn = face_normals(b.am.mesh, Precision::Double); });
+    print_row(b, Row{program, "shadetool face_normals", "face", "double", "", t}, time, ErrorStats{});
+  }
+}
+
+}  // namespace shadetool::bench
