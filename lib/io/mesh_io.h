@@ -43,6 +43,7 @@ struct WriteOptions {
 
 struct WriteInfo {
   std::size_t split_vertices = 0;  // vertices added to carry per-corner normals in PLY/OFF/STL
+  std::vector<std::string> notes;  // what the format could not carry (one line each)
 };
 
 void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options,

@@ -1,0 +1,119 @@
+// cmd_info.cpp: `shadetool info MESH... [--json]`: what a mesh holds and what is wrong with it.
+// Read-only: the statistics come from lib/info/mesh_info.h; this file only formats them.
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "command_registry.h"
+#include "driver.h"
+#include "info/mesh_info.h"
+#include "io/mesh_io.h"
+
+namespace shadetool_cli {
+namespace {
+
+using shadetool::info::MeshInfo;
+
+nlohmann::json info_json(const MeshInfo& m, const std::string& format) {
+  nlohmann::json j;
+  j["format"] = format;
+  j["precision"] = m.double_precision ? "double" : "float";
+  j["vertices"] = m.vertices;
+  j["faces"] = m.faces;
+  j["corners"] = m.corners;
+  j["triangles"] = m.triangles;
+  j["quads"] = m.quads;
+  j["polygons"] = m.polygons;
+  nlohmann::json sizes = nlohmann::json::object();
+  for (auto& [size, count] : m.faces_by_size) sizes[std::to_string(size)] = count;
+  j["faces_by_size"] = sizes;
+  if (m.has_bbox) {
+    j["bbox"] = {{"min", {m.bbox_min.x, m.bbox_min.y, m.bbox_min.z}}, {"max", {m.bbox_max.x, m.bbox_max.y, m.bbox_max.z}}};
+  } else {
+    j["bbox"] = nullptr;
+  }
+  j["attributes"] = {{"vertex_normals", m.vertex_normals}, {"corner_normals", m.corner_normals},
+                     {"face_normals", m.face_normals},     {"vertex_colors", m.vertex_colors},
+                     {"face_colors", m.face_colors},       {"texcoords", m.texcoords},
+                     {"color_channels", m.color_channels}};
+  j["edges"] = m.topology.edges;
+  j["boundary_edges"] = m.topology.boundary_edges;
+  j["non_manifold_edges"] = m.topology.non_manifold_edges;
+  j["inconsistent_edges"] = m.topology.inconsistent_edges;
+  j["non_manifold_vertices"] = m.topology.non_manifold_vertices;
+  j["components"] = m.components;
+  j["degenerate_faces"] = m.degenerate.total;
+  j["repeated_index_faces"] = m.degenerate.repeated_index;
+  j["zero_area_faces"] = m.degenerate.zero_area;
+  j["unreferenced_vertices"] = m.unreferenced_vertices;
+  j["nonfinite_vertices"] = m.nonfinite_vertices;
+  j["nonfinite_values"] = m.nonfinite_values;
+  j["closed_manifold"] = m.closed_manifold();
+  return j;
+}
+
+std::string info_text(const MeshInfo& m, const std::string& input, const std::string& format) {
+  std::string s = fmt::format("{}: {} ({})\n", input, format, m.double_precision ? "double" : "float");
+  s += fmt::format("  vertices               {}\n", m.vertices);
+  std::string sizes;
+  for (auto& [size, count] : m.faces_by_size) sizes += fmt::format("{}{}-gons {}", sizes.empty() ? "" : ", ", size, count);
+  s += fmt::format("  faces                  {}{}\n", m.faces, sizes.empty() ? "" : " (" + sizes + ")");
+  s += fmt::format("  corners                {}\n", m.corners);
+  if (m.has_bbox) {
+    s += fmt::format("  bounding box           min ({}, {}, {})  max ({}, {}, {})\n", m.bbox_min.x, m.bbox_min.y,
+                     m.bbox_min.z, m.bbox_max.x, m.bbox_max.y, m.bbox_max.z);
+    s += fmt::format("  size                   {} x {} x {}\n", m.bbox_max.x - m.bbox_min.x,
+                     m.bbox_max.y - m.bbox_min.y, m.bbox_max.z - m.bbox_min.z);
+  } else {
+    s += "  bounding box           none (no finite vertex)\n";
+  }
+  std::string attrs;
+  auto add = [&](bool on, const std::string& what) {
+    if (on) attrs += (attrs.empty() ? "" : ", ") + what;
+  };
+  add(m.vertex_normals, "vertex normals");
+  add(m.corner_normals, fmt::format("corner normals ({} distinct)", m.corner_normal_pool));
+  add(m.face_normals, "face normals");
+  add(m.vertex_colors, fmt::format("vertex colours ({})", m.color_channels == 4 ? "rgba" : "rgb"));
+  add(m.face_colors, fmt::format("face colours ({})", m.color_channels == 4 ? "rgba" : "rgb"));
+  add(m.texcoords, fmt::format("texcoords ({} distinct)", m.texcoord_pool));
+  s += fmt::format("  attributes             {}\n", attrs.empty() ? "none" : attrs);
+  s += fmt::format("  edges                  {}\n", m.topology.edges);
+  s += fmt::format("  boundary edges         {}\n", m.topology.boundary_edges);
+  s += fmt::format("  non-manifold edges     {}\n", m.topology.non_manifold_edges);
+  s += fmt::format("  non-manifold vertices  {}\n", m.topology.non_manifold_vertices);
+  s += fmt::format("  inconsistent winding   {} edges\n", m.topology.inconsistent_edges);
+  s += fmt::format("  components             {}\n", m.components);
+  s += fmt::format("  degenerate faces       {} ({} repeated index, {} zero area)\n", m.degenerate.total,
+                   m.degenerate.repeated_index, m.degenerate.zero_area);
+  s += fmt::format("  unreferenced vertices  {}\n", m.unreferenced_vertices);
+  s += fmt::format("  NaN/Inf                {} vertices, {} attribute values\n", m.nonfinite_vertices,
+                   m.nonfinite_values);
+  s += fmt::format("  closed manifold        {}\n", m.closed_manifold() ? "yes" : "no");
+  return s;
+}
+
+RegisterCommand reg(10, [](CLI::App& app) -> std::function<int()> {
+  static IoOptions io;
+  auto* sub = app.add_subcommand("info", "Print counts, bounding box, attributes and defects of meshes");
+  add_io_options(*sub, io, /*writes_mesh=*/false);
+  return [] {
+    return run_mesh_command(
+        "info", io,
+        [](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+          std::string format;
+          if (!io.input_format.empty()) format = io.input_format;
+          else format = shadetool::format_extension(shadetool::format_from_extension(input));
+          for (auto& c : format) c = char(std::toupper(static_cast<unsigned char>(c)));
+          const MeshInfo m = shadetool::info::mesh_info(mesh);
+          r.stats = info_json(m, format);
+          r.text = info_text(m, input, format);
+        },
+        false);
+  };
+});
+
+}  // namespace
+}  // namespace shadetool_cli

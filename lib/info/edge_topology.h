@@ -1,0 +1,36 @@
+// edge_topology.h: the undirected edges of a polygon mesh and how many faces meet at each.
+//
+// Inputs:  mesh  face_start (F+1), corner_vertex (C); positions are not used
+// Outputs: EdgeTopology
+//   edges                  #E  distinct undirected edges {a, b}, a < b
+//   boundary_edges         edges used by exactly one face side
+//   non_manifold_edges     edges used by three or more face sides
+//   inconsistent_edges     edges with exactly two sides that run the same direction (a->b twice):
+//                          the two faces are wound inconsistently
+//   non_manifold_vertices  referenced vertices whose incident faces do not form one fan, i.e. are
+//                          not connected through the manifold edges around the vertex (a bow-tie,
+//                          or a vertex on a non-manifold edge whose sheets meet only there)
+// Half-edges are the face sides (c, next(c)); sides with a == b (a face repeating a vertex) are
+// not edges and are ignored here (they are reported as degenerate faces).
+// Method: half-edges sorted by their undirected key (flat arrays, no maps); for the fans, a
+// union-find over corners joins the two corners at each end of every manifold edge, and a vertex
+// is non-manifold when its corners fall into more than one set.
+#pragma once
+
+#include <cstddef>
+
+#include "core/mesh.h"
+
+namespace shadetool::info {
+
+struct EdgeTopology {
+  std::size_t edges = 0;
+  std::size_t boundary_edges = 0;
+  std::size_t non_manifold_edges = 0;
+  std::size_t inconsistent_edges = 0;
+  std::size_t non_manifold_vertices = 0;
+};
+
+EdgeTopology edge_topology(const Mesh& mesh);
+
+}  // namespace shadetool::info

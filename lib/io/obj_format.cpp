@@ -1,0 +1,290 @@
+// obj_format.cpp: Wavefront OBJ, one pass over the bytes, line by line.
+#include "io/obj_format.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "core/error.h"
+#include "io/number_text.h"
+#include "io/text_parse.h"
+
+namespace shadetool::io {
+
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+// Resolves a 1-based or negative (relative) OBJ index against `count` elements defined so far.
+std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* what, const std::string& name,
+                            std::size_t line) {
+  if (idx > 0 && static_cast<std::uint64_t>(idx) <= count) return static_cast<std::uint32_t>(idx - 1);
+  if (idx < 0 && static_cast<std::uint64_t>(-idx) <= count) return static_cast<std::uint32_t>(std::int64_t(count) + idx);
+  if (idx == 0) fail(name, line, std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
+  fail(name, line,
+       std::string(what) + " index " + std::to_string(idx) + " out of range (" + std::to_string(count) + " " + what +
+           (count == 1 ? "" : "s") + " defined so far)");
+}
+
+}  // namespace
+
+Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
+  Mesh mesh;
+  const char* p = bytes.data();
+  const char* const end = p + bytes.size();
+  std::size_t line = 0;
+  bool any_double = false;
+
+  // A rough guess (a `v` line is ~30 bytes) keeps reallocation low without trusting the file.
+  mesh.positions.reserve(bytes.size() / 40 * 3);
+  mesh.corner_vertex.reserve(bytes.size() / 16);
+  mesh.face_start.reserve(bytes.size() / 48 + 1);
+
+  std::vector<double> normals;                 // vn pool, 3 per entry
+  std::vector<double> tex;                     // vt pool, 3 per entry (missing components 0)
+  int tex_dims = 0;                            // most components any vt had
+  std::vector<float> rgba;                     // 4 per vertex once any vertex has a colour
+  int color_channels = 0;                      // 3 or 4 once seen
+  std::size_t colored_vertices = 0;
+  std::vector<std::uint32_t> cn, ct;           // per corner, kNone where absent (allocated lazily)
+  std::size_t corners_with_normal = 0, corners_with_tex = 0;
+  std::size_t skipped_lines = 0;
+  std::string skipped_keyword;
+
+  const char* eol = p;
+  // Parses the next number of the line into x; false at the end of the line (or a comment).
+  auto next_number = [&](const char*& q, double& x) -> bool {
+    const char* b = skip_spaces(q, eol);
+    if (b == eol || *b == '#') return false;
+    q = b;
+    if (!parse_double(q, eol, x)) fail(name, line, "malformed number '" + token_at(b, eol) + "'");
+    if (!any_double && has_more_digits_than_float(b, q)) any_double = true;
+    return true;
+  };
+
+  while (p < end) {
+    ++line;
+    eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
+    if (!eol) eol = end;
+    const char* q = skip_spaces(p, eol);
+    if (q < eol && *q != '#') {
+      const char* kw = q;
+      while (q < eol && !is_space(*q)) ++q;
+      const std::size_t kwlen = std::size_t(q - kw);
+      if (kwlen == 1 && kw[0] == 'v') {
+        double v[8];
+        int n = 0;
+        while (n < 8 && next_number(q, v[n])) ++n;
+        if (n == 8)
+          fail(name, line, "v has more than 7 values (expected x y z [w] or x y z r g b [a])");
+        if (n < 3) fail(name, line, "v has " + std::to_string(n) + " values (need x y z)");
+        if (n == 5) fail(name, line, "v has 5 values (expected x y z [w] or x y z r g b [a])");
+        mesh.positions.insert(mesh.positions.end(), v, v + 3);
+        if (n >= 6) {
+          if (rgba.empty()) rgba.assign(4 * (mesh.num_vertices() - 1), 1.0f);
+          rgba.insert(rgba.end(), {float(v[3]), float(v[4]), float(v[5]), n == 7 ? float(v[6]) : 1.0f});
+          color_channels = std::max(color_channels, n == 7 ? 4 : 3);
+          ++colored_vertices;
+        } else if (!rgba.empty()) {
+          rgba.insert(rgba.end(), {1.0f, 1.0f, 1.0f, 1.0f});
+        }
+      } else if (kwlen == 2 && kw[0] == 'v' && kw[1] == 'n') {
+        double v[3];
+        int n = 0;
+        while (n < 3 && next_number(q, v[n])) ++n;
+        if (n < 3) fail(name, line, "vn has " + std::to_string(n) + " values (need x y z)");
+        normals.insert(normals.end(), v, v + 3);
+      } else if (kwlen == 2 && kw[0] == 'v' && kw[1] == 't') {
+        double v[3] = {0, 0, 0};
+        int n = 0;
+        while (n < 3 && next_number(q, v[n])) ++n;
+        if (n < 1) fail(name, line, "vt has no values (need u [v [w]])");
+        tex_dims = std::max(tex_dims, n);
+        tex.insert(tex.end(), v, v + 3);
+      } else if (kwlen == 1 && kw[0] == 'f') {
+        const std::size_t nv = mesh.num_vertices();
+        const std::size_t first_corner = mesh.corner_vertex.size();
+        for (;;) {
+          q = skip_spaces(q, eol);
+          if (q == eol || *q == '#') break;
+          std::int64_t idx;
+          const char* tok = q;
+          if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+          mesh.corner_vertex.push_back(resolve_index(idx, nv, "vertex", name, line));
+          std::uint32_t t = kNone, nn = kNone;
+          if (q < eol && *q == '/') {
+            ++q;
+            if (q < eol && *q != '/') {
+              if (!parse_int64(q, eol, idx) || (q < eol && *q != '/' && !is_space(*q)))
+                fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+              t = resolve_index(idx, tex.size() / 3, "texcoord", name, line);
+            }
+            if (q < eol && *q == '/') {
+              ++q;
+              if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+              nn = resolve_index(idx, normals.size() / 3, "normal", name, line);
+            }
+          }
+          if (q < eol && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+          if (nn != kNone) {
+            if (cn.empty()) cn.assign(mesh.corner_vertex.size() - 1, kNone);
+            ++corners_with_normal;
+          }
+          if (!cn.empty()) cn.push_back(nn);
+          if (t != kNone) {
+            if (ct.empty()) ct.assign(mesh.corner_vertex.size() - 1, kNone);
+            ++corners_with_tex;
+          }
+          if (!ct.empty()) ct.push_back(t);
+        }
+        const std::size_t size = mesh.corner_vertex.size() - first_corner;
+        if (size < 3)
+          fail(name, line, "face has " + std::to_string(size) + (size == 1 ? " vertex" : " vertices") +
+                               " (a face needs at least 3)");
+        if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 1)
+          fail(name, line, "too many face corners (more than 2^32)");
+        mesh.face_start.push_back(static_cast<std::uint32_t>(mesh.corner_vertex.size()));
+      } else if ((kwlen == 1 && (kw[0] == 'o' || kw[0] == 'g' || kw[0] == 's')) ||
+                 std::string_view(kw, kwlen) == "usemtl" || std::string_view(kw, kwlen) == "mtllib") {
+        // Accepted: grouping, smoothing groups and materials carry no geometry we keep.
+      } else {
+        if (skipped_lines++ == 0) skipped_keyword.assign(kw, kwlen);
+      }
+    }
+    if (eol == end) break;
+    p = eol + 1;
+  }
+
+  if (mesh.num_vertices() > std::numeric_limits<std::uint32_t>::max())
+    fail(name, 0, "too many vertices (more than 2^32)");
+
+  const std::size_t corners = mesh.corner_vertex.size();
+  if (corners_with_normal == corners && corners > 0) {
+    mesh.corner_normals = std::move(normals);
+    mesh.corner_normal_index = std::move(cn);
+  } else if (corners_with_normal > 0) {
+    info.notes.push_back("normals (vn) dropped: " + std::to_string(corners - corners_with_normal) + " of " +
+                         std::to_string(corners) + " face corners have none");
+  }
+  if (corners_with_tex == corners && corners > 0) {
+    const int dims = std::max(2, tex_dims);
+    mesh.texcoord_dims = dims;
+    mesh.texcoords.resize(tex.size() / 3 * std::size_t(dims));
+    for (std::size_t i = 0; i < tex.size() / 3; ++i)
+      for (int k = 0; k < dims; ++k) mesh.texcoords[i * std::size_t(dims) + std::size_t(k)] = tex[3 * i + std::size_t(k)];
+    mesh.corner_texcoord_index = std::move(ct);
+  } else if (corners_with_tex > 0) {
+    info.notes.push_back("texture coordinates (vt) dropped: " + std::to_string(corners - corners_with_tex) + " of " +
+                         std::to_string(corners) + " face corners have none");
+  }
+  if (!rgba.empty()) {
+    mesh.color_channels = color_channels;
+    mesh.colors_are_float = true;
+    mesh.vertex_colors.resize(mesh.num_vertices() * std::size_t(color_channels));
+    for (std::size_t v = 0; v < mesh.num_vertices(); ++v)
+      for (int k = 0; k < color_channels; ++k)
+        mesh.vertex_colors[v * std::size_t(color_channels) + std::size_t(k)] = rgba[4 * v + std::size_t(k)];
+    if (colored_vertices < mesh.num_vertices())
+      info.notes.push_back(std::to_string(mesh.num_vertices() - colored_vertices) + " of " +
+                           std::to_string(mesh.num_vertices()) + " vertices have no colour: given white");
+  }
+  if (skipped_lines > 0)
+    info.notes.push_back("skipped " + std::to_string(skipped_lines) + " line" + (skipped_lines == 1 ? "" : "s") +
+                         " with keywords shadetool does not use (first: '" + skipped_keyword + "')");
+
+  if (any_double) {
+    mesh.precision = ValuePrecision::Double;
+  } else {
+    mesh.precision = ValuePrecision::Float;
+    auto round_to_float = [](std::vector<double>& a) {
+      for (double& x : a) x = static_cast<double>(static_cast<float>(x));
+    };
+    round_to_float(mesh.positions);
+    round_to_float(mesh.corner_normals);
+    round_to_float(mesh.texcoords);
+  }
+  return mesh;
+}
+
+void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
+  const ValuePrecision prec = mesh.precision;
+  out.reserve(out.size() + mesh.num_vertices() * 40 + mesh.num_corners() * 10);
+  out += "# written by shadetool\n";
+  const std::size_t nv = mesh.num_vertices();
+  const bool colors = mesh.has_vertex_colors() && mesh.vertex_colors.size() == nv * std::size_t(mesh.color_channels);
+  for (std::size_t v = 0; v < nv; ++v) {
+    out += "v ";
+    append_shortest(out, mesh.positions[3 * v], prec);
+    out += ' ';
+    append_shortest(out, mesh.positions[3 * v + 1], prec);
+    out += ' ';
+    append_shortest(out, mesh.positions[3 * v + 2], prec);
+    if (colors) {
+      for (int k = 0; k < mesh.color_channels; ++k) {
+        out += ' ';
+        append_shortest_float(out, mesh.vertex_colors[v * std::size_t(mesh.color_channels) + std::size_t(k)]);
+      }
+    }
+    out += '\n';
+  }
+  const bool tex = mesh.has_texcoords();
+  if (tex) {
+    const std::size_t dims = std::size_t(mesh.texcoord_dims);
+    for (std::size_t i = 0; i + dims <= mesh.texcoords.size(); i += dims) {
+      out += "vt";
+      for (std::size_t k = 0; k < dims; ++k) {
+        out += ' ';
+        append_shortest(out, mesh.texcoords[i + k], prec);
+      }
+      out += '\n';
+    }
+  }
+  // Which normals, and the vn index of each corner.
+  enum class NormalSource { None, Corner, Vertex, Face } source = NormalSource::None;
+  const std::vector<double>* pool = nullptr;
+  if (mesh.has_corner_normals()) {
+    source = NormalSource::Corner;
+    pool = &mesh.corner_normals;
+  } else if (mesh.has_vertex_normals()) {
+    source = NormalSource::Vertex;
+    pool = &mesh.vertex_normals;
+  } else if (mesh.has_face_normals()) {
+    source = NormalSource::Face;
+    pool = &mesh.face_normals;
+  }
+  if (pool) {
+    for (std::size_t i = 0; i + 3 <= pool->size(); i += 3) {
+      out += "vn ";
+      append_shortest(out, (*pool)[i], prec);
+      out += ' ';
+      append_shortest(out, (*pool)[i + 1], prec);
+      out += ' ';
+      append_shortest(out, (*pool)[i + 2], prec);
+      out += '\n';
+    }
+  }
+  const std::size_t nf = mesh.num_faces();
+  for (std::size_t f = 0; f < nf; ++f) {
+    out += 'f';
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      out += ' ';
+      append_uint(out, std::uint64_t(mesh.corner_vertex[c]) + 1);
+      if (tex || source != NormalSource::None) {
+        out += '/';
+        if (tex) append_uint(out, std::uint64_t(mesh.corner_texcoord_index[c]) + 1);
+        if (source != NormalSource::None) {
+          out += '/';
+          const std::uint64_t n = source == NormalSource::Corner   ? mesh.corner_normal_index[c]
+                                  : source == NormalSource::Vertex ? mesh.corner_vertex[c]
+                                                                   : f;
+          append_uint(out, n + 1);
+        }
+      }
+    }
+    out += '\n';
+  }
+  if (mesh.has_face_colors()) info.notes.push_back("face colours not written: OBJ has no face colours");
+}
+
+}  // namespace shadetool::io

@@ -1,0 +1,284 @@
+// off_format.cpp: OFF, line by line.
+#include "io/off_format.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "core/error.h"
+#include "io/number_text.h"
+#include "io/split_corner_normals.h"
+#include "io/text_parse.h"
+
+namespace shadetool::io {
+
+namespace {
+
+// Walks the file line by line, skipping blank lines and comments, counting lines.
+class Lines {
+ public:
+  Lines(std::string_view bytes) : p_(bytes.data()), end_(bytes.data() + bytes.size()) {}
+  // Next line with content: [b, e) without the comment; false at the end of the file.
+  bool next(const char*& b, const char*& e) {
+    while (p_ < end_) {
+      ++line_;
+      const char* eol = static_cast<const char*>(std::memchr(p_, '\n', std::size_t(end_ - p_)));
+      if (!eol) eol = end_;
+      b = skip_spaces(p_, eol);
+      e = std::find(b, eol, '#');
+      while (e > b && is_space(e[-1])) --e;
+      p_ = eol < end_ ? eol + 1 : end_;
+      if (e > b) return true;
+    }
+    return false;
+  }
+  std::size_t line() const { return line_; }
+  std::size_t remaining() const { return std::size_t(end_ - p_); }
+
+ private:
+  const char* p_;
+  const char* end_;
+  std::size_t line_ = 0;
+};
+
+}  // namespace
+
+Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
+  (void)info;
+  Mesh mesh;
+  Lines lines(bytes);
+  const char *b, *e;
+  if (!lines.next(b, e)) fail(name, lines.line(), "no OFF header (file has only comments or blank lines)");
+
+  bool has_st = false, has_c = false, has_n = false;
+  const char* q = b;
+  if (!(*b >= '0' && *b <= '9')) {  // the keyword is optional: a file may start with the counts
+    const char* kw = b;
+    while (q < e && !is_space(*q)) ++q;
+    std::string k(kw, q);
+    std::size_t i = 0;
+    if (k.compare(i, 2, "ST") == 0) has_st = true, i += 2;
+    if (i < k.size() && k[i] == 'C') has_c = true, ++i;
+    if (i < k.size() && k[i] == 'N') has_n = true, ++i;
+    if (k.compare(i, std::string::npos, "OFF") != 0) {
+      if (k.find("OFF") != std::string::npos)
+        fail(name, lines.line(), "unsupported OFF variant '" + k + "' (supported: [ST][C][N]OFF)");
+      fail(name, lines.line(), "not an OFF file (header is '" + k + "')");
+    }
+    q = skip_spaces(q, e);
+    if (q < e && std::string_view(q, std::size_t(e - q)).substr(0, 6) == "BINARY")
+      fail(name, lines.line(), "binary OFF is not supported");
+    if (q == e) {  // the counts are on the next line
+      if (!lines.next(b, e)) fail(name, lines.line(), "OFF file ends before the counts line");
+      q = b;
+    }
+  }
+  const std::size_t counts_line = lines.line();
+  std::int64_t counts[3] = {0, 0, 0};
+  int ncounts = 0;
+  while (ncounts < 3 && skip_spaces(q, e) < e) {
+    const char* t = q;
+    if (!parse_int64(q, e, counts[ncounts]) || (q < e && !is_space(*q)) || counts[ncounts] < 0)
+      fail(name, counts_line, "malformed count '" + token_at(t, e) + "' (expected: #vertices #faces #edges)");
+    ++ncounts;
+  }
+  if (ncounts < 2) fail(name, counts_line, "counts line needs #vertices #faces [#edges]");
+  if (skip_spaces(q, e) < e) fail(name, counts_line, "unexpected '" + token_at(q, e) + "' after the counts");
+  const std::uint64_t nv = std::uint64_t(counts[0]), nf = std::uint64_t(counts[1]);
+  // Every vertex line takes at least 6 bytes ("0 0 0\n"), every face line 8 ("3 0 1 2\n").
+  if (nv > lines.remaining() / 6 + 1 || nf > lines.remaining() / 8 + 1 || nv > std::numeric_limits<std::uint32_t>::max())
+    fail(name, counts_line, "header claims " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+                                " faces but only " + std::to_string(lines.remaining()) + " bytes follow");
+
+  bool any_double = false;
+  auto number = [&](const char*& p, const char* end, double& x) -> bool {
+    const char* t = skip_spaces(p, end);
+    if (t == end) return false;
+    p = t;
+    if (!parse_double(p, end, x)) fail(name, lines.line(), "malformed number '" + token_at(t, end) + "'");
+    if (!any_double && has_more_digits_than_float(t, p)) any_double = true;
+    return true;
+  };
+  // A colour token written as an integer is 0..255; with a point or exponent it is a float in [0,1].
+  bool colors_float = false;
+  auto color_values = [&](const char*& p, const char* end, float* rgba) -> int {
+    int k = 0;
+    bool integer = true;
+    const char* t = skip_spaces(p, end);
+    for (const char* c = t; c < end; ++c) integer = integer && !(*c == '.' || *c == 'e' || *c == 'E');
+    double x;
+    while (k < 5 && number(p, end, x)) rgba[k++] = float(x);
+    if (!integer) colors_float = true;
+    if (integer)
+      for (int i = 0; i < k; ++i) rgba[i] /= 255.0f;
+    return k;
+  };
+
+  const std::size_t per_vertex = 3 + (has_n ? 3 : 0);
+  mesh.positions.resize(3 * nv);
+  if (has_n) mesh.vertex_normals.resize(3 * nv);
+  std::vector<float> vrgba;
+  std::vector<double> vtex;
+  int channels = 3;
+  if (has_c) vrgba.assign(4 * nv, 1.0f);
+  if (has_st) vtex.assign(2 * nv, 0.0);
+  for (std::uint64_t v = 0; v < nv; ++v) {
+    if (!lines.next(b, e))
+      fail(name, lines.line(), "file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
+    double x[6];
+    std::size_t n = 0;
+    const char* p = b;
+    while (n < per_vertex && number(p, e, x[n])) ++n;
+    if (n < per_vertex)
+      fail(name, lines.line(), "vertex line has " + std::to_string(n) + " values, expected " + std::to_string(per_vertex) +
+                                   (has_n ? " (x y z nx ny nz)" : " (x y z)"));
+    for (int k = 0; k < 3; ++k) mesh.positions[3 * v + std::size_t(k)] = x[k];
+    if (has_n)
+      for (int k = 0; k < 3; ++k) mesh.vertex_normals[3 * v + std::size_t(k)] = x[3 + k];
+    if (has_c) {
+      float c[5];
+      const char* before = p;
+      int k = color_values(p, e, c);
+      if (has_st) {  // the last two values are s t
+        if (k < 2) fail(name, lines.line(), "vertex line is missing s t");
+        k -= 2;
+        vtex[2 * v] = c[k];
+        vtex[2 * v + 1] = c[k + 1];
+        (void)before;
+      }
+      if (k != 3 && k != 4) fail(name, lines.line(), "vertex colour has " + std::to_string(k) + " values, expected r g b [a]");
+      if (k == 4) channels = 4;
+      for (int i = 0; i < k; ++i) vrgba[4 * v + std::size_t(i)] = c[i];
+    } else if (has_st) {
+      double s, t;
+      if (!number(p, e, s) || !number(p, e, t)) fail(name, lines.line(), "vertex line is missing s t");
+      vtex[2 * v] = s;
+      vtex[2 * v + 1] = t;
+    }
+    if (skip_spaces(p, e) < e)
+      fail(name, lines.line(), "vertex line has more values than the header '" + std::string(has_st ? "ST" : "") +
+                                   (has_c ? "C" : "") + (has_n ? "N" : "") + "OFF' declares");
+  }
+
+  mesh.face_start.reserve(nf + 1);
+  mesh.corner_vertex.reserve(std::min<std::uint64_t>(3 * nf, lines.remaining()));
+  std::vector<float> frgba;
+  bool any_face_color = false;
+  for (std::uint64_t f = 0; f < nf; ++f) {
+    if (!lines.next(b, e))
+      fail(name, lines.line(), "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+    const char* p = b;
+    std::int64_t k;
+    if (!parse_int64(p, e, k) || (p < e && !is_space(*p)))
+      fail(name, lines.line(), "malformed face size '" + token_at(b, e) + "'");
+    if (k < 3)
+      fail(name, lines.line(), "face has " + std::to_string(k) + (k == 1 ? " vertex" : " vertices") +
+                                   " (a face needs at least 3)");
+    if (std::uint64_t(k) > std::uint64_t(e - p)) fail(name, lines.line(), "face line has fewer indices than its size " + std::to_string(k));
+    for (std::int64_t i = 0; i < k; ++i) {
+      const char* t = skip_spaces(p, e);
+      std::int64_t idx;
+      if (t == e) fail(name, lines.line(), "face line has " + std::to_string(i) + " indices, its size says " + std::to_string(k));
+      if (!parse_int64(p, e, idx) || (p < e && !is_space(*p)))
+        fail(name, lines.line(), "malformed vertex index '" + token_at(t, e) + "'");
+      if (idx < 0 || std::uint64_t(idx) >= nv)
+        fail(name, lines.line(), "vertex index " + std::to_string(idx) + " out of range (" + std::to_string(nv) + " vertices)");
+      mesh.corner_vertex.push_back(std::uint32_t(idx));
+    }
+    if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 1)
+      fail(name, lines.line(), "too many face corners (more than 2^32)");
+    mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
+    float c[5] = {1, 1, 1, 1, 1};
+    const int kc = color_values(p, e, c);
+    if (kc != 0 && kc != 3 && kc != 4)
+      fail(name, lines.line(), "face has " + std::to_string(kc) + " values after its indices, expected none or r g b [a]");
+    if (kc > 0) {
+      if (!any_face_color) frgba.assign(4 * f, 1.0f);
+      any_face_color = true;
+      if (kc == 4) channels = 4;
+    }
+    if (any_face_color) frgba.insert(frgba.end(), {c[0], c[1], c[2], kc == 4 ? c[3] : 1.0f});
+  }
+  if (lines.next(b, e))
+    fail(name, lines.line(), "more data than the header declares ('" + token_at(b, e) + "' after the last face)");
+
+  auto pack = [&](const std::vector<float>& rgba, std::vector<float>& out) {
+    const std::size_t n = rgba.size() / 4;
+    out.resize(n * std::size_t(channels));
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < channels; ++k) out[i * std::size_t(channels) + std::size_t(k)] = rgba[4 * i + std::size_t(k)];
+  };
+  if (has_c) pack(vrgba, mesh.vertex_colors);
+  if (any_face_color) pack(frgba, mesh.face_colors);
+  mesh.color_channels = channels;
+  mesh.colors_are_float = colors_float;
+  if (has_st) {
+    mesh.texcoords = std::move(vtex);
+    mesh.texcoord_dims = 2;
+    mesh.corner_texcoord_index = mesh.corner_vertex;
+  }
+  mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
+  if (!any_double)
+    for (auto* a : {&mesh.positions, &mesh.vertex_normals, &mesh.texcoords})
+      for (double& x : *a) x = double(float(x));
+  return mesh;
+}
+
+void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
+  std::size_t added = 0;
+  Mesh split;
+  const bool must_split = input.has_corner_normals();
+  if (must_split) split = split_corner_normals(input, added);
+  const Mesh& mesh = must_split ? split : input;
+  info.split_vertices = added;
+
+  const bool normals = mesh.has_vertex_normals();
+  const bool vcolors = mesh.has_vertex_colors();
+  const bool fcolors = mesh.has_face_colors();
+  const int ch = mesh.color_channels;
+  const auto prec = mesh.precision;
+  if (mesh.has_face_normals()) info.notes.push_back("face normals not written: OFF has no face normals");
+  if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to OFF");
+
+  auto color = [&](float c) {
+    out += ' ';
+    if (mesh.colors_are_float) append_shortest_float(out, c);
+    else append_uint(out, color_to_uchar(c));
+  };
+  out.reserve(out.size() + mesh.num_vertices() * 36 * (normals ? 2 : 1) + mesh.num_corners() * 8);
+  out += vcolors ? "C" : "";
+  out += normals ? "N" : "";
+  out += "OFF\n";
+  append_uint(out, mesh.num_vertices());
+  out += ' ';
+  append_uint(out, mesh.num_faces());
+  out += " 0\n";
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+    for (int k = 0; k < 3; ++k) {
+      if (k) out += ' ';
+      append_shortest(out, mesh.positions[3 * v + std::size_t(k)], prec);
+    }
+    if (normals)
+      for (int k = 0; k < 3; ++k) {
+        out += ' ';
+        append_shortest(out, mesh.vertex_normals[3 * v + std::size_t(k)], prec);
+      }
+    if (vcolors)
+      for (int k = 0; k < ch; ++k) color(mesh.vertex_colors[std::size_t(ch) * v + std::size_t(k)]);
+    out += '\n';
+  }
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    append_uint(out, mesh.face_size(f));
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      out += ' ';
+      append_uint(out, mesh.corner_vertex[c]);
+    }
+    if (fcolors)
+      for (int k = 0; k < ch; ++k) color(mesh.face_colors[std::size_t(ch) * f + std::size_t(k)]);
+    out += '\n';
+  }
+}
+
+}  // namespace shadetool::io

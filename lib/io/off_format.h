@@ -1,0 +1,28 @@
+// off_format.h: Geomview OFF reader and writer (OFF, COFF, NOFF, CNOFF, STOFF...).
+//
+// Reading: an optional header keyword [ST][C][N]OFF (4OFF, nOFF and binary OFF are refused),
+// then `#V #F [#E]`, #V vertex lines `x y z [nx ny nz] [r g b [a]] [s t]` and #F face lines
+// `k i_1 ... i_k [r g b [a]]` (0-based indices, polygons kept). Colours written as integers are
+// 0..255 and divided by 255; colours with a decimal point or exponent are taken as floats in [0,1].
+// Comments (#) and blank lines are skipped anywhere. Each vertex and face is one line; a line with
+// the wrong number of values, or content after the last face, means the header counts disagree
+// with the body and is an error. Counts are bounded by the file size before allocation.
+// Precision: as OBJ (obj_format.h): double when a number has more than 9 significant digits.
+//
+// Writing: `[C][N]OFF` (C with vertex colours, N with vertex normals; per-corner normals are split
+// into vertices, WriteInfo::split_vertices), face colours after the indices; colours as floats when
+// Mesh::colors_are_float, else integers 0..255. Face normals and texcoords have no OFF form (notes).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "core/mesh.h"
+#include "io/mesh_io.h"
+
+namespace shadetool::io {
+
+Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info);
+void write_off(const Mesh& mesh, std::string& out, WriteInfo& info);
+
+}  // namespace shadetool::io

@@ -1,0 +1,30 @@
+// ply_format.h: Stanford PLY reader and writer (ascii, binary little- and big-endian).
+//
+// Reading: element `vertex` with x y z, nx ny nz, red green blue [alpha] (uchar -> c/255, or
+// float as is; also diffuse_red...), texture coordinates s t / u v / texture_u texture_v;
+// element `face` with list vertex_indices or vertex_index (any integer count and item types),
+// nx ny nz (face normals), red green blue [alpha] (face colours), list texcoord (per-corner
+// u v pairs, MeshLab's wedge texcoords). Any other element or property is skipped by its
+// declared type. Counts in the header are checked against the size of the body before anything
+// is allocated, so a header claiming 2^40 vertices fails at once.
+// Precision: double if any kept vertex value (x y z, normals, texcoords) is declared double
+// (or a 32-bit integer), else float.
+//
+// Writing: binary little-endian (default) or ascii; x y z and normals as float or double after
+// Mesh::precision, colours as uchar or float after Mesh::colors_are_float; per-corner normals are
+// split into vertices (WriteInfo::split_vertices); face normals and face colours as face
+// properties; per-corner texcoords as a face list `texcoord` (as MeshLab writes them).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "core/mesh.h"
+#include "io/mesh_io.h"
+
+namespace shadetool::io {
+
+Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info);
+void write_ply(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info);
+
+}  // namespace shadetool::io

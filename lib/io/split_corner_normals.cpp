@@ -1,0 +1,60 @@
+// split_corner_normals.cpp
+#include "io/split_corner_normals.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace shadetool::io {
+
+Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
+  added = 0;
+  Mesh out = mesh;
+  if (!mesh.has_corner_normals()) return out;
+  const std::size_t nv = mesh.num_vertices();
+  const std::size_t nc = mesh.num_corners();
+
+  // Corners bucketed by vertex (CSR): start[v]..start[v+1] in `bucket`.
+  std::vector<std::uint32_t> start(nv + 1, 0);
+  for (std::uint32_t v : mesh.corner_vertex) ++start[v + 1];
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> bucket(nc), fill(start.begin(), start.end() - 1);
+  for (std::uint32_t c = 0; c < nc; ++c) bucket[fill[mesh.corner_vertex[c]]++] = c;
+
+  out.vertex_normals.assign(3 * nv, 0.0);
+  if (mesh.has_vertex_normals()) out.vertex_normals = mesh.vertex_normals;
+  const int ch = mesh.color_channels;
+  const bool colors = mesh.has_vertex_colors();
+  std::vector<std::uint32_t> seen_normal, seen_vertex;  // distinct normals of the current vertex
+  for (std::size_t v = 0; v < nv; ++v) {
+    seen_normal.clear();
+    seen_vertex.clear();
+    for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
+      const std::uint32_t c = bucket[k];
+      const std::uint32_t n = mesh.corner_normal_index[c];
+      std::uint32_t target = UINT32_MAX;
+      for (std::size_t i = 0; i < seen_normal.size(); ++i)
+        if (seen_normal[i] == n) target = seen_vertex[i];
+      if (target == UINT32_MAX) {
+        if (seen_normal.empty()) {
+          target = static_cast<std::uint32_t>(v);
+        } else {
+          target = static_cast<std::uint32_t>(out.num_vertices());
+          out.positions.insert(out.positions.end(), &mesh.positions[3 * v], &mesh.positions[3 * v] + 3);
+          out.vertex_normals.insert(out.vertex_normals.end(), {0.0, 0.0, 0.0});
+          if (colors)
+            for (int j = 0; j < ch; ++j) out.vertex_colors.push_back(mesh.vertex_colors[v * std::size_t(ch) + std::size_t(j)]);
+          ++added;
+        }
+        for (int j = 0; j < 3; ++j) out.vertex_normals[3 * std::size_t(target) + std::size_t(j)] = mesh.corner_normals[3 * std::size_t(n) + std::size_t(j)];
+        seen_normal.push_back(n);
+        seen_vertex.push_back(target);
+      }
+      out.corner_vertex[c] = target;
+    }
+  }
+  out.corner_normals.clear();
+  out.corner_normal_index.clear();
+  return out;
+}
+
+}  // namespace shadetool::io

@@ -1,0 +1,22 @@
+// split_corner_normals.h: per-corner normals carried as per-vertex normals, for formats that store
+// normals only per vertex (PLY, OFF).
+//
+// Inputs:  mesh  with corner_normal_index (C) into corner_normals (N*3)
+// Outputs: a mesh whose vertex_normals (V'*3) hold, for each distinct (vertex, normal index) pair
+//          used by a corner, one vertex; `added` = V' - V.
+// The first pair met for vertex v keeps index v (so order and unreferenced vertices are kept);
+// further pairs become new vertices appended after the originals, copying position and colour.
+// Unreferenced vertices keep their vertex normal if the mesh had them, else (0,0,0).
+// Corner normals and their index are removed from the result; faces keep their order and size.
+// Flat arrays, two passes (count corners per vertex, then bucket): O(C * corners per vertex).
+#pragma once
+
+#include <cstddef>
+
+#include "core/mesh.h"
+
+namespace shadetool::io {
+
+Mesh split_corner_normals(const Mesh& mesh, std::size_t& added);
+
+}  // namespace shadetool::io

@@ -1,0 +1,328 @@
+// stl_format.cpp
+#include "io/stl_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "core/error.h"
+#include "io/number_text.h"
+#include "io/text_parse.h"
+
+namespace shadetool::io {
+
+namespace {
+
+// Positions -> shared vertices. Keys are the vertex ids already in `positions`.
+class PositionMerger {
+ public:
+  PositionMerger(Mesh& mesh, std::size_t expected_corners) : mesh_(mesh) {
+    std::size_t cap = 16;
+    while (cap < 2 * expected_corners) cap *= 2;
+    slots_.assign(cap, kEmpty);
+  }
+
+  std::uint32_t add(double x, double y, double z) {
+    if (std::isnan(x) || std::isnan(y) || std::isnan(z)) return append(x, y, z);  // NaN equals nothing
+    // -0 and +0 are the same position; hash them alike.
+    if (x == 0) x = 0;
+    if (y == 0) y = 0;
+    if (z == 0) z = 0;
+    std::size_t h = hash(x, y, z) & (slots_.size() - 1);
+    for (;;) {
+      const std::uint32_t v = slots_[h];
+      if (v == kEmpty) break;
+      const double* p = &mesh_.positions[3 * std::size_t(v)];
+      if (p[0] == x && p[1] == y && p[2] == z) {
+        ++merged_;
+        return v;
+      }
+      h = (h + 1) & (slots_.size() - 1);
+    }
+    const std::uint32_t v = append(x, y, z);
+    slots_[h] = v;
+    if (2 * mesh_.num_vertices() > slots_.size()) grow();
+    return v;
+  }
+  std::size_t merged() const { return merged_; }
+
+ private:
+  static constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+
+  static std::uint64_t bits(double d) {
+    std::uint64_t u;
+    std::memcpy(&u, &d, sizeof u);
+    return u;
+  }
+  static std::size_t hash(double x, double y, double z) {
+    std::uint64_t h = bits(x) * 0x9E3779B97F4A7C15ull;
+    h ^= bits(y) + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2);
+    h ^= bits(z) + 0x85EBCA77C2B2AE63ull + (h << 6) + (h >> 2);
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 32;
+    return std::size_t(h);
+  }
+  std::uint32_t append(double x, double y, double z) {
+    if (mesh_.num_vertices() >= kEmpty) fail("", 0, "too many vertices (more than 2^32)");
+    return mesh_.add_vertex({x, y, z});
+  }
+  void grow() {
+    std::vector<std::uint32_t> old(slots_.size() * 2, kEmpty);
+    old.swap(slots_);
+    for (std::uint32_t v : old) {
+      if (v == kEmpty) continue;
+      const double* p = &mesh_.positions[3 * std::size_t(v)];
+      std::size_t h = hash(p[0], p[1], p[2]) & (slots_.size() - 1);
+      while (slots_[h] != kEmpty) h = (h + 1) & (slots_.size() - 1);
+      slots_[h] = v;
+    }
+  }
+
+  Mesh& mesh_;
+  std::vector<std::uint32_t> slots_;
+  std::size_t merged_ = 0;
+};
+
+float load_le_float(const char* p) {
+  std::uint32_t u = std::uint32_t(std::uint8_t(p[0])) | std::uint32_t(std::uint8_t(p[1])) << 8 |
+                    std::uint32_t(std::uint8_t(p[2])) << 16 | std::uint32_t(std::uint8_t(p[3])) << 24;
+  float f;
+  std::memcpy(&f, &u, sizeof f);
+  return f;
+}
+
+std::uint32_t load_le_u32(const char* p) {
+  return std::uint32_t(std::uint8_t(p[0])) | std::uint32_t(std::uint8_t(p[1])) << 8 |
+         std::uint32_t(std::uint8_t(p[2])) << 16 | std::uint32_t(std::uint8_t(p[3])) << 24;
+}
+
+void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merger, ReadInfo& info) {
+  bool any = false;
+  for (double n : normals) any = any || n != 0;
+  if (any) mesh.face_normals = std::move(normals);
+  info.merged_vertices = merger.merged();
+  if (merger.merged() > 0)
+    info.notes.push_back("merged " + std::to_string(merger.merged()) + " corners with identical positions into " +
+                         std::to_string(mesh.num_vertices()) + " shared vertices");
+}
+
+Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
+  Mesh mesh;
+  mesh.precision = ValuePrecision::Float;
+  PositionMerger merger(mesh, std::size_t(n) * 3 / 5);  // closed meshes: V ~ F/2 = 3n/6
+  mesh.positions.reserve(std::size_t(n) * 3 / 2 + 3);
+  mesh.corner_vertex.reserve(3 * std::size_t(n));
+  mesh.face_start.reserve(std::size_t(n) + 1);
+  std::vector<double> normals(3 * std::size_t(n));
+  const char* p = bytes.data() + 84;
+  for (std::uint32_t t = 0; t < n; ++t, p += 50) {
+    for (int k = 0; k < 3; ++k) normals[3 * std::size_t(t) + std::size_t(k)] = load_le_float(p + 4 * k);
+    for (int c = 0; c < 3; ++c) {
+      const char* q = p + 12 + 12 * c;
+      mesh.corner_vertex.push_back(merger.add(load_le_float(q), load_le_float(q + 4), load_le_float(q + 8)));
+    }
+    mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
+  }
+  finish(mesh, normals, merger, info);
+  return mesh;
+}
+
+Mesh read_ascii(std::string_view bytes, const std::string& name, ReadInfo& info) {
+  Mesh mesh;
+  const char* p = bytes.data();
+  const char* const end = p + bytes.size();
+  std::size_t line = 1;
+  PositionMerger merger(mesh, bytes.size() / 200);  // a facet takes ~250 bytes of text
+  std::vector<double> normals;
+  bool any_double = false;
+
+  auto skip_ws = [&] {
+    while (p < end && is_space_or_newline(*p)) {
+      if (*p == '\n') ++line;
+      ++p;
+    }
+  };
+  auto word = [&]() -> std::string_view {
+    skip_ws();
+    const char* b = p;
+    while (p < end && !is_space_or_newline(*p)) ++p;
+    return std::string_view(b, std::size_t(p - b));
+  };
+  auto expect = [&](std::string_view w) {
+    const std::size_t at = (skip_ws(), line);
+    const std::string_view got = word();
+    if (got != w)
+      fail(name, at, "expected '" + std::string(w) + "', found '" + (got.empty() ? std::string("end of file") : std::string(got.substr(0, 40))) + "'");
+  };
+  auto number = [&]() -> double {
+    skip_ws();
+    const char* b = p;
+    double x;
+    if (p == end) fail(name, line, "file ends inside a facet");
+    if (!parse_double(p, end, x)) fail(name, line, "malformed number '" + token_at(b, end) + "'");
+    if (!any_double && has_more_digits_than_float(b, p)) any_double = true;
+    return x;
+  };
+  auto rest_of_line = [&] {
+    while (p < end && *p != '\n') ++p;
+  };
+
+  std::size_t solids = 0;
+  for (;;) {
+    skip_ws();
+    if (p == end) break;
+    expect("solid");
+    rest_of_line();  // the solid's name
+    ++solids;
+    for (;;) {
+      const std::size_t at = (skip_ws(), line);
+      const std::string_view w = word();
+      if (w == "endsolid") {
+        rest_of_line();
+        break;
+      }
+      if (w != "facet")
+        fail(name, at, w.empty() ? std::string("file ends inside a solid (no endsolid)")
+                                 : "expected 'facet' or 'endsolid', found '" + std::string(w.substr(0, 40)) + "'");
+      expect("normal");
+      for (int k = 0; k < 3; ++k) normals.push_back(number());
+      expect("outer");
+      expect("loop");
+      const std::size_t first = mesh.corner_vertex.size();
+      for (;;) {
+        const std::size_t vat = (skip_ws(), line);
+        const std::string_view v = word();
+        if (v == "endloop") break;
+        if (v != "vertex")
+          fail(name, vat, v.empty() ? std::string("file ends inside a facet")
+                                    : "expected 'vertex' or 'endloop', found '" + std::string(v.substr(0, 40)) + "'");
+        const double x = number(), y = number(), z = number();
+        mesh.corner_vertex.push_back(merger.add(x, y, z));
+      }
+      const std::size_t size = mesh.corner_vertex.size() - first;
+      if (size < 3)
+        fail(name, line, "facet has " + std::to_string(size) + (size == 1 ? " vertex" : " vertices") +
+                             " (a face needs at least 3)");
+      mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
+      expect("endfacet");
+    }
+  }
+  if (solids == 0) fail(name, 1, "file is empty");
+  mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
+  finish(mesh, normals, merger, info);
+  if (!any_double) {
+    // Float data: merged values compared as read; store what a float holds.
+    for (double& x : mesh.positions) x = double(float(x));
+    for (double& x : mesh.face_normals) x = double(float(x));
+  }
+  return mesh;
+}
+
+}  // namespace
+
+Mesh read_stl(std::string_view bytes, const std::string& name, ReadInfo& info) {
+  if (bytes.size() >= 84) {
+    const std::uint32_t n = load_le_u32(bytes.data() + 80);
+    if (84 + 50 * std::uint64_t(n) == bytes.size()) return read_binary(bytes, n, info);
+  }
+  const char* p = bytes.data();
+  const char* end = p + bytes.size();
+  while (p < end && is_space_or_newline(*p)) ++p;
+  if (end - p >= 5 && std::memcmp(p, "solid", 5) == 0 && (end - p == 5 || is_space_or_newline(p[5]))) {
+    return read_ascii(bytes, name, info);
+  }
+  if (bytes.size() >= 84) {
+    const std::uint32_t n = load_le_u32(bytes.data() + 80);
+    fail(name, 0, "binary STL header says " + std::to_string(n) + " triangles (" + std::to_string(84 + 50 * std::uint64_t(n)) +
+                      " bytes) but the file has " + std::to_string(bytes.size()) + " bytes: truncated or not STL");
+  }
+  fail(name, 0, "not an STL file (too short for binary STL and no 'solid' keyword)");
+}
+
+namespace {
+
+void put_float(std::string& out, float f) {
+  std::uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  const char b[4] = {char(u & 0xff), char((u >> 8) & 0xff), char((u >> 16) & 0xff), char((u >> 24) & 0xff)};
+  out.append(b, 4);
+}
+
+// Unit normal of a triangle, or (0,0,0) when its area is zero (or not finite).
+Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  const Vec3d n = cross(b - a, c - a);
+  const double len = length(n);
+  return (len > 0 && std::isfinite(len)) ? n * (1.0 / len) : Vec3d{0, 0, 0};
+}
+
+}  // namespace
+
+void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info) {
+  info.split_vertices = 0;
+  std::size_t triangles = 0, polygons = 0;
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    triangles += mesh.face_size(f) - 2;
+    polygons += mesh.face_size(f) > 3;
+  }
+  if (triangles > std::numeric_limits<std::uint32_t>::max()) fail("<output>", 0, "too many triangles for STL (more than 2^32)");
+  if (polygons > 0) info.notes.push_back("split " + std::to_string(polygons) + " polygons into triangle fans for STL");
+  if (mesh.has_vertex_normals() || mesh.has_corner_normals())
+    info.notes.push_back("vertex and corner normals not written: STL has only facet normals");
+  if (mesh.has_vertex_colors() || mesh.has_face_colors()) info.notes.push_back("colours not written: STL has none");
+  if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to STL");
+
+  const bool face_normals = mesh.has_face_normals();
+  const auto prec = mesh.precision;
+  if (binary) {
+    out.reserve(out.size() + 84 + 50 * triangles);
+    std::string header = "binary STL written by shadetool";
+    header.resize(80, ' ');
+    out += header;
+    const std::uint32_t n = std::uint32_t(triangles);
+    const char b[4] = {char(n & 0xff), char((n >> 8) & 0xff), char((n >> 16) & 0xff), char((n >> 24) & 0xff)};
+    out.append(b, 4);
+  } else {
+    out += "solid shadetool\n";
+  }
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const std::uint32_t s = mesh.face_start[f], e = mesh.face_start[f + 1];
+    const Vec3d p0 = mesh.position(mesh.corner_vertex[s]);
+    for (std::uint32_t c = s + 1; c + 1 < e; ++c) {
+      const Vec3d p1 = mesh.position(mesh.corner_vertex[c]);
+      const Vec3d p2 = mesh.position(mesh.corner_vertex[c + 1]);
+      const Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(p0, p1, p2);
+      if (binary) {
+        for (const Vec3d* v : {&n, &p0, &p1, &p2}) {
+          put_float(out, float(v->x));
+          put_float(out, float(v->y));
+          put_float(out, float(v->z));
+        }
+        out.append(2, '\0');
+      } else {
+        auto vec = [&](const Vec3d& v) {
+          append_shortest(out, v.x, prec);
+          out += ' ';
+          append_shortest(out, v.y, prec);
+          out += ' ';
+          append_shortest(out, v.z, prec);
+          out += '\n';
+        };
+        out += "facet normal ";
+        vec(n);
+        out += "outer loop\n";
+        for (const Vec3d* v : {&p0, &p1, &p2}) {
+          out += "vertex ";
+          vec(*v);
+        }
+        out += "endloop\nendfacet\n";
+      }
+    }
+  }
+  if (!binary) out += "endsolid shadetool\n";
+}
+
+}  // namespace shadetool::io

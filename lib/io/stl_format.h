@@ -1,0 +1,29 @@
+// stl_format.h: STL reader and writer (ascii and binary).
+//
+// Reading: binary when the size is exactly 84 + 50 * (triangle count in the header); ascii when
+// the file starts with `solid` (several solids, and loops of more than 3 vertices, are kept);
+// any other file is refused, a binary file whose size disagrees with its count as truncated.
+// STL stores a triangle soup: corners with identical positions (equal as values; -0 equals 0,
+// NaN equals nothing) are merged into one vertex, in order of first appearance; the number merged
+// is ReadInfo::merged_vertices (and a note). Facet normals are kept as face normals unless all are
+// zero. Binary STL is float (Mesh::precision = Float); ascii follows the digit rule of OBJ.
+// Merging uses an open-addressing hash table in flat arrays (no per-vertex allocation).
+//
+// Writing: binary (default) or ascii; polygons are split into triangle fans (a note says how many
+// polygons); each facet normal is the face normal if the mesh has them, else the unit normal of
+// the triangle (cross product of its edges, (0,0,0) for a zero-area triangle). Vertex normals,
+// colours and texcoords have no STL form (notes). No vertices are split (split_vertices = 0).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "core/mesh.h"
+#include "io/mesh_io.h"
+
+namespace shadetool::io {
+
+Mesh read_stl(std::string_view bytes, const std::string& name, ReadInfo& info);
+void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info);
+
+}  // namespace shadetool::io

@@ -1,0 +1,90 @@
+// text_parse.h: the token-level parsing shared by the text readers (OBJ, PLY ascii, OFF, STL ascii).
+//
+// Numbers are parsed with fast_float (exact IEEE round-to-nearest, like strtod, without locale or
+// stream overhead). A token must end at whitespace or the end of the line: "1.5x" is malformed.
+// NaN and Inf ("nan", "inf", "infinity", any case) are accepted: `shadetool info` reports them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include <fast_float/fast_float.h>
+
+namespace shadetool::io {
+
+inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+inline bool is_space_or_newline(char c) { return is_space(c) || c == '\n'; }
+
+inline const char* skip_spaces(const char* p, const char* end) {
+  while (p < end && is_space(*p)) ++p;
+  return p;
+}
+
+// Parses a double starting at p (after optional spaces); on success advances p past the token.
+// Returns false for a malformed token (p is left at its start).
+inline bool parse_double(const char*& p, const char* end, double& value) {
+  const char* q = skip_spaces(p, end);
+  const char* start = q;
+  if (q < end && *q == '+') ++q;  // fast_float refuses a leading '+', strtod accepts it
+  auto r = fast_float::from_chars(q, end, value);
+  if (r.ec != std::errc() || (r.ptr < end && !is_space_or_newline(*r.ptr))) {
+    p = start;
+    return false;
+  }
+  p = r.ptr;
+  return true;
+}
+
+// Parses a (possibly signed) decimal integer; false if malformed or out of int64 range.
+inline bool parse_int64(const char*& p, const char* end, std::int64_t& value) {
+  const char* q = skip_spaces(p, end);
+  const char* start = q;
+  bool negative = false;
+  if (q < end && (*q == '-' || *q == '+')) negative = *q++ == '-';
+  if (q >= end || *q < '0' || *q > '9') {
+    p = start;
+    return false;
+  }
+  std::uint64_t v = 0;
+  while (q < end && *q >= '0' && *q <= '9') {
+    if (v > (std::uint64_t(1) << 62)) {  // far beyond any index or count we accept
+      p = start;
+      return false;
+    }
+    v = v * 10 + std::uint64_t(*q++ - '0');
+  }
+  value = negative ? -static_cast<std::int64_t>(v) : static_cast<std::int64_t>(v);
+  p = q;
+  return true;
+}
+
+// True when the decimal token [b, e) has more significant digits than float can carry (9, float's
+// max_digits10): text with more digits was written from double data and is kept in double.
+// Leading and trailing zeros of the mantissa do not count ("0.500000000000" has one digit).
+inline bool has_more_digits_than_float(const char* b, const char* e) {
+  if (e - b <= 10) return false;  // at most 9 digits plus a sign or a point: fast path
+  int counted = 0, significant = 0;
+  bool nonzero_seen = false;
+  for (const char* q = b; q < e; ++q) {
+    const char c = *q;
+    if (c == 'e' || c == 'E') break;
+    if (c < '0' || c > '9') continue;
+    if (c == '0' && !nonzero_seen) continue;
+    nonzero_seen = true;
+    ++counted;
+    if (c != '0') significant = counted;
+  }
+  return significant > 9;
+}
+
+// The token starting at p (for messages), at most 40 characters.
+inline std::string token_at(const char* p, const char* end) {
+  p = skip_spaces(p, end);
+  const char* q = p;
+  while (q < end && !is_space_or_newline(*q) && q - p < 40) ++q;
+  return std::string(p, q);
+}
+
+}  // namespace shadetool::io
