@@ -5,6 +5,8 @@
 // run serially are unaffected (the 2-thread row then measures the same serial code).
 #pragma once
 
+#include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,12 @@
 #include "normals/vertex_normals.h"
 
 namespace shadetool::bench {
+
+inline std::string fmt_g(const char* format, double x) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, format, x);
+  return buf;
+}
 
 inline const char* weighting_name(Weighting w) {
   switch (w) {
@@ -32,7 +40,8 @@ inline double ours_vertex_rows(const std::string& program, const BenchMesh& b, i
                                const std::vector<Weighting>& weightings, const std::vector<Precision>& precisions,
                                const std::vector<int>& threads) {
   double first = 0;
-  for (Weighting w : weightings)
+  for (Weighting w : weightings) {
+    std::vector<double> double_result;  // for the float rows: largest angle to the double result
     for (Precision p : precisions) {
       std::vector<double> first_result;
       for (int t : threads) {
@@ -44,10 +53,18 @@ inline double ours_vertex_rows(const std::string& program, const BenchMesh& b, i
         if (first_result.empty()) first_result = result.normals;
         else if (first_result != result.normals) row.note = "differs from the 1-thread result";
         if (result.fallback_vertices) row.note += (row.note.empty() ? "" : "; ") + std::to_string(result.fallback_vertices) + " fallback vertices";
+        if (p == Precision::Double && double_result.empty()) double_result = result.normals;
+        if (p == Precision::Float && double_result.size() == result.normals.size() && t == threads.front()) {
+          double worst = 0;
+          for (std::size_t v = 0; 3 * v < result.normals.size(); ++v)
+            if (!b.at_risk[v]) worst = std::max(worst, testing::angle_degrees(get3(result.normals, v), get3(double_result, v)));
+          row.note += (row.note.empty() ? "" : "; ") + fmt_g("max angle to double result %.3g deg", worst);
+        }
         print_row(b, row, time, angular_error(b, result.normals));
         if (first == 0) first = time.median_ms;
       }
     }
+  }
   return first;
 }
 

@@ -1,0 +1,338 @@
+#!/usr/bin/env python3
+"""report.py DIR: turns the CSVs that bench/run.sh wrote into DIR/results.md and
+DIR/error_vs_time.png (gnuplot). Standard library only.
+
+Inputs (any may be missing): kernels.csv, refinement.csv, read.csv (bench/compare programs),
+e2e.csv (hyperfine), memory.csv, machine.txt. Ratios are always taken between rows of one program
+run (same process, same mesh): an anchor's median over shadetool's area/double/1-thread median
+measured by the same program.
+"""
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+
+def read_csv(path):
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def num(x):
+    try:
+        return float(x)
+    except (TypeError, ValueError):
+        return float("nan")
+
+
+def fmt_ms(x):
+    x = num(x)
+    if math.isnan(x):
+        return "-"
+    return f"{x:.3g}" if x < 100 else f"{x:.0f}"
+
+
+def fmt_deg(x):
+    x = num(x)
+    if math.isnan(x):
+        return "-"
+    if x == 0:
+        return "0"
+    return f"{x:.3g}" if x >= 1e-3 else f"{x:.1e}"
+
+
+def fmt_ratio(x):
+    return "-" if x is None or math.isnan(x) else f"{x:.2f}x"
+
+
+def is_ours(r):
+    return r["method"].startswith("shadetool")
+
+
+def ref_row(rows, program, mesh, weighting="area"):
+    for r in rows:
+        if (r["program"] == program and r["mesh"] == mesh and is_ours(r) and r["method"].endswith("vertex_normals")
+                and r["weighting"] == weighting and r["precision"] == "double" and r["threads"] == "1"):
+            return r
+    return None
+
+
+def main_mesh(rows):
+    names = [r["mesh"] for r in rows if r["mesh"] != "sphere_10k_degenerate"]
+    return names[0] if names else None
+
+
+def kernel_table(rows, mesh):
+    """Our kernels (program 'ours') then every anchor with its ratio to our area kernel."""
+    out = ["| method | weighting | precision | threads | median ms | min ms | vs our area (same run) "
+           "| mean deg | p99 deg | max deg | NaN/zero |",
+           "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+    ours_ref = ref_row(rows, "ours", mesh)
+    for r in rows:
+        if r["mesh"] != mesh:
+            continue
+        if is_ours(r) and r["program"] != "ours":
+            continue  # the anchors' in-process reference rows are used for ratios, not repeated
+        ref = ours_ref if r["program"] == "ours" else ref_row(rows, r["program"], mesh)
+        ratio = num(r["median_ms"]) / num(ref["median_ms"]) if ref else float("nan")
+        out.append(f"| {r['method']} | {r['weighting']} | {r['precision']} | {r['threads']} | {fmt_ms(r['median_ms'])} "
+                   f"| {fmt_ms(r['min_ms'])} | {fmt_ratio(ratio)} | {fmt_deg(r['mean_deg'])} | {fmt_deg(r['p99_deg'])} "
+                   f"| {fmt_deg(r['max_deg'])} | {r['nan_or_zero']} |")
+    return out
+
+
+def degenerate_table(rows):
+    mesh = "sphere_10k_degenerate"
+    sel = [r for r in rows if r["mesh"] == mesh and r["method"].find("face_normals") < 0
+           and not (is_ours(r) and r["program"] != "ours")]
+    if not sel:
+        return []
+    out = ["| method | weighting | precision | threads | NaN or zero normals | vertices without a normal | note |",
+           "|---|---|---|---|---:|---:|---|"]
+    seen = set()
+    for r in sel:
+        key = (r["method"], r["weighting"], r["precision"])
+        if key in seen:
+            continue
+        seen.add(key)
+        out.append(f"| {r['method']} | {r['weighting']} | {r['precision']} | {r['threads']} | {r['nan_or_zero']} "
+                   f"| {r['missing']} | {r['note']} |")
+    return out
+
+
+def find(rows, **kw):
+    for r in rows:
+        if all(r.get(k) == v for k, v in kw.items()):
+            return r
+    return None
+
+
+def targets(rows, read_rows, e2e_rows, mem_rows, mesh):
+    """One line per goal of the benchmark issue; OBJ/PLY reading is measured on read.csv's mesh."""
+    res = []
+
+    def ratio(program, anchor_method, anchor_precision=None, weighting="area"):
+        ref = ref_row(rows, program, mesh, weighting)
+        kw = dict(program=program, mesh=mesh, method=anchor_method, threads="1")
+        if anchor_precision:
+            kw["precision"] = anchor_precision
+        a = find(rows, **kw)
+        if not ref or not a:
+            return None
+        return num(a["median_ms"]) / num(ref["median_ms"])
+
+    def add(name, value, goal, higher_is_better=True, unit="x"):
+        if value is None or math.isnan(value):
+            res.append(f"| {name} | not measured | {goal} | - |")
+            return
+        ok = value >= goal if higher_is_better else value <= goal
+        res.append(f"| {name} | {value:.2f}{unit} | {'>=' if higher_is_better else '<='} {goal}{unit} "
+                   f"| {'met' if ok else 'MISSED'} |")
+
+    add("area vertex normals vs OpenMesh update_normals (float traits)", ratio("openmesh", "OpenMesh update_normals", "float"), 5)
+    add("area vertex normals vs OpenMesh update_normals (double traits)", ratio("openmesh", "OpenMesh update_normals", "double"), 5)
+    add("area vertex normals vs Open3D ComputeVertexNormals", ratio("open3d", "Open3D ComputeVertexNormals"), 2)
+    area = find(rows, program="ours", mesh=mesh, method="shadetool vertex_normals", weighting="area", precision="double", threads="1")
+    for w in ("angle", "max"):
+        r = find(rows, program="ours", mesh=mesh, method="shadetool vertex_normals", weighting=w, precision="double", threads="1")
+        add(f"{w} time / area time (double, 1 thread)", num(r["median_ms"]) / num(area["median_ms"]) if r and area else None,
+            2, higher_is_better=False)
+    for w in ("area", "angle"):
+        r1 = find(rows, program="ours", mesh=mesh, method="shadetool vertex_normals", weighting=w, precision="double", threads="1")
+        r2 = find(rows, program="ours", mesh=mesh, method="shadetool vertex_normals", weighting=w, precision="double", threads="2")
+        add(f"2-thread speed-up, {w} (double)", num(r1["median_ms"]) / num(r2["median_ms"]) if r1 and r2 else None, 1.7)
+    if read_rows:
+        rm = main_mesh(read_rows)
+        ours_obj = find(read_rows, mesh=rm, method="shadetool read_mesh", weighting="obj", threads="1")
+        om_obj = find(read_rows, mesh=rm, method="OpenMesh IO::read_mesh", weighting="obj")
+        ours_ply = find(read_rows, mesh=rm, method="shadetool read_mesh", weighting="ply", threads="1")
+        fr = find(read_rows, mesh=rm, method="fread", weighting="ply")
+        add("OBJ read vs OpenMesh IO::read_mesh", num(om_obj["median_ms"]) / num(ours_obj["median_ms"]) if ours_obj and om_obj else None, 5)
+        add("binary PLY read time / fread time", num(ours_ply["median_ms"]) / num(fr["median_ms"]) if ours_ply and fr else None,
+            3, higher_is_better=False)
+    if e2e_rows:
+        ours = next((r for r in e2e_rows if r["command"].startswith("shadetool normals OBJ->PLY (area)")), None)
+        asm = next((r for r in e2e_rows if r["command"] == "assimp export -gsn OBJ->PLY"), None)
+        add("end to end OBJ->binary PLY vs assimp export -gsn", num(asm["mean"]) / num(ours["mean"]) if ours and asm else None, 5)
+    else:
+        add("end to end OBJ->binary PLY vs assimp export -gsn", None, 5)
+    if mem_rows:
+        add(f"peak memory / arrays held ({mem_rows[0]['mesh']})", num(mem_rows[0]["ratio"]), 2, higher_is_better=False)
+    else:
+        add("peak memory / arrays held (4M mesh)", None, 2, higher_is_better=False)
+    return [f"| target ({mesh}, medians, one run) | measured | goal | |", "|---|---:|---:|---|"] + res
+
+
+def refinement_tables(rows):
+    if not rows:
+        return [], []
+    # mean error by (surface, kind, weighting, precision) -> {size: (triangles, mean)}
+    data = {}
+    f32 = []
+    rows = [r for r in rows if r["method"] == "shadetool vertex_normals"]
+    for r in rows:
+        surface, size, kind = r["mesh"].split("_")
+        data.setdefault((surface, kind, r["weighting"], r["precision"]), {})[size] = (num(r["triangles"]), num(r["mean_deg"]), num(r["max_deg"]))
+        if r["precision"] == "float":
+            d = find(rows, mesh=r["mesh"], weighting=r["weighting"], precision="double")
+            note = r["note"]
+            worst = note.split("max angle to double result ")[1].split(" deg")[0] if "max angle to double result" in note else "nan"
+            if d:
+                f32.append((r["mesh"], r["weighting"], abs(num(r["mean_deg"]) - num(d["mean_deg"])),
+                            abs(num(r["max_deg"]) - num(d["max_deg"])), num(worst)))
+    sizes = ["10k", "1M", "4M"]
+    out = ["| surface | kind | weighting | mean deg 10k | mean deg 1M | mean deg 4M | order 10k->1M | order 1M->4M |",
+           "|---|---|---|---:|---:|---:|---:|---:|"]
+    for (surface, kind, w, p), d in sorted(data.items()):
+        if p != "double":
+            continue
+        cells = [fmt_deg(d[s][1]) if s in d else "-" for s in sizes]
+
+        def order(a, b):
+            if a not in d or b not in d or d[a][1] <= 0 or d[b][1] <= 0:
+                return "-"
+            # error ~ h^p with h ~ triangles^(-1/2)
+            return f"{-2 * math.log(d[b][1] / d[a][1]) / math.log(d[b][0] / d[a][0]):.2f}"
+        out.append(f"| {surface} | {kind} | {w} | {' | '.join(cells)} | {order('10k', '1M')} | {order('1M', '4M')} |")
+    worst_mean = max(f32, key=lambda x: x[2]) if f32 else None
+    worst_angle = max(f32, key=lambda x: (x[4] if not math.isnan(x[4]) else -1)) if f32 else None
+    f32_lines = []
+    if f32:
+        f32_lines.append(f"- float vs double, over {len(f32)} (mesh, weighting) pairs: largest difference of mean error "
+                         f"{worst_mean[2]:.2e} deg ({worst_mean[0]}, {worst_mean[1]}); largest difference of max error "
+                         f"{max(x[3] for x in f32):.2e} deg; largest angle between a float and a double vertex normal "
+                         f"{worst_angle[4]:.2e} deg ({worst_angle[0]}, {worst_angle[1]}). Goal: within 1e-3 deg: "
+                         f"{'met' if max(max(x[2], x[3]) for x in f32) <= 1e-3 else 'MISSED'}.")
+    return out, f32_lines
+
+
+def read_table(rows):
+    if not rows:
+        return []
+    out = ["| reader | format | threads | median ms | min ms | vs fread / vs OpenMesh |", "|---|---|---|---:|---:|---:|"]
+    for r in rows:
+        ref = None
+        if r["method"] != "fread":
+            if r["weighting"] == "ply":
+                fr = find(rows, mesh=r["mesh"], method="fread")
+                ref = f"{num(r['median_ms']) / num(fr['median_ms']):.1f}x fread" if fr else "-"
+            om = find(rows, mesh=r["mesh"], method="OpenMesh IO::read_mesh", weighting=r["weighting"])
+            if om and r["method"] != om["method"]:
+                ref = (ref + ", " if ref else "") + f"{num(om['median_ms']) / num(r['median_ms']):.1f}x faster than OpenMesh"
+        out.append(f"| {r['method']} | {r['weighting']} | {r['threads']} | {fmt_ms(r['median_ms'])} | {fmt_ms(r['min_ms'])} | {ref or '-'} |")
+    return out
+
+
+def e2e_table(rows):
+    if not rows:
+        return []
+    ref = next((r for r in rows if r["command"].startswith("shadetool normals OBJ->PLY (area)")), None)
+    out = ["| command | mean s | stddev s | median s | vs shadetool OBJ->PLY (area) |", "|---|---:|---:|---:|---:|"]
+    for r in rows:
+        ratio = num(r["mean"]) / num(ref["mean"]) if ref else float("nan")
+        out.append(f"| {r['command']} | {num(r['mean']):.3f} | {num(r['stddev']):.3f} | {num(r['median']):.3f} | {fmt_ratio(ratio)} |")
+    return out
+
+
+def plot(rows, mesh, outdir):
+    """error_vs_time.png: mean angular error against median time, one point per method."""
+    if not shutil.which("gnuplot") or not mesh:
+        return None
+    dat = os.path.join(outdir, "error_vs_time.dat")
+    pts = []
+    for r in rows:
+        if r["mesh"] != mesh or r["threads"] != "1" or math.isnan(num(r["mean_deg"])):
+            continue
+        if is_ours(r) and r["program"] != "ours":
+            continue
+        label = (r["method"].replace("shadetool vertex_normals", "ours").replace("OpenMesh ", "OM ")
+                 .replace("Open3D ComputeVertexNormals", "Open3D").replace("CGAL PMP::compute_vertex_normals", "CGAL")
+                 .replace("assimp GenSmoothNormals", "assimp"))
+        label = f"{label} {r['weighting']} {'f32' if r['precision'] == 'float' else 'f64'}"
+        group = 0 if is_ours(r) else 1
+        pts.append((num(r["median_ms"]), max(num(r["mean_deg"]), 1e-14), label, group))
+    if not pts:
+        return None
+    with open(dat, "w") as f:
+        for t, e, label, g in pts:
+            f.write(f'{t} {e} "{label}" {g}\n')
+    png = os.path.join(outdir, "error_vs_time.png")
+    script = f"""
+set terminal pngcairo size 1100,700 font ",10"
+set output "{png}"
+set title "Vertex normals on {mesh}: mean angular error vs median time (1 thread)"
+set xlabel "median time per call [ms] (log)"
+set ylabel "mean angular error to the analytic normal [deg] (log)"
+set logscale xy
+set grid
+set key top right
+set format y "10^{{%L}}"
+plot "{dat}" using 1:($4==0?$2:1/0) with points pt 7 ps 1.5 lc rgb "#1f77b4" title "shadetool", \\
+     "{dat}" using 1:($4==1?$2:1/0) with points pt 5 ps 1.5 lc rgb "#d62728" title "anchors", \\
+     "{dat}" using 1:2:3 with labels offset char 1,0.6 left font ",8" notitle
+"""
+    try:
+        subprocess.run(["gnuplot"], input=script, text=True, check=True, capture_output=True)
+    except (subprocess.CalledProcessError, OSError) as e:
+        print(f"report.py: gnuplot failed: {getattr(e, 'stderr', e)}", file=sys.stderr)
+        return None
+    os.remove(dat)
+    return png
+
+
+def main():
+    d = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "results")
+    kernels = read_csv(os.path.join(d, "kernels.csv"))
+    refinement = read_csv(os.path.join(d, "refinement.csv"))
+    reads = read_csv(os.path.join(d, "read.csv"))
+    e2e = read_csv(os.path.join(d, "e2e.csv"))
+    mem = read_csv(os.path.join(d, "memory.csv"))
+    machine = open(os.path.join(d, "machine.txt")).read().strip() if os.path.exists(os.path.join(d, "machine.txt")) else ""
+    mesh = main_mesh(kernels)
+    png = plot(kernels, mesh, d)
+    md = ["# shadetool benchmark results", "",
+          "Made by `bench/run.sh` (`bench/report.py`); the CSV files beside this one hold every number.", "",
+          "```", machine, "```", ""]
+    md += ["## Targets", ""] + targets(kernels, reads, e2e, mem, mesh) + [""]
+    md += [f"## Vertex normals on {mesh} (kernels; same mesh in one process; IO excluded)", "",
+           "Ratios are to shadetool's area-weighted double kernel at 1 thread timed by the same program in the same "
+           "run (>1x: slower than ours). Error: angle to the analytic normal over all vertices.", ""]
+    md += kernel_table(kernels, mesh) + [""]
+    if png:
+        md += [f"![mean angular error against time]({os.path.basename(png)})", ""]
+    deg = degenerate_table(kernels)
+    if deg:
+        md += ["## Degenerate input (sphere_10k_degenerate)", "",
+               "The 10k irregular sphere plus 100 each of: faces with a repeated index, faces with two coincident "
+               "vertices, collinear faces, isolated vertices (900 vertices at risk). Counted over all vertices.", ""]
+        md += deg + [""]
+    ref, f32 = refinement_tables(refinement)
+    if ref:
+        md += ["## Error under refinement (shadetool, double)", "",
+               "Order p from mean error ~ h^p with h ~ triangles^(-1/2).", ""] + ref + [""] + f32 + [""]
+    rt = read_table(reads)
+    if rt:
+        md += [f"## Reading {main_mesh(reads)} (file in page cache)", ""] + rt + [""]
+    et = e2e_table(e2e)
+    if et:
+        e2e_txt = os.path.join(d, "e2e.txt")
+        inp = [l for l in open(e2e_txt).read().splitlines() if l.startswith("input:")] if os.path.exists(e2e_txt) else []
+        md += ["## End to end (hyperfine)", ""] + inp + [""] + et + [""]
+    if mem:
+        m = mem[0]
+        md += ["## Peak memory", "",
+               f"`shadetool normals {m['mesh']} --weight area`: peak RSS {num(m['peak_rss_bytes']) / 2**20:.0f} MiB; "
+               f"arrays it must hold (positions 24 V + faces 16 F + 4 + vertex normals 24 V, V = {m['vertices']}, "
+               f"F = {m['triangles']}) {num(m['array_bytes']) / 2**20:.0f} MiB: ratio {num(m['ratio']):.2f} "
+               f"(file {num(m['file_bytes']) / 2**20:.0f} MiB, wall {m['wall']}).", ""]
+    with open(os.path.join(d, "results.md"), "w") as f:
+        f.write("\n".join(md))
+    print(os.path.join(d, "results.md"))
+
+
+if __name__ == "__main__":
+    main()
