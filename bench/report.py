@@ -239,48 +239,47 @@ def e2e_table(rows):
 
 
 def plot(rows, mesh, outdir):
-    """error_vs_time.png: mean angular error against median time, one point per method."""
+    """error_vs_time.png: mean angular error against median time, one point (and legend entry) per
+    method at 1 thread; shadetool as circles, the anchors as squares."""
     if not shutil.which("gnuplot") or not mesh:
         return None
-    dat = os.path.join(outdir, "error_vs_time.dat")
     pts = []
     for r in rows:
         if r["mesh"] != mesh or r["threads"] != "1" or math.isnan(num(r["mean_deg"])):
             continue
         if is_ours(r) and r["program"] != "ours":
             continue
-        label = (r["method"].replace("shadetool vertex_normals", "ours").replace("OpenMesh ", "OM ")
-                 .replace("Open3D ComputeVertexNormals", "Open3D").replace("CGAL PMP::compute_vertex_normals", "CGAL")
-                 .replace("assimp GenSmoothNormals", "assimp"))
+        label = (r["method"].replace("shadetool vertex_normals", "shadetool").replace("Open3D ComputeVertexNormals", "Open3D")
+                 .replace("CGAL PMP::compute_vertex_normals", "CGAL").replace("assimp GenSmoothNormals", "assimp"))
         label = f"{label} {r['weighting']} {'f32' if r['precision'] == 'float' else 'f64'}"
-        group = 0 if is_ours(r) else 1
-        pts.append((num(r["median_ms"]), max(num(r["mean_deg"]), 1e-14), label, group))
+        pts.append((num(r["median_ms"]), max(num(r["mean_deg"]), 1e-14), label, is_ours(r)))
     if not pts:
         return None
-    with open(dat, "w") as f:
-        for t, e, label, g in pts:
-            f.write(f'{t} {e} "{label}" {g}\n')
     png = os.path.join(outdir, "error_vs_time.png")
+    colors = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"]
+    plots, data = [], []
+    for i, (t, e, label, ours) in enumerate(pts):
+        plots.append(f"'-' using 1:2 with points pt {7 if ours else 5} ps 1.8 lc rgb '{colors[i % len(colors)]}' "
+                     f"title '{label}'")
+        data.append(f"{t} {e}\ne")
     script = f"""
-set terminal pngcairo size 1100,700 font ",10"
+set terminal pngcairo size 1200,650 font ",10" noenhanced
 set output "{png}"
-set title "Vertex normals on {mesh}: mean angular error vs median time (1 thread)"
-set xlabel "median time per call [ms] (log)"
-set ylabel "mean angular error to the analytic normal [deg] (log)"
+set title "Vertex normals on {mesh}: mean angular error to the analytic normal vs median time, 1 thread"
+set xlabel "median time per call [ms] (log scale)"
+set ylabel "mean angular error [deg] (log scale)"
 set logscale xy
 set grid
-set key top right
-set format y "10^{{%L}}"
-plot "{dat}" using 1:($4==0?$2:1/0) with points pt 7 ps 1.5 lc rgb "#1f77b4" title "shadetool", \\
-     "{dat}" using 1:($4==1?$2:1/0) with points pt 5 ps 1.5 lc rgb "#d62728" title "anchors", \\
-     "{dat}" using 1:2:3 with labels offset char 1,0.6 left font ",8" notitle
+set key outside right top box
+set format y "1e%L"
+plot {", ".join(plots)}
+{chr(10).join(data)}
 """
     try:
         subprocess.run(["gnuplot"], input=script, text=True, check=True, capture_output=True)
     except (subprocess.CalledProcessError, OSError) as e:
         print(f"report.py: gnuplot failed: {getattr(e, 'stderr', e)}", file=sys.stderr)
         return None
-    os.remove(dat)
     return png
 
 
