@@ -3,7 +3,11 @@
 //
 // Timing: one untimed warm-up run, then `repeats` timed runs (std::chrono::steady_clock); each run
 // is preceded by an untimed `reset` (clears the previous output so that no library can reuse it).
-// Reported: the median and the minimum, in milliseconds. IO is never inside the timed region.
+// Reported: the median and the minimum wall time, and the median CPU time of the whole process
+// (CLOCK_PROCESS_CPUTIME_ID, all threads), in milliseconds. On a shared, loaded machine the CPU
+// time of a 1-thread row is the more stable figure (time-slicing does not add to it); wall time is
+// what the targets use. IO is never inside the timed region. `warmup` = false skips the warm-up run
+// (for anchors that take tens of seconds per call).
 //
 // Error: angle between computed and exact normal per vertex, atan2(|a x b|, a.b) in degrees
 // (accurate for tiny angles). mean / p99 / max over the vertices that are not `at_risk` (degenerate
@@ -13,13 +17,14 @@
 //
 // CSV columns (header from csv_header()):
 //   program,mesh,vertices,triangles,method,weighting,precision,threads,repeats,median_ms,min_ms,
-//   mean_deg,p99_deg,max_deg,nan_or_zero,missing,note
+//   median_cpu_ms,mean_deg,p99_deg,max_deg,nan_or_zero,missing,note
 #pragma once
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -78,26 +83,41 @@ inline BenchMesh load_bench_mesh(const std::string& name) {
 }
 
 struct Timing {
-  double median_ms = 0, min_ms = 0;
+  double median_ms = 0, min_ms = 0, median_cpu_ms = 0;
   int repeats = 0;
 };
 
+inline double process_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
+}
+
+inline double median_of(std::vector<double> x) {
+  std::sort(x.begin(), x.end());
+  return x.size() % 2 ? x[x.size() / 2] : 0.5 * (x[x.size() / 2 - 1] + x[x.size() / 2]);
+}
+
 template <class Reset, class Run>
-Timing time_median(int repeats, Reset&& reset, Run&& run) {
-  reset();
-  run();  // warm-up: page faults, caches, lazily built structures
-  std::vector<double> ms;
+Timing time_median(int repeats, Reset&& reset, Run&& run, bool warmup = true) {
+  if (warmup) {
+    reset();
+    run();  // warm-up: page faults, caches, lazily built structures
+  }
+  std::vector<double> ms, cpu;
   for (int i = 0; i < repeats; ++i) {
     reset();
+    const double c0 = process_cpu_ms();
     const auto t0 = std::chrono::steady_clock::now();
     run();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    cpu.push_back(process_cpu_ms() - c0);
   }
-  std::sort(ms.begin(), ms.end());
   Timing t;
   t.repeats = repeats;
-  t.min_ms = ms.front();
-  t.median_ms = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
+  t.min_ms = *std::min_element(ms.begin(), ms.end());
+  t.median_ms = median_of(ms);
+  t.median_cpu_ms = median_of(cpu);
   return t;
 }
 
@@ -149,7 +169,7 @@ inline bool has_repeated_index(const Mesh& m, std::size_t f) {
 
 inline const char* csv_header() {
   return "program,mesh,vertices,triangles,method,weighting,precision,threads,repeats,median_ms,min_ms,"
-         "mean_deg,p99_deg,max_deg,nan_or_zero,missing,note";
+         "median_cpu_ms,mean_deg,p99_deg,max_deg,nan_or_zero,missing,note";
 }
 
 struct Row {
@@ -158,9 +178,9 @@ struct Row {
 };
 
 inline void print_row(const BenchMesh& b, const Row& r, const Timing& t, const ErrorStats& e) {
-  std::printf("%s,%s,%zu,%zu,%s,%s,%s,%d,%d,%.4f,%.4f,%.6g,%.6g,%.6g,%zu,%zu,%s\n", r.program.c_str(), b.name.c_str(),
+  std::printf("%s,%s,%zu,%zu,%s,%s,%s,%d,%d,%.4f,%.4f,%.4f,%.6g,%.6g,%.6g,%zu,%zu,%s\n", r.program.c_str(), b.name.c_str(),
               b.am.mesh.num_vertices(), b.am.mesh.num_faces(), r.method.c_str(), r.weighting.c_str(),
-              r.precision.c_str(), r.threads, t.repeats, t.median_ms, t.min_ms, e.mean_deg, e.p99_deg, e.max_deg,
+              r.precision.c_str(), r.threads, t.repeats, t.median_ms, t.min_ms, t.median_cpu_ms, e.mean_deg, e.p99_deg, e.max_deg,
               e.nan_or_zero, e.missing, r.note.c_str());
   std::fflush(stdout);
 }
