@@ -234,18 +234,23 @@ def read_table(rows):
     return out
 
 
-def e2e_table(rows):
+def e2e_table(rows, acc):
     if not rows:
         return []
+    acc = {a["command"]: a for a in acc}
     ref = next((r for r in rows if r["command"].startswith("shadetool normals OBJ->PLY (area)")), None)
-    out = ["| command | median s | mean s | stddev s | CPU s (user+sys) | vs shadetool OBJ->PLY (area), wall | same, CPU |",
-           "|---|---:|---:|---:|---:|---:|---:|"]
+    out = ["| command | median s | mean s | stddev s | CPU s (user+sys) | vs shadetool OBJ->PLY (area), wall | same, CPU "
+           "| output: vertices | mean deg | p99 deg | max deg | NaN/zero |",
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     cpu = lambda r: num(r["user"]) + num(r["system"])
     for r in rows:
         ratio = num(r["median"]) / num(ref["median"]) if ref else float("nan")
         cratio = cpu(r) / cpu(ref) if ref else float("nan")
+        a = acc.get(r["command"])
+        tail = (f"{a['vertices']} | {fmt_deg(a['mean_deg'])} | {fmt_deg(a['p99_deg'])} | {fmt_deg(a['max_deg'])} | {a['nan_or_zero']}"
+                if a else "- | - | - | - | -")
         out.append(f"| {r['command']} | {num(r['median']):.3f} | {num(r['mean']):.3f} | {num(r['stddev']):.3f} | {cpu(r):.3f} "
-                   f"| {fmt_ratio(ratio)} | {fmt_ratio(cratio)} |")
+                   f"| {fmt_ratio(ratio)} | {fmt_ratio(cratio)} | {tail} |")
     return out
 
 
@@ -327,7 +332,7 @@ def main():
     rt = read_table(reads)
     if rt:
         md += [f"## Reading {main_mesh(reads)} (file in page cache)", ""] + rt + [""]
-    et = e2e_table(e2e)
+    et = e2e_table(e2e, read_csv(os.path.join(d, "e2e_accuracy.csv")))
     if et:
         e2e_txt = os.path.join(d, "e2e.txt")
         inp = [l for l in open(e2e_txt).read().splitlines() if l.startswith("input:")] if os.path.exists(e2e_txt) else []

@@ -68,6 +68,7 @@ targets="shadetool_bench_generate bench_compare_ours bench_compare_openmesh"
 for t in cgal open3d assimp read; do
   grep -q "bench_compare_$t skipped" "$build/bench-cmake.log" || targets="$targets bench_compare_$t"
 done
+grep -q "bench_compare_read skipped" "$build/bench-cmake.log" || targets="$targets bench_check_sphere_normals"
 log "building $targets shadetool_cli"
 cmake --build "$build" -j"$jobs" --target $targets >"$build/bench-build.log" 2>&1 || { tail -40 "$build/bench-build.log" >&2; exit 1; }
 # The CLI separately: a missing subcommand or link error skips the end-to-end part, not the rest.
@@ -138,24 +139,31 @@ trap cleanup EXIT
 runs=$([ $quick = 1 ] && echo 3 || echo 5)
 cmds=()
 names=()
+outputs=()  # the file each command writes, checked for accuracy afterwards
 # shadetool: 1 warm-up + $runs runs; the anchors (seconds per run at 1M): no warm-up (the input is
 # in the page cache already), 3 runs. hyperfine's own median, mean and user+sys CPU are kept.
 anchor_runs=3
 if [ -n "$cli" ]; then
   cmds+=("$cli normals $in.obj -o $tmp/ours_obj.ply --weight area")
   names+=("shadetool normals OBJ->PLY (area)")
+  outputs+=("$tmp/ours_obj.ply")
   cmds+=("$cli normals $in.obj -o $tmp/ours_obj_angle.ply")
   names+=("shadetool normals OBJ->PLY (angle, default)")
+  outputs+=("$tmp/ours_obj_angle.ply")
   cmds+=("$cli normals $in.ply -o $tmp/ours_ply.ply --weight area")
   names+=("shadetool normals PLY->PLY (area)")
+  outputs+=("$tmp/ours_ply.ply")
 fi
 if command -v assimp >/dev/null; then
   cmds+=("assimp export $in.obj $tmp/assimp_obj.ply -fplyb -gsn")
   names+=("assimp export -gsn OBJ->PLY")
+  outputs+=("$tmp/assimp_obj.ply")
   cmds+=("assimp export $in.obj $tmp/assimp_obj_jiv.ply -fplyb -gsn -jiv")
   names+=("assimp export -gsn -jiv OBJ->PLY")
+  outputs+=("$tmp/assimp_obj_jiv.ply")
   cmds+=("assimp export $in.ply $tmp/assimp_ply.ply -fplyb -gsn")
   names+=("assimp export -gsn PLY->PLY")
+  outputs+=("$tmp/assimp_ply.ply")
 fi
 if command -v meshlabserver >/dev/null && command -v Xvfb >/dev/null; then
   # meshlabserver needs an OpenGL context even without a window: a virtual X server (Mesa), on a
@@ -168,7 +176,7 @@ if command -v meshlabserver >/dev/null && command -v Xvfb >/dev/null; then
 <!DOCTYPE FilterScript>
 <FilterScript>
  <filter name="Re-Compute Vertex Normals">
-  <Param type="RichEnum" value="2" name="weightMode" enum_val0="None (avg)" enum_val1="By Angle" enum_val2="By Area" enum_val3="As defined by G. Thurmer and C. A. Wuthrich" enum_cardinality="4"/>
+  <Param type="RichEnum" value="1" name="weightMode" enum_val0="Simple Average" enum_val1="By Area" enum_val2="By Angle" enum_val3="As defined by N. Max" enum_cardinality="4"/>
  </filter>
 </FilterScript>
 EOF
@@ -177,11 +185,12 @@ EOF
     # assertion `(numTriangles +numVertices) == numVerticesPlusFaces+extraTriangles`), even one triangle.
     cmds+=("env DISPLAY=$display meshlabserver -i $in.ply -o $tmp/meshlab_ply.ply -m vn -s $tmp/normals.mlx")
     names+=("meshlabserver Re-Compute Vertex Normals (area) PLY->PLY")
+    outputs+=("$tmp/meshlab_ply.ply")
   else
     log "meshlabserver did not run under Xvfb: its rows are skipped"; tail -5 "$tmp/meshlab.log" >&2
   fi
 fi
-rm -f "$out/e2e.csv" "$out/e2e.txt" "$out/e2e.json"
+rm -f "$out/e2e.csv" "$out/e2e.txt" "$out/e2e.json" "$out/e2e_accuracy.csv"
 if [ ${#cmds[@]} -gt 0 ]; then
   log "end to end: ${#cmds[@]} commands"
   for i in "${!cmds[@]}"; do
@@ -197,6 +206,14 @@ if [ ${#cmds[@]} -gt 0 ]; then
     fi
   done
   echo "input: sphere_${e2e_size}_irregular ($(stat -c %s "$in.obj") bytes OBJ, $(stat -c %s "$in.ply") bytes binary PLY)" >>"$out/e2e.txt"
+  # Accuracy of what each command wrote (vertices on the unit sphere: exact normal = position).
+  if [ -x "$bin/bench_check_sphere_normals" ]; then
+    echo "command,file,vertices,mean_deg,p99_deg,max_deg,nan_or_zero,no_normals" >"$out/e2e_accuracy.csv"
+    for i in "${!cmds[@]}"; do
+      [ -s "${outputs[$i]}" ] || continue
+      "$bin/bench_check_sphere_normals" "${outputs[$i]}" 2>/dev/null | tail -n +2 | sed "s|^$tmp/|${names[$i]},|" >>"$out/e2e_accuracy.csv" || true
+    done
+  fi
 fi
 if [ -n "$cli" ]; then
   log "peak memory on sphere_${mem_size}_irregular"
