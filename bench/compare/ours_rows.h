@@ -1,8 +1,9 @@
 // ours_rows.h: shadetool's own kernels as rows of a comparison table, so that every anchor program
 // times our kernels on the same mesh in the same process run as the anchor (ratios from one run).
 //
-// Threads: tbb::global_control caps TBB's worker count for the duration of the row; kernels that
-// run serially are unaffected (the 2-thread row then measures the same serial code).
+// Threads: each row runs inside a tbb::task_arena of `threads` slots, so that the kernels see that
+// concurrency (tbb::this_task_arena::max_concurrency(); tbb::global_control would cap the workers
+// but leave a kernel believing it has all cores, and running its parallel code path on one).
 #pragma once
 
 #include <algorithm>
@@ -10,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include "harness.h"
 #include "normals/face_normals.h"
@@ -45,10 +46,10 @@ inline double ours_vertex_rows(const std::string& program, const BenchMesh& b, i
     for (Precision p : precisions) {
       std::vector<double> first_result;
       for (int t : threads) {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(t));
+        tbb::task_arena arena(t);
         VertexNormals result;
         const Timing time = time_median(repeats_for(b, repeats), [&] { result = VertexNormals{}; },
-                                        [&] { result = vertex_normals(b.am.mesh, w, p); });
+                                        [&] { arena.execute([&] { result = vertex_normals(b.am.mesh, w, p); }); });
         Row row{program, "shadetool vertex_normals", weighting_name(w), p == Precision::Double ? "double" : "float", "", t};
         if (first_result.empty()) first_result = result.normals;
         else if (first_result != result.normals) row.note = "differs from the 1-thread result";
@@ -71,10 +72,10 @@ inline double ours_vertex_rows(const std::string& program, const BenchMesh& b, i
 // shadetool::face_normals (no error against vertex truth: reported as timing only).
 inline void ours_face_rows(const std::string& program, const BenchMesh& b, int repeats, const std::vector<int>& threads) {
   for (int t : threads) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(t));
+    tbb::task_arena arena(t);
     std::vector<double> fn;
     const Timing time = time_median(repeats_for(b, repeats), [&] { fn.clear(); fn.shrink_to_fit(); },
-                                    [&] { fn = face_normals(b.am.mesh, Precision::Double); });
+                                    [&] { arena.execute([&] { fn = face_normals(b.am.mesh, Precision::Double); }); });
     print_row(b, Row{program, "shadetool face_normals", "face", "double", "", t}, time, ErrorStats{});
   }
 }

@@ -14,7 +14,7 @@
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include "harness.h"
 #include "io/mesh_io.h"
@@ -37,8 +37,9 @@ void run(const BenchMesh& b, const Options& o, const std::string& dir) {
     const std::string format = path == obj ? "obj" : "ply";
     std::unique_ptr<Mesh> ours;
     for (int t : o.threads) {
-      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(t));
-      const Timing time = time_median(reps, [&] { ours.reset(); }, [&] { ours = std::make_unique<Mesh>(read_mesh(path)); });
+      tbb::task_arena arena(t);
+      const Timing time = time_median(reps, [&] { ours.reset(); },
+                                      [&] { arena.execute([&] { ours = std::make_unique<Mesh>(read_mesh(path)); }); });
       std::string note = std::to_string(ours->num_vertices()) + " vertices read";
       print_row(b, Row{"read", "shadetool read_mesh", format, "file", note, t}, time, ErrorStats{});
     }
