@@ -1,5 +1,5 @@
 // ours.cpp: bench_compare_ours, shadetool's vertex normals in every weighting, both precisions,
-// 1 and 2 threads (tbb::global_control), on the meshes named with --mesh; with `--refinement`,
+// 1 and 2 threads (tbb::task_arena), on the meshes named with --mesh; with `--refinement`,
 // one row per weighting and precision at 1 thread on every surface, regular and irregular, at
 // 10k, 1M and 4M (the error order under refinement).
 #include <cstdio>
