@@ -12,7 +12,9 @@
 // importer: counted as `missing`.
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -35,33 +37,37 @@ std::string obj_text(const Mesh& m) {
   return std::string(buf.data(), buf.size());
 }
 
-void run(const BenchMesh& b, const Options& o) {
+Case assimp_case(const BenchMesh& b) {
   const Mesh& in = b.am.mesh;
-  Assimp::Importer importer;
+  auto importer = std::make_shared<Assimp::Importer>();
   const std::string text = obj_text(in);
-  const aiScene* scene = importer.ReadFileFromMemory(text.data(), text.size(), 0, "obj");
-  if (!scene || scene->mNumMeshes != 1) throw std::runtime_error(std::string("assimp import failed: ") + importer.GetErrorString());
+  const aiScene* scene = importer->ReadFileFromMemory(text.data(), text.size(), 0, "obj");
+  if (!scene || scene->mNumMeshes != 1) throw std::runtime_error(std::string("assimp import failed: ") + importer->GetErrorString());
   aiMesh* am = scene->mMeshes[0];
   std::string note;
-  if (am->mNumFaces != in.num_faces()) note = fmt::format("assimp kept {} of {} faces", am->mNumFaces, in.num_faces());
-  const Timing t = time_median(
-      repeats_for(b, o.repeats), [&] { delete[] am->mNormals; am->mNormals = nullptr; },
-      [&] { importer.ApplyPostProcessing(aiProcess_GenSmoothNormals); });
-  if (!am->mNormals) throw std::runtime_error("assimp produced no normals");
-  // Our vertex -> assimp vertex at its first corner (faces keep their order through the importer).
-  std::vector<std::int64_t> first(in.num_vertices(), -1);
-  if (am->mNumFaces == in.num_faces())
-    for (std::size_t f = 0; f < in.num_faces(); ++f)
-      for (unsigned k = 0; k < 3 && k < am->mFaces[f].mNumIndices; ++k)
-        if (first[in.corner_vertex[3 * f + k]] < 0) first[in.corner_vertex[3 * f + k]] = am->mFaces[f].mIndices[k];
-  const ErrorStats e = angular_error(b, [&](std::size_t v, Vec3d& n) {
-    if (first[v] < 0) return false;
-    const aiVector3D& x = am->mNormals[first[v]];
-    n = {double(x.x), double(x.y), double(x.z)};
-    return true;
-  });
-  print_row(b, Row{"assimp", "assimp GenSmoothNormals", "uniform", "float",
-                   note + (note.empty() ? "" : "; ") + fmt::format("{} unjoined vertices", am->mNumVertices), 1}, t, e);
+  if (am->mNumFaces != in.num_faces()) note = fmt::format("assimp kept {} of {} faces; ", am->mNumFaces, in.num_faces());
+  note += fmt::format("{} unjoined vertices", am->mNumVertices);
+  Case c;
+  c.row = Row{"assimp", "assimp GenSmoothNormals", "uniform", "float", note, 1};
+  c.reset = [importer, am] { delete[] am->mNormals; am->mNormals = nullptr; };
+  c.run = [importer] { importer->ApplyPostProcessing(aiProcess_GenSmoothNormals); };
+  c.error = [importer, am, &b] {
+    const Mesh& in = b.am.mesh;
+    if (!am->mNormals) throw std::runtime_error("assimp produced no normals");
+    // Our vertex -> assimp vertex at its first corner (faces keep their order through the importer).
+    std::vector<std::int64_t> first(in.num_vertices(), -1);
+    if (am->mNumFaces == in.num_faces())
+      for (std::size_t f = 0; f < in.num_faces(); ++f)
+        for (unsigned k = 0; k < 3 && k < am->mFaces[f].mNumIndices; ++k)
+          if (first[in.corner_vertex[3 * f + k]] < 0) first[in.corner_vertex[3 * f + k]] = am->mFaces[f].mIndices[k];
+    return angular_error(b, [&](std::size_t v, Vec3d& n) {
+      if (first[v] < 0) return false;
+      const aiVector3D& x = am->mNormals[first[v]];
+      n = {double(x.x), double(x.y), double(x.z)};
+      return true;
+    });
+  };
+  return c;
 }
 
 }  // namespace
@@ -73,8 +79,10 @@ int main(int argc, char** argv) {
     if (o.header) std::puts(csv_header());
     for (const std::string& name : o.meshes) {
       const BenchMesh b = load_bench_mesh(name);
-      ours_vertex_rows("assimp", b, o.repeats, {Weighting::Area, Weighting::Uniform}, {Precision::Double, Precision::Float}, {1});
-      run(b, o);
+      std::vector<Case> cases = ours_vertex_cases("assimp", b, {Weighting::Area, Weighting::Uniform},
+                                                  {Precision::Double, Precision::Float}, {1});
+      cases.push_back(assimp_case(b));
+      run_cases(b, cases, repeats_for(b, o.repeats));
     }
     return 0;
   } catch (const std::exception& e) {

@@ -185,6 +185,49 @@ inline void print_row(const BenchMesh& b, const Row& r, const Timing& t, const E
   std::fflush(stdout);
 }
 
+// A timed case: one row of the table. Cases of one program are timed round-robin (run_cases), so
+// that a change of machine load during the run hits every case alike and the ratios between rows
+// stay meaningful on a shared machine.
+struct Case {
+  Row row;
+  std::function<void()> reset = [] {}, run;
+  std::function<ErrorStats()> error;  // after timing, from what the last run left; empty: no error
+  std::function<std::string()> note;  // after timing, appended to row.note
+  int max_repeats = 1 << 30;          // e.g. 1 for an anchor that takes tens of seconds per call
+  bool warmup = true;
+  std::vector<double> ms, cpu_ms;
+};
+
+// One untimed warm-up of every case (unless warmup = false), then `repeats` rounds, each running
+// every case once in list order (reset untimed before each run). Prints one row per case.
+inline void run_cases(const BenchMesh& b, std::vector<Case>& cases, int repeats) {
+  for (Case& c : cases)
+    if (c.warmup) { c.reset(); c.run(); }
+  for (int r = 0; r < repeats; ++r)
+    for (Case& c : cases) {
+      if (r >= c.max_repeats) continue;
+      c.reset();
+      const double c0 = process_cpu_ms();
+      const auto t0 = std::chrono::steady_clock::now();
+      c.run();
+      c.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      c.cpu_ms.push_back(process_cpu_ms() - c0);
+    }
+  for (Case& c : cases) {
+    Timing t;
+    t.repeats = int(c.ms.size());
+    t.min_ms = *std::min_element(c.ms.begin(), c.ms.end());
+    t.median_ms = median_of(c.ms);
+    t.median_cpu_ms = median_of(c.cpu_ms);
+    Row row = c.row;
+    if (c.note) {
+      const std::string extra = c.note();
+      if (!extra.empty()) row.note += (row.note.empty() ? "" : "; ") + extra;
+    }
+    print_row(b, row, t, c.error ? c.error() : ErrorStats{});
+  }
+}
+
 // Fewer repeats on large meshes keeps the full run within its time budget.
 inline int repeats_for(const BenchMesh& b, int requested) {
   return b.am.mesh.num_faces() > 3000000 ? std::max(1, std::min(requested, 3)) : requested;

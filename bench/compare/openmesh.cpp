@@ -8,7 +8,9 @@
 // aborts on a face with a repeated index, which is therefore left out; both are counted in `note`.
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
@@ -46,28 +48,35 @@ std::string build(const Mesh& in, M& m) {
 }
 
 template <class M>
-void run(const BenchMesh& b, const Options& o, const char* precision) {
-  M m;
-  const std::string note = build(b.am.mesh, m);
-  m.request_face_normals();
-  m.request_vertex_normals();
-  auto zero_normals = [&] {
-    for (auto v : m.vertices()) m.set_normal(v, typename M::Normal(0, 0, 0));
+std::vector<Case> openmesh_cases(const BenchMesh& b, const char* precision) {
+  auto m = std::make_shared<M>();
+  const std::string note = build(b.am.mesh, *m);
+  m->request_face_normals();
+  m->request_vertex_normals();
+  auto zero_normals = [m] {
+    for (auto v : m->vertices()) m->set_normal(v, typename M::Normal(0, 0, 0));
   };
-  auto error = [&] {
+  auto error = [m, &b] {
     return angular_error(b, [&](std::size_t v, Vec3d& n) {
-      const auto& x = m.normal(typename M::VertexHandle(int(v)));
+      const auto& x = m->normal(typename M::VertexHandle(int(v)));
       n = {double(x[0]), double(x[1]), double(x[2])};
       return true;
     });
   };
-  const int reps = repeats_for(b, o.repeats);
-  Timing t = time_median(reps, [] {}, [&] { m.update_face_normals(); });
-  print_row(b, Row{"openmesh", "OpenMesh update_face_normals", "face", precision, note, 1}, t, ErrorStats{});
-  t = time_median(reps, zero_normals, [&] { m.update_vertex_normals(); });
-  print_row(b, Row{"openmesh", "OpenMesh update_vertex_normals", "uniform", precision, note + (note.empty() ? "" : "; ") + "face normals precomputed", 1}, t, error());
-  t = time_median(reps, zero_normals, [&] { m.update_normals(); });
-  print_row(b, Row{"openmesh", "OpenMesh update_normals", "uniform", precision, note, 1}, t, error());
+  std::vector<Case> cases(3);
+  cases[0].row = Row{"openmesh", "OpenMesh update_face_normals", "face", precision, note, 1};
+  cases[0].run = [m] { m->update_face_normals(); };
+  // update_vertex_normals uses the face normals already stored (the previous case left them).
+  cases[1].row = Row{"openmesh", "OpenMesh update_vertex_normals", "uniform", precision,
+                     note + (note.empty() ? "" : "; ") + "face normals precomputed", 1};
+  cases[1].reset = zero_normals;
+  cases[1].run = [m] { m->update_vertex_normals(); };
+  cases[1].error = error;
+  cases[2].row = Row{"openmesh", "OpenMesh update_normals", "uniform", precision, note, 1};
+  cases[2].reset = zero_normals;
+  cases[2].run = [m] { m->update_normals(); };
+  cases[2].error = error;
+  return cases;
 }
 
 }  // namespace
@@ -78,10 +87,15 @@ int main(int argc, char** argv) {
     if (o.header) std::puts(csv_header());
     for (const std::string& name : o.meshes) {
       const BenchMesh b = load_bench_mesh(name);
-      ours_vertex_rows("openmesh", b, o.repeats, {Weighting::Area, Weighting::Uniform}, {Precision::Double, Precision::Float}, {1});
-      ours_face_rows("openmesh", b, o.repeats, {1});
-      run<TriMeshF>(b, o, "float");
-      run<TriMeshD>(b, o, "double");
+      std::vector<Case> cases = ours_vertex_cases("openmesh", b, {Weighting::Area, Weighting::Uniform},
+                                                  {Precision::Double, Precision::Float}, {1});
+      append(cases, ours_face_cases("openmesh", b, {1}));
+      append(cases, openmesh_cases<TriMeshF>(b, "float"));
+      append(cases, openmesh_cases<TriMeshD>(b, "double"));
+      // Each case's error is read after all rounds: the update_normals case runs last per mesh
+      // type, so the vertex normals it is scored on are its own (update_vertex_normals gives the
+      // same ones from the same face normals).
+      run_cases(b, cases, repeats_for(b, o.repeats));
     }
     return 0;
   } catch (const std::exception& e) {

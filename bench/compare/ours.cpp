@@ -31,12 +31,14 @@ int main(int argc, char** argv) {
     const std::vector<Weighting> all = {Weighting::Uniform, Weighting::Area, Weighting::Angle, Weighting::Max};
     for (const std::string& name : o.meshes) {
       const BenchMesh b = load_bench_mesh(name);
+      std::vector<Case> cases;
       if (refinement) {
-        ours_vertex_rows("ours_refinement", b, o.repeats, all, {Precision::Double, Precision::Float}, {1});
+        cases = ours_vertex_cases("ours_refinement", b, all, {Precision::Double, Precision::Float}, {1});
       } else {
-        ours_vertex_rows("ours", b, o.repeats, all, {Precision::Double, Precision::Float}, o.threads);
-        ours_face_rows("ours", b, o.repeats, o.threads);
+        cases = ours_vertex_cases("ours", b, all, {Precision::Double, Precision::Float}, o.threads);
+        append(cases, ours_face_cases("ours", b, o.threads));
       }
+      run_cases(b, cases, repeats_for(b, o.repeats));
     }
     return 0;
   } catch (const std::exception& e) {

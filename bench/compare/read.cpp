@@ -5,7 +5,8 @@
 // The mesh (default sphere_1M_irregular) is written once by bench/generate's writers into --dir
 // (OBJ with %.9g, binary little-endian PLY with float positions), then every reader runs on the
 // same file, warm in the page cache (a first untimed read), so the rows compare parsing, not disk.
-// Each run builds a fresh mesh object; its destruction is outside the timed region.
+// Each run builds a fresh mesh object; its destruction is outside the timed region. The readers
+// are timed round-robin (harness.h run_cases).
 // Rows: method = "shadetool read_mesh", "OpenMesh IO::read_mesh", "fread"; weighting = the format.
 #include <cstdio>
 #include <exception>
@@ -32,40 +33,50 @@ void run(const BenchMesh& b, const Options& o, const std::string& dir) {
   const std::string obj = base + ".obj", ply = base + ".ply";
   write_obj(b.am.mesh, obj, false);
   write_binary_ply(b.am.mesh, ply, false);
-  const int reps = repeats_for(b, o.repeats);
+  std::vector<Case> cases;
   for (const std::string& path : {obj, ply}) {
     const std::string format = path == obj ? "obj" : "ply";
-    std::unique_ptr<Mesh> ours;
     for (int t : o.threads) {
-      tbb::task_arena arena(t);
-      const Timing time = time_median(reps, [&] { ours.reset(); },
-                                      [&] { arena.execute([&] { ours = std::make_unique<Mesh>(read_mesh(path)); }); });
-      std::string note = std::to_string(ours->num_vertices()) + " vertices read";
-      print_row(b, Row{"read", "shadetool read_mesh", format, "file", note, t}, time, ErrorStats{});
+      auto ours = std::make_shared<std::unique_ptr<Mesh>>();
+      auto arena = std::make_shared<tbb::task_arena>(t);
+      Case c;
+      c.row = Row{"read", "shadetool read_mesh", format, "file", "", t};
+      c.reset = [ours] { ours->reset(); };
+      c.run = [ours, arena, path] { arena->execute([&] { *ours = std::make_unique<Mesh>(read_mesh(path)); }); };
+      c.note = [ours] { return std::to_string((*ours)->num_vertices()) + " vertices read"; };
+      cases.push_back(std::move(c));
     }
-    std::unique_ptr<TriMeshF> om;
-    bool ok = true;
-    const Timing time = time_median(reps, [&] { om.reset(); }, [&] {
-      om = std::make_unique<TriMeshF>();
-      ok = OpenMesh::IO::read_mesh(*om, path) && ok;
-    });
-    print_row(b, Row{"read", "OpenMesh IO::read_mesh", format, "file",
-                     ok ? std::to_string(om->n_vertices()) + " vertices read" : "read_mesh failed", 1}, time, ErrorStats{});
+    auto om = std::make_shared<std::unique_ptr<TriMeshF>>();
+    auto ok = std::make_shared<bool>(true);
+    Case c;
+    c.row = Row{"read", "OpenMesh IO::read_mesh", format, "file", "", 1};
+    c.reset = [om] { om->reset(); };
+    c.run = [om, ok, path] {
+      *om = std::make_unique<TriMeshF>();
+      *ok = OpenMesh::IO::read_mesh(**om, path) && *ok;
+    };
+    c.note = [om, ok] { return *ok ? std::to_string((*om)->n_vertices()) + " vertices read" : "read_mesh failed"; };
+    cases.push_back(std::move(c));
     if (format == "ply") {
-      std::vector<char> bytes;
-      const Timing tf = time_median(reps, [&] { bytes = std::vector<char>(); }, [&] {
-        std::FILE* f = std::fopen(path.c_str(), "rb");
-        if (!f) throw std::runtime_error(path + ": cannot open");
-        std::fseek(f, 0, SEEK_END);
-        bytes.resize(std::size_t(std::ftell(f)));
-        std::fseek(f, 0, SEEK_SET);
-        const std::size_t n = std::fread(bytes.data(), 1, bytes.size(), f);
-        std::fclose(f);
-        if (n != bytes.size()) throw std::runtime_error(path + ": short read");
-      });
-      print_row(b, Row{"read", "fread", format, "file", std::to_string(bytes.size()) + " bytes", 1}, tf, ErrorStats{});
+      auto bytes = std::make_shared<std::vector<char>>();
+      Case f;
+      f.row = Row{"read", "fread", format, "file", "", 1};
+      f.reset = [bytes] { *bytes = std::vector<char>(); };
+      f.run = [bytes, path] {
+        std::FILE* file = std::fopen(path.c_str(), "rb");
+        if (!file) throw std::runtime_error(path + ": cannot open");
+        std::fseek(file, 0, SEEK_END);
+        bytes->resize(std::size_t(std::ftell(file)));
+        std::fseek(file, 0, SEEK_SET);
+        const std::size_t n = std::fread(bytes->data(), 1, bytes->size(), file);
+        std::fclose(file);
+        if (n != bytes->size()) throw std::runtime_error(path + ": short read");
+      };
+      f.note = [bytes] { return std::to_string(bytes->size()) + " bytes"; };
+      cases.push_back(std::move(f));
     }
   }
+  run_cases(b, cases, repeats_for(b, o.repeats));
   std::remove(obj.c_str());
   std::remove(ply.c_str());
 }
