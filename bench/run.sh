@@ -148,7 +148,7 @@ if [ -n "$cli" ]; then
   names+=("shadetool normals OBJ->PLY (area)")
   outputs+=("$tmp/ours_obj.ply")
   cmds+=("$cli normals $in.obj -o $tmp/ours_obj_angle.ply")
-  names+=("shadetool normals OBJ->PLY (angle, default)")
+  names+=("shadetool normals OBJ->PLY (angle = default)")
   outputs+=("$tmp/ours_obj_angle.ply")
   cmds+=("$cli normals $in.ply -o $tmp/ours_ply.ply --weight area")
   names+=("shadetool normals PLY->PLY (area)")
