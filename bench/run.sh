@@ -80,6 +80,8 @@ elif ! "$cli" --help 2>/dev/null | grep -q '^ *normals '; then
 fi
 bin="$build/bench"
 meshes="$build/meshes"
+# The generator's sorted edge flips must equal tests/support's map-based ones (same meshes).
+"$bin/shadetool_bench_generate" --self-check >&2 || { log "generator self-check failed"; exit 1; }
 mkdir -p "$meshes"
 
 # ---- 3. machine --------------------------------------------------------------------------------

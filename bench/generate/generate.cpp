@@ -8,6 +8,8 @@
 // DIR/NAME.normals.f64 (exact normals, #V by 3 little-endian doubles); NAME as bench_meshes.h.
 // --double writes double positions (float by default, as most real files are). --degenerate adds
 // sphere_10k_degenerate. Prints one line per mesh: name, vertices, triangles, seconds.
+// --self-check (alone): checks that random_edge_flips_sorted makes exactly the flips of
+// tests/support's random_edge_flips on the four 10k irregular surfaces; exit 1 if not.
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -19,8 +21,32 @@
 
 using namespace shadetool::bench;
 
+namespace {
+
+int self_check() {
+  using namespace shadetool::testing;
+  int failures = 0;
+  const char* names[] = {"sphere", "torus", "icosphere", "ellipsoid"};
+  for (int k = 0; k < 4; ++k) {
+    const AnalyticMesh base = k == 0 ? uv_sphere(100, 50, 0.3, 2) : k == 1 ? torus(100, 50, 1, 0.4, 0.3, 4)
+                            : k == 2 ? icosphere(5, 0.3, 6) : uv_ellipsoid(100, 50, 1.5, 1, 0.5, 0.3, 3);
+    AnalyticMesh by_map = base, by_sort = base;
+    random_edge_flips(by_map, 0.3, 7);
+    random_edge_flips_sorted(by_sort, 0.3, 7);
+    std::size_t changed = 0;
+    for (std::size_t c = 0; c < base.mesh.num_corners(); ++c) changed += by_map.mesh.corner_vertex[c] != base.mesh.corner_vertex[c];
+    const bool same = by_map.mesh.corner_vertex == by_sort.mesh.corner_vertex;
+    std::printf("self-check %-9s %s (%zu corners changed by the flips)\n", names[k], same ? "same flips" : "DIFFERENT FLIPS", changed);
+    failures += !same || changed == 0;
+  }
+  return failures ? 1 : 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   try {
+    if (argc == 2 && std::string(argv[1]) == "--self-check") return self_check();
     std::string out;
     std::vector<Surface> surfaces;
     std::vector<SizeClass> sizes;
