@@ -7,7 +7,9 @@
 #include <limits>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 #include "io/number_text.h"
+#include "io/split_face_colors.h"
 #include "io/text_parse.h"
 
 namespace shadetool::io {
@@ -22,9 +24,10 @@ std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* wha
   if (idx > 0 && static_cast<std::uint64_t>(idx) <= count) return static_cast<std::uint32_t>(idx - 1);
   if (idx < 0 && static_cast<std::uint64_t>(-idx) <= count) return static_cast<std::uint32_t>(std::int64_t(count) + idx);
   if (idx == 0) fail(name, line, std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
+  const std::string plural = std::string(what) == "vertex" ? "vertices" : std::string(what) + "s";
   fail(name, line,
-       std::string(what) + " index " + std::to_string(idx) + " out of range (" + std::to_string(count) + " " + what +
-           (count == 1 ? "" : "s") + " defined so far)");
+       std::string(what) + " index " + std::to_string(idx) + " out of range (" + std::to_string(count) + " " +
+           (count == 1 ? std::string(what) : plural) + " defined so far)");
 }
 
 }  // namespace
@@ -36,10 +39,11 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
   std::size_t line = 0;
   bool any_double = false;
 
-  // A rough guess (a `v` line is ~30 bytes) keeps reallocation low without trusting the file.
-  mesh.positions.reserve(bytes.size() / 40 * 3);
-  mesh.corner_vertex.reserve(bytes.size() / 16);
-  mesh.face_start.reserve(bytes.size() / 48 + 1);
+  // Capacity guessed from the file size, generously (untouched capacity costs address space,
+  // not memory): a `v` line is >= 24 bytes in practice, a triangle line about 12 per corner.
+  reserve_bulk(mesh.positions, bytes.size() / 24 * 3);
+  reserve_bulk(mesh.corner_vertex, bytes.size() / 8);
+  reserve_bulk(mesh.face_start, bytes.size() / 24 + 1);
 
   std::vector<double> normals;                 // vn pool, 3 per entry
   std::vector<double> tex;                     // vt pool, 3 per entry (missing components 0)
@@ -48,6 +52,7 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
   int color_channels = 0;                      // 3 or 4 once seen
   std::size_t colored_vertices = 0;
   std::vector<std::uint32_t> cn, ct;           // per corner, kNone where absent (allocated lazily)
+  bool have_cn = false, have_ct = false;
   std::size_t corners_with_normal = 0, corners_with_tex = 0;
   std::size_t skipped_lines = 0;
   std::string skipped_keyword;
@@ -128,15 +133,17 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
           }
           if (q < eol && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
           if (nn != kNone) {
-            if (cn.empty()) cn.assign(mesh.corner_vertex.size() - 1, kNone);
+            if (!have_cn) cn.assign(mesh.corner_vertex.size() - 1, kNone);
+            have_cn = true;
             ++corners_with_normal;
           }
-          if (!cn.empty()) cn.push_back(nn);
+          if (have_cn) cn.push_back(nn);
           if (t != kNone) {
-            if (ct.empty()) ct.assign(mesh.corner_vertex.size() - 1, kNone);
+            if (!have_ct) ct.assign(mesh.corner_vertex.size() - 1, kNone);
+            have_ct = true;
             ++corners_with_tex;
           }
-          if (!ct.empty()) ct.push_back(t);
+          if (have_ct) ct.push_back(t);
         }
         const std::size_t size = mesh.corner_vertex.size() - first_corner;
         if (size < 3)
@@ -193,33 +200,42 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
     info.notes.push_back("skipped " + std::to_string(skipped_lines) + " line" + (skipped_lines == 1 ? "" : "s") +
                          " with keywords shadetool does not use (first: '" + skipped_keyword + "')");
 
-  if (any_double) {
-    mesh.precision = ValuePrecision::Double;
-  } else {
-    mesh.precision = ValuePrecision::Float;
-    auto round_to_float = [](std::vector<double>& a) {
-      for (double& x : a) x = static_cast<double>(static_cast<float>(x));
-    };
-    round_to_float(mesh.positions);
-    round_to_float(mesh.corner_normals);
-    round_to_float(mesh.texcoords);
-  }
+  // Values are kept as parsed (the double nearest to the text), never rounded: precision is only
+  // the hint for the value type binary writers use.
+  mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
   return mesh;
 }
 
-void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
-  const ValuePrecision prec = mesh.precision;
+void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
+  // Face colours: OBJ holds colours per vertex only, so vertices are split until every corner's
+  // vertex carries its face's colour (split_face_colors.h). Faces and corners keep their order, so
+  // corner c of `mesh` is corner c of `input`: normals and texcoords stay indexed per corner.
+  std::size_t added = 0, unreferenced = 0;
+  Mesh split;
+  const bool must_split = input.has_face_colors();
+  if (must_split) {
+    split = split_face_colors(input, added, unreferenced);
+    info.notes.push_back("face colours written as vertex colours (v x y z r g b): " + std::to_string(added) +
+                         (added == 1 ? " vertex" : " vertices") + " added so that every face's corners carry its colour");
+    if (input.has_vertex_colors())
+      info.notes.push_back("vertex colours replaced by the face colours: OBJ holds one colour per vertex");
+    else if (unreferenced > 0)
+      info.notes.push_back(std::to_string(unreferenced) + (unreferenced == 1 ? " vertex" : " vertices") +
+                           " used by no face written white");
+  }
+  info.split_vertices = added;
+  const Mesh& mesh = must_split ? split : input;
   out.reserve(out.size() + mesh.num_vertices() * 40 + mesh.num_corners() * 10);
   out += "# written by shadetool\n";
   const std::size_t nv = mesh.num_vertices();
   const bool colors = mesh.has_vertex_colors() && mesh.vertex_colors.size() == nv * std::size_t(mesh.color_channels);
   for (std::size_t v = 0; v < nv; ++v) {
     out += "v ";
-    append_shortest(out, mesh.positions[3 * v], prec);
+    append_shortest(out, mesh.positions[3 * v]);
     out += ' ';
-    append_shortest(out, mesh.positions[3 * v + 1], prec);
+    append_shortest(out, mesh.positions[3 * v + 1]);
     out += ' ';
-    append_shortest(out, mesh.positions[3 * v + 2], prec);
+    append_shortest(out, mesh.positions[3 * v + 2]);
     if (colors) {
       for (int k = 0; k < mesh.color_channels; ++k) {
         out += ' ';
@@ -235,7 +251,7 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
       out += "vt";
       for (std::size_t k = 0; k < dims; ++k) {
         out += ' ';
-        append_shortest(out, mesh.texcoords[i + k], prec);
+        append_shortest(out, mesh.texcoords[i + k]);
       }
       out += '\n';
     }
@@ -243,24 +259,25 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
   // Which normals, and the vn index of each corner.
   enum class NormalSource { None, Corner, Vertex, Face } source = NormalSource::None;
   const std::vector<double>* pool = nullptr;
-  if (mesh.has_corner_normals()) {
+  // From `input`: split vertices share their original's vn line (index by the original vertex).
+  if (input.has_corner_normals()) {
     source = NormalSource::Corner;
-    pool = &mesh.corner_normals;
-  } else if (mesh.has_vertex_normals()) {
+    pool = &input.corner_normals;
+  } else if (input.has_vertex_normals()) {
     source = NormalSource::Vertex;
-    pool = &mesh.vertex_normals;
-  } else if (mesh.has_face_normals()) {
+    pool = &input.vertex_normals;
+  } else if (input.has_face_normals()) {
     source = NormalSource::Face;
-    pool = &mesh.face_normals;
+    pool = &input.face_normals;
   }
   if (pool) {
     for (std::size_t i = 0; i + 3 <= pool->size(); i += 3) {
       out += "vn ";
-      append_shortest(out, (*pool)[i], prec);
+      append_shortest(out, (*pool)[i]);
       out += ' ';
-      append_shortest(out, (*pool)[i + 1], prec);
+      append_shortest(out, (*pool)[i + 1]);
       out += ' ';
-      append_shortest(out, (*pool)[i + 2], prec);
+      append_shortest(out, (*pool)[i + 2]);
       out += '\n';
     }
   }
@@ -275,8 +292,8 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
         if (tex) append_uint(out, std::uint64_t(mesh.corner_texcoord_index[c]) + 1);
         if (source != NormalSource::None) {
           out += '/';
-          const std::uint64_t n = source == NormalSource::Corner   ? mesh.corner_normal_index[c]
-                                  : source == NormalSource::Vertex ? mesh.corner_vertex[c]
+          const std::uint64_t n = source == NormalSource::Corner   ? input.corner_normal_index[c]
+                                  : source == NormalSource::Vertex ? input.corner_vertex[c]
                                                                    : f;
           append_uint(out, n + 1);
         }
@@ -284,7 +301,6 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
     }
     out += '\n';
   }
-  if (mesh.has_face_colors()) info.notes.push_back("face colours not written: OBJ has no face colours");
 }
 
 }  // namespace shadetool::io
