@@ -8,7 +8,7 @@ src=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD_DIR:-$src/build-bench}
 args=()
 if [ "${1:-}" = "--quick" ]; then args=(--quick); fi
-cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSHADETOOL_BUILD_BENCH=ON -DSHADETOOL_BUILD_TESTS=OFF > /dev/null
+cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSHADETOOL_BUILD_BENCH=ON > /dev/null
 cmake --build "$build" -j2 --target bench_normals > /dev/null
 out=$src/bench/normals/results
 mkdir -p "$out"
