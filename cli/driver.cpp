@@ -46,6 +46,23 @@ void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh) {
 
 namespace {
 
+// A message or note as one printable line: bytes of the input quoted in it (a garbage token, a
+// keyword) may hold control characters or terminal escapes; they are shown as \xNN instead.
+std::string printable(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char ch : s) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (u < 0x20 || u == 0x7f) out += fmt::format("\\x{:02X}", unsigned(u));
+    else out += ch;
+  }
+  return out;
+}
+
+// JSON Lines: file contents quoted in a message need not be UTF-8; nlohmann's dump() would throw
+// on them, so invalid bytes are replaced (U+FFFD) instead.
+std::string dump_line(const nlohmann::json& j) { return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -173,7 +190,7 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       std::lock_guard<std::mutex> lock(out_mutex);
       progress.clear();
       if (!io.quiet)
-        for (auto& n : result.notes) fmt::print(stderr, "shadetool: {}: {}\n", input, n);
+        for (auto& n : result.notes) fmt::print(stderr, "shadetool: {}: {}\n", input, printable(n));
       if (io.stats) {
         std::string counts;
         for (auto it = result.stats.begin(); it != result.stats.end(); ++it)
@@ -184,7 +201,7 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       if (!result.text.empty() && !io.json) fmt::print("{}", result.text);
       if (io.json) {
         if (!result.notes.empty()) line["notes"] = result.notes;
-        fmt::print("{}\n", line.dump());
+        fmt::print("{}\n", dump_line(line));
         std::fflush(stdout);
       }
       progress.file_done(true);
@@ -193,11 +210,11 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       std::lock_guard<std::mutex> lock(out_mutex);
       failed.push_back(input);
       progress.clear();
-      fmt::print(stderr, "shadetool: {}\n", e.what());
+      fmt::print(stderr, "shadetool: {}\n", printable(e.what()));
       if (io.json) {
         line["status"] = "error";
         line["error"] = e.what();
-        fmt::print("{}\n", line.dump());
+        fmt::print("{}\n", dump_line(line));
         std::fflush(stdout);
       }
       progress.file_done(false);
