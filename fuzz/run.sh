@@ -7,7 +7,8 @@
 # and out-of-memory inputs to build-fuzz/artifacts/. Exit status 1 when any target found one.
 # Executions per target are printed at the end (and kept in build-fuzz/logs/TARGET.log).
 #
-# Environment: FUZZ_BUILD (default build-fuzz), FUZZ_JOBS (build parallelism, default 2),
+# Environment: FUZZ_BUILD (default build-fuzz), FUZZ_SOURCE_ROOT (tree whose lib/ is fuzzed,
+# default this checkout), FUZZ_JOBS (build parallelism, default 2),
 # FUZZ_MALLOC_MB (largest single allocation allowed, default 512: inputs are at most 1 MiB, so a
 # bigger allocation means a count was trusted), FUZZ_TIMEOUT (seconds for one input, default 10).
 set -uo pipefail
@@ -25,7 +26,7 @@ if ! command -v clang++ > /dev/null; then
   exit 1
 fi
 mkdir -p "$build"
-cmake -S "$root/fuzz" -B "$build" -DCMAKE_CXX_COMPILER=clang++ > "$build/cmake.log" 2>&1 ||
+cmake -S "$root/fuzz" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DSHADETOOL_ROOT="${FUZZ_SOURCE_ROOT:-$root}" > "$build/cmake.log" 2>&1 ||
   { cat "$build/cmake.log" >&2; exit 1; }
 cmake --build "$build" -j "${FUZZ_JOBS:-2}" > "$build/build.log" 2>&1 ||
   { tail -50 "$build/build.log" >&2; exit 1; }
