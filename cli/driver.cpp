@@ -153,6 +153,12 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
     if (writes_mesh) line["output"] = output;
     FileResult result;
     try {
+      // Writing over the input would lose it if anything failed later; the same file under another
+      // name (./a.obj, a link, --output-dir of the input's own folder) counts too.
+      std::error_code same_ec;
+      if (writes_mesh && input != "-" && output != "-" && fs::equivalent(input, output, same_ec))
+        throw shadetool::Error(shadetool::located(
+            input, 0, "the output " + output + " is the input file: refusing to overwrite the input"));
       show_stage(input, "reading");
       auto t0 = std::chrono::steady_clock::now();
       shadetool::ReadInfo read_info;
