@@ -186,6 +186,7 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
         shadetool::write_mesh(mesh, output, wo, &write_info);
         write_ms = ms_since(t0);
         if (write_info.split_vertices > 0) result.stats["split_vertices"] = write_info.split_vertices;
+        for (auto& n : write_info.notes) result.notes.push_back(n);  // what the format could not carry
       }
       result.stats["vertices"] = mesh.num_vertices();
       result.stats["faces"] = mesh.num_faces();

@@ -1,0 +1,119 @@
+// cmd_bake_lighting.cpp: `shadetool bake-lighting IN -o OUT --scene SCENE.json [...]`.
+// Parses options, reads the scene once, and per mesh calls lighting/bake_lighting.h; the equation,
+// spaces, skips and encodings all live in lib/lighting (see man/shadetool-bake-lighting.1).
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "command_registry.h"
+#include "core/error.h"
+#include "core/validate.h"
+#include "driver.h"
+#include "lighting/bake_lighting.h"
+#include "lighting/encode_color.h"
+#include "lighting/read_scene.h"
+
+namespace shadetool_cli {
+namespace {
+
+struct BakeLightingOptions {
+  std::string scene;
+  std::string model;  // "" = the scene's
+  std::string space = "auto";
+  std::string per = "vertex";
+  bool hdr = false;
+  bool srgb = false;
+};
+
+shadetool::ShadingModel parse_model(const std::string& s) {
+  if (s == "lambert") return shadetool::ShadingModel::Lambert;
+  if (s == "phong") return shadetool::ShadingModel::Phong;
+  return shadetool::ShadingModel::BlinnPhong;
+}
+
+shadetool::ShadingSpace parse_space(const std::string& s) {
+  if (s == "world") return shadetool::ShadingSpace::World;
+  if (s == "camera") return shadetool::ShadingSpace::Camera;
+  if (s == "object") return shadetool::ShadingSpace::Object;
+  return shadetool::ShadingSpace::Auto;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string s;
+  for (const auto& x : items) s += (s.empty() ? "" : ",") + x;
+  return s.empty() ? "none" : s;
+}
+
+RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
+  static IoOptions io;
+  static BakeLightingOptions opt;
+  auto* sub = app.add_subcommand(
+      "bake-lighting",
+      "Bake lit colours into a mesh: OpenGL 2.1 fixed-function lighting (lambert, phong, blinn-phong; ambient, "
+      "directional, point and spot lights) per vertex or per face");
+  add_io_options(*sub, io, /*writes_mesh=*/true);
+  sub->add_option("--scene", opt.scene, "Scene file (JSON): material, lights, camera, world_from_object")
+      ->required()
+      ->type_name("SCENE.json");
+  sub->add_option("--model", opt.model, "Shading model, overriding the scene's (default: the scene's, else blinn-phong)")
+      ->check(CLI::IsMember({"lambert", "phong", "blinn-phong"}));
+  sub->add_option("--space", opt.space,
+                  "Space the equation is evaluated in; all give the same colours (default auto: the cheapest)")
+      ->check(CLI::IsMember({"world", "camera", "object", "auto"}));
+  sub->add_option("--per", opt.per, "vertex: one colour per vertex (Gouraud); face: one per face (flat) (default vertex)")
+      ->check(CLI::IsMember({"vertex", "face"}));
+  sub->add_flag("--hdr", opt.hdr, "Write float colours, unclamped (default: 8-bit, round(255 * clamp(c, 0, 1)))");
+  sub->add_flag("--srgb", opt.srgb, "Encode colours with the sRGB curve (default: linear)");
+
+  return [] {
+    // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
+    const shadetool::Scene scene = shadetool::read_scene(opt.scene);
+    shadetool::ShadeOptions shade;
+    if (!opt.model.empty()) shade.model = parse_model(opt.model);
+    shade.space = parse_space(opt.space);
+    const auto frequency = opt.per == "face" ? shadetool::ShadingFrequency::PerFace : shadetool::ShadingFrequency::PerVertex;
+    shadetool::ColorEncoding encoding;
+    encoding.hdr = opt.hdr;
+    encoding.srgb = opt.srgb;
+
+    return run_mesh_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+      shadetool::require_finite_positions(mesh, input);
+      if (frequency == shadetool::ShadingFrequency::PerFace) {
+        shadetool::require_faces(mesh, input);
+      } else if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0) {
+        throw shadetool::Error(shadetool::located(input, 0, "no vertex normals and no faces to compute them from"));
+      }
+      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade);
+      const shadetool::ShadeReport& rep = baked.report;
+
+      if (frequency == shadetool::ShadingFrequency::PerVertex && baked.normals_source.rfind("computed", 0) == 0)
+        r.notes.push_back("vertex normals " + baked.normals_source);
+      if (baked.normal_fallback_vertices > 0)
+        r.notes.push_back(std::to_string(baked.normal_fallback_vertices) +
+                          " vertices have no valid face: their normal is the normals module's fallback");
+      if (rep.counters.zero_normals > 0)
+        r.notes.push_back(std::to_string(rep.counters.zero_normals) +
+                          (frequency == shadetool::ShadingFrequency::PerFace ? " faces" : " vertices") +
+                          " have a zero or non-finite normal: lit by the emission and ambient terms only");
+      if (rep.counters.at_light > 0)
+        r.notes.push_back(std::to_string(rep.counters.at_light) +
+                          " vertex-light pairs have the point at the light's position: that light adds nothing there");
+      if (rep.plan.view && !scene.has_camera)
+        r.notes.push_back("the scene has no camera: the eye is at the world origin (OpenGL's default)");
+
+      shadetool::store_baked_colors(mesh, shadetool::encode_colors(baked.rgb, encoding), frequency, encoding.hdr);
+
+      r.stats["model"] = shadetool::shading_model_name(rep.model);
+      r.stats["space"] = shadetool::shading_space_name(rep.space);
+      r.stats["skipped"] = join(rep.skipped);
+      r.stats["lights"] = rep.plan.lights.size();
+      r.stats["dark_lights_dropped"] = rep.plan.dark_lights_dropped;
+      r.stats["vertex_light_evaluations"] = rep.counters.vertex_light_evaluations;
+      r.stats["back_facing_skips"] = rep.counters.back_facing;
+      r.stats["outside_cone_skips"] = rep.counters.outside_cone;
+    }, true);
+  };
+});
+
+}  // namespace
+}  // namespace shadetool_cli

@@ -1,0 +1,46 @@
+// bake_lighting.h: per-vertex (Gouraud) or per-face (flat) lit colours of a mesh.
+//
+// Inputs:  mesh       positions #V by 3 (object space), faces; normals if it has them
+//          scene      lighting/scene.h; scene.world_from_object places the mesh in the world
+//          frequency  PerVertex: one colour per vertex, from its vertex normal at its position.
+//                     PerFace: one colour per face, from its face normal at its centroid (the
+//                     mean of its corners' positions).
+//          options    model, space, skips, threads (lighting/shade_points.h)
+// Output:  rgb        #V by 3 (PerVertex) or #F by 3 (PerFace) linear doubles, unclamped
+//          report     what shade_points did, and where the normals came from
+//
+// Normals, PerVertex: the mesh's vertex normals; else its corner normals when every corner of a
+// vertex carries the same normal; else computed with normals/vertex_normals.h (angle-weighted,
+// double), and `normals_source` says why. PerFace: the mesh's face normals, else
+// normals/face_normals.h. A vertex or face whose normal is zero (isolated vertex, degenerate face)
+// gets only the emission and ambient terms, and is counted (report.counters.zero_normals).
+//
+// store_baked_colors puts encoded colours into the mesh: vertex_colors (PerVertex) or face_colors
+// (PerFace), the other array cleared, 3 channels, colors_are_float = hdr. Positions and faces are
+// not touched.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "lighting/shade_points.h"
+
+namespace shadetool {
+
+enum class ShadingFrequency { PerVertex, PerFace };
+
+struct BakeResult {
+  std::vector<double> rgb;
+  ShadeReport report;
+  std::string normals_source;          // e.g. "input vertex normals", "computed (angle-weighted)"
+  std::size_t normal_fallback_vertices = 0;  // computed normals that needed the fallback
+};
+
+BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency,
+                         const ShadeOptions& options = {});
+
+void store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr);
+
+}  // namespace shadetool

@@ -1,0 +1,28 @@
+// encode_color.cpp: see encode_color.h.
+#include "lighting/encode_color.h"
+
+#include <cmath>
+
+namespace shadetool {
+
+double srgb_encode(double c) {
+  if (!(c > 0.0031308)) return 12.92 * c;  // also NaN -> NaN and negative -> negative (linear part)
+  return 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+
+std::uint8_t quantize_8bit(double c) {
+  if (!(c > 0)) return 0;  // negative, zero, NaN
+  if (c >= 1) return 255;
+  return static_cast<std::uint8_t>(std::lround(255.0 * c));
+}
+
+std::vector<float> encode_colors(const std::vector<double>& rgb, const ColorEncoding& encoding) {
+  std::vector<float> out(rgb.size());
+  for (std::size_t i = 0; i < rgb.size(); ++i) {
+    const double c = encoding.srgb ? srgb_encode(rgb[i]) : rgb[i];
+    out[i] = encoding.hdr ? static_cast<float>(c) : static_cast<float>(quantize_8bit(c) / 255.0);
+  }
+  return out;
+}
+
+}  // namespace shadetool

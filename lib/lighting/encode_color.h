@@ -1,0 +1,29 @@
+// encode_color.h: linear colours -> what is stored: sRGB encoding and 8-bit quantisation.
+//
+//   srgb_encode(c)   IEC 61966-2-1: 12.92 c for c <= 0.0031308, else 1.055 c^(1/2.4) - 0.055
+//                    (applied to unclamped values too, for HDR: the curve continues above 1)
+//   quantize_8bit(c) round(255 * clamp(c, 0, 1)); NaN -> 0
+//
+// encode_colors: #P by 3 linear doubles -> #P by 3 floats.
+//   hdr:   the (optionally sRGB-encoded) values, unclamped, as float
+//   8-bit: quantize_8bit of the (optionally sRGB-encoded) value, stored as k / 255 in float so
+//          that a writer's round(255 * c) gives back exactly k (255 * float(k/255) is within
+//          2^-16 of k).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace shadetool {
+
+double srgb_encode(double linear);
+std::uint8_t quantize_8bit(double c);
+
+struct ColorEncoding {
+  bool hdr = false;   // float output, unclamped
+  bool srgb = false;  // encode with the sRGB curve first
+};
+
+std::vector<float> encode_colors(const std::vector<double>& linear_rgb, const ColorEncoding& encoding);
+
+}  // namespace shadetool

@@ -1,0 +1,51 @@
+// lighting_plan.cpp: see lighting_plan.h.
+#include "lighting/lighting_plan.h"
+
+namespace shadetool {
+
+LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOptions& skips) {
+  const Material& m = scene.material;
+  LightingPlan plan;
+  plan.model = model;
+
+  Vec3d ambient = scene.global_ambient;
+  for (const Light& L : scene.lights)
+    if (L.type == LightType::Ambient) ambient += L.ambient;
+  plan.base = m.emission + mul(m.ambient, ambient);
+
+  // Specular at all? Decided on the model and material first, then on the lights that remain.
+  const bool model_has_specular = model != ShadingModel::Lambert;
+  bool specular_possible = model_has_specular && !(skips.specular && is_zero(m.specular));
+
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& L = scene.lights[i];
+    if (L.type == LightType::Ambient) continue;
+    const bool dark = is_zero(mul(m.ambient, L.ambient)) && is_zero(mul(m.diffuse, L.diffuse)) &&
+                      (!specular_possible || is_zero(mul(m.specular, L.specular)));
+    if (dark && skips.dark_lights) {
+      ++plan.dark_lights_dropped;
+      continue;
+    }
+    plan.lights.push_back(i);
+    if (L.type != LightType::Directional) ++plan.positional_lights;
+  }
+
+  bool any_light_specular = false;
+  for (std::size_t i : plan.lights)
+    if (!is_zero(mul(m.specular, scene.lights[i].specular))) any_light_specular = true;
+
+  if (!model_has_specular) {
+    plan.specular_skip_reason = "model is lambert";
+  } else if (skips.specular && is_zero(m.specular)) {
+    plan.specular_skip_reason = "material specular is zero";
+  } else if (skips.specular && !any_light_specular) {
+    plan.specular_skip_reason = plan.lights.empty() ? "no lights" : "every light's specular is zero";
+  } else {
+    plan.specular = true;
+  }
+  plan.view = plan.specular || scene.two_sided || !skips.view_vector;
+  plan.positions = plan.view || plan.positional_lights > 0 || !skips.unused_positions;
+  return plan;
+}
+
+}  // namespace shadetool

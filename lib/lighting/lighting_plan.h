@@ -1,0 +1,58 @@
+// lighting_plan.h: which terms of the lighting equation a scene needs, decided once per mesh.
+//
+// Inputs:  scene  (lighting/scene.h), model (the scene's, or the CLI's --model), skip options
+// Output:  LightingPlan: the lights worth evaluating per point, the constant part of the colour,
+//          and whether the specular term, the view vector V and the point positions are needed.
+//
+// What is skipped, and why the result cannot change (each is a term that is exactly zero):
+//   dark lights     a light whose every term is zero against this material (ka*a_i = 0,
+//                   kd*d_i = 0 and ks*s_i = 0 or no specular): it adds att*spot*0 = 0.
+//   specular        model lambert (no specular term), material ks = 0, or every kept light's
+//                   specular s_i times ks is zero.
+//   view vector     V = normalize(eye - p) is used only by the specular term and by two_sided.
+//   positions       p is used only by V and by point/spot lights (directional lights need only n).
+// Ambient lights and the global ambient are folded into `base` (emission + ka * ambient), which
+// does not depend on the point.
+//
+// SkipOptions turn each skip off (everything computed, zeros added) so that bench/lighting can
+// time what each saves and tests can check that skipping changes no bit of the result.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "lighting/scene.h"
+
+namespace shadetool {
+
+struct SkipOptions {
+  bool dark_lights = true;     // drop lights with a zero product with the material
+  bool specular = true;        // no specular work when it is zero
+  bool view_vector = true;     // no V when nothing reads it
+  bool early_tests = true;     // back-facing and spot-cone tests before attenuation, pow, specular
+  bool identity_transform = true;  // an exactly-identity object-to-space map is not applied
+  bool unused_positions = true;    // points are not transformed when nothing reads them
+
+  static SkipOptions none() { return {false, false, false, false, false, false}; }
+};
+
+struct LightingPlan {
+  ShadingModel model = ShadingModel::BlinnPhong;
+  std::vector<std::size_t> lights;  // indices into scene.lights: directional, point, spot, kept
+  std::size_t dark_lights_dropped = 0;
+  Vec3d base{0, 0, 0};              // emission + ka * (global ambient + sum of ambient lights)
+  bool specular = false;            // evaluate the specular term at all
+  std::string specular_skip_reason; // why not ("" when evaluated)
+  bool view = false;                // compute V per point
+  bool positions = false;           // the per-point position is read
+  std::size_t positional_lights = 0;  // point and spot lights among `lights`
+};
+
+LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOptions& skips = {});
+
+// Component-wise product (colour times colour).
+inline Vec3d mul(const Vec3d& a, const Vec3d& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+inline bool is_zero(const Vec3d& a) { return a.x == 0 && a.y == 0 && a.z == 0; }
+
+}  // namespace shadetool

@@ -1,0 +1,382 @@
+// read_scene.cpp: JSON -> Scene with one-line errors `FILE: $.json.path: problem` (see read_scene.h).
+#include "lighting/read_scene.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "lighting/affine_inverse.h"
+#include "lighting/look_at.h"
+
+namespace shadetool {
+
+namespace {
+
+using json = nlohmann::json;
+
+// JSONPath step for an object key: .name for identifiers, ["odd key"] otherwise.
+std::string key_step(const std::string& key) {
+  bool identifier = !key.empty() && !std::isdigit(static_cast<unsigned char>(key[0]));
+  for (char c : key)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) identifier = false;
+  return identifier ? "." + key : "[" + json(key).dump() + "]";
+}
+
+std::string describe(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return j.get<bool>() ? "true" : "false";
+    case json::value_t::string: return "a string";
+    case json::value_t::array: return "an array of " + std::to_string(j.size());
+    case json::value_t::object: return "an object";
+    default: return "a number";
+  }
+}
+
+std::string number_text(double x) {
+  std::ostringstream s;
+  s.precision(12);
+  s << x;
+  return s.str();
+}
+
+// One scene file being read: its name for messages, and typed accessors that fail with the path.
+class SceneReader {
+ public:
+  explicit SceneReader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void bad(const std::string& path, const std::string& problem) const {
+    fail(file_, 0, path + ": " + problem);
+  }
+
+  void require_object(const json& j, const std::string& path) const {
+    if (!j.is_object()) bad(path, "must be an object, got " + describe(j));
+  }
+
+  void check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> allowed,
+                  const std::string& what) const {
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+      const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* k) { return it.key() == k; });
+      if (known) continue;
+      std::string list;
+      for (const char* k : allowed) list += (list.empty() ? "" : ", ") + std::string(k);
+      bad(path + key_step(it.key()), "unknown key in " + what + " (expected one of: " + list + ")");
+    }
+  }
+
+  double number(const json& j, const std::string& path) const {
+    if (!j.is_number()) bad(path, "must be a number, got " + describe(j));
+    const double x = j.get<double>();
+    if (!std::isfinite(x)) bad(path, "must be a finite number");
+    return x;
+  }
+
+  double non_negative(const json& j, const std::string& path) const {
+    const double x = number(j, path);
+    if (x < 0) bad(path, "must be >= 0, got " + number_text(x));
+    return x;
+  }
+
+  bool boolean(const json& j, const std::string& path) const {
+    if (!j.is_boolean()) bad(path, "must be true or false, got " + describe(j));
+    return j.get<bool>();
+  }
+
+  std::string string(const json& j, const std::string& path) const {
+    if (!j.is_string()) bad(path, "must be a string, got " + describe(j));
+    return j.get<std::string>();
+  }
+
+  Vec3d vec3(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 3) bad(path, "must be an array of 3 numbers, got " + describe(j));
+    return {number(j[0], path + "[0]"), number(j[1], path + "[1]"), number(j[2], path + "[2]")};
+  }
+
+  Vec3d colour(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 3)
+      bad(path, "must be a colour [r, g, b] (3 numbers >= 0), got " + describe(j));
+    Vec3d c;
+    for (int i = 0; i < 3; ++i) {
+      const std::string p = path + "[" + std::to_string(i) + "]";
+      c[i] = number(j[i], p);
+      if (c[i] < 0) bad(p, "colour channels must be >= 0, got " + number_text(c[i]));
+    }
+    return c;
+  }
+
+  Vec3d direction(const json& j, const std::string& path) const {
+    const Vec3d d = vec3(j, path);
+    if (!(length(d) > 0)) bad(path, "zero-length direction");
+    return d;
+  }
+
+  // 16 numbers, row-major 4x4, bottom row exactly 0 0 0 1, invertible 3x3 part.
+  Affine3d affine(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 16)
+      bad(path, "must be a 4x4 matrix as an array of 16 numbers (row-major), got " + describe(j));
+    double m[16];
+    for (int i = 0; i < 16; ++i) m[i] = number(j[i], path + "[" + std::to_string(i) + "]");
+    if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1)
+      bad(path, "bottom row must be 0 0 0 1 (an affine map; projections are not supported), got " +
+                    number_text(m[12]) + " " + number_text(m[13]) + " " + number_text(m[14]) + " " +
+                    number_text(m[15]));
+    Affine3d M;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) M.A.m[r][c] = m[4 * r + c];
+      M.t[r] = m[4 * r + 3];
+    }
+    Affine3d unused;
+    if (!invert_affine(M, unused)) bad(path, "the 3x3 part is singular (determinant 0): the map has no inverse");
+    return M;
+  }
+
+  const json* find(const json& obj, const char* key) const {
+    auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+  }
+  const json& need(const json& obj, const std::string& path, const char* key, const std::string& what) const {
+    const json* j = find(obj, key);
+    if (!j) bad(path, what + " needs '" + key + "'");
+    return *j;
+  }
+
+  ShadingModel model(const json& j, const std::string& path) const {
+    const std::string s = string(j, path);
+    if (s == "lambert") return ShadingModel::Lambert;
+    if (s == "phong") return ShadingModel::Phong;
+    if (s == "blinn-phong") return ShadingModel::BlinnPhong;
+    bad(path, "must be \"lambert\", \"phong\" or \"blinn-phong\", got \"" + s + "\"");
+  }
+
+  void camera(const json& j, const std::string& path, Scene& scene) const {
+    require_object(j, path);
+    check_keys(j, path, {"eye", "target", "up", "view"}, "camera");
+    if (const json* v = find(j, "view")) {
+      if (find(j, "eye") || find(j, "target") || find(j, "up"))
+        bad(path, "give either \"view\" or \"eye\"/\"target\"/\"up\", not both");
+      scene.camera_from_world = affine(*v, path + ".view");
+    } else {
+      const Vec3d eye = vec3(need(j, path, "eye", "a camera"), path + ".eye");
+      const Vec3d target = vec3(need(j, path, "target", "a camera"), path + ".target");
+      const json* up_json = find(j, "up");
+      const Vec3d up = up_json ? direction(*up_json, path + ".up") : Vec3d{0, 1, 0};
+      if (eye == target) bad(path + ".target", "equals the eye: no view direction");
+      if (!look_at(eye, target, up, scene.camera_from_world))
+        bad(path + ".up", "is parallel to the view direction (target - eye)");
+    }
+    scene.has_camera = true;
+  }
+
+  Material material(const json& j, const std::string& path) const {
+    require_object(j, path);
+    check_keys(j, path, {"ambient", "diffuse", "specular", "emission", "shininess"}, "material");
+    Material m;
+    if (const json* v = find(j, "ambient")) m.ambient = colour(*v, path + ".ambient");
+    if (const json* v = find(j, "diffuse")) m.diffuse = colour(*v, path + ".diffuse");
+    if (const json* v = find(j, "specular")) m.specular = colour(*v, path + ".specular");
+    if (const json* v = find(j, "emission")) m.emission = colour(*v, path + ".emission");
+    if (const json* v = find(j, "shininess")) m.shininess = non_negative(*v, path + ".shininess");
+    return m;
+  }
+
+  Light light(const json& j, const std::string& path) const {
+    require_object(j, path);
+    const std::string type = string(need(j, path, "type", "a light"), path + ".type");
+    Light L;
+    if (type == "ambient") {
+      L.type = LightType::Ambient;
+      check_keys(j, path, {"type", "color", "intensity"}, "an ambient light");
+    } else if (type == "directional") {
+      L.type = LightType::Directional;
+      check_keys(j, path, {"type", "direction", "color", "intensity", "ambient", "diffuse", "specular"},
+                 "a directional light");
+    } else if (type == "point") {
+      L.type = LightType::Point;
+      check_keys(j, path, {"type", "position", "attenuation", "color", "intensity", "ambient", "diffuse", "specular"},
+                 "a point light");
+    } else if (type == "spot") {
+      L.type = LightType::Spot;
+      check_keys(j, path,
+                 {"type", "position", "direction", "cutoff", "exponent", "attenuation", "color", "intensity", "ambient",
+                  "diffuse", "specular"},
+                 "a spot light");
+    } else {
+      bad(path + ".type", "must be \"ambient\", \"directional\", \"point\" or \"spot\", got \"" + type + "\"");
+    }
+
+    Vec3d color{1, 1, 1};
+    double intensity = 1;
+    if (const json* v = find(j, "color")) color = colour(*v, path + ".color");
+    if (const json* v = find(j, "intensity")) intensity = non_negative(*v, path + ".intensity");
+    const Vec3d scaled = color * intensity;
+    if (L.type == LightType::Ambient) {
+      L.ambient = scaled;
+      L.diffuse = L.specular = {0, 0, 0};
+      return L;
+    }
+    L.ambient = {0, 0, 0};
+    L.diffuse = L.specular = scaled;
+    if (const json* v = find(j, "ambient")) L.ambient = colour(*v, path + ".ambient");
+    if (const json* v = find(j, "diffuse")) L.diffuse = colour(*v, path + ".diffuse");
+    if (const json* v = find(j, "specular")) L.specular = colour(*v, path + ".specular");
+
+    const std::string what = "a " + type + " light";
+    if (L.type == LightType::Directional || L.type == LightType::Spot)
+      L.direction = direction(need(j, path, "direction", what), path + ".direction");
+    if (L.type == LightType::Point || L.type == LightType::Spot) {
+      L.position = vec3(need(j, path, "position", what), path + ".position");
+      if (const json* v = find(j, "attenuation")) {
+        const std::string p = path + ".attenuation";
+        if (!v->is_array() || v->size() != 3) bad(p, "must be [kc, kl, kq] (3 numbers >= 0), got " + describe(*v));
+        for (int i = 0; i < 3; ++i) L.attenuation[i] = non_negative((*v)[i], p + "[" + std::to_string(i) + "]");
+        if (L.attenuation == Vec3d{0, 0, 0}) bad(p, "is [0, 0, 0]: 1/(kc + kl d + kq d^2) has no finite value");
+      }
+    }
+    if (L.type == LightType::Spot) {
+      const std::string p = path + ".cutoff";
+      L.cutoff_degrees = number(need(j, path, "cutoff", what), p);
+      if (!((L.cutoff_degrees >= 0 && L.cutoff_degrees <= 90) || L.cutoff_degrees == 180))
+        bad(p, "must be in [0, 90] degrees or 180 (no cone), got " + number_text(L.cutoff_degrees));
+      if (const json* v = find(j, "exponent")) L.exponent = non_negative(*v, path + ".exponent");
+    }
+    return L;
+  }
+
+  Scene scene(const json& root) const {
+    const std::string path = "$";
+    require_object(root, path);
+    check_keys(root, path, {"model", "world_from_object", "camera", "view", "ambient", "two_sided", "material", "lights"},
+               "a scene");
+    Scene s;
+    if (const json* v = find(root, "model")) {
+      s.model = model(*v, "$.model");
+      s.model_given = true;
+    }
+    if (const json* v = find(root, "world_from_object")) s.world_from_object = affine(*v, "$.world_from_object");
+    if (find(root, "camera") && find(root, "view")) bad(path, "give either \"camera\" or \"view\", not both");
+    if (const json* v = find(root, "camera")) camera(*v, "$.camera", s);
+    if (const json* v = find(root, "view")) {
+      s.camera_from_world = affine(*v, "$.view");
+      s.has_camera = true;
+    }
+    if (const json* v = find(root, "ambient")) s.global_ambient = colour(*v, "$.ambient");
+    if (const json* v = find(root, "two_sided")) s.two_sided = boolean(*v, "$.two_sided");
+    if (const json* v = find(root, "material")) s.material = material(*v, "$.material");
+    if (const json* v = find(root, "lights")) {
+      if (!v->is_array()) bad("$.lights", "must be an array of lights, got " + describe(*v));
+      for (std::size_t i = 0; i < v->size(); ++i) s.lights.push_back(light((*v)[i], "$.lights[" + std::to_string(i) + "]"));
+    }
+    return s;
+  }
+
+ private:
+  std::string file_;
+};
+
+// Tracks the JSON path while nlohmann parses, to report duplicate keys (which nlohmann would
+// otherwise resolve silently to the last value).
+class DuplicateKeyFinder {
+ public:
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        step_into_element();
+        frames_.push_back({event == json::parse_event_t::array_start, 0, {}, {}});
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        if (!frames_.empty()) frames_.pop_back();
+        break;
+      case json::parse_event_t::key:
+        if (!frames_.empty()) {
+          Frame& top = frames_.back();
+          top.key = parsed.get<std::string>();
+          if (!top.keys.insert(top.key).second && first_duplicate.empty())
+            first_duplicate = path_to_top() + ": duplicate key \"" + top.key + "\"";
+        }
+        break;
+      case json::parse_event_t::value:
+        step_into_element();
+        break;
+    }
+    return true;
+  }
+  std::string first_duplicate;
+
+ private:
+  struct Frame {
+    bool is_array;
+    std::size_t count;  // elements seen so far (arrays)
+    std::string key;    // current key (objects)
+    std::set<std::string> keys;
+  };
+  void step_into_element() {
+    if (!frames_.empty() && frames_.back().is_array) ++frames_.back().count;
+  }
+  std::string path_to_top() const {
+    std::string p = "$";
+    for (std::size_t i = 0; i + 1 < frames_.size(); ++i)
+      p += frames_[i].is_array ? "[" + std::to_string(frames_[i].count - 1) + "]" : key_step(frames_[i].key);
+    return p;
+  }
+  std::vector<Frame> frames_;
+};
+
+// "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error ..." ->
+// `NAME:3: invalid JSON at column 7: syntax error ...`.
+[[noreturn]] void fail_json(const std::string& name, const json::exception& e) {
+  const std::string what = e.what();
+  const std::size_t bracket = what.find("] ");
+  std::string message = bracket == std::string::npos ? what : what.substr(bracket + 2);
+  const std::size_t at = message.find("at line ");
+  const std::size_t column = message.find(", column ");
+  const std::size_t colon = column == std::string::npos ? std::string::npos : message.find(": ", column);
+  if (at != std::string::npos && colon != std::string::npos) {
+    const std::size_t line = std::stoul(message.substr(at + 8, column - at - 8));
+    const std::string col = message.substr(column + 9, colon - column - 9);
+    fail(name, line, "invalid JSON at column " + col + ": " + message.substr(colon + 2));
+  }
+  fail(name, 0, "invalid JSON: " + message);
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view json_text, const std::string& name) {
+  json root;
+  DuplicateKeyFinder duplicates;
+  try {
+    root = json::parse(json_text.begin(), json_text.end(),
+                       [&duplicates](int depth, json::parse_event_t event, json& parsed) {
+                         return duplicates(depth, event, parsed);
+                       });
+  } catch (const json::exception& e) {
+    fail_json(name, e);
+  }
+  if (!duplicates.first_duplicate.empty()) fail(name, 0, duplicates.first_duplicate);
+  return SceneReader(name).scene(root);
+}
+
+Scene read_scene(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) fail(path, 0, "cannot read scene file: is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, 0, std::string("cannot read scene file: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) fail(path, 0, "cannot read scene file: read error");
+  return parse_scene(text.str(), path);
+}
+
+}  // namespace shadetool

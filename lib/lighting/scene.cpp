@@ -1,0 +1,15 @@
+// scene.cpp: see scene.h.
+#include "lighting/scene.h"
+
+#include "lighting/affine_inverse.h"
+
+namespace shadetool {
+
+Vec3d eye_world(const Scene& scene) {
+  if (!scene.has_camera) return {0, 0, 0};
+  Affine3d world_from_camera;
+  if (!invert_affine(scene.camera_from_world, world_from_camera)) return {0, 0, 0};  // validated on read
+  return world_from_camera.t;  // V^-1 (0,0,0)
+}
+
+}  // namespace shadetool

@@ -1,0 +1,67 @@
+// scene.h: what bake-lighting lights a mesh with: material, lights, camera, object placement.
+//
+// The quantities of OpenGL 2.1's fixed-function lighting (The OpenGL Graphics System 2.1,
+// section 2.14.1, "Lighting"), with the same defaults where OpenGL has one. Every position and
+// direction here is in WORLD space; the mesh is in OBJECT space and world_from_object places it.
+// A scene is read from JSON by lighting/read_scene.h, which validates every field; code that
+// builds a Scene by hand must respect the same ranges (listed per field below).
+//
+// Colours are linear RGB, each channel >= 0 (no upper bound: HDR light intensities are allowed).
+#pragma once
+
+#include <vector>
+
+#include "core/affine.h"
+#include "core/vec3.h"
+
+namespace shadetool {
+
+enum class ShadingModel {
+  Lambert,     // ambient + diffuse, no specular term
+  Phong,       // specular max(R.V, 0)^shininess, R = 2 (n.L) n - L          (Phong 1975)
+  BlinnPhong,  // specular max(n.H, 0)^shininess, H = normalize(L + V)       (Blinn 1977; OpenGL)
+};
+
+enum class LightType {
+  Ambient,      // adds material.ambient * ambient everywhere (no position, no attenuation)
+  Directional,  // at infinity; `direction` is the way the light travels (toward the scene)
+  Point,        // at `position`, attenuated with distance
+  Spot,         // a point light restricted to a cone around `direction`
+};
+
+struct Light {
+  LightType type = LightType::Directional;
+  Vec3d position{0, 0, 0};    // world; Point and Spot
+  Vec3d direction{0, 0, -1};  // world, any non-zero length; Directional (travel) and Spot (axis)
+  Vec3d ambient{0, 0, 0};     // a_i  (JSON default black, as OpenGL's lights)
+  Vec3d diffuse{1, 1, 1};     // d_i  (JSON default color * intensity)
+  Vec3d specular{1, 1, 1};    // s_i  (JSON default color * intensity)
+  double cutoff_degrees = 180;  // Spot: cone half-angle, [0, 90] or 180 (= no cone, a point light)
+  double exponent = 0;          // Spot: falloff max(cos, 0)^exponent, >= 0
+  Vec3d attenuation{1, 0, 0};   // Point/Spot: kc kl kq >= 0, not all zero; att = 1/(kc+kl d+kq d^2)
+};
+
+struct Material {  // OpenGL's defaults (glMaterial)
+  Vec3d ambient{0.2, 0.2, 0.2};   // ka
+  Vec3d diffuse{0.8, 0.8, 0.8};   // kd
+  Vec3d specular{0, 0, 0};        // ks
+  Vec3d emission{0, 0, 0};        // e
+  double shininess = 0;           // >= 0 (OpenGL caps at 128; we do not)
+};
+
+struct Scene {
+  ShadingModel model = ShadingModel::BlinnPhong;
+  bool model_given = false;                   // the file named a model (the CLI's --model wins)
+  Affine3d world_from_object;                 // M; its 3x3 part must be invertible
+  Affine3d camera_from_world;                 // V (view matrix); must be invertible
+  bool has_camera = false;                    // false: OpenGL's default eye at the world origin
+  Vec3d global_ambient{0.2, 0.2, 0.2};        // OpenGL's LIGHT_MODEL_AMBIENT default
+  bool two_sided = false;                     // where n.V < 0, light the back: n -> -n
+  Material material;
+  std::vector<Light> lights;
+};
+
+// The eye position in world space: V^-1 (0, 0, 0). Requires V invertible (validated on read).
+Vec3d eye_world(const Scene& scene);
+
+}  // namespace shadetool

@@ -1,0 +1,114 @@
+// shade_points.cpp: see shade_points.h.
+#include "lighting/shade_points.h"
+
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+namespace shadetool {
+
+const char* shading_model_name(ShadingModel model) {
+  switch (model) {
+    case ShadingModel::Lambert: return "lambert";
+    case ShadingModel::Phong: return "phong";
+    case ShadingModel::BlinnPhong: return "blinn-phong";
+  }
+  return "?";
+}
+
+namespace {
+
+// Points [begin, end): into the space (when needed), then the equation.
+template <class Metric>
+ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
+                          const double* points, const double* normals, double* out, std::size_t begin,
+                          std::size_t end) {
+  ShadeCounters count;
+  for (std::size_t i = begin; i < end; ++i) {
+    Vec3d p{points[3 * i], points[3 * i + 1], points[3 * i + 2]};
+    Vec3d n{normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
+    if (frame.transform) {
+      if (map_points) p = transform_point(frame.space_from_object, p);
+      n = transform_normal(frame.normal_to_space, n);
+    }
+    const Vec3d c = shade_point_in_space(g, frame, eq, p, n, count);
+    out[3 * i] = c.x;
+    out[3 * i + 1] = c.y;
+    out[3 * i + 2] = c.z;
+  }
+  return count;
+}
+
+template <class Metric>
+ShadeCounters shade_all(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
+                        const double* points, const double* normals, double* out, std::size_t n, bool parallel) {
+  if (!parallel || n < 4096) return shade_range(g, frame, eq, map_points, points, normals, out, 0, n);
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, n, 2048), ShadeCounters{},
+      [&](const tbb::blocked_range<std::size_t>& r, ShadeCounters acc) {
+        acc += shade_range(g, frame, eq, map_points, points, normals, out, r.begin(), r.end());
+        return acc;
+      },
+      [](ShadeCounters a, const ShadeCounters& b) { return a += b; });
+}
+
+}  // namespace
+
+std::vector<double> shade_points(const Scene& scene, const std::vector<double>& points_object,
+                                 const std::vector<double>& normals_object, const ShadeOptions& options,
+                                 ShadeReport* report) {
+  if (points_object.size() % 3 != 0 || normals_object.size() != points_object.size())
+    throw std::invalid_argument("shade_points: points and normals must both be #P by 3");
+  const std::size_t n = points_object.size() / 3;
+  ShadeReport r;
+  r.model = options.model ? *options.model : scene.model;
+  r.plan = plan_lighting(scene, r.model, options.skips);
+  if (options.space == ShadingSpace::Auto) {
+    const SpaceChoice choice = choose_space(scene, r.plan, options.skips);
+    r.space = choice.space;
+    r.space_reason = choice.reason;
+  } else {
+    r.space = options.space;
+    r.space_reason = std::string(shading_space_name(r.space)) + " (requested)";
+  }
+  const ShadingFrame frame = make_frame(scene, r.plan, r.space, options.skips);
+  const bool map_points = r.plan.positions;
+
+  EquationSetup eq;
+  eq.model = r.model;
+  eq.specular = r.plan.specular;
+  eq.view = r.plan.view;
+  eq.two_sided = scene.two_sided;
+  eq.early_tests = options.skips.early_tests;
+  eq.shininess = scene.material.shininess;
+  eq.base = r.plan.base;
+
+  std::vector<double> out(3 * n);
+  const double* P = points_object.data();
+  const double* N = normals_object.data();
+  switch (frame.metric.kind) {
+    case MetricKind::Identity:
+      r.counters = shade_all(IdentityMetric{}, frame, eq, map_points, P, N, out.data(), n, options.parallel);
+      break;
+    case MetricKind::Scaled:
+      r.counters = shade_all(ScaledMetric{frame.metric.scale2, 1.0 / frame.metric.scale2}, frame, eq, map_points, P,
+                             N, out.data(), n, options.parallel);
+      break;
+    case MetricKind::General:
+      r.counters = shade_all(GeneralMetric{frame.metric.B, transpose(frame.metric.B), frame.metric.B_inverse_transpose},
+                             frame, eq, map_points, P, N, out.data(), n, options.parallel);
+      break;
+  }
+
+  r.transforms_skipped = !frame.transform;
+  if (r.plan.dark_lights_dropped > 0) r.skipped.push_back("dark_lights");
+  if (!r.plan.specular) r.skipped.push_back("specular");
+  if (!r.plan.view) r.skipped.push_back("view_vector");
+  if (frame.transform && !map_points) r.skipped.push_back("positions");
+  if (!frame.transform) r.skipped.push_back("transforms");
+  if (report) *report = std::move(r);
+  return out;
+}
+
+}  // namespace shadetool

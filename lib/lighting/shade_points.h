@@ -1,0 +1,53 @@
+// shade_points.h: lit colours of many points of one object, in a chosen shading space.
+//
+// Inputs:  scene           lights, material, camera, world_from_object M (lighting/scene.h)
+//          points_object   #P by 3 flat doubles, object space
+//          normals_object  #P by 3 flat doubles, object space, any length (outward); a zero or
+//                          non-finite normal leaves only the emission and ambient terms
+//          options         model (default: the scene's), space (default auto), skips, threads
+// Output:  #P by 3 flat doubles, linear RGB, unclamped (the equation of lighting_equation.h)
+//          report (optional): model and space used, what was skipped, counters
+//
+// Steps: plan_lighting (which terms are needed) -> choose_space (auto) -> make_frame (lights and
+// eye into the space, once) -> per point: map p and n into the space unless the map is the
+// identity or nothing reads them, then the equation with the space's metric.
+//
+// Precision: double. Parallel over points (TBB) when options.parallel; every point is computed
+// independently, so the result is bitwise the same for any number of threads.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lighting/lighting_equation.h"
+#include "lighting/lighting_plan.h"
+#include "lighting/scene.h"
+#include "lighting/shading_space.h"
+
+namespace shadetool {
+
+struct ShadeOptions {
+  std::optional<ShadingModel> model;  // overrides scene.model
+  ShadingSpace space = ShadingSpace::Auto;
+  SkipOptions skips;                  // all on by default; off only to measure or test them
+  bool parallel = true;
+};
+
+struct ShadeReport {
+  ShadingModel model = ShadingModel::BlinnPhong;
+  ShadingSpace space = ShadingSpace::World;
+  std::string space_reason;            // why (auto), or "requested"
+  LightingPlan plan;
+  bool transforms_skipped = false;     // no per-point matrix work (object space or identity map)
+  ShadeCounters counters;
+  std::vector<std::string> skipped;    // names: dark_lights, specular, view_vector, positions, transforms
+};
+
+const char* shading_model_name(ShadingModel model);  // "lambert", "phong", "blinn-phong"
+
+std::vector<double> shade_points(const Scene& scene, const std::vector<double>& points_object,
+                                 const std::vector<double>& normals_object, const ShadeOptions& options = {},
+                                 ShadeReport* report = nullptr);
+
+}  // namespace shadetool

@@ -1,0 +1,158 @@
+// `shadetool bake-lighting` end to end: the binary is run, its exit code, messages and output
+// files checked (output read back with io/mesh_io.h).
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/mesh_io.h"
+
+namespace fs = std::filesystem;
+using namespace shadetool;
+
+namespace {
+
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() / ("shadetool_lighting_cli_" + std::to_string(::getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+  void write(const std::string& name, const std::string& text) const { std::ofstream(file(name)) << text; }
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Run run(const TempDir& dir, const std::string& args) {
+  const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
+  const std::string cmd = std::string(SHADETOOL_BIN) + " bake-lighting " + args + " > " + out + " 2> " + err;
+  const int status = std::system(cmd.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+// A 2 x 1 quad in z = 0, as two triangles, normal +z.
+const char* kQuadObj = "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+
+// Lambert, no ambient, kd = (0.5, 0.25, 1), light straight down: every colour is kd.
+const char* kFlatScene = R"({
+  "model": "lambert", "ambient": [0, 0, 0],
+  "material": {"ambient": [0, 0, 0], "diffuse": [0.5, 0.25, 1]},
+  "lights": [{"type": "directional", "direction": [0, 0, -1]}]
+})";
+
+}  // namespace
+
+TEST_CASE("bake-lighting writes 8-bit vertex colours round(255 c)", "[lighting][cli]") {
+  TempDir dir;
+  dir.write("quad.obj", kQuadObj);
+  dir.write("scene.json", kFlatScene);
+  const Run r = run(dir, dir.file("quad.obj") + " -o " + dir.file("lit.ply") + " --scene " + dir.file("scene.json"));
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const Mesh m = read_mesh(dir.file("lit.ply"));
+  REQUIRE(m.vertex_colors.size() == 12);
+  CHECK_FALSE(m.colors_are_float);
+  // kd = (0.5, 0.25, 1) -> round(127.5) = 128, round(63.75) = 64, 255
+  for (int v = 0; v < 4; ++v) {
+    CHECK(std::lround(255 * m.vertex_colors[3 * v]) == 128);
+    CHECK(std::lround(255 * m.vertex_colors[3 * v + 1]) == 64);
+    CHECK(std::lround(255 * m.vertex_colors[3 * v + 2]) == 255);
+  }
+  CHECK(m.positions == std::vector<double>{0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0});
+  CHECK(m.num_faces() == 2);
+}
+
+TEST_CASE("bake-lighting --hdr --srgb --per face --model --space", "[lighting][cli]") {
+  TempDir dir;
+  dir.write("quad.obj", kQuadObj);
+  dir.write("scene.json", kFlatScene);
+  const Run r = run(dir, dir.file("quad.obj") + " -o " + dir.file("lit.ply") + " --scene " + dir.file("scene.json") +
+                             " --per face --hdr --srgb --model blinn-phong --space object --stats");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const Mesh m = read_mesh(dir.file("lit.ply"));
+  REQUIRE(m.face_colors.size() == 6);
+  CHECK(m.vertex_colors.empty());
+  CHECK(m.colors_are_float);
+  // sRGB(0.5) = 1.055 * 0.5^(1/2.4) - 0.055 = 0.7353569830524495; sRGB(0.25) = 0.5370987304831942
+  CHECK(m.face_colors[0] == Approx(0.7353569830524495).epsilon(1e-6));
+  CHECK(m.face_colors[1] == Approx(0.5370987304831942).epsilon(1e-6));
+  CHECK(m.face_colors[2] == Approx(1.0).epsilon(1e-6));
+  // --stats names the model, the space and what was skipped (material specular defaults to 0)
+  CHECK(r.err.find("model=blinn-phong") != std::string::npos);
+  CHECK(r.err.find("space=object") != std::string::npos);
+  CHECK(r.err.find("skipped=specular,view_vector,transforms") != std::string::npos);
+  CHECK(r.err.find("vertex_light_evaluations=2") != std::string::npos);  // 2 faces x 1 light
+}
+
+TEST_CASE("bake-lighting with the example scenes", "[lighting][cli]") {
+  TempDir dir;
+  dir.write("quad.obj", kQuadObj);
+  for (const char* scene : {"studio.json", "sun.json", "stretched.json"}) {
+    INFO(scene);
+    const Run r = run(dir, dir.file("quad.obj") + " -o " + dir.file("lit.obj") + " --scene " +
+                               std::string(SHADETOOL_SOURCE_DIR) + "/data/scenes/" + scene + " --stats");
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(r.err.find("space=") != std::string::npos);
+    CHECK(fs::exists(dir.file("lit.obj")));
+  }
+}
+
+TEST_CASE("bake-lighting errors: exit codes, one-line messages, no output", "[lighting][cli]") {
+  TempDir dir;
+  dir.write("quad.obj", kQuadObj);
+  dir.write("bad.json", R"({"lights": [{"type": "spot", "position": [0,3,0], "direction": [0,-1,0], "cutoff": 95}]})");
+  const std::string out = dir.file("lit.ply");
+
+  // a bad scene: exit 1, the file, the JSON path and the problem, no output
+  Run r = run(dir, dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("bad.json"));
+  CHECK(r.code == 1);
+  CHECK(r.err == "shadetool: " + dir.file("bad.json") +
+                     ": $.lights[0].cutoff: must be in [0, 90] degrees or 180 (no cone), got 95\n");
+  CHECK_FALSE(fs::exists(out));
+
+  // a missing scene file: exit 1
+  r = run(dir, dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("none.json"));
+  CHECK(r.code == 1);
+  CHECK(r.err.find("none.json: cannot read scene file") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+
+  // usage errors: exit 2
+  dir.write("scene.json", kFlatScene);
+  r = run(dir, dir.file("quad.obj") + " -o " + out);  // no --scene
+  CHECK(r.code == 2);
+  r = run(dir, dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("scene.json") + " --model gouraud");
+  CHECK(r.code == 2);
+  r = run(dir, dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("scene.json") + " --per corner");
+  CHECK(r.code == 2);
+  CHECK_FALSE(fs::exists(out));
+
+  // a missing input mesh: exit 1, no output
+  r = run(dir, dir.file("none.obj") + " -o " + out + " --scene " + dir.file("scene.json"));
+  CHECK(r.code == 1);
+  CHECK_FALSE(fs::exists(out));
+}
