@@ -58,7 +58,10 @@ std::string info_text(const MeshInfo& m, const std::string& input, const std::st
   std::string s = fmt::format("{}: {} ({})\n", input, format, m.double_precision ? "double" : "float");
   s += fmt::format("  vertices               {}\n", m.vertices);
   std::string sizes;
-  for (auto& [size, count] : m.faces_by_size) sizes += fmt::format("{}{}-gons {}", sizes.empty() ? "" : ", ", size, count);
+  for (auto& [size, count] : m.faces_by_size) {
+    const std::string kind = size == 3 ? "triangle" : size == 4 ? "quad" : fmt::format("{}-gon", size);
+    sizes += fmt::format("{}{} {}{}", sizes.empty() ? "" : ", ", count, kind, count == 1 ? "" : "s");
+  }
   s += fmt::format("  faces                  {}{}\n", m.faces, sizes.empty() ? "" : " (" + sizes + ")");
   s += fmt::format("  corners                {}\n", m.corners);
   if (m.has_bbox) {

@@ -2,7 +2,7 @@
 //
 // Storage in shadetool is flat arrays of double (#V by 3); Vec3<T> is the value type the kernels
 // compute with. Points, directions and normals share this type; what distinguishes them is how
-// they transform, and lib/core/matrix3.h names those transforms apart (transform_point,
+// they transform, and lib/core/affine.h names those transforms apart (transform_point,
 // transform_vector, transform_normal) so a normal cannot be pushed through the point map by
 // accident.
 #pragma once

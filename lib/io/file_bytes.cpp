@@ -1,36 +1,97 @@
-// file_bytes.cpp: whole-file read with fopen/fread (one allocation, one read).
+// file_bytes.cpp: mmap for large regular files; read(2) into an uninitialised buffer otherwise
+// (in growing chunks when the size is unknown: pipes, /dev/stdin).
 #include "io/file_bytes.h"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
+#include <unistd.h>
+#include <utility>
 
 #include "core/error.h"
 
 namespace shadetool::io {
 
-std::string read_file_bytes(const std::string& path) {
+namespace {
+
+constexpr std::size_t kMapAtLeast = std::size_t(1) << 20;
+
+// Reads up to `n` bytes; returns how many (fewer only at the end of the file); -1 on error.
+ssize_t read_fully(int fd, char* p, std::size_t n) {
+  std::size_t got = 0;
+  while (got < n) {
+    const ssize_t r = ::read(fd, p + got, n - got);
+    if (r < 0) {
+      if (errno == EINTR) continue;
+      return -1;
+    }
+    if (r == 0) break;
+    got += std::size_t(r);
+  }
+  return ssize_t(got);
+}
+
+}  // namespace
+
+FileBytes::FileBytes(FileBytes&& o) noexcept
+    : owned_(std::move(o.owned_)), data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)),
+      mapped_(std::exchange(o.mapped_, false)) {}
+
+FileBytes& FileBytes::operator=(FileBytes&& o) noexcept {
+  if (this != &o) {
+    this->~FileBytes();
+    new (this) FileBytes(std::move(o));
+  }
+  return *this;
+}
+
+FileBytes::~FileBytes() {
+  if (mapped_ && data_) ::munmap(data_, size_);
+}
+
+FileBytes read_file_bytes(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) fail(path, 0, std::string("cannot open: ") + std::strerror(errno));
   if (S_ISDIR(st.st_mode)) fail(path, 0, "is a directory, not a mesh file");
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) fail(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::string bytes;
-  if (S_ISREG(st.st_mode) && st.st_size > 0) {
-    bytes.resize(static_cast<std::size_t>(st.st_size));
-    const std::size_t got = std::fread(bytes.data(), 1, bytes.size(), f);
-    bytes.resize(got);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  if (::fstat(fd, &st) != 0) st.st_mode = 0;
+
+  FileBytes f;
+  if (S_ISREG(st.st_mode) && std::size_t(st.st_size) >= kMapAtLeast) {
+    void* p = ::mmap(nullptr, std::size_t(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    if (p != MAP_FAILED) {
+      ::close(fd);
+      f.data_ = static_cast<char*>(p);
+      f.size_ = std::size_t(st.st_size);
+      f.mapped_ = true;
+      return f;
+    }
+    // mmap refused (some file systems): read it instead
   }
-  // Pipes and special files report no size: read until the end.
-  char buf[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) bytes.append(buf, n);
-  const bool error = std::ferror(f) != 0;
-  std::fclose(f);
-  if (error) fail(path, 0, "read error");
-  if (bytes.empty()) fail(path, 0, "file is empty");
-  return bytes;
+  // Regular files: one read of the known size (+1 to see growth). Others: chunks, doubling.
+  std::size_t capacity = S_ISREG(st.st_mode) ? std::size_t(st.st_size) + 1 : std::size_t(1) << 16;
+  f.owned_.reset(new char[capacity]);
+  for (;;) {
+    const ssize_t r = read_fully(fd, f.owned_.get() + f.size_, capacity - f.size_);
+    if (r < 0) {
+      const int e = errno;
+      ::close(fd);
+      fail(path, 0, std::string("read error: ") + std::strerror(e));
+    }
+    f.size_ += std::size_t(r);
+    if (f.size_ < capacity) break;  // end of file
+    std::unique_ptr<char[]> bigger(new char[2 * capacity]);
+    std::memcpy(bigger.get(), f.owned_.get(), f.size_);
+    f.owned_ = std::move(bigger);
+    capacity *= 2;
+  }
+  ::close(fd);
+  f.data_ = f.owned_.get();
+  if (f.size_ == 0) fail(path, 0, "file is empty");
+  return f;
 }
 
 }  // namespace shadetool::io

@@ -1,14 +1,42 @@
-// file_bytes.h: a whole file read into memory in one call (readers parse from memory).
+// file_bytes.h: a whole file in memory in one call (readers parse from memory).
 //
 // Inputs:  path  file to read
-// Outputs: the file's bytes
+// Outputs: FileBytes, the file's bytes. Regular files of 1 MiB or more are mapped (mmap,
+//          MAP_POPULATE: no copy, and no fresh pages to fault in, which is most of the cost of
+//          reading a binary mesh); smaller files and pipes are read into a buffer that is not
+//          zero-filled first. A mapped file that another process truncates while it is being
+//          parsed raises SIGBUS, as with any mmap-based reader (ripgrep, git); it does not
+//          happen to files that are only read or replaced by rename, as shadetool writes them.
 // Errors (shadetool::Error, `PATH: what`): missing file, a directory, unreadable, empty file.
 #pragma once
 
+#include <cstddef>
+#include <memory>
 #include <string>
+#include <string_view>
 
 namespace shadetool::io {
 
-std::string read_file_bytes(const std::string& path);
+class FileBytes {
+ public:
+  FileBytes() = default;
+  FileBytes(FileBytes&& o) noexcept;
+  FileBytes& operator=(FileBytes&& o) noexcept;
+  FileBytes(const FileBytes&) = delete;
+  FileBytes& operator=(const FileBytes&) = delete;
+  ~FileBytes();
+
+  std::string_view view() const { return {data_, size_}; }
+  std::size_t size() const { return size_; }
+
+ private:
+  friend FileBytes read_file_bytes(const std::string& path);
+  std::unique_ptr<char[]> owned_;
+  char* data_ = nullptr;
+  std::size_t size_ = 0;
+  bool mapped_ = false;
+};
+
+FileBytes read_file_bytes(const std::string& path);
 
 }  // namespace shadetool::io

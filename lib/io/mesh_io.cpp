@@ -80,8 +80,8 @@ Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::str
 Mesh read_mesh(const std::string& path, Format format, ReadInfo* info) {
   // The format is settled before the file is opened: a bad extension is reported as such.
   if (format == Format::Auto) format = format_from_extension(path);
-  const std::string bytes = io::read_file_bytes(path);
-  return read_mesh_from_memory(bytes, format, path, info);
+  const io::FileBytes bytes = io::read_file_bytes(path);
+  return read_mesh_from_memory(bytes.view(), format, path, info);
 }
 
 std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info) {

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/text_parse.h"
 
@@ -22,9 +23,10 @@ std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* wha
   if (idx > 0 && static_cast<std::uint64_t>(idx) <= count) return static_cast<std::uint32_t>(idx - 1);
   if (idx < 0 && static_cast<std::uint64_t>(-idx) <= count) return static_cast<std::uint32_t>(std::int64_t(count) + idx);
   if (idx == 0) fail(name, line, std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
+  const std::string plural = std::string(what) == "vertex" ? "vertices" : std::string(what) + "s";
   fail(name, line,
-       std::string(what) + " index " + std::to_string(idx) + " out of range (" + std::to_string(count) + " " + what +
-           (count == 1 ? "" : "s") + " defined so far)");
+       std::string(what) + " index " + std::to_string(idx) + " out of range (" + std::to_string(count) + " " +
+           (count == 1 ? std::string(what) : plural) + " defined so far)");
 }
 
 }  // namespace
@@ -41,10 +43,11 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
     fail(name, 1 + std::size_t(std::count(p, static_cast<const char*>(nul), '\n')),
          "binary data (a NUL byte) in an OBJ file: not a text mesh");
 
-  // A rough guess (a `v` line is ~30 bytes) keeps reallocation low without trusting the file.
-  mesh.positions.reserve(bytes.size() / 40 * 3);
-  mesh.corner_vertex.reserve(bytes.size() / 16);
-  mesh.face_start.reserve(bytes.size() / 48 + 1);
+  // Capacity guessed from the file size, generously (untouched capacity costs address space,
+  // not memory): a `v` line is >= 24 bytes in practice, a triangle line about 12 per corner.
+  reserve_bulk(mesh.positions, bytes.size() / 24 * 3);
+  reserve_bulk(mesh.corner_vertex, bytes.size() / 8);
+  reserve_bulk(mesh.face_start, bytes.size() / 24 + 1);
 
   std::vector<double> normals;                 // vn pool, 3 per entry
   std::vector<double> tex;                     // vt pool, 3 per entry (missing components 0)
@@ -53,6 +56,7 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
   int color_channels = 0;                      // 3 or 4 once seen
   std::size_t colored_vertices = 0;
   std::vector<std::uint32_t> cn, ct;           // per corner, kNone where absent (allocated lazily)
+  bool have_cn = false, have_ct = false;
   std::size_t corners_with_normal = 0, corners_with_tex = 0;
   std::size_t skipped_lines = 0;
   std::string skipped_keyword;
@@ -133,15 +137,17 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
           }
           if (q < eol && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
           if (nn != kNone) {
-            if (cn.empty()) cn.assign(mesh.corner_vertex.size() - 1, kNone);
+            if (!have_cn) cn.assign(mesh.corner_vertex.size() - 1, kNone);
+            have_cn = true;
             ++corners_with_normal;
           }
-          if (!cn.empty()) cn.push_back(nn);
+          if (have_cn) cn.push_back(nn);
           if (t != kNone) {
-            if (ct.empty()) ct.assign(mesh.corner_vertex.size() - 1, kNone);
+            if (!have_ct) ct.assign(mesh.corner_vertex.size() - 1, kNone);
+            have_ct = true;
             ++corners_with_tex;
           }
-          if (!ct.empty()) ct.push_back(t);
+          if (have_ct) ct.push_back(t);
         }
         const std::size_t size = mesh.corner_vertex.size() - first_corner;
         if (size < 3)

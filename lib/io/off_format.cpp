@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/split_corner_normals.h"
 #include "io/text_parse.h"
@@ -54,7 +55,10 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
 
   bool has_st = false, has_c = false, has_n = false;
   const char* q = b;
-  if (!(*b >= '0' && *b <= '9')) {  // the keyword is optional: a file may start with the counts
+  const char* first_end = b;
+  while (first_end < e && *first_end >= '0' && *first_end <= '9') ++first_end;
+  const bool starts_with_counts = first_end > b && (first_end == e || is_space(*first_end));
+  if (!starts_with_counts) {  // the keyword is optional: a file may start with the counts
     const char* kw = b;
     while (q < e && !is_space(*q)) ++q;
     std::string k(kw, q);
@@ -117,6 +121,7 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
   };
 
   const std::size_t per_vertex = 3 + (has_n ? 3 : 0);
+  reserve_bulk(mesh.positions, 3 * nv);
   mesh.positions.resize(3 * nv);
   if (has_n) mesh.vertex_normals.resize(3 * nv);
   std::vector<float> vrgba;
@@ -162,8 +167,8 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
                                    (has_c ? "C" : "") + (has_n ? "N" : "") + "OFF' declares");
   }
 
-  mesh.face_start.reserve(nf + 1);
-  mesh.corner_vertex.reserve(std::min<std::uint64_t>(3 * nf, lines.remaining()));
+  reserve_bulk(mesh.face_start, nf + 1);
+  reserve_bulk(mesh.corner_vertex, std::min<std::uint64_t>(3 * nf, lines.remaining()));
   std::vector<float> frgba;
   bool any_face_color = false;
   for (std::uint64_t f = 0; f < nf; ++f) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/split_corner_normals.h"
 #include "io/text_parse.h"
@@ -202,6 +203,91 @@ std::size_t min_item_bytes(const Element& e, Encoding enc) {
   return s;
 }
 
+// Fast path for binary vertex records of scalars only: the positions of every vertex, at fixed
+// offsets, by declared type (float x y z in native order, the common case, without a switch).
+// Other kept properties are left to the general loop, which then starts at 0; returns how many
+// vertices were read here (all of them, or 0).
+std::size_t read_binary_vertices_fast(const Element& e, BodyReader& in, Mesh& mesh) {
+  std::size_t record = 0, ox = 0, oy = 0, oz = 0;
+  bool only_xyz_float = true;
+  for (const auto& p : e.props) {
+    if (p.is_list) return 0;
+    if (p.target == Target::X) ox = record;
+    else if (p.target == Target::Y) oy = record;
+    else if (p.target == Target::Z) oz = record;
+    else if (p.target != Target::Skip) return 0;
+    if (p.target != Target::Skip && p.type != Type::Float32) only_xyz_float = false;
+    record += type_size(p.type);
+  }
+  const std::size_t n = std::size_t(e.count);
+  if (n == 0 || n * record > in.remaining()) return 0;  // the general loop reports the truncation
+  const char* base = in.pos();
+  reserve_bulk(mesh.positions, 3 * n);
+  mesh.positions.resize(3 * n);
+  double* out = mesh.positions.data();
+  if (only_xyz_float && !in.swap()) {
+    for (std::size_t i = 0; i < n; ++i, base += record) {
+      float x, y, z;
+      std::memcpy(&x, base + ox, 4);
+      std::memcpy(&y, base + oy, 4);
+      std::memcpy(&z, base + oz, 4);
+      out[3 * i] = x;
+      out[3 * i + 1] = y;
+      out[3 * i + 2] = z;
+    }
+  } else {
+    Type tx = Type::Float32, ty = Type::Float32, tz = Type::Float32;
+    for (const auto& p : e.props) {
+      if (p.target == Target::X) tx = p.type;
+      if (p.target == Target::Y) ty = p.type;
+      if (p.target == Target::Z) tz = p.type;
+    }
+    for (std::size_t i = 0; i < n; ++i, base += record) {
+      out[3 * i] = load_as_double(base + ox, tx, in.swap());
+      out[3 * i + 1] = load_as_double(base + oy, ty, in.swap());
+      out[3 * i + 2] = load_as_double(base + oz, tz, in.swap());
+    }
+  }
+  in.advance(n * record);
+  return n;
+}
+
+// Fast path for binary faces that are only `list uchar int|uint vertex_indices` holding
+// triangles: reads until the first face that is not a valid triangle (returns how many it read;
+// the general loop goes on from there and reports any error).
+std::size_t read_binary_triangles_fast(const Element& e, BodyReader& in, std::uint64_t nv, Mesh& mesh) {
+  if (e.props.size() != 1 || e.props[0].target != Target::Indices || e.props[0].count_type != Type::UInt8 ||
+      (e.props[0].type != Type::Int32 && e.props[0].type != Type::UInt32))
+    return 0;
+  const std::size_t n = std::size_t(e.count);
+  const bool swap = in.swap();
+  const char* p = in.pos();
+  const char* const end = in.end();
+  const std::size_t fit = std::min<std::size_t>(n, in.remaining() / 13);
+  if (mesh.corner_vertex.size() + 3 * fit >= std::numeric_limits<std::uint32_t>::max()) return 0;
+  const std::size_t first_corner = mesh.corner_vertex.size(), first_face = mesh.face_start.size();
+  reserve_bulk(mesh.corner_vertex, first_corner + 3 * fit);
+  reserve_bulk(mesh.face_start, first_face + fit);
+  mesh.corner_vertex.resize(first_corner + 3 * fit);
+  mesh.face_start.resize(first_face + fit);
+  std::uint32_t* cv = mesh.corner_vertex.data() + first_corner;
+  std::uint32_t* fs = mesh.face_start.data() + first_face;
+  std::size_t f = 0;
+  for (; f < fit && end - p >= 13 && p[0] == 3; ++f, p += 13) {
+    const std::uint32_t a = load<std::uint32_t>(p + 1, swap), b = load<std::uint32_t>(p + 5, swap),
+                        c = load<std::uint32_t>(p + 9, swap);
+    if (a >= nv || b >= nv || c >= nv) break;  // (negative int32 indices are huge as uint32)
+    cv[3 * f] = a;
+    cv[3 * f + 1] = b;
+    cv[3 * f + 2] = c;
+    fs[f] = std::uint32_t(first_corner + 3 * (f + 1));
+  }
+  mesh.corner_vertex.resize(first_corner + 3 * f);
+  mesh.face_start.resize(first_face + f);
+  in.advance(std::size_t(p - in.pos()));
+  return f;
+}
+
 }  // namespace
 
 Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
@@ -381,7 +467,6 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
   const bool has_vtex = vtex[0] && vtex[1];
   const int channels = ((has_vcolors && vcolor[3]) || (has_fcolors && fcolor[3])) ? 4 : 3;
   const std::uint64_t nv = vertex ? vertex->count : 0;
-  if (nv > std::numeric_limits<std::uint32_t>::max()) fail(name, vertex->line, "too many vertices (more than 2^32)");
 
   // ---- body
   BodyReader in(p, end, enc, name, line + 1);
@@ -393,12 +478,17 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       fail(name, e.line, "header claims " + std::to_string(e.count) + " " + e.name + " elements but only " +
                              std::to_string(in.remaining()) + " bytes of data follow");
     if (&e == vertex) {
+      if (nv > std::numeric_limits<std::uint32_t>::max()) fail(name, e.line, "too many vertices (more than 2^32)");
       const std::size_t n = std::size_t(e.count);
-      mesh.positions.assign(3 * n, 0.0);
+      std::size_t i = in.ascii() ? 0 : read_binary_vertices_fast(e, in, mesh);
+      if (i == 0) {
+        reserve_bulk(mesh.positions, 3 * n);
+        mesh.positions.assign(3 * n, 0.0);
+      }
       if (has_vnormals) mesh.vertex_normals.assign(3 * n, 0.0);
       if (has_vcolors) mesh.vertex_colors.assign(std::size_t(channels) * n, 1.0f);
       if (has_vtex) vtexcoords.assign(2 * n, 0.0);
-      for (std::size_t i = 0; i < n; ++i) {
+      for (; i < n; ++i) {
         for (const auto& prop : e.props) {
           if (prop.is_list) {
             const std::int64_t k = in.integer(prop.count_type, "a vertex list count");
@@ -427,13 +517,16 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       }
     } else if (&e == face) {
       const std::size_t n = std::size_t(e.count);
-      mesh.face_start.reserve(n + 1);
-      mesh.corner_vertex.reserve(std::min<std::size_t>(3 * n, in.remaining()));
+      reserve_bulk(mesh.face_start, n + 1);
+      reserve_bulk(mesh.corner_vertex, std::min<std::size_t>(3 * n, in.remaining()));
       if (has_fnormals) mesh.face_normals.assign(3 * n, 0.0);
       if (has_fcolors) mesh.face_colors.assign(std::size_t(channels) * n, 1.0f);
       std::vector<double> wedge;  // texcoord list of the current face
       std::vector<double> corner_tex;
-      for (std::size_t i = 0; i < n; ++i) {
+      std::size_t i = 0;
+      if (!in.ascii()) i = read_binary_triangles_fast(e, in, nv, mesh);
+      for (; i < n; ++i) {
+        if (in.ascii()) in.skip_ascii_space();
         const std::size_t item_line = in.line();
         bool have_wedge = false;
         wedge.clear();
@@ -541,7 +634,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
   mesh.color_channels = channels;
   mesh.colors_are_float = colors_float;
   mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
-  if (!any_double) {
+  if (!any_double && enc == Encoding::Ascii) {
     // Declared float: what a float holds (ascii text with more digits is narrowed like a binary file).
     for (auto* a : {&mesh.positions, &mesh.vertex_normals, &mesh.face_normals, &mesh.texcoords})
       for (double& x : *a) x = double(float(x));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/text_parse.h"
 
@@ -27,10 +28,6 @@ class PositionMerger {
 
   std::uint32_t add(double x, double y, double z) {
     if (std::isnan(x) || std::isnan(y) || std::isnan(z)) return append(x, y, z);  // NaN equals nothing
-    // -0 and +0 are the same position; hash them alike.
-    if (x == 0) x = 0;
-    if (y == 0) y = 0;
-    if (z == 0) z = 0;
     std::size_t h = hash(x, y, z) & (slots_.size() - 1);
     for (;;) {
       const std::uint32_t v = slots_[h];
@@ -57,7 +54,11 @@ class PositionMerger {
     std::memcpy(&u, &d, sizeof u);
     return u;
   }
+  // -0 and +0 are the same position (compared as values): they hash alike.
   static std::size_t hash(double x, double y, double z) {
+    x += 0.0;  // -0 + 0 = +0; every other value is unchanged
+    y += 0.0;
+    z += 0.0;
     std::uint64_t h = bits(x) * 0x9E3779B97F4A7C15ull;
     h ^= bits(y) + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2);
     h ^= bits(z) + 0x85EBCA77C2B2AE63ull + (h << 6) + (h >> 2);
@@ -114,9 +115,9 @@ Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
   Mesh mesh;
   mesh.precision = ValuePrecision::Float;
   PositionMerger merger(mesh, std::size_t(n) * 3 / 5);  // closed meshes: V ~ F/2 = 3n/6
-  mesh.positions.reserve(std::size_t(n) * 3 / 2 + 3);
-  mesh.corner_vertex.reserve(3 * std::size_t(n));
-  mesh.face_start.reserve(std::size_t(n) + 1);
+  reserve_bulk(mesh.positions, std::size_t(n) * 3 / 2 + 3);
+  reserve_bulk(mesh.corner_vertex, 3 * std::size_t(n));
+  reserve_bulk(mesh.face_start, std::size_t(n) + 1);
   std::vector<double> normals(3 * std::size_t(n));
   const char* p = bytes.data() + 84;
   for (std::uint32_t t = 0; t < n; ++t, p += 50) {
@@ -229,11 +230,18 @@ Mesh read_stl(std::string_view bytes, const std::string& name, ReadInfo& info) {
     const std::uint32_t n = load_le_u32(bytes.data() + 80);
     if (84 + 50 * std::uint64_t(n) == bytes.size()) return read_binary(bytes, n, info);
   }
+  // Ascii: starts with "solid" and reads as text. Many binary files also start with "solid" in
+  // their 80-byte header, but their counts and floats soon hold control bytes (0x00-0x08...).
   const char* p = bytes.data();
   const char* end = p + bytes.size();
   while (p < end && is_space_or_newline(*p)) ++p;
   if (end - p >= 5 && std::memcmp(p, "solid", 5) == 0 && (end - p == 5 || is_space_or_newline(p[5]))) {
-    return read_ascii(bytes, name, info);
+    bool text = true;
+    for (const char* q = bytes.data(); q < end && q < bytes.data() + 1024; ++q) {
+      const unsigned char c = static_cast<unsigned char>(*q);
+      text = text && (c >= 0x20 || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v');
+    }
+    if (text || bytes.size() < 84) return read_ascii(bytes, name, info);
   }
   if (bytes.size() >= 84) {
     const std::uint32_t n = load_le_u32(bytes.data() + 80);

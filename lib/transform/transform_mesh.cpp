@@ -1,0 +1,105 @@
+// transform_mesh.cpp: see transform_mesh.h.
+#include "transform/transform_mesh.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+#include "core/validate.h"
+#include "transform/parallel_ranges.h"
+#include "transform/recompute_normals.h"
+#include "transform/reverse_winding.h"
+#include "transform/transform_normals.h"
+
+namespace shadetool {
+
+namespace {
+
+void transform_positions(Mesh& mesh, const Affine3d& M, bool translate_only) {
+  double* data = mesh.positions.data();
+  const Affine3d map = M;  // by value: the loop reads locals, not through a reference
+  transform_detail::count_over_ranges(mesh.num_vertices(), [&](std::size_t begin, std::size_t end) {
+    double* p = data + 3 * begin;
+    if (translate_only) {
+      for (std::size_t v = begin; v < end; ++v, p += 3) {
+        p[0] += map.t.x;
+        p[1] += map.t.y;
+        p[2] += map.t.z;
+      }
+      return std::size_t(0);
+    }
+    const auto& A = map.A.m;
+    for (std::size_t v = begin; v < end; ++v, p += 3) {
+      const double x = p[0], y = p[1], z = p[2];
+      p[0] = A[0][0] * x + A[0][1] * y + A[0][2] * z + map.t.x;
+      p[1] = A[1][0] * x + A[1][1] * y + A[1][2] * z + map.t.y;
+      p[2] = A[2][0] * x + A[2][1] * y + A[2][2] * z + map.t.z;
+    }
+    return std::size_t(0);
+  });
+}
+
+bool has_any_normals(const Mesh& mesh) {
+  return mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals();
+}
+
+}  // namespace
+
+std::string singular_map_message(const AffineClass& c) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "det A = %.3g, |det A| / (|A|_F / sqrt 3)^3 = %.3g < %g", c.det, c.relative_det,
+                kSingularTolerance);
+  return std::string("the transform is singular or nearly so (") + buf +
+         "): normals have no reliable transform; drop or recompute them (--normals drop | --normals recompute)";
+}
+
+TransformReport transform_mesh(Mesh& mesh, const Affine3d& M, const TransformOptions& options, const std::string& name) {
+  TransformReport report;
+  report.affine = classify_affine(M);
+  const AffineClass& c = report.affine;
+  require_finite_positions(mesh, name);
+  const bool had_normals = has_any_normals(mesh);
+  if (c.path == TransformPath::Singular && options.normals == NormalsPolicy::Transform)
+    fail(name, 0, singular_map_message(c));
+
+  if (c.path != TransformPath::Identity) transform_positions(mesh, M, c.path == TransformPath::Translation);
+
+  switch (options.normals) {
+    case NormalsPolicy::Drop:
+      mesh.vertex_normals.clear();
+      mesh.corner_normals.clear();
+      mesh.corner_normal_index.clear();
+      mesh.face_normals.clear();
+      report.normals = had_normals ? "dropped" : "none";
+      break;
+    case NormalsPolicy::Transform: {
+      if (!had_normals) break;
+      const NormalMap nm = normal_map(M, c);
+      if (nm.untouched) {
+        report.normals = "untouched";
+        break;
+      }
+      for (auto* a : {&mesh.vertex_normals, &mesh.corner_normals, &mesh.face_normals}) {
+        report.normals_left += transform_normals(*a, nm);
+        report.normals_mapped += a->size() / 3;
+      }
+      report.normals_mapped -= report.normals_left;
+      report.normals = "transformed";
+      break;
+    }
+    case NormalsPolicy::Recompute:
+      break;  // after the winding
+  }
+
+  if (c.mirror) {
+    reverse_winding(mesh);
+    report.winding_reversed = true;
+  }
+
+  if (options.normals == NormalsPolicy::Recompute && had_normals) {
+    report.fallback_normals = recompute_normals(mesh);
+    report.normals = "recomputed";
+  }
+  return report;
+}
+
+}  // namespace shadetool

@@ -1,0 +1,58 @@
+// Tests of io/atomic_write and of write_mesh's promise: no output on error, an existing file is
+// untouched on failure and replaced whole on success, no temporary file left behind.
+#include <sys/stat.h>
+
+#include "io/atomic_write.h"
+#include "io_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::iotest;
+
+namespace {
+std::size_t files_in(const ScratchDir& d) {
+  std::size_t n = 0;
+  for (auto& e : std::filesystem::directory_iterator(d.path)) n += e.is_regular_file();
+  return n;
+}
+}  // namespace
+
+TEST_CASE("atomic write: replaces the whole file and leaves no temporary", "[atomic_write]") {
+  ScratchDir dir;
+  write_file(dir / "a.obj", "old contents that are longer than the new ones\n");
+  io::write_file_atomically(dir / "a.obj", "new\n");
+  CHECK(read_file(dir / "a.obj") == "new\n");
+  CHECK(files_in(dir) == 1);
+}
+
+TEST_CASE("atomic write: a new file gets the usual permissions, a replaced one keeps its mode", "[atomic_write]") {
+  ScratchDir dir;
+  const mode_t old = ::umask(022);
+  io::write_file_atomically(dir / "n.ply", "x");
+  struct stat st {};
+  ::stat((dir / "n.ply").c_str(), &st);
+  CHECK((st.st_mode & 0777) == 0644);
+  ::chmod((dir / "n.ply").c_str(), 0600);
+  io::write_file_atomically(dir / "n.ply", "y");
+  ::stat((dir / "n.ply").c_str(), &st);
+  CHECK((st.st_mode & 0777) == 0600);
+  ::umask(old);
+}
+
+TEST_CASE("atomic write: errors leave nothing and touch nothing", "[atomic_write][errors]") {
+  ScratchDir dir;
+  CHECK(error_of([&] { io::write_file_atomically(dir / "missing/a.obj", "x"); }) ==
+        dir / "missing/a.obj" + ": cannot write: No such file or directory");
+  std::filesystem::create_directory(dir / "d.obj");
+  CHECK(error_of([&] { io::write_file_atomically(dir / "d.obj", "x"); }) == dir / "d.obj" + ": cannot write: is a directory");
+  CHECK(files_in(dir) == 0);
+}
+
+TEST_CASE("write_mesh: a failing write leaves an existing output untouched", "[atomic_write][errors]") {
+  ScratchDir dir;
+  write_file(dir / "out.xyz", "precious");
+  Mesh m = rich_mesh();
+  CHECK(error_of([&] { write_mesh(m, dir / "out.xyz", WriteOptions{}); }) ==
+        dir / "out.xyz" + ": unknown mesh format 'xyz' (expected .obj, .ply, .off or .stl)");
+  CHECK(read_file(dir / "out.xyz") == "precious");
+  CHECK(files_in(dir) == 1);
+}

@@ -1,0 +1,112 @@
+// io_test_util.h: shared helpers of the io tests: a mesh with every attribute, a scratch
+// directory, file helpers and a way to run the CLI.
+#pragma once
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "core/error.h"
+#include "core/mesh.h"
+#include "io/mesh_io.h"
+
+namespace shadetool::iotest {
+
+namespace fs = std::filesystem;
+
+// A fresh directory under the system temp dir, removed at the end of the test.
+struct ScratchDir {
+  fs::path path;
+  ScratchDir() {
+    std::random_device rd;
+    path = fs::temp_directory_path() / ("shadetool-io-" + std::to_string(rd()) + std::to_string(rd()));
+    fs::create_directories(path);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  std::string operator/(const std::string& name) const { return (path / name).string(); }
+};
+
+inline void write_file(const std::string& path, const std::string& bytes) {
+  std::ofstream f(path, std::ios::binary);
+  f.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+inline std::string read_file(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// The message of the Error thrown by `f`, or "" when none was thrown.
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+inline Mesh read_text(const std::string& text, Format format, ReadInfo* info = nullptr, const std::string& name = "t") {
+  return read_mesh_from_memory(text, format, name, info);
+}
+
+// A small mesh with everything a reader can keep: a triangle, a quad and a pentagon sharing
+// edges (consistently wound, manifold, with a boundary), values that are not exact in binary
+// (0.1), per-corner normals (a pool shared by some corners), per-corner texcoords, vertex
+// colours and face colours. Values are floats (precision Float) so every format can carry them
+// exactly.
+inline Mesh rich_mesh() {
+  Mesh m;
+  const double P[7][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0.1}, {2.5, 0.5, 0.1}, {0.5, 2, 1e-3}};
+  for (auto& p : P) m.add_vertex({double(float(p[0])), double(float(p[1])), double(float(p[2]))});
+  m.add_face({0, 1, 3});
+  m.add_face({1, 4, 5, 2});
+  m.add_face({3, 1, 2, 5, 6});
+  const double N[3][3] = {{0, 0, 1}, {0.6, 0, 0.8}, {0, -0.28, 0.96}};
+  for (auto& n : N)
+    for (double x : n) m.corner_normals.push_back(double(float(x)));
+  m.corner_normal_index = {0, 0, 0, 0, 1, 1, 0, 2, 2, 2, 2, 0};
+  for (double t : {0.0, 0.0, 1.0, 0.0, 0.5, 0.25, 0.1, 0.9}) m.texcoords.push_back(double(float(t)));
+  m.corner_texcoord_index = {0, 1, 2, 1, 3, 2, 0, 1, 2, 3, 0, 1};
+  m.color_channels = 3;
+  m.colors_are_float = false;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v)
+    for (int k = 0; k < 3; ++k) m.vertex_colors.push_back(float((v * 37 + std::size_t(k) * 91) % 256) / 255.0f);
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) m.face_colors.push_back(float((f * 53 + std::size_t(k) * 17 + 5) % 256) / 255.0f);
+  m.precision = ValuePrecision::Float;
+  return m;
+}
+
+// Runs the shadetool binary through the shell; stdout and stderr go to files in `dir`.
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+inline Run run_cli(const std::string& args, const ScratchDir& dir) {
+  const std::string out = dir / "cli.stdout", err = dir / "cli.stderr";
+  const std::string cmd = std::string("'") + SHADETOOL_BIN + "' " + args + " > '" + out + "' 2> '" + err + "'";
+  const int status = std::system(cmd.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_file(out);
+  r.err = read_file(err);
+  return r;
+}
+
+inline std::string data_path(const std::string& name) { return std::string(SHADETOOL_SOURCE_DIR) + "/data/" + name; }
+
+}  // namespace shadetool::iotest

@@ -1,0 +1,190 @@
+// Tests of io/obj_format: every index form, relative indices, what is accepted and skipped, the
+// precision rule, shortest text output and the error messages (FILE:LINE: what).
+#include <cstring>
+
+#include "io_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::iotest;
+
+TEST_CASE("OBJ: all four face index forms resolve to the same 0-based corners", "[obj]") {
+  const std::string text =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+      "vn 0 0 1\n";
+  // i
+  Mesh a = read_text(text + "f 1 2 3 4\n", Format::Obj);
+  CHECK(a.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 3});
+  CHECK(!a.has_texcoords());
+  CHECK(!a.has_corner_normals());
+  // i/j
+  Mesh b = read_text(text + "f 1/4 2/3 3/2 4/1\n", Format::Obj);
+  CHECK(b.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 3});
+  CHECK(b.corner_texcoord_index == std::vector<std::uint32_t>{3, 2, 1, 0});
+  CHECK(b.texcoords == std::vector<double>{0, 0, 1, 0, 1, 1, 0, 1});
+  // i//k
+  Mesh c = read_text(text + "f 1//1 2//1 3//1 4//1\n", Format::Obj);
+  CHECK(c.corner_normal_index == std::vector<std::uint32_t>{0, 0, 0, 0});
+  CHECK(c.corner_normals == std::vector<double>{0, 0, 1});
+  CHECK(!c.has_texcoords());
+  // i/j/k
+  Mesh d = read_text(text + "f 1/1/1 2/2/1 3/3/1 4/4/1\n", Format::Obj);
+  CHECK(d.corner_texcoord_index == std::vector<std::uint32_t>{0, 1, 2, 3});
+  CHECK(d.corner_normal_index == std::vector<std::uint32_t>{0, 0, 0, 0});
+  CHECK(d.face_start == std::vector<std::uint32_t>{0, 4});
+}
+
+TEST_CASE("OBJ: negative indices count back from the last element defined so far", "[obj]") {
+  // After 4 vertices, -1 is vertex 4 (index 3); after the 5th, -1 is index 4.
+  Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf -4//-1 -3//-1 -2//-1\nv 2 2 0\nf -1 -2 -3\n", Format::Obj);
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 4, 3, 2});
+  // the second face has no normal: normals are dropped with a note (all corners or none)
+  CHECK(!m.has_corner_normals());
+}
+
+TEST_CASE("OBJ: polygons, duplicate faces and isolated vertices are kept in order", "[obj]") {
+  Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 2 0\nv 9 9 9\n"
+                     "f 1 2 3 5 4\nf 1 2 3\nf 1 2 3\n",
+                     Format::Obj);
+  CHECK(m.num_vertices() == 6);
+  CHECK(m.face_start == std::vector<std::uint32_t>{0, 5, 8, 11});
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 4, 3, 0, 1, 2, 0, 1, 2});
+}
+
+TEST_CASE("OBJ: comments, groups, materials, CRLF, tabs, blank lines and trailing spaces are accepted", "[obj]") {
+  const std::string text =
+      "# a comment\r\n"
+      "mtllib a.mtl\r\n"
+      "o thing\r\n"
+      "\r\n"
+      "g group one\r\n"
+      "   \t\r\n"
+      "v\t0 0 0   \r\n"
+      "v 1 0 0 # trailing comment\r\n"
+      "v  1  1  0\t\r\n"
+      "usemtl red\r\n"
+      "s 1\r\n"
+      "s off\r\n"
+      "f 1 2 3   \r\n"
+      "f 3 2 1";  // no final newline
+  ReadInfo info;
+  Mesh m = read_text(text, Format::Obj, &info);
+  CHECK(m.num_vertices() == 3);
+  CHECK(m.num_faces() == 2);
+  CHECK(m.positions == std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0});
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 2, 1, 0});
+  CHECK(info.notes.empty());
+}
+
+TEST_CASE("OBJ: unknown keywords are skipped with one note", "[obj]") {
+  ReadInfo info;
+  Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\np 1\nf 1 2 3\n", Format::Obj, &info);
+  CHECK(m.num_faces() == 1);
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0].find("skipped 2 lines") != std::string::npos);
+  CHECK(info.notes[0].find("'l'") != std::string::npos);
+}
+
+TEST_CASE("OBJ: vertex colours after xyz, w ignored", "[obj]") {
+  Mesh m = read_text("v 0 0 0 1 0.5 0.25\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n", Format::Obj);
+  REQUIRE(m.has_vertex_colors());
+  CHECK(m.color_channels == 3);
+  CHECK(m.colors_are_float);
+  CHECK(m.vertex_colors == std::vector<float>{1, 0.5f, 0.25f, 0, 1, 0, 0, 0, 1});
+  Mesh w = read_text("v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 1 2 3\n", Format::Obj);
+  CHECK(!w.has_vertex_colors());
+  CHECK(w.positions == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0});
+}
+
+TEST_CASE("OBJ: precision follows the digits: <= 9 significant digits is float data", "[obj]") {
+  Mesh f = read_text("v 0.1 0.2 0.3\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", Format::Obj);
+  CHECK(f.precision == ValuePrecision::Float);
+  CHECK(f.positions[0] == double(0.1f));  // narrowed to what a float holds
+  Mesh d = read_text("v 0.10000000000000001 0.2 0.3\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", Format::Obj);
+  CHECK(d.precision == ValuePrecision::Double);
+  CHECK(d.positions[0] == 0.1);  // the double nearest to the text
+  CHECK(d.positions[1] == 0.2);
+  // trailing zeros do not count as digits
+  Mesh z = read_text("v 0.500000000000000 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", Format::Obj);
+  CHECK(z.precision == ValuePrecision::Float);
+}
+
+TEST_CASE("OBJ: NaN and Inf coordinates are read (info reports them)", "[obj]") {
+  Mesh m = read_text("v nan 0 0\nv inf 0 0\nv 0 -inf 0\nf 1 2 3\n", Format::Obj);
+  CHECK(std::isnan(m.positions[0]));
+  CHECK(std::isinf(m.positions[3]));
+  CHECK(m.positions[7] == -INFINITY);
+}
+
+TEST_CASE("OBJ writer: shortest text that reads back exactly", "[obj]") {
+  Mesh m;
+  m.add_vertex({double(0.1f), double(1.0f / 3.0f), -2.5});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_face({0, 1, 2});
+  m.precision = ValuePrecision::Float;
+  WriteOptions o;
+  o.format = Format::Obj;
+  const std::string text = write_mesh_to_memory(m, o);
+  CHECK(text.find("v 0.1 0.33333334 -2.5\n") != std::string::npos);
+  CHECK(text.find("f 1 2 3\n") != std::string::npos);
+  // double data: 17 significant digits where needed, never more than needed
+  m.positions[0] = 0.1;
+  m.positions[1] = 1.0 / 3.0;
+  m.precision = ValuePrecision::Double;
+  const std::string dtext = write_mesh_to_memory(m, o);
+  CHECK(dtext.find("v 0.1 0.3333333333333333 -2.5\n") != std::string::npos);
+  Mesh back = read_text(dtext, Format::Obj);
+  CHECK(back.precision == ValuePrecision::Double);
+  CHECK(back.positions == m.positions);
+}
+
+TEST_CASE("OBJ writer: normals as vn pool, per vertex or per face; texcoords as vt", "[obj]") {
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_face({0, 1, 2});
+  WriteOptions o;
+  o.format = Format::Obj;
+  m.face_normals = {0, 0, 1};
+  std::string t = write_mesh_to_memory(m, o);
+  CHECK(t.find("vn 0 0 1\n") != std::string::npos);
+  CHECK(t.find("f 1//1 2//1 3//1\n") != std::string::npos);
+  m.vertex_normals = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  t = write_mesh_to_memory(m, o);
+  CHECK(t.find("f 1//1 2//2 3//3\n") != std::string::npos);
+  m.texcoords = {0, 0, 1, 0};
+  m.corner_texcoord_index = {0, 1, 1};
+  t = write_mesh_to_memory(m, o);
+  CHECK(t.find("vt 1 0\n") != std::string::npos);
+  CHECK(t.find("f 1/1/1 2/2/2 3/2/3\n") != std::string::npos);
+}
+
+TEST_CASE("OBJ: errors name the file and line", "[obj][errors]") {
+  auto err = [](const std::string& text) { return error_of([&] { read_text(text, Format::Obj, nullptr, "m.obj"); }); };
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n") == "m.obj:4: vertex index 4 out of range (3 vertices defined so far)");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n") == "m.obj:4: vertex index -4 out of range (3 vertices defined so far)");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n") == "m.obj:4: vertex index 0 is invalid (OBJ indices start at 1)");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2 2/1 3/1\n") == "m.obj:4: texcoord index 2 out of range (0 texcoords defined so far)");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n") ==
+        "m.obj:5: normal index 2 out of range (1 normal defined so far)");
+  CHECK(err("v 0 0 0\nv 1 0 0\nf 1 2\n") == "m.obj:3: face has 2 vertices (a face needs at least 3)");
+  CHECK(err("v 0 0 0\nf 1\n") == "m.obj:2: face has 1 vertex (a face needs at least 3)");
+  CHECK(err("v 0 0\n") == "m.obj:1: v has 2 values (need x y z)");
+  CHECK(err("v 0 0 0\nv 1 0x 0\n") == "m.obj:2: malformed number '0x'");
+  CHECK(err("v 0 0 0\nv 1 0 1.5.2\n") == "m.obj:2: malformed number '1.5.2'");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n") == "m.obj:4: malformed face index 'x'");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3a\n") == "m.obj:4: malformed face index '3a'");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0 0\n") == "m.obj:5: vn has 2 values (need x y z)");
+  CHECK(err("# nothing\r\n\r\nv 1 2 3\r\nv 1 2 e\r\n") == "m.obj:4: malformed number 'e'");
+}
+
+TEST_CASE("OBJ: mixed presence of vn or vt drops them with a note", "[obj]") {
+  ReadInfo info;
+  Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nf 1/1/1 2/1/1 3/1/1\nf 1 2 3\n", Format::Obj, &info);
+  CHECK(!m.has_corner_normals());
+  CHECK(!m.has_texcoords());
+  REQUIRE(info.notes.size() == 2);
+  CHECK(info.notes[0] == "normals (vn) dropped: 3 of 6 face corners have none");
+}

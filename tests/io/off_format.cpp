@@ -1,0 +1,66 @@
+// Tests of io/off_format: header variants, counts placement, comments, colours (integers and
+// floats), polygons, and the error messages.
+#include "io_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::iotest;
+
+TEST_CASE("OFF: plain, with comments, counts on the keyword line, polygons", "[off]") {
+  Mesh m = read_text("# comment\nOFF 4 2 0\n\n0 0 0\n1 0 0 # c\n1 1 0\n0 1 0\n4 0 1 2 3\n3 0 2 1\n", Format::Off);
+  CHECK(m.positions == std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+  CHECK(m.face_start == std::vector<std::uint32_t>{0, 4, 7});
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 3, 0, 2, 1});
+  CHECK(m.precision == ValuePrecision::Float);
+  Mesh n = read_text("3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", Format::Off);  // keyword is optional
+  CHECK(n.num_faces() == 1);
+}
+
+TEST_CASE("OFF: NOFF normals, COFF integer and float colours, face colours", "[off]") {
+  Mesh n = read_text("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0.6 0 0.8\n3 0 1 2\n", Format::Off);
+  CHECK(n.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, 1, double(0.6f), 0, double(0.8f)});
+  Mesh c = read_text("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 51 255\n3 0 1 2 10 20 30\n", Format::Off);
+  CHECK(c.color_channels == 4);
+  CHECK(!c.colors_are_float);
+  CHECK(c.vertex_colors == std::vector<float>{1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 0.2f, 1});
+  CHECK(c.face_colors == std::vector<float>{10 / 255.0f, 20 / 255.0f, 30 / 255.0f, 1});
+  Mesh f = read_text("COFF\n3 1 0\n0 0 0 1.0 0.5 0\n1 0 0 0 1.0 0\n0 1 0 0 0 1.0\n3 0 1 2\n", Format::Off);
+  CHECK(f.colors_are_float);
+  CHECK(f.color_channels == 3);
+  CHECK(f.vertex_colors == std::vector<float>{1, 0.5f, 0, 0, 1, 0, 0, 0, 1});
+}
+
+TEST_CASE("OFF writer: header letters follow the attributes; round trip of colours", "[off]") {
+  Mesh m = rich_mesh();
+  WriteOptions o;
+  o.format = Format::Off;
+  WriteInfo wi;
+  const std::string text = write_mesh_to_memory(m, o, &wi);
+  CHECK(text.rfind("CNOFF\n11 3 0\n", 0) == 0);  // corner normals split into 4 more vertices
+  CHECK(wi.split_vertices == 4);
+  Mesh back = read_text(text, Format::Off);
+  CHECK(back.face_colors == m.face_colors);
+  for (std::size_t c = 0; c < m.num_corners(); ++c) {
+    const auto v = back.corner_vertex[c];
+    for (int k = 0; k < 3; ++k)
+      CHECK(back.vertex_colors[3 * v + std::size_t(k)] == m.vertex_colors[3 * m.corner_vertex[c] + std::size_t(k)]);
+  }
+}
+
+TEST_CASE("OFF: errors name the file and line", "[off][errors]") {
+  auto err = [](const std::string& text) { return error_of([&] { read_text(text, Format::Off, nullptr, "m.off"); }); };
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").empty());
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n") == "m.off:6: vertex index 3 out of range (3 vertices)");
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n") == "m.off:6: vertex index -1 out of range (3 vertices)");
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n") == "m.off:6: face has 2 vertices (a face needs at least 3)");
+  CHECK(err("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") == "m.off:6: file ends after 1 of 2 faces");
+  CHECK(err("OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") == "m.off:6: vertex line has more values than the header 'OFF' declares");
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n") ==
+        "m.off:7: more data than the header declares ('3' after the last face)");
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1\n3 0 1 2\n") == "m.off:5: vertex line has 2 values, expected 3 (x y z)");
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 z\n3 0 1 2\n") == "m.off:5: malformed number 'z'");
+  CHECK(err("OFF\n3 x 0\n") == "m.off:2: malformed count 'x' (expected: #vertices #faces #edges)");
+  CHECK(err("4OFF\n") == "m.off:1: unsupported OFF variant '4OFF' (supported: [ST][C][N]OFF)");
+  CHECK(err("PLY\n") == "m.off:1: not an OFF file (header is 'PLY')");
+  CHECK(err("OFF BINARY\n3 1 0\n") == "m.off:1: binary OFF is not supported");
+  CHECK(err("OFF\n1099511627776 1 0\n0 0 0\n").find("m.off:2: header claims 1099511627776 vertices") == 0);
+}

@@ -1,0 +1,260 @@
+// Tests of io/ply_format: ascii and both binary byte orders built by hand here (not by our
+// writer), every count/index type, skipped elements and properties, colours, face attributes,
+// bounded counts and the error messages.
+#include <algorithm>
+#include <cstring>
+
+#include "io_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::iotest;
+
+namespace {
+
+// Appends a value's bytes in the chosen byte order.
+struct Bytes {
+  std::string s;
+  bool big = false;
+  template <class T>
+  Bytes& put(T v) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof v);
+    const std::uint16_t one = 1;
+    char host_little;
+    std::memcpy(&host_little, &one, 1);
+    if (big == (host_little == 1)) std::reverse(b, b + sizeof(T));
+    s.append(b, sizeof(T));
+    return *this;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("PLY ascii: positions, normals, uchar colours with alpha, face colours and normals, skipped parts", "[ply]") {
+  const std::string text =
+      "ply\n"
+      "format ascii 1.0\n"
+      "comment made by hand\n"
+      "obj_info nothing\n"
+      "element vertex 4\n"
+      "property float x\n"
+      "property float y\n"
+      "property float z\n"
+      "property float quality\n"
+      "property float nx\n"
+      "property float ny\n"
+      "property float nz\n"
+      "property uchar red\n"
+      "property uchar green\n"
+      "property uchar blue\n"
+      "property uchar alpha\n"
+      "property list uchar int extra\n"
+      "element material 2\n"
+      "property list uint float values\n"
+      "element face 2\n"
+      "property list uchar uint vertex_index\n"
+      "property double nx\n"
+      "property double ny\n"
+      "property double nz\n"
+      "property uchar red\n"
+      "property uchar green\n"
+      "property uchar blue\n"
+      "end_header\n"
+      "0 0 0 7 0 0 1 255 0 0 255 0\n"
+      "1 0 0 7 0 0 1 0 255 0 128 2 5 6\n"
+      "1 1 0 7 0 0 1 0 0 255 0 1 9\n"
+      "0.5 0.25 0.125 7 0 0 1 51 102 153 255 0\n"
+      "3 1.5 2.5 3.5\n"
+      "0\n"
+      "3 0 1 2 0 0 1 10 20 30\n"
+      "4 0 1 2 3 0.6 0 0.8 255 255 255\n";
+  ReadInfo info;
+  Mesh m = read_text(text, Format::Ply, &info);
+  CHECK(m.positions == std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0.5, 0.25, 0.125});
+  CHECK(m.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+  CHECK(m.color_channels == 4);
+  CHECK(!m.colors_are_float);
+  CHECK(m.vertex_colors[0] == 1.0f);
+  CHECK(m.vertex_colors[7] == 128.0f / 255.0f);
+  CHECK(m.vertex_colors[12] == 51.0f / 255.0f);
+  CHECK(m.face_start == std::vector<std::uint32_t>{0, 3, 7});
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 0, 1, 2, 3});
+  // face nx ny nz declared double: kept in double
+  CHECK(m.precision == ValuePrecision::Double);
+  CHECK(m.face_normals == std::vector<double>{0, 0, 1, 0.6, 0, 0.8});
+  REQUIRE(m.face_colors.size() == 8);
+  CHECK(m.face_colors[0] == 10.0f / 255.0f);
+  CHECK(m.face_colors[3] == 1.0f);  // no face alpha: opaque
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0] == "skipped 2 'material' elements");
+}
+
+TEST_CASE("PLY binary: little- and big-endian with mixed count and index types", "[ply]") {
+  for (bool big : {false, true}) {
+    Bytes b;
+    b.big = big;
+    b.s = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+          " 1.0\n"
+          "element vertex 4\n"
+          "property double x\nproperty double y\nproperty double z\n"
+          "property short flags\n"
+          "property float red\nproperty float green\nproperty float blue\n"
+          "element edge 1\nproperty int a\nproperty int b\n"
+          "element face 2\n"
+          "property list ushort ushort vertex_indices\n"
+          "property list int float texcoord\n"
+          "end_header\n";
+    const double P[4][3] = {{0.1, 0.2, 0.3}, {1, 0, 0}, {1, 1, 0}, {-1e-300, 1e300, 0}};
+    for (auto& p : P) {
+      b.put(p[0]).put(p[1]).put(p[2]).put<std::int16_t>(-7).put(0.25f).put(0.5f).put(1.0f);
+    }
+    b.put<std::int32_t>(0).put<std::int32_t>(1);
+    b.put<std::uint16_t>(3).put<std::uint16_t>(0).put<std::uint16_t>(1).put<std::uint16_t>(2);
+    b.put<std::int32_t>(6);
+    for (float t : {0.0f, 0.0f, 1.0f, 0.0f, 1.0f, 1.0f}) b.put(t);
+    b.put<std::uint16_t>(4).put<std::uint16_t>(3).put<std::uint16_t>(2).put<std::uint16_t>(1).put<std::uint16_t>(0);
+    b.put<std::int32_t>(8);
+    for (float t : {0.5f, 0.5f, 0.25f, 0.25f, 0.125f, 0.125f, 0.0f, 1.0f}) b.put(t);
+    ReadInfo info;
+    Mesh m = read_text(b.s, Format::Ply, &info);
+    CHECK(m.precision == ValuePrecision::Double);
+    CHECK(m.positions == std::vector<double>{0.1, 0.2, 0.3, 1, 0, 0, 1, 1, 0, -1e-300, 1e300, 0});
+    CHECK(m.colors_are_float);
+    CHECK(m.vertex_colors == std::vector<float>{0.25f, 0.5f, 1, 0.25f, 0.5f, 1, 0.25f, 0.5f, 1, 0.25f, 0.5f, 1});
+    CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 3, 2, 1, 0});
+    CHECK(m.texcoords == std::vector<double>{0, 0, 1, 0, 1, 1, 0.5, 0.5, 0.25, 0.25, 0.125, 0.125, 0, 1});
+    CHECK(m.corner_texcoord_index == std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6});
+  }
+}
+
+TEST_CASE("PLY binary float: values are the stored floats, bitwise", "[ply]") {
+  Bytes b;
+  b.s = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const float v[9] = {0.1f, 0.2f, 0.3f, 1e-40f /* subnormal */, -0.0f, 3.4e38f, 1, 1, 1};
+  for (float x : v) b.put(x);
+  b.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+  Mesh m = read_text(b.s, Format::Ply);
+  CHECK(m.precision == ValuePrecision::Float);
+  for (int i = 0; i < 9; ++i) {
+    const float back = float(m.positions[std::size_t(i)]);
+    CHECK(std::memcmp(&back, &v[i], sizeof back) == 0);
+  }
+}
+
+TEST_CASE("PLY writer: binary by default, ascii on request, value and colour types follow the mesh", "[ply]") {
+  Mesh m = rich_mesh();
+  WriteOptions o;
+  o.format = Format::Ply;
+  WriteInfo wi;
+  const std::string bin = write_mesh_to_memory(m, o, &wi);
+  CHECK(bin.find("format binary_little_endian 1.0\n") != std::string::npos);
+  CHECK(bin.find("property float x\n") != std::string::npos);
+  CHECK(bin.find("property uchar red\n") != std::string::npos);
+  CHECK(bin.find("property list uchar int vertex_indices\n") != std::string::npos);
+  CHECK(bin.find("property list uchar float texcoord\n") != std::string::npos);
+  o.binary = false;
+  m.precision = ValuePrecision::Double;
+  m.colors_are_float = true;
+  const std::string asc = write_mesh_to_memory(m, o);
+  CHECK(asc.find("format ascii 1.0\n") != std::string::npos);
+  CHECK(asc.find("property double x\n") != std::string::npos);
+  CHECK(asc.find("property float red\n") != std::string::npos);
+}
+
+TEST_CASE("PLY: corner normals are split into vertices on write", "[ply]") {
+  Mesh m = rich_mesh();
+  WriteOptions o;
+  o.format = Format::Ply;
+  WriteInfo wi;
+  const std::string bytes = write_mesh_to_memory(m, o, &wi);
+  // distinct (vertex, normal) pairs: v0 {0}, v1 {0,2}, v2 {0,2}, v3 {0,2}, v4 {1}, v5 {1,2}, v6 {0}
+  CHECK(wi.split_vertices == 4);
+  Mesh back = read_text(bytes, Format::Ply);
+  CHECK(back.num_vertices() == 11);
+  REQUIRE(back.has_vertex_normals());
+  for (std::size_t c = 0; c < m.num_corners(); ++c) {
+    CHECK(back.position(back.corner_vertex[c]) == m.position(m.corner_vertex[c]));
+    CHECK(get3(back.vertex_normals, back.corner_vertex[c]) == get3(m.corner_normals, m.corner_normal_index[c]));
+  }
+}
+
+TEST_CASE("PLY: bad input is refused with FILE:LINE messages, never a huge allocation", "[ply][errors]") {
+  auto err = [](const std::string& text) { return error_of([&] { read_text(text, Format::Ply, nullptr, "m.ply"); }); };
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").empty());
+  CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n") == "m.ply:13: face 0 of 1: vertex index 3 out of range (3 vertices)");
+  CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n") == "m.ply:13: face 0 of 1: vertex index -1 out of range (3 vertices)");
+  CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n") == "m.ply:13: face 0 of 1 has 2 vertices (a face needs at least 3)");
+  CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n") == "m.ply:13: file ends early, in a face list count");
+  CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n") ==
+        "m.ply:14: more data than the header declares ('3' after the last element)");
+  CHECK(err(head + "0 0 0\n1 0 0\n0 1 nan\n3 0 1 2\n").empty());  // NaN is read, info reports it
+  CHECK(err(head + "0 0 0\n1 0 0\n0 1 0.0.1\n3 0 1 2\n") == "m.ply:12: malformed number '0.0.1' in vertex data");
+  CHECK(err("ply\nformat ascii 1.0\nelement vertex 3\n") == "m.ply:3: PLY header has no end_header");
+  CHECK(err("plyx\n") == "m.ply:1: not a PLY file (first line is not 'ply')");
+  CHECK(err("ply\nformat binary_middle_endian 1.0\nend_header\n") == "m.ply:2: unknown PLY format 'binary_middle_endian'");
+  CHECK(err("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n") == "m.ply:4: unknown property type 'quad'");
+  CHECK(err("ply\nformat ascii 1.0\nelement vertex 1\nproperty float y\nproperty float z\nend_header\n0 0\n") ==
+        "m.ply:3: vertex element has no x, y and z properties");
+  // A header claiming 2^40 vertices fails before allocating anything.
+  const std::string huge = "ply\nformat binary_little_endian 1.0\nelement vertex 1099511627776\nproperty float x\n"
+                           "property float y\nproperty float z\nend_header\n" + std::string(120, '\0');
+  CHECK(err(huge) == "m.ply:3: header claims 1099511627776 vertex elements but only 120 bytes of data follow");
+  CHECK(err("ply\nformat ascii 1.0\nelement vertex 1099511627776\nproperty float x\nproperty float y\nproperty float z\n"
+            "end_header\n0 0 0\n")
+            .find("m.ply:3: header claims 1099511627776 vertex elements") == 0);
+}
+
+TEST_CASE("PLY binary: truncated bodies and counts that disagree with the body", "[ply][errors]") {
+  auto err = [](const std::string& text) { return error_of([&] { read_text(text, Format::Ply, nullptr, "m.ply"); }); };
+  Bytes b;
+  b.s = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  for (int i = 0; i < 9; ++i) b.put(float(i));
+  const std::string vertices_only = b.s;
+  b.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+  CHECK(err(b.s).empty());
+  CHECK(err(b.s.substr(0, b.s.size() - 2)) == "m.ply: file is truncated: it ends in face 0 of 1");
+  CHECK(err(vertices_only.substr(0, vertices_only.size() - 5)) ==
+        "m.ply:3: header claims 3 vertex elements but only 31 bytes of data follow");
+  CHECK(err(b.s + std::string("\x01\x02", 2)) == "m.ply: 2 bytes after the last element: the header counts disagree with the body");
+  CHECK(err(b.s + "\n").empty());  // a trailing newline is tolerated
+  // a list count far beyond the bytes left
+  Bytes c;
+  c.s = vertices_only;
+  c.put<std::uint8_t>(200).put<std::int32_t>(0);
+  CHECK(err(c.s) == "m.ply: file is truncated: it ends in face 0 of 1");
+}
+
+TEST_CASE("PLY binary fast paths: triangles then a quad, both byte orders, errors mid-stream", "[ply]") {
+  for (bool big : {false, true}) {
+    Bytes b;
+    b.big = big;
+    b.s = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+          " 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+          "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+    for (int i = 0; i < 15; ++i) b.put(float(i) * 0.5f);
+    const std::string vertices = b.s;
+    b.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+    b.put<std::uint8_t>(4).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2).put<std::int32_t>(3);
+    b.put<std::uint8_t>(3).put<std::int32_t>(2).put<std::int32_t>(3).put<std::int32_t>(4);
+    b.put<std::uint8_t>(3).put<std::int32_t>(4).put<std::int32_t>(3).put<std::int32_t>(0);
+    Mesh m = read_text(b.s, Format::Ply);
+    CHECK(m.positions[3] == 1.5);
+    CHECK(m.positions[14] == 7.0);
+    CHECK(m.face_start == std::vector<std::uint32_t>{0, 3, 7, 10, 13});
+    CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 0, 1, 2, 3, 2, 3, 4, 4, 3, 0});
+    // an index out of range after good triangles is reported for its face
+    Bytes c;
+    c.big = big;
+    c.s = vertices;
+    c.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+    c.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(5).put<std::int32_t>(2);
+    c.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(-1).put<std::int32_t>(2);
+    c.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+    CHECK(error_of([&] { read_text(c.s, Format::Ply, nullptr, "m.ply"); }) ==
+          "m.ply: face 1 of 4: vertex index 5 out of range (5 vertices)");
+  }
+}

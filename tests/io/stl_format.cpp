@@ -1,0 +1,124 @@
+// Tests of io/stl_format: binary and ascii bytes built here, merging of identical positions,
+// facet normals, fan triangulation on write, and the error messages.
+#include <array>
+#include <cstring>
+#include <limits>
+
+#include "io_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::iotest;
+
+namespace {
+
+std::string binary_stl(const std::vector<std::array<float, 12>>& facets, std::uint32_t claimed) {
+  std::string s(80, ' ');
+  s.replace(0, 5, "solid");  // binary files may start with "solid": the size decides
+  char n[4];
+  std::memcpy(n, &claimed, 4);  // tests run on little-endian hosts (x86, arm64)
+  s.append(n, 4);
+  for (auto& f : facets) {
+    for (float x : f) {
+      char b[4];
+      std::memcpy(b, &x, 4);
+      s.append(b, 4);
+    }
+    s.append(2, '\0');
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("STL binary: identical positions merge into shared vertices", "[stl]") {
+  // two triangles of the unit square sharing the diagonal (0,0,0)-(1,1,0)
+  const std::string bytes = binary_stl({{0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 0}, {0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 0}}, 2);
+  ReadInfo info;
+  Mesh m = read_text(bytes, Format::Stl, &info);
+  CHECK(m.num_vertices() == 4);
+  CHECK(m.num_faces() == 2);
+  CHECK(info.merged_vertices == 2);
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0] == "merged 2 corners with identical positions into 4 shared vertices");
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
+  CHECK(m.positions == std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+  CHECK(m.face_normals == std::vector<double>{0, 0, 1, 0, 0, 1});
+  CHECK(m.precision == ValuePrecision::Float);
+}
+
+TEST_CASE("STL: -0 and 0 are one position, NaN is never merged, zero normals are not kept", "[stl]") {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::string bytes =
+      binary_stl({{0, 0, 0, 0, 0, 0, 1, 0, 0, nan, 1, 0}, {0, 0, 0, -0.0f, -0.0f, -0.0f, nan, 1, 0, 1, 0, 0}}, 2);
+  ReadInfo info;
+  Mesh m = read_text(bytes, Format::Stl, &info);
+  CHECK(m.num_vertices() == 4);  // (0,0,0), (1,0,0), two NaN vertices
+  CHECK(info.merged_vertices == 2);
+  CHECK(!m.has_face_normals());
+}
+
+TEST_CASE("STL ascii: facets, several solids, polygons kept, merging", "[stl]") {
+  const std::string text =
+      "solid one\n"
+      "  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 0 0\n      vertex 1 1 0\n"
+      "    endloop\n  endfacet\n"
+      "endsolid one\n"
+      "solid two\r\n"
+      "facet normal 0 0 1\r\nouter loop\r\nvertex 0 0 0\r\nvertex 1 1 0\r\nvertex 0 1 0\r\nvertex -1 0.5 0\r\nendloop\r\nendfacet\r\n"
+      "endsolid two\r\n";
+  ReadInfo info;
+  Mesh m = read_text(text, Format::Stl, &info);
+  CHECK(m.num_vertices() == 5);
+  CHECK(m.face_start == std::vector<std::uint32_t>{0, 3, 7});
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 4});
+  CHECK(info.merged_vertices == 2);
+}
+
+TEST_CASE("STL writer: fans for polygons, computed unit normals, binary layout", "[stl]") {
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({2, 0, 0});
+  m.add_vertex({2, 2, 0});
+  m.add_vertex({0, 2, 0});
+  m.add_face({0, 1, 2, 3});
+  WriteOptions o;
+  o.format = Format::Stl;
+  WriteInfo wi;
+  const std::string bin = write_mesh_to_memory(m, o, &wi);
+  REQUIRE(bin.size() == 84 + 2 * 50);
+  CHECK(bin.compare(0, 5, "solid") != 0);  // a binary header must not look like ascii
+  float first[12];
+  std::memcpy(first, bin.data() + 84, sizeof first);
+  // normal (0,0,1): cross((2,0,0),(2,2,0)) = (0,0,4), length 4
+  CHECK(first[0] == 0.0f);
+  CHECK(first[1] == 0.0f);
+  CHECK(first[2] == 1.0f);
+  CHECK(first[9] == 2.0f);  // third corner of the first fan triangle: (2,2,0)
+  REQUIRE(wi.notes.size() == 1);
+  CHECK(wi.notes[0] == "split 1 polygons into triangle fans for STL");
+  o.binary = false;
+  const std::string text = write_mesh_to_memory(m, o);
+  CHECK(text.find("facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 2 0 0\nvertex 2 2 0\nendloop\nendfacet\n") !=
+        std::string::npos);
+  Mesh back = read_text(text, Format::Stl);
+  CHECK(back.num_vertices() == 4);
+  CHECK(back.num_faces() == 2);
+}
+
+TEST_CASE("STL: errors", "[stl][errors]") {
+  auto err = [](const std::string& text) { return error_of([&] { read_text(text, Format::Stl, nullptr, "m.stl"); }); };
+  const std::string good = binary_stl({{0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 0}}, 1);
+  CHECK(err(good).empty());
+  CHECK(err(good.substr(0, good.size() - 1)) ==
+        "m.stl: binary STL header says 1 triangles (134 bytes) but the file has 133 bytes: truncated or not STL");
+  CHECK(err(binary_stl({}, 1000000000)) ==
+        "m.stl: binary STL header says 1000000000 triangles (50000000084 bytes) but the file has 84 bytes: truncated or not STL");
+  CHECK(err("hello") == "m.stl: not an STL file (too short for binary STL and no 'solid' keyword)");
+  CHECK(err("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid\n") ==
+        "m.stl:6: facet has 2 vertices (a face needs at least 3)");
+  CHECK(err("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 q\n") == "m.stl:5: malformed number 'q'");
+  CHECK(err("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n") == "m.stl:5: file ends inside a facet");
+  CHECK(err("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nendloop\nendfacet\n") ==
+        "m.stl:9: file ends inside a solid (no endsolid)");
+  CHECK(err("solid x\nfacet normal 0 0 1\nouter lop\n") == "m.stl:3: expected 'loop', found 'lop'");
+}
