@@ -68,7 +68,7 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
     if (b == eol || *b == '#') return false;
     q = b;
     if (!parse_double(q, eol, x)) fail(name, line, "malformed number '" + token_at(b, eol) + "'");
-    if (!any_double && has_more_digits_than_float(b, q)) any_double = true;
+    if (!any_double && (has_more_digits_than_float(b, q) || outside_float_range(x))) any_double = true;
     return true;
   };
 

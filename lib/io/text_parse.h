@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -77,6 +78,15 @@ inline bool has_more_digits_than_float(const char* b, const char* e) {
     if (c != '0') significant = counted;
   }
   return significant > 9;
+}
+
+// True when x is finite but float cannot hold it: beyond float's range (it would become Inf) or
+// below its smallest normal (it would lose precision or become 0). Text with such values is kept
+// in double, whatever its number of digits ("1e300" has one).
+inline bool outside_float_range(double x) {
+  const double a = x < 0 ? -x : x;
+  return a <= std::numeric_limits<double>::max() && (a > std::numeric_limits<float>::max() ||
+                                                     (a != 0 && a < std::numeric_limits<float>::min()));
 }
 
 // The token starting at p (for messages), at most 40 characters.
