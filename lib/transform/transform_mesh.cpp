@@ -72,8 +72,8 @@ TransformReport transform_mesh(Mesh& mesh, const Affine3d& M, const TransformOpt
     // Refuse rather than return Inf (the mesh is then partly transformed; the CLI discards it).
     const std::size_t overflowed = transform_positions(mesh, M, c.path == TransformPath::Translation);
     if (overflowed > 0)
-      fail(name, 0, "the transform sends " + std::to_string(overflowed) +
-                        " coordinates beyond the range of double (about 1.8e308)");
+      fail(name, 0, "the transform sends " + std::to_string(overflowed) + (overflowed == 1 ? " coordinate" : " coordinates") +
+                        " beyond the range of double (about 1.8e308)");
   }
 
   switch (options.normals) {
