@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -23,9 +24,17 @@
 
 namespace shadetool_fuzz {
 
+// Under libFuzzer a broken invariant aborts (the fuzzer saves the input); the corpus replay test
+// (tests/bad_inputs/fuzz_corpus_replay.cpp) defines SHADETOOL_FUZZ_REPLAY to get an exception.
 [[noreturn]] inline void bug(const char* what, std::size_t a = 0, std::size_t b = 0) {
-  std::fprintf(stderr, "fuzz: invariant broken: %s (%zu, %zu)\n", what, a, b);
+  char message[256];
+  std::snprintf(message, sizeof message, "fuzz: invariant broken: %s (%zu, %zu)", what, a, b);
+#ifdef SHADETOOL_FUZZ_REPLAY
+  throw std::logic_error(message);
+#else
+  std::fprintf(stderr, "%s\n", message);
   std::abort();
+#endif
 }
 
 inline void check_invariants(const shadetool::Mesh& m) {
@@ -84,7 +93,7 @@ inline void check_round_trip(const shadetool::Mesh& m) {
     } catch (const shadetool::Error& e) {
       std::fprintf(stderr, "fuzz: our own %s output does not read back: %s\n",
                    shadetool::format_extension(c.format), e.what());
-      std::abort();
+      bug("our own output does not read back");
     }
     check_invariants(back);
     if (c.format == Format::Stl) {

@@ -57,7 +57,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   const auto& mat = scene.material;
-  for (const auto* v : {&mat.ambient, &mat.diffuse, &mat.specular, &mat.emission, &scene.global_ambient})
+  const shadetool::Vec3d* const colours[] = {&mat.ambient, &mat.diffuse, &mat.specular, &mat.emission,
+                                             &scene.global_ambient};
+  for (const auto* v : colours)
     if (!finite(*v) || !non_negative(*v)) bug("material or global ambient colour not finite and >= 0");
   if (!std::isfinite(mat.shininess) || mat.shininess < 0) bug("shininess");
   for (const auto& l : scene.lights) {
@@ -77,7 +79,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // such values, so an accepted scene with values below 1e100 must give finite colours.)
   bool huge = false;
   auto big = [](const shadetool::Vec3d& v) { return std::fabs(v.x) > 1e100 || std::fabs(v.y) > 1e100 || std::fabs(v.z) > 1e100; };
-  for (const auto* v : {&mat.ambient, &mat.diffuse, &mat.specular, &mat.emission, &scene.global_ambient}) huge = huge || big(*v);
+  for (const auto* v : colours) huge = huge || big(*v);
   for (const auto& l : scene.lights)
     for (const auto* v : {&l.ambient, &l.diffuse, &l.specular}) huge = huge || big(*v);
   for (auto freq : {shadetool::ShadingFrequency::PerVertex, shadetool::ShadingFrequency::PerFace})

@@ -20,6 +20,8 @@ put('fuzz_read_obj', 'quad_negative.obj', 'o q\ng g1\nv 0 0 0\nv 1 0 0\nv 1 1 0\
 put('fuzz_read_obj', 'colors_w.obj', 'mtllib x.mtl\nv 0 0 0 1 0 0\nv 1 0 0 0 1 0 0.5\nv 0 1 0 1\nf 1//1 2//1 3//1\nvn 0 0 1\n'
     .replace('f 1//1 2//1 3//1\nvn 0 0 1\n', 'vn 0 0 1\nf 1//1 2//1 3//1\n'))
 put('fuzz_read_obj', 'crlf_comments.obj', '# c\r\nv 0 0 0 \r\nv 1 0 0\r\n\r\nv 0 1 0\r\nf 1 2 3 # tail\r\nxyz unknown\r\n')
+# This seed was the fuzzer's first crash (on main before the io fixes landed): the first face
+# corner's vt index was lost by the lazy per-corner allocation, leaving index 2^32-1.
 put('fuzz_read_obj', 'double_digits.obj', 'v 0.1234567890123 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5\nf 1/1 2/1 3/1\n')
 
 # ---- PLY
