@@ -42,7 +42,8 @@ struct WriteOptions {
 };
 
 struct WriteInfo {
-  std::size_t split_vertices = 0;  // vertices added to carry per-corner normals in PLY/OFF/STL
+  std::size_t split_vertices = 0;  // vertices added to carry per-corner normals (PLY, OFF) or
+                                   // face colours (OBJ: each face's corners get its colour)
   std::vector<std::string> notes;  // what the format could not carry (one line each)
 };
 

@@ -1,23 +1,39 @@
 // number_text.h: numbers to text for the text writers (OBJ, PLY ascii, OFF, STL ascii).
 //
 // Every value is printed in its shortest representation that reads back to the same value
-// (std::to_chars without a precision, i.e. Ryu-style shortest round trip), so text output
-// round-trips exactly. Values of a Float-precision mesh are narrowed to float first and printed
-// as the shortest float: 0.1f prints "0.1", not "0.100000001490116".
+// (std::to_chars without a precision, i.e. Ryu-style shortest round trip). Which type's shortest
+// form depends on the value alone, never on Mesh::precision (that is only the hint binary writers
+// use for the value type):
+//   - a double that is exactly a float (double(float(x)) == x) prints the shortest text that reads
+//     back to that float: 0.1f (read from a binary PLY or STL) prints "0.1", not
+//     "0.10000000149011612". Read back as double that text is the double nearest to 0.1, which
+//     narrows to the same float: float data round-trips as floats, bitwise.
+//   - any other double prints the shortest text that reads back to that double: 0.1 typed in an
+//     OBJ prints "0.1", 123456.789 prints "123456.789", 1/3 prints "0.3333333333333333" (at most
+//     17 significant digits). Such values round-trip exactly.
+// NaN and infinities print as "nan", "inf", "-inf" (the readers accept them).
 #pragma once
 
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <cstdint>
 #include <string>
 
-#include "core/mesh.h"
-
 namespace shadetool::io {
 
-inline void append_shortest(std::string& out, double v, ValuePrecision precision) {
+// True when x is exactly representable as a float: double(float(x)) == x. Values beyond float's
+// range are tested first (narrowing them is not a value-preserving conversion); infinities are
+// floats; NaN is not (it prints "nan" either way).
+inline bool is_exact_float(double x) {
+  if (!(std::fabs(x) <= static_cast<double>(std::numeric_limits<float>::max()))) return std::isinf(x);
+  return static_cast<double>(static_cast<float>(x)) == x;
+}
+
+inline void append_shortest(std::string& out, double v) {
   char buf[40];
-  const auto r = precision == ValuePrecision::Float ? std::to_chars(buf, buf + sizeof buf, static_cast<float>(v))
-                                                    : std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = is_exact_float(v) ? std::to_chars(buf, buf + sizeof buf, static_cast<float>(v))
+                                   : std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
 }
 

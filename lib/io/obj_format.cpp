@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "io/bulk_reserve.h"
 #include "io/number_text.h"
+#include "io/split_face_colors.h"
 #include "io/text_parse.h"
 
 namespace shadetool::io {
@@ -207,33 +208,42 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
     info.notes.push_back("skipped " + std::to_string(skipped_lines) + " line" + (skipped_lines == 1 ? "" : "s") +
                          " with keywords shadetool does not use (first: '" + skipped_keyword + "')");
 
-  if (any_double) {
-    mesh.precision = ValuePrecision::Double;
-  } else {
-    mesh.precision = ValuePrecision::Float;
-    auto round_to_float = [](std::vector<double>& a) {
-      for (double& x : a) x = static_cast<double>(static_cast<float>(x));
-    };
-    round_to_float(mesh.positions);
-    round_to_float(mesh.corner_normals);
-    round_to_float(mesh.texcoords);
-  }
+  // Values are kept as parsed (the double nearest to the text), never rounded: precision is only
+  // the hint for the value type binary writers use.
+  mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
   return mesh;
 }
 
-void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
-  const ValuePrecision prec = mesh.precision;
+void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
+  // Face colours: OBJ holds colours per vertex only, so vertices are split until every corner's
+  // vertex carries its face's colour (split_face_colors.h). Faces and corners keep their order, so
+  // corner c of `mesh` is corner c of `input`: normals and texcoords stay indexed per corner.
+  std::size_t added = 0, unreferenced = 0;
+  Mesh split;
+  const bool must_split = input.has_face_colors();
+  if (must_split) {
+    split = split_face_colors(input, added, unreferenced);
+    info.notes.push_back("face colours written as vertex colours (v x y z r g b): " + std::to_string(added) +
+                         (added == 1 ? " vertex" : " vertices") + " added so that every face's corners carry its colour");
+    if (input.has_vertex_colors())
+      info.notes.push_back("vertex colours replaced by the face colours: OBJ holds one colour per vertex");
+    else if (unreferenced > 0)
+      info.notes.push_back(std::to_string(unreferenced) + (unreferenced == 1 ? " vertex" : " vertices") +
+                           " used by no face written white");
+  }
+  info.split_vertices = added;
+  const Mesh& mesh = must_split ? split : input;
   out.reserve(out.size() + mesh.num_vertices() * 40 + mesh.num_corners() * 10);
   out += "# written by shadetool\n";
   const std::size_t nv = mesh.num_vertices();
   const bool colors = mesh.has_vertex_colors() && mesh.vertex_colors.size() == nv * std::size_t(mesh.color_channels);
   for (std::size_t v = 0; v < nv; ++v) {
     out += "v ";
-    append_shortest(out, mesh.positions[3 * v], prec);
+    append_shortest(out, mesh.positions[3 * v]);
     out += ' ';
-    append_shortest(out, mesh.positions[3 * v + 1], prec);
+    append_shortest(out, mesh.positions[3 * v + 1]);
     out += ' ';
-    append_shortest(out, mesh.positions[3 * v + 2], prec);
+    append_shortest(out, mesh.positions[3 * v + 2]);
     if (colors) {
       for (int k = 0; k < mesh.color_channels; ++k) {
         out += ' ';
@@ -249,7 +259,7 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
       out += "vt";
       for (std::size_t k = 0; k < dims; ++k) {
         out += ' ';
-        append_shortest(out, mesh.texcoords[i + k], prec);
+        append_shortest(out, mesh.texcoords[i + k]);
       }
       out += '\n';
     }
@@ -257,24 +267,25 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
   // Which normals, and the vn index of each corner.
   enum class NormalSource { None, Corner, Vertex, Face } source = NormalSource::None;
   const std::vector<double>* pool = nullptr;
-  if (mesh.has_corner_normals()) {
+  // From `input`: split vertices share their original's vn line (index by the original vertex).
+  if (input.has_corner_normals()) {
     source = NormalSource::Corner;
-    pool = &mesh.corner_normals;
-  } else if (mesh.has_vertex_normals()) {
+    pool = &input.corner_normals;
+  } else if (input.has_vertex_normals()) {
     source = NormalSource::Vertex;
-    pool = &mesh.vertex_normals;
-  } else if (mesh.has_face_normals()) {
+    pool = &input.vertex_normals;
+  } else if (input.has_face_normals()) {
     source = NormalSource::Face;
-    pool = &mesh.face_normals;
+    pool = &input.face_normals;
   }
   if (pool) {
     for (std::size_t i = 0; i + 3 <= pool->size(); i += 3) {
       out += "vn ";
-      append_shortest(out, (*pool)[i], prec);
+      append_shortest(out, (*pool)[i]);
       out += ' ';
-      append_shortest(out, (*pool)[i + 1], prec);
+      append_shortest(out, (*pool)[i + 1]);
       out += ' ';
-      append_shortest(out, (*pool)[i + 2], prec);
+      append_shortest(out, (*pool)[i + 2]);
       out += '\n';
     }
   }
@@ -289,8 +300,8 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
         if (tex) append_uint(out, std::uint64_t(mesh.corner_texcoord_index[c]) + 1);
         if (source != NormalSource::None) {
           out += '/';
-          const std::uint64_t n = source == NormalSource::Corner   ? mesh.corner_normal_index[c]
-                                  : source == NormalSource::Vertex ? mesh.corner_vertex[c]
+          const std::uint64_t n = source == NormalSource::Corner   ? input.corner_normal_index[c]
+                                  : source == NormalSource::Vertex ? input.corner_vertex[c]
                                                                    : f;
           append_uint(out, n + 1);
         }
@@ -298,7 +309,6 @@ void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info) {
     }
     out += '\n';
   }
-  if (mesh.has_face_colors()) info.notes.push_back("face colours not written: OBJ has no face colours");
 }
 
 }  // namespace shadetool::io

@@ -5,11 +5,20 @@
 // index), `f` in the forms i, i/j, i//k, i/j/k with negative (relative) indices, polygons of any
 // size, in order. Accepted and skipped: o, g, s, usemtl, mtllib, comments, blank lines, CRLF,
 // trailing whitespace; other keywords (l, p, curves...) are skipped with a note.
-// Precision: values are parsed in double; when no number has more significant digits than a float
-// carries (9), the file is float data: values are rounded to float and Mesh::precision = Float.
+// Precision: every value is stored as parsed, the double nearest to the text, never rounded to
+// float: `v 123456.789 0 0` keeps 123456.789. Mesh::precision is Float when no number has more
+// significant digits than a float carries (9), else Double; it is only the hint for the value type
+// binary writers use (PLY float or double properties).
 //
-// Writing: v [rgb(a)], vt, vn and f v/t/n. Normals: corner normals as a pool, else vertex normals
-// (one vn per vertex), else face normals (one vn per face). Face colours have no OBJ form (note).
+// Writing: each value in the shortest text that reads back to it (io/number_text.h: a value that
+// is exactly a float prints as the shortest float, 0.1f as "0.1"; any other as the shortest
+// double, at most 17 significant digits). v [rgb(a)], vt, vn and f v/t/n. Normals: corner normals
+// as a pool, else vertex normals (one vn per vertex), else face normals (one vn per face).
+// Face colours (flat shading) have no OBJ form of their own: vertices are split so that every
+// corner's vertex carries its face's colour as `v x y z r g b [a]` (io/split_face_colors.h; a
+// vertex whose faces share one colour is not split). Faces, their order and corner order are
+// unchanged, normals and texcoords stay per corner; WriteInfo::split_vertices counts the vertices
+// added, and a note says so. Vertex colours, if the mesh also has them, give way (note).
 #pragma once
 
 #include <string>

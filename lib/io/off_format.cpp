@@ -224,10 +224,8 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
     mesh.texcoord_dims = 2;
     mesh.corner_texcoord_index = mesh.corner_vertex;
   }
+  // Values kept as parsed, never rounded; precision is the binary writers' value-type hint.
   mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
-  if (!any_double)
-    for (auto* a : {&mesh.positions, &mesh.vertex_normals, &mesh.texcoords})
-      for (double& x : *a) x = double(float(x));
   return mesh;
 }
 
@@ -243,14 +241,20 @@ void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
   const bool vcolors = mesh.has_vertex_colors();
   const bool fcolors = mesh.has_face_colors();
   const int ch = mesh.color_channels;
-  const auto prec = mesh.precision;
   if (mesh.has_face_normals()) info.notes.push_back("face normals not written: OFF has no face normals");
   if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to OFF");
 
+  // Float colours always carry a decimal point or exponent ("1.0", not "1"): the reader takes a
+  // line of integer colour tokens as 0..255, so float 1 0 0 would come back as 1/255 0 0.
   auto color = [&](float c) {
     out += ' ';
-    if (mesh.colors_are_float) append_shortest_float(out, c);
-    else append_uint(out, color_to_uchar(c));
+    if (mesh.colors_are_float) {
+      const std::size_t at = out.size();
+      append_shortest_float(out, c);
+      if (out.find_first_of(".eEn", at) == std::string::npos) out += ".0";  // n: nan, inf
+    } else {
+      append_uint(out, color_to_uchar(c));
+    }
   };
   out.reserve(out.size() + mesh.num_vertices() * 36 * (normals ? 2 : 1) + mesh.num_corners() * 8);
   out += vcolors ? "C" : "";
@@ -263,12 +267,12 @@ void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
     for (int k = 0; k < 3; ++k) {
       if (k) out += ' ';
-      append_shortest(out, mesh.positions[3 * v + std::size_t(k)], prec);
+      append_shortest(out, mesh.positions[3 * v + std::size_t(k)]);
     }
     if (normals)
       for (int k = 0; k < 3; ++k) {
         out += ' ';
-        append_shortest(out, mesh.vertex_normals[3 * v + std::size_t(k)], prec);
+        append_shortest(out, mesh.vertex_normals[3 * v + std::size_t(k)]);
       }
     if (vcolors)
       for (int k = 0; k < ch; ++k) color(mesh.vertex_colors[std::size_t(ch) * v + std::size_t(k)]);

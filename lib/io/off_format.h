@@ -7,11 +7,15 @@
 // Comments (#) and blank lines are skipped anywhere. Each vertex and face is one line; a line with
 // the wrong number of values, or content after the last face, means the header counts disagree
 // with the body and is an error. Counts are bounded by the file size before allocation.
-// Precision: as OBJ (obj_format.h): double when a number has more than 9 significant digits.
+// Precision: as OBJ (obj_format.h): values stored as parsed, never rounded; Mesh::precision is
+// Double when a number has more than 9 significant digits (the binary writers' value-type hint).
 //
-// Writing: `[C][N]OFF` (C with vertex colours, N with vertex normals; per-corner normals are split
-// into vertices, WriteInfo::split_vertices), face colours after the indices; colours as floats when
-// Mesh::colors_are_float, else integers 0..255. Face normals and texcoords have no OFF form (notes).
+// Writing: values in the shortest text that reads back to them (io/number_text.h); `[C][N]OFF`
+// (C with vertex colours, N with vertex normals; per-corner normals are split into vertices,
+// WriteInfo::split_vertices); face colours after the indices (native in any OFF: no split).
+// Colours as floats when Mesh::colors_are_float, always with a decimal point ("1.0") so that they
+// cannot read back as 0..255 integers; else integers 0..255. Face normals and texcoords have no
+// OFF form (notes).
 #pragma once
 
 #include <string>

@@ -634,11 +634,6 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
   mesh.color_channels = channels;
   mesh.colors_are_float = colors_float;
   mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
-  if (!any_double && enc == Encoding::Ascii) {
-    // Declared float: what a float holds (ascii text with more digits is narrowed like a binary file).
-    for (auto* a : {&mesh.positions, &mesh.vertex_normals, &mesh.face_normals, &mesh.texcoords})
-      for (double& x : *a) x = double(float(x));
-  }
   return mesh;
 }
 
@@ -712,7 +707,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
       else put<float>(out, float(v));
     } else {
       if (!first) out += ' ';
-      append_shortest(out, v, mesh.precision);
+      append_shortest(out, v);
     }
   };
   auto color_value = [&](float c) {

@@ -7,11 +7,14 @@
 // u v pairs, MeshLab's wedge texcoords). Any other element or property is skipped by its
 // declared type. Counts in the header are checked against the size of the body before anything
 // is allocated, so a header claiming 2^40 vertices fails at once.
-// Precision: double if any kept vertex value (x y z, normals, texcoords) is declared double
-// (or a 32-bit integer), else float.
+// Precision: Mesh::precision is Double if any kept vertex value (x y z, normals, texcoords) is
+// declared double (or a 32-bit integer), else Float. Binary values are the declared type's values;
+// ascii values are stored as parsed (the double nearest to the text), never rounded to the
+// declared float: the text is what the file says.
 //
 // Writing: binary little-endian (default) or ascii; x y z and normals as float or double after
-// Mesh::precision, colours as uchar or float after Mesh::colors_are_float; per-corner normals are
+// Mesh::precision (binary float narrows each value to float; ascii prints the shortest text that
+// reads back to the stored value, io/number_text.h), colours as uchar or float after Mesh::colors_are_float; per-corner normals are
 // split into vertices (WriteInfo::split_vertices); face normals and face colours as face
 // properties; per-corner texcoords as a face list `texcoord` (as MeshLab writes them).
 #pragma once

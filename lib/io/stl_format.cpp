@@ -215,11 +215,6 @@ Mesh read_ascii(std::string_view bytes, const std::string& name, ReadInfo& info)
   if (solids == 0) fail(name, 1, "file is empty");
   mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
   finish(mesh, normals, merger, info);
-  if (!any_double) {
-    // Float data: merged values compared as read; store what a float holds.
-    for (double& x : mesh.positions) x = double(float(x));
-    for (double& x : mesh.face_normals) x = double(float(x));
-  }
   return mesh;
 }
 
@@ -284,7 +279,6 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
   if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to STL");
 
   const bool face_normals = mesh.has_face_normals();
-  const auto prec = mesh.precision;
   if (binary) {
     out.reserve(out.size() + 84 + 50 * triangles);
     std::string header = "binary STL written by shadetool";
@@ -312,11 +306,11 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
         out.append(2, '\0');
       } else {
         auto vec = [&](const Vec3d& v) {
-          append_shortest(out, v.x, prec);
+          append_shortest(out, v.x);
           out += ' ';
-          append_shortest(out, v.y, prec);
+          append_shortest(out, v.y);
           out += ' ';
-          append_shortest(out, v.z, prec);
+          append_shortest(out, v.z);
           out += '\n';
         };
         out += "facet normal ";

@@ -6,7 +6,8 @@
 // STL stores a triangle soup: corners with identical positions (equal as values; -0 equals 0,
 // NaN equals nothing) are merged into one vertex, in order of first appearance; the number merged
 // is ReadInfo::merged_vertices (and a note). Facet normals are kept as face normals unless all are
-// zero. Binary STL is float (Mesh::precision = Float); ascii follows the digit rule of OBJ.
+// zero. Binary STL is float (Mesh::precision = Float); ascii values are stored as parsed, never
+// rounded, and Mesh::precision follows the digit rule of OBJ (a hint for binary writers).
 // Merging uses an open-addressing hash table in flat arrays (no per-vertex allocation).
 //
 // Writing: binary (default) or ascii; polygons are split into triangle fans (a note says how many

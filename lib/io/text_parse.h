@@ -62,7 +62,8 @@ inline bool parse_int64(const char*& p, const char* end, std::int64_t& value) {
 }
 
 // True when the decimal token [b, e) has more significant digits than float can carry (9, float's
-// max_digits10): text with more digits was written from double data and is kept in double.
+// max_digits10): text with more digits was written from double data, so Mesh::precision = Double
+// (the hint binary writers use for the value type; values are never rounded either way).
 // Leading and trailing zeros of the mantissa do not count ("0.500000000000" has one digit).
 inline bool has_more_digits_than_float(const char* b, const char* e) {
   if (e - b <= 10) return false;  // at most 9 digits plus a sign or a point: fast path

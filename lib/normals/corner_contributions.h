@@ -6,7 +6,8 @@
 //   Uniform  n                                  (Gouraud 1971)
 //   Area     N = 2 A n                          (area weighting; OpenMesh update_normals,
 //                                                libigl PER_VERTEX_NORMALS_WEIGHTING_TYPE_AREA)
-//   Angle    theta n, theta = atan2(|a x b|, a.b) (Thuermer & Wuethrich 1998; libigl ANGLE)
+//   Angle    theta n, theta = atan2(|a x b|, a.b) (Thuermer & Wuethrich 1998; libigl ANGLE);
+//            in a triangle the third angle is pi minus the other two; angles in double
 //   Max      n sin(theta) / (|a| |b|) = (a x b) / (|a|^2 |b|^2) for a triangle (Max 1999, eq. 6)
 // For a triangle, |a x b| = |N| at every corner, so all three corners use the one well-conditioned
 // N. For a polygon (4+ corners), n comes from Newell's method and the corner's own angle is used:
@@ -20,74 +21,151 @@
 // whose edge-length product is zero or underflows contributes nothing.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #include "core/mesh.h"
 #include "normals/face_geometry.h"
+#include "normals/interior_angle.h"
 #include "normals/weighting.h"
 
 namespace shadetool::normals_detail {
 
+constexpr double kPi = 3.14159265358979323846264338327950;
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Calls sink(corner, vertex, contribution) for every corner of the triangles in [f_begin, f_end)
 // whose area vector is valid. Requires mesh.all_triangles() (corner = 3 f + k).
-template <class T, Weighting W, class Sink>
-inline void triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+// Returns the number of degenerate faces skipped.
+//
+// Which cross product, per weighting (e_a x e_b has rounding error ~ eps |e_a| |e_b|, i.e.
+// relative error ~ eps / sin(angle between them)):
+//   Area     (p1 - p0) x (p2 - p0): the contribution is the unnormalised N itself, so its error
+//            eps |e0| |e2| is at most eps (longest edge)^2, tiny against the vertex's sum of
+//            areas whatever the triangle's shape: no need to pay for choosing edges.
+//   Uniform, Angle  normalise N per face, and Max divides it by |a|^2 |b|^2: a sliver's error
+//            would be amplified by its aspect ratio, so these take the two shortest edges
+//            (face_geometry.h, triangle_area_vector), whose relative error is ~ 2 eps.
+// Zero-area check: dot(N, N) > 0 is false for a zero and for a NaN vector. A vector that
+// overflows (coordinates beyond ~1e150) passes and makes the vertex sum infinite: that vertex
+// then gets vertex_normals' fallback.
+// Angle weighting for triangles, in blocks of kAngleBlock faces and three passes over each block:
+// (1) unit normal and the two cos parts per face, (2) the arctangent pairs, (3) the sums. The
+// arithmetic is that of triangle_contributions below, bit for bit; what changes is the schedule:
+// one face's chain (loads, cross product, square root, two dependent divisions in the
+// arctangent, scatter) is long, and with ~200 instructions per face the processor could not
+// overlap two faces; split in passes, consecutive faces are independent and do overlap.
+constexpr std::size_t kAngleBlock = 64;
+
+template <class T, class Sink>
+inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+  std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
-  for (std::size_t f = f_begin; f < f_end; ++f) {
-    const std::size_t c = 3 * f;
-    const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
-    const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
-    const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
-    const T l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
-    const Vec3<T> N = triangle_area_vector(e0, e1, e2, l0, l1, l2);
-    if constexpr (W == Weighting::Area) {
-      if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) continue;
-      sink(c, v0, N); sink(c + 1, v1, N); sink(c + 2, v2, N);
-    } else if constexpr (W == Weighting::Max) {
-      if (!std::isfinite(N.x + N.y + N.z) || (N.x == T(0) && N.y == T(0) && N.z == T(0))) continue;
-      // corner 0: edges e0 and -e2; corner 1: e1 and -e0; corner 2: e2 and -e1.
-      const T d0 = l0 * l2, d1 = l1 * l0, d2 = l2 * l1;
-      if (d0 > T(0)) sink(c, v0, N * (T(1) / d0));
-      if (d1 > T(0)) sink(c + 1, v1, N * (T(1) / d1));
-      if (d2 > T(0)) sink(c + 2, v2, N * (T(1) / d2));
-    } else {
-      const T len = checked_length(N);
-      if (!(len > T(0))) continue;  // degenerate: contributes nothing
-      const Vec3<T> n = N * (T(1) / len);
-      if constexpr (W == Weighting::Uniform) {
-        sink(c, v0, n); sink(c + 1, v1, n); sink(c + 2, v2, n);
-      } else {  // Angle: the corner at v_k lies between e_k and -e_{k-1}
-        sink(c, v0, n * interior_angle(len, -dot(e0, e2)));
-        sink(c + 1, v1, n * interior_angle(len, -dot(e1, e0)));
-        sink(c + 2, v2, n * interior_angle(len, -dot(e2, e1)));
+  Vec3<T> n[kAngleBlock];
+  double len[kAngleBlock], cos0[kAngleBlock], cos1[kAngleBlock], t0[kAngleBlock], t1[kAngleBlock];
+  bool valid[kAngleBlock];
+  for (std::size_t b = f_begin; b < f_end; b += kAngleBlock) {
+    const std::size_t count = std::min(kAngleBlock, f_end - b);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t c = 3 * (b + i);
+      const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
+      const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
+      const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
+      const Vec3<T> N = triangle_area_vector(P, v0, v1, v2, dot(e0, e0), dot(e1, e1), dot(e2, e2));
+      const T l = checked_length(N);
+      valid[i] = l > T(0);
+      const T inv_len = valid[i] ? T(1) / l : T(0);  // divisor checked
+      n[i] = N * inv_len;
+      // a degenerate face (possibly NaN) feeds a harmless (1, 0) to the arctangent pass
+      len[i] = valid[i] ? double(l) : 1.0;
+      cos0[i] = valid[i] ? double(-dot(e0, e2)) : 0.0;
+      cos1[i] = valid[i] ? double(-dot(e1, e0)) : 0.0;
+    }
+    for (std::size_t i = 0; i < count; ++i) interior_angle_pair(len[i], cos0[i], len[i], cos1[i], t0[i], t1[i]);
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!valid[i]) { ++degenerate; continue; }  // degenerate: contributes nothing
+      const std::size_t c = 3 * (b + i);
+      sink(c, cv[c], n[i] * T(t0[i]));
+      sink(c + 1, cv[c + 1], n[i] * T(t1[i]));
+      sink(c + 2, cv[c + 2], n[i] * T(kPi - t0[i] - t1[i]));
+    }
+  }
+  return degenerate;
+}
+
+template <class T, Weighting W, class Sink>
+inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+  if constexpr (W == Weighting::Angle) {
+    return triangle_angle_contributions<T>(mesh, f_begin, f_end, sink);
+  } else {
+    std::size_t degenerate = 0;
+    const double* P = mesh.positions.data();
+    const std::uint32_t* cv = mesh.corner_vertex.data();
+    for (std::size_t f = f_begin; f < f_end; ++f) {
+      const std::size_t c = 3 * f;
+      const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
+      const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
+      if constexpr (W == Weighting::Area) {
+        const Vec3<T> N = cross(edge<T>(p0, p1), edge<T>(p0, p2));
+        if (!(dot(N, N) > T(0))) { ++degenerate; continue; }
+        sink(c, v0, N); sink(c + 1, v1, N); sink(c + 2, v2, N);
+      } else {
+        const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
+        const T l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
+        const Vec3<T> N = triangle_area_vector(P, v0, v1, v2, l0, l1, l2);
+        if constexpr (W == Weighting::Max) {
+          if (!(dot(N, N) > T(0))) { ++degenerate; continue; }
+          // Corner 0 lies between e0 and -e2, corner 1 between e1 and -e0, corner 2 between e2
+          // and -e1: weights 1/(l0 l2), 1/(l1 l0), 1/(l2 l1) = (l1, l2, l0) / (l0 l1 l2), one division.
+          const T q = l0 * l1 * l2;
+          if (q > std::numeric_limits<T>::min() && q < std::numeric_limits<T>::max()) {  // divisor checked
+            const T inv = T(1) / q;
+            sink(c, v0, N * (l1 * inv)); sink(c + 1, v1, N * (l2 * inv)); sink(c + 2, v2, N * (l0 * inv));
+          } else {  // the product under- or overflows: per corner, each divisor checked
+            const T d[3] = {l0 * l2, l1 * l0, l2 * l1};
+            const std::uint32_t v[3] = {v0, v1, v2};
+            for (int k = 0; k < 3; ++k) {
+              if (!(d[k] > T(0))) continue;
+              const Vec3<T> w = N * (T(1) / d[k]);
+              if (is_finite(w)) sink(c + k, v[k], w);
+            }
+          }
+        } else {
+          const T len = checked_length(N);
+          if (!(len > T(0))) { ++degenerate; continue; }  // degenerate: contributes nothing
+          const T inv_len = T(1) / len;  // divisor checked above
+          const Vec3<T> n = N * inv_len;
+          sink(c, v0, n); sink(c + 1, v1, n); sink(c + 2, v2, n);  // Uniform
+        }
       }
     }
+    return degenerate;
   }
 }
 
 // The same for any face sizes (triangles among polygons take the triangle formulas).
 template <class T, Weighting W, class Sink>
-inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+  std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
   for (std::size_t f = f_begin; f < f_end; ++f) {
     const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1], n_corners = end - begin;
-    if (n_corners < 3) continue;
+    if (n_corners < 3) { ++degenerate; continue; }
     Vec3<T> N;
     if (n_corners == 3) {
       const Vec3d p0 = load_position(P, cv[begin]), p1 = load_position(P, cv[begin + 1]), p2 = load_position(P, cv[begin + 2]);
       const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
-      N = triangle_area_vector(e0, e1, e2, dot(e0, e0), dot(e1, e1), dot(e2, e2));
+      N = triangle_area_vector(P, cv[begin], cv[begin + 1], cv[begin + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
     } else {
       N = newell_area_vector<T>(mesh, f);
     }
     const T len = checked_length(N);
-    if (!(len > T(0))) continue;  // degenerate: contributes nothing
+    if (!(len > T(0))) { ++degenerate; continue; }  // degenerate: contributes nothing
     const Vec3<T> n = N * (T(1) / len);
     for (std::uint32_t c = begin; c < end; ++c) {
       const std::uint32_t v = cv[c];
@@ -102,7 +180,7 @@ inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::si
         if (n_corners == 3) {
           // Triangle among polygons: |a x b| = |N| exactly as in triangle_contributions.
           if constexpr (W == Weighting::Angle) {
-            sink(c, v, n * interior_angle(len, dot(a, b)));
+            sink(c, v, n * T(interior_angle(double(len), double(dot(a, b)))));
           } else {
             const T d = dot(a, a) * dot(b, b);
             if (d > T(0)) sink(c, v, N * (T(1) / d));
@@ -110,9 +188,9 @@ inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::si
         } else {
           const T s = dot(cross(a, b), n);  // |a||b| sin(theta), signed about the face normal
           if constexpr (W == Weighting::Angle) {
-            T theta = std::atan2(s, dot(a, b));
-            if (theta < T(0)) theta += T(kTwoPi);  // reflex corner of a concave polygon
-            sink(c, v, n * theta);
+            double theta = interior_angle(double(std::fabs(s)), double(dot(a, b)));
+            if (s < T(0)) theta = kTwoPi - theta;  // reflex corner of a concave polygon
+            sink(c, v, n * T(theta));
           } else {
             const T d = dot(a, a) * dot(b, b);
             if (d > T(0)) sink(c, v, n * (std::fabs(s) / d));
@@ -121,6 +199,7 @@ inline void polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::si
       }
     }
   }
+  return degenerate;
 }
 
 template <Weighting W>

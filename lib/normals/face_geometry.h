@@ -8,8 +8,6 @@
 //                         (Sutherland, Sproull & Schumacker 1974; Tampieri, "Newell's method for
 //                         computing the plane equation of a polygon", Graphics Gems III, 1992),
 //                         evaluated about the polygon's first vertex to keep coordinates small.
-//   interior_angle        angle between two edge vectors, atan2(|a x b|, a . b): accurate for
-//                         angles near 0 and pi, where acos of the normalised dot product is not.
 //
 // Precision: T is the type the caller computes in (double or float). Positions stay double; edge
 // vectors are formed in double and rounded once to T (see `edge`), everything after is in T.
@@ -23,9 +21,17 @@
 #include "core/mesh.h"
 #include "core/vec3.h"
 
+// The kernels' per-face helpers must be inlined into their loops (GCC otherwise keeps some out of
+// line and the result goes through the stack); this only affects code generation.
+#if defined(__GNUC__)
+#define SHADETOOL_NORMALS_INLINE inline __attribute__((always_inline))
+#else
+#define SHADETOOL_NORMALS_INLINE inline
+#endif
+
 namespace shadetool::normals_detail {
 
-inline Vec3d load_position(const double* positions, std::uint32_t v) {
+SHADETOOL_NORMALS_INLINE Vec3d load_position(const double* positions, std::uint32_t v) {
   const double* p = positions + 3 * std::size_t(v);
   return {p[0], p[1], p[2]};
 }
@@ -34,19 +40,37 @@ inline Vec3d load_position(const double* positions, std::uint32_t v) {
 // to T. For T = float this keeps the error relative to the edge's length, not to the coordinates'
 // magnitude (a 1e-3 edge at distance 1 from the origin keeps 7 digits, not 4).
 template <class T>
-inline Vec3<T> edge(const Vec3d& a, const Vec3d& b) {
+SHADETOOL_NORMALS_INLINE Vec3<T> edge(const Vec3d& a, const Vec3d& b) {
   return {T(b.x - a.x), T(b.y - a.y), T(b.z - a.z)};
 }
 
-// Edge vectors of triangle (p0, p1, p2): e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2.
-// Any two consecutive edges give the same cross product in exact arithmetic
-// (e0 x e1 = e1 x e2 = e2 x e0 = 2 A n); we use the pair that excludes the longest edge.
+// Area vector 2 A n of triangle (v0, v1, v2) whose edges e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2
+// have squared lengths l0, l1, l2. Any two edges from one vertex give the same cross product in
+// exact arithmetic; we take the two shortest, i.e. those from the vertex opposite the longest
+// edge (the apex), keeping the cyclic order so the orientation is unchanged:
+// e0 longest -> (p0 - p2) x (p1 - p2); e1 longest -> (p1 - p0) x (p2 - p0); e2 longest ->
+// (p2 - p1) x (p0 - p1). Rounding error is then smallest for slivers. The apex is chosen among
+// vertex indices (integer selects, no branch: which edge is longest is unpredictable on irregular
+// meshes, and a mispredicted branch cost more than the product itself).
+// Corner opposite the longest edge (the apex): 2 when e0 = p1 - p0 is longest, 0 for e1 = p2 - p1,
+// 1 for e2 = p0 - p2 (ties resolved in that order). Its angle is the triangle's largest.
+// Arithmetic on the comparison results, not ?: or &&, so that no branch is emitted (which edge is
+// longest is unpredictable on irregular meshes; a mispredicted branch per triangle cost more than
+// the whole area-weighted kernel).
 template <class T>
-inline Vec3<T> triangle_area_vector(const Vec3<T>& e0, const Vec3<T>& e1, const Vec3<T>& e2,
-                                    T l0, T l1, T l2) {
-  if (l0 >= l1 && l0 >= l2) return cross(e1, e2);  // longest is e0
-  if (l1 >= l2) return cross(e2, e0);               // longest is e1
-  return cross(e0, e1);                             // longest is e2
+SHADETOOL_NORMALS_INLINE int apex_corner(T l0, T l1, T l2) {
+  const int e0_longest = int(l0 >= l1) & int(l0 >= l2);
+  const int e1_longest = int(l1 > l0) & int(l1 >= l2);
+  return 1 + e0_longest - e1_longest;  // 2, 0, or 1 when e2 is longest
+}
+
+template <class T>
+SHADETOOL_NORMALS_INLINE Vec3<T> triangle_area_vector(const double* positions, std::uint32_t v0, std::uint32_t v1,
+                                                      std::uint32_t v2, T l0, T l1, T l2) {
+  const std::uint32_t v[5] = {v0, v1, v2, v0, v1};
+  const int k = apex_corner(l0, l1, l2);
+  const Vec3d p = load_position(positions, v[k]);
+  return cross(edge<T>(p, load_position(positions, v[k + 1])), edge<T>(p, load_position(positions, v[k + 2])));
 }
 
 // Newell's method about p_0: N = sum_i (p_i - p_0) x (p_{i+1} - p_0) = 2 A n for a planar
@@ -69,18 +93,12 @@ inline Vec3<T> newell_area_vector(const Mesh& mesh, std::size_t f) {
 // Length of n, or 0 when n is zero or not finite (the caller then treats the face as degenerate).
 // Squares directly when that neither underflows nor overflows, else scales (core/vec3.h length).
 template <class T>
-inline T checked_length(const Vec3<T>& n) {
+SHADETOOL_NORMALS_INLINE T checked_length(const Vec3<T>& n) {
   const T l2 = dot(n, n);
   T l;
   if (l2 > T(1e-30) && l2 < T(1e30)) l = std::sqrt(l2);
   else l = length(n);
   return (l > T(0) && std::isfinite(l)) ? l : T(0);
-}
-
-// Interior angle between edge vectors a and b given |a x b| (>= 0) and a . b: in [0, pi].
-template <class T>
-inline T interior_angle(T cross_length, T dot_ab) {
-  return std::atan2(cross_length, dot_ab);
 }
 
 }  // namespace shadetool::normals_detail

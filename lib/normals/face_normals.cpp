@@ -25,7 +25,7 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
       const std::size_t c = triangles ? 3 * f : mesh.face_start[f];
       const Vec3d p0 = load_position(P, cv[c]), p1 = load_position(P, cv[c + 1]), p2 = load_position(P, cv[c + 2]);
       const Vec3<T> e0 = edge<T>(p0, p1), e1 = edge<T>(p1, p2), e2 = edge<T>(p2, p0);
-      N = triangle_area_vector(e0, e1, e2, dot(e0, e0), dot(e1, e1), dot(e2, e2));
+      N = triangle_area_vector(P, cv[c], cv[c + 1], cv[c + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
     } else {
       N = newell_area_vector<T>(mesh, f);
     }

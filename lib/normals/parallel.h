@@ -25,4 +25,15 @@ void parallel_ranges(std::size_t n, const Body& body, std::size_t grain = 1 << 1
                     [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
 }
 
+// parallel_blocks(n, body): body(b) for every block index b in [0, n), blocks in parallel (each
+// block is already a sizeable piece of work chosen by the caller; one block runs inline).
+template <class Body>
+void parallel_blocks(std::size_t n, const Body& body) {
+  if (n == 1) {
+    body(std::size_t(0));
+    return;
+  }
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t b) { body(b); });
+}
+
 }  // namespace shadetool::normals_detail

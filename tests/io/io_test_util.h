@@ -2,13 +2,16 @@
 // directory, file helpers and a way to run the CLI.
 #pragma once
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -45,6 +48,25 @@ inline std::string read_file(const std::string& path) {
   std::stringstream s;
   s << f.rdbuf();
   return s.str();
+}
+
+// The round-trip contract of the text writers (io/number_text.h), checked value by value: a value
+// that is exactly a float (double(float(x)) == x, e.g. read from binary PLY) is printed as the
+// float's shortest text, which reads back as the double nearest to that decimal: it comes back as
+// the same float. Any other value comes back bitwise. NaN comes back as NaN.
+inline bool same_after_text(double orig, double back) {
+  if (std::isnan(orig)) return std::isnan(back);
+  if (double(float(orig)) == orig) {
+    const float a = float(orig), b = float(back);
+    return std::memcmp(&a, &b, sizeof a) == 0;
+  }
+  return std::memcmp(&orig, &back, sizeof orig) == 0;
+}
+inline bool same_after_text(const std::vector<double>& orig, const std::vector<double>& back) {
+  if (orig.size() != back.size()) return false;
+  for (std::size_t i = 0; i < orig.size(); ++i)
+    if (!same_after_text(orig[i], back[i])) return false;
+  return true;
 }
 
 // The message of the Error thrown by `f`, or "" when none was thrown.

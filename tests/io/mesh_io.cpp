@@ -40,18 +40,25 @@ TEST_CASE("read_mesh: missing file, directory, empty file, unknown extension", "
 namespace {
 
 // Asserts that `back` holds what `m` held, for the attributes a format carries. Positions and
-// normals are compared per corner (writers may split vertices to carry corner normals).
-void check_same_geometry(const Mesh& m, const Mesh& back, bool normals, bool vcolors, bool fcolors, bool texcoords) {
+// normals are compared per corner (writers may split vertices to carry corner normals): bitwise
+// after a binary file, by the text contract (same_after_text: floats as floats) after a text file.
+enum class Via { Binary, Text };
+bool same(const Vec3d& a, const Vec3d& b, Via via) {
+  if (via == Via::Binary) return std::memcmp(&a, &b, sizeof a) == 0;
+  return same_after_text(a.x, b.x) && same_after_text(a.y, b.y) && same_after_text(a.z, b.z);
+}
+void check_same_geometry(const Mesh& m, const Mesh& back, Via via, bool normals, bool vcolors, bool fcolors,
+                         bool texcoords) {
   REQUIRE(back.num_faces() == m.num_faces());
   REQUIRE(back.face_start == m.face_start);
   for (std::size_t c = 0; c < m.num_corners(); ++c) {
     const Vec3d p = m.position(m.corner_vertex[c]), q = back.position(back.corner_vertex[c]);
-    CHECK(std::memcmp(&p, &q, sizeof p) == 0);  // bitwise
+    CHECK(same(p, q, via));
     if (normals) {
       const Vec3d n = get3(m.corner_normals, m.corner_normal_index[c]);
       const Vec3d nb = back.has_corner_normals() ? get3(back.corner_normals, back.corner_normal_index[c])
                                                  : get3(back.vertex_normals, back.corner_vertex[c]);
-      CHECK(n == nb);
+      CHECK(same(n, nb, via));
     }
     if (vcolors)
       for (int k = 0; k < 3; ++k)
@@ -59,8 +66,8 @@ void check_same_geometry(const Mesh& m, const Mesh& back, bool normals, bool vco
               m.vertex_colors[3 * m.corner_vertex[c] + std::size_t(k)]);
     if (texcoords)
       for (int k = 0; k < 2; ++k)
-        CHECK(back.texcoords[2 * back.corner_texcoord_index[c] + std::size_t(k)] ==
-              m.texcoords[2 * m.corner_texcoord_index[c] + std::size_t(k)]);
+        CHECK(same_after_text(m.texcoords[2 * m.corner_texcoord_index[c] + std::size_t(k)],
+                              back.texcoords[2 * back.corner_texcoord_index[c] + std::size_t(k)]));
   }
   if (fcolors) CHECK(back.face_colors == m.face_colors);
 }
@@ -71,23 +78,74 @@ TEST_CASE("round trip: OBJ keeps polygons, corner normals, texcoords and vertex 
   ScratchDir dir;
   Mesh m = rich_mesh();
   m.colors_are_float = true;
+  m.face_colors.clear();  // no face colours: no vertex is split (see the next test)
   WriteInfo wi;
   write_mesh(m, dir / "r.obj", WriteOptions{}, &wi);
   CHECK(wi.split_vertices == 0);
   ReadInfo ri;
   Mesh back = read_mesh(dir / "r.obj", Format::Auto, &ri);
   CHECK(back.num_vertices() == m.num_vertices());
-  CHECK(back.positions == m.positions);
+  // rich_mesh holds floats (0.1f...): they print as "0.1" and come back as the same floats
+  CHECK(same_after_text(m.positions, back.positions));
   CHECK(back.corner_vertex == m.corner_vertex);
-  CHECK(back.corner_normals == m.corner_normals);
+  CHECK(same_after_text(m.corner_normals, back.corner_normals));
   CHECK(back.corner_normal_index == m.corner_normal_index);
-  CHECK(back.texcoords == m.texcoords);
+  CHECK(same_after_text(m.texcoords, back.texcoords));
   CHECK(back.corner_texcoord_index == m.corner_texcoord_index);
   CHECK(back.vertex_colors == m.vertex_colors);
   CHECK(back.precision == ValuePrecision::Float);
   // a second trip gives the same bytes
   write_mesh(back, dir / "r2.obj", WriteOptions{});
   CHECK(read_file(dir / "r.obj") == read_file(dir / "r2.obj"));
+}
+
+TEST_CASE("round trip: OBJ carries face colours by splitting vertices; faces, normals, texcoords per corner kept",
+          "[mesh_io][roundtrip]") {
+  ScratchDir dir;
+  const Mesh m = rich_mesh();  // 3 faces, 3 different colours, and vertex colours too
+  WriteInfo wi;
+  write_mesh(m, dir / "f.obj", WriteOptions{}, &wi);
+  // Faces 0 (0 1 3), 1 (1 4 5 2), 2 (3 1 2 5 6): vertex 1 is in all three faces (2 more copies),
+  // vertices 2, 3 and 5 in two each (1 more copy each), 0, 4 and 6 in one: 5 added, 12 in all.
+  CHECK(wi.split_vertices == 5);
+  REQUIRE(wi.notes.size() == 2);
+  CHECK(wi.notes[0] ==
+        "face colours written as vertex colours (v x y z r g b): 5 vertices added so that every face's corners carry its colour");
+  CHECK(wi.notes[1] == "vertex colours replaced by the face colours: OBJ holds one colour per vertex");
+  const Mesh back = read_mesh(dir / "f.obj");
+  CHECK(back.num_vertices() == 12);
+  REQUIRE(back.num_faces() == m.num_faces());
+  CHECK(back.face_start == m.face_start);  // same faces, same sizes, same order
+  REQUIRE(back.has_vertex_colors());
+  REQUIRE(back.color_channels == 3);
+  REQUIRE(back.has_corner_normals());
+  REQUIRE(back.has_texcoords());
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) {
+      INFO("face " << f << " corner " << c);
+      CHECK(same(m.position(m.corner_vertex[c]), back.position(back.corner_vertex[c]), Via::Text));
+      for (int k = 0; k < 3; ++k)  // every corner carries its face's colour (floats print and read back exactly)
+        CHECK(back.vertex_colors[3 * back.corner_vertex[c] + std::size_t(k)] == m.face_colors[3 * f + std::size_t(k)]);
+      CHECK(same(get3(m.corner_normals, m.corner_normal_index[c]), get3(back.corner_normals, back.corner_normal_index[c]),
+                 Via::Text));
+      for (int k = 0; k < 2; ++k)
+        CHECK(same_after_text(m.texcoords[2 * m.corner_texcoord_index[c] + std::size_t(k)],
+                              back.texcoords[2 * back.corner_texcoord_index[c] + std::size_t(k)]));
+    }
+  // the originals keep their place: the first 7 vertices are the input's, in order
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) CHECK(same(m.position(v), back.position(v), Via::Text));
+  // rgba face colours give `v x y z r g b a`
+  Mesh a = rich_mesh();
+  a.vertex_colors.clear();
+  a.color_channels = 4;
+  a.face_colors = {1, 0, 0, 0.5f, 0, 1, 0, 0.25f, 0, 0, 1, 1};
+  write_mesh(a, dir / "a.obj", WriteOptions{});
+  const Mesh ab = read_mesh(dir / "a.obj");
+  REQUIRE(ab.color_channels == 4);
+  for (std::size_t f = 0; f < a.num_faces(); ++f)
+    for (std::uint32_t c = a.face_start[f]; c < a.face_start[f + 1]; ++c)
+      for (int k = 0; k < 4; ++k)
+        CHECK(ab.vertex_colors[4 * ab.corner_vertex[c] + std::size_t(k)] == a.face_colors[4 * f + std::size_t(k)]);
 }
 
 TEST_CASE("round trip: PLY binary and ascii, float and double", "[mesh_io][roundtrip]") {
@@ -102,10 +160,10 @@ TEST_CASE("round trip: PLY binary and ascii, float and double", "[mesh_io][round
       write_mesh(m, dir / "r.ply", o);
       Mesh back = read_mesh(dir / "r.ply");
       CHECK(back.precision == prec);
-      check_same_geometry(m, back, true, true, true, true);
+      check_same_geometry(m, back, binary ? Via::Binary : Via::Text, true, true, true, true);
       CHECK(back.num_vertices() == m.num_vertices() + 4);  // the split for corner normals
       // vertex order is kept: the first V vertices are the originals
-      for (std::size_t v = 0; v < m.num_vertices(); ++v) CHECK(back.position(v) == m.position(v));
+      for (std::size_t v = 0; v < m.num_vertices(); ++v) CHECK(same(m.position(v), back.position(v), binary ? Via::Binary : Via::Text));
     }
 }
 
@@ -114,7 +172,7 @@ TEST_CASE("round trip: OFF keeps polygons, split corner normals and colours", "[
   Mesh m = rich_mesh();
   write_mesh(m, dir / "r.off", WriteOptions{});
   Mesh back = read_mesh(dir / "r.off");
-  check_same_geometry(m, back, true, true, true, false);
+  check_same_geometry(m, back, Via::Text, true, true, true, false);
   // double data with 17 digits stays double and exact
   m.precision = ValuePrecision::Double;
   m.positions[0] = 1.0 / 3.0;
@@ -124,7 +182,8 @@ TEST_CASE("round trip: OFF keeps polygons, split corner normals and colours", "[
   CHECK(back.positions[0] == 1.0 / 3.0);
 }
 
-TEST_CASE("round trip: STL binary and ascii keep triangles and positions bitwise", "[mesh_io][roundtrip]") {
+TEST_CASE("round trip: STL binary and ascii keep triangles; positions bitwise (binary), same floats (ascii)",
+          "[mesh_io][roundtrip]") {
   ScratchDir dir;
   Mesh m = testing::icosphere(1).mesh;
   for (double& x : m.positions) x = double(float(x));
@@ -135,12 +194,13 @@ TEST_CASE("round trip: STL binary and ascii keep triangles and positions bitwise
     write_mesh(m, dir / "r.stl", o);
     ReadInfo ri;
     Mesh back = read_mesh(dir / "r.stl", Format::Auto, &ri);
-    // Vertices come back in order of first appearance in the faces, each position bitwise.
+    // Vertices come back in order of first appearance in the faces, each position bitwise
+    // (binary) or as the same float (ascii: 0.1f is printed "0.1" and read back as 0.1).
     CHECK(back.num_vertices() == m.num_vertices());
     REQUIRE(back.num_corners() == m.num_corners());
     for (std::size_t c = 0; c < m.num_corners(); ++c) {
       const Vec3d p = m.position(m.corner_vertex[c]), q = back.position(back.corner_vertex[c]);
-      CHECK(std::memcmp(&p, &q, sizeof p) == 0);
+      CHECK(same(p, q, binary ? Via::Binary : Via::Text));
     }
     CHECK(ri.merged_vertices == m.num_corners() - m.num_vertices());
   }
@@ -156,9 +216,28 @@ TEST_CASE("round trip: the sample meshes in data/ through every format", "[mesh_
       write_mesh(m, out, WriteOptions{});
       const Mesh back = read_mesh(out);
       INFO(name << " -> " << ext);
-      CHECK(back.positions == m.positions);
+      if (std::string(ext) == "ply" && m.precision == ValuePrecision::Float) {
+        // binary PLY with float properties (the precision hint): each value narrowed to float
+        std::vector<double> narrowed = m.positions;
+        for (double& x : narrowed) x = double(float(x));
+        CHECK(back.positions == narrowed);
+      } else if (!(std::string(ext) == "obj" && m.has_face_colors())) {
+        CHECK(same_after_text(m.positions, back.positions));
+      }
       CHECK(back.face_start == m.face_start);
-      CHECK(back.corner_vertex == m.corner_vertex);
+      if (std::string(ext) == "obj" && m.has_face_colors()) {
+        // face colours reach OBJ by splitting vertices: per corner, same position and its face's colour
+        REQUIRE(back.num_corners() == m.num_corners());
+        for (std::size_t f = 0; f < m.num_faces(); ++f)
+          for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) {
+            CHECK(same(m.position(m.corner_vertex[c]), back.position(back.corner_vertex[c]), Via::Text));
+            for (int k = 0; k < m.color_channels; ++k)
+              CHECK(back.vertex_colors[std::size_t(back.color_channels) * back.corner_vertex[c] + std::size_t(k)] ==
+                    m.face_colors[std::size_t(m.color_channels) * f + std::size_t(k)]);
+          }
+      } else {
+        CHECK(back.corner_vertex == m.corner_vertex);
+      }
       CHECK(back.precision == m.precision);
     }
   }

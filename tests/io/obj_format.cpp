@@ -1,5 +1,6 @@
 // Tests of io/obj_format: every index form, relative indices, what is accepted and skipped, the
-// precision rule, shortest text output and the error messages (FILE:LINE: what).
+// precision hint (values never rounded), shortest text output and the error messages (FILE:LINE: what).
+#include <cmath>
 #include <cstring>
 
 #include "io_test_util.h"
@@ -96,10 +97,11 @@ TEST_CASE("OBJ: vertex colours after xyz, w ignored", "[obj]") {
   CHECK(w.positions == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0});
 }
 
-TEST_CASE("OBJ: precision follows the digits: <= 9 significant digits is float data", "[obj]") {
+TEST_CASE("OBJ: values kept as parsed; precision hint follows the digits (<= 9 significant: Float)", "[obj]") {
   Mesh f = read_text("v 0.1 0.2 0.3\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", Format::Obj);
   CHECK(f.precision == ValuePrecision::Float);
-  CHECK(f.positions[0] == double(0.1f));  // narrowed to what a float holds
+  CHECK(f.positions[0] == 0.1);  // the double nearest to the text, not narrowed to 0.1f
+  CHECK(f.positions[0] != double(0.1f));
   Mesh d = read_text("v 0.10000000000000001 0.2 0.3\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", Format::Obj);
   CHECK(d.precision == ValuePrecision::Double);
   CHECK(d.positions[0] == 0.1);  // the double nearest to the text
@@ -137,6 +139,104 @@ TEST_CASE("OBJ writer: shortest text that reads back exactly", "[obj]") {
   Mesh back = read_text(dtext, Format::Obj);
   CHECK(back.precision == ValuePrecision::Double);
   CHECK(back.positions == m.positions);
+  // the value decides the form, not the precision hint
+  m.precision = ValuePrecision::Float;
+  CHECK(write_mesh_to_memory(m, o) == dtext);
+  m.positions[0] = double(0.1f);
+  m.precision = ValuePrecision::Double;
+  CHECK(write_mesh_to_memory(m, o).find("v 0.1 0.3333333333333333 -2.5\n") != std::string::npos);
+}
+
+TEST_CASE("OBJ: 9-digit values that are not floats are kept and written back as typed", "[obj][precision]") {
+  // None of these is a float. The floats nearest to them (what the reader used to store) are
+  // 123456.7890625 (float spacing 2^-7 in [2^16, 2^17)), 1 (spacing 2^-23 ~ 1.2e-7 above 1, so
+  // 1.00000001 is within half a step of 1), 16777216 (2^24 + 1 needs 25 bits), -7.654321193695068,
+  // 0.3333333432674408, 0.699999988079071 and 0.26726123690605164.
+  const std::string text =
+      "v 123456.789 0.1 -7.65432109\n"
+      "v 1.00000001 0 0\n"
+      "v 0 16777217 0\n"
+      "vt 0.333333333 0.7\n"
+      "vn 0.267261242 0.534522484 0.801783726\n"
+      "f 1/1/1 2/1/1 3/1/1\n";
+  const Mesh m = read_text(text, Format::Obj);
+  CHECK(m.precision == ValuePrecision::Float);  // no number has more than 9 significant digits
+  // the doubles nearest to the text (the compiler's own decimal conversion of the literals)
+  CHECK(m.positions == std::vector<double>{123456.789, 0.1, -7.65432109, 1.00000001, 0, 0, 0, 16777217, 0});
+  CHECK(m.positions[3] != 1.0);
+  CHECK(m.texcoords == std::vector<double>{0.333333333, 0.7});
+  CHECK(m.corner_normals == std::vector<double>{0.267261242, 0.534522484, 0.801783726});
+  WriteOptions o;
+  o.format = Format::Obj;
+  const std::string out = write_mesh_to_memory(m, o);
+  CHECK(out.find("v 123456.789 0.1 -7.65432109\n") != std::string::npos);
+  CHECK(out.find("v 1.00000001 0 0\n") != std::string::npos);
+  CHECK(out.find("v 0 16777217 0\n") != std::string::npos);
+  CHECK(out.find("vt 0.333333333 0.7\n") != std::string::npos);
+  CHECK(out.find("vn 0.267261242 0.534522484 0.801783726\n") != std::string::npos);
+  const Mesh back = read_text(out, Format::Obj);
+  CHECK(back.positions == m.positions);
+  CHECK(back.texcoords == m.texcoords);
+  CHECK(back.corner_normals == m.corner_normals);
+  CHECK(back.precision == ValuePrecision::Float);
+  CHECK(write_mesh_to_memory(back, o) == out);
+}
+
+TEST_CASE("OBJ from binary float PLY: floats print in their short form and read back as the same floats",
+          "[obj][precision]") {
+  // A binary PLY built by hand, in the host's byte order: positions and normals declared float.
+  const std::uint16_t one = 1;
+  char low_byte;
+  std::memcpy(&low_byte, &one, 1);
+  std::string ply = std::string("ply\nformat ") + (low_byte == 1 ? "binary_little_endian" : "binary_big_endian") +
+      " 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const float v[18] = {0.1f, 1.0f / 3.0f, 123456.789f, 0.6f, 0.0f, 0.8f,  //
+                       1.0f, 0.0f,        -2.5f,       0.0f, 0.0f, 1.0f,  //
+                       0.0f, 1e-40f,      3.4e38f,     0.0f, -1.0f, 0.0f};
+  ply.append(reinterpret_cast<const char*>(v), sizeof v);
+  const std::int32_t idx[3] = {0, 1, 2};
+  ply += char(3);
+  ply.append(reinterpret_cast<const char*>(idx), sizeof idx);
+  const Mesh m = read_text(ply, Format::Ply);
+  WriteOptions o;
+  o.format = Format::Obj;
+  const std::string out = write_mesh_to_memory(m, o);
+  // shortest float forms: 1/3f = 0.3333333432674408 -> "0.33333334", 123456.789f = 123456.7890625
+  // -> "123456.79" (not the 17-digit double forms)
+  CHECK(out.find("v 0.1 0.33333334 123456.79\n") != std::string::npos);
+  CHECK(out.find("v 1 0 -2.5\n") != std::string::npos);
+  CHECK(out.find("v 0 1e-40 3.4e+38\n") != std::string::npos);
+  CHECK(out.find("vn 0.6 0 0.8\n") != std::string::npos);
+  const Mesh back = read_text(out, Format::Obj);
+  REQUIRE(back.positions.size() == 9);
+  for (std::size_t i = 0; i < 9; ++i) {
+    const float f = float(back.positions[i]), want = v[6 * (i / 3) + i % 3];
+    CHECK(std::memcmp(&f, &want, sizeof f) == 0);
+  }
+  // and on to binary PLY again: the very same floats, bitwise
+  WriteOptions p;
+  p.format = Format::Ply;
+  const Mesh again = read_text(write_mesh_to_memory(back, p), Format::Ply);
+  for (std::size_t i = 0; i < 9; ++i) CHECK(again.positions[i] == m.positions[i]);
+}
+
+TEST_CASE("OBJ writer: computed (double) normals print with up to 17 digits and read back exactly", "[obj][precision]") {
+  Mesh m;  // the corner of a cube: the vertex normal along (1,1,1) is 1/sqrt(3) per component
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_vertex({0, 0, 1});
+  m.add_face({0, 1, 2});
+  const double c = 1.0 / std::sqrt(3.0);  // 0.57735026918962573 (17 digits); shortest "0.5773502691896258"
+  m.vertex_normals = {c, c, c, c, c, c, c, c, c};
+  WriteOptions o;
+  o.format = Format::Obj;
+  const std::string out = write_mesh_to_memory(m, o);
+  CHECK(out.find("vn 0.5773502691896258 0.5773502691896258 0.5773502691896258\n") != std::string::npos);
+  const Mesh back = read_text(out, Format::Obj);
+  CHECK(back.corner_normals == std::vector<double>{c, c, c, c, c, c, c, c, c});
+  CHECK(back.precision == ValuePrecision::Double);  // 16 digits: the hint follows
 }
 
 TEST_CASE("OBJ writer: normals as vn pool, per vertex or per face; texcoords as vt", "[obj]") {
@@ -159,6 +259,49 @@ TEST_CASE("OBJ writer: normals as vn pool, per vertex or per face; texcoords as 
   t = write_mesh_to_memory(m, o);
   CHECK(t.find("vt 1 0\n") != std::string::npos);
   CHECK(t.find("f 1/1/1 2/2/2 3/2/3\n") != std::string::npos);
+}
+
+TEST_CASE("OBJ writer: face colours split the vertices shared by faces of different colours", "[obj][colors]") {
+  Mesh m;  // a square as two triangles, red and blue, sharing the diagonal 0-2
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({1, 1, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_face({0, 1, 2});
+  m.add_face({0, 2, 3});
+  m.face_colors = {1, 0, 0, 0, 0, 1};
+  m.face_normals = {0, 0, 1, 0, 0, 1};
+  WriteOptions o;
+  o.format = Format::Obj;
+  WriteInfo wi;
+  const std::string text = write_mesh_to_memory(m, o, &wi);
+  // vertices 0 and 2 keep red (their first face) and get a blue copy each, appended as 5 and 6
+  CHECK(text ==
+        "# written by shadetool\n"
+        "v 0 0 0 1 0 0\n"
+        "v 1 0 0 1 0 0\n"
+        "v 1 1 0 1 0 0\n"
+        "v 0 1 0 0 0 1\n"
+        "v 0 0 0 0 0 1\n"
+        "v 1 1 0 0 0 1\n"
+        "vn 0 0 1\n"
+        "vn 0 0 1\n"
+        "f 1//1 2//1 3//1\n"
+        "f 5//2 6//2 4//2\n");
+  CHECK(wi.split_vertices == 2);
+  REQUIRE(wi.notes.size() == 1);
+  CHECK(wi.notes[0] == "face colours written as vertex colours (v x y z r g b): 2 vertices added so that every face's corners carry its colour");
+  // one colour for both: nothing to split; an unused vertex is written white, with a note
+  m.face_colors = {0.5f, 0.25f, 1, 0.5f, 0.25f, 1};
+  m.add_vertex({5, 5, 5});
+  wi = WriteInfo{};
+  const std::string one = write_mesh_to_memory(m, o, &wi);
+  CHECK(one.find("v 0 0 0 0.5 0.25 1\nv 1 0 0 0.5 0.25 1\nv 1 1 0 0.5 0.25 1\nv 0 1 0 0.5 0.25 1\nv 5 5 5 1 1 1\nvn") !=
+        std::string::npos);
+  CHECK(one.find("f 1//1 2//1 3//1\nf 1//2 3//2 4//2\n") != std::string::npos);
+  CHECK(wi.split_vertices == 0);
+  REQUIRE(wi.notes.size() == 2);
+  CHECK(wi.notes[1] == "1 vertex used by no face written white");
 }
 
 TEST_CASE("OBJ: errors name the file and line", "[obj][errors]") {

@@ -17,7 +17,7 @@ TEST_CASE("OFF: plain, with comments, counts on the keyword line, polygons", "[o
 
 TEST_CASE("OFF: NOFF normals, COFF integer and float colours, face colours", "[off]") {
   Mesh n = read_text("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0.6 0 0.8\n3 0 1 2\n", Format::Off);
-  CHECK(n.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, 1, double(0.6f), 0, double(0.8f)});
+  CHECK(n.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, 1, 0.6, 0, 0.8});  // as parsed, not narrowed
   Mesh c = read_text("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 51 255\n3 0 1 2 10 20 30\n", Format::Off);
   CHECK(c.color_channels == 4);
   CHECK(!c.colors_are_float);
@@ -44,6 +44,61 @@ TEST_CASE("OFF writer: header letters follow the attributes; round trip of colou
     for (int k = 0; k < 3; ++k)
       CHECK(back.vertex_colors[3 * v + std::size_t(k)] == m.vertex_colors[3 * m.corner_vertex[c] + std::size_t(k)]);
   }
+}
+
+TEST_CASE("OFF writer: face colours native after the indices; float colours keep a decimal point", "[off][colors]") {
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_vertex({1, 1, 0});
+  m.add_face({0, 1, 2});
+  m.add_face({1, 3, 2});
+  m.face_colors = {1, 0, 0, 0.5f, 0.25f, 1};
+  WriteOptions o;
+  o.format = Format::Off;
+  WriteInfo wi;
+  // uchar colours: round(255 c): 1 -> 255, 0.5 -> 128 (127.5 rounds up), 0.25 -> 64 (63.75)
+  std::string text = write_mesh_to_memory(m, o, &wi);
+  CHECK(text == "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 255 0 0\n3 1 3 2 128 64 255\n");
+  CHECK(wi.split_vertices == 0);
+  CHECK(wi.notes.empty());
+  // float colours: 1 0 0 written as integers would read back as 1/255 0 0
+  m.colors_are_float = true;
+  text = write_mesh_to_memory(m, o);
+  CHECK(text.find("\n3 0 1 2 1.0 0.0 0.0\n3 1 3 2 0.5 0.25 1.0\n") != std::string::npos);
+  const Mesh back = read_text(text, Format::Off);
+  CHECK(back.colors_are_float);
+  CHECK(back.num_vertices() == 4);
+  CHECK(back.corner_vertex == m.corner_vertex);
+  CHECK(back.face_colors == m.face_colors);
+  // vertex colours too
+  m.vertex_colors = {1, 1, 1, 0, 0, 0, 1, 0, 1, 0.5f, 0.5f, 0.5f};
+  const Mesh vback = read_text(write_mesh_to_memory(m, o), Format::Off);
+  CHECK(vback.vertex_colors == m.vertex_colors);
+  CHECK(vback.face_colors == m.face_colors);
+}
+
+TEST_CASE("OFF: 9-digit values that are not floats are kept and written back as typed", "[off][precision]") {
+  // The floats nearest to these are 123456.7890625, 1, 16777216, -7.654321193695068,
+  // 0.26726123690605164... (see the OBJ test); the reader stores the doubles nearest to the text.
+  const std::string text =
+      "NOFF\n3 1 0\n"
+      "123456.789 0.1 -7.65432109 0.267261242 0.534522484 0.801783726\n"
+      "1.00000001 0 0 0 0 1\n"
+      "0 16777217 0 0 0 1\n"
+      "3 0 1 2\n";
+  const Mesh m = read_text(text, Format::Off);
+  CHECK(m.precision == ValuePrecision::Float);
+  CHECK(m.positions == std::vector<double>{123456.789, 0.1, -7.65432109, 1.00000001, 0, 0, 0, 16777217, 0});
+  CHECK(m.vertex_normals == std::vector<double>{0.267261242, 0.534522484, 0.801783726, 0, 0, 1, 0, 0, 1});
+  WriteOptions o;
+  o.format = Format::Off;
+  const std::string out = write_mesh_to_memory(m, o);
+  CHECK(out == text);  // the writer's layout is the one above: every value as typed
+  const Mesh back = read_text(out, Format::Off);
+  CHECK(back.positions == m.positions);
+  CHECK(back.vertex_normals == m.vertex_normals);
 }
 
 TEST_CASE("OFF: errors name the file and line", "[off][errors]") {

@@ -142,6 +142,30 @@ TEST_CASE("PLY binary float: values are the stored floats, bitwise", "[ply]") {
   }
 }
 
+TEST_CASE("PLY ascii declared float: values kept as parsed; binary float output narrows them", "[ply][precision]") {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "123456.789 0.1 -7.65432109\n1.00000001 0 0\n0 16777217 0\n3 0 1 2\n";
+  const Mesh m = read_text(text, Format::Ply);
+  CHECK(m.precision == ValuePrecision::Float);  // declared float: binary output uses float
+  CHECK(m.positions == std::vector<double>{123456.789, 0.1, -7.65432109, 1.00000001, 0, 0, 0, 16777217, 0});
+  WriteOptions o;
+  o.format = Format::Ply;
+  o.binary = false;
+  const std::string asc = write_mesh_to_memory(m, o);
+  CHECK(asc.find("property float x\n") != std::string::npos);
+  CHECK(asc.find("\n123456.789 0.1 -7.65432109\n1.00000001 0 0\n0 16777217 0\n") != std::string::npos);
+  CHECK(read_text(asc, Format::Ply).positions == m.positions);
+  // binary float properties hold floats: 123456.789 -> 123456.7890625 (spacing 2^-7 there),
+  // 1.00000001 -> 1, 16777217 -> 16777216 (2^24 + 1 needs 25 bits)
+  o.binary = true;
+  const Mesh b = read_text(write_mesh_to_memory(m, o), Format::Ply);
+  CHECK(b.positions[0] == 123456.7890625);
+  CHECK(b.positions[3] == 1.0);
+  CHECK(b.positions[7] == 16777216.0);
+}
+
 TEST_CASE("PLY writer: binary by default, ascii on request, value and colour types follow the mesh", "[ply]") {
   Mesh m = rich_mesh();
   WriteOptions o;

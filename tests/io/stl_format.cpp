@@ -74,6 +74,22 @@ TEST_CASE("STL ascii: facets, several solids, polygons kept, merging", "[stl]") 
   CHECK(info.merged_vertices == 2);
 }
 
+TEST_CASE("STL ascii: 9-digit values that are not floats are kept and written back as typed", "[stl][precision]") {
+  const std::string text =
+      "solid s\nfacet normal 0 0 1\nouter loop\nvertex 123456.789 0.1 0\nvertex 123457.789 0.1 0\n"
+      "vertex 123456.789 1.00000001 0\nendloop\nendfacet\nendsolid s\n";
+  const Mesh m = read_text(text, Format::Stl);
+  CHECK(m.precision == ValuePrecision::Float);
+  CHECK(m.positions == std::vector<double>{123456.789, 0.1, 0, 123457.789, 0.1, 0, 123456.789, 1.00000001, 0});
+  WriteOptions o;
+  o.format = Format::Stl;
+  o.binary = false;
+  const std::string out = write_mesh_to_memory(m, o);
+  CHECK(out.find("facet normal 0 0 1\nouter loop\nvertex 123456.789 0.1 0\nvertex 123457.789 0.1 0\n"
+                 "vertex 123456.789 1.00000001 0\n") != std::string::npos);
+  CHECK(read_text(out, Format::Stl).positions == m.positions);
+}
+
 TEST_CASE("STL writer: fans for polygons, computed unit normals, binary layout", "[stl]") {
   Mesh m;
   m.add_vertex({0, 0, 0});

@@ -7,20 +7,64 @@ using namespace shadetool;
 using namespace shadetool::io;
 
 namespace {
-std::string shortest(double v, ValuePrecision p) {
+std::string shortest(double v) {
   std::string s;
-  append_shortest(s, v, p);
+  append_shortest(s, v);
   return s;
+}
+double parse(const std::string& s) {
+  double v = 0;
+  const char* p = s.data();
+  REQUIRE(parse_double(p, s.data() + s.size(), v));
+  return v;
 }
 }  // namespace
 
-TEST_CASE("shortest text: float data prints as float, double as double", "[text]") {
-  CHECK(shortest(double(0.1f), ValuePrecision::Float) == "0.1");
-  CHECK(shortest(0.1, ValuePrecision::Double) == "0.1");
-  CHECK(shortest(double(0.1f), ValuePrecision::Double) == "0.10000000149011612");
-  CHECK(shortest(1e-300, ValuePrecision::Double) == "1e-300");
-  CHECK(shortest(-0.0, ValuePrecision::Float) == "-0");
-  CHECK(shortest(16777217.0, ValuePrecision::Double) == "16777217");
+TEST_CASE("exact floats: double(float(x)) == x, range checked first", "[text]") {
+  CHECK(is_exact_float(double(0.1f)));
+  CHECK(!is_exact_float(0.1));           // 0.1 needs 53 bits of mantissa
+  CHECK(is_exact_float(16777216.0));     // 2^24
+  CHECK(!is_exact_float(16777217.0));    // 2^24 + 1 needs 25 bits
+  CHECK(!is_exact_float(1e-300));        // below float's smallest subnormal (~1.4e-45)
+  CHECK(!is_exact_float(1e300));         // beyond FLT_MAX (~3.4e38)
+  CHECK(is_exact_float(double(std::numeric_limits<float>::max())));
+  CHECK(is_exact_float(double(std::numeric_limits<float>::denorm_min())));
+  CHECK(is_exact_float(INFINITY));
+  CHECK(!is_exact_float(NAN));
+}
+
+TEST_CASE("shortest text: the value decides, float form for exact floats, else double form", "[text]") {
+  // a float read from binary PLY/STL prints as the float: 0.1f = 0.100000001490116119384765625
+  CHECK(shortest(double(0.1f)) == "0.1");
+  CHECK(shortest(double(1.0f / 3.0f)) == "0.33333334");
+  // a double typed as text prints back as typed
+  CHECK(shortest(0.1) == "0.1");
+  CHECK(shortest(123456.789) == "123456.789");
+  // the float nearest 123456.789 is 123456.7890625 (spacing 2^-7 = 0.0078125 at 2^16..2^17)
+  CHECK(double(123456.789f) == 123456.7890625);
+  CHECK(shortest(123456.7890625) == "123456.79");
+  CHECK(shortest(1.0 / 3.0) == "0.3333333333333333");
+  CHECK(shortest(16777217.0) == "16777217");
+  CHECK(shortest(1e-300) == "1e-300");
+  CHECK(shortest(1e300) == "1e+300");
+  CHECK(shortest(-0.0) == "-0");
+  CHECK(shortest(INFINITY) == "inf");
+  CHECK(shortest(-INFINITY) == "-inf");
+  CHECK(shortest(NAN) == "nan");
+}
+
+TEST_CASE("shortest text reads back: doubles exactly, floats as the same float", "[text]") {
+  for (double x : {0.1, 123456.789, 1.0 / 3.0, 2.0 / 3.0 * 1e-10, 16777217.0, 1e300, -5e-324, 0.30000000000000004}) {
+    INFO(x);
+    CHECK(parse(shortest(x)) == x);
+  }
+  for (float f : {0.1f, 1.0f / 3.0f, 123456.789f, 3.4e38f, 1e-40f /* subnormal */, -7.0e-45f}) {
+    INFO(f);
+    const double back = parse(shortest(double(f)));
+    CHECK(float(back) == f);
+    // and the text is stable: the value read back prints the same text
+    CHECK(shortest(back) == shortest(double(f)));
+  }
 }
 
 TEST_CASE("number tokens: strict ends, leading +, NaN and Inf", "[text]") {

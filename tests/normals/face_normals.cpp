@@ -71,3 +71,30 @@ TEST_CASE("face_normals: a sliver far from the origin keeps its exact normal (sh
   const auto n = face_normals(m);
   CHECK(n[0] == 0.0); CHECK(n[1] == 0.0); CHECK(n[2] == 1.0);
 }
+
+TEST_CASE("face_normals: the two shortest edges beat the two long ones on a needle", "[face_normals]") {
+  // Needle in a tilted plane: p1 = p0 + u, p2 = p1 + 1e-7 (w - u/2) with u = (1, 2, 3) and
+  // w = (-2, 1, 0): one edge 1e-7 long, making a wide angle with the long edges at p1 and p2.
+  // Truth: the normal of the stored (rounded) positions, from the two short edges at p2 in long
+  // double (64-bit significand). The long edges p0p1, p0p2 meet at an angle ~1e-7, so their
+  // double cross product loses ~7 digits; the shortest pair (at p1 or p2) keeps ~1e-15.
+  Mesh m;
+  const Vec3d p0{0.3, -0.7, 1.9};
+  const Vec3d p1 = p0 + Vec3d{1, 2, 3};
+  const Vec3d p2 = p1 + Vec3d{-2.5e-7, 0, -1.5e-7};
+  m.add_vertex(p0); m.add_vertex(p1); m.add_vertex(p2);
+  m.add_face({0, 1, 2});
+  using L = long double;  // truth from the short edge p2 - p1 and p0 - p1 (apex p1 or p2)
+  const L a[3] = {L(p2.x) - L(p1.x), L(p2.y) - L(p1.y), L(p2.z) - L(p1.z)};
+  const L b[3] = {L(p0.x) - L(p1.x), L(p0.y) - L(p1.y), L(p0.z) - L(p1.z)};
+  const L x[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  const L len = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  const Vec3d exact{double(x[0] / len), double(x[1] / len), double(x[2] / len)};
+  const Vec3d n = get3(face_normals(m), 0);
+  const Vec3d naive = normalized_or(cross(p1 - p0, p2 - p0), Vec3d{});
+  const double err = std::atan2(length(cross(n, exact)), dot(n, exact));
+  const double naive_err = std::atan2(length(cross(naive, exact)), dot(naive, exact));
+  INFO("shortest-edge error " << err << " rad, long-edge error " << naive_err << " rad");
+  CHECK(err < 1e-14);
+  CHECK(naive_err > 1e-11);  // the long pair is measurably worse (guards the test's premise)
+}

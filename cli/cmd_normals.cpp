@@ -1,0 +1,121 @@
+// cmd_normals.cpp: `shadetool normals IN -o OUT [--weight uniform|area|angle|max] [--crease DEG]
+// [--recompute] [--faces] [--precision double|float] [--stats]`.
+// Parses, calls lib/normals/update_mesh_normals.h, prints notes and counts; exit codes in driver.h.
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "command_registry.h"
+#include "core/error.h"
+#include "core/validate.h"
+#include "driver.h"
+#include "normals/update_mesh_normals.h"
+#include "usage_error.h"
+
+namespace shadetool_cli {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct NormalsOptions {
+  std::string weight = "angle";
+  double crease_degrees = -1;  // < 0: not given (vertex normals)
+  bool recompute = false;
+  bool faces = false;
+  std::string precision = "double";
+};
+
+shadetool::Weighting parse_weight(const std::string& w) {
+  if (w == "uniform") return shadetool::Weighting::Uniform;
+  if (w == "area") return shadetool::Weighting::Area;
+  if (w == "max") return shadetool::Weighting::Max;
+  return shadetool::Weighting::Angle;
+}
+
+// True when update_mesh_normals would keep the mesh's normals (no computation, positions unused).
+bool has_normals_for(const shadetool::Mesh& mesh, shadetool::NormalKind kind) {
+  return kind == shadetool::NormalKind::Face ? mesh.has_face_normals()
+                                             : mesh.has_vertex_normals() || mesh.has_corner_normals();
+}
+
+RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
+  static IoOptions io;
+  static NormalsOptions opt;
+  auto* sub = app.add_subcommand("normals", "Compute vertex normals (default), corner normals split at creases, or face normals");
+  add_io_options(*sub, io, /*writes_mesh=*/true);
+  auto* weight = sub->add_option("--weight", opt.weight,
+                                 "How face normals are weighted into vertex normals: uniform (Gouraud), area, "
+                                 "angle (Thuermer-Wuethrich, default), max (Max 1999)")
+                     ->check(CLI::IsMember({"uniform", "area", "angle", "max"}));
+  auto* crease = sub->add_option("--crease", opt.crease_degrees,
+                                 "Per-corner normals: split where the angle between two faces' normals exceeds DEG "
+                                 "degrees (0..180); boundary and non-manifold edges always split")
+                     ->check(CLI::Range(0.0, 180.0))
+                     ->type_name("DEG");
+  sub->add_flag("--recompute", opt.recompute, "Discard normals read from the input and compute new ones");
+  auto* faces = sub->add_flag("--faces", opt.faces, "Write one normal per face instead of vertex normals");
+  sub->add_option("--precision", opt.precision, "Accumulate in double (default) or float")
+      ->check(CLI::IsMember({"double", "float"}));
+  faces->excludes(crease);
+  return [weight, faces] {
+    if (faces->count() > 0 && weight->count() > 0)
+      throw UsageError("--weight applies to vertex and corner normals, not to --faces");
+    shadetool::NormalsRequest request;
+    request.kind = opt.faces ? shadetool::NormalKind::Face
+                   : opt.crease_degrees >= 0 ? shadetool::NormalKind::Corner
+                                             : shadetool::NormalKind::Vertex;
+    request.weighting = parse_weight(opt.weight);
+    request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * kPi / 180.0 : 0.0;
+    request.precision = opt.precision == "float" ? shadetool::Precision::Float : shadetool::Precision::Double;
+    request.recompute = opt.recompute;
+    return run_mesh_command(
+        "normals", io,
+        [request](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+          shadetool::require_faces(mesh, input);
+          if (request.recompute || !has_normals_for(mesh, request.kind)) shadetool::require_finite_positions(mesh, input);
+          const shadetool::NormalsReport rep = shadetool::update_mesh_normals(mesh, request);
+          if (rep.kept && rep.invalid_existing > 0)
+            throw shadetool::Error(shadetool::located(
+                input, 0,
+                fmt::format("{} of {} {} are invalid (NaN, Inf or zero length); use --recompute to replace them "
+                            "(or `shadetool repair`)",
+                            rep.invalid_existing, rep.existing, rep.kept_what)));
+          if (rep.kept) {
+            r.notes.push_back(fmt::format("input has {}: kept unchanged, nothing computed (use --recompute to replace them)",
+                                          rep.kept_what));
+            r.stats["normals"] = "kept";
+            r.stats["kept_normals"] = rep.existing;
+            return;
+          }
+          const char* kind = request.kind == shadetool::NormalKind::Face     ? "face"
+                             : request.kind == shadetool::NormalKind::Corner ? "corner"
+                                                                             : "vertex";
+          r.stats["normals"] = kind;
+          if (request.kind != shadetool::NormalKind::Face) r.stats["weight"] = opt.weight;
+          if (request.kind == shadetool::NormalKind::Corner) {
+            r.stats["crease_degrees"] = opt.crease_degrees;
+            r.stats["corner_normals"] = rep.computed;
+          }
+          r.stats["precision"] = opt.precision;
+          r.stats["degenerate_faces"] = rep.degenerate_faces;
+          const char* fallback_key = request.kind == shadetool::NormalKind::Face     ? "fallback_faces"
+                                     : request.kind == shadetool::NormalKind::Corner ? "fallback_corners"
+                                                                                     : "fallback_vertices";
+          r.stats[fallback_key] = rep.fallback;
+          if (rep.discarded > 0) r.notes.push_back(fmt::format("--recompute: {} normals from the input discarded", rep.discarded));
+          if (rep.dropped > 0)
+            r.notes.push_back(fmt::format("{} vertex/corner normals from the input dropped: --faces writes face normals", rep.dropped));
+          if (rep.fallback > 0)
+            r.notes.push_back(fmt::format("{} {} had no valid face (isolated or only degenerate faces) or a cancelling sum: "
+                                          "given a fallback normal (see man shadetool-normals)",
+                                          rep.fallback, request.kind == shadetool::NormalKind::Face     ? "degenerate faces"
+                                                        : request.kind == shadetool::NormalKind::Corner ? "corners"
+                                                                                                        : "vertices"));
+        },
+        true);
+  };
+});
+
+}  // namespace
+}  // namespace shadetool_cli

@@ -1,0 +1,179 @@
+// cmd_repair.cpp: `shadetool repair IN -o OUT [--report FILE.json] [--weight W]
+// [--remove-degenerate] [--weld EPS]`. Parses, prints one line per step that changed something,
+// writes the JSON report; the repair itself is lib/repair/repair_mesh.h.
+#include <filesystem>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "command_registry.h"
+#include "core/error.h"
+#include "core/validate.h"
+#include "driver.h"
+#include "io/atomic_write.h"
+#include "repair/repair_mesh.h"
+#include "usage_error.h"
+
+namespace shadetool_cli {
+namespace {
+
+using shadetool::RepairReport;
+
+struct RepairCliOptions {
+  std::string report;
+  std::string weight = "angle";
+  bool remove_degenerate = false;
+  double weld = -1;  // < 0: not given
+};
+
+shadetool::Weighting weighting_from_name(const std::string& name) {
+  if (name == "uniform") return shadetool::Weighting::Uniform;
+  if (name == "area") return shadetool::Weighting::Area;
+  if (name == "max") return shadetool::Weighting::Max;
+  return shadetool::Weighting::Angle;
+}
+
+nlohmann::json report_json(const RepairReport& r, const RepairCliOptions& opt) {
+  nlohmann::json j;
+  j["faces_in"] = r.faces_in;
+  j["faces_out"] = r.faces_out;
+  j["components"] = r.components;
+  j["closed_components"] = r.closed_components;
+  j["open_components"] = r.open_components;
+  j["faces_flipped"] = r.faces_flipped;
+  j["faces_flipped_for_consistency"] = r.faces_flipped_for_consistency;
+  j["components_inverted"] = r.components_inverted;
+  j["nested_shells"] = r.nested_shells;
+  j["orientation"] = {{"by_volume", r.oriented_by_volume},
+                      {"by_vote", r.oriented_by_vote},
+                      {"by_majority", r.oriented_by_majority},
+                      {"open_component_method", "generalized winding number"}};
+  j["non_manifold_edges"] = r.non_manifold_edges;
+  j["duplicate_faces"] = r.duplicate_faces;
+  j["non_orientable_components"] = r.non_orientable_components;
+  j["inconsistent_edges"] = r.inconsistent_edges;
+  j["boundary_loops"] = r.boundary_loops;
+  j["degenerate_faces"] = r.degenerate_faces;
+  j["degenerate_by_kind"] = {{"zero_area", r.degenerate_zero_area},
+                             {"repeated_index", r.degenerate_repeated_index},
+                             {"too_few_corners", r.degenerate_too_few_corners},
+                             {"non_finite", r.degenerate_non_finite}};
+  j["degenerate_faces_removed"] = r.degenerate_faces_removed;
+  j["vertices_welded"] = r.vertices_welded;
+  j["weld_eps"] = opt.weld >= 0 ? nlohmann::json(opt.weld) : nlohmann::json(nullptr);
+  j["normals_recomputed"] = {{"nan", r.normals.nan},         {"inf", r.normals.inf},
+                             {"zero", r.normals.zero},       {"flipped", r.normals.flipped},
+                             {"missing", r.normals.missing}, {"total", r.normals.total()}};
+  j["normals_recomputed_by_kind"] = {{"vertex", r.normals.vertex}, {"corner", r.normals.corner}, {"face", r.normals.face}};
+  j["weighting"] = opt.weight;
+  j["changes"] = r.changes();
+  return j;
+}
+
+// "1 face", "2 faces".
+std::string count(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
+
+// One line per step that changed something (the driver prefixes `shadetool: INPUT: `).
+void add_notes(const RepairReport& r, const RepairCliOptions& opt, FileResult& out) {
+  if (r.vertices_welded > 0)
+    out.notes.push_back(fmt::format("weld: merged {} within {}", count(r.vertices_welded, "vertex", "vertices"), opt.weld));
+  if (r.faces_flipped_for_consistency > 0) {
+    std::string s = fmt::format("winding: reversed {} to make the winding consistent in {}",
+                                count(r.faces_flipped_for_consistency, "face", "faces"),
+                                count(r.components, "component", "components"));
+    if (r.non_manifold_edges > 0) s += fmt::format("; {} not crossed", count(r.non_manifold_edges, "non-manifold edge", "non-manifold edges"));
+    if (r.non_orientable_components > 0)
+      s += fmt::format("; {}, {} left inconsistent", count(r.non_orientable_components, "non-orientable component", "non-orientable components"),
+                       count(r.inconsistent_edges, "edge", "edges"));
+    out.notes.push_back(s);
+  }
+  if (r.components_inverted > 0) {
+    std::string s = fmt::format("orientation: reversed {} of {} as a whole", r.components_inverted,
+                                count(r.components, "component", "components"));
+    if (r.nested_shells > 0) s += fmt::format(" ({} facing a cavity)", count(r.nested_shells, "nested shell", "nested shells"));
+    out.notes.push_back(s);
+  }
+  if (r.normals.missing > 0)
+    out.notes.push_back(fmt::format("normals: computed {} ({} weighting; the mesh had none)",
+                                    count(r.normals.missing, "vertex normal", "vertex normals"), opt.weight));
+  const std::size_t fixed = r.normals.total() - r.normals.missing;
+  if (fixed > 0)
+    out.notes.push_back(fmt::format("normals: recomputed {} ({} NaN, {} Inf, {} zero, {} against their faces)",
+                                    count(fixed, "stored normal", "stored normals"), r.normals.nan, r.normals.inf,
+                                    r.normals.zero, r.normals.flipped));
+  if (r.degenerate_faces_removed > 0)
+    out.notes.push_back(fmt::format("degenerate: removed {} ({} zero area, {} repeated index, {} fewer than 3 corners, {} NaN/Inf)",
+                                    count(r.degenerate_faces_removed, "face", "faces"), r.degenerate_zero_area, r.degenerate_repeated_index,
+                                    r.degenerate_too_few_corners, r.degenerate_non_finite));
+}
+
+void add_stats(const RepairReport& r, FileResult& out) {
+  auto& s = out.stats;
+  s["components"] = r.components;
+  s["closed_components"] = r.closed_components;
+  s["open_components"] = r.open_components;
+  s["faces_flipped"] = r.faces_flipped;
+  s["components_inverted"] = r.components_inverted;
+  s["nested_shells"] = r.nested_shells;
+  s["non_manifold_edges"] = r.non_manifold_edges;
+  s["duplicate_faces"] = r.duplicate_faces;
+  s["non_orientable_components"] = r.non_orientable_components;
+  s["boundary_loops"] = r.boundary_loops;
+  s["degenerate_faces"] = r.degenerate_faces;
+  s["degenerate_faces_removed"] = r.degenerate_faces_removed;
+  s["vertices_welded"] = r.vertices_welded;
+  s["normals_recomputed"] = r.normals.total();
+}
+
+RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
+  static IoOptions io;  // static: must outlive parsing
+  static RepairCliOptions opt;
+  auto* sub = app.add_subcommand("repair", "Make winding consistent, orient outward, fix broken normals, report");
+  add_io_options(*sub, io, /*writes_mesh=*/true);
+  sub->add_option("--report", opt.report, "Write what was found and changed as a JSON object to FILE (one input only)");
+  sub->add_option("--weight", opt.weight, "Weighting of recomputed normals: uniform, area, angle (default) or max")
+      ->check(CLI::IsMember({"uniform", "area", "angle", "max"}));
+  sub->add_flag("--remove-degenerate", opt.remove_degenerate,
+                "Remove degenerate faces (zero area, repeated index, < 3 corners); default: report only");
+  sub->add_option("--weld", opt.weld, "Merge vertices within distance EPS (>= 0) of each other before orienting")
+      ->check(CLI::NonNegativeNumber);
+  return [] {
+    if (!opt.report.empty() && io.inputs.size() != 1) throw UsageError("--report takes one input");
+    if (opt.report == "-" && (io.output == "-" || io.json)) throw UsageError("--report - and -o - or --json all write stdout; choose one");
+    if (!opt.report.empty() && opt.report != "-") {
+      // Fail before any work (and any output) if the report cannot be written there.
+      const std::filesystem::path dir = std::filesystem::path(opt.report).parent_path();
+      if (!dir.empty() && !std::filesystem::is_directory(dir))
+        throw shadetool::Error(shadetool::located(opt.report, 0, "cannot write the report: no such directory"));
+    }
+    RepairReport report;
+    const int code = run_mesh_command(
+        "repair", io,
+        [&report](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+          shadetool::require_finite_positions(mesh, input);
+          shadetool::require_faces(mesh, input);
+          shadetool::RepairOptions o;
+          o.weighting = weighting_from_name(opt.weight);
+          o.remove_degenerate = opt.remove_degenerate;
+          o.weld_eps = opt.weld;
+          const RepairReport rep = shadetool::repair_mesh(mesh, o);
+          add_notes(rep, opt, r);
+          add_stats(rep, r);
+          if (!opt.report.empty()) report = rep;  // --report means one input: no other thread writes it
+        },
+        true);
+    // The report is written only after the mesh was: no report for a failed repair.
+    if (code == kExitOk && !opt.report.empty()) {
+      nlohmann::json j{{"input", io.inputs[0]}};
+      if (!io.output.empty()) j["output"] = io.output;
+      j.update(report_json(report, opt));
+      shadetool::io::write_file_atomically(opt.report, j.dump(2) + "\n");
+    }
+    return code;
+  };
+});
+
+}  // namespace
+}  // namespace shadetool_cli

@@ -1,0 +1,144 @@
+// accumulate_by_vertex.h: sums per-corner vectors into per-vertex sums, in parallel, with a
+// result that is bitwise the same as the serial loop whatever the number of threads
+// (internal to lib/normals; a template so that each kernel's contribution code is inlined).
+//
+// Inputs:  mesh        faces (corner_vertex, face_start)
+//          contribute  contribute(f_begin, f_end, sink) calls sink(corner, vertex, Vec3<T>) for the
+//                      corners of faces [f_begin, f_end) in corner order and returns a count
+//                      (of degenerate faces skipped), summed over all faces and returned
+// Output:  sum         #V by 3 (T) array, zero on entry; sum[v] = contributions of v's corners added in
+//                      ascending corner order, exactly as the serial loop would add them.
+//
+// Method (why the result does not depend on the thread count): faces are cut into K contiguous
+// chunks. Pass 1 writes, for every corner, its chunk id into owner[vertex] (relaxed stores; the
+// last writer wins). Pass 2 marks a vertex `shared` when some chunk touching it finds another
+// chunk's id there: after both passes, shared[v] is set exactly when v's corners lie in two or
+// more chunks. Pass 3 runs the chunks in parallel: a corner of an unshared vertex is added to
+// sum[v] directly (only its own chunk writes there, in corner order); a corner of a shared vertex
+// is appended to its chunk's side list. Pass 4 adds the side lists chunk by chunk, in order, on
+// one thread, so shared vertices too receive their terms in ascending corner order.
+// Faces stored with locality (every mesh file we have seen) share only the vertices along chunk
+// borders, so pass 4 is tiny. When the faces are in random order (more than a quarter of the
+// corners would go to side lists) the chunks are abandoned and the serial loop runs instead.
+// Small meshes (< kSerialBelow faces) and one-thread runs take the serial loop directly.
+// Memory: 3 bytes per vertex plus the side lists. plan_chunks (passes 1, 2) and
+// accumulate_by_target (passes 3, 4) are separate so callers can overlap the plan with
+// allocating the sums.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "core/mesh.h"
+#include "core/vec3.h"
+#include "normals/parallel.h"
+
+namespace shadetool::normals_detail {
+
+// The chunks and the shared rows (passes 1 and 2), computed before the sums so that a caller can
+// overlap them with allocating and zeroing `sum` (tbb::parallel_invoke). K == 0: serial loop.
+struct ChunkPlan {
+  std::size_t K = 0;
+  std::unique_ptr<std::atomic<std::uint8_t>[]> shared;
+};
+
+// Rows are target[c] (Target = true; corner normals use it with target = the corner's smooth
+// group) or the corner's vertex (Target = false, target unused).
+template <bool Target>
+ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t num_rows) {
+  ChunkPlan plan;
+  const std::size_t F = mesh.num_faces(), V = num_rows;
+  const std::size_t threads = std::size_t(tbb::this_task_arena::max_concurrency());
+  const std::size_t K = std::min<std::size_t>({F / 8192, 4 * threads, 65535});
+  if (F < kSerialBelow || threads < 2 || K < 2) return plan;
+  auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_start[F * k / K]); };  // corner index
+  const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
+
+  // Pass 1: last chunk to touch each row.
+  std::unique_ptr<std::atomic<std::uint16_t>[]> owner(new std::atomic<std::uint16_t>[V]());
+  tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
+    const auto id = std::uint16_t(k);
+    for (std::size_t c = chunk_begin(k), e = chunk_begin(k + 1); c < e; ++c)
+      owner[cv[c]].store(id, std::memory_order_relaxed);
+  });
+  // Pass 2: rows touched by more than one chunk.
+  plan.shared.reset(new std::atomic<std::uint8_t>[V]());
+  std::vector<std::size_t> foreign(K, 0);
+  tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
+    const auto id = std::uint16_t(k);
+    std::size_t n = 0;
+    for (std::size_t c = chunk_begin(k), e = chunk_begin(k + 1); c < e; ++c) {
+      const std::uint32_t v = cv[c];
+      if (owner[v].load(std::memory_order_relaxed) != id) {
+        plan.shared[v].store(1, std::memory_order_relaxed);
+        ++n;
+      }
+    }
+    foreign[k] = n;
+  });
+  std::size_t foreign_corners = 0;
+  for (auto n : foreign) foreign_corners += n;
+  if (foreign_corners > mesh.num_corners() / 4) {  // faces in random order: side lists would be huge
+    plan.shared.reset();
+    return plan;
+  }
+  plan.K = K;
+  return plan;
+}
+
+// Passes 3 and 4 (sum: #rows by 3, zero on entry). Returns the sum of contribute's counts.
+template <bool Target, class T, class Contribute>
+std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const std::uint32_t* target,
+                                 const Contribute& contribute, T* sum) {
+  const std::size_t F = mesh.num_faces(), K = plan.K;
+  T* s = sum;
+  auto row = [target](std::size_t c, std::uint32_t v) -> std::uint32_t {
+    if constexpr (Target) return target[c];
+    else return v;
+  };
+  if (K == 0)
+    return contribute(std::size_t(0), F, [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
+      T* o = s + 3 * std::size_t(row(c, v));
+      o[0] += n.x; o[1] += n.y; o[2] += n.z;
+    });
+  // Pass 3: chunks in parallel; shared rows' terms go to side lists, in corner order.
+  struct Term { std::uint32_t v; T x, y, z; };
+  std::vector<std::vector<Term>> side(K);
+  std::vector<std::size_t> counts(K, 0);
+  const std::atomic<std::uint8_t>* shared = plan.shared.get();
+  tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
+    auto& list = side[k];
+    counts[k] = contribute(F * k / K, F * (k + 1) / K, [&](std::size_t c, std::uint32_t vertex, const Vec3<T>& n) {
+      const std::uint32_t v = row(c, vertex);
+      if (shared[v].load(std::memory_order_relaxed)) {
+        list.push_back({v, n.x, n.y, n.z});
+      } else {
+        T* o = s + 3 * std::size_t(v);
+        o[0] += n.x; o[1] += n.y; o[2] += n.z;
+      }
+    });
+  });
+  // Pass 4: shared rows, chunk by chunk in order.
+  for (const auto& list : side)
+    for (const Term& t : list) {
+      T* o = s + 3 * std::size_t(t.v);
+      o[0] += t.x; o[1] += t.y; o[2] += t.z;
+    }
+  std::size_t count = 0;
+  for (auto n : counts) count += n;
+  return count;
+}
+
+// Convenience: plan and sum into rows = vertices.
+template <class T, class Contribute>
+std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, T* sum) {
+  const ChunkPlan plan = plan_chunks<false>(mesh, nullptr, mesh.num_vertices());
+  return accumulate_by_target<false>(mesh, plan, nullptr, contribute, sum);
+}
+
+}  // namespace shadetool::normals_detail

@@ -1,0 +1,254 @@
+// corner_normals.cpp: see corner_normals.h.
+//
+// Steps: (1) unit face normals (crease test, degenerate faces); (2) vertex -> corners adjacency
+// as flat arrays (offsets + corners in ascending corner order; two passes: count, fill);
+// (3) in parallel over vertices: sort the vertex's edge ends by the far vertex, link the two
+// corners across each smooth manifold edge (union-find over the vertex's corners, no allocation
+// per vertex), number groups by first corner; (4) prefix sum of group counts gives each vertex's
+// rows in the pool, and every corner its row (corner_index); (5) the corners' weighted
+// contributions (corner_contributions.h) are summed into their rows by the same deterministic
+// parallel scatter as vertex_normals (accumulate_by_vertex.h), so a group's sum adds its corners in
+// ascending corner order: with no crease in the way the result is vertex_normals' bit for bit;
+// (6) rows normalised in parallel, fallbacks for the rare rows that cannot be.
+// Precision: contributions and sums in T (double or float, as vertex_normals); the crease test
+// compares angles in double: atan2(|n1 x n2|, n1 . n2) > crease_angle (interior_angle.h).
+#include "normals/corner_normals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+
+#include <tbb/parallel_invoke.h>
+
+#include "normals/accumulate_by_vertex.h"
+#include "normals/corner_contributions.h"
+#include "normals/face_normals.h"
+#include "normals/interior_angle.h"
+#include "normals/parallel.h"
+#include "normals/vertex_fallback.h"
+
+namespace shadetool {
+namespace {
+
+using namespace normals_detail;
+
+// Corners of each vertex: corners[offset[v] .. offset[v+1]), ascending.
+struct VertexCorners {
+  std::vector<std::uint32_t> offset, corners;
+};
+
+VertexCorners vertex_corners(const Mesh& mesh) {
+  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
+  VertexCorners vc;
+  vc.offset.assign(V + 1, 0);
+  for (std::size_t c = 0; c < C; ++c) ++vc.offset[mesh.corner_vertex[c] + 1];
+  for (std::size_t v = 0; v < V; ++v) vc.offset[v + 1] += vc.offset[v];
+  vc.corners.resize(C);
+  std::vector<std::uint32_t> fill(vc.offset.begin(), vc.offset.end() - 1);
+  for (std::size_t c = 0; c < C; ++c) vc.corners[fill[mesh.corner_vertex[c]]++] = std::uint32_t(c);
+  return vc;
+}
+
+// Face of each corner and its neighbours in the face; triangles by arithmetic (corner = 3 f + k),
+// polygons through a corner -> face table.
+struct CornerTopology {
+  const Mesh& mesh;
+  bool triangles;
+  std::vector<std::uint32_t> face_of;  // polygons only
+
+  explicit CornerTopology(const Mesh& m) : mesh(m), triangles(m.all_triangles()) {
+    if (triangles) return;
+    face_of.resize(m.num_corners());
+    parallel_ranges(m.num_faces(), [&](std::size_t b, std::size_t e) {
+      for (std::size_t f = b; f < e; ++f)
+        for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) face_of[c] = std::uint32_t(f);
+    });
+  }
+  std::uint32_t face(std::uint32_t c) const { return triangles ? c / 3 : face_of[c]; }
+  std::uint32_t next_vertex(std::uint32_t c) const {
+    if (triangles) return mesh.corner_vertex[c % 3 == 2 ? c - 2 : c + 1];
+    const std::uint32_t f = face_of[c];
+    return mesh.corner_vertex[c + 1 < mesh.face_start[f + 1] ? c + 1 : mesh.face_start[f]];
+  }
+  std::uint32_t prev_vertex(std::uint32_t c) const {
+    if (triangles) return mesh.corner_vertex[c % 3 == 0 ? c + 2 : c - 1];
+    const std::uint32_t f = face_of[c];
+    return mesh.corner_vertex[c > mesh.face_start[f] ? c - 1 : mesh.face_start[f + 1] - 1];
+  }
+};
+
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];  // path halving
+    i = parent[i];
+  }
+  return i;
+}
+
+template <class T, Weighting W>
+CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision) {
+  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
+  // (1) face normals: zero for degenerate faces.
+  const std::vector<double> fn = face_normals(mesh, precision);
+  std::vector<std::uint8_t> valid(mesh.num_faces());
+  parallel_ranges(mesh.num_faces(), [&](std::size_t b, std::size_t e) {
+    for (std::size_t f = b; f < e; ++f) valid[f] = !(fn[3 * f] == 0.0 && fn[3 * f + 1] == 0.0 && fn[3 * f + 2] == 0.0);
+  });
+  auto face_valid = [&](std::size_t f) { return valid[f] != 0; };
+  const CornerTopology topo(mesh);
+  // (2) adjacency.
+  const VertexCorners vc = vertex_corners(mesh);
+
+  // (3) groups per vertex; the group number of each corner is stored in corner_index for now.
+  CornerNormals out;
+  out.corner_index.resize(C);
+  std::vector<std::uint32_t> groups(V, 0);
+  std::vector<std::uint8_t> has_degenerate_group(V, 0);
+  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
+    // Edge ends as one 64-bit key: far vertex (high 32 bits), local corner index, and whether
+    // the edge leaves v (bit 0); sorting the keys sorts by far vertex, then corner.
+    std::vector<std::uint64_t> ends;  // scratch, reused across the range's vertices
+    std::vector<std::uint32_t> parent, number;
+    auto end_key = [](std::uint32_t far, std::uint32_t local, bool out) {
+      return (std::uint64_t(far) << 32) | (std::uint64_t(local) << 1) | std::uint64_t(out);
+    };
+    for (std::size_t v = v_begin; v < v_end; ++v) {
+      const std::uint32_t begin = vc.offset[v], d = vc.offset[v + 1] - begin;
+      if (d == 0) continue;
+      ends.clear();
+      parent.resize(d);
+      for (std::uint32_t i = 0; i < d; ++i) {
+        parent[i] = i;
+        const std::uint32_t c = vc.corners[begin + i];
+        if (!face_valid(topo.face(c))) continue;  // edges of degenerate faces: creases
+        const std::uint32_t n = topo.next_vertex(c), p = topo.prev_vertex(c);
+        if (n != v) ends.push_back(end_key(n, i, true));
+        if (p != v) ends.push_back(end_key(p, i, false));
+      }
+      std::sort(ends.begin(), ends.end());
+      for (std::size_t i = 0; i < ends.size();) {
+        std::size_t j = i + 1;
+        while (j < ends.size() && (ends[j] >> 32) == (ends[i] >> 32)) ++j;
+        // Smooth only if exactly two faces meet at edge {v, far}, with opposite orientations
+        // (one leaves v along it, the other arrives), and the dihedral angle is small enough.
+        if (j - i == 2 && (ends[i] & 1) != (ends[i + 1] & 1)) {
+          const auto la = std::uint32_t(ends[i] & 0xffffffffu) >> 1, lb = std::uint32_t(ends[i + 1] & 0xffffffffu) >> 1;
+          const std::uint32_t fa = topo.face(vc.corners[begin + la]), fb = topo.face(vc.corners[begin + lb]);
+          if (fa != fb) {
+            const Vec3d na = get3(fn, fa), nb = get3(fn, fb), x = cross(na, nb);
+            // unit vectors: |na x nb| <= 1, no scaling needed before squaring
+            if (interior_angle(std::sqrt(dot(x, x)), dot(na, nb)) <= crease_angle) {
+              const std::uint32_t ra = find_root(parent, la), rb = find_root(parent, lb);
+              if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);  // root = smallest local index
+            }
+          }
+        }
+        i = j;
+      }
+      // Number groups by first corner; degenerate-face corners share the vertex's only group
+      // when it has one, else get a group of their own (numbered last).
+      number.assign(d, ~0u);
+      std::uint32_t g = 0;
+      bool any_degenerate = false;
+      for (std::uint32_t i = 0; i < d; ++i) {
+        const std::uint32_t c = vc.corners[begin + i];
+        if (!face_valid(topo.face(c))) { any_degenerate = true; continue; }
+        const std::uint32_t r = find_root(parent, i);
+        if (number[r] == ~0u) number[r] = g++;
+        out.corner_index[c] = number[r];
+      }
+      if (any_degenerate) {
+        std::uint32_t dg = 0;
+        if (g != 1) { dg = g++; has_degenerate_group[v] = 1; }
+        for (std::uint32_t i = 0; i < d; ++i) {
+          const std::uint32_t c = vc.corners[begin + i];
+          if (!face_valid(topo.face(c))) out.corner_index[c] = dg;
+        }
+      }
+      groups[v] = g;
+    }
+  });
+
+  // (4) pool rows: vertex v owns rows base[v] .. base[v] + groups[v].
+  std::vector<std::uint32_t> base(V + 1, 0);
+  for (std::size_t v = 0; v < V; ++v) base[v + 1] = base[v] + groups[v];
+  const std::size_t N = base[V];
+  parallel_ranges(C, [&](std::size_t b, std::size_t e) {
+    for (std::size_t c = b; c < e; ++c) out.corner_index[c] += base[mesh.corner_vertex[c]];
+  });
+
+  // (5) sums: in the output array itself in double, else in a float accumulator; the chunk plan
+  // is made beside the (serial) zeroing of the arrays.
+  std::vector<float> float_sum;
+  ChunkPlan plan;
+  tbb::parallel_invoke(
+      [&] {
+        out.normals.assign(3 * N, 0.0);
+        if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * N, 0.0f);
+      },
+      [&] { plan = plan_chunks<true>(mesh, out.corner_index.data(), N); });
+  T* sum;
+  if constexpr (std::is_same_v<T, double>) sum = out.normals.data();
+  else sum = float_sum.data();
+  const bool triangles = mesh.all_triangles();
+  out.degenerate_faces = accumulate_by_target<true, T>(mesh, plan, out.corner_index.data(),
+      [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
+        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
+                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
+      }, sum);
+  // A group made only of degenerate corners takes the vertex's smooth sum: all its valid
+  // contributions, i.e. the sum of its other groups.
+  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
+    for (std::size_t v = v_begin; v < v_end; ++v) {
+      if (!has_degenerate_group[v]) continue;
+      const std::size_t dg = base[v + 1] - 1;
+      for (std::size_t r = base[v]; r < dg; ++r)
+        for (int k = 0; k < 3; ++k) sum[3 * dg + k] += sum[3 * r + k];
+    }
+  });
+
+  // (6) normalise rows; a row that cannot be normalised takes the normal of the first valid face
+  // among its corners, else of the vertex, else (0, 0, 1) (kFallbackNormal).
+  std::vector<std::size_t> fallback_corners(V, 0);
+  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
+    for (std::size_t v = v_begin; v < v_end; ++v) {
+      for (std::uint32_t r = base[v]; r < base[v + 1]; ++r) {
+        const Vec3<T> s{sum[3 * std::size_t(r)], sum[3 * std::size_t(r) + 1], sum[3 * std::size_t(r) + 2]};
+        const T len = checked_length(s);
+        double* o = &out.normals[3 * std::size_t(r)];
+        if (len > T(0)) {  // divisor checked
+          o[0] = double(s.x / len); o[1] = double(s.y / len); o[2] = double(s.z / len);
+          continue;
+        }
+        std::uint32_t in_group = ~0u, any = ~0u;
+        std::size_t corners_in_row = 0;
+        for (std::uint32_t i = vc.offset[v]; i < vc.offset[v + 1]; ++i) {
+          const std::uint32_t c = vc.corners[i], f = topo.face(c);
+          const bool mine = out.corner_index[c] == r;
+          corners_in_row += mine;
+          if (face_valid(f)) {
+            if (any == ~0u) any = f;
+            if (mine && in_group == ~0u) in_group = f;
+          }
+        }
+        const std::uint32_t f = in_group != ~0u ? in_group : any;
+        for (int k = 0; k < 3; ++k) o[k] = f != ~0u ? fn[3 * std::size_t(f) + k] : kFallbackNormal[k];
+        fallback_corners[v] += corners_in_row;
+      }
+    }
+  });
+  for (auto n : fallback_corners) out.fallback_corners += n;
+  return out;
+}
+
+}  // namespace
+
+CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting, Precision precision) {
+  return dispatch(weighting, precision, [&](auto t, auto w) {
+    using T = decltype(t);
+    constexpr Weighting W = decltype(w)::value;
+    return compute<T, W>(mesh, crease_angle, precision);
+  });
+}
+
+}  // namespace shadetool

@@ -1,0 +1,47 @@
+// corner_normals.h: one normal per face corner, smooth across gentle edges and split at creases.
+//
+// Inputs:  mesh          positions #V by 3, faces (triangles or polygons)
+//          crease_angle  radians; an edge is a crease when the angle between its two faces' unit
+//                        normals exceeds crease_angle (0 = every non-flat edge splits; pi = no
+//                        edge splits by angle). Boundary edges, non-manifold edges (3+ faces),
+//                        edges whose two faces disagree in orientation and edges of degenerate
+//                        faces are always creases.
+//          weighting     how face normals are weighted within a smooth group (normals/weighting.h)
+//          precision     accumulation precision
+// Output:  normals       N by 3 pool of unit normals, one per (vertex, smooth group), in vertex
+//                        order then by each group's first corner
+//          corner_index  #C: index into `normals` for every corner (Mesh::corner_normal_index)
+//          fallback_corners  corners whose group sum could not be normalised and got the
+//                        documented fallback (never NaN)
+//
+// Around each vertex, two corners are in the same smooth group when they are linked by a chain of
+// non-crease edges (union-find over the corners of the vertex); a group's normal is the
+// normalised weighted sum of its corners' contributions, as in vertex_normals. This is
+// libigl's per_corner_normals, OpenMesh's update_halfedge_normals and Blender's auto smooth,
+// computed from flat arrays. With crease_angle >= pi on a closed manifold mesh every corner gets
+// its vertex's vertex_normals result.
+// Degenerate faces: their corners take the vertex's smooth normal (all valid contributions at
+// the vertex, creases ignored), sharing the vertex's only group when it has one; a vertex with no
+// valid face gets (0, 0, 1). A group whose sum cancels takes its first corner's face normal.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/mesh.h"
+#include "normals/weighting.h"
+
+namespace shadetool {
+
+struct CornerNormals {
+  std::vector<double> normals;
+  std::vector<std::uint32_t> corner_index;
+  std::size_t fallback_corners = 0;
+  std::size_t degenerate_faces = 0;  // faces that contributed nothing (as in vertex_normals)
+};
+
+CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting = Weighting::Angle,
+                             Precision precision = Precision::Double);
+
+}  // namespace shadetool

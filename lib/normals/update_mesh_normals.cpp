@@ -1,0 +1,112 @@
+// update_mesh_normals.cpp: see update_mesh_normals.h.
+#include "normals/update_mesh_normals.h"
+
+#include "normals/corner_normals.h"
+#include "normals/face_normals.h"
+#include "normals/invalid_normals.h"
+#include "normals/vertex_fallback.h"
+#include "normals/vertex_normals.h"
+
+namespace shadetool {
+namespace {
+
+std::size_t rows(const std::vector<double>& a) { return a.size() / 3; }
+
+// Invalid corner normals: referenced pool entries that are NaN/Inf/zero, plus corners whose index
+// points outside the pool (a broken file; such a corner has no normal at all).
+std::size_t invalid_corner_normals(const Mesh& mesh) {
+  std::vector<double> used;
+  std::vector<char> seen(rows(mesh.corner_normals), 0);
+  std::size_t out_of_range = 0;
+  for (std::uint32_t i : mesh.corner_normal_index) {
+    if (i >= seen.size()) { ++out_of_range; continue; }
+    if (seen[i]) continue;
+    seen[i] = 1;
+    for (int k = 0; k < 3; ++k) used.push_back(mesh.corner_normals[3 * std::size_t(i) + k]);
+  }
+  return count_invalid_normals(used) + out_of_range;
+}
+
+std::size_t count_degenerate(const std::vector<double>& face_normals) {
+  std::size_t n = 0;
+  for (std::size_t f = 0; f < rows(face_normals); ++f)
+    if (face_normals[3 * f] == 0.0 && face_normals[3 * f + 1] == 0.0 && face_normals[3 * f + 2] == 0.0) ++n;
+  return n;
+}
+
+}  // namespace
+
+NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
+  NormalsReport report;
+  if (request.recompute) {
+    report.discarded = rows(mesh.vertex_normals) + rows(mesh.corner_normals) + rows(mesh.face_normals);
+    mesh.vertex_normals.clear();
+    mesh.corner_normals.clear();
+    mesh.corner_normal_index.clear();
+    mesh.face_normals.clear();
+  } else if (request.kind == NormalKind::Face) {
+    if (mesh.has_face_normals()) {
+      report.kept = true;
+      report.kept_what = "face normals";
+      report.existing = rows(mesh.face_normals);
+      report.invalid_existing = count_invalid_normals(mesh.face_normals);
+      return report;
+    }
+  } else if (mesh.has_corner_normals()) {
+    report.kept = true;
+    report.kept_what = "corner normals";
+    report.existing = rows(mesh.corner_normals);
+    report.invalid_existing = invalid_corner_normals(mesh);
+    return report;
+  } else if (mesh.has_vertex_normals()) {
+    report.kept = true;
+    report.kept_what = "vertex normals";
+    report.existing = rows(mesh.vertex_normals);
+    report.invalid_existing = count_invalid_normals(mesh.vertex_normals);
+    return report;
+  }
+
+  switch (request.kind) {
+    case NormalKind::Vertex: {
+      VertexNormals vn = vertex_normals(mesh, request.weighting, request.precision);
+      mesh.vertex_normals = std::move(vn.normals);
+      mesh.corner_normals.clear();
+      mesh.corner_normal_index.clear();
+      report.computed = rows(mesh.vertex_normals);
+      report.fallback = vn.fallback_vertices;
+      report.degenerate_faces = vn.degenerate_faces;
+      break;
+    }
+    case NormalKind::Corner: {
+      CornerNormals cn = corner_normals(mesh, request.crease_angle, request.weighting, request.precision);
+      mesh.corner_normals = std::move(cn.normals);
+      mesh.corner_normal_index = std::move(cn.corner_index);
+      mesh.vertex_normals.clear();
+      report.computed = rows(mesh.corner_normals);
+      report.fallback = cn.fallback_corners;
+      report.degenerate_faces = cn.degenerate_faces;
+      break;
+    }
+    case NormalKind::Face: {
+      report.dropped = rows(mesh.vertex_normals) + rows(mesh.corner_normals);
+      mesh.vertex_normals.clear();
+      mesh.corner_normals.clear();
+      mesh.corner_normal_index.clear();
+      mesh.face_normals = face_normals(mesh, request.precision);
+      report.computed = rows(mesh.face_normals);
+      report.degenerate_faces = count_degenerate(mesh.face_normals);
+      // A degenerate face has no direction; the file gets kFallbackNormal instead of (0,0,0) so that
+      // no written normal is invalid (a zero-area face is invisible, any unit normal is harmless).
+      for (std::size_t f = 0; f < rows(mesh.face_normals) && report.degenerate_faces > 0; ++f) {
+        double* n = &mesh.face_normals[3 * f];
+        if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+          for (int k = 0; k < 3; ++k) n[k] = kFallbackNormal[k];
+      }
+      report.fallback = report.degenerate_faces;
+      break;
+    }
+  }
+  return report;
+}
+
+}  // namespace shadetool

@@ -1,0 +1,81 @@
+// component_boundaries.cpp: closed components and boundary loops (see the header).
+#include "repair/component_boundaries.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace shadetool {
+
+namespace {
+
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];  // path halving
+  return x;
+}
+
+}  // namespace
+
+ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& adj, const ConsistentWinding& winding) {
+  const std::size_t K = winding.num_components;
+  ComponentBoundaries b;
+  b.component_boundary_edges.assign(K, 0);
+  b.component_loops.assign(K, 0);
+  b.component_closed.assign(K, 1);
+
+  // (component, edge) pairs where the component meets the edge an odd number of times.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary;
+  std::vector<std::uint32_t> comps;
+  for (std::size_t e = 0; e < adj.num_edges(); ++e) {
+    const std::uint32_t s = adj.edge_start[e], n = adj.edge_valence(e);
+    if (n == 2 && winding.face_component[adj.corner_face[adj.edge_corner[s]]] ==
+                      winding.face_component[adj.corner_face[adj.edge_corner[s + 1]]])
+      continue;  // the common case: an interior edge
+    comps.clear();
+    for (std::uint32_t i = s; i < s + n; ++i) comps.push_back(winding.face_component[adj.corner_face[adj.edge_corner[i]]]);
+    std::sort(comps.begin(), comps.end());
+    for (std::size_t i = 0; i < comps.size();) {
+      std::size_t j = i;
+      while (j < comps.size() && comps[j] == comps[i]) ++j;
+      if ((j - i) % 2 == 1) boundary.emplace_back(comps[i], std::uint32_t(e));
+      i = j;
+    }
+  }
+
+  // Boundary vertices are per component: key (component, vertex).
+  std::vector<std::uint64_t> keys;
+  keys.reserve(2 * boundary.size());
+  for (auto [k, e] : boundary) {
+    ++b.component_boundary_edges[k];
+    b.component_closed[k] = 0;
+    const auto [v0, v1] = edge_ends(mesh, adj, e);
+    keys.push_back((std::uint64_t(k) << 32) | v0);
+    keys.push_back((std::uint64_t(k) << 32) | v1);
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  auto id = [&](std::uint32_t k, std::uint32_t v) {
+    return std::uint32_t(std::lower_bound(keys.begin(), keys.end(), (std::uint64_t(k) << 32) | v) - keys.begin());
+  };
+  std::vector<std::uint32_t> parent(keys.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (auto [k, e] : boundary) {
+    const auto [v0, v1] = edge_ends(mesh, adj, e);
+    const std::uint32_t x = find_root(parent, id(k, v0)), y = find_root(parent, id(k, v1));
+    if (x != y) parent[std::max(x, y)] = std::min(x, y);
+  }
+  // Cycle rank per component: E_b - V_b + (pieces).
+  std::vector<std::int64_t> rank(K, 0);
+  for (auto [k, e] : boundary) { (void)e; ++rank[k]; }
+  for (std::uint32_t i = 0; i < keys.size(); ++i) {
+    const std::uint32_t k = std::uint32_t(keys[i] >> 32);
+    --rank[k];
+    if (find_root(parent, i) == i) ++rank[k];
+  }
+  for (std::size_t k = 0; k < K; ++k) {
+    b.component_loops[k] = std::uint32_t(std::max<std::int64_t>(rank[k], 0));
+    b.boundary_loops += b.component_loops[k];
+  }
+  return b;
+}
+
+}  // namespace shadetool

@@ -1,0 +1,62 @@
+// outward_orientation.cpp: volume, containment parity, vote, majority (see the header).
+#include "repair/outward_orientation.h"
+
+#include "repair/open_surface_vote.h"
+#include "repair/shell_nesting.h"
+#include "repair/signed_volume.h"
+
+namespace shadetool {
+
+OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding& winding,
+                                       const ComponentBoundaries& boundaries) {
+  const std::size_t K = winding.num_components;
+  OutwardOrientation out;
+  out.component_invert.assign(K, 0);
+  out.component_basis.assign(K, OrientationBasis::Majority);
+
+  const ComponentVolumes volumes = component_signed_volumes(mesh, winding);
+  // Face lists are needed only for votes and nesting: built on first use.
+  ComponentFaces groups;
+  bool grouped = false;
+  auto group = [&]() -> const ComponentFaces& {
+    if (!grouped) { groups = faces_by_component(winding); grouped = true; }
+    return groups;
+  };
+  std::vector<std::uint32_t> shells;
+  std::vector<std::uint32_t> faces;
+  for (std::size_t k = 0; k < K; ++k) {
+    if (winding.component_non_orientable[k]) continue;
+    if (boundaries.component_closed[k]) {
+      if (!volume_has_sign(volumes.volume[k], volumes.magnitude[k])) continue;
+      out.component_invert[k] = volumes.volume[k] < 0;
+      out.component_basis[k] = OrientationBasis::Volume;
+      shells.push_back(std::uint32_t(k));
+    } else {
+      if (winding.component_faces[k] < 2) continue;  // one face wraps nothing: no evidence
+      const ComponentFaces& g = group();
+      faces.assign(g.faces.begin() + g.start[k], g.faces.begin() + g.start[k + 1]);
+      const OpenSurfaceVote vote = open_surface_vote(mesh, winding, faces);
+      if (!vote.decided) continue;
+      out.component_invert[k] = vote.invert;
+      out.component_basis[k] = OrientationBasis::SurfaceVote;
+    }
+  }
+
+  const std::vector<std::uint32_t> depth =
+      shells.size() < 2 ? std::vector<std::uint32_t>(K, 0) : shell_nesting_depth(mesh, winding, group(), shells, out.component_invert);
+  for (std::uint32_t k : shells)
+    if (depth[k] % 2 == 1) {
+      out.component_invert[k] ^= 1;
+      out.component_basis[k] = OrientationBasis::NestedShell;
+      ++out.nested_shells;
+    }
+
+  for (std::size_t k = 0; k < K; ++k) {
+    if (out.component_basis[k] != OrientationBasis::Majority) continue;
+    ++out.majority_components;
+    out.component_invert[k] = 2 * std::size_t(winding.component_reverse_count[k]) > winding.component_faces[k];
+  }
+  return out;
+}
+
+}  // namespace shadetool

@@ -1,0 +1,99 @@
+// repair_mesh.cpp: the repair pipeline (see the header).
+#include "repair/repair_mesh.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "repair/component_boundaries.h"
+#include "repair/consistent_winding.h"
+#include "repair/degenerate_faces.h"
+#include "repair/duplicate_faces.h"
+#include "repair/edge_adjacency.h"
+#include "repair/outward_orientation.h"
+#include "repair/reverse_faces.h"
+#include "repair/weld_vertices.h"
+
+namespace shadetool {
+
+RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
+  RepairReport report;
+  report.faces_in = mesh.num_faces();
+  if (options.weld_eps >= 0) report.vertices_welded = weld_vertices(mesh, options.weld_eps).removed;
+
+  const std::size_t F = mesh.num_faces();
+  const DegenerateFaces degenerate = degenerate_faces(mesh);
+  report.degenerate_faces = degenerate.count();
+  report.degenerate_zero_area = degenerate.zero_area;
+  report.degenerate_repeated_index = degenerate.repeated_index;
+  report.degenerate_too_few_corners = degenerate.too_few_corners;
+  report.degenerate_non_finite = degenerate.non_finite;
+
+  // Faces without a winding of their own take no part in orientation.
+  std::vector<std::uint8_t> skip(F, 0);
+  for (std::size_t f = 0; f < F; ++f)
+    skip[f] = degenerate.kind[f] == DegenerateKind::TooFewCorners || degenerate.kind[f] == DegenerateKind::RepeatedIndex;
+
+  // Step 1: consistent winding. Duplicate faces are set aside first (and the adjacency rebuilt
+  // without them, only when there are any).
+  EdgeAdjacency adj = edge_adjacency(mesh, skip);
+  const DuplicateFaces duplicates = duplicate_faces(mesh, adj);
+  report.duplicate_faces = duplicates.count;
+  if (duplicates.count > 0) {
+    for (std::size_t f = 0; f < F; ++f)
+      if (duplicates.original[f] != DuplicateFaces::kNone) skip[f] = 1;
+    adj = edge_adjacency(mesh, skip);
+  }
+  const ConsistentWinding winding = consistent_winding(mesh, adj, skip);
+  const ComponentBoundaries boundaries = component_boundaries(mesh, adj, winding);
+  report.components = winding.num_components;
+  report.non_manifold_edges = winding.non_manifold_edges;
+  report.inconsistent_edges = winding.inconsistent_edges;
+  report.boundary_loops = boundaries.boundary_loops;
+  for (std::size_t k = 0; k < winding.num_components; ++k) {
+    if (boundaries.component_closed[k]) ++report.closed_components; else ++report.open_components;
+    report.non_orientable_components += winding.component_non_orientable[k];
+  }
+
+  // Step 2: outward orientation, then every face reversed at most once.
+  const OutwardOrientation outward = outward_orientation(mesh, winding, boundaries);
+  report.nested_shells = outward.nested_shells;
+  report.oriented_by_majority = outward.majority_components;
+  for (std::size_t k = 0; k < winding.num_components; ++k) {
+    const std::size_t reversed = winding.component_reverse_count[k], total = winding.component_faces[k];
+    // Faces the component's majority disagreed with: the consistency step's share.
+    report.faces_flipped_for_consistency += std::min(reversed, total - reversed);
+    // Inverted as a whole: the final winding reverses most of the component's input faces.
+    const std::size_t changed = outward.component_invert[k] ? total - reversed : reversed;
+    if (2 * changed > total) ++report.components_inverted;
+    switch (outward.component_basis[k]) {
+      case OrientationBasis::Volume: case OrientationBasis::NestedShell: ++report.oriented_by_volume; break;
+      case OrientationBasis::SurfaceVote: ++report.oriented_by_vote; break;
+      case OrientationBasis::Majority: break;
+    }
+  }
+  std::vector<std::uint8_t> reverse(F, 0);
+  for (std::size_t f = 0; f < F; ++f) {
+    const std::uint32_t k = winding.face_component[f];
+    if (k != ConsistentWinding::kNoComponent) reverse[f] = winding.face_reverse[f] ^ outward.component_invert[k];
+  }
+  // A duplicate is reversed with its original: same winding stays same, opposite stays opposite.
+  for (std::size_t f = 0; f < F; ++f)
+    if (duplicates.original[f] != DuplicateFaces::kNone) reverse[f] = reverse[duplicates.original[f]];
+  report.faces_flipped = reverse_faces(mesh, reverse);
+
+  // Step 4: degenerate faces removed on request, before the normals are computed, so that a
+  // sliver's arbitrary normal (angle weighting gives its middle corner pi) reaches no vertex.
+  if (options.remove_degenerate && report.degenerate_faces > 0) {
+    std::vector<std::uint8_t> remove(F, 0);
+    for (std::size_t f = 0; f < F; ++f) remove[f] = degenerate.kind[f] != DegenerateKind::None;
+    report.degenerate_faces_removed = remove_faces(mesh, remove);
+  }
+
+  // Step 3: normals, on the final faces.
+  report.normals = fix_normals(mesh, options.weighting);
+  report.faces_out = mesh.num_faces();
+  return report;
+}
+
+}  // namespace shadetool

@@ -1,0 +1,44 @@
+// signed_volume.h: signed volume enclosed by each component, with the winding it will have after
+// the consistent-winding reversals.
+//
+// Inputs:  mesh     positions #V by 3, faces #F (polygons are fan-triangulated from corner 0)
+//          winding  face_component #F, face_reverse #F, num_components K
+// Outputs: ComponentVolumes with
+//   centroid  #K  mean of the component's corner positions
+//   volume    #K  V = 1/6 sum over fan triangles (p0, pi, pi+1) of det(p0 - c, pi - c, pi+1 - c),
+//                 negated for reversed faces; positive when a closed component's faces wind
+//                 counter-clockwise seen from outside (divergence theorem)
+//   magnitude #K  the same sum of |det| / 6: the scale the volume is compared with
+//
+// Precision: double throughout. Every tetrahedron is spanned from the component's own centroid c
+// (not the origin), so the terms scale with the component's size and not its distance from the
+// origin: a unit sphere placed at 1e6 loses ~1e-10 of its volume, where volumes spanned from
+// the origin would cancel at ~1e12 and lose everything. The centroid is accumulated as offsets
+// from the component's first vertex for the same reason. Only closed components have a volume
+// that does not depend on c; the caller decides. Degenerate faces contribute (near) zero.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/vec3.h"
+#include "repair/consistent_winding.h"
+
+namespace shadetool {
+
+struct ComponentVolumes {
+  std::vector<Vec3d> centroid;
+  std::vector<double> volume;
+  std::vector<double> magnitude;
+};
+
+ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWinding& winding);
+
+// Whether a volume is too small relative to its magnitude to have a sign: a closed surface that
+// encloses nothing (two coincident faces wound oppositely, a flat double-sided sheet).
+inline bool volume_has_sign(double volume, double magnitude) {
+  return std::abs(volume) > 1e-6 * magnitude;
+}
+
+}  // namespace shadetool

@@ -1,0 +1,240 @@
+// Tests of normals/corner_normals: crease grouping against exact cube normals, vertex normals,
+// OpenMesh's update_halfedge_normals, and the rules for boundary, non-manifold, inconsistent and
+// degenerate edges.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+// OpenMesh's PropertyT<T>::push_back trips GCC 12's -Wmaybe-uninitialized when inlined here.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <tbb/task_arena.h>
+
+#include "normals/corner_normals.h"
+#include "normals/vertex_normals.h"
+#include "normals_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::testing;
+
+namespace {
+
+const Weighting kAll[] = {Weighting::Uniform, Weighting::Area, Weighting::Angle, Weighting::Max};
+constexpr double kDeg = kPi / 180;
+
+Vec3d corner_normal(const CornerNormals& cn, std::size_t c) { return get3(cn.normals, cn.corner_index[c]); }
+
+std::size_t distinct_at_vertex(const Mesh& m, const CornerNormals& cn, std::uint32_t v) {
+  std::set<std::uint32_t> s;
+  for (std::size_t c = 0; c < m.num_corners(); ++c)
+    if (m.corner_vertex[c] == v) s.insert(cn.corner_index[c]);
+  return s.size();
+}
+
+}  // namespace
+
+TEST_CASE("corner_normals: cube with crease 30 gives every corner its face axis exactly", "[corner_normals]") {
+  for (bool quads : {true, false}) {
+    const Mesh m = cube(quads);
+    for (Weighting w : kAll)
+      for (Precision p : {Precision::Double, Precision::Float}) {
+        const CornerNormals cn = corner_normals(m, 30 * kDeg, w, p);
+        REQUIRE(cn.corner_index.size() == m.num_corners());
+        CHECK(cn.normals.size() == 3 * 24);  // 8 vertices x 3 faces
+        CHECK(cn.fallback_corners == 0);
+        for (std::size_t f = 0; f < m.num_faces(); ++f)
+          for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c)
+            CHECK(corner_normal(cn, c) == cube_face_axis(quads ? f : f / 2));  // bitwise
+      }
+  }
+}
+
+TEST_CASE("corner_normals: cube with crease 180 gives the normalised diagonals", "[corner_normals]") {
+  const double s = 1 / std::sqrt(3.0);
+  auto check = [&](const Mesh& m, Weighting w) {
+    const CornerNormals cn = corner_normals(m, 180 * kDeg, w);
+    CHECK(cn.normals.size() == 3 * 8);
+    for (std::size_t c = 0; c < m.num_corners(); ++c) {
+      const std::uint32_t v = m.corner_vertex[c];
+      const Vec3d diag{(v & 1) ? s : -s, (v & 2) ? s : -s, (v & 4) ? s : -s};
+      const Vec3d n = corner_normal(cn, c);
+      CHECK(std::fabs(n.x - diag.x) < 1e-15);
+      CHECK(std::fabs(n.y - diag.y) < 1e-15);
+      CHECK(std::fabs(n.z - diag.z) < 1e-15);
+    }
+  };
+  for (Weighting w : kAll) check(cube(true), w);
+  // The triangulated cube is symmetric only for the weightings that see each face's total
+  // corner (angle: pi/2 = pi/4 + pi/4; max: sin/(|a||b|) = 1 = 1/2 + 1/2), not for uniform/area.
+  check(cube(false), Weighting::Angle);
+  check(cube(false), Weighting::Max);
+}
+
+namespace {
+
+// Largest angle between the normals of two faces sharing an edge (consistently oriented meshes).
+double max_dihedral(const Mesh& m) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> first;
+  double worst = 0;
+  auto fn = [&](std::size_t f) {
+    const Vec3d a = m.position(m.corner_vertex[3 * f]), b = m.position(m.corner_vertex[3 * f + 1]),
+                c = m.position(m.corner_vertex[3 * f + 2]);
+    return normalized_or(cross(b - a, c - a), Vec3d{});
+  };
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = m.corner_vertex[3 * f + k], b = m.corner_vertex[3 * f + (k + 1) % 3];
+      auto it = first.find({b, a});
+      if (it != first.end()) worst = std::max(worst, angle_degrees(fn(f), fn(it->second)));
+      else first[{a, b}] = f;
+    }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("corner_normals: with no crease in the way they equal vertex_normals bitwise", "[corner_normals]") {
+  // The irregular meshes have steep slivers (dihedral angles up to 60-96 degrees after random
+  // flips), so crease 30 is "no crease in the way" only on the regular ones (11 and 14 degrees);
+  // crease 180 on all.
+  const AnalyticMesh meshes[] = {irregular(uv_sphere(64, 32, 0.15, 3)), irregular(torus(64, 32, 1, 0.4, 0.15, 2)),
+                                 irregular(icosphere(4, 0.3, 2)), torus(64, 32, 1, 0.4), icosphere(4)};
+  std::size_t compared_at_30 = 0;
+  for (const auto& am : meshes)
+    for (Weighting w : kAll)
+      for (Precision p : {Precision::Double, Precision::Float}) {
+        const VertexNormals vn = vertex_normals(am.mesh, w, p);
+        for (double crease : {30 * kDeg, kPi}) {
+          if (crease < kPi && max_dihedral(am.mesh) >= 30) continue;
+          compared_at_30 += crease < kPi;
+          INFO("crease " << crease);
+          const CornerNormals cn = corner_normals(am.mesh, crease, w, p);
+          CHECK(cn.normals.size() == 3 * am.mesh.num_vertices());
+          std::size_t differ = 0;
+          for (std::size_t c = 0; c < am.mesh.num_corners(); ++c)
+            differ += corner_normal(cn, c) != get3(vn.normals, am.mesh.corner_vertex[c]);
+          CHECK(differ == 0);
+        }
+      }
+  CHECK(compared_at_30 == 2 * 4 * 2);  // regular torus and icosphere, every weighting and precision
+}
+
+TEST_CASE("corner_normals: equal OpenMesh update_halfedge_normals (its uniform weighting) to 1e-6", "[corner_normals]") {
+  // A coarse torus has dihedral angles from about 10 to 60 degrees: creases at 20, 35 and 50
+  // split some fans and not others. OpenMesh's halfedge normal of h is the normal at corner
+  // (face(h), to_vertex(h)); it sums unit face normals inside the fan, stopping at feature
+  // edges (dot(n0, n1) < cos(angle)).
+  struct DoubleTraits : OpenMesh::DefaultTraits {
+    typedef OpenMesh::Vec3d Point;
+    typedef OpenMesh::Vec3d Normal;
+    HalfedgeAttributes(OpenMesh::Attributes::PrevHalfedge);
+  };
+  using OM = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+  const AnalyticMesh am = irregular(torus(14, 9, 1, 0.45, 0.15, 3), 4);
+  const Mesh& m = am.mesh;
+  OM om;
+  std::vector<OM::VertexHandle> vh;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    const Vec3d p = m.position(v);
+    vh.push_back(om.add_vertex(OM::Point(p.x, p.y, p.z)));
+  }
+  std::vector<OM::FaceHandle> fh;
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    fh.push_back(om.add_face(vh[m.corner_vertex[3 * f]], vh[m.corner_vertex[3 * f + 1]], vh[m.corner_vertex[3 * f + 2]]));
+  for (auto& h : fh) REQUIRE(h.is_valid());
+  om.request_face_normals();
+  om.request_halfedge_normals();
+  om.update_face_normals();
+  for (double deg : {20.0, 35.0, 50.0}) {
+    om.update_halfedge_normals(deg * kDeg);
+    const CornerNormals cn = corner_normals(m, deg * kDeg, Weighting::Uniform);
+    std::size_t split = 0;
+    double worst = 0;
+    for (std::size_t f = 0; f < m.num_faces(); ++f)
+      for (auto h : om.fh_range(fh[f])) {
+        const auto v = std::uint32_t(om.to_vertex_handle(h).idx());
+        int k = 0;
+        while (m.corner_vertex[3 * f + k] != v) ++k;
+        const auto n = om.normal(h);
+        const Vec3d d = corner_normal(cn, 3 * f + k) - Vec3d{n[0], n[1], n[2]};
+        worst = std::max({worst, std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+      }
+    for (std::uint32_t v = 0; v < m.num_vertices(); ++v) split += distinct_at_vertex(m, cn, v) > 1;
+    INFO("crease " << deg << " split vertices " << split);
+    CHECK(split > 0);  // the creases matter at these angles
+    CHECK(worst < 1e-6);
+  }
+}
+
+TEST_CASE("corner_normals: boundary edges do not split a fan; non-manifold edges do", "[corner_normals]") {
+  // Open fan of 4 nearly flat triangles around vertex 0 (a boundary vertex): one group.
+  Mesh fan;
+  fan.add_vertex({0, 0, 0});
+  for (int i = 0; i < 5; ++i) fan.add_vertex({std::cos(i * 0.5), std::sin(i * 0.5), 0.05 * i});
+  for (std::uint32_t i = 1; i < 5; ++i) fan.add_face({0, i, i + 1});
+  const CornerNormals a = corner_normals(fan, 30 * kDeg);
+  CHECK(distinct_at_vertex(fan, a, 0) == 1);
+  // Three coplanar-ish triangles sharing edge (0,1) (a fin): the edge is non-manifold, so even
+  // at crease 180 the three faces keep separate normals at vertices 0 and 1.
+  Mesh fin;
+  fin.add_vertex({0, 0, 0}); fin.add_vertex({1, 0, 0});
+  fin.add_vertex({0.5, 1, 0}); fin.add_vertex({0.5, -1, 0.01}); fin.add_vertex({0.5, -1, -0.01});
+  fin.add_face({0, 1, 2}); fin.add_face({1, 0, 3}); fin.add_face({1, 0, 4});
+  const CornerNormals b = corner_normals(fin, kPi);
+  CHECK(distinct_at_vertex(fin, b, 0) == 3);
+  CHECK(distinct_at_vertex(fin, b, 1) == 3);
+  for (std::size_t f = 0; f < 3; ++f) {
+    const Vec3d fn = normalized_or(cross(fin.position(fin.corner_vertex[3 * f + 1]) - fin.position(fin.corner_vertex[3 * f]),
+                                         fin.position(fin.corner_vertex[3 * f + 2]) - fin.position(fin.corner_vertex[3 * f])),
+                                   Vec3d{});
+    CHECK(angle_degrees(corner_normal(b, 3 * f), fn) < 1e-12);
+  }
+}
+
+TEST_CASE("corner_normals: an edge whose faces disagree in orientation is a crease", "[corner_normals]") {
+  // Two flat triangles sharing edge (0,1), the second wound the same way along it (inconsistent):
+  // their normals are opposite; even crease 180 must not average them to zero.
+  Mesh m;
+  m.add_vertex({0, 0, 0}); m.add_vertex({1, 0, 0}); m.add_vertex({0.5, 1, 0}); m.add_vertex({0.5, -1, 0});
+  m.add_face({0, 1, 2});  // +z
+  m.add_face({0, 1, 3});  // -z, edge 0->1 in both
+  const CornerNormals cn = corner_normals(m, kPi);
+  CHECK(cn.fallback_corners == 0);
+  CHECK(corner_normal(cn, 0) == Vec3d(0, 0, 1));
+  CHECK(corner_normal(cn, 3) == Vec3d(0, 0, -1));
+}
+
+TEST_CASE("corner_normals: degenerate faces take the smooth vertex normal; isolated vertices none; never NaN", "[corner_normals]") {
+  Mesh m = cube(true);
+  m.add_face({0, 0, 1});      // repeated index at cube vertex 0 and 1
+  m.add_vertex({5, 5, 5});    // v8
+  m.add_vertex({6, 5, 5});    // v9
+  m.add_face({8, 9, 8});      // only degenerate faces at v8, v9
+  m.add_vertex({9, 9, 9});    // v10 isolated
+  for (Weighting w : kAll) {
+    const CornerNormals cn = corner_normals(m, 30 * kDeg, w);
+    for (double x : cn.normals) CHECK(std::isfinite(x));
+    // Cube vertex 0 has three groups (one per face): the degenerate corners get the smooth
+    // vertex normal -(1,1,1)/sqrt3 (all weightings agree on the quad cube).
+    const double s = 1 / std::sqrt(3.0);
+    const std::size_t deg0 = m.face_start[6];
+    CHECK(angle_degrees(corner_normal(cn, deg0), Vec3d{-s, -s, -s}) < 1e-12);
+    // v8, v9: no valid face at all: (0, 0, 1), counted (3 corners).
+    CHECK(corner_normal(cn, m.face_start[7]) == Vec3d(0, 0, 1));
+    CHECK(cn.fallback_corners == 3);
+    CHECK(cn.degenerate_faces == 2);
+  }
+}
+
+TEST_CASE("corner_normals: bitwise the same on 1 and 2 threads", "[corner_normals][parallel]") {
+  const Mesh m = irregular(uv_sphere(200, 100, 0.15, 2)).mesh;
+  REQUIRE(m.num_faces() > 32768);
+  CornerNormals one, two;
+  tbb::task_arena(1).execute([&] { one = corner_normals(m, 5 * kDeg, Weighting::Angle); });
+  tbb::task_arena(2).execute([&] { two = corner_normals(m, 5 * kDeg, Weighting::Angle); });
+  CHECK(one.normals == two.normals);
+  CHECK(one.corner_index == two.corner_index);
+}

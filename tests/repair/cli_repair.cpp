@@ -1,0 +1,233 @@
+// End-to-end tests of `shadetool repair`: the built binary on files, its exit codes, messages,
+// report JSON, and that nothing is written when it fails.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::random_device rd;
+    path = fs::temp_directory_path() / ("shadetool_repair_cli_" + std::to_string(rd()) + std::to_string(rd()));
+    fs::create_directories(path);
+  }
+  ~TempDir() { std::error_code ec; fs::remove_all(path, ec); }
+  std::string operator/(const std::string& name) const { return (path / name).string(); }
+};
+
+std::string slurp(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_text(const std::string& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
+
+// Runs `shadetool ARGS`, stderr to `err`; returns the exit code.
+int run(const std::string& args, const std::string& err) {
+  const std::string cmd = std::string("'") + SHADETOOL_BIN + "' " + args + " > /dev/null 2> '" + err + "'";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string data(const std::string& name) { return std::string(SHADETOOL_SOURCE_DIR) + "/data/" + name; }
+
+// Unit cube as 12 triangles, all wound outward except the two listed.
+std::string cube_obj(bool flip_two) {
+  std::string s;
+  for (int i = 0; i < 8; ++i) s += "v " + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " + std::to_string((i >> 2) & 1) + "\n";
+  const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  int f = 0;
+  for (auto& s4 : q)
+    for (int t = 0; t < 2; ++t, ++f) {
+      int a = s4[0] + 1, b = s4[t + 1] + 1, c = s4[t + 2] + 1;
+      if (flip_two && (f == 3 || f == 8)) std::swap(b, c);
+      s += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+    }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("repair: report JSON fields and one stderr line per step that changed something", "[repair][cli]") {
+  TempDir tmp;
+  const std::string out = tmp / "fixed.ply", report = tmp / "report.json", err = tmp / "err.txt";
+  // data/inconsistent_winding.obj: an 80-face icosphere with faces 0, 7, ..., 77 (12) reversed.
+  REQUIRE(run("repair '" + data("inconsistent_winding.obj") + "' -o '" + out + "' --report '" + report + "'", err) == 0);
+  REQUIRE(fs::exists(out));
+  const nlohmann::json j = nlohmann::json::parse(slurp(report));
+  CHECK(j["faces_in"] == 80);
+  CHECK(j["faces_out"] == 80);
+  CHECK(j["components"] == 1);
+  CHECK(j["closed_components"] == 1);
+  CHECK(j["open_components"] == 0);
+  CHECK(j["faces_flipped"] == 12);
+  CHECK(j["components_inverted"] == 0);
+  CHECK(j["non_manifold_edges"] == 0);
+  CHECK(j["duplicate_faces"] == 0);
+  CHECK(j["non_orientable_components"] == 0);
+  CHECK(j["boundary_loops"] == 0);
+  CHECK(j["degenerate_faces"] == 0);
+  CHECK(j["vertices_welded"] == 0);
+  CHECK(j["normals_recomputed"]["missing"] == 42);
+  CHECK(j["normals_recomputed"]["nan"] == 0);
+  CHECK(j["normals_recomputed"]["zero"] == 0);
+  CHECK(j["normals_recomputed"]["flipped"] == 0);
+  CHECK(j["orientation"]["open_component_method"] == "generalized winding number");
+  const std::string e = slurp(err);
+  CHECK(e.find("winding: reversed 12 faces") != std::string::npos);
+  CHECK(e.find("normals: computed 42 vertex normals") != std::string::npos);
+  CHECK(e.find("orientation:") == std::string::npos);  // nothing was inverted as a whole
+
+  SECTION("repairing the output again changes nothing and prints nothing") {
+    const std::string out2 = tmp / "again.ply", report2 = tmp / "again.json";
+    REQUIRE(run("repair '" + out + "' -o '" + out2 + "' --report '" + report2 + "'", err) == 0);
+    const nlohmann::json k = nlohmann::json::parse(slurp(report2));
+    CHECK(k["changes"] == 0);
+    CHECK(k["faces_flipped"] == 0);
+    CHECK(k["normals_recomputed"]["total"] == 0);
+    CHECK(slurp(err).empty());
+  }
+}
+
+TEST_CASE("repair: data/non_manifold.obj (a fin, a bow-tie, a duplicated triangle) is left as it is", "[repair][cli]") {
+  TempDir tmp;
+  const std::string out = tmp / "nm.obj", report = tmp / "nm.json", err = tmp / "err.txt";
+  REQUIRE(run("repair '" + data("non_manifold.obj") + "' -o '" + out + "' --report '" + report + "'", err) == 0);
+  const nlohmann::json j = nlohmann::json::parse(slurp(report));
+  CHECK(j["faces_in"] == 7);
+  CHECK(j["faces_out"] == 7);
+  CHECK(j["non_manifold_edges"] == 1);  // the fin's edge
+  CHECK(j["duplicate_faces"] == 1);
+  CHECK(j["components"] == 6);          // 3 fin triangles, 2 bow-tie triangles, 1 (+ its duplicate)
+  CHECK(j["open_components"] == 6);
+  CHECK(j["boundary_loops"] == 6);
+  CHECK(j["faces_flipped"] == 0);       // flat pieces: no evidence, nothing reversed
+  CHECK(j["orientation"]["by_majority"] == 6);
+}
+
+TEST_CASE("repair: a wholly inverted cube, --remove-degenerate, --weld", "[repair][cli]") {
+  TempDir tmp;
+  const std::string in = tmp / "cube.obj", out = tmp / "cube_fixed.obj", report = tmp / "r.json", err = tmp / "err.txt";
+  // Inverted cube (every face reversed) plus one zero-area face on collinear points 1, 2, (2,0,0).
+  std::string s = cube_obj(false);
+  std::string inverted;
+  std::istringstream lines(s);
+  for (std::string line; std::getline(lines, line);) {
+    if (line[0] == 'f') {
+      std::istringstream f(line.substr(2));
+      int a, b, c;
+      f >> a >> b >> c;
+      line = "f " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b);
+    }
+    inverted += line + "\n";
+  }
+  inverted += "v 2 0 0\nf 1 2 9\n";
+  write_text(in, inverted);
+  REQUIRE(run("repair '" + in + "' -o '" + out + "' --report '" + report + "'", err) == 0);
+  nlohmann::json j = nlohmann::json::parse(slurp(report));
+  CHECK(j["faces_flipped"] == 12);
+  CHECK(j["components_inverted"] == 1);
+  CHECK(j["degenerate_faces"] == 1);
+  CHECK(j["degenerate_by_kind"]["zero_area"] == 1);
+  CHECK(j["faces_out"] == 13);  // reported, kept
+  CHECK(j["components"] == 2);   // the sliver on the cube's edge (1, 2) makes it non-manifold
+  CHECK(j["non_manifold_edges"] == 1);
+  CHECK(slurp(err).find("orientation: reversed 1 of 2 components as a whole") != std::string::npos);
+
+  REQUIRE(run("repair '" + in + "' -o '" + out + "' --report '" + report + "' --remove-degenerate", err) == 0);
+  j = nlohmann::json::parse(slurp(report));
+  CHECK(j["degenerate_faces_removed"] == 1);
+  CHECK(j["faces_out"] == 12);
+  CHECK(slurp(err).find("degenerate: removed 1 face (") != std::string::npos);
+
+  // Split the cube's faces apart (each face its own 3 vertices), then weld them back.
+  std::string soup;
+  std::istringstream cube(cube_obj(true));
+  std::vector<std::string> vs;
+  int next = 1;
+  for (std::string line; std::getline(cube, line);) {
+    if (line[0] == 'v') { vs.push_back(line); continue; }
+    std::istringstream f(line.substr(2));
+    int a, b, c;
+    f >> a >> b >> c;
+    soup += vs[a - 1] + "\n" + vs[b - 1] + "\n" + vs[c - 1] + "\n";
+    soup += "f " + std::to_string(next) + " " + std::to_string(next + 1) + " " + std::to_string(next + 2) + "\n";
+    next += 3;
+  }
+  write_text(in, soup);
+  REQUIRE(run("repair '" + in + "' -o '" + out + "' --report '" + report + "' --weld 1e-9", err) == 0);
+  j = nlohmann::json::parse(slurp(report));
+  CHECK(j["vertices_welded"] == 36 - 8);
+  CHECK(j["components"] == 1);
+  CHECK(j["closed_components"] == 1);
+  CHECK(j["faces_flipped"] == 2);
+  CHECK(j["weld_eps"] == 1e-9);
+  CHECK(slurp(err).find("weld: merged 28 vertices within") != std::string::npos);
+}
+
+TEST_CASE("repair: bad input exits 1 with a located message and writes nothing", "[repair][cli]") {
+  TempDir tmp;
+  const std::string in = tmp / "nan.obj", out = tmp / "out.obj", report = tmp / "r.json", err = tmp / "err.txt";
+  write_text(in, "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
+  CHECK(run("repair '" + in + "' -o '" + out + "' --report '" + report + "'", err) == 1);
+  CHECK(!fs::exists(out));
+  CHECK(!fs::exists(report));
+  CHECK(slurp(err).find("shadetool: " + in + ": 1 vertex has NaN or Inf coordinates") != std::string::npos);
+
+  // An existing output is left untouched by a failed run.
+  write_text(out, "previous contents");
+  CHECK(run("repair '" + in + "' -o '" + out + "'", err) == 1);
+  CHECK(slurp(out) == "previous contents");
+
+  // A mesh without faces.
+  write_text(in, "v 0 0 0\n");
+  fs::remove(out);
+  CHECK(run("repair '" + in + "' -o '" + out + "'", err) == 1);
+  CHECK(slurp(err).find("no faces") != std::string::npos);
+  CHECK(!fs::exists(out));
+
+  // A report in a directory that does not exist: refused before any output is written.
+  write_text(in, cube_obj(true));
+  CHECK(run("repair '" + in + "' -o '" + out + "' --report '" + tmp / "missing/r.json" + "'", err) == 1);
+  CHECK(!fs::exists(out));
+  CHECK(slurp(err).find("cannot write the report") != std::string::npos);
+}
+
+TEST_CASE("repair: usage errors exit 2 and write nothing", "[repair][cli]") {
+  TempDir tmp;
+  const std::string in = tmp / "cube.obj", out = tmp / "out.obj", err = tmp / "err.txt";
+  write_text(in, cube_obj(true));
+  CHECK(run("repair '" + in + "' -o '" + out + "' --weld -1", err) == 2);
+  CHECK(run("repair '" + in + "' -o '" + out + "' --weight median", err) == 2);
+  CHECK(run("repair '" + in + "' '" + in + "' --output-dir '" + tmp.path.string() + "' --report '" + tmp / "r.json" + "'", err) == 2);
+  CHECK(slurp(err).find("--report takes one input") != std::string::npos);
+  CHECK(run("repair '" + in + "'", err) == 2);  // no output given
+  CHECK(!fs::exists(out));
+  CHECK(!fs::exists(tmp / "r.json"));
+}
+
+TEST_CASE("repair: --json carries the counts", "[repair][cli]") {
+  TempDir tmp;
+  const std::string in = tmp / "cube.obj", out = tmp / "out.obj", lines = tmp / "lines.jsonl", err = tmp / "err.txt";
+  write_text(in, cube_obj(true));
+  const std::string cmd = std::string("'") + SHADETOOL_BIN + "' repair '" + in + "' -o '" + out + "' --json > '" + lines + "' 2> '" + err + "'";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const nlohmann::json j = nlohmann::json::parse(slurp(lines));
+  CHECK(j["status"] == "ok");
+  CHECK(j["stats"]["faces_flipped"] == 2);
+  CHECK(j["stats"]["components"] == 1);
+  CHECK(j["stats"]["faces"] == 12);
+}

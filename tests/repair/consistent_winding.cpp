@@ -1,0 +1,90 @@
+// Tests of consistent_winding: BFS labels against the known flips, components, Möbius detection.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+#include "repair/consistent_winding.h"
+#include "repair_test_meshes.h"
+
+using namespace shadetool;
+using namespace shadetool::testing;
+
+namespace {
+ConsistentWinding wind(const Mesh& m, const std::vector<std::uint8_t>& skip = {}) {
+  return consistent_winding(m, edge_adjacency(m, skip), skip);
+}
+}  // namespace
+
+TEST_CASE("labels are exactly the flipped faces, relative to the seed face", "[repair][winding]") {
+  Mesh m = testing::torus(30, 12).mesh;
+  std::vector<std::size_t> flipped = flip_random_faces(m, 0.3, 5);
+  const bool seed_flipped = std::find(flipped.begin(), flipped.end(), 0) != flipped.end();
+  const ConsistentWinding w = wind(m);
+  REQUIRE(w.num_components == 1);
+  std::vector<std::uint8_t> expected(m.num_faces(), seed_flipped ? 1 : 0);
+  for (std::size_t f : flipped) expected[f] ^= 1;
+  CHECK(w.face_reverse == expected);
+  CHECK(w.component_reverse_count[0] == std::size_t(std::count(expected.begin(), expected.end(), 1)));
+  CHECK(w.component_faces[0] == m.num_faces());
+  CHECK(w.component_non_orientable[0] == 0);
+  CHECK(w.inconsistent_edges == 0);
+}
+
+TEST_CASE("components are joined through manifold edges only", "[repair][winding]") {
+  SECTION("three triangles on one edge: three components, one non-manifold edge") {
+    const ConsistentWinding w = wind(three_triangles_on_one_edge());
+    CHECK(w.num_components == 3);
+    CHECK(w.non_manifold_edges == 1);
+    CHECK(w.face_reverse == std::vector<std::uint8_t>{0, 0, 0});
+  }
+  SECTION("two spheres: two components, seeds at their first faces") {
+    Mesh m = icosphere(1).mesh;
+    append(m, icosphere(1).mesh);
+    const ConsistentWinding w = wind(m);
+    CHECK(w.num_components == 2);
+    CHECK(w.component_seed == std::vector<std::uint32_t>{0, 80});
+    CHECK(w.component_faces == std::vector<std::uint32_t>{80, 80});
+  }
+  SECTION("skipped faces belong to no component") {
+    Mesh m = icosphere(1).mesh;
+    const ConsistentWinding w = wind(m, std::vector<std::uint8_t>(m.num_faces(), 1));
+    CHECK(w.num_components == 0);
+    CHECK(w.face_component[0] == ConsistentWinding::kNoComponent);
+  }
+}
+
+TEST_CASE("a Möbius strip is non-orientable with one inconsistent edge", "[repair][winding]") {
+  Mesh m = mobius_strip(40);
+  flip_random_faces(m, 0.3, 9);
+  const ConsistentWinding w = wind(m);
+  CHECK(w.num_components == 1);
+  CHECK(w.component_non_orientable[0] == 1);
+  // The face adjacency of a one-triangle-wide strip is a cycle: exactly one non-tree edge.
+  CHECK(w.inconsistent_edges == 1);
+}
+
+TEST_CASE("the result does not depend on the input winding (BFS order is winding-free)", "[repair][winding]") {
+  Mesh a = mobius_strip(50);
+  Mesh b = a;
+  flip_random_faces(b, 0.5, 13);
+  std::vector<std::uint8_t> ra = wind(a).face_reverse, rb = wind(b).face_reverse;
+  // Apply each labelling; both must give the same final winding up to one global flip.
+  Mesh fa = a, fb = b;
+  for (std::size_t f = 0; f < a.num_faces(); ++f) {
+    if (ra[f]) swap_corners_1_2(fa, f);
+    if (rb[f]) swap_corners_1_2(fb, f);
+  }
+  if (fa.corner_vertex != fb.corner_vertex) invert_all(fb);
+  CHECK(fa.corner_vertex == fb.corner_vertex);
+}
+
+TEST_CASE("faces_by_component lists each component's faces in order", "[repair][winding]") {
+  Mesh m = icosphere(0).mesh;
+  append(m, three_triangles_on_one_edge());
+  const ConsistentWinding w = wind(m);
+  const ComponentFaces g = faces_by_component(w);
+  REQUIRE(g.start.size() == w.num_components + 1);
+  CHECK(g.start[1] == 20);
+  for (std::uint32_t i = 0; i < 20; ++i) CHECK(g.faces[i] == i);
+  CHECK(g.faces.size() == 23);
+}
