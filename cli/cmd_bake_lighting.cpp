@@ -80,6 +80,8 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
 
     return run_mesh_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       shadetool::require_finite_positions(mesh, input);
+      // The mesh's normals go to the output unchanged: none may be NaN/Inf (nor light with them).
+      shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
       if (frequency == shadetool::ShadingFrequency::PerFace) {
         shadetool::require_faces(mesh, input);
       } else if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0) {
