@@ -7,6 +7,7 @@
 // the input unchanged; an output file that existed before left exactly as it was.
 // What each corpus file must produce is in expected.tsv, written with the files by make_corpus.py.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -20,6 +21,8 @@
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+
+#include "io/mesh_io.h"
 
 #include "support/run_process.h"
 
@@ -191,7 +194,7 @@ TEST_CASE("bad inputs: the corpus has at least 40 files across the formats, each
   for (const auto& r : rows) {
     listed.insert(r.file);
     formats.insert(fs::path(r.file).extension().string());
-    CHECK((r.cls == "read" || r.cls == "nonfinite"));
+    CHECK((r.cls == "read" || r.cls == "nonfinite" || r.cls == "nonfinite_normals"));
     CHECK(!r.fragment.empty());
   }
   CHECK(listed.size() == rows.size());  // no file listed twice
@@ -209,15 +212,30 @@ TEST_CASE("bad inputs: every corpus file through every subcommand fails cleanly"
     fs::copy_file(kCorpus / "files" / row.file, input);
     INFO(row.file << " (" << row.why << ")");
     for (const auto& sub : subs) {
-      if (row.cls == "nonfinite" && sub.name == "info") {
+      if (row.cls != "read" && sub.name == "info") {
         // Read, then reported: info is where NaN/Inf are shown.
         const ProcessResult r = run_process({kBin, "info", input.string()});
         CHECK(r.code == 0);
         CHECK(r.out.find(row.fragment) != std::string::npos);
         continue;
       }
+      if (row.cls == "nonfinite_normals" && sub.name == "repair") {
+        // repair recomputes NaN/Inf normals: its output holds none.
+        const fs::path output = dir.path / ("repaired" + output_extension(row.file));
+        const ProcessResult r = run_process({kBin, "repair", input.string(), "-o", output.string(), "-q"});
+        INFO(r.err);
+        CHECK(r.code == 0);
+        REQUIRE(fs::exists(output));
+        const shadetool::Mesh out = shadetool::read_mesh(output.string());
+        for (const auto* a : {&out.positions, &out.vertex_normals, &out.corner_normals, &out.face_normals})
+          for (double x : *a) CHECK(std::isfinite(x));
+        fs::remove(output);
+        continue;
+      }
       const std::string err = check_failure(sub, dir.path, input, input.string());
-      const std::string fragment = row.cls == "nonfinite" ? "NaN or Inf" : row.fragment;
+      const std::string fragment = row.cls == "nonfinite"           ? "NaN or Inf"
+                                   : row.cls == "nonfinite_normals" ? "NaN or Inf|invalid (NaN"
+                                                                    : row.fragment;
       INFO(sub.name << ": stderr " << err.substr(0, 300));
       CHECK(any_of_fragments(err, fragment));
     }

@@ -8,9 +8,13 @@ subcommand must do with it (tests/bad_inputs/bad_inputs.cpp runs them all):
              `shadetool: FILE[:LINE]: ...` containing FRAGMENT (or one of the alternatives
              FRAGMENT|FRAGMENT2, where readers are allowed to find either problem first), exits 1, writes no output, leaves
              the input and an existing output file as they were.
-  nonfinite  the file is well formed but holds NaN or Inf: `info` reads it and reports it
-             (exit 0, FRAGMENT in its report); every command that computes refuses it as `read`
-             does, with a message containing "NaN or Inf".
+  nonfinite  the file is well formed but holds NaN or Inf positions: `info` reads it and reports
+             it (exit 0, FRAGMENT in its report); every command that computes refuses it as
+             `read` does, with a message containing "NaN or Inf".
+  nonfinite_normals  positions fine, some stored normal NaN or Inf: `info` reports it (FRAGMENT),
+             `repair` fixes it (exit 0, an output with no NaN or Inf), every other command
+             refuses it as `read` does (its output would carry the NaN), naming "NaN or Inf" or
+             "invalid".
 
 Cases made at run time (a directory, unreadable permissions, a missing output directory, output
 path = input path) are in bad_inputs.cpp, not here. Run: python3 tests/bad_inputs/make_corpus.py
@@ -199,6 +203,17 @@ case('stl_ascii_bad_keyword.stl', 'solid t\nfacet normal 0 0 1\nouter lop\n', 'r
      'a misspelt keyword')
 case('stl_binary_nan.stl', stl_binary([((0, 0, 1), (0, 0, 0), (float('nan'), 0, 0), (0, 1, 0))]), 'nonfinite',
      'NaN/Inf                1 vertices', 'a NaN coordinate in binary')
+
+# ---------------------------------------------------------------- NaN/Inf normals
+case('obj_nan_normal.obj', TRI_V + 'vn 0 0 1\nvn nan 0 1\nf 1//1 2//2 3//1\n', 'nonfinite_normals',
+     '1 attribute values', 'a NaN vn')
+case('ply_inf_vertex_normal.ply', ply_header('ascii', extra_v='property float nx\nproperty float ny\nproperty float nz\n')
+     + '0 0 0 0 0 1\n1 0 0 0 inf 1\n0 1 0 0 0 1\n3 0 1 2\n', 'nonfinite_normals', 'NaN/Inf                0 vertices, 1 attribute values',
+     'an Inf vertex normal component')
+case('stl_nan_facet_normal.stl', stl_binary([((float('nan'), 0, 1), (0, 0, 0), (1, 0, 0), (0, 1, 0))]),
+     'nonfinite_normals', 'NaN/Inf                0 vertices, 1 attribute values', 'a NaN facet normal (passed through as a face normal)')
+case('off_nan_vertex_normal.off', 'NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 nan 0 1\n0 1 0 0 0 1\n3 0 1 2\n',
+     'nonfinite_normals', 'NaN/Inf                0 vertices, 1 attribute values', 'a NaN normal in NOFF')
 
 # ---------------------------------------------------------------- names
 case('unknown_extension.xyz', 'v 0 0 0\n', 'read', "unknown mesh format 'xyz'", 'an extension no reader has')
