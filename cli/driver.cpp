@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iterator>
 #include <mutex>
+#include <new>
 #include <thread>
 
 #include <unistd.h>
@@ -213,14 +214,20 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       }
       progress.file_done(true);
     } catch (const std::exception& e) {
+      // shadetool::Error already names the file; anything else (std::bad_alloc for a mesh that
+      // does not fit in memory, ...) gets the input's name so the line still says which file.
+      const bool located = dynamic_cast<const shadetool::Error*>(&e) != nullptr;
+      const std::string message =
+          located ? e.what()
+                  : shadetool::located(input, 0, dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what());
       failures.fetch_add(1);
       std::lock_guard<std::mutex> lock(out_mutex);
       failed.push_back(input);
       progress.clear();
-      fmt::print(stderr, "shadetool: {}\n", printable(e.what()));
+      fmt::print(stderr, "shadetool: {}\n", printable(message));
       if (io.json) {
         line["status"] = "error";
-        line["error"] = e.what();
+        line["error"] = message;
         fmt::print("{}\n", dump_line(line));
         std::fflush(stdout);
       }
