@@ -9,12 +9,14 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstddef>
 #include <cstdlib>
 #include <fcntl.h>
 #include <grp.h>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -31,6 +33,10 @@ struct ProcessOptions {
   std::string stdin_path = "/dev/null";
   int uid = -1;  // >= 0: setgid(gid) and setuid(uid) in the child before exec
   int gid = -1;
+  // > 0: the child's address space is limited to this many MiB (RLIMIT_AS), so that a program
+  // that trusts a lying count fails instead of allocating terabytes. Ignored in AddressSanitizer
+  // builds, whose shadow memory alone reserves terabytes of address space.
+  std::size_t memory_limit_mb = 0;
 };
 
 constexpr int kExecFailed = 255;
@@ -56,6 +62,13 @@ inline ProcessResult run_process(const std::vector<std::string>& argv, const Pro
   if (pid == 0) {
     const int in_fd = ::open(options.stdin_path.c_str(), O_RDONLY);
     if (in_fd < 0 || ::dup2(in_fd, 0) < 0 || ::dup2(out_fd, 1) < 0 || ::dup2(err_fd, 2) < 0) ::_exit(kExecFailed);
+#if !defined(__SANITIZE_ADDRESS__)
+    if (options.memory_limit_mb > 0) {
+      const rlim_t bytes = static_cast<rlim_t>(options.memory_limit_mb) << 20;
+      const struct rlimit limit = {bytes, bytes};
+      if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(kExecFailed);
+    }
+#endif
     if (options.uid >= 0) {
       const gid_t gid = static_cast<gid_t>(options.gid >= 0 ? options.gid : options.uid);
       if (::setgroups(0, nullptr) != 0 || ::setgid(gid) != 0 || ::setuid(static_cast<uid_t>(options.uid)) != 0)
