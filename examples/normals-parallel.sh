@@ -4,11 +4,14 @@
 #
 #   examples/normals-parallel.sh IN_DIR OUT_DIR [extra parallel options...]
 #
-# Across hosts (shadetool installed on each, IN_DIR/OUT_DIR on a shared file system):
-#   examples/normals-parallel.sh meshes/ out/ --sshlogin 2/node1,2/node2 --workdir .
-# Without a shared file system, let parallel move the files:
+# Across hosts (shadetool installed on each, IN_DIR/OUT_DIR on a shared file system; ':' is
+# this machine; run from the shared directory):
+#   examples/normals-parallel.sh meshes/ out/ --sshlogin 2/node1,2/node2,2/: --workdir "$PWD"
+# Without a shared file system, let parallel move the files (needs rsync on both ends):
 #   parallel --sshlogin node1,node2 --transferfile {} --return out/{/.}.ply --cleanup \
-#     shadetool normals {} -o out/{/.}.ply ::: meshes/*.obj
+#     "mkdir -p out && shadetool normals {} -o out/{/.}.ply --quiet" ::: meshes/*.obj
+# Both were run here against an sshd on 127.0.0.1:2222 (--sshlogin "1/ssh -p 2222 127.0.0.1,1/:"),
+# with --joblog confirming jobs on both "hosts".
 #
 # Each call prints one JSON line (--json); parallel keeps lines whole (--line-buffer), so the
 # combined output is valid JSON Lines. The exit status is the number of failed files (0 = all ok).
