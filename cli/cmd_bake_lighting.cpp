@@ -3,7 +3,9 @@
 // spaces, skips and encodings all live in lib/lighting (see man/shadetool-bake-lighting.1).
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "command_registry.h"
 #include "core/error.h"
@@ -78,6 +80,8 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
 
     return run_mesh_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       shadetool::require_finite_positions(mesh, input);
+      // The mesh's normals go to the output unchanged: none may be NaN/Inf (nor light with them).
+      shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
       if (frequency == shadetool::ShadingFrequency::PerFace) {
         shadetool::require_faces(mesh, input);
       } else if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0) {
@@ -101,7 +105,17 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       if (rep.plan.view && !scene.has_camera)
         r.notes.push_back("the scene has no camera: the eye is at the world origin (OpenGL's default)");
 
-      shadetool::store_baked_colors(mesh, shadetool::encode_colors(baked.rgb, encoding), frequency, encoding.hdr);
+      // No NaN or Inf colour is ever written (8-bit encoding would turn NaN into a silent black):
+      // lights, intensities or positions near the limits of double can produce them; refuse.
+      std::vector<float> colors = shadetool::encode_colors(baked.rgb, encoding);
+      std::size_t nonfinite = 0;
+      for (std::size_t i = 0; i < baked.rgb.size(); ++i)
+        nonfinite += !(std::isfinite(baked.rgb[i]) && std::isfinite(colors[i]));
+      if (nonfinite > 0)
+        throw shadetool::Error(shadetool::located(
+            input, 0, std::to_string(nonfinite) + " colour values came out NaN or infinite (light positions, " +
+                          "intensities or the world map near the limits of double?); nothing written"));
+      shadetool::store_baked_colors(mesh, std::move(colors), frequency, encoding.hdr);
 
       r.stats["model"] = shadetool::shading_model_name(rep.model);
       r.stats["space"] = shadetool::shading_space_name(rep.space);

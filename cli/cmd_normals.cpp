@@ -81,6 +81,9 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
                 fmt::format("{} of {} {} are invalid (NaN, Inf or zero length); use --recompute to replace them "
                             "(or `shadetool repair`)",
                             rep.invalid_existing, rep.existing, rep.kept_what)));
+          // Normals of the other kind pass through unchanged (e.g. an STL's facet normals when vertex
+          // normals are computed): none of them may carry NaN/Inf into the output.
+          shadetool::require_finite_normals(mesh, input, "use --recompute to replace the input's normals (or `shadetool repair`)");
           if (rep.kept) {
             r.notes.push_back(fmt::format("input has {}: kept unchanged, nothing computed (use --recompute to replace them)",
                                           rep.kept_what));

@@ -21,6 +21,7 @@
 
 #include "command_registry.h"
 #include "core/error.h"
+#include "core/validate.h"
 #include "driver.h"
 #include "transform/affine_maps.h"
 #include "transform/classify_affine.h"
@@ -189,6 +190,9 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
 
     return run_mesh_command("transform", io, [M, options, no_map](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       const bool had_normals = mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals();
+      // transform_mesh leaves a NaN/Inf normal as read; the command does not write one unasked.
+      if (options.normals == shadetool::NormalsPolicy::Transform)
+        shadetool::require_finite_normals(mesh, input, "use --normals recompute or --normals drop (or `shadetool repair` first)");
       const shadetool::TransformReport rep = shadetool::transform_mesh(mesh, M, options, input);
       r.stats["path"] = shadetool::path_name(rep.affine.path);
       r.stats["mirror"] = rep.affine.mirror;

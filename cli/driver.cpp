@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iterator>
 #include <mutex>
+#include <new>
 #include <thread>
 
 #include <unistd.h>
@@ -45,6 +46,23 @@ void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh) {
 }
 
 namespace {
+
+// A message or note as one printable line: bytes of the input quoted in it (a garbage token, a
+// keyword) may hold control characters or terminal escapes; they are shown as \xNN instead.
+std::string printable(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char ch : s) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (u < 0x20 || u == 0x7f) out += fmt::format("\\x{:02X}", unsigned(u));
+    else out += ch;
+  }
+  return out;
+}
+
+// JSON Lines: file contents quoted in a message need not be UTF-8; nlohmann's dump() would throw
+// on them, so invalid bytes are replaced (U+FFFD) instead.
+std::string dump_line(const nlohmann::json& j) { return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -136,6 +154,12 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
     if (writes_mesh) line["output"] = output;
     FileResult result;
     try {
+      // Writing over the input would lose it if anything failed later; the same file under another
+      // name (./a.obj, a link, --output-dir of the input's own folder) counts too.
+      std::error_code same_ec;
+      if (writes_mesh && input != "-" && output != "-" && fs::equivalent(input, output, same_ec))
+        throw shadetool::Error(shadetool::located(
+            input, 0, "the output " + output + " is the input file: refusing to overwrite the input"));
       show_stage(input, "reading");
       auto t0 = std::chrono::steady_clock::now();
       shadetool::ReadInfo read_info;
@@ -174,7 +198,7 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       std::lock_guard<std::mutex> lock(out_mutex);
       progress.clear();
       if (!io.quiet)
-        for (auto& n : result.notes) fmt::print(stderr, "shadetool: {}: {}\n", input, n);
+        for (auto& n : result.notes) fmt::print(stderr, "shadetool: {}: {}\n", input, printable(n));
       if (io.stats) {
         std::string counts;
         for (auto it = result.stats.begin(); it != result.stats.end(); ++it)
@@ -185,20 +209,26 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       if (!result.text.empty() && !io.json) fmt::print("{}", result.text);
       if (io.json) {
         if (!result.notes.empty()) line["notes"] = result.notes;
-        fmt::print("{}\n", line.dump());
+        fmt::print("{}\n", dump_line(line));
         std::fflush(stdout);
       }
       progress.file_done(true);
     } catch (const std::exception& e) {
+      // shadetool::Error already names the file; anything else (std::bad_alloc for a mesh that
+      // does not fit in memory, ...) gets the input's name so the line still says which file.
+      const bool located = dynamic_cast<const shadetool::Error*>(&e) != nullptr;
+      const std::string message =
+          located ? e.what()
+                  : shadetool::located(input, 0, dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what());
       failures.fetch_add(1);
       std::lock_guard<std::mutex> lock(out_mutex);
       failed.push_back(input);
       progress.clear();
-      fmt::print(stderr, "shadetool: {}\n", e.what());
+      fmt::print(stderr, "shadetool: {}\n", printable(message));
       if (io.json) {
         line["status"] = "error";
-        line["error"] = e.what();
-        fmt::print("{}\n", line.dump());
+        line["error"] = message;
+        fmt::print("{}\n", dump_line(line));
         std::fflush(stdout);
       }
       progress.file_done(false);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "core/mesh.h"
@@ -25,6 +26,25 @@ inline void require_finite_positions(const Mesh& mesh, const std::string& name) 
   if (bad > 0)
     fail(name, 0, std::to_string(bad) + (bad == 1 ? " vertex has" : " vertices have") +
                       " NaN or Inf coordinates (first: vertex " + std::to_string(first) + ")");
+}
+
+// Throws Error `NAME: K normals have NaN or Inf components (first: KIND normal I); HINT` if any
+// stored normal (vertex, corner pool, face) is not finite: for commands that would otherwise pass
+// them through to their output (no output holds NaN or Inf the user did not ask to keep).
+inline void require_finite_normals(const Mesh& mesh, const std::string& name, const std::string& hint) {
+  std::size_t bad = 0;
+  std::string first;
+  auto scan = [&](const std::vector<double>& a, const char* kind) {
+    for (std::size_t i = 0; i + 2 < a.size(); i += 3)
+      if (!(std::isfinite(a[i]) && std::isfinite(a[i + 1]) && std::isfinite(a[i + 2])))
+        if (bad++ == 0) first = std::string(kind) + " normal " + std::to_string(i / 3);
+  };
+  scan(mesh.vertex_normals, "vertex");
+  scan(mesh.corner_normals, "corner");
+  scan(mesh.face_normals, "face");
+  if (bad > 0)
+    fail(name, 0, std::to_string(bad) + (bad == 1 ? " normal has" : " normals have") + " NaN or Inf components (first: " +
+                      first + "); " + hint);
 }
 
 // Throws Error `NAME: mesh is empty (no faces)` for a mesh with no faces.

@@ -39,6 +39,11 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
   std::size_t line = 0;
   bool any_double = false;
 
+  // OBJ is text: a NUL byte means binary data (another format, or garbage), not lines to skip.
+  if (const void* nul = std::memchr(p, '\0', bytes.size()))
+    fail(name, 1 + std::size_t(std::count(p, static_cast<const char*>(nul), '\n')),
+         "binary data (a NUL byte) in an OBJ file: not a text mesh");
+
   // Capacity guessed from the file size, generously (untouched capacity costs address space,
   // not memory): a `v` line is >= 24 bytes in practice, a triangle line about 12 per corner.
   reserve_bulk(mesh.positions, bytes.size() / 24 * 3);
@@ -64,7 +69,7 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
     if (b == eol || *b == '#') return false;
     q = b;
     if (!parse_double(q, eol, x)) fail(name, line, "malformed number '" + token_at(b, eol) + "'");
-    if (!any_double && has_more_digits_than_float(b, q)) any_double = true;
+    if (!any_double && (has_more_digits_than_float(b, q) || outside_float_range(x))) any_double = true;
     return true;
   };
 
@@ -156,13 +161,16 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
                  std::string_view(kw, kwlen) == "usemtl" || std::string_view(kw, kwlen) == "mtllib") {
         // Accepted: grouping, smoothing groups and materials carry no geometry we keep.
       } else {
-        if (skipped_lines++ == 0) skipped_keyword.assign(kw, kwlen);
+        if (skipped_lines++ == 0) skipped_keyword.assign(kw, std::min<std::size_t>(kwlen, 40));
       }
     }
     if (eol == end) break;
     p = eol + 1;
   }
 
+  if (mesh.num_vertices() == 0 && skipped_lines > 0)
+    fail(name, 0, "not an OBJ file: no vertices, " + std::to_string(skipped_lines) + " line" +
+                      (skipped_lines == 1 ? "" : "s") + " with unknown keywords (first: '" + skipped_keyword + "')");
   if (mesh.num_vertices() > std::numeric_limits<std::uint32_t>::max())
     fail(name, 0, "too many vertices (more than 2^32)");
 

@@ -102,7 +102,7 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
     if (t == end) return false;
     p = t;
     if (!parse_double(p, end, x)) fail(name, lines.line(), "malformed number '" + token_at(t, end) + "'");
-    if (!any_double && has_more_digits_than_float(t, p)) any_double = true;
+    if (!any_double && (has_more_digits_than_float(t, p) || outside_float_range(x))) any_double = true;
     return true;
   };
   // A colour token written as an integer is 0..255; with a point or exponent it is a float in [0,1].

@@ -586,8 +586,9 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
         for (std::size_t c = 0; c < mesh.corner_texcoord_index.size(); ++c) mesh.corner_texcoord_index[c] = std::uint32_t(c);
       }
     } else {
-      // An element we do not keep: skipped by its declared types.
-      bool fixed = enc != Encoding::Ascii;
+      // An element we do not keep: skipped by its declared types. One without properties takes no
+      // bytes in either encoding (looping over its claimed count would hang on a count like 2^60).
+      bool fixed = enc != Encoding::Ascii || e.props.empty();
       std::size_t size = 0;
       for (const auto& prop : e.props) {
         fixed = fixed && !prop.is_list;

@@ -165,7 +165,7 @@ Mesh read_ascii(std::string_view bytes, const std::string& name, ReadInfo& info)
     double x;
     if (p == end) fail(name, line, "file ends inside a facet");
     if (!parse_double(p, end, x)) fail(name, line, "malformed number '" + token_at(b, end) + "'");
-    if (!any_double && has_more_digits_than_float(b, p)) any_double = true;
+    if (!any_double && (has_more_digits_than_float(b, p) || outside_float_range(x))) any_double = true;
     return x;
   };
   auto rest_of_line = [&] {

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -78,6 +79,16 @@ inline bool has_more_digits_than_float(const char* b, const char* e) {
     if (c != '0') significant = counted;
   }
   return significant > 9;
+}
+
+// True when x is finite but float cannot hold it at all: beyond float's range (narrowed it would be
+// Inf) or so small that it would narrow to 0. Such text keeps the mesh's precision hint at Double,
+// so binary writers do not turn 1e300 into Inf (short text like "1e300" has few digits).
+inline bool outside_float_range(double x) {
+  const double a = x < 0 ? -x : x;
+  return a <= std::numeric_limits<double>::max() &&
+         (a > std::numeric_limits<float>::max() ||
+          (a != 0 && a <= double(std::numeric_limits<float>::denorm_min()) / 2));
 }
 
 // The token starting at p (for messages), at most 40 characters.

@@ -69,8 +69,16 @@ Vec3d lower(const SpaceMetric& g, const Vec3d& v) {
 
 // Unit length in the metric; v is non-zero (scene directions are validated non-zero).
 Vec3d unit_in(const SpaceMetric& g, const Vec3d& v) {
-  const double l2 = norm2(g, v);
-  return l2 > 0 ? v * (1.0 / std::sqrt(l2)) : Vec3d{0, 0, 0};
+  // The result does not depend on v's length, so v is first scaled by a power of two (exact) to
+  // bring its largest component into [0.5, 1): a direction of length 1e-320 or 1e300 then
+  // normalises like any other instead of its squared length under- or overflowing (to 0 or Inf).
+  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+  if (!(m > 0) || !std::isfinite(m)) return {0, 0, 0};
+  int e = 0;
+  std::frexp(m, &e);
+  const Vec3d s{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+  const double l2 = norm2(g, s);
+  return l2 > 0 && std::isfinite(l2) ? s * (1.0 / std::sqrt(l2)) : Vec3d{0, 0, 0};
 }
 
 struct SpaceMaps {

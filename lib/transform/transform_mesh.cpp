@@ -1,7 +1,9 @@
 // transform_mesh.cpp: see transform_mesh.h.
 #include "transform/transform_mesh.h"
 
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "core/error.h"
 #include "core/validate.h"
@@ -14,10 +16,13 @@ namespace shadetool {
 
 namespace {
 
-void transform_positions(Mesh& mesh, const Affine3d& M, bool translate_only) {
+// Returns how many coordinates came out non-finite: a finite map can send finite positions
+// beyond double's range (1e30 scaled by 1e300). Counted per range right after it is written
+// (still in cache), not in another pass over the array.
+std::size_t transform_positions(Mesh& mesh, const Affine3d& M, bool translate_only) {
   double* data = mesh.positions.data();
   const Affine3d map = M;  // by value: the loop reads locals, not through a reference
-  transform_detail::count_over_ranges(mesh.num_vertices(), [&](std::size_t begin, std::size_t end) {
+  return transform_detail::count_over_ranges(mesh.num_vertices(), [&](std::size_t begin, std::size_t end) {
     double* p = data + 3 * begin;
     if (translate_only) {
       for (std::size_t v = begin; v < end; ++v, p += 3) {
@@ -25,16 +30,18 @@ void transform_positions(Mesh& mesh, const Affine3d& M, bool translate_only) {
         p[1] += map.t.y;
         p[2] += map.t.z;
       }
-      return std::size_t(0);
+    } else {
+      const auto& A = map.A.m;
+      for (std::size_t v = begin; v < end; ++v, p += 3) {
+        const double x = p[0], y = p[1], z = p[2];
+        p[0] = A[0][0] * x + A[0][1] * y + A[0][2] * z + map.t.x;
+        p[1] = A[1][0] * x + A[1][1] * y + A[1][2] * z + map.t.y;
+        p[2] = A[2][0] * x + A[2][1] * y + A[2][2] * z + map.t.z;
+      }
     }
-    const auto& A = map.A.m;
-    for (std::size_t v = begin; v < end; ++v, p += 3) {
-      const double x = p[0], y = p[1], z = p[2];
-      p[0] = A[0][0] * x + A[0][1] * y + A[0][2] * z + map.t.x;
-      p[1] = A[1][0] * x + A[1][1] * y + A[1][2] * z + map.t.y;
-      p[2] = A[2][0] * x + A[2][1] * y + A[2][2] * z + map.t.z;
-    }
-    return std::size_t(0);
+    std::size_t overflowed = 0;
+    for (const double* q = data + 3 * begin; q < data + 3 * end; ++q) overflowed += !std::isfinite(*q);
+    return overflowed;
   });
 }
 
@@ -61,7 +68,13 @@ TransformReport transform_mesh(Mesh& mesh, const Affine3d& M, const TransformOpt
   if (c.path == TransformPath::Singular && options.normals == NormalsPolicy::Transform)
     fail(name, 0, singular_map_message(c));
 
-  if (c.path != TransformPath::Identity) transform_positions(mesh, M, c.path == TransformPath::Translation);
+  if (c.path != TransformPath::Identity) {
+    // Refuse rather than return Inf (the mesh is then partly transformed; the CLI discards it).
+    const std::size_t overflowed = transform_positions(mesh, M, c.path == TransformPath::Translation);
+    if (overflowed > 0)
+      fail(name, 0, "the transform sends " + std::to_string(overflowed) + (overflowed == 1 ? " coordinate" : " coordinates") +
+                        " beyond the range of double (about 1.8e308)");
+  }
 
   switch (options.normals) {
     case NormalsPolicy::Drop:

@@ -1,7 +1,9 @@
 // transform_mesh.h: applies an affine map p -> A p + t to a mesh: positions, normals (vertex,
 // corner and face), and the winding of a mirror's faces, doing only the work the map needs.
 //
-// Inputs:  mesh     positions #V by 3 (finite: Error otherwise), faces, optional normals
+// Inputs:  mesh     positions #V by 3 (finite: Error otherwise; Error too when the map sends a
+//                   position beyond double's range, the mesh then left partly transformed),
+//                   faces, optional normals
 //          M        the map (A 3 by 3, t 3 by 1), finite
 //          options  normals: Transform (default) | Recompute | Drop
 //          name     the input's name for messages
