@@ -32,9 +32,15 @@ bool write_all(int fd, std::string_view bytes) {
   return true;
 }
 
+// Read once (umask can only be read by setting it): calling umask(0); umask(m) from several writer
+// threads at once (-j N) could interleave and leave the process's umask at 0, so that later files
+// got mode 0666 whatever the user's umask. A function-local static is initialised exactly once.
 mode_t current_umask() {
-  const mode_t m = ::umask(0);
-  ::umask(m);
+  static const mode_t m = [] {
+    const mode_t old = ::umask(0);
+    ::umask(old);
+    return old;
+  }();
   return m;
 }
 
