@@ -10,8 +10,8 @@ n=0
 for mesh in "$src"/data/*.obj "$src"/data/*.ply "$src"/data/*.off; do
   [ -f "$mesh" ] || continue
   for k in 1 2 3 4 5; do
-    "$bin" transform "$mesh" -o "$tmp/in/$(basename "${mesh%.*}")-$k.obj" --translate "$k,0,0" --quiet 2>/dev/null ||
-      cp "$mesh" "$tmp/in/$(basename "${mesh%.*}")-$k.${mesh##*.}"
+    "$bin" transform "$mesh" -o "$tmp/in/$(basename "${mesh%.*}")-$k.obj" --translate "$k,0,0" --quiet ||
+      { echo "FAIL: transform $mesh"; echo "0 passed, 1 failed"; exit 1; }
     n=$((n + 1))
   done
 done

@@ -18,15 +18,8 @@ namespace {
 bool has(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
 
 Scene lit_scene() {
-  Scene s = dark_scene(ShadingModel::BlinnPhong);
+  Scene s = three_light_scene();
   s.material.ambient = {0.2, 0.2, 0.2};
-  s.material.diffuse = {0.8, 0.6, 0.4};
-  s.material.specular = {1, 1, 1};
-  s.material.shininess = 16;
-  s.has_camera = true;
-  s.camera_from_world = camera_at({0, 0, 5});
-  s.lights = {directional({0, -1, -1}), point_light({2, 2, 2}, {1, 0.1, 0.01}),
-              spot_light({0, 3, 0}, {0, -1, 0}, 30, 8)};
   return s;
 }
 

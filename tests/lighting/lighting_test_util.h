@@ -63,4 +63,18 @@ inline Affine3d camera_at(const Vec3d& eye) {  // a view whose eye is `eye` (tra
   return V;
 }
 
+// Blinn-Phong with a camera and one light of each kind (directional, point with attenuation,
+// 30-degree spot): a scene that exercises every term and every skip decision.
+inline Scene three_light_scene() {
+  Scene s = dark_scene(ShadingModel::BlinnPhong);
+  s.material.diffuse = {0.8, 0.6, 0.4};
+  s.material.specular = {1, 1, 1};
+  s.material.shininess = 16;
+  s.has_camera = true;
+  s.camera_from_world = camera_at({0, 0, 5});
+  s.lights = {directional({0, -1, -1}), point_light({2, 2, 2}, {1, 0.1, 0.01}),
+              spot_light({0, 3, 0}, {0, -1, 0}, 30, 8)};
+  return s;
+}
+
 }  // namespace shadetool::testing
