@@ -27,13 +27,13 @@
 #include "repair/component_boundaries.h"
 #include "repair/consistent_winding.h"
 #include "repair/degenerate_faces.h"
-#include "repair/edge_adjacency.h"
 #include "normals/vertex_normals.h"
 #include "repair/fix_normals.h"
 #include "repair/outward_orientation.h"
 #include "repair/repair_mesh.h"
 #include "repair/reverse_faces.h"
 #include "repair/repair_test_meshes.h"
+#include "topology/edge_adjacency.h"
 
 using namespace shadetool;
 using namespace shadetool::testing;
@@ -108,13 +108,14 @@ int main(int argc, char** argv) {
   const bool restored = check.corner_vertex == truth.corner_vertex;
 
   // Stages alone, on the mesh as read.
-  const std::vector<std::uint8_t> no_skip(as_read.num_faces(), 0);
+  EdgeAdjacencyOptions left_out;
+  left_out.skip_unwound_faces = true;
   EdgeAdjacency adj;
   ConsistentWinding winding;
   ComponentBoundaries bounds;
   const Timing t_degenerate = median_ms(reps, [] {}, [&] { degenerate_faces(as_read); });
-  const Timing t_adjacency = median_ms(reps, [] {}, [&] { adj = edge_adjacency(as_read, no_skip); });
-  const Timing t_winding = median_ms(reps, [] {}, [&] { winding = consistent_winding(as_read, adj, no_skip); });
+  const Timing t_adjacency = median_ms(reps, [] {}, [&] { adj = edge_adjacency(as_read, left_out); });
+  const Timing t_winding = median_ms(reps, [] {}, [&] { winding = consistent_winding(as_read, adj, left_out); });
   const Timing t_bounds = median_ms(reps, [] {}, [&] { bounds = component_boundaries(as_read, adj, winding); });
   const Timing t_outward = median_ms(reps, [] {}, [&] { outward_orientation(as_read, winding, bounds); });
   std::vector<std::uint8_t> flags(as_read.num_faces());
@@ -131,7 +132,7 @@ int main(int argc, char** argv) {
   row("**repair_mesh, whole**", repair);
   row("  degenerate_faces", t_degenerate);
   row("  edge_adjacency", t_adjacency);
-  row("  consistent_winding (BFS)", t_winding);
+  row("  consistent_winding (DFS)", t_winding);
   row("  component_boundaries", t_bounds);
   row("  outward_orientation (volume)", t_outward);
   row("  reverse_faces", t_reverse);

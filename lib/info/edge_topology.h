@@ -12,8 +12,8 @@
 //                          or a vertex on a non-manifold edge whose sheets meet only there)
 // Half-edges are the face sides (c, next(c)); sides with a == b (a face repeating a vertex) are
 // not edges and are ignored here (they are reported as degenerate faces).
-// Method: half-edges sorted by their undirected key (flat arrays, no maps); for the fans, a
-// union-find over corners joins the two corners at each end of every manifold edge, and a vertex
+// Method: the half-edge pairing of topology/edge_adjacency.h (a counting sort on the lower vertex,
+// flat arrays, no maps), shared with repair; for the fans, a union-find over corners joins the two corners at each end of every manifold edge, and a vertex
 // is non-manifold when its corners fall into more than one set.
 #pragma once
 

@@ -22,16 +22,15 @@ ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& 
   b.component_loops.assign(K, 0);
   b.component_closed.assign(K, 1);
 
-  // (component, edge) pairs where the component meets the edge an odd number of times.
+  // (component, edge) pairs where the component meets the edge an odd number of times. Only
+  // edges of valence other than 2 can be such: the two faces of a manifold edge are joined
+  // through it into one component, or are one face using the edge twice.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary;
   std::vector<std::uint32_t> comps;
-  for (std::size_t e = 0; e < adj.num_edges(); ++e) {
-    const std::uint32_t s = adj.edge_start[e], n = adj.edge_valence(e);
-    if (n == 2 && winding.face_component[adj.corner_face[adj.edge_corner[s]]] ==
-                      winding.face_component[adj.corner_face[adj.edge_corner[s + 1]]])
-      continue;  // the common case: an interior edge
+  for (std::size_t e = 0; e < adj.num_odd_edges(); ++e) {
+    const std::uint32_t s = adj.odd_edge_start[e], n = adj.odd_edge_valence(e);
     comps.clear();
-    for (std::uint32_t i = s; i < s + n; ++i) comps.push_back(winding.face_component[adj.corner_face[adj.edge_corner[i]]]);
+    for (std::uint32_t i = s; i < s + n; ++i) comps.push_back(winding.face_component[corner_face(mesh, adj.odd_edge_corner[i])]);
     std::sort(comps.begin(), comps.end());
     for (std::size_t i = 0; i < comps.size();) {
       std::size_t j = i;
@@ -47,7 +46,7 @@ ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& 
   for (auto [k, e] : boundary) {
     ++b.component_boundary_edges[k];
     b.component_closed[k] = 0;
-    const auto [v0, v1] = edge_ends(mesh, adj, e);
+    const auto [v0, v1] = half_edge_ends(mesh, adj.odd_edge_corner[adj.odd_edge_start[e]]);
     keys.push_back((std::uint64_t(k) << 32) | v0);
     keys.push_back((std::uint64_t(k) << 32) | v1);
   }
@@ -59,7 +58,7 @@ ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& 
   std::vector<std::uint32_t> parent(keys.size());
   std::iota(parent.begin(), parent.end(), 0u);
   for (auto [k, e] : boundary) {
-    const auto [v0, v1] = edge_ends(mesh, adj, e);
+    const auto [v0, v1] = half_edge_ends(mesh, adj.odd_edge_corner[adj.odd_edge_start[e]]);
     const std::uint32_t x = find_root(parent, id(k, v0)), y = find_root(parent, id(k, v1));
     if (x != y) parent[std::max(x, y)] = std::min(x, y);
   }

@@ -1,7 +1,7 @@
 // component_boundaries.h: which components are closed, and how many boundary loops each has.
 //
 // Inputs:  mesh     faces #F
-//          adj      edge_adjacency(mesh, skip)
+//          adj      edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
 //          winding  consistent_winding(mesh, adj, skip): face_component, num_components (K)
 // Outputs: ComponentBoundaries with
 //   component_boundary_edges #K  edges on which the component has an odd number of half-edges
@@ -25,7 +25,7 @@
 
 #include "core/mesh.h"
 #include "repair/consistent_winding.h"
-#include "repair/edge_adjacency.h"
+#include "topology/edge_adjacency.h"
 
 namespace shadetool {
 

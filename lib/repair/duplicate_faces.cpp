@@ -10,18 +10,28 @@ DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj) {
   DuplicateFaces out;
   out.original.assign(F, DuplicateFaces::kNone);
   std::vector<std::uint32_t> candidates;
-  if (adj.non_manifold_edges > 0)
-    for (std::size_t e = 0; e < adj.num_edges(); ++e)
-      if (adj.edge_valence(e) >= 3)
-        for (std::uint32_t i = adj.edge_start[e]; i < adj.edge_start[e + 1]; ++i) candidates.push_back(adj.corner_face[adj.edge_corner[i]]);
-  // A lone pair: every edge of the face is shared with one and the same other face.
+  for (std::size_t e = 0; e < adj.num_odd_edges(); ++e)
+    if (adj.odd_edge_valence(e) >= 3)
+      for (std::uint32_t i = adj.odd_edge_start[e]; i < adj.odd_edge_start[e + 1]; ++i)
+        candidates.push_back(corner_face(mesh, adj.odd_edge_corner[i]));
+  // A lone pair: every edge of the face is shared with one and the same other face. Its mates
+  // then lie within one face of the same size, so they span fewer corners than the face has: a
+  // cheap filter before the face is looked up.
+  const std::uint32_t* mate = adj.corner_mate.data();
+  const bool triangles = mesh.all_triangles();
   for (std::size_t f = 0; f < F; ++f) {
     const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-    if (e - b < 3 || adj.corner_across[b] == EdgeAdjacency::kNoEdge) continue;
-    const std::uint32_t g = adj.corner_across[b] >> 1;
-    std::uint32_t c = b + 1;
-    while (c < e && adj.corner_across[c] != EdgeAdjacency::kNoEdge && (adj.corner_across[c] >> 1) == g) ++c;
-    if (c == e) candidates.push_back(std::uint32_t(f));
+    if (e - b < 3) continue;
+    std::uint32_t lo = EdgeAdjacency::kUnpaired, hi = 0;
+    bool paired = true;
+    for (std::uint32_t c = b; c < e && paired; ++c) {
+      paired = mate[c] != EdgeAdjacency::kUnpaired;
+      lo = std::min(lo, mate[c] >> 1);
+      hi = std::max(hi, mate[c] >> 1);
+    }
+    if (!paired || hi - lo >= e - b) continue;
+    const std::uint32_t g = triangles ? lo / 3 : corner_face(mesh, lo);
+    if (g != f && (triangles ? hi / 3 == g : hi < mesh.face_start[g + 1])) candidates.push_back(std::uint32_t(f));
   }
   if (candidates.empty()) return out;
   std::sort(candidates.begin(), candidates.end());

@@ -8,7 +8,7 @@
 // later one keeps its input relation to it (same winding stays same, opposite stays opposite).
 //
 // Inputs:  mesh  faces #F
-//          adj   edge_adjacency(mesh, skip)
+//          adj   edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
 // Output:  DuplicateFaces with
 //   original  #F  for a duplicate, the lowest-numbered face with the same vertex set; else kNone
 //   count         number of duplicates (faces with original != kNone)
@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "core/mesh.h"
-#include "repair/edge_adjacency.h"
+#include "topology/edge_adjacency.h"
 
 namespace shadetool {
 

@@ -9,10 +9,10 @@
 #include "repair/consistent_winding.h"
 #include "repair/degenerate_faces.h"
 #include "repair/duplicate_faces.h"
-#include "repair/edge_adjacency.h"
 #include "repair/outward_orientation.h"
 #include "repair/reverse_faces.h"
 #include "repair/weld_vertices.h"
+#include "topology/edge_adjacency.h"
 
 namespace shadetool {
 
@@ -29,22 +29,20 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   report.degenerate_too_few_corners = degenerate.too_few_corners;
   report.degenerate_non_finite = degenerate.non_finite;
 
-  // Faces without a winding of their own take no part in orientation.
-  std::vector<std::uint8_t> skip(F, 0);
-  for (std::size_t f = 0; f < F; ++f)
-    skip[f] = degenerate.kind[f] == DegenerateKind::TooFewCorners || degenerate.kind[f] == DegenerateKind::RepeatedIndex;
-
-  // Step 1: consistent winding. Duplicate faces are set aside first (and the adjacency rebuilt
+  // Step 1: consistent winding. Faces without a winding of their own (fewer than 3 corners, a
+  // repeated index) take no part. Duplicate faces are set aside first (and the adjacency rebuilt
   // without them, only when there are any).
-  EdgeAdjacency adj = edge_adjacency(mesh, skip);
+  EdgeAdjacencyOptions left_out;
+  left_out.skip_unwound_faces = true;
+  EdgeAdjacency adj = edge_adjacency(mesh, left_out);
   const DuplicateFaces duplicates = duplicate_faces(mesh, adj);
   report.duplicate_faces = duplicates.count;
   if (duplicates.count > 0) {
-    for (std::size_t f = 0; f < F; ++f)
-      if (duplicates.original[f] != DuplicateFaces::kNone) skip[f] = 1;
-    adj = edge_adjacency(mesh, skip);
+    left_out.skip.assign(F, 0);
+    for (std::size_t f = 0; f < F; ++f) left_out.skip[f] = duplicates.original[f] != DuplicateFaces::kNone;
+    adj = edge_adjacency(mesh, left_out);
   }
-  const ConsistentWinding winding = consistent_winding(mesh, adj, skip);
+  const ConsistentWinding winding = consistent_winding(mesh, adj, left_out);
   const ComponentBoundaries boundaries = component_boundaries(mesh, adj, winding);
   report.components = winding.num_components;
   report.non_manifold_edges = winding.non_manifold_edges;

@@ -11,7 +11,9 @@ using namespace shadetool::testing;
 
 namespace {
 ConsistentWinding wind(const Mesh& m, const std::vector<std::uint8_t>& skip = {}) {
-  return consistent_winding(m, edge_adjacency(m, skip), skip);
+  EdgeAdjacencyOptions left_out;
+  left_out.skip = skip;
+  return consistent_winding(m, edge_adjacency(m, left_out), left_out);
 }
 }  // namespace
 

@@ -1,0 +1,97 @@
+// edge_adjacency.h: the undirected edges of a polygon mesh as pairs of half-edges, in flat arrays.
+// Shared by `info` (edge counts, non-manifold vertices) and `repair` (winding propagation).
+//
+// A half-edge is named by its corner: corner c of face f runs from corner_vertex[c] (its tail) to
+// the vertex of the next corner of f, cyclically (its head). Half-edges whose two ends are the same
+// vertex (a repeated index, e.g. face (a, a, b)) are not edges. An undirected edge {lo, hi} is the
+// set of half-edges between lo and hi in either direction; its valence is their number:
+// 1 a boundary edge, 2 a manifold edge, 3 or more a non-manifold edge.
+//
+// Inputs:  mesh     faces (face_start #F+1, corner_vertex #C), polygons of any size; positions unused
+//          options  skip     #F flags or empty: faces whose flag is nonzero contribute no half-edges
+//                   skip_unwound_faces  also leave out faces with fewer than 3 corners or a
+//                            repeated vertex index: they have no winding of their own, and their
+//                            (a, b), (b, a) pair would make a false non-manifold edge out of a
+//                            manifold one (repair sets this; info counts every half-edge)
+// Outputs: EdgeAdjacency with
+//   corner_mate   #C   for a half-edge on an edge of valence exactly 2: (m << 1) | s, m the corner
+//                      of the other half-edge, s = 1 when both run the edge the same way (a -> b
+//                      twice: the two faces are wound inconsistently). kUnpaired otherwise
+//                      (boundary, non-manifold, not an edge, or a left-out face). The two half-edges
+//                      may belong to one face (a face using an edge twice); callers check.
+//   odd_edge_start  #O+1  the edges of valence other than 2, in increasing (lo, hi) order: edge i's
+//   odd_edge_corner #H_O  half-edges are odd_edge_corner[odd_edge_start[i] .. odd_edge_start[i+1]),
+//                         in increasing corner order
+//   num_edges, boundary_edges (valence 1), non_manifold_edges (valence >= 3)
+// Manifold edges are not listed: they are the pairs in corner_mate (one edge per pair).
+//
+// Method: a counting sort of the half-edges keyed on their lower vertex (counts, prefix sum,
+// scatter of (higher vertex, corner, direction) in corner order), then each small bucket (about
+// half the vertex degree) is sorted by (higher vertex, corner) and equal higher vertices form one
+// edge (the counts/offsets/data layout of meshoptimizer's adjacency). On a mesh whose vertex order
+// is coherent with its face order (what exporters and scanners write) every pass is nearly
+// streaming. O(C + V) plus O(d log d) per bucket of size d; no maps, no hashing. Serial: the
+// output depends on nothing but the faces' vertex indices, and for one core's share of memory
+// bandwidth a second thread was measured not to help (bench/repair/results.md).
+// Throws Error if a face refers to a vertex index >= #V, or with 2^31 - 1 corners or more
+// (a corner and a flag share 32 bits).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "core/mesh.h"
+
+namespace shadetool {
+
+struct EdgeAdjacencyOptions {
+  std::vector<std::uint8_t> skip;
+  bool skip_unwound_faces = false;
+};
+
+struct EdgeAdjacency {
+  static constexpr std::uint32_t kUnpaired = std::numeric_limits<std::uint32_t>::max();
+
+  std::vector<std::uint32_t> corner_mate;
+  std::vector<std::uint32_t> odd_edge_start{0};
+  std::vector<std::uint32_t> odd_edge_corner;
+  std::size_t num_edges = 0;
+  std::size_t boundary_edges = 0;
+  std::size_t non_manifold_edges = 0;
+
+  std::size_t num_odd_edges() const { return odd_edge_start.size() - 1; }
+  std::uint32_t odd_edge_valence(std::size_t i) const { return odd_edge_start[i + 1] - odd_edge_start[i]; }
+};
+
+EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& options = {});
+
+// Whether face f has no winding of its own: fewer than 3 corners, or a repeated vertex index.
+bool face_is_unwound(const Mesh& mesh, std::size_t f);
+
+// The face of corner c: c / 3 on a triangle mesh, else a binary search of face_start (O(log F);
+// for the few corners of odd edges; bulk users build a corner -> face array).
+inline std::uint32_t corner_face(const Mesh& mesh, std::uint32_t c) {
+  if (mesh.all_triangles()) return c / 3;
+  std::size_t lo = 0, hi = mesh.num_faces();  // face_start[lo] <= c < face_start[hi]
+  while (hi - lo > 1) {
+    const std::size_t mid = (lo + hi) / 2;
+    (mesh.face_start[mid] <= c ? lo : hi) = mid;
+  }
+  return std::uint32_t(lo);
+}
+
+// The corner after c in its face f, cyclically (the head of c's half-edge is its vertex).
+inline std::uint32_t next_corner(const Mesh& mesh, std::uint32_t f, std::uint32_t c) {
+  return c + 1 < mesh.face_start[f + 1] ? c + 1 : mesh.face_start[f];
+}
+
+// (lower, higher) vertex of the half-edge at corner c.
+inline std::pair<std::uint32_t, std::uint32_t> half_edge_ends(const Mesh& mesh, std::uint32_t c) {
+  const std::uint32_t a = mesh.corner_vertex[c], b = mesh.corner_vertex[next_corner(mesh, corner_face(mesh, c), c)];
+  return {a < b ? a : b, a < b ? b : a};
+}
+
+}  // namespace shadetool
