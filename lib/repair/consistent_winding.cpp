@@ -52,6 +52,7 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   std::uint8_t* reverse = w.face_reverse.data();
 
   std::vector<Step> steps;
+  Step tri[3];
   std::vector<std::uint32_t> stack;
   for (std::size_t seed = 0; seed < F; ++seed) {
     if (component[seed] != kNone) continue;
@@ -67,37 +68,47 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
       stack.pop_back();
       const std::uint32_t reverse_f = reverse[f];
       const std::uint32_t b = triangles ? 3 * f : fs[f], e = triangles ? 3 * f + 3 : fs[f + 1];
-      steps.clear();
-      for (std::uint32_t c = b; c < e; ++c) {
-        const std::uint32_t m = mate[c];
-        if (m == kUnpaired) continue;
-        const std::uint32_t g = triangles ? (m >> 1) / 3 : face_of[m >> 1];
-        if (g == f) continue;  // a face using an edge twice is no bridge
-        steps.push_back({g, m & 1u, c});  // key = corner for now, replaced on a tie below
-      }
-      const std::size_t n = steps.size();
-      if (n == 2) {
-        if (steps[1].face < steps[0].face) std::swap(steps[0], steps[1]);
-      } else if (n == 3) {  // a triangle: three compare-swaps
-        if (steps[1].face < steps[0].face) std::swap(steps[0], steps[1]);
-        if (steps[2].face < steps[1].face) std::swap(steps[1], steps[2]);
-        if (steps[1].face < steps[0].face) std::swap(steps[0], steps[1]);
-      } else if (n > 3) {
+      std::size_t n = 0;
+      if (triangles) {  // the common case: at most three neighbours, no allocation, a sorting network
+        Step* t = tri;
+        for (std::uint32_t c = b; c < e; ++c) {
+          const std::uint32_t m = mate[c];
+          const std::uint32_t g = (m >> 1) / 3;
+          if (m == kUnpaired || g == f) continue;  // no manifold edge / a face using an edge twice
+          t[n++] = {g, m & 1u, c};  // key = corner for now, replaced on a tie below
+        }
+        if (n >= 2 && t[1].face < t[0].face) std::swap(t[0], t[1]);
+        if (n == 3) {
+          if (t[2].face < t[1].face) std::swap(t[1], t[2]);
+          if (t[1].face < t[0].face) std::swap(t[0], t[1]);
+        }
+      } else {
+        steps.clear();
+        for (std::uint32_t c = b; c < e; ++c) {
+          const std::uint32_t m = mate[c];
+          if (m == kUnpaired) continue;
+          const std::uint32_t g = face_of[m >> 1];
+          if (g == f) continue;  // a face using an edge twice is no bridge
+          steps.push_back({g, m & 1u, c});
+        }
+        n = steps.size();
         std::sort(steps.begin(), steps.end(), [](const Step& x, const Step& y) { return x.face < y.face; });
       }
+      Step* const step = triangles ? tri : steps.data();
       // A neighbour met twice (two faces sharing two edges): order its steps by the edge's vertex
       // pair, which does not depend on the winding (the corner does). Rare.
       for (std::size_t i = 0; i + 1 < n; ++i) {
-        if (steps[i].face != steps[i + 1].face) continue;
+        if (step[i].face != step[i + 1].face) continue;
         std::size_t j = i;
-        for (; j < n && steps[j].face == steps[i].face; ++j) {
-          const std::uint32_t c = std::uint32_t(steps[j].key), u = cv[c], v = cv[c + 1 < e ? c + 1 : b];
-          steps[j].key = (std::uint64_t(std::min(u, v)) << 32) | std::max(u, v);
+        for (; j < n && step[j].face == step[i].face; ++j) {
+          const std::uint32_t c = std::uint32_t(step[j].key), u = cv[c], v = cv[c + 1 < e ? c + 1 : b];
+          step[j].key = (std::uint64_t(std::min(u, v)) << 32) | std::max(u, v);
         }
-        std::sort(steps.begin() + std::ptrdiff_t(i), steps.begin() + std::ptrdiff_t(j));
+        std::sort(step + i, step + j);
         i = j - 1;
       }
-      for (const Step& s : steps) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const Step& s = step[i];
         const std::uint32_t wanted = reverse_f ^ s.same_direction;
         if (component[s.face] == kNone) {
           component[s.face] = k;
