@@ -1,7 +1,9 @@
-// consistent_winding.cpp: depth-first winding propagation over manifold edges (see the header).
+// consistent_winding.cpp: winding by union-find with parity, canonical depth-first search for
+// non-orientable components (see the header).
 #include "repair/consistent_winding.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "core/error.h"
 #include "io/bulk_reserve.h"
@@ -27,6 +29,7 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   if (adj.corner_mate.size() != C) fail("consistent_winding", 0, "adjacency was built for another mesh");
   if (!left_out.skip.empty() && left_out.skip.size() != F)
     fail("consistent_winding", 0, "skip flags size differs from the face count");
+  if (F >= (std::size_t(1) << 31)) fail("consistent_winding", 0, "2^31 faces or more");  // (parent << 1) | parity
   const std::uint32_t* cv = mesh.corner_vertex.data();
   const std::uint32_t* fs = mesh.face_start.data();
   const std::uint32_t* mate = adj.corner_mate.data();
@@ -51,71 +54,75 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   std::uint32_t* component = w.face_component.data();
   std::uint8_t* reverse = w.face_reverse.data();
 
+  // Stack of labelled faces still to expand in the canonical search: each face is pushed once, so
+  // F entries suffice. Uninitialised: only as much of it is touched as the search goes deep.
+  std::unique_ptr<std::uint32_t[]> stack;
+
+  // Labels of component k (reached from seed) undone, before the canonical search.
+  auto clear = [&](std::uint32_t seed, std::uint32_t k) {
+    std::size_t top = 0;
+    stack[top++] = seed;
+    component[seed] = kNone;
+    reverse[seed] = 0;
+    while (top > 0) {
+      const std::uint32_t f = stack[--top];
+      const std::uint32_t b = triangles ? 3 * f : fs[f], e = triangles ? 3 * f + 3 : fs[f + 1];
+      for (std::uint32_t c = b; c < e; ++c) {
+        const std::uint32_t m = mate[c];
+        if (m == kUnpaired) continue;
+        const std::uint32_t g = triangles ? (m >> 1) / 3 : face_of[m >> 1];
+        if (component[g] != k) continue;
+        component[g] = kNone;
+        reverse[g] = 0;
+        stack[top++] = g;
+      }
+    }
+  };
+
+  // Canonical search: neighbours in increasing (face, edge's vertex pair) order; counts the
+  // inconsistent edges.
   std::vector<Step> steps;
-  Step tri[3];
-  std::vector<std::uint32_t> stack;
-  for (std::size_t seed = 0; seed < F; ++seed) {
-    if (component[seed] != kNone) continue;
-    if (!left_out.skip.empty() && left_out.skip[seed]) continue;
-    if (left_out.skip_unwound_faces && face_is_unwound(mesh, seed)) continue;
-    const std::uint32_t k = std::uint32_t(w.num_components++);
-    std::uint32_t faces = 1, reversed = 0;
+  auto canonical_search = [&](std::uint32_t seed, std::uint32_t k, std::uint32_t& faces, std::uint32_t& reversed) {
     bool non_orientable = false;
+    std::size_t top = 0;
+    stack[top++] = seed;
     component[seed] = k;
-    stack.push_back(std::uint32_t(seed));
-    while (!stack.empty()) {
-      const std::uint32_t f = stack.back();
-      stack.pop_back();
+    faces = 1;
+    reversed = 0;
+    while (top > 0) {
+      const std::uint32_t f = stack[--top];
       const std::uint32_t reverse_f = reverse[f];
       const std::uint32_t b = triangles ? 3 * f : fs[f], e = triangles ? 3 * f + 3 : fs[f + 1];
-      std::size_t n = 0;
-      if (triangles) {  // the common case: at most three neighbours, no allocation, a sorting network
-        Step* t = tri;
-        for (std::uint32_t c = b; c < e; ++c) {
-          const std::uint32_t m = mate[c];
-          const std::uint32_t g = (m >> 1) / 3;
-          if (m == kUnpaired || g == f) continue;  // no manifold edge / a face using an edge twice
-          t[n++] = {g, m & 1u, c};  // key = corner for now, replaced on a tie below
-        }
-        if (n >= 2 && t[1].face < t[0].face) std::swap(t[0], t[1]);
-        if (n == 3) {
-          if (t[2].face < t[1].face) std::swap(t[1], t[2]);
-          if (t[1].face < t[0].face) std::swap(t[0], t[1]);
-        }
-      } else {
-        steps.clear();
-        for (std::uint32_t c = b; c < e; ++c) {
-          const std::uint32_t m = mate[c];
-          if (m == kUnpaired) continue;
-          const std::uint32_t g = face_of[m >> 1];
-          if (g == f) continue;  // a face using an edge twice is no bridge
-          steps.push_back({g, m & 1u, c});
-        }
-        n = steps.size();
-        std::sort(steps.begin(), steps.end(), [](const Step& x, const Step& y) { return x.face < y.face; });
+      steps.clear();
+      for (std::uint32_t c = b; c < e; ++c) {
+        const std::uint32_t m = mate[c];
+        if (m == kUnpaired) continue;
+        const std::uint32_t g = triangles ? (m >> 1) / 3 : face_of[m >> 1];
+        if (g == f) continue;
+        steps.push_back({g, m & 1u, c});  // key = corner for now, replaced on a tie below
       }
-      Step* const step = triangles ? tri : steps.data();
+      const std::size_t n = steps.size();
+      std::sort(steps.begin(), steps.end(), [](const Step& x, const Step& y) { return x.face < y.face; });
       // A neighbour met twice (two faces sharing two edges): order its steps by the edge's vertex
-      // pair, which does not depend on the winding (the corner does). Rare.
+      // pair, which does not depend on the winding (the corner does).
       for (std::size_t i = 0; i + 1 < n; ++i) {
-        if (step[i].face != step[i + 1].face) continue;
+        if (steps[i].face != steps[i + 1].face) continue;
         std::size_t j = i;
-        for (; j < n && step[j].face == step[i].face; ++j) {
-          const std::uint32_t c = std::uint32_t(step[j].key), u = cv[c], v = cv[c + 1 < e ? c + 1 : b];
-          step[j].key = (std::uint64_t(std::min(u, v)) << 32) | std::max(u, v);
+        for (; j < n && steps[j].face == steps[i].face; ++j) {
+          const std::uint32_t c = std::uint32_t(steps[j].key), u = cv[c], v = cv[c + 1 < e ? c + 1 : b];
+          steps[j].key = (std::uint64_t(std::min(u, v)) << 32) | std::max(u, v);
         }
-        std::sort(step + i, step + j);
+        std::sort(steps.begin() + std::ptrdiff_t(i), steps.begin() + std::ptrdiff_t(j));
         i = j - 1;
       }
-      for (std::size_t i = 0; i < n; ++i) {
-        const Step& s = step[i];
+      for (const Step& s : steps) {
         const std::uint32_t wanted = reverse_f ^ s.same_direction;
         if (component[s.face] == kNone) {
           component[s.face] = k;
           reverse[s.face] = std::uint8_t(wanted);
           ++faces;
           reversed += wanted;
-          stack.push_back(s.face);
+          stack[top++] = s.face;
         } else if (reverse[s.face] != wanted) {
           // A non-tree edge the labels leave inconsistent. It is met from both of its faces
           // (expanding a face labels all its neighbours, and every labelled face is expanded);
@@ -125,10 +132,91 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
         }
       }
     }
-    w.component_seed.push_back(std::uint32_t(seed));
-    w.component_faces.push_back(faces);
-    w.component_reverse_count.push_back(reversed);
-    w.component_non_orientable.push_back(non_orientable ? 1 : 0);
+    return non_orientable;
+  };
+
+  // Union-find with parity over the faces: node[f] = (parent << 1) | parity, the parity of f's
+  // reversal relative to its parent's. Union by lower index, so each set's root is its lowest
+  // face: the seed. Path halving keeps the parities: a node moved to its grandparent takes the
+  // XOR of the two parities on the way.
+  std::vector<std::uint32_t> node;
+  io::reserve_bulk(node, F);
+  node.resize(F);
+  for (std::size_t f = 0; f < F; ++f) node[f] = std::uint32_t(f) << 1;
+  auto find = [&node](std::uint32_t x, std::uint32_t& parity) {
+    parity = 0;
+    for (;;) {
+      const std::uint32_t nx = node[x], px = nx >> 1;
+      if (px == x) return x;
+      const std::uint32_t ny = node[px], py = ny >> 1;
+      if (py == px) {
+        parity ^= nx & 1u;
+        return px;
+      }
+      const std::uint32_t to_grandparent = (nx ^ ny) & 1u;
+      node[x] = (py << 1) | to_grandparent;
+      parity ^= to_grandparent;
+      x = py;
+    }
+  };
+  // Every manifold edge (f, g), once, from its lower corner: f and g must end with
+  // reverse[f] XOR reverse[g] = same_direction. An edge joining a set to itself with the wrong
+  // parity makes its component non-orientable (recorded, settled below).
+  std::vector<std::uint32_t> conflict_faces;
+  for (std::size_t f = 0; f < F; ++f) {
+    const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
+    for (std::uint32_t c = b; c < e; ++c) {
+      const std::uint32_t m = mate[c];
+      if (m == kUnpaired || (m >> 1) < c) continue;
+      const std::uint32_t g = triangles ? (m >> 1) / 3 : face_of[m >> 1];
+      if (g == f) continue;  // a face using an edge twice is no bridge
+      std::uint32_t pf, pg;
+      const std::uint32_t rf = find(std::uint32_t(f), pf), rg = find(g, pg);
+      const std::uint32_t parity = pf ^ pg ^ (m & 1u);
+      if (rf == rg) {
+        if (parity) conflict_faces.push_back(std::uint32_t(f));
+      } else if (rf < rg) {
+        node[rg] = (rf << 1) | parity;
+      } else {
+        node[rf] = (rg << 1) | parity;
+      }
+    }
+  }
+  // Components numbered by their lowest face; reversal relative to it. Faces left out are roots
+  // of nothing (they have no manifold edges) and get no component.
+  for (std::size_t f = 0; f < F; ++f) {
+    std::uint32_t parity;
+    const std::uint32_t r = find(std::uint32_t(f), parity);
+    if (r == f) {
+      const bool out = (!left_out.skip.empty() && left_out.skip[f]) || (left_out.skip_unwound_faces && face_is_unwound(mesh, f));
+      if (out) continue;  // component stays kNone, reverse 0
+      component[f] = std::uint32_t(w.num_components++);
+      w.component_seed.push_back(std::uint32_t(f));
+      w.component_faces.push_back(0);
+      w.component_reverse_count.push_back(0);
+      w.component_non_orientable.push_back(0);
+    } else {
+      component[f] = component[r];
+    }
+    reverse[f] = std::uint8_t(parity);
+    ++w.component_faces[component[f]];
+    w.component_reverse_count[component[f]] += parity;
+  }
+  node.clear();
+  node.shrink_to_fit();
+
+  // Non-orientable components: labelled again by the canonical search, which does not depend on
+  // the input winding and counts the inconsistent edges.
+  for (std::uint32_t f : conflict_faces) w.component_non_orientable[component[f]] = 1;
+  for (std::size_t k = 0; k < w.num_components; ++k) {
+    if (!w.component_non_orientable[k]) continue;
+    if (!stack) stack.reset(new std::uint32_t[F + 1]);
+    const std::uint32_t seed = w.component_seed[k];
+    clear(seed, std::uint32_t(k));
+    std::uint32_t faces = 0, reversed = 0;
+    canonical_search(seed, std::uint32_t(k), faces, reversed);
+    w.component_faces[k] = faces;
+    w.component_reverse_count[k] = reversed;
   }
   return w;
 }

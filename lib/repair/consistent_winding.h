@@ -1,7 +1,7 @@
 // consistent_winding.h: connected components and a winding for every face such that each
-// manifold edge is traversed in opposite directions by its two faces (breadth-first propagation).
+// manifold edge is traversed in opposite directions by its two faces.
 //
-// Inputs:  mesh  faces #F (polygons of any size)
+// Inputs:  mesh      faces #F (polygons of any size)
 //          adj       edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
 //          left_out  the same options: faces flagged in skip, and with skip_unwound_faces faces
 //                    of fewer than 3 corners or with a repeated index, take no part (no
@@ -18,21 +18,29 @@
 //                         after the reversal (only in non-orientable components)
 //   non_manifold_edges    edges with 3 or more half-edges (they do not propagate orientation)
 //
-// Method: for each unvisited face in index order, a graph search over manifold edges
-// (adj.corner_mate), depth-first with an explicit stack (faces are labelled when pushed): the
-// neighbour g across half-edge (a -> b) of face f must run (b -> a) after reversal, so
-// reverse[g] = reverse[f] XOR (g runs a -> b too). A face's neighbours are labelled and pushed in
-// increasing (face, edge's vertex pair) order, which does not depend on the winding: the search
-// tree, and so the result, is the same for a mesh and any re-wound copy of it (repair is
-// idempotent). Depth-first keeps the working set small (the stack stays near the face being
-// expanded, where a breadth-first front spreads over the mesh); measured in bench/repair.
-// A component is orientable iff the labels leave no edge inconsistent: on an orientable surface
-// the labelling along any spanning tree is the unique consistent one up to a global flip. On a
-// non-orientable one, the inconsistent edges are where the search closes a cycle of the wrong
-// parity (one cut across a Möbius strip). Edges a face uses twice and non-manifold edges neither
-// propagate nor count as inconsistent. Each inconsistent edge is counted once, from its
-// lower-numbered face.
-// Cost: O(F + C), serial (the search order is what makes the result winding-free).
+// Method: each manifold edge (adj.corner_mate) between faces f and g says that after reversal g
+// must run the edge opposite to f: reverse[f] XOR reverse[g] = (both run it the same way).
+//   1. Union-find with parity over the faces, the edges taken in corner order (one streaming pass
+//      over corner_mate): union by lower index, so each set's root is its lowest face, the seed;
+//      path halving. Each node keeps its reversal relative to its parent; an edge inside one set
+//      with the wrong parity is a conflict. A second pass in face order gives every face its
+//      component (numbered by seed) and its reversal relative to the seed.
+//      On an orientable component the consistent labelling with the seed unreversed is unique,
+//      so the result does not depend on the order the edges were taken in, nor on the input
+//      winding (repair is idempotent).
+//   2. A component with a conflict is non-orientable (no labelling satisfies every edge). It is
+//      labelled again by a depth-first search from its seed (explicit stack, faces labelled when
+//      pushed) that visits a face's neighbours in increasing (face, edge's vertex pair) order,
+//      which does not depend on the winding: the search tree, and so the result, is the same for
+//      a mesh and any re-wound copy of it. The inconsistent edges are where the search closes a
+//      cycle of the wrong parity (one cut across a Möbius strip); each is counted once, from its
+//      lower-numbered face.
+// Edges a face uses twice and non-manifold edges neither propagate nor count as inconsistent.
+// Why union-find: it reads corner_mate in order and touches the face array near the faces being
+// joined (with the vertex order coherent, as exporters write it), where a graph search jumps
+// along its front; measured in bench/repair (union-find ~11 ms, sorted DFS ~17 ms, BFS ~31 ms,
+// 1M triangles).
+// Cost: O(C alpha(F)), serial. At most 2^31 - 1 faces (a face index and a parity share 32 bits).
 #pragma once
 
 #include <cstddef>

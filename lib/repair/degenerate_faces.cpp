@@ -38,11 +38,8 @@ DegenerateKind classify(const Mesh& mesh, std::size_t f, std::vector<std::uint32
     // Triangle: |e1 x e2|^2 <= tol^2 |e1|^2 |e2|^2, no square roots, while the squares can neither
     // overflow nor underflow; otherwise the general path below.
     const Vec3d e1 = mesh.position(cv[b + 1]) - p0, e2 = mesh.position(cv[b + 2]) - p0;
-    const double l1 = squared_length(e1), l2 = squared_length(e2);
-    if (l1 > 1e-100 && l1 < 1e100 && l2 > 1e-100 && l2 < 1e100) {
-      const double a2 = squared_length(cross(e1, e2));
-      return a2 <= kTolerance * kTolerance * l1 * l2 ? DegenerateKind::ZeroArea : DegenerateKind::None;
-    }
+    DegenerateKind kind;
+    if (triangle_kind_by_squares(squared_length(e1), squared_length(e2), squared_length(cross(e1, e2)), kind)) return kind;
   }
   Vec3d twice_area{};
   double bound = 0;
@@ -71,6 +68,17 @@ DegenerateFaces degenerate_faces(const Mesh& mesh) {
     std::vector<std::uint32_t> scratch;
     for (std::size_t f = r.begin(); f < r.end(); ++f) d.kind[f] = classify(mesh, f, scratch);
   });
+  count_degenerate_kinds(d);
+  return d;
+}
+
+DegenerateKind degenerate_kind(const Mesh& mesh, std::size_t f) {
+  std::vector<std::uint32_t> scratch;
+  return classify(mesh, f, scratch);
+}
+
+void count_degenerate_kinds(DegenerateFaces& d) {
+  d.too_few_corners = d.repeated_index = d.zero_area = d.non_finite = 0;
   for (DegenerateKind k : d.kind) {
     switch (k) {
       case DegenerateKind::None: break;
@@ -80,7 +88,6 @@ DegenerateFaces degenerate_faces(const Mesh& mesh) {
       case DegenerateKind::NonFinite: ++d.non_finite; break;
     }
   }
-  return d;
 }
 
 std::size_t remove_faces(Mesh& mesh, const std::vector<std::uint8_t>& remove) {

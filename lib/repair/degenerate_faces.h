@@ -39,6 +39,23 @@ struct DegenerateFaces {
 
 DegenerateFaces degenerate_faces(const Mesh& mesh);
 
+// The kind of one face (the per-face test of degenerate_faces).
+DegenerateKind degenerate_kind(const Mesh& mesh, std::size_t f);
+
+// The triangle test on squares, for a caller that has the edge vectors e1 = p1 - p0, e2 = p2 - p0
+// at hand: l1 = |e1|^2, l2 = |e2|^2, a2 = |e1 x e2|^2. Sets `kind` (None or ZeroArea) and returns
+// true while the squares can neither overflow nor underflow; else returns false (NaN included):
+// use degenerate_kind.
+inline bool triangle_kind_by_squares(double l1, double l2, double a2, DegenerateKind& kind) {
+  constexpr double kTolerance = 64 * 2.220446049250313e-16;  // 64 eps
+  if (!(l1 > 1e-100 && l1 < 1e100 && l2 > 1e-100 && l2 < 1e100)) return false;
+  kind = a2 <= kTolerance * kTolerance * l1 * l2 ? DegenerateKind::ZeroArea : DegenerateKind::None;
+  return true;
+}
+
+// Fills the counts of `d` from d.kind.
+void count_degenerate_kinds(DegenerateFaces& d);
+
 // Returns the number of faces removed.
 std::size_t remove_faces(Mesh& mesh, const std::vector<std::uint8_t>& remove);
 

@@ -9,12 +9,16 @@ namespace shadetool {
 
 OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding& winding,
                                        const ComponentBoundaries& boundaries) {
+  return outward_orientation(mesh, winding, boundaries, component_signed_volumes(mesh, winding));
+}
+
+OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding& winding,
+                                       const ComponentBoundaries& boundaries, const ComponentVolumes& volumes) {
   const std::size_t K = winding.num_components;
   OutwardOrientation out;
   out.component_invert.assign(K, 0);
   out.component_basis.assign(K, OrientationBasis::Majority);
 
-  const ComponentVolumes volumes = component_signed_volumes(mesh, winding);
   // Face lists are needed only for votes and nesting: built on first use.
   ComponentFaces groups;
   bool grouped = false;

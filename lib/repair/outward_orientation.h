@@ -29,6 +29,7 @@
 #include "core/mesh.h"
 #include "repair/component_boundaries.h"
 #include "repair/consistent_winding.h"
+#include "repair/signed_volume.h"
 
 namespace shadetool {
 
@@ -43,5 +44,8 @@ struct OutwardOrientation {
 
 OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding& winding,
                                        const ComponentBoundaries& boundaries);
+// The same, with the volumes already computed (component_signed_volumes(mesh, winding)).
+OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding& winding,
+                                       const ComponentBoundaries& boundaries, const ComponentVolumes& volumes);
 
 }  // namespace shadetool

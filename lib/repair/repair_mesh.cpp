@@ -11,6 +11,7 @@
 #include "repair/duplicate_faces.h"
 #include "repair/outward_orientation.h"
 #include "repair/reverse_faces.h"
+#include "repair/signed_volume.h"
 #include "repair/weld_vertices.h"
 #include "topology/edge_adjacency.h"
 
@@ -22,13 +23,6 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   if (options.weld_eps >= 0) report.vertices_welded = weld_vertices(mesh, options.weld_eps).removed;
 
   const std::size_t F = mesh.num_faces();
-  const DegenerateFaces degenerate = degenerate_faces(mesh);
-  report.degenerate_faces = degenerate.count();
-  report.degenerate_zero_area = degenerate.zero_area;
-  report.degenerate_repeated_index = degenerate.repeated_index;
-  report.degenerate_too_few_corners = degenerate.too_few_corners;
-  report.degenerate_non_finite = degenerate.non_finite;
-
   // Step 1: consistent winding. Faces without a winding of their own (fewer than 3 corners, a
   // repeated index) take no part. Duplicate faces are set aside first (and the adjacency rebuilt
   // without them, only when there are any).
@@ -53,8 +47,16 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     report.non_orientable_components += winding.component_non_orientable[k];
   }
 
-  // Step 2: outward orientation, then every face reversed at most once.
-  const OutwardOrientation outward = outward_orientation(mesh, winding, boundaries);
+  // Step 2: outward orientation, then every face reversed at most once. The volume pass also
+  // finds the degenerate faces (step 4), sharing its reads of the positions.
+  DegenerateFaces degenerate;
+  const ComponentVolumes volumes = component_signed_volumes(mesh, winding, &degenerate);
+  report.degenerate_faces = degenerate.count();
+  report.degenerate_zero_area = degenerate.zero_area;
+  report.degenerate_repeated_index = degenerate.repeated_index;
+  report.degenerate_too_few_corners = degenerate.too_few_corners;
+  report.degenerate_non_finite = degenerate.non_finite;
+  const OutwardOrientation outward = outward_orientation(mesh, winding, boundaries, volumes);
   report.nested_shells = outward.nested_shells;
   report.oriented_by_majority = outward.majority_components;
   for (std::size_t k = 0; k < winding.num_components; ++k) {

@@ -1,60 +1,101 @@
-// signed_volume.cpp: component volumes relative to their centroids (see the header).
+// signed_volume.cpp: component volumes from a vertex of each component, in one pass over the
+// faces that can also classify degenerate faces (see the header).
 #include "repair/signed_volume.h"
 
 #include <cmath>
 #include <cstdint>
 
+#include "io/bulk_reserve.h"
+
 namespace shadetool {
 
-ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWinding& winding) {
+ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWinding& winding, DegenerateFaces* degenerate) {
   const std::size_t K = winding.num_components, F = mesh.num_faces();
+  constexpr std::uint32_t kNone = ConsistentWinding::kNoComponent;
+  const std::uint32_t* cv = mesh.corner_vertex.data();
+  const std::uint32_t* fs = mesh.face_start.data();
+  const double* P = mesh.positions.data();
+  const bool triangles = mesh.all_triangles();
+  auto position = [P](std::uint32_t v) { return Vec3d{P[3 * v], P[3 * v + 1], P[3 * v + 2]}; };
+
   ComponentVolumes out;
+  out.reference.assign(K, Vec3d{});
   out.centroid.assign(K, Vec3d{});
   out.volume.assign(K, 0.0);
   out.magnitude.assign(K, 0.0);
-
-  // Centroid: reference vertex (first corner of the seed face) plus the mean offset from it.
-  std::vector<Vec3d> reference(K), offset_sum(K);
+  std::vector<Vec3d> offset_sum(K);
   std::vector<double> corners(K, 0.0);
   for (std::size_t k = 0; k < K; ++k) {
     const std::uint32_t seed = winding.component_seed[k];
-    if (mesh.face_size(seed) > 0) reference[k] = mesh.position(mesh.corner_vertex[mesh.face_start[seed]]);
+    if (mesh.face_size(seed) > 0) out.reference[k] = position(cv[fs[seed]]);
   }
-  for (std::size_t f = 0; f < F; ++f) {
-    const std::uint32_t k = winding.face_component[f];
-    if (k == ConsistentWinding::kNoComponent) continue;
-    const Vec3d r = reference[k];
-    Vec3d s{};
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) s += mesh.position(mesh.corner_vertex[c]) - r;
-    offset_sum[k] += s;
-    corners[k] += double(mesh.face_size(f));
+  if (degenerate) {
+    io::reserve_bulk(degenerate->kind, F);
+    degenerate->kind.resize(F);
   }
-  for (std::size_t k = 0; k < K; ++k)
-    out.centroid[k] = corners[k] > 0 ? reference[k] + offset_sum[k] * (1.0 / corners[k]) : reference[k];
 
+  // Sums of the current run of faces of one component, kept in registers (no store-to-load chain
+  // through the per-component arrays); flushed when the component changes.
+  std::uint32_t run = kNone;
+  Vec3d r{}, run_offsets{};
+  double run_volume = 0, run_magnitude = 0, run_corners = 0;
+  auto flush = [&]() {
+    if (run == kNone) return;
+    out.volume[run] += run_volume;
+    out.magnitude[run] += run_magnitude;
+    offset_sum[run] += run_offsets;
+    corners[run] += run_corners;
+    run_volume = run_magnitude = run_corners = 0;
+    run_offsets = Vec3d{};
+  };
   for (std::size_t f = 0; f < F; ++f) {
     const std::uint32_t k = winding.face_component[f];
-    if (k == ConsistentWinding::kNoComponent) continue;
-    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-    if (e - b < 3) continue;
-    const Vec3d c = out.centroid[k];
-    const Vec3d p0 = mesh.position(mesh.corner_vertex[b]) - c;
-    double sum = 0, abs_sum = 0;
-    Vec3d pi = mesh.position(mesh.corner_vertex[b + 1]) - c;
-    for (std::uint32_t i = b + 2; i < e; ++i) {
-      const Vec3d pj = mesh.position(mesh.corner_vertex[i]) - c;
-      const double det = dot(p0, cross(pi, pj));
-      sum += det;
-      abs_sum += std::abs(det);
-      pi = pj;
+    if (k == kNone) {  // no winding, or a duplicate: only classified
+      if (degenerate) degenerate->kind[f] = degenerate_kind(mesh, f);
+      continue;
     }
-    out.volume[k] += winding.face_reverse[f] ? -sum : sum;
-    out.magnitude[k] += abs_sum;
+    if (k != run) {
+      flush();
+      run = k;
+      r = out.reference[k];
+    }
+    const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
+    double det_sum = 0, abs_sum = 0;
+    Vec3d offsets{};
+    if (triangles) {
+      const Vec3d p0 = position(cv[b]), p1 = position(cv[b + 1]), p2 = position(cv[b + 2]);
+      const Vec3d e1 = p1 - p0, e2 = p2 - p0, n = cross(e1, e2);
+      if (degenerate && !triangle_kind_by_squares(squared_length(e1), squared_length(e2), squared_length(n), degenerate->kind[f]))
+        degenerate->kind[f] = degenerate_kind(mesh, f);
+      const Vec3d q0 = p0 - r;
+      det_sum = dot(q0, n);  // det(p0 - r, p1 - r, p2 - r)
+      abs_sum = std::abs(det_sum);
+      offsets = q0 + (p1 - r) + (p2 - r);
+    } else {
+      if (degenerate) degenerate->kind[f] = degenerate_kind(mesh, f);
+      if (e == b) continue;  // an empty face: no corners, no volume
+      const Vec3d p0 = position(cv[b]), q0 = p0 - r;
+      offsets = q0;
+      if (e - b >= 2) offsets += position(cv[b + 1]) - r;
+      for (std::uint32_t i = b + 2; i < e; ++i) {  // fan triangles (p0, p_i-1, p_i)
+        offsets += position(cv[i]) - r;
+        const double det = dot(q0, cross(position(cv[i - 1]) - p0, position(cv[i]) - p0));
+        det_sum += det;
+        abs_sum += std::abs(det);
+      }
+    }
+    run_volume += winding.face_reverse[f] ? -det_sum : det_sum;
+    run_magnitude += abs_sum;
+    run_offsets += offsets;
+    run_corners += double(e - b);
   }
+  flush();
   for (std::size_t k = 0; k < K; ++k) {
     out.volume[k] /= 6.0;
     out.magnitude[k] /= 6.0;
+    out.centroid[k] = corners[k] > 0 ? out.reference[k] + offset_sum[k] * (1.0 / corners[k]) : out.reference[k];
   }
+  if (degenerate) count_degenerate_kinds(*degenerate);
   return out;
 }
 

@@ -1,6 +1,8 @@
 // Tests of component_signed_volumes: exact values on a unit cube, far from the origin too.
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include "repair/signed_volume.h"
 #include "repair_test_meshes.h"
 
@@ -56,4 +58,68 @@ TEST_CASE("a two-sided sheet (two faces on the same three vertices) encloses not
   const ComponentVolumes v = volumes(m);
   CHECK(v.volume[0] == 0.0);
   CHECK(!volume_has_sign(v.volume[0], v.magnitude[0]));
+}
+
+TEST_CASE("the volume pass classifies degenerate faces exactly as degenerate_faces does", "[repair][volume][degenerate]") {
+  // The mesh of the degenerate_faces test, triangles only (the pass's fast path), then with
+  // polygons and a face of two corners (the general path).
+  Mesh m;
+  m.add_vertex({0, 0, 0});                                         // 0
+  m.add_vertex({1, 0, 0});                                         // 1
+  m.add_vertex({0, 1, 0});                                         // 2
+  m.add_vertex({2, 0, 0});                                         // 3: collinear with 0 and 1
+  m.add_vertex({1e-20, 0, 0});                                     // 4
+  m.add_vertex({0, 1e-20, 0});                                     // 5
+  m.add_vertex({std::numeric_limits<double>::quiet_NaN(), 0, 0});  // 6
+  m.add_vertex({1, 1e-15, 0});                                     // 7: numerically on the line
+  m.add_vertex({1, 1e-9, 0});                                      // 8: clearly off it
+  m.add_face({0, 1, 2});  // fine
+  m.add_face({0, 1, 1});  // repeated index
+  m.add_face({0, 1, 3});  // collinear: zero area
+  m.add_face({0, 4, 5});  // 1e-20 wide, right-angled: fine
+  m.add_face({0, 1, 6});  // NaN corner
+  m.add_face({0, 3, 7});  // numerically collinear
+  m.add_face({0, 3, 8});  // thin but real
+  using K = DegenerateKind;
+  EdgeAdjacencyOptions left_out;
+  left_out.skip_unwound_faces = true;
+  auto classify = [&](const Mesh& mesh) {
+    DegenerateFaces d;
+    component_signed_volumes(mesh, consistent_winding(mesh, edge_adjacency(mesh, left_out), left_out), &d);
+    return d;
+  };
+  DegenerateFaces d = classify(m);
+  CHECK(d.kind == std::vector<K>{K::None, K::RepeatedIndex, K::ZeroArea, K::None, K::NonFinite, K::ZeroArea, K::None});
+  CHECK(d.zero_area == 2);
+  CHECK(d.repeated_index == 1);
+  CHECK(d.non_finite == 1);
+  m.add_face({0, 1});        // too few corners
+  m.add_face({0, 1, 8, 2});  // a quad: fine
+  m.add_face({0, 1, 3, 1});  // quad with a repeated index
+  d = classify(m);
+  CHECK(d.kind == std::vector<K>{K::None, K::RepeatedIndex, K::ZeroArea, K::None, K::NonFinite, K::ZeroArea, K::None,
+                                 K::TooFewCorners, K::None, K::RepeatedIndex});
+  CHECK(d.count() == 6);
+  CHECK(d.too_few_corners == 1);
+}
+
+TEST_CASE("volumes are spanned from the seed face's first vertex; the centroid is the corners' mean", "[repair][volume]") {
+  // A tetrahedron (0,0,0) (1,0,0) (0,1,0) (0,0,1), wound outward: volume 1/6 from any apex.
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_vertex({0, 0, 1});
+  m.add_face({1, 2, 3});  // the seed: r = vertex 1
+  m.add_face({0, 2, 1});
+  m.add_face({0, 1, 3});
+  m.add_face({0, 3, 2});
+  const ComponentVolumes v = volumes(m);
+  CHECK(v.reference[0] == Vec3d{1, 0, 0});
+  CHECK(v.volume[0] == Approx(1.0 / 6.0).epsilon(1e-15));
+  // From vertex 1 only the face without it spans a tetrahedron, the whole one: |det| = 1.
+  CHECK(v.magnitude[0] == Approx(1.0 / 6.0).epsilon(1e-15));
+  // 12 corners: vertex 0 three times, 1, 2, 3 three times each: mean (3, 3, 3) / 12.
+  CHECK(v.centroid[0].x == 0.25);
+  CHECK(v.centroid[0].z == 0.25);
 }
