@@ -1,6 +1,6 @@
 // bench_repair: repair_mesh against reading the same mesh from binary PLY.
 //
-// Usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR]
+// Usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N]
 // Mesh: torus with NU x NV quads split in two (default 1000 x 500 = 1,000,000 triangles,
 // 500,000 vertices), 30% of its faces flipped at random (seed 1), written as binary little-endian
 // PLY with float coordinates (what scanners and exporters write). Every time is the median of R
@@ -17,11 +17,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <malloc.h>
 #include <filesystem>
 #include <functional>
+#include <malloc.h>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include "io/mesh_io.h"
 #include "repair/component_boundaries.h"
@@ -71,7 +75,7 @@ Timing median_ms(int reps, const std::function<void()>& setup, const std::functi
 }  // namespace
 
 int main(int argc, char** argv) {
-  int nu = 1000, nv = 500, reps = 9;
+  int nu = 1000, nv = 500, reps = 9, threads = 0;
   std::string tmp = std::filesystem::temp_directory_path().string();
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -79,7 +83,8 @@ int main(int argc, char** argv) {
     else if (a == "--nv") nv = std::atoi(argv[i + 1]);
     else if (a == "--reps") reps = std::atoi(argv[i + 1]);
     else if (a == "--tmp") tmp = argv[i + 1];
-    else { std::fprintf(stderr, "usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR]\n"); return 2; }
+    else if (a == "--threads") threads = std::atoi(argv[i + 1]);
+    else { std::fprintf(stderr, "usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N]\n"); return 2; }
   }
 
   // A CLI repairs one file per process: every large buffer, the reader's and ours, is fresh
@@ -87,6 +92,10 @@ int main(int argc, char** argv) {
   // mmap threshold grows after the first free), so fix it at 1 MiB, as bench/io does: every large
   // block is a fresh mapping in every repetition.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  // --threads N caps TBB's threads (reading included); default: all cores.
+  std::unique_ptr<tbb::global_control> cap;
+  if (threads > 0) cap = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  std::printf("threads: %zu\n", tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
 
   Mesh truth = testing::torus(nu, nv).mesh;
   truth.precision = ValuePrecision::Float;

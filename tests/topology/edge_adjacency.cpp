@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include <tbb/task_arena.h>
+
 #include "repair/repair_test_meshes.h"
 #include "topology/edge_adjacency.h"
 
@@ -162,4 +164,18 @@ TEST_CASE("a hub vertex of high degree (a fan of 1000 triangles)", "[topology][a
   CHECK(adj.boundary_edges == std::size_t(n));  // the rim
   // Spoke (0, 1 + i): face i's corner 3i (0 -> 1+i) and face i-1's corner 3(i-1)+2 (1+i -> 0).
   for (int i = 0; i < n; ++i) CHECK(adj.corner_mate[3 * i] == std::uint32_t(3 * ((i + n - 1) % n) + 2) << 1);
+}
+
+TEST_CASE("same output for 1 and 2 threads (two chunks above 32768 faces)", "[topology][adjacency]") {
+  Mesh m = testing::torus(300, 150).mesh;  // 90000 faces
+  flip_random_faces(m, 0.3, 5);
+  m.face_start.resize(m.face_start.size() - 600);  // one ring of quads off: two boundary loops of 300
+  m.corner_vertex.resize(m.face_start.back());
+  const EdgeAdjacency serial = tbb::task_arena(1).execute([&] { return edge_adjacency(m); });
+  const EdgeAdjacency two = tbb::task_arena(2).execute([&] { return edge_adjacency(m); });
+  CHECK(serial.boundary_edges == 600);
+  CHECK(serial.corner_mate == two.corner_mate);
+  CHECK(serial.odd_edge_start == two.odd_edge_start);
+  CHECK(serial.odd_edge_corner == two.odd_edge_corner);
+  CHECK(serial.num_edges == two.num_edges);
 }
