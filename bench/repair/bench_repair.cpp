@@ -1,6 +1,7 @@
 // bench_repair: repair_mesh against reading the same mesh from binary PLY.
 //
-// Usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N]
+// Usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N] [--stages 0|1]
+// (--stages 0: read and whole repair only, e.g. for a profiler)
 // Mesh: torus with NU x NV quads split in two (default 1000 x 500 = 1,000,000 triangles,
 // 500,000 vertices), 30% of its faces flipped at random (seed 1), written as binary little-endian
 // PLY with float coordinates (what scanners and exporters write). Every time is the median of R
@@ -31,6 +32,7 @@
 #include "repair/component_boundaries.h"
 #include "repair/consistent_winding.h"
 #include "repair/degenerate_faces.h"
+#include "repair/duplicate_faces.h"
 #include "normals/vertex_normals.h"
 #include "repair/fix_normals.h"
 #include "repair/outward_orientation.h"
@@ -75,7 +77,7 @@ Timing median_ms(int reps, const std::function<void()>& setup, const std::functi
 }  // namespace
 
 int main(int argc, char** argv) {
-  int nu = 1000, nv = 500, reps = 9, threads = 0;
+  int nu = 1000, nv = 500, reps = 9, threads = 0, stages = 1;
   std::string tmp = std::filesystem::temp_directory_path().string();
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -84,7 +86,8 @@ int main(int argc, char** argv) {
     else if (a == "--reps") reps = std::atoi(argv[i + 1]);
     else if (a == "--tmp") tmp = argv[i + 1];
     else if (a == "--threads") threads = std::atoi(argv[i + 1]);
-    else { std::fprintf(stderr, "usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N]\n"); return 2; }
+    else if (a == "--stages") stages = std::atoi(argv[i + 1]);
+    else { std::fprintf(stderr, "usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N] [--stages 0|1]\n"); return 2; }
   }
 
   // A CLI repairs one file per process: every large buffer, the reader's and ours, is fresh
@@ -117,6 +120,22 @@ int main(int argc, char** argv) {
   const RepairReport report = repair_mesh(check);
   const bool restored = check.corner_vertex == truth.corner_vertex;
 
+  std::printf("\n| step | wall ms (median) | x read | CPU ms (median) | x read |\n|---|---:|---:|---:|---:|\n");
+  auto row = [&](const char* name, Timing t) {
+    std::printf("| %s | %.1f | %.2f | %.1f | %.2f |\n", name, t.wall, t.wall / read.wall, t.cpu, t.cpu / read.cpu);
+  };
+  auto summary = [&]() {
+    std::printf("\nrepair / read, wall = %.2f (target < 3): %s;  CPU = %.2f\n", repair.wall / read.wall,
+                repair.wall / read.wall < 3 ? "met" : "NOT met", repair.cpu / read.cpu);
+    std::printf("faces flipped %zu of %zu; original winding restored exactly: %s\n", report.faces_flipped,
+                check.num_faces(), restored ? "yes" : "NO");
+    std::filesystem::remove(path);
+    return restored ? 0 : 1;
+  };
+  row("read binary PLY (reference)", read);
+  row("**repair_mesh, whole**", repair);
+  if (!stages) return summary();
+
   // Stages alone, on the mesh as read.
   EdgeAdjacencyOptions left_out;
   left_out.skip_unwound_faces = true;
@@ -138,13 +157,33 @@ int main(int argc, char** argv) {
   const Timing t_normals = median_ms(reps, [&] { work = as_read; }, [&] { fix_normals(work); });
   const Timing t_vertex_normals = median_ms(reps, [] {}, [&] { vertex_normals(as_read); });
 
-  std::printf("\n| step | wall ms (median) | x read | CPU ms (median) | x read |\n|---|---:|---:|---:|---:|\n");
-  auto row = [&](const char* name, Timing t) {
-    std::printf("| %s | %.1f | %.2f | %.1f | %.2f |\n", name, t.wall, t.wall / read.wall, t.cpu, t.cpu / read.cpu);
-  };
-  row("read binary PLY (reference)", read);
-  row("**repair_mesh, whole**", repair);
+  const Timing t_duplicates = median_ms(reps, [] {}, [&] { duplicate_faces(as_read, adj); });
+
+  // Floors: the least any orientation pass can cost here, on the same mesh and memory regime.
+  const std::size_t C = as_read.num_corners(), F = as_read.num_faces();
+  volatile std::uint64_t sink = 0;
+  const Timing f_stream = median_ms(reps, [] {}, [&] {
+    std::uint64_t sum = 0;
+    for (std::size_t c = 0; c < C; ++c) sum += as_read.corner_vertex[c];
+    sink = sink + sum;
+  });
+  const Timing f_gather = median_ms(reps, [] {}, [&] {
+    double sum = 0;
+    for (std::size_t c = 0; c < C; ++c) sum += as_read.positions[3 * std::size_t(as_read.corner_vertex[c])];
+    sink = sink + std::uint64_t(sum);
+  });
+  const Timing f_fill = median_ms(reps, [] {}, [&] {
+    std::vector<std::uint32_t> fresh(C);
+    for (std::size_t c = 0; c < C; ++c) fresh[c] = std::uint32_t(c);
+    sink = sink + fresh[C / 2];
+  });
+  const Timing f_faces = median_ms(reps, [] {}, [&] {
+    std::vector<std::uint8_t> fresh(F, 1);
+    sink = sink + fresh[F / 2];
+  });
+
   row("  edge_adjacency", t_adjacency);
+  row("  duplicate_faces", t_duplicates);
   row("  consistent_winding (union-find)", t_winding);
   row("  component_boundaries", t_bounds);
   row("  signed volumes + degenerate faces (one pass)", t_volume);
@@ -152,11 +191,9 @@ int main(int argc, char** argv) {
   row("  reverse_faces", t_reverse);
   row("  fix_normals (computes angle-weighted normals)", t_normals);
   row("    of which vertex_normals (lib/normals)", t_vertex_normals);
-  const double ratio = repair.wall / read.wall;
-  std::printf("\nrepair / read, wall = %.2f (target < 3): %s;  CPU = %.2f\n", ratio, ratio < 3 ? "met" : "NOT met",
-              repair.cpu / read.cpu);
-  std::printf("faces flipped %zu of %zu; original winding restored exactly: %s\n", report.faces_flipped,
-              check.num_faces(), restored ? "yes" : "NO");
-  std::filesystem::remove(path);
-  return restored ? 0 : 1;
+  row("floor: stream the 3M corner indices (12 MB)", f_stream);
+  row("floor: gather one coordinate per corner (3M position reads)", f_gather);
+  row("floor: fill a fresh 3M x uint32 array (one corner-sized output)", f_fill);
+  row("floor: fill a fresh 1M x uint8 array (one face-sized flag array)", f_faces);
+  return summary();
 }

@@ -48,9 +48,9 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   ConsistentWinding w;
   w.non_manifold_edges = adj.non_manifold_edges;
   io::reserve_bulk(w.face_component, F);  // huge pages for large fresh arrays (io/bulk_reserve.h)
-  w.face_component.assign(F, kNone);
+  w.face_component.resize(F);
   io::reserve_bulk(w.face_reverse, F);
-  w.face_reverse.assign(F, 0);
+  w.face_reverse.resize(F);
   std::uint32_t* component = w.face_component.data();
   std::uint8_t* reverse = w.face_reverse.data();
 
@@ -138,12 +138,11 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   // Union-find with parity over the faces: node[f] = (parent << 1) | parity, the parity of f's
   // reversal relative to its parent's. Union by lower index, so each set's root is its lowest
   // face: the seed. Path halving keeps the parities: a node moved to its grandparent takes the
-  // XOR of the two parities on the way.
-  std::vector<std::uint32_t> node;
-  io::reserve_bulk(node, F);
-  node.resize(F);
+  // XOR of the two parities on the way. Every link points to a lower face. The nodes live in the
+  // storage of face_component, which the last pass overwrites in face order.
+  std::uint32_t* node = component;
   for (std::size_t f = 0; f < F; ++f) node[f] = std::uint32_t(f) << 1;
-  auto find = [&node](std::uint32_t x, std::uint32_t& parity) {
+  auto find = [node](std::uint32_t x, std::uint32_t& parity) {
     parity = 0;
     for (;;) {
       const std::uint32_t nx = node[x], px = nx >> 1;
@@ -182,28 +181,30 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
       }
     }
   }
-  // Components numbered by their lowest face; reversal relative to it. Faces left out are roots
-  // of nothing (they have no manifold edges) and get no component.
+  // Components numbered by their lowest face; reversal relative to it. In face order a face's
+  // parent is lower, so already final: one step, no search. Faces left out are roots of nothing
+  // (they have no manifold edges) and get no component.
   for (std::size_t f = 0; f < F; ++f) {
-    std::uint32_t parity;
-    const std::uint32_t r = find(std::uint32_t(f), parity);
-    if (r == f) {
+    const std::uint32_t n = node[f], parent = n >> 1;
+    if (parent == f) {
       const bool out = (!left_out.skip.empty() && left_out.skip[f]) || (left_out.skip_unwound_faces && face_is_unwound(mesh, f));
-      if (out) continue;  // component stays kNone, reverse 0
+      reverse[f] = 0;
+      if (out) {
+        component[f] = kNone;
+        continue;
+      }
       component[f] = std::uint32_t(w.num_components++);
       w.component_seed.push_back(std::uint32_t(f));
       w.component_faces.push_back(0);
       w.component_reverse_count.push_back(0);
       w.component_non_orientable.push_back(0);
     } else {
-      component[f] = component[r];
+      component[f] = component[parent];
+      reverse[f] = std::uint8_t((n & 1u) ^ reverse[parent]);
     }
-    reverse[f] = std::uint8_t(parity);
     ++w.component_faces[component[f]];
-    w.component_reverse_count[component[f]] += parity;
+    w.component_reverse_count[component[f]] += reverse[f];
   }
-  node.clear();
-  node.shrink_to_fit();
 
   // Non-orientable components: labelled again by the canonical search, which does not depend on
   // the input winding and counts the inconsistent edges.

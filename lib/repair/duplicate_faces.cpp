@@ -8,7 +8,6 @@ namespace shadetool {
 DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj) {
   const std::size_t F = mesh.num_faces();
   DuplicateFaces out;
-  out.original.assign(F, DuplicateFaces::kNone);
   std::vector<std::uint32_t> candidates;
   for (std::size_t e = 0; e < adj.num_odd_edges(); ++e)
     if (adj.odd_edge_valence(e) >= 3)
@@ -34,6 +33,7 @@ DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj) {
     if (g != f && (triangles ? hi / 3 == g : hi < mesh.face_start[g + 1])) candidates.push_back(std::uint32_t(f));
   }
   if (candidates.empty()) return out;
+  out.original.assign(F, DuplicateFaces::kNone);
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
 

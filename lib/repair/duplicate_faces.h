@@ -11,6 +11,7 @@
 //          adj   edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
 // Output:  DuplicateFaces with
 //   original  #F  for a duplicate, the lowest-numbered face with the same vertex set; else kNone
+//                 (empty when no face was a candidate: then count is 0)
 //   count         number of duplicates (faces with original != kNone)
 // Candidates: faces on edges with 3 or more half-edges (every duplicate that shares its edges
 // with anything else), and faces all of whose edges they share with one and the same face (a

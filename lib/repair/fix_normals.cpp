@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -58,10 +59,10 @@ NormalsFix fix_normals(Mesh& mesh, Weighting weighting) {
   // Face normals ((0,0,0) for a degenerate face) only when stored normals are to be checked.
   const bool check_stored = mesh.has_vertex_normals() || mesh.has_face_normals();
   const std::vector<double> face_n = check_stored ? face_normals(mesh, Precision::Double) : std::vector<double>{};
-  const VertexNormals recomputed = vertex_normals(mesh, weighting, Precision::Double);
+  VertexNormals recomputed = vertex_normals(mesh, weighting, Precision::Double);
 
   if (!mesh.has_vertex_normals() && !mesh.has_corner_normals()) {
-    mesh.vertex_normals = recomputed.normals;
+    mesh.vertex_normals = std::move(recomputed.normals);
     fix.missing = V;
     fix.vertex = V;
   } else if (mesh.has_vertex_normals()) {

@@ -78,8 +78,9 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     if (k != ConsistentWinding::kNoComponent) reverse[f] = winding.face_reverse[f] ^ outward.component_invert[k];
   }
   // A duplicate is reversed with its original: same winding stays same, opposite stays opposite.
-  for (std::size_t f = 0; f < F; ++f)
-    if (duplicates.original[f] != DuplicateFaces::kNone) reverse[f] = reverse[duplicates.original[f]];
+  if (duplicates.count > 0)
+    for (std::size_t f = 0; f < F; ++f)
+      if (duplicates.original[f] != DuplicateFaces::kNone) reverse[f] = reverse[duplicates.original[f]];
   report.faces_flipped = reverse_faces(mesh, reverse);
 
   // Step 4: degenerate faces removed on request, before the normals are computed, so that a
