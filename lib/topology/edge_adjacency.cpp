@@ -74,87 +74,62 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
     return !options.skip_unwound_faces || !unwound(cv + b, e - b);
   };
 
-  // Chunks of faces for passes 1 and 2, each with its own counts (no atomics); blocks of vertices
-  // for pass 3. Two chunks when a second thread is there and the mesh is large enough to pay for
-  // the second count array; the output is the same for any number of chunks and threads.
-  const std::size_t threads = std::min<std::size_t>(
-      std::size_t(tbb::this_task_arena::max_concurrency()),
-      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  const std::size_t chunks = F >= kParallelFaces && threads >= 2 ? 2 : 1;
-  auto chunk_begin = [&](std::size_t k) { return F * k / chunks; };
-  auto for_each_chunk = [&](auto&& body) {
-    if (chunks == 1) return body(std::size_t(0));
-    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t k) { body(k); });
-  };
-
-  // Pass 1: range check; half-edges of chunk k per lower vertex, counted at count[k][lo].
-  std::vector<std::vector<std::uint32_t>> count(chunks);
-  std::vector<std::uint8_t> out_of_range(chunks, 0);
-  for_each_chunk([&](std::size_t k) {
-    io::reserve_bulk(count[k], V + 1);
-    count[k].assign(V + 1, 0);
-    std::uint32_t* n = count[k].data();
-    for (std::size_t f = chunk_begin(k); f < chunk_begin(k + 1); ++f) {
-      const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
-      std::uint32_t highest = 0;
-      for (std::uint32_t c = b; c < e; ++c) highest = std::max(highest, cv[c]);
-      if (highest >= V && e > b) {
-        out_of_range[k] = 1;
-        return;
-      }
-      if (!takes_part(f, b, e)) continue;
-      for (std::uint32_t c = b; c < e; ++c) {
-        const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
-        if (t != h) ++n[std::min(t, h)];
-      }
+  // Pass 1: range check; half-edges per lower vertex, counted at pos[lo + 1].
+  std::vector<std::uint32_t> pos;
+  io::reserve_bulk(pos, V + 1);
+  pos.assign(V + 1, 0);
+  std::uint32_t* count = pos.data() + 1;
+  for (std::size_t f = 0; f < F; ++f) {
+    const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
+    std::uint32_t highest = 0;
+    for (std::uint32_t c = b; c < e; ++c) highest = std::max(highest, cv[c]);
+    if (highest >= V && e > b) fail("edge_adjacency", 0, "a face refers to a vertex index beyond the vertex count");
+    if (!takes_part(f, b, e)) continue;
+    for (std::uint32_t c = b; c < e; ++c) {
+      const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
+      if (t != h) ++count[std::min(t, h)];
     }
-  });
-  for (std::uint8_t bad : out_of_range)
-    if (bad) fail("edge_adjacency", 0, "a face refers to a vertex index beyond the vertex count");
+  }
+  // Prefix sum: pos[v] = start of bucket v; pos[V] = number of half-edges H.
+  for (std::size_t v = 0; v < V; ++v) pos[v + 1] += pos[v];
+  const std::size_t H = pos[V];
 
-  // Prefix sum: count[k][v] becomes chunk k's cursor into bucket v, after the half-edges of
-  // buckets < v and of chunks < k in bucket v (so a bucket holds its half-edges in corner order).
-  std::size_t H = 0;
-  for (std::size_t v = 0; v < V; ++v)
-    for (std::size_t k = 0; k < chunks; ++k) {
-      const std::uint32_t n = count[k][v];
-      count[k][v] = std::uint32_t(H);
-      H += n;
-    }
-
-  // Pass 2: scatter (higher vertex << 32 | corner << 1 | tail is the lower vertex); corners that
-  // are no half-edge get kUnpaired now. The last chunk's cursor ends at the end of each bucket.
+  // Pass 2: scatter (higher vertex << 32 | corner << 1 | tail is the lower vertex) in corner order;
+  // corners that are no half-edge get kUnpaired now. pos[v] becomes the end of bucket v.
   std::vector<std::uint64_t> slot;
   io::reserve_bulk(slot, H);
   slot.resize(H);
-  for_each_chunk([&](std::size_t k) {
-    std::uint32_t* cursor = count[k].data();
-    for (std::size_t f = chunk_begin(k); f < chunk_begin(k + 1); ++f) {
-      const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
-      if (!takes_part(f, b, e)) {
-        for (std::uint32_t c = b; c < e; ++c) mate[c] = kUnpaired;
+  for (std::size_t f = 0; f < F; ++f) {
+    const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
+    if (!takes_part(f, b, e)) {
+      for (std::uint32_t c = b; c < e; ++c) mate[c] = kUnpaired;
+      continue;
+    }
+    for (std::uint32_t c = b; c < e; ++c) {
+      const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
+      if (t == h) {
+        mate[c] = kUnpaired;
         continue;
       }
-      for (std::uint32_t c = b; c < e; ++c) {
-        const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
-        if (t == h) {
-          mate[c] = kUnpaired;
-          continue;
-        }
-        const std::uint32_t lo = std::min(t, h), hi = std::max(t, h);
-        slot[cursor[lo]++] = (std::uint64_t(hi) << 32) | (std::uint64_t(c) << 1) | std::uint64_t(t == lo);
-      }
+      const std::uint32_t lo = std::min(t, h), hi = std::max(t, h);
+      slot[pos[lo]++] = (std::uint64_t(hi) << 32) | (std::uint64_t(c) << 1) | std::uint64_t(t == lo);
     }
-  });
-  const std::uint32_t* end = count[chunks - 1].data();
+  }
+  const std::uint32_t* end = pos.data();
 
   // Pass 3: sort each bucket by (higher vertex, corner); pair the edges of valence 2, list the
-  // rest. Blocks of vertices in parallel, each with its own list; joined in block order.
+  // rest. Blocks of vertices on 2 threads when there are 2 (each block with its own list, joined in
+  // block order, so the output is the same for any number of threads). Passes 1 and 2 stay
+  // serial: split by faces they need a count array per chunk, which cost more than the second
+  // thread saved whenever the other core was busy (bench/repair/results.md).
   struct Odd {
     std::vector<std::uint32_t> start, corner;
     std::size_t pairs = 0, boundary = 0, non_manifold = 0;
   };
-  const std::size_t blocks = chunks == 1 ? 1 : std::max<std::size_t>(1, std::min<std::size_t>(16, V / 4096));
+  const std::size_t threads = std::min<std::size_t>(
+      std::size_t(tbb::this_task_arena::max_concurrency()),
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  const std::size_t blocks = F >= kParallelFaces && threads >= 2 ? std::max<std::size_t>(1, std::min<std::size_t>(16, V / 4096)) : 1;
   std::vector<Odd> odd(blocks);
   auto match = [&](std::size_t blk) {
     Odd& o = odd[blk];

@@ -166,7 +166,7 @@ TEST_CASE("a hub vertex of high degree (a fan of 1000 triangles)", "[topology][a
   for (int i = 0; i < n; ++i) CHECK(adj.corner_mate[3 * i] == std::uint32_t(3 * ((i + n - 1) % n) + 2) << 1);
 }
 
-TEST_CASE("same output for 1 and 2 threads (two chunks above 32768 faces)", "[topology][adjacency]") {
+TEST_CASE("same output for 1 and 2 threads (vertex blocks above 32768 faces)", "[topology][adjacency]") {
   Mesh m = testing::torus(300, 150).mesh;  // 90000 faces
   flip_random_faces(m, 0.3, 5);
   m.face_start.resize(m.face_start.size() - 600);  // one ring of quads off: two boundary loops of 300
