@@ -48,10 +48,13 @@ ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWind
     run_volume = run_magnitude = run_corners = 0;
     run_offsets = Vec3d{};
   };
+  const std::uint32_t* component = winding.face_component.data();
+  const std::uint8_t* reverse = winding.face_reverse.data();
+  DegenerateKind* kind = degenerate ? degenerate->kind.data() : nullptr;
   for (std::size_t f = 0; f < F; ++f) {
-    const std::uint32_t k = winding.face_component[f];
+    const std::uint32_t k = component[f];
     if (k == kNone) {  // no winding, or a duplicate: only classified
-      if (degenerate) degenerate->kind[f] = degenerate_kind(mesh, f);
+      if (kind) kind[f] = degenerate_kind(mesh, f);
       continue;
     }
     if (k != run) {
@@ -65,14 +68,14 @@ ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWind
     if (triangles) {
       const Vec3d p0 = position(cv[b]), p1 = position(cv[b + 1]), p2 = position(cv[b + 2]);
       const Vec3d e1 = p1 - p0, e2 = p2 - p0, n = cross(e1, e2);
-      if (degenerate && !triangle_kind_by_squares(squared_length(e1), squared_length(e2), squared_length(n), degenerate->kind[f]))
-        degenerate->kind[f] = degenerate_kind(mesh, f);
+      if (kind && !triangle_kind_by_squares(squared_length(e1), squared_length(e2), squared_length(n), kind[f]))
+        kind[f] = degenerate_kind(mesh, f);
       const Vec3d q0 = p0 - r;
       det_sum = dot(q0, n);  // det(p0 - r, p1 - r, p2 - r)
       abs_sum = std::abs(det_sum);
       offsets = q0 + (p1 - r) + (p2 - r);
     } else {
-      if (degenerate) degenerate->kind[f] = degenerate_kind(mesh, f);
+      if (kind) kind[f] = degenerate_kind(mesh, f);
       if (e == b) continue;  // an empty face: no corners, no volume
       const Vec3d p0 = position(cv[b]), q0 = p0 - r;
       offsets = q0;
@@ -84,7 +87,7 @@ ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWind
         abs_sum += std::abs(det);
       }
     }
-    run_volume += winding.face_reverse[f] ? -det_sum : det_sum;
+    run_volume += (1.0 - 2.0 * double(reverse[f])) * det_sum;  // a sign, without a branch on random flips
     run_magnitude += abs_sum;
     run_offsets += offsets;
     run_corners += double(e - b);
