@@ -12,6 +12,21 @@ std::size_t reverse_faces(Mesh& mesh, const std::vector<std::uint8_t>& reverse) 
   if (reverse.size() != F) fail("reverse_faces", 0, "flag array size differs from the face count");
   const bool normals = mesh.has_corner_normals(), texcoords = mesh.has_texcoords();
   std::size_t count = 0;
+  if (mesh.all_triangles() && !normals && !texcoords) {
+    // Triangles with nothing else per corner: swap corners 1 and 2 by selection, not by a branch
+    // (the flags of a damaged mesh are as good as random; a mispredicted branch per face cost
+    // more than writing every face back).
+    std::uint32_t* cv = mesh.corner_vertex.data();
+    const std::uint8_t* flag = reverse.data();
+    for (std::size_t f = 0; f < F; ++f) {
+      const std::uint32_t r = flag[f] != 0;
+      const std::uint32_t a = cv[3 * f + 1], b = cv[3 * f + 2];
+      cv[3 * f + 1] = r ? b : a;
+      cv[3 * f + 2] = r ? a : b;
+      count += r;
+    }
+    return count;
+  }
   for (std::size_t f = 0; f < F; ++f) {
     if (!reverse[f]) continue;
     ++count;
