@@ -71,7 +71,9 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   // Whether face f contributes half-edges.
   auto takes_part = [&](std::size_t f, std::uint32_t b, std::uint32_t e) {
     if (!skip.empty() && skip[f]) return false;
-    return !options.skip_unwound_faces || !unwound(cv + b, e - b);
+    if (!options.skip_unwound_faces) return true;
+    if (e - b == 3) return cv[b] != cv[b + 1] && cv[b + 1] != cv[b + 2] && cv[b] != cv[b + 2];  // inline for triangles
+    return !unwound(cv + b, e - b);
   };
 
   // Pass 1: range check; half-edges per lower vertex, counted at pos[lo + 1].
