@@ -59,4 +59,11 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
   return out;
 }
 
+const Mesh& with_corner_normals_split(const Mesh& input, Mesh& storage, std::size_t& added) {
+  added = 0;
+  if (!input.has_corner_normals()) return input;
+  storage = split_corner_normals(input, added);
+  return storage;
+}
+
 }  // namespace shadetool::io
