@@ -230,12 +230,8 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
 }
 
 void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
-  std::size_t added = 0;
   Mesh split;
-  const bool must_split = input.has_corner_normals();
-  if (must_split) split = split_corner_normals(input, added);
-  const Mesh& mesh = must_split ? split : input;
-  info.split_vertices = added;
+  const Mesh& mesh = with_corner_normals_split(input, split, info.split_vertices);
 
   const bool normals = mesh.has_vertex_normals();
   const bool vcolors = mesh.has_vertex_colors();

@@ -652,12 +652,8 @@ void put(std::string& out, T v) {
 }  // namespace
 
 void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info) {
-  std::size_t added = 0;
   Mesh split;
-  const bool must_split = input.has_corner_normals();
-  if (must_split) split = split_corner_normals(input, added);
-  const Mesh& mesh = must_split ? split : input;
-  info.split_vertices = added;
+  const Mesh& mesh = with_corner_normals_split(input, split, info.split_vertices);
 
   const std::size_t nv = mesh.num_vertices(), nf = mesh.num_faces();
   const bool dbl = mesh.precision == ValuePrecision::Double;

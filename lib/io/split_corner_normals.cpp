@@ -24,18 +24,19 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
   if (mesh.has_vertex_normals()) out.vertex_normals = mesh.vertex_normals;
   const int ch = mesh.color_channels;
   const bool colors = mesh.has_vertex_colors();
-  std::vector<std::uint32_t> seen_normal, seen_vertex;  // distinct normals of the current vertex
+  // For each normal index, the vertex that last used it (owner) and the output vertex made for
+  // that use (copy_of): a lookup is O(1), so a vertex shared by k corners with k distinct normals
+  // costs O(k), not O(k^2) (a hostile OBJ can give one vertex millions of distinct normals).
+  const std::size_t nn = mesh.corner_normals.size() / 3;
+  std::vector<std::uint32_t> owner(nn, UINT32_MAX), copy_of(nn);
   for (std::size_t v = 0; v < nv; ++v) {
-    seen_normal.clear();
-    seen_vertex.clear();
+    bool first = true;  // no normal of v seen yet: its first normal stays on v itself
     for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
       const std::uint32_t c = bucket[k];
       const std::uint32_t n = mesh.corner_normal_index[c];
-      std::uint32_t target = UINT32_MAX;
-      for (std::size_t i = 0; i < seen_normal.size(); ++i)
-        if (seen_normal[i] == n) target = seen_vertex[i];
+      std::uint32_t target = owner[n] == v ? copy_of[n] : UINT32_MAX;
       if (target == UINT32_MAX) {
-        if (seen_normal.empty()) {
+        if (first) {
           target = static_cast<std::uint32_t>(v);
         } else {
           target = static_cast<std::uint32_t>(out.num_vertices());
@@ -46,8 +47,9 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
           ++added;
         }
         for (int j = 0; j < 3; ++j) out.vertex_normals[3 * std::size_t(target) + std::size_t(j)] = mesh.corner_normals[3 * std::size_t(n) + std::size_t(j)];
-        seen_normal.push_back(n);
-        seen_vertex.push_back(target);
+        owner[n] = static_cast<std::uint32_t>(v);
+        copy_of[n] = target;
+        first = false;
       }
       out.corner_vertex[c] = target;
     }
@@ -55,6 +57,13 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
   out.corner_normals.clear();
   out.corner_normal_index.clear();
   return out;
+}
+
+const Mesh& with_corner_normals_split(const Mesh& input, Mesh& storage, std::size_t& added) {
+  added = 0;
+  if (!input.has_corner_normals()) return input;
+  storage = split_corner_normals(input, added);
+  return storage;
 }
 
 }  // namespace shadetool::io

@@ -8,7 +8,8 @@
 // further pairs become new vertices appended after the originals, copying position and colour.
 // Unreferenced vertices keep their vertex normal if the mesh had them, else (0,0,0).
 // Corner normals and their index are removed from the result; faces keep their order and size.
-// Flat arrays, two passes (count corners per vertex, then bucket): O(C * corners per vertex).
+// Flat arrays: corners bucketed by vertex (count, then fill), then one pass over the buckets with
+// an O(1) lookup per corner (the last vertex that used each normal index): O(V + C + N).
 #pragma once
 
 #include <cstddef>
@@ -18,5 +19,9 @@
 namespace shadetool::io {
 
 Mesh split_corner_normals(const Mesh& mesh, std::size_t& added);
+
+// What a writer of a per-vertex-normal format writes: `input` itself when it has no corner
+// normals (no copy), else split_corner_normals(input) held in `storage`. `added` as above.
+const Mesh& with_corner_normals_split(const Mesh& input, Mesh& storage, std::size_t& added);
 
 }  // namespace shadetool::io

@@ -28,6 +28,8 @@
 // Degenerate input, handled explicitly:
 //   zero or non-finite normal        n.L = n.V = 0: only the emission and ambient terms remain
 //   point at a light's position      L, the spot cosine and att are undefined: the light adds 0
+//   light or eye at 1e-300 or 1e300  distances and directions scaled before squaring
+//                                    (metric_normalize); att terms with coefficient 0 left out
 //   point at the eye                 V = 0: H = L (blinn-phong), R.V = 0 (phong), no two-sided flip
 //   L = -V exactly (H = 0)           n.H = 0
 //   0^0 (shininess or exponent 0)    1, as std::pow and OpenGL
@@ -101,6 +103,44 @@ struct EquationSetup {
 // max(x, 0), inline (std::fmax is a libm call in GCC's -O2 code); NaN -> 0.
 inline double positive_part(double x) { return x > 0 ? x : 0.0; }
 
+// v / |v|_G and |v|_G for any finite v, without underflow or overflow of |v|^2: when the plain
+// squared length lies in [2^-1000, 2^1000] (every distance between 1e-150 and 1e150 in world
+// units: all usual scenes) it is used directly; otherwise v is first scaled by the power of two
+// 2^-e that brings its largest component near 1 (exact: only the exponent changes), the unit
+// vector is taken from the scaled copy and the length scaled back. v = 0 gives length 0 and a
+// zero unit vector; a length beyond double's range gives Inf with a correct unit vector.
+struct UnitAndLength {
+  Vec3d unit;
+  double length;
+};
+template <class Metric>
+inline UnitAndLength metric_normalize(const Metric& g, const Vec3d& v) {
+  constexpr double lo = 0x1p-1000, hi = 0x1p1000;
+  const double d2 = g.norm2(v);
+  if (d2 >= lo && d2 <= hi) {
+    const double d = std::sqrt(d2);
+    return {v * (1.0 / d), d};  // d >= 2^-500 > 0
+  }
+  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+  if (!(m > 0) || !std::isfinite(m)) return {{0, 0, 0}, m > 0 ? m : 0.0};
+  const int e = std::ilogb(m);
+  const Vec3d u{std::scalbn(v.x, -e), std::scalbn(v.y, -e), std::scalbn(v.z, -e)};
+  const double du = std::sqrt(g.norm2(u));  // u has a component in [1, 2): du > 0 for regular G
+  if (!(du > 0) || !std::isfinite(du)) return {{0, 0, 0}, 0.0};
+  return {u * (1.0 / du), std::scalbn(du, e)};
+}
+
+// Attenuation denominator kc + kl d + kq d^2 (all >= 0, not all zero, d > 0). A term whose
+// coefficient is 0 is left out rather than computed as 0 * d: for d = Inf (a light beyond double's
+// range) that product would be NaN, while the limit is the other terms' value. kq d^2 is formed as
+// (kq d) d so that it overflows only when the true value does.
+inline double attenuation_denominator(double kc, double kl, double kq, double d) {
+  double s = kc;
+  if (kl != 0) s += kl * d;
+  if (kq != 0) s += (kq * d) * d;
+  return s;
+}
+
 // The colour at p (in the frame's space) with normal n (in the frame's space, any length).
 // Always inlined into the per-point loop: GCC otherwise keeps a call per point for the
 // General metric (measured: 35% of the time of a one-light lambert bake).
@@ -124,9 +164,9 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
   double n_dot_v = 0;
   if (eq.view) {
     const Vec3d to_eye = frame.eye - p;
-    const double d2 = g.norm2(to_eye);
-    if (d2 > 0 && std::isfinite(d2)) {
-      V = to_eye * (1.0 / std::sqrt(d2));
+    const UnitAndLength eye_dir = metric_normalize(g, to_eye);
+    if (eye_dir.length > 0) {
+      V = eye_dir.unit;
       V_lowered = g.lower(V);
       v_unit = 1;
       n_dot_v = dot(n, V) * n_scale;
@@ -156,16 +196,16 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
         ++count.back_facing;
         continue;
       }
-      const double d2 = g.norm2(to_light);
-      if (!(d2 > 0)) {  // the point is at the light: L and att undefined, the light adds nothing
+      const UnitAndLength light_dir = metric_normalize(g, to_light);
+      const double d = light_dir.length;
+      if (!(d > 0)) {  // the point is at the light: L and att undefined, the light adds nothing
         ++count.at_light;
         continue;
       }
-      const double d = std::sqrt(d2);
-      const double inv_d = 1.0 / d;  // d > 0 checked above
+      L = light_dir.unit;
       double spot = 1;
       if (light.cone) {
-        const double cos_t = -dot(to_light, light.axis_lowered) * inv_d;
+        const double cos_t = -dot(L, light.axis_lowered);
         const bool inside = !(cos_t < light.cos_cutoff);
         if (!inside && eq.early_tests) {
           ++count.outside_cone;
@@ -175,9 +215,8 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
         if (!inside) spot = 0;
       }
       // kc, kl, kq >= 0, not all zero, and d > 0: the denominator is positive.
-      factor = spot / (light.kc + light.kl * d + light.kq * d2);
-      L = to_light * inv_d;
-      n_dot_l = n_dot_raw * n_scale * inv_d;
+      factor = spot / attenuation_denominator(light.kc, light.kl, light.kq, d);
+      n_dot_l = dot(n, L) * n_scale;
     }
 
     if (light.has_ambient || !eq.early_tests) color += light.ambient * factor;

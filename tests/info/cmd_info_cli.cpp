@@ -10,33 +10,12 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "support/run_process.h"
+
 namespace {
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-Run run(const std::string& args) {
-  const std::string base = (std::filesystem::temp_directory_path() / ("shadetool-info-cli-" + std::to_string(::getpid()))).string();
-  const std::string out = base + ".stdout", err = base + ".stderr";
-  const std::string cmd = std::string("'") + SHADETOOL_BIN + "' " + args + " > " + out + " 2> " + err;
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  std::remove(out.c_str());
-  std::remove(err.c_str());
-  return r;
-}
+using Run = shadetool_test::ProcessResult;
+Run run(const std::string& args) { return shadetool_test::run_shadetool(args); }
 
 std::string data(const std::string& name) { return std::string(SHADETOOL_SOURCE_DIR) + "/data/" + name; }
 

@@ -15,6 +15,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/run_process.h"
+
 #include "core/error.h"
 #include "core/mesh.h"
 #include "io/mesh_io.h"
@@ -112,22 +114,9 @@ inline Mesh rich_mesh() {
   return m;
 }
 
-// Runs the shadetool binary through the shell; stdout and stderr go to files in `dir`.
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
-
-inline Run run_cli(const std::string& args, const ScratchDir& dir) {
-  const std::string out = dir / "cli.stdout", err = dir / "cli.stderr";
-  const std::string cmd = std::string("'") + SHADETOOL_BIN + "' " + args + " > '" + out + "' 2> '" + err + "'";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_file(out);
-  r.err = read_file(err);
-  return r;
-}
+// Runs the shadetool binary through the shell (tests/support/run_process.h).
+using Run = shadetool_test::ProcessResult;
+inline Run run_cli(const std::string& args, const ScratchDir&) { return shadetool_test::run_shadetool(args); }
 
 inline std::string data_path(const std::string& name) { return std::string(SHADETOOL_SOURCE_DIR) + "/data/" + name; }
 

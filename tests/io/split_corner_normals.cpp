@@ -40,3 +40,37 @@ TEST_CASE("split: smooth normals (one per vertex) add nothing; unreferenced vert
   CHECK(s.num_vertices() == 4);
   CHECK(s.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, -1, 1, 0, 0, 0, 0, 0});
 }
+
+TEST_CASE("split: a vertex with 50000 distinct normals gets one copy per normal; a normal index shared by other vertices stays theirs",
+          "[split]") {
+  // A fan of k triangles (0, r, r+1) around vertex 0 (rim vertices 1..k, closed ring). At the
+  // centre, triangles 2i and 2i+1 use normal i: k/2 distinct normals, so the centre keeps normal 0
+  // and gets k/2 - 1 copies. Every rim corner uses normal 0 too, which is the only normal of each
+  // rim vertex: rim vertices are not copied and keep their own index (normal 0 of vertex r is not
+  // the centre's normal 0). Expected: added = k/2 - 1.
+  const std::uint32_t k = 100000;
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  for (std::uint32_t r = 0; r < k; ++r) m.add_vertex({std::cos(r * 1e-4), std::sin(r * 1e-4), 0});
+  for (std::uint32_t i = 0; i < k / 2; ++i) m.corner_normals.insert(m.corner_normals.end(), {double(i), 1.0, 0.5});
+  for (std::uint32_t t = 0; t < k; ++t) {
+    m.add_face({0, 1 + t, 1 + (t + 1) % k});
+    m.corner_normal_index.insert(m.corner_normal_index.end(), {t / 2, 0, 0});
+  }
+  std::size_t added = 0;
+  const Mesh s = io::split_corner_normals(m, added);
+  REQUIRE(added == k / 2 - 1);
+  REQUIRE(s.num_vertices() == 1 + k + k / 2 - 1);
+  bool all_match = true;
+  for (std::size_t c = 0; c < m.num_corners(); ++c) {
+    all_match &= s.position(s.corner_vertex[c]) == m.position(m.corner_vertex[c]);
+    all_match &= get3(s.vertex_normals, s.corner_vertex[c]) == get3(m.corner_normals, m.corner_normal_index[c]);
+  }
+  CHECK(all_match);
+  for (std::uint32_t t = 0; t < k; ++t) {
+    const std::uint32_t centre = s.corner_vertex[3 * t];
+    CHECK((t < 2 ? centre == 0 : centre == 1 + k + t / 2 - 1));  // first normal on 0, then copies in order
+    CHECK(s.corner_vertex[3 * t + 1] == 1 + t);                    // rim vertices keep their index
+    if (!(t < 2 ? centre == 0 : centre == 1 + k + t / 2 - 1)) break;
+  }
+}

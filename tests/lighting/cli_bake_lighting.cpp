@@ -12,16 +12,14 @@
 #include <string>
 
 #include "io/mesh_io.h"
+#include "support/run_process.h"
 
 namespace fs = std::filesystem;
 using namespace shadetool;
 
 namespace {
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
+using Run = shadetool_test::ProcessResult;
 
 struct TempDir {
   fs::path path;
@@ -35,23 +33,7 @@ struct TempDir {
   void write(const std::string& name, const std::string& text) const { std::ofstream(file(name)) << text; }
 };
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Run run(const TempDir& dir, const std::string& args) {
-  const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-  const std::string cmd = std::string(SHADETOOL_BIN) + " bake-lighting " + args + " > " + out + " 2> " + err;
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+Run run(const TempDir&, const std::string& args) { return shadetool_test::run_shadetool("bake-lighting " + args); }
 
 // A 2 x 1 quad in z = 0, as two triangles, normal +z.
 const char* kQuadObj = "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";

@@ -111,17 +111,28 @@ TEST_CASE("stress: a point light 1e-3 .. 1e-150 above the point lights it fully"
 }
 
 TEST_CASE("stress: a point light 1e-200 above the point, or 1e200 away, lights it like any other",
-          "[stress][lighting][!mayfail]") {
-  // KNOWN DEFECT (reported to the lighting module): the distance is taken as sqrt(|to_light|^2)
-  // without scaling first, so h^2 underflows to 0 for h < ~1.5e-154 (the point is treated as AT
-  // the light and gets only 0.04) and overflows to Inf for h > ~1.3e154 (the attenuation
-  // 1 / (kc + kl d + kq d^2) then computes 0 * Inf = NaN when kl or kq is 0, and the colour is NaN).
-  // Expected, as for any h: light at (0, 0, h), n.L = 1, att = 1 with attenuation (1, 0, 0):
-  // c = 0.04 + 0.8 = 0.84; with attenuation (0, 0, 1) at h = 1e200: att = 1e-400 -> 0, c = 0.04.
-  CHECK(at_origin(point_light_at("[0, 0, 1e-200]")) == Approx(0.84).epsilon(1e-15));
-  CHECK(at_origin(point_light_at("[0, 0, 1e200]")) == Approx(0.84).epsilon(1e-15));
-  CHECK(at_origin(point_light_at("[0, 0, 1e200]", R"(, "attenuation": [0, 0, 1])")) == Approx(0.04).epsilon(1e-15));
-  CHECK(std::isfinite(at_origin(point_light_at("[1e300, -1e300, 1e300]", R"(, "ambient": [1, 1, 1])"))));
+          "[stress][lighting]") {
+  // The distance is |to_light| computed without squaring out of range (lighting_equation.h
+  // metric_length: scaled by a power of two when |to_light|^2 would underflow or overflow), and an
+  // attenuation term with coefficient 0 is left out (0 * d is NaN for d = Inf). Expected, as for
+  // any h: light at (0, 0, h), n.L = 1, att = 1 with attenuation (1, 0, 0): c = 0.04 + 0.8 = 0.84;
+  // with attenuation (0, 0, 1) at h = 1e200: att = 1 / 1e400 = 0 in double, c = 0.04 exactly;
+  // at h = 1e-100 with (0, 0, 1): att = 1e200, c = 0.04 + 0.8e200.
+  for (const char* h : {"1e-200", "1e-300", "4.9e-324", "1e200", "1e300"}) {
+    INFO("h = " << h);
+    CHECK(at_origin(point_light_at(std::string("[0, 0, ") + h + "]")) == Approx(0.84).epsilon(1e-15));
+  }
+  CHECK(at_origin(point_light_at("[0, 0, 1e200]", R"(, "attenuation": [0, 0, 1])")) == 0.2 * 0.2);
+  CHECK(at_origin(point_light_at("[0, 0, 1e-100]", R"(, "attenuation": [0, 0, 1])")) == Approx(0.04 + 0.8e200).epsilon(1e-15));
+  // A light at distance sqrt(3) 1e300 with an ambient term (att 1): c = 0.04 + 0.2 * 1 + 0.8 n.L,
+  // n.L = 1e300 / (sqrt(3) 1e300) = 1 / sqrt(3).
+  CHECK(at_origin(point_light_at("[1e300, -1e300, 1e300]", R"(, "ambient": [1, 1, 1])")) ==
+        Approx(0.04 + 0.2 + 0.8 / std::sqrt(3.0)).epsilon(1e-15));
+  // The eye that far: V is still a unit vector. Eye at (0, 0, 1e300), directional light along -z:
+  // Blinn-Phong n.H = 1, c = 0.04 + 0.8 + 1 (ks = 1, shininess 10).
+  CHECK(at_origin(R"({"camera": {"eye": [0, 0, 1e300], "target": [0, 0, 0]},
+                      "material": {"specular": [1, 1, 1], "shininess": 10},
+                      "lights": [{"type": "directional", "direction": [0, 0, -1]}]})") == Approx(1.84).epsilon(1e-15));
 }
 
 TEST_CASE("stress: shininess 0 makes the specular term 1 wherever the light reaches", "[stress][lighting]") {
@@ -231,14 +242,15 @@ TEST_CASE("stress: zero-length light directions are refused; subnormal ones act 
 }
 
 TEST_CASE("stress: bake-lighting never writes a NaN or Inf colour: it refuses instead", "[stress][lighting][cli]") {
-  // Whatever the equation does at the limits of double (see the [!mayfail] case above), the
-  // command must not write NaN or Inf: a light at 1e300 (NaN colours) and an intensity of 1e300
-  // (finite in double, Inf as the float an --hdr file holds) both exit 1, one line, no output.
+  // Where the true colour exceeds double's or float's range, the command must not write NaN or
+  // Inf: an intensity of 1e300 behind an attenuation of 1e-300 (colour 8e599: Inf in double) and
+  // an intensity of 1e300 alone (finite in double, Inf as the float an --hdr file holds) both exit
+  // 1, one line, no output.
   namespace fs = std::filesystem;
   char tmpl[] = "/tmp/shadetool-light-XXXXXX";
   const fs::path dir = ::mkdtemp(tmpl);
   const fs::path far = dir / "far.json", bright = dir / "bright.json", out = dir / "out.ply";
-  std::ofstream(far) << R"({"lights": [{"type": "point", "position": [1e300, -1e300, 1e300], "ambient": [1, 1, 1]}]})";
+  std::ofstream(far) << R"({"lights": [{"type": "point", "position": [0, 0, 5], "intensity": 1e300, "attenuation": [1e-300, 0, 0]}]})";
   std::ofstream(bright) << R"({"lights": [{"type": "point", "position": [0, 0, 5], "intensity": 1e300}]})";
   const std::string cube = std::string(SHADETOOL_SOURCE_DIR) + "/data/cube.obj";
   for (const auto& [scene, hdr] : std::vector<std::pair<fs::path, bool>>{{far, false}, {far, true}, {bright, true}}) {

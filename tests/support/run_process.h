@@ -89,4 +89,12 @@ inline ProcessResult run_process(const std::vector<std::string>& argv, const Pro
   return r;
 }
 
+// Runs the shadetool binary through /bin/sh: `args` is a shell command-line tail, so it may quote,
+// redirect (`< in.obj`, `> out.ply`) and use variables. stdout and stderr are captured as above.
+#ifdef SHADETOOL_BIN
+inline ProcessResult run_shadetool(const std::string& args, const ProcessOptions& options = {}) {
+  return run_process({"/bin/sh", "-c", std::string("'") + SHADETOOL_BIN + "' " + args}, options);
+}
+#endif
+
 }  // namespace shadetool_test
