@@ -28,6 +28,7 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
+#include "io/bulk_reserve.h"
 #include "io/mesh_io.h"
 #include "repair/component_boundaries.h"
 #include "repair/consistent_winding.h"
@@ -177,6 +178,39 @@ int main(int argc, char** argv) {
     for (std::size_t c = 0; c < C; ++c) fresh[c] = std::uint32_t(c);
     sink = sink + fresh[C / 2];
   });
+  const Timing f_fill_huge = median_ms(reps, [] {}, [&] {
+    std::vector<std::uint32_t> fresh;
+    io::reserve_bulk(fresh, C);  // huge pages, as the repair's large arrays
+    fresh.resize(C);
+    for (std::size_t c = 0; c < C; ++c) fresh[c] = std::uint32_t(c);
+    sink = sink + fresh[C / 2];
+  });
+  const std::size_t V = as_read.num_vertices();
+  const Timing f_counting_sort = median_ms(reps, [] {}, [&] {
+    // The half-edges bucketed by lower vertex: counts, prefix sum, scatter of 8-byte keys; no
+    // matching, no output. The least a flat-array edge adjacency can do.
+    std::vector<std::uint32_t> pos;
+    io::reserve_bulk(pos, V + 1);
+    pos.assign(V + 1, 0);
+    const std::uint32_t* cv = as_read.corner_vertex.data();
+    for (std::size_t c = 0; c < C; c += 3) {
+      const std::uint32_t a = cv[c], b = cv[c + 1], d = cv[c + 2];
+      ++pos[std::min(a, b) + 1];
+      ++pos[std::min(b, d) + 1];
+      ++pos[std::min(d, a) + 1];
+    }
+    for (std::size_t v = 0; v < V; ++v) pos[v + 1] += pos[v];
+    std::vector<std::uint64_t> slot;
+    io::reserve_bulk(slot, C);
+    slot.resize(C);
+    for (std::size_t c = 0; c < C; c += 3) {
+      const std::uint32_t a = cv[c], b = cv[c + 1], d = cv[c + 2];
+      slot[pos[std::min(a, b)]++] = (std::uint64_t(std::max(a, b)) << 32) | c;
+      slot[pos[std::min(b, d)]++] = (std::uint64_t(std::max(b, d)) << 32) | (c + 1);
+      slot[pos[std::min(d, a)]++] = (std::uint64_t(std::max(d, a)) << 32) | (c + 2);
+    }
+    sink = sink + slot[C / 2];
+  });
   const Timing f_faces = median_ms(reps, [] {}, [&] {
     std::vector<std::uint8_t> fresh(F, 1);
     sink = sink + fresh[F / 2];
@@ -193,7 +227,9 @@ int main(int argc, char** argv) {
   row("    of which vertex_normals (lib/normals)", t_vertex_normals);
   row("floor: stream the 3M corner indices (12 MB)", f_stream);
   row("floor: gather one coordinate per corner (3M position reads)", f_gather);
-  row("floor: fill a fresh 3M x uint32 array (one corner-sized output)", f_fill);
+  row("floor: fill a fresh 3M x uint32 array (one corner-sized output), 4 KiB pages", f_fill);
+  row("floor: the same in huge pages (io/bulk_reserve.h)", f_fill_huge);
+  row("floor: counting sort of the 3M half-edges by lower vertex (no matching)", f_counting_sort);
   row("floor: fill a fresh 1M x uint8 array (one face-sized flag array)", f_faces);
   return summary();
 }
