@@ -90,3 +90,42 @@ TEST_CASE("faces_by_component lists each component's faces in order", "[repair][
   for (std::uint32_t i = 0; i < 20; ++i) CHECK(g.faces[i] == i);
   CHECK(g.faces.size() == 23);
 }
+
+TEST_CASE("an orientable and a non-orientable part in one mesh: each settled on its own", "[repair][winding]") {
+  Mesh m = testing::torus(16, 8).mesh;  // faces 0 .. 255: orientable
+  std::vector<std::size_t> flipped = flip_random_faces(m, 0.3, 21);
+  const std::size_t torus_faces = m.num_faces();
+  append(m, mobius_strip(30));  // the union-find finds a conflict here only
+  const ConsistentWinding w = wind(m);
+  REQUIRE(w.num_components == 2);
+  CHECK(w.component_seed == std::vector<std::uint32_t>{0, std::uint32_t(torus_faces)});
+  CHECK(w.component_non_orientable == std::vector<std::uint8_t>{0, 1});
+  CHECK(w.inconsistent_edges == 1);
+  const bool seed_flipped = std::find(flipped.begin(), flipped.end(), 0) != flipped.end();
+  std::vector<std::uint8_t> expected(torus_faces, seed_flipped ? 1 : 0);
+  for (std::size_t f : flipped) expected[f] ^= 1;
+  CHECK(std::vector<std::uint8_t>(w.face_reverse.begin(), w.face_reverse.begin() + std::ptrdiff_t(torus_faces)) == expected);
+  CHECK(w.component_faces == std::vector<std::uint32_t>{std::uint32_t(torus_faces), std::uint32_t(m.num_faces() - torus_faces)});
+}
+
+TEST_CASE("quads: labels are exactly the reversed faces", "[repair][winding]") {
+  // A quad torus, 12 x 6, every 3rd face reversed (corners 1 .. 3 in reverse order).
+  const int nu = 12, nv = 6;
+  Mesh m;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) m.add_vertex({double(i), double(j), 0});  // positions unused here
+  auto id = [&](int i, int j) { return std::uint32_t((j % nv) * nu + (i % nu)); };
+  std::vector<std::uint8_t> expected;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const bool reversed = (j * nu + i) % 3 == 1;
+      if (reversed) m.add_face({id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)});
+      else m.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      expected.push_back(reversed ? 1 : 0);  // face 0 is not reversed: labels are relative to it
+    }
+  const ConsistentWinding w = wind(m);
+  REQUIRE(w.num_components == 1);
+  CHECK(w.face_reverse == expected);
+  CHECK(w.component_reverse_count[0] == std::size_t(nu * nv / 3));
+  CHECK(w.component_non_orientable[0] == 0);
+}
