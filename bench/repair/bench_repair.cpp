@@ -1,7 +1,9 @@
 // bench_repair: repair_mesh against reading the same mesh from binary PLY.
 //
 // Usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N] [--stages 0|1]
-// (--stages 0: read and whole repair only, e.g. for a profiler)
+//                     [--shuffle 0|1]
+// (--stages 0: read and whole repair only, e.g. for a profiler; --shuffle 1: vertices and faces
+// in random order, the worst case for memory locality)
 // Mesh: torus with NU x NV quads split in two (default 1000 x 500 = 1,000,000 triangles,
 // 500,000 vertices), 30% of its faces flipped at random (seed 1), written as binary little-endian
 // PLY with float coordinates (what scanners and exporters write). Every time is the median of R
@@ -22,6 +24,7 @@
 #include <functional>
 #include <malloc.h>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -78,7 +81,7 @@ Timing median_ms(int reps, const std::function<void()>& setup, const std::functi
 }  // namespace
 
 int main(int argc, char** argv) {
-  int nu = 1000, nv = 500, reps = 9, threads = 0, stages = 1;
+  int nu = 1000, nv = 500, reps = 9, threads = 0, stages = 1, shuffle = 0;
   std::string tmp = std::filesystem::temp_directory_path().string();
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -88,7 +91,8 @@ int main(int argc, char** argv) {
     else if (a == "--tmp") tmp = argv[i + 1];
     else if (a == "--threads") threads = std::atoi(argv[i + 1]);
     else if (a == "--stages") stages = std::atoi(argv[i + 1]);
-    else { std::fprintf(stderr, "usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N] [--stages 0|1]\n"); return 2; }
+    else if (a == "--shuffle") shuffle = std::atoi(argv[i + 1]);
+    else { std::fprintf(stderr, "usage: bench_repair [--nu NU] [--nv NV] [--reps R] [--tmp DIR] [--threads N] [--stages 0|1] [--shuffle 0|1]\n"); return 2; }
   }
 
   // A CLI repairs one file per process: every large buffer, the reader's and ours, is fresh
@@ -103,12 +107,31 @@ int main(int argc, char** argv) {
 
   Mesh truth = testing::torus(nu, nv).mesh;
   truth.precision = ValuePrecision::Float;
+  if (shuffle) {
+    // Vertices and faces in random order: no locality for any pass to lean on.
+    std::mt19937 rng(7);
+    const std::size_t V = truth.num_vertices(), F = truth.num_faces();
+    std::vector<std::uint32_t> new_id(V), face_order(F);
+    for (std::size_t v = 0; v < V; ++v) new_id[v] = std::uint32_t(v);
+    for (std::size_t f = 0; f < F; ++f) face_order[f] = std::uint32_t(f);
+    std::shuffle(new_id.begin(), new_id.end(), rng);
+    std::shuffle(face_order.begin(), face_order.end(), rng);
+    Mesh shuffled;
+    shuffled.precision = truth.precision;
+    shuffled.positions.resize(truth.positions.size());
+    for (std::size_t v = 0; v < V; ++v)
+      for (int i = 0; i < 3; ++i) shuffled.positions[3 * new_id[v] + i] = truth.positions[3 * v + i];
+    for (std::uint32_t f : face_order)
+      shuffled.add_face({new_id[truth.corner_vertex[3 * f]], new_id[truth.corner_vertex[3 * f + 1]], new_id[truth.corner_vertex[3 * f + 2]]});
+    truth = std::move(shuffled);
+  }
   Mesh damaged = truth;
   flip_random_faces(damaged, 0.3, 1);
   const std::string path = (std::filesystem::path(tmp) / "bench_repair_torus.ply").string();
   write_mesh(damaged, path, WriteOptions{Format::Ply, true});
   const auto bytes = std::filesystem::file_size(path);
-  std::printf("mesh: torus %d x %d: %zu triangles, %zu vertices, 30%% of faces flipped; binary PLY %.1f MB\n", nu, nv,
+  std::printf("mesh: torus %d x %d%s: %zu triangles, %zu vertices, 30%% of faces flipped; binary PLY %.1f MB\n", nu, nv,
+              shuffle ? " (vertices and faces shuffled)" : "",
               damaged.num_faces(), damaged.num_vertices(), double(bytes) / 1e6);
 
   Mesh as_read, work;
