@@ -181,7 +181,7 @@ int main(int argc, char** argv) {
   const Timing t_normals = median_ms(reps, [&] { work = as_read; }, [&] { fix_normals(work); });
   const Timing t_vertex_normals = median_ms(reps, [] {}, [&] { vertex_normals(as_read); });
 
-  const Timing t_duplicates = median_ms(reps, [] {}, [&] { duplicate_faces(as_read, adj); });
+  const Timing t_duplicates = median_ms(reps, [] {}, [&] { duplicate_faces(as_read, adj, winding); });
 
   // Floors: the least any orientation pass can cost here, on the same mesh and memory regime.
   const std::size_t C = as_read.num_corners(), F = as_read.num_faces();
@@ -240,8 +240,8 @@ int main(int argc, char** argv) {
   });
 
   row("  edge_adjacency", t_adjacency);
-  row("  duplicate_faces", t_duplicates);
   row("  consistent_winding (union-find)", t_winding);
+  row("  duplicate_faces (given the winding)", t_duplicates);
   row("  component_boundaries", t_bounds);
   row("  signed volumes + degenerate faces (one pass)", t_volume);
   row("  outward_orientation (given the volumes)", t_outward);

@@ -6,6 +6,10 @@
 namespace shadetool {
 
 DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj) {
+  return duplicate_faces(mesh, adj, consistent_winding(mesh, adj));
+}
+
+DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj, const ConsistentWinding& winding) {
   const std::size_t F = mesh.num_faces();
   DuplicateFaces out;
   std::vector<std::uint32_t> candidates;
@@ -13,25 +17,16 @@ DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj) {
     if (adj.odd_edge_valence(e) >= 3)
       for (std::uint32_t i = adj.odd_edge_start[e]; i < adj.odd_edge_start[e + 1]; ++i)
         candidates.push_back(corner_face(mesh, adj.odd_edge_corner[i]));
-  // A lone pair: every edge of the face is shared with one and the same other face. Its mates
-  // then lie within one face of the same size, so they span fewer corners than the face has: a
-  // cheap filter before the face is looked up.
-  const std::uint32_t* mate = adj.corner_mate.data();
-  const bool triangles = mesh.all_triangles();
-  for (std::size_t f = 0; f < F; ++f) {
-    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-    if (e - b < 3) continue;
-    std::uint32_t lo = EdgeAdjacency::kUnpaired, hi = 0;
-    bool paired = true;
-    for (std::uint32_t c = b; c < e && paired; ++c) {
-      paired = mate[c] != EdgeAdjacency::kUnpaired;
-      lo = std::min(lo, mate[c] >> 1);
-      hi = std::max(hi, mate[c] >> 1);
+  // A lone pair (every edge of a face shared with one and the same other face, of the same size)
+  // is a component of exactly two faces: found from the component sizes, without a pass over
+  // the edges; the faces are listed only when such a component exists.
+  bool pairs = false;
+  for (std::uint32_t n : winding.component_faces) pairs = pairs || n == 2;
+  if (pairs)
+    for (std::size_t f = 0; f < F; ++f) {
+      const std::uint32_t k = winding.face_component[f];
+      if (k != ConsistentWinding::kNoComponent && winding.component_faces[k] == 2) candidates.push_back(std::uint32_t(f));
     }
-    if (!paired || hi - lo >= e - b) continue;
-    const std::uint32_t g = triangles ? lo / 3 : corner_face(mesh, lo);
-    if (g != f && (triangles ? hi / 3 == g : hi < mesh.face_start[g + 1])) candidates.push_back(std::uint32_t(f));
-  }
   if (candidates.empty()) return out;
   out.original.assign(F, DuplicateFaces::kNone);
   std::sort(candidates.begin(), candidates.end());

@@ -7,15 +7,17 @@
 // Repair sets duplicates aside: the first face of each group takes part in orientation, and each
 // later one keeps its input relation to it (same winding stays same, opposite stays opposite).
 //
-// Inputs:  mesh  faces #F
-//          adj   edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
+// Inputs:  mesh     faces #F
+//          adj      edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
+//          winding  consistent_winding(mesh, adj, left_out): its components
 // Output:  DuplicateFaces with
 //   original  #F  for a duplicate, the lowest-numbered face with the same vertex set; else kNone
 //                 (empty when no face was a candidate: then count is 0)
 //   count         number of duplicates (faces with original != kNone)
 // Candidates: faces on edges with 3 or more half-edges (every duplicate that shares its edges
-// with anything else), and faces all of whose edges they share with one and the same face (a
-// lone pair: its edges are manifold). Cost O(C) to find them plus O(n log n) for n candidates.
+// with anything else), and the faces of components of exactly two faces (a lone pair, all of
+// whose edges the two faces share with each other, is one: its edges are manifold). Cost O(K)
+// plus O(F) only when a two-face component exists, plus O(n log n) for n candidates.
 #pragma once
 
 #include <cstddef>
@@ -24,6 +26,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "repair/consistent_winding.h"
 #include "topology/edge_adjacency.h"
 
 namespace shadetool {
@@ -34,6 +37,8 @@ struct DuplicateFaces {
   std::size_t count = 0;
 };
 
+DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj, const ConsistentWinding& winding);
+// The same, with the winding computed here (consistent_winding(mesh, adj)).
 DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj);
 
 }  // namespace shadetool

@@ -24,19 +24,21 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
 
   const std::size_t F = mesh.num_faces();
   // Step 1: consistent winding. Faces without a winding of their own (fewer than 3 corners, a
-  // repeated index) take no part. Duplicate faces are set aside first (and the adjacency rebuilt
-  // without them, only when there are any).
+  // repeated index) take no part. Duplicate faces are set aside (found from the first winding's
+  // components and non-manifold edges); only when there are any are the adjacency and the winding
+  // computed again without them.
   EdgeAdjacencyOptions left_out;
   left_out.skip_unwound_faces = true;
   EdgeAdjacency adj = edge_adjacency(mesh, left_out);
-  const DuplicateFaces duplicates = duplicate_faces(mesh, adj);
+  ConsistentWinding winding = consistent_winding(mesh, adj, left_out);
+  const DuplicateFaces duplicates = duplicate_faces(mesh, adj, winding);
   report.duplicate_faces = duplicates.count;
   if (duplicates.count > 0) {
     left_out.skip.assign(F, 0);
     for (std::size_t f = 0; f < F; ++f) left_out.skip[f] = duplicates.original[f] != DuplicateFaces::kNone;
     adj = edge_adjacency(mesh, left_out);
+    winding = consistent_winding(mesh, adj, left_out);
   }
-  const ConsistentWinding winding = consistent_winding(mesh, adj, left_out);
   const ComponentBoundaries boundaries = component_boundaries(mesh, adj, winding);
   report.components = winding.num_components;
   report.non_manifold_edges = winding.non_manifold_edges;
