@@ -31,6 +31,7 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
+#include "info/edge_topology.h"
 #include "io/bulk_reserve.h"
 #include "io/mesh_io.h"
 #include "repair/component_boundaries.h"
@@ -181,6 +182,7 @@ int main(int argc, char** argv) {
   const Timing t_normals = median_ms(reps, [&] { work = as_read; }, [&] { fix_normals(work); });
   const Timing t_vertex_normals = median_ms(reps, [] {}, [&] { vertex_normals(as_read); });
 
+  const Timing t_info_topology = median_ms(reps, [] {}, [&] { info::edge_topology(as_read); });
   const Timing t_duplicates = median_ms(reps, [] {}, [&] { duplicate_faces(as_read, adj, winding); });
 
   // Floors: the least any orientation pass can cost here, on the same mesh and memory regime.
@@ -248,6 +250,7 @@ int main(int argc, char** argv) {
   row("  reverse_faces", t_reverse);
   row("  fix_normals (computes angle-weighted normals)", t_normals);
   row("    of which vertex_normals (lib/normals)", t_vertex_normals);
+  row("info::edge_topology (`shadetool info`; the same pairing)", t_info_topology);
   row("floor: stream the 3M corner indices (12 MB)", f_stream);
   row("floor: gather one coordinate per corner (3M position reads)", f_gather);
   row("floor: fill a fresh 3M x uint32 array (one corner-sized output), 4 KiB pages", f_fill);
