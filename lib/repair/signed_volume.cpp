@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdint>
 
-#include "io/bulk_reserve.h"
-
 #include <tbb/parallel_for.h>
+
+#include "io/bulk_reserve.h"
 
 namespace shadetool {
 

@@ -3,12 +3,12 @@
 
 #include <algorithm>
 
-#include "core/error.h"
-#include "io/bulk_reserve.h"
-
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+
+#include "core/error.h"
+#include "io/bulk_reserve.h"
 
 namespace shadetool {
 
