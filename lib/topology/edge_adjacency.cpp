@@ -2,6 +2,7 @@
 #include "topology/edge_adjacency.h"
 
 #include <algorithm>
+#include <type_traits>
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -81,17 +82,24 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   io::reserve_bulk(pos, V + 1);
   pos.assign(V + 1, 0);
   std::uint32_t* count = pos.data() + 1;
-  for (std::size_t f = 0; f < F; ++f) {
-    const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
-    std::uint32_t highest = 0;
-    for (std::uint32_t c = b; c < e; ++c) highest = std::max(highest, cv[c]);
-    if (highest >= V && e > b) fail("edge_adjacency", 0, "a face refers to a vertex index beyond the vertex count");
-    if (!takes_part(f, b, e)) continue;
-    for (std::uint32_t c = b; c < e; ++c) {
-      const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
-      if (t != h) ++count[std::min(t, h)];
+  // (Both face passes are compiled twice: for a triangle mesh the corner loops have a constant
+  // trip count of 3 and unroll.)
+  auto count_pass = [&](auto all_triangles) {
+    constexpr bool kTriangles = decltype(all_triangles)::value;
+    for (std::size_t f = 0; f < F; ++f) {
+      const std::uint32_t b = kTriangles ? std::uint32_t(3 * f) : fs[f], e = kTriangles ? b + 3 : fs[f + 1];
+      std::uint32_t highest = 0;
+      for (std::uint32_t c = b; c < e; ++c) highest = std::max(highest, cv[c]);
+      if (highest >= V && e > b) fail("edge_adjacency", 0, "a face refers to a vertex index beyond the vertex count");
+      if (!takes_part(f, b, e)) continue;
+      for (std::uint32_t c = b; c < e; ++c) {
+        const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
+        if (t != h) ++count[std::min(t, h)];
+      }
     }
-  }
+  };
+  if (triangles) count_pass(std::true_type{});
+  else count_pass(std::false_type{});
   // Prefix sum: pos[v] = start of bucket v; pos[V] = number of half-edges H.
   for (std::size_t v = 0; v < V; ++v) pos[v + 1] += pos[v];
   const std::size_t H = pos[V];
@@ -101,22 +109,27 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   std::vector<std::uint64_t> slot;
   io::reserve_bulk(slot, H);
   slot.resize(H);
-  for (std::size_t f = 0; f < F; ++f) {
-    const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
-    if (!takes_part(f, b, e)) {
-      for (std::uint32_t c = b; c < e; ++c) mate[c] = kUnpaired;
-      continue;
-    }
-    for (std::uint32_t c = b; c < e; ++c) {
-      const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
-      if (t == h) {
-        mate[c] = kUnpaired;
+  auto scatter_pass = [&](auto all_triangles) {
+    constexpr bool kTriangles = decltype(all_triangles)::value;
+    for (std::size_t f = 0; f < F; ++f) {
+      const std::uint32_t b = kTriangles ? std::uint32_t(3 * f) : fs[f], e = kTriangles ? b + 3 : fs[f + 1];
+      if (!takes_part(f, b, e)) {
+        for (std::uint32_t c = b; c < e; ++c) mate[c] = kUnpaired;
         continue;
       }
-      const std::uint32_t lo = std::min(t, h), hi = std::max(t, h);
-      slot[pos[lo]++] = (std::uint64_t(hi) << 32) | (std::uint64_t(c) << 1) | std::uint64_t(t == lo);
+      for (std::uint32_t c = b; c < e; ++c) {
+        const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
+        if (t == h) {
+          mate[c] = kUnpaired;
+          continue;
+        }
+        const std::uint32_t lo = std::min(t, h), hi = std::max(t, h);
+        slot[pos[lo]++] = (std::uint64_t(hi) << 32) | (std::uint64_t(c) << 1) | std::uint64_t(t == lo);
+      }
     }
-  }
+  };
+  if (triangles) scatter_pass(std::true_type{});
+  else scatter_pass(std::false_type{});
   const std::uint32_t* end = pos.data();
 
   // Pass 3: sort each bucket by (higher vertex, corner); pair the edges of valence 2, list the
