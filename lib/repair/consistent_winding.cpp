@@ -183,9 +183,19 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   }
   // Components numbered by their lowest face; reversal relative to it. In face order a face's
   // parent is lower, so already final: one step, no search. Faces left out are roots of nothing
-  // (they have no manifold edges) and get no component.
+  // (they have no manifold edges) and get no component. The per-component counts are summed over
+  // runs of faces of one component in registers (an increment in memory per face would chain
+  // every face to the previous one's store).
+  std::uint32_t run = kNone, run_faces = 0, run_reversed = 0;
+  auto flush = [&]() {
+    if (run == kNone) return;
+    w.component_faces[run] += run_faces;
+    w.component_reverse_count[run] += run_reversed;
+    run_faces = run_reversed = 0;
+  };
   for (std::size_t f = 0; f < F; ++f) {
     const std::uint32_t n = node[f], parent = n >> 1;
+    std::uint32_t k, r;
     if (parent == f) {
       const bool out = (!left_out.skip.empty() && left_out.skip[f]) || (left_out.skip_unwound_faces && face_is_unwound(mesh, f));
       reverse[f] = 0;
@@ -193,18 +203,26 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
         component[f] = kNone;
         continue;
       }
-      component[f] = std::uint32_t(w.num_components++);
+      k = std::uint32_t(w.num_components++);
+      r = 0;
       w.component_seed.push_back(std::uint32_t(f));
       w.component_faces.push_back(0);
       w.component_reverse_count.push_back(0);
       w.component_non_orientable.push_back(0);
     } else {
-      component[f] = component[parent];
-      reverse[f] = std::uint8_t((n & 1u) ^ reverse[parent]);
+      k = component[parent];
+      r = (n & 1u) ^ reverse[parent];
     }
-    ++w.component_faces[component[f]];
-    w.component_reverse_count[component[f]] += reverse[f];
+    component[f] = k;
+    reverse[f] = std::uint8_t(r);
+    if (k != run) {
+      flush();
+      run = k;
+    }
+    ++run_faces;
+    run_reversed += r;
   }
+  flush();
 
   // Non-orientable components: labelled again by the canonical search, which does not depend on
   // the input winding and counts the inconsistent edges.
