@@ -7,15 +7,17 @@
 //                   weld_eps (< 0: no welding; >= 0: weld_vertices(mesh, weld_eps) first)
 // Output:  mesh repaired in place, and the RepairReport.
 //   1. Consistent winding (consistent_winding.h) over the faces that have one (degenerate faces
-//      with a repeated index or < 3 corners are left out and left alone). Duplicate faces
-//      (duplicate_faces.h) are set aside and later reversed together with their original.
+//      with a repeated index or < 3 corners are left out and left alone), on the half-edge
+//      pairing of topology/edge_adjacency.h. Duplicate faces (duplicate_faces.h) are set aside
+//      and later reversed together with their original.
 //   2. Outward orientation (outward_orientation.h): signed volume for closed components, nesting
 //      parity for shells inside shells, the winding-number vote for open ones, the input's
 //      majority where there is no evidence. Steps 1 and 2 reverse each face at most once, with
 //      reverse_faces.h (first corner kept, so a face flipped by swapping two corners is restored
 //      exactly), carrying corner normal and texcoord indices.
 //   3. Normals (fix_normals.h), on the final faces.
-//   4. Degenerate faces (degenerate_faces.h, found before step 1) are counted; removed only with
+//   4. Degenerate faces (degenerate_faces.h; the zero-area and non-finite tests run in step 2's
+//      volume pass, signed_volume.h, which reads the same positions) are counted; removed only with
 //      remove_degenerate, and then before step 3, so that no sliver's arbitrary normal reaches
 //      a vertex. No other face is ever removed: faces out = faces in - degenerate_faces_removed.
 // Repairing the output again changes nothing (RepairReport::changes() == 0).
