@@ -74,11 +74,14 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
       case OrientationBasis::Majority: break;
     }
   }
-  std::vector<std::uint8_t> reverse(F, 0);
-  for (std::size_t f = 0; f < F; ++f) {
-    const std::uint32_t k = winding.face_component[f];
-    if (k != ConsistentWinding::kNoComponent) reverse[f] = winding.face_reverse[f] ^ outward.component_invert[k];
-  }
+  // The final reversal of each face, in place of the winding's (relative to each seed; 0 for
+  // faces without a component): a pass over the faces only when some component is inverted.
+  std::vector<std::uint8_t>& reverse = winding.face_reverse;
+  if (std::any_of(outward.component_invert.begin(), outward.component_invert.end(), [](std::uint8_t i) { return i != 0; }))
+    for (std::size_t f = 0; f < F; ++f) {
+      const std::uint32_t k = winding.face_component[f];
+      if (k != ConsistentWinding::kNoComponent) reverse[f] ^= outward.component_invert[k];
+    }
   // A duplicate is reversed with its original: same winding stays same, opposite stays opposite.
   if (duplicates.count > 0)
     for (std::size_t f = 0; f < F; ++f)
