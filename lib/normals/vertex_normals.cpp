@@ -1,11 +1,15 @@
 // vertex_normals.cpp: one unit normal per vertex, the normalised sum of its corners'
 // contributions (corner_contributions.h gives the formula and source of each weighting).
 //
-// Precision: Double accumulates in double (default: a vertex of high valence sums hundreds of
-// terms, and double keeps the result exact to ~1e-15 rad); Float forms edge vectors in double,
-// rounds them once to float and computes and accumulates in float, angles excepted (they cost the
-// same in double; interior_angle.h): half the accumulator memory and traffic, error ~1e-5 deg
-// against double, measured in tests and the benchmark.
+// Precision: every contribution is computed in double (corner_contributions.h). Double accumulates
+// in double (default: a vertex of high valence sums hundreds of terms, and double keeps the
+// result exact to ~1e-15 rad); Float rounds each contribution once to float (Area and Max after
+// one power-of-two scale per mesh, so meshes at 1e-30 or 1e30 neither under- nor overflow) and
+// accumulates in float: half the accumulator memory and traffic. Error against Double: each term
+// carries a relative error <= 2^-24 and the float sum of k terms <= (k-1) 2^-24 of the sum of
+// their magnitudes, so the angle to the double normal is <= ~k 2^-24 (|terms| / |sum|) rad, which
+// for any vertex whose terms do not cancel is < 1e-5 deg for k < 100; measured max 2e-5 deg on
+// the benchmark meshes (tests assert 1e-3 deg).
 // Fallback (never NaN): a vertex whose sum is zero or not finite takes the unit normal of its
 // first valid face (by face index) when it has one (contributions cancelled, e.g. a two-sided
 // sheet), else kFallbackNormal = (0, 0, 1) (isolated vertex, or only degenerate faces). Both are
@@ -45,12 +49,13 @@ void normalise_range(const T* sum, double* out, std::size_t v_begin, std::size_t
 }
 
 template <class T, Weighting W>
-VertexNormals compute(const Mesh& mesh, Precision precision) {
+void compute(const Mesh& mesh, Precision precision, VertexNormals& result) {
   const std::size_t V = mesh.num_vertices();
-  VertexNormals result;
+  result.fallback_vertices = result.degenerate_faces = 0;
   // In double the output array itself accumulates the sums (normalised in place afterwards): no
   // second #V by 3 array to allocate, zero and copy. In float a float accumulator is used.
-  // Zeroing (and first-touching) the arrays is serial; it runs beside the chunk plan.
+  // Zeroing (and first-touching) the arrays is serial; it runs beside the chunk plan. An output
+  // array that already has the capacity (a caller reusing `result`) is reused, not reallocated.
   std::vector<float> float_sum;
   ChunkPlan plan;
   auto allocate = [&] {
@@ -68,10 +73,14 @@ VertexNormals compute(const Mesh& mesh, Precision precision) {
   if constexpr (std::is_same_v<T, double>) sum = result.normals.data();
   else sum = float_sum.data();
   const bool triangles = mesh.all_triangles();
+  // float Area/Max: one power of two for the whole mesh (corner_contributions.h). A vertex whose
+  // float sum still overflows (a face ~2^100 times larger than the sampled ones) takes the
+  // fallback below: a valid unit normal, counted.
+  const double scale = contribution_scale<T, W>(mesh);
   result.degenerate_faces = accumulate_by_target<false, T>(mesh, plan, nullptr,
       [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
-        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
-                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
+        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale)
+                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink, scale);
       }, sum);
 
   // Normalise in fixed blocks (independent of the thread count); failures listed per block and
@@ -86,17 +95,23 @@ VertexNormals compute(const Mesh& mesh, Precision precision) {
   for (auto& list : failed) needs_fallback.insert(needs_fallback.end(), list.begin(), list.end());
   result.fallback_vertices = needs_fallback.size();
   if (!needs_fallback.empty()) apply_vertex_fallback(mesh, needs_fallback, precision, result.normals);
-  return result;
 }
 
 }  // namespace
 
-VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision) {
-  return dispatch(weighting, precision, [&](auto t, auto w) {
+void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out) {
+  dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    return compute<T, W>(mesh, precision);
+    compute<T, W>(mesh, precision, out);
+    return 0;
   });
+}
+
+VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision) {
+  VertexNormals result;
+  vertex_normals(mesh, weighting, precision, result);
+  return result;
 }
 
 }  // namespace shadetool

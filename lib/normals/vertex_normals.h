@@ -3,8 +3,9 @@
 // n_v = normalise( sum over the corners of v of w_c n_f ), weights per normals/weighting.h and
 // corner_contributions.h (Gouraud 1971; area; Thuermer & Wuethrich 1998; Max 1999). Polygons use
 // their Newell normal and their own corner at v. Degenerate faces contribute nothing.
-// Precision: Double (default) computes and sums in double. Float forms each edge vector in double,
-// rounds it once, and computes and sums in float (angles: double in both); measured within 1e-3
+// Precision: contributions are computed in double either way. Double (default) sums in double;
+// Float rounds each contribution once to float (area and max weights after one exact power-of-two
+// scale per mesh, so meshes scaled to 1e-30 or 1e30 work) and sums in float; measured within 1e-3
 // degree of Double (about 1e-5). Threads: TBB over face chunks for meshes of 32768+ faces; the
 // result is bitwise the same for any thread count (accumulate_by_vertex.h).
 //
@@ -35,5 +36,11 @@ struct VertexNormals {
 
 VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting = Weighting::Angle,
                              Precision precision = Precision::Double);
+
+// The same into `out`, reusing the storage of out.normals when its capacity suffices (no
+// allocation and no fresh pages to fault in: for callers that compute normals repeatedly, as
+// OpenMesh's update_normals writes into its preallocated normal property). Every field of `out`
+// is overwritten.
+void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out);
 
 }  // namespace shadetool
