@@ -37,6 +37,7 @@
 #include "core/mesh.h"
 #include "normals/face_geometry.h"
 #include "normals/interior_angle.h"
+#include "normals/interior_angles.h"
 #include "normals/weighting.h"
 
 namespace shadetool::normals_detail {
@@ -60,11 +61,12 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 // overflows (coordinates beyond ~1e150) passes and makes the vertex sum infinite: that vertex
 // then gets vertex_normals' fallback.
 // Angle weighting for triangles, in blocks of kAngleBlock faces and three passes over each block:
-// (1) unit normal and the two cos parts per face, (2) the arctangent pairs, (3) the sums. The
-// arithmetic is that of triangle_contributions below, bit for bit; what changes is the schedule:
-// one face's chain (loads, cross product, square root, two dependent divisions in the
-// arctangent, scatter) is long, and with ~200 instructions per face the processor could not
-// overlap two faces; split in passes, consecutive faces are independent and do overlap.
+// (1) area vector N, |N| and the two cos parts per face, (2) the weights theta_k / |N| by the
+// vectorised triangle_angle_weights (interior_angles.h: one division and a polynomial per angle,
+// 2 or 4 faces per instruction), (3) the sums N theta_k / |N|. One face's chain (loads, cross product, square root,
+// division, arctangent, scatter) is long; split in passes, consecutive faces are independent and
+// overlap, and the arctangents run as a vector loop. The third angle is pi minus the other two
+// (absolute error ~1e-16, invisible in a weight).
 constexpr std::size_t kAngleBlock = 64;
 
 // A double contribution rounded to the accumulation type (no-op for double).
@@ -91,33 +93,43 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
-  Vec3d n[kAngleBlock];
-  double len[kAngleBlock], cos0[kAngleBlock], cos1[kAngleBlock], t0[kAngleBlock], t1[kAngleBlock];
-  bool valid[kAngleBlock];
+  double Nx[kAngleBlock], Ny[kAngleBlock], Nz[kAngleBlock], len[kAngleBlock], cos0[kAngleBlock], cos1[kAngleBlock];
+  double w0[kAngleBlock], w1[kAngleBlock], w2[kAngleBlock];
   for (std::size_t b = f_begin; b < f_end; b += kAngleBlock) {
     const std::size_t count = std::min(kAngleBlock, f_end - b);
+    // (1) area vector (two shortest edges, as triangle_area_vector: the same products, bit for
+    // bit, taken from the edges already formed instead of reloading the apex), N . N, cos parts.
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
-      const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
-      const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
-      const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
-      const Vec3d N = triangle_area_vector(P, v0, v1, v2, dot(e0, e0), dot(e1, e1), dot(e2, e2));
-      const double l = checked_length(N);
-      valid[i] = l > 0.0;
-      const double inv_len = valid[i] ? 1.0 / l : 0.0;  // divisor checked
-      n[i] = N * inv_len;
-      // a degenerate face (possibly NaN) feeds a harmless (1, 0) to the arctangent pass
-      len[i] = valid[i] ? l : 1.0;
-      cos0[i] = valid[i] ? -dot(e0, e2) : 0.0;
-      cos1[i] = valid[i] ? -dot(e1, e0) : 0.0;
+      const Vec3d p0 = load_position(P, cv[c]), p1 = load_position(P, cv[c + 1]), p2 = load_position(P, cv[c + 2]);
+      const Vec3d E[3] = {p1 - p0, p2 - p1, p0 - p2};
+      const int k = apex_corner(dot(E[0], E[0]), dot(E[1], E[1]), dot(E[2], E[2]));
+      // apex 2: (p0 - p2) x (p1 - p2) = e1 x e2; apex 0: e2 x e0; apex 1: e0 x e1
+      Vec3d N = cross(E[k == 0 ? 2 : k - 1], E[k]);
+      double nn = dot(N, N);
+      if (!(nn >= 1e-250 && nn <= 1e250)) {  // rare: rescale by a power of two (exact) into range
+        const double m = std::fmax(std::fabs(N.x), std::fmax(std::fabs(N.y), std::fabs(N.z)));
+        if (m > 0.0 && std::isfinite(m)) {
+          const int e = std::ilogb(m);
+          N = {std::scalbn(N.x, -e), std::scalbn(N.y, -e), std::scalbn(N.z, -e)};
+          nn = dot(N, N);
+        }  // else zero, Inf or NaN: degenerate, recognised by the weights pass
+      }
+      Nx[i] = N.x; Ny[i] = N.y; Nz[i] = N.z;
+      len[i] = std::sqrt(nn);  // 0, Inf or NaN for a degenerate face
+      cos0[i] = -dot(E[0], E[2]);
+      cos1[i] = -dot(E[1], E[0]);
     }
-    for (std::size_t i = 0; i < count; ++i) interior_angle_pair(len[i], cos0[i], len[i], cos1[i], t0[i], t1[i]);
+    // (2) the weights theta_k / |N|, vectorised (interior_angles.h)
+    triangle_angle_weights(count, len, cos0, cos1, w0, w1, w2);
+    // (3) the sums
     for (std::size_t i = 0; i < count; ++i) {
-      if (!valid[i]) { ++degenerate; continue; }  // degenerate: contributes nothing
+      if (!(len[i] > 0.0 && len[i] <= std::numeric_limits<double>::max())) { ++degenerate; continue; }  // contributes nothing
       const std::size_t c = 3 * (b + i);
-      sink(c, cv[c], to<T>(n[i] * t0[i]));
-      sink(c + 1, cv[c + 1], to<T>(n[i] * t1[i]));
-      sink(c + 2, cv[c + 2], to<T>(n[i] * (kPi - t0[i] - t1[i])));
+      const Vec3d N{Nx[i], Ny[i], Nz[i]};
+      sink(c, cv[c], to<T>(N * w0[i]));
+      sink(c + 1, cv[c + 1], to<T>(N * w1[i]));
+      sink(c + 2, cv[c + 2], to<T>(N * w2[i]));
     }
   }
   return degenerate;
