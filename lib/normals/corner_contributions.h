@@ -61,9 +61,11 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 // overflows (coordinates beyond ~1e150) passes and makes the vertex sum infinite: that vertex
 // then gets vertex_normals' fallback.
 // Angle weighting for triangles, in blocks of kAngleBlock faces and three passes over each block:
-// (1) area vector N, |N| and the two cos parts per face, (2) the weights theta_k / |N| by the
-// vectorised triangle_angle_weights (interior_angles.h: one division and a polynomial per angle,
-// 2 or 4 faces per instruction), (3) the sums N theta_k / |N|. One face's chain (loads, cross product, square root,
+// (1) gather the corner positions (structure of arrays), (2) area vector N and weights
+// theta_k / |N| for the whole block by the vectorised triangle_angle_block (interior_angles.h:
+// edges, shortest pair, cross product, square root, one division and a polynomial per angle; 2 or
+// 4 faces per instruction), (3) the sums N theta_k / |N|. Faces the vector pass cannot take
+// (N . N outside [1e-250, 1e250]: degenerate, tiny or huge) go through triangle_angle_scalar. One face's chain (loads, cross product, square root,
 // division, arctangent, scatter) is long; split in passes, consecutive faces are independent and
 // overlap, and the arctangents run as a vector loop. The third angle is pi minus the other two
 // (absolute error ~1e-16, invisible in a weight).
@@ -88,44 +90,50 @@ SHADETOOL_NORMALS_INLINE Vec3<T> scaled(const Vec3d& v, double scale) {
   else { (void)scale; return to<T>(v); }
 }
 
+// One triangle's angle contributions on the scalar path (faces whose N . N is out of the vector
+// pass's range: zero, tiny, huge or non-finite). Returns false for a degenerate face.
+template <class T, class Sink>
+inline bool triangle_angle_scalar(const double* P, const std::uint32_t* cv, std::size_t c, Sink&& sink) {
+  const Vec3d p0 = load_position(P, cv[c]), p1 = load_position(P, cv[c + 1]), p2 = load_position(P, cv[c + 2]);
+  const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
+  const Vec3d N = triangle_area_vector(P, cv[c], cv[c + 1], cv[c + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
+  const double len = checked_length(N);  // scales instead of squaring where N . N under/overflows
+  if (!(len > 0.0)) return false;
+  const Vec3d n = N * (1.0 / len);       // divisor checked
+  const double t0 = interior_angle(len, -dot(e0, e2)), t1 = interior_angle(len, -dot(e1, e0));
+  sink(c, cv[c], to<T>(n * t0));
+  sink(c + 1, cv[c + 1], to<T>(n * t1));
+  sink(c + 2, cv[c + 2], to<T>(n * (kPi - t0 - t1)));
+  return true;
+}
+
 template <class T, class Sink>
 inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
-  double Nx[kAngleBlock], Ny[kAngleBlock], Nz[kAngleBlock], len[kAngleBlock], cos0[kAngleBlock], cos1[kAngleBlock];
-  double w0[kAngleBlock], w1[kAngleBlock], w2[kAngleBlock];
+  alignas(32) double xyz[9][kAngleBlock];
+  alignas(32) double Nx[kAngleBlock], Ny[kAngleBlock], Nz[kAngleBlock], w0[kAngleBlock], w1[kAngleBlock], w2[kAngleBlock];
+  const double* const corners[9] = {xyz[0], xyz[1], xyz[2], xyz[3], xyz[4], xyz[5], xyz[6], xyz[7], xyz[8]};
   for (std::size_t b = f_begin; b < f_end; b += kAngleBlock) {
     const std::size_t count = std::min(kAngleBlock, f_end - b);
-    // (1) area vector (two shortest edges, as triangle_area_vector: the same products, bit for
-    // bit, taken from the edges already formed instead of reloading the apex), N . N, cos parts.
+    // (1) gather the corner positions into structure-of-arrays form
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
-      const Vec3d p0 = load_position(P, cv[c]), p1 = load_position(P, cv[c + 1]), p2 = load_position(P, cv[c + 2]);
-      const Vec3d E[3] = {p1 - p0, p2 - p1, p0 - p2};
-      const int k = apex_corner(dot(E[0], E[0]), dot(E[1], E[1]), dot(E[2], E[2]));
-      // apex 2: (p0 - p2) x (p1 - p2) = e1 x e2; apex 0: e2 x e0; apex 1: e0 x e1
-      Vec3d N = cross(E[k == 0 ? 2 : k - 1], E[k]);
-      double nn = dot(N, N);
-      if (!(nn >= 1e-250 && nn <= 1e250)) {  // rare: rescale by a power of two (exact) into range
-        const double m = std::fmax(std::fabs(N.x), std::fmax(std::fabs(N.y), std::fabs(N.z)));
-        if (m > 0.0 && std::isfinite(m)) {
-          const int e = std::ilogb(m);
-          N = {std::scalbn(N.x, -e), std::scalbn(N.y, -e), std::scalbn(N.z, -e)};
-          nn = dot(N, N);
-        }  // else zero, Inf or NaN: degenerate, recognised by the weights pass
+      for (int k = 0; k < 3; ++k) {
+        const double* p = P + 3 * std::size_t(cv[c + k]);
+        xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
       }
-      Nx[i] = N.x; Ny[i] = N.y; Nz[i] = N.z;
-      len[i] = std::sqrt(nn);  // 0, Inf or NaN for a degenerate face
-      cos0[i] = -dot(E[0], E[2]);
-      cos1[i] = -dot(E[1], E[0]);
     }
-    // (2) the weights theta_k / |N|, vectorised (interior_angles.h)
-    triangle_angle_weights(count, len, cos0, cos1, w0, w1, w2);
+    // (2) area vectors and weights, vectorised (interior_angles.h)
+    triangle_angle_block(count, corners, Nx, Ny, Nz, w0, w1, w2);
     // (3) the sums
     for (std::size_t i = 0; i < count; ++i) {
-      if (!(len[i] > 0.0 && len[i] <= std::numeric_limits<double>::max())) { ++degenerate; continue; }  // contributes nothing
       const std::size_t c = 3 * (b + i);
+      if (std::isnan(w0[i])) {  // out of the vector pass's range: scalar path
+        degenerate += !triangle_angle_scalar<T>(P, cv, c, sink);
+        continue;
+      }
       const Vec3d N{Nx[i], Ny[i], Nz[i]};
       sink(c, cv[c], to<T>(N * w0[i]));
       sink(c + 1, cv[c + 1], to<T>(N * w1[i]));

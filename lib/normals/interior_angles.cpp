@@ -2,17 +2,16 @@
 #include "normals/interior_angles.h"
 
 #include <cmath>
+#include <limits>
 
 namespace shadetool::normals_detail {
 
-// GCC: one clone for AVX2 and one for the baseline, picked at load time (ifunc). no-trapping-math:
-// the selects compare values that may be NaN, and under the default -ftrapping-math GCC keeps a
-// possibly-signalling comparison out of a vector select ("control flow in loop"); we never test
-// floating-point exception flags, and the values computed are the same either way.
+// GCC: one clone for AVX2 and one for the baseline, picked at load time (ifunc). This file is built
+// with -fno-math-errno -fno-trapping-math (CMakeLists.txt): a std::sqrt that may set errno, or a
+// possibly-signalling comparison feeding a select, counts as control flow and stops GCC from
+// vectorising; we never read errno or floating-point exception flags, and the values are the same.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define SHADETOOL_VECTOR_CLONES __attribute__((target_clones("avx2", "default"), optimize("no-trapping-math")))
-#elif defined(__GNUC__) && !defined(__clang__)
-#define SHADETOOL_VECTOR_CLONES __attribute__((optimize("no-trapping-math")))
+#define SHADETOOL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define SHADETOOL_VECTOR_CLONES
 #endif
@@ -71,6 +70,43 @@ void triangle_angle_weights(std::size_t n, const double* __restrict length, cons
     w0[i] = t0 * inv;
     w1[i] = t1 * inv;
     w2[i] = (kPi - t0 - t1) * inv;
+  }
+}
+
+SHADETOOL_VECTOR_CLONES
+void triangle_angle_block(std::size_t n, const double* const* corner_xyz, double* __restrict Nx,
+                          double* __restrict Ny, double* __restrict Nz, double* __restrict w0, double* __restrict w1,
+                          double* __restrict w2) {
+  const double *__restrict x0 = corner_xyz[0], *__restrict y0 = corner_xyz[1], *__restrict z0 = corner_xyz[2];
+  const double *__restrict x1 = corner_xyz[3], *__restrict y1 = corner_xyz[4], *__restrict z1 = corner_xyz[5];
+  const double *__restrict x2 = corner_xyz[6], *__restrict y2 = corner_xyz[7], *__restrict z2 = corner_xyz[8];
+  for (std::size_t i = 0; i < n; ++i) {
+    // edges e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2 and their squared lengths
+    const double e0x = x1[i] - x0[i], e0y = y1[i] - y0[i], e0z = z1[i] - z0[i];
+    const double e1x = x2[i] - x1[i], e1y = y2[i] - y1[i], e1z = z2[i] - z1[i];
+    const double e2x = x0[i] - x2[i], e2y = y0[i] - y2[i], e2z = z0[i] - z2[i];
+    const double l0 = e0x * e0x + e0y * e0y + e0z * e0z;
+    const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+    const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+    // the two shortest edges, as face_geometry.h's apex_corner / triangle_area_vector (same ties,
+    // same products, so the same bits): e0 longest -> e1 x e2; e1 longest -> e2 x e0; else e0 x e1
+    const bool k2 = (l0 >= l1) & (l0 >= l2), k0 = (l1 > l0) & (l1 >= l2);
+    const double ax = k2 ? e1x : (k0 ? e2x : e0x), ay = k2 ? e1y : (k0 ? e2y : e0y), az = k2 ? e1z : (k0 ? e2z : e0z);
+    const double bx = k2 ? e2x : (k0 ? e0x : e1x), by = k2 ? e2y : (k0 ? e0y : e1y), bz = k2 ? e2z : (k0 ? e0z : e1z);
+    const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+    const double nn = nx * nx + ny * ny + nz * nz;
+    // In range: |N| is the correctly rounded root and the weights follow. Out of range (or zero,
+    // Inf, NaN): weights NaN, the caller takes its scalar path for that face.
+    const double in = (nn >= 1e-250) & (nn <= 1e250) ? 1.0 : 0.0;
+    const double len = std::sqrt(in > 0.0 ? nn : 1.0);
+    const double inv = 1.0 / len;
+    const double cos0 = -(e0x * e2x + e0y * e2y + e0z * e2z), cos1 = -(e1x * e0x + e1y * e0y + e1z * e0z);
+    const double t0 = angle_of(len, cos0 * in), t1 = angle_of(len, cos1 * in);
+    const double flag = in > 0.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    Nx[i] = nx; Ny[i] = ny; Nz[i] = nz;
+    w0[i] = t0 * inv + flag;
+    w1[i] = t1 * inv + flag;
+    w2[i] = (kPi - t0 - t1) * inv + flag;
   }
 }
 

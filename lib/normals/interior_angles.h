@@ -49,4 +49,15 @@ void interior_angles(std::size_t n, const double* sin_part, const double* cos_pa
 void triangle_angle_weights(std::size_t n, const double* length, const double* cos0, const double* cos1,
                             double* w0, double* w1, double* w2);
 
+// The angle-weighted kernel's whole per-face computation for n triangles, vectorised: from corner
+// positions in structure-of-arrays form to the area vector and the three weights.
+// Inputs:  corner_xyz  9 arrays of n values: x, y, z of corner 0, then of corner 1, of corner 2
+// Outputs: Nx, Ny, Nz  area vector N = 2 A n from the two shortest edges (the same products as
+//                      face_geometry.h's triangle_area_vector, so the same bits)
+//          w0, w1, w2  theta_k / |N| (theta_2 = pi - theta_0 - theta_1), so that N w_k = theta_k n;
+//                      NaN when N . N lies outside [1e-250, 1e250] (zero-area, huge or tiny
+//                      faces, non-finite input): the caller handles that face on its scalar path.
+void triangle_angle_block(std::size_t n, const double* const* corner_xyz, double* Nx, double* Ny, double* Nz,
+                          double* w0, double* w1, double* w2);
+
 }  // namespace shadetool::normals_detail
