@@ -25,6 +25,7 @@
 #include "normals/corner_contributions.h"
 #include "normals/face_normals.h"
 #include "normals/interior_angle.h"
+#include "normals/normalise_sums.h"
 #include "normals/parallel.h"
 #include "normals/vertex_fallback.h"
 
@@ -217,13 +218,10 @@ CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision
   parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
     for (std::size_t v = v_begin; v < v_end; ++v) {
       for (std::uint32_t r = base[v]; r < base[v + 1]; ++r) {
-        const Vec3<T> s{sum[3 * std::size_t(r)], sum[3 * std::size_t(r) + 1], sum[3 * std::size_t(r) + 2]};
-        const T len = checked_length(s);
         double* o = &out.normals[3 * std::size_t(r)];
-        if (len > T(0)) {  // divisor checked
-          o[0] = double(s.x / len); o[1] = double(s.y / len); o[2] = double(s.z / len);
+        if (normalise_sum(double(sum[3 * std::size_t(r)]), double(sum[3 * std::size_t(r) + 1]),
+                          double(sum[3 * std::size_t(r) + 2]), o))
           continue;
-        }
         std::uint32_t in_group = ~0u, any = ~0u;
         std::size_t corners_in_row = 0;
         for (std::uint32_t i = vc.offset[v]; i < vc.offset[v + 1]; ++i) {

@@ -23,6 +23,7 @@
 
 #include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
+#include "normals/normalise_sums.h"
 #include "normals/parallel.h"
 #include "normals/vertex_fallback.h"
 
@@ -30,23 +31,6 @@ namespace shadetool {
 namespace {
 
 using namespace normals_detail;
-
-// Normalises sum[v] (T) into out[v] (double) for v in [v_begin, v_end); appends the vertices whose
-// sum cannot be normalised to `failed`. `sum` and `out` may be the same array (T = double).
-template <class T>
-void normalise_range(const T* sum, double* out, std::size_t v_begin, std::size_t v_end, std::vector<std::uint32_t>& failed) {
-  for (std::size_t v = v_begin; v < v_end; ++v) {
-    const Vec3<T> s{sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]};
-    const T len = checked_length(s);
-    if (len > T(0)) {  // divisor checked; divide (not multiply by 1/len): one rounding per component
-      out[3 * v] = double(s.x / len);
-      out[3 * v + 1] = double(s.y / len);
-      out[3 * v + 2] = double(s.z / len);
-    } else {
-      failed.push_back(std::uint32_t(v));
-    }
-  }
-}
 
 template <class T, Weighting W>
 void compute(const Mesh& mesh, Precision precision, VertexNormals& result) {
