@@ -61,15 +61,14 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 // overflows (coordinates beyond ~1e150) passes and makes the vertex sum infinite: that vertex
 // then gets vertex_normals' fallback.
 // Angle weighting for triangles, in blocks of kAngleBlock faces and three passes over each block:
-// (1) gather the corner positions (structure of arrays), (2) area vector N and weights
-// theta_k / |N| for the whole block by the vectorised triangle_angle_block (interior_angles.h:
+// (1) gather the corner positions (structure of arrays), (2) the contributions
+// N theta_k / |N| for the whole block by the vectorised triangle_angle_block (interior_angles.h:
 // edges, shortest pair, cross product, square root, one division and a polynomial per angle; 2 or
-// 4 faces per instruction), (3) the sums N theta_k / |N|. Faces the vector pass cannot take
+// 4 faces per instruction), (3) the sums. Faces the vector pass cannot take
 // (N . N outside [1e-250, 1e250]: degenerate, tiny or huge) go through triangle_angle_scalar. One face's chain (loads, cross product, square root,
 // division, arctangent, scatter) is long; split in passes, consecutive faces are independent and
 // overlap, and the arctangents run as a vector loop. The third angle is pi minus the other two
 // (absolute error ~1e-16, invisible in a weight).
-constexpr std::size_t kAngleBlock = 64;
 
 // A double contribution rounded to the accumulation type (no-op for double).
 template <class T>
@@ -112,9 +111,8 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
-  alignas(32) double xyz[9][kAngleBlock];
-  alignas(32) double Nx[kAngleBlock], Ny[kAngleBlock], Nz[kAngleBlock], w0[kAngleBlock], w1[kAngleBlock], w2[kAngleBlock];
-  const double* const corners[9] = {xyz[0], xyz[1], xyz[2], xyz[3], xyz[4], xyz[5], xyz[6], xyz[7], xyz[8]};
+  alignas(32) double xyz[9][kAngleBlock];  // kAngleBlock: interior_angles.h
+  alignas(32) double w[9][kAngleBlock];
   for (std::size_t b = f_begin; b < f_end; b += kAngleBlock) {
     const std::size_t count = std::min(kAngleBlock, f_end - b);
     // (1) gather the corner positions into structure-of-arrays form
@@ -125,19 +123,18 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
         xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
       }
     }
-    // (2) area vectors and weights, vectorised (interior_angles.h)
-    triangle_angle_block(count, corners, Nx, Ny, Nz, w0, w1, w2);
+    // (2) the contributions theta_k n, vectorised (interior_angles.h)
+    triangle_angle_block(count, &xyz[0][0], &w[0][0]);
     // (3) the sums
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
-      if (std::isnan(w0[i])) {  // out of the vector pass's range: scalar path
+      if (std::isnan(w[0][i])) {  // out of the vector pass's range: scalar path
         degenerate += !triangle_angle_scalar<T>(P, cv, c, sink);
         continue;
       }
-      const Vec3d N{Nx[i], Ny[i], Nz[i]};
-      sink(c, cv[c], to<T>(N * w0[i]));
-      sink(c + 1, cv[c + 1], to<T>(N * w1[i]));
-      sink(c + 2, cv[c + 2], to<T>(N * w2[i]));
+      sink(c, cv[c], to<T>(Vec3d{w[0][i], w[1][i], w[2][i]}));
+      sink(c + 1, cv[c + 1], to<T>(Vec3d{w[3][i], w[4][i], w[5][i]}));
+      sink(c + 2, cv[c + 2], to<T>(Vec3d{w[6][i], w[7][i], w[8][i]}));
     }
   }
   return degenerate;

@@ -19,30 +19,30 @@ namespace shadetool::normals_detail {
 namespace {
 
 constexpr double kPi = 3.141592653589793, kHalfPi = 1.5707963267948966, kQuarterPi = 0.7853981633974483;
-constexpr double kTanPi8 = 0.41421356237309503;  // tan(pi/8) = sqrt(2) - 1
+constexpr double kEighthPi = 0.39269908169872414;
+constexpr double kTanPi8 = 0.41421356237309503;     // tan(pi/8), the middle centre
+constexpr double kTanPi16 = 0.198912367379658;      // tan(pi/16), first interval's end
+constexpr double kTan3Pi16 = 0.6681786379192989;    // tan(3 pi/16), second interval's end
 
 // atan2(s, c) for s >= 0, steps 1-4 of interior_angles.h. Every value is computed
-// unconditionally and then selected, so that a loop calling it has no control flow and vectorises
-// (a conditional floating-point operation would count as control flow).
+// unconditionally and then selected, so that a loop calling it has no control flow and vectorises.
 inline __attribute__((always_inline)) double angle_of(double s, double c) {
-  // (-1)^k / (2k + 1), k = 0 .. 15
+  // (-1)^k / (2k + 1), k = 0 .. 9
   constexpr double c0 = 1.0, c1 = -1.0 / 3, c2 = 1.0 / 5, c3 = -1.0 / 7, c4 = 1.0 / 9, c5 = -1.0 / 11,
-                   c6 = 1.0 / 13, c7 = -1.0 / 15, c8 = 1.0 / 17, c9 = -1.0 / 19, c10 = 1.0 / 21, c11 = -1.0 / 23,
-                   c12 = 1.0 / 25, c13 = -1.0 / 27, c14 = 1.0 / 29, c15 = -1.0 / 31;
+                   c6 = 1.0 / 13, c7 = -1.0 / 15, c8 = 1.0 / 17, c9 = -1.0 / 19;
   const double a = std::fabs(c);
-  const double num = s < a ? s : a, den = s < a ? a : s;
-  const double diff = num - den, total = num + den, den_or_one = den > 0.0 ? den : 1.0;
-  const bool big = num > kTanPi8 * den;
-  // den == 0 only when num == 0 too: x = 0 / 1 (divisor checked)
-  const double x = (big ? diff : num) / (big ? total : den_or_one), z = x * x;
-  // Estrin's scheme: four levels of independent products instead of Horner's 15 dependent
-  // steps (the loop is otherwise latency-bound).
+  const double num = s < a ? s : a, den = s < a ? a : s;  // t = num / den in [0, 1]
+  // centre tan(k pi/8), k = 0, 1, 2, nearest to t: x = (t - centre) / (1 + t centre)
+  const bool k1 = num > kTanPi16 * den, k2 = num > kTan3Pi16 * den;
+  const double centre = k2 ? 1.0 : (k1 ? kTanPi8 : 0.0), base = k2 ? kQuarterPi : (k1 ? kEighthPi : 0.0);
+  const double d = den + centre * num;
+  // d == 0 only when num == den == 0 (a degenerate corner): x = 0 / 1 (divisor checked)
+  const double x = (num - centre * den) / (d > 0.0 ? d : 1.0), z = x * x;
+  // Estrin's scheme: independent products instead of Horner's dependent chain
   const double z2 = z * z, z4 = z2 * z2, z8 = z4 * z4;
-  const double q0 = c0 + c1 * z, q1 = c2 + c3 * z, q2 = c4 + c5 * z, q3 = c6 + c7 * z;
-  const double q4 = c8 + c9 * z, q5 = c10 + c11 * z, q6 = c12 + c13 * z, q7 = c14 + c15 * z;
-  const double r0 = q0 + q1 * z2, r1 = q2 + q3 * z2, r2 = q4 + q5 * z2, r3 = q6 + q7 * z2;
-  const double p = (r0 + r1 * z4) + (r2 + r3 * z4) * z8;
-  const double t0 = (big ? kQuarterPi : 0.0) + x * p;
+  const double q0 = c0 + c1 * z, q1 = c2 + c3 * z, q2 = c4 + c5 * z, q3 = c6 + c7 * z, q4 = c8 + c9 * z;
+  const double p = (q0 + q1 * z2) + (q2 + q3 * z2) * z4 + q4 * z8;
+  const double t0 = base + x * p;
   const double t1 = s > a ? kHalfPi - t0 : t0;
   return c < 0.0 ? kPi - t1 : t1;
 }
@@ -74,12 +74,14 @@ void triangle_angle_weights(std::size_t n, const double* __restrict length, cons
 }
 
 SHADETOOL_VECTOR_CLONES
-void triangle_angle_block(std::size_t n, const double* const* corner_xyz, double* __restrict Nx,
-                          double* __restrict Ny, double* __restrict Nz, double* __restrict w0, double* __restrict w1,
-                          double* __restrict w2) {
-  const double *__restrict x0 = corner_xyz[0], *__restrict y0 = corner_xyz[1], *__restrict z0 = corner_xyz[2];
-  const double *__restrict x1 = corner_xyz[3], *__restrict y1 = corner_xyz[4], *__restrict z1 = corner_xyz[5];
-  const double *__restrict x2 = corner_xyz[6], *__restrict y2 = corner_xyz[7], *__restrict z2 = corner_xyz[8];
+void triangle_angle_block(std::size_t n, const double* __restrict corner_xyz, double* __restrict contribution) {
+  // Rows kAngleBlock apart (a compile-time distance: the vectoriser sees that rows do not overlap).
+  constexpr std::size_t B = kAngleBlock;
+  const double *x0 = corner_xyz, *y0 = x0 + B, *z0 = y0 + B, *x1 = z0 + B, *y1 = x1 + B, *z1 = y1 + B;
+  const double *x2 = z1 + B, *y2 = x2 + B, *z2 = y2 + B;
+  double *c0x = contribution, *c0y = c0x + B, *c0z = c0y + B, *c1x = c0z + B, *c1y = c1x + B, *c1z = c1y + B;
+  double *c2x = c1z + B, *c2y = c2x + B, *c2z = c2y + B;
+  if (n > B) n = B;
   for (std::size_t i = 0; i < n; ++i) {
     // edges e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2 and their squared lengths
     const double e0x = x1[i] - x0[i], e0y = y1[i] - y0[i], e0z = z1[i] - z0[i];
@@ -96,17 +98,17 @@ void triangle_angle_block(std::size_t n, const double* const* corner_xyz, double
     const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
     const double nn = nx * nx + ny * ny + nz * nz;
     // In range: |N| is the correctly rounded root and the weights follow. Out of range (or zero,
-    // Inf, NaN): weights NaN, the caller takes its scalar path for that face.
+    // Inf, NaN): contributions NaN, the caller takes its scalar path for that face.
     const double in = (nn >= 1e-250) & (nn <= 1e250) ? 1.0 : 0.0;
     const double len = std::sqrt(in > 0.0 ? nn : 1.0);
     const double inv = 1.0 / len;
     const double cos0 = -(e0x * e2x + e0y * e2y + e0z * e2z), cos1 = -(e1x * e0x + e1y * e0y + e1z * e0z);
     const double t0 = angle_of(len, cos0 * in), t1 = angle_of(len, cos1 * in);
     const double flag = in > 0.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
-    Nx[i] = nx; Ny[i] = ny; Nz[i] = nz;
-    w0[i] = t0 * inv + flag;
-    w1[i] = t1 * inv + flag;
-    w2[i] = (kPi - t0 - t1) * inv + flag;
+    const double w0 = t0 * inv + flag, w1 = t1 * inv + flag, w2 = (kPi - t0 - t1) * inv + flag;
+    c0x[i] = nx * w0; c0y[i] = ny * w0; c0z[i] = nz * w0;
+    c1x[i] = nx * w1; c1y[i] = ny * w1; c1z[i] = nz * w1;
+    c2x[i] = nx * w2; c2y[i] = ny * w2; c2z[i] = nz * w2;
   }
 }
 

@@ -11,16 +11,18 @@
 // vectorises the loop at -O3 with the default x86-64 baseline (SSE2, 2 lanes) and, on processors
 // that have it, AVX2 (4 lanes; GCC target_clones, chosen once at load time)):
 //   1. octant: num = min(s, |c|), den = max(s, |c|), t = num / den in [0, 1];
-//   2. t > tan(pi/8): atan(t) = pi/4 + atan(x), x = (t - 1)/(t + 1) = (num - den)/(num + den);
-//      else x = t = num / den; so |x| <= tan(pi/8) = 0.41421 with a single division either way
-//      (the addition formula for arctangent; Muller, "Elementary Functions", 3rd ed., ch. 5);
-//   3. atan(x) = x sum_{k=0}^{15} (-1)^k z^k / (2k + 1), z = x^2 <= 0.171573 (Taylor, Estrin);
+//   2. centre: atan(t) = k pi/8 + atan(x), x = (t - tan(k pi/8)) / (1 + t tan(k pi/8)), with k = 0,
+//      1 or 2 the nearest centre (t beyond tan(pi/16), tan(3 pi/16)), computed as
+//      (num - centre den) / (den + centre num): one division; |x| <= tan(pi/16) = 0.19891 (the
+//      addition formula for arctangent; Muller, "Elementary Functions", 3rd ed., ch. 5);
+//   3. atan(x) = x sum_{k=0}^{9} (-1)^k z^k / (2k + 1), z = x^2 <= 0.039566 (Taylor, Estrin);
 //   4. theta = pi/2 - . where s > |c|, then pi - . where c < 0.
 // Error: the series alternates with decreasing terms, so its truncation error is below the first
-// omitted term, x z^16 / 33 <= 1.71e-14 |x|, i.e. a relative error below 1.8e-14 in atan(x)
-// (atan(x) >= 0.95 x here); rounding in steps 1-4 adds a few ulp. Measured against std::atan2:
-// relative error <= 1e-13 (tests/normals/interior_angle.cpp asserts it).
-// Why that is invisible in a vertex normal: the angle-weighted sum S = sum_i w_i n_i (unit n_i);
+// omitted term, |x| z^10 / 21 <= 4.5e-16 |x|; the centre tan(pi/8) is rounded, which shifts x by
+// ~1e-16 absolute (an angle error ~1e-16 rad on an angle >= pi/16); rounding in steps 1-4 adds a
+// few ulp. Measured against std::atan2: relative error <= 1e-13 asserted
+// (tests/normals/interior_angle.cpp), a few 1e-16 observed.
+// Why even 1e-13 is invisible in a vertex normal: the angle-weighted sum S = sum_i w_i n_i (unit n_i);
 // weights perturbed by relative delta change S by at most delta sum_i w_i, so the normal turns by
 // at most delta (sum_i w_i) / |S| rad. Unless the terms nearly cancel (|S| < 1e-3 sum_i w_i, a
 // vertex whose faces fold back over each other), that is < 1e-13 * 1e3 = 1e-10 rad = 6e-9 deg,
@@ -50,14 +52,18 @@ void triangle_angle_weights(std::size_t n, const double* length, const double* c
                             double* w0, double* w1, double* w2);
 
 // The angle-weighted kernel's whole per-face computation for n triangles, vectorised: from corner
-// positions in structure-of-arrays form to the area vector and the three weights.
-// Inputs:  corner_xyz  9 arrays of n values: x, y, z of corner 0, then of corner 1, of corner 2
-// Outputs: Nx, Ny, Nz  area vector N = 2 A n from the two shortest edges (the same products as
-//                      face_geometry.h's triangle_area_vector, so the same bits)
-//          w0, w1, w2  theta_k / |N| (theta_2 = pi - theta_0 - theta_1), so that N w_k = theta_k n;
-//                      NaN when N . N lies outside [1e-250, 1e250] (zero-area, huge or tiny
-//                      faces, non-finite input): the caller handles that face on its scalar path.
-void triangle_angle_block(std::size_t n, const double* const* corner_xyz, double* Nx, double* Ny, double* Nz,
-                          double* w0, double* w1, double* w2);
+// positions in structure-of-arrays form to the three corners' contributions theta_k n.
+// Inputs:  n             how many triangles, at most kAngleBlock
+//          corner_xyz    9 rows of kAngleBlock values (first n used): x, y, z of corner 0, then of
+//                        corner 1, of corner 2
+// Outputs: contribution  9 rows of kAngleBlock values (first n written): x, y, z of theta_0 n,
+//                        then theta_1 n, theta_2 n,
+//                        computed as N (theta_k / |N|) with N = 2 A n from the two shortest edges
+//                        (the same products as face_geometry.h's triangle_area_vector, so the same
+//                        bits) and theta_2 = pi - theta_0 - theta_1. NaN when N . N lies outside
+//                        [1e-250, 1e250] (zero-area, huge or tiny faces, non-finite input): the
+//                        caller handles that face on its scalar path.
+constexpr std::size_t kAngleBlock = 64;
+void triangle_angle_block(std::size_t n, const double* corner_xyz, double* contribution);
 
 }  // namespace shadetool::normals_detail
