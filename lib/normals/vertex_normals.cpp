@@ -21,6 +21,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "core/error.h"
 #include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
 #include "normals/normalise_sums.h"
@@ -32,27 +33,46 @@ namespace {
 
 using namespace normals_detail;
 
+// plan: the caller's cached chunk plan, or null (then made here, beside zeroing the sums).
 template <class T, Weighting W>
-void compute(const Mesh& mesh, Precision precision, VertexNormals& result) {
+void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, VertexNormals& result) {
   const std::size_t V = mesh.num_vertices();
   result.fallback_vertices = result.degenerate_faces = 0;
   // In double the output array itself accumulates the sums (normalised in place afterwards): no
-  // second #V by 3 array to allocate, zero and copy. In float a float accumulator is used.
-  // Zeroing (and first-touching) the arrays is serial; it runs beside the chunk plan. An output
-  // array that already has the capacity (a caller reusing `result`) is reused, not reallocated.
+  // second #V by 3 array to allocate, zero and copy. In float a float accumulator is used. An
+  // output array that already has the capacity (a caller reusing `result`) is reused, not
+  // reallocated. Without a cached plan, the plan is made beside the (serial) zeroing; with one,
+  // the zeroing is split over the threads.
   std::vector<float> float_sum;
-  ChunkPlan plan;
-  auto allocate = [&] {
-    result.normals.assign(3 * V, 0.0);
-    if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * V, 0.0f);
-  };
-  auto make_plan = [&] { plan = plan_chunks<false>(mesh, nullptr, V); };
-  if (mesh.num_faces() < kSerialBelow) {
-    allocate();
-    make_plan();
+  ChunkPlan own_plan;
+  const bool big = mesh.num_faces() >= kSerialBelow;
+  if (cached) {
+    result.normals.resize(3 * V);
+    if constexpr (!std::is_same_v<T, double>) float_sum.resize(3 * V);
+    constexpr std::size_t kZeroBlock = std::size_t(1) << 16;  // values
+    const std::size_t n = 3 * V, blocks = (n + kZeroBlock - 1) / kZeroBlock;
+    auto zero = [&](std::size_t b) {
+      const std::size_t begin = b * kZeroBlock, end = std::min(n, begin + kZeroBlock);
+      std::fill(result.normals.begin() + std::ptrdiff_t(begin), result.normals.begin() + std::ptrdiff_t(end), 0.0);
+      if constexpr (!std::is_same_v<T, double>)
+        std::fill(float_sum.begin() + std::ptrdiff_t(begin), float_sum.begin() + std::ptrdiff_t(end), 0.0f);
+    };
+    if (big && cached->K > 0) parallel_blocks(blocks, zero);
+    else for (std::size_t b = 0; b < blocks; ++b) zero(b);
   } else {
-    tbb::parallel_invoke(allocate, make_plan);
+    auto allocate = [&] {
+      result.normals.assign(3 * V, 0.0);
+      if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * V, 0.0f);
+    };
+    auto make_plan = [&] { own_plan = plan_chunks<false>(mesh, nullptr, V); };
+    if (!big) {
+      allocate();
+      make_plan();
+    } else {
+      tbb::parallel_invoke(allocate, make_plan);
+    }
   }
+  const ChunkPlan& plan = cached ? *cached : own_plan;
   T* sum;
   if constexpr (std::is_same_v<T, double>) sum = result.normals.data();
   else sum = float_sum.data();
@@ -87,7 +107,19 @@ void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, 
   dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    compute<T, W>(mesh, precision, out);
+    compute<T, W>(mesh, nullptr, precision, out);
+    return 0;
+  });
+}
+
+void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
+                    VertexNormals& out) {
+  if (!plan.fits(mesh))
+    throw Error("vertex_normals: the plan was built for a mesh with other vertex, face or corner counts");
+  dispatch(weighting, precision, [&](auto t, auto w) {
+    using T = decltype(t);
+    constexpr Weighting W = decltype(w)::value;
+    compute<T, W>(mesh, &plan.chunks(), precision, out);
     return 0;
   });
 }

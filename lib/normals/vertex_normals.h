@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "normals/vertex_normals_plan.h"
 #include "normals/weighting.h"
 
 namespace shadetool {
@@ -42,5 +43,11 @@ VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting = Weighting::
 // OpenMesh's update_normals writes into its preallocated normal property). Every field of `out`
 // is overwritten.
 void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out);
+
+// The same with a plan of the mesh's connectivity made once (vertex_normals_plan.h): repeated calls
+// on 2+ threads skip the per-call planning of the parallel sum. Same result bit for bit. Throws
+// Error when the plan was built for other vertex/face/corner counts.
+void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
+                    VertexNormals& out);
 
 }  // namespace shadetool

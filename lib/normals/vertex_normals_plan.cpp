@@ -1,0 +1,16 @@
+// vertex_normals_plan.cpp: see vertex_normals_plan.h.
+#include "normals/vertex_normals_plan.h"
+
+#include "normals/accumulate_by_vertex.h"
+
+namespace shadetool {
+
+VertexNormalsPlan::VertexNormalsPlan(const Mesh& mesh)
+    : vertices_(mesh.num_vertices()), faces_(mesh.num_faces()), corners_(mesh.num_corners()),
+      chunks_(std::make_shared<normals_detail::ChunkPlan>(normals_detail::plan_chunks<false>(mesh, nullptr, mesh.num_vertices()))) {}
+
+bool VertexNormalsPlan::fits(const Mesh& mesh) const {
+  return chunks_ && mesh.num_vertices() == vertices_ && mesh.num_faces() == faces_ && mesh.num_corners() == corners_;
+}
+
+}  // namespace shadetool
