@@ -18,7 +18,9 @@
 // is appended to its chunk's side list. Pass 4 adds the side lists chunk by chunk, in order, on
 // one thread, so shared vertices too receive their terms in ascending corner order.
 // Faces stored with locality (every mesh file we have seen) share only the vertices along chunk
-// borders, so pass 4 is tiny. When the faces are in random order (more than a quarter of the
+// borders, so pass 4 is tiny. A reused plan (VertexNormalsPlan) also lists each chunk's border
+// faces (flag_border_faces), so that pass 3 tests rows only there and runs every other face
+// through the same plain sink as the serial loop. When the faces are in random order (more than a quarter of the
 // corners would go to side lists) the chunks are abandoned and the serial loop runs instead.
 // Small meshes (< kSerialBelow faces) and one-thread runs take the serial loop directly.
 // Memory: 3 bytes per vertex plus the side lists. plan_chunks (passes 1, 2) and
@@ -45,6 +47,10 @@ namespace shadetool::normals_detail {
 struct ChunkPlan {
   std::size_t K = 0;
   std::unique_ptr<std::atomic<std::uint8_t>[]> shared;
+  // Optional (flag_border_faces): per chunk, ascending, the faces with a corner in a shared row.
+  // With them, pass 3 runs every other face through the serial loop's plain sink (no per-corner
+  // test); only these faces take the testing sink.
+  std::vector<std::vector<std::uint32_t>> border_faces;
 };
 
 // Rows are target[c] (Target = true; corner normals use it with target = the corner's smooth
@@ -91,6 +97,24 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
   return plan;
 }
 
+// Fills plan.border_faces (a third pass over the corners; worth it for a plan that is reused).
+template <bool Target>
+void flag_border_faces(const Mesh& mesh, const std::uint32_t* target, ChunkPlan& plan) {
+  const std::size_t F = mesh.num_faces(), K = plan.K;
+  if (K == 0) return;
+  const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
+  plan.border_faces.assign(K, {});
+  tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
+    auto& list = plan.border_faces[k];
+    for (std::size_t f = F * k / K, e = F * (k + 1) / K; f < e; ++f) {
+      bool border = false;
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+        border = border || plan.shared[cv[c]].load(std::memory_order_relaxed);
+      if (border) list.push_back(std::uint32_t(f));
+    }
+  });
+}
+
 // Passes 3 and 4 (sum: #rows by 3, zero on entry). Returns the sum of contribute's counts.
 template <bool Target, class T, class Contribute>
 std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const std::uint32_t* target,
@@ -111,9 +135,13 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
   std::vector<std::vector<Term>> side(K);
   std::vector<std::size_t> counts(K, 0);
   const std::atomic<std::uint8_t>* shared = plan.shared.get();
+  auto direct = [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
+    T* o = s + 3 * std::size_t(row(c, v));
+    o[0] += n.x; o[1] += n.y; o[2] += n.z;
+  };
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     auto& list = side[k];
-    counts[k] = contribute(F * k / K, F * (k + 1) / K, [&](std::size_t c, std::uint32_t vertex, const Vec3<T>& n) {
+    auto testing = [&](std::size_t c, std::uint32_t vertex, const Vec3<T>& n) {
       const std::uint32_t v = row(c, vertex);
       if (shared[v].load(std::memory_order_relaxed)) {
         list.push_back({v, n.x, n.y, n.z});
@@ -121,7 +149,22 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
         T* o = s + 3 * std::size_t(v);
         o[0] += n.x; o[1] += n.y; o[2] += n.z;
       }
-    });
+    };
+    const std::size_t f_begin = F * k / K, f_end = F * (k + 1) / K;
+    if (plan.border_faces.empty()) {
+      counts[k] = contribute(f_begin, f_end, testing);
+    } else {
+      // Faces in order: runs without a shared row through the plain sink, border faces through
+      // the testing one (the order of every row's terms is the same as above).
+      std::size_t n = 0, f = f_begin;
+      for (const std::uint32_t b : plan.border_faces[k]) {
+        if (b > f) n += contribute(f, std::size_t(b), direct);
+        n += contribute(std::size_t(b), std::size_t(b) + 1, testing);
+        f = std::size_t(b) + 1;
+      }
+      if (f < f_end) n += contribute(f, f_end, direct);
+      counts[k] = n;
+    }
   });
   // Pass 4: shared rows, chunk by chunk in order.
   for (const auto& list : side)

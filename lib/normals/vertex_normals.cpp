@@ -64,7 +64,13 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
       result.normals.assign(3 * V, 0.0);
       if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * V, 0.0f);
     };
-    auto make_plan = [&] { own_plan = plan_chunks<false>(mesh, nullptr, V); };
+    // Without a cached plan, planning the parallel sum (two passes over the corners) costs about
+    // what the area-weighted kernel itself costs, so on 2 threads it would be slower than the
+    // serial loop (measured: bench/normals/results/notes.md): area stays serial; the costlier
+    // weightings plan and split. With a VertexNormalsPlan every weighting splits.
+    auto make_plan = [&] {
+      if constexpr (W != Weighting::Area) own_plan = plan_chunks<false>(mesh, nullptr, V);
+    };
     if (!big) {
       allocate();
       make_plan();
