@@ -47,7 +47,8 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Calls sink(corner, vertex, contribution) for every corner of the triangles in [f_begin, f_end)
 // whose area vector is valid. Requires mesh.all_triangles() (corner = 3 f + k).
-// Returns the number of degenerate faces skipped.
+// Returns the number of degenerate faces skipped. rows (optional): the caller's per-vertex sums
+// (3 values per vertex), prefetched ahead of the sink's additions (kPrefetchFaces).
 //
 // Which cross product, per weighting (e_a x e_b has rounding error ~ eps |e_a| |e_b|, i.e.
 // relative error ~ eps / sin(angle between them)):
@@ -69,6 +70,24 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 // division, arctangent, scatter) is long; split in passes, consecutive faces are independent and
 // overlap, and the arctangents run as a vector loop. The third angle is pi minus the other two
 // (absolute error ~1e-16, invisible in a weight).
+
+// Software prefetch, kPrefetchFaces faces ahead, of the positions a triangle loop will read and
+// (when the caller passes its per-vertex sums, `rows`, 3 values per vertex) of the sums it will
+// add to. Measured on the 1M-triangle irregular sphere: the area-weighted loop 6.5 -> 4.5 ms
+// (the hardware prefetchers do not follow the corner indices). Only a hint: no effect on results.
+constexpr std::size_t kPrefetchFaces = 64;
+
+template <class T>
+SHADETOOL_NORMALS_INLINE void prefetch_face(const double* P, const std::uint32_t* corners, const T* rows) {
+#if defined(__GNUC__)
+  for (int k = 0; k < 3; ++k) {
+    __builtin_prefetch(P + 3 * std::size_t(corners[k]));
+    if (rows) __builtin_prefetch(rows + 3 * std::size_t(corners[k]), 1);
+  }
+#else
+  (void)P; (void)corners; (void)rows;
+#endif
+}
 
 // A double contribution rounded to the accumulation type (no-op for double).
 template <class T>
@@ -107,7 +126,8 @@ inline bool triangle_angle_scalar(const double* P, const std::uint32_t* cv, std:
 }
 
 template <class T, class Sink>
-inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink) {
+inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
+                                                const T* rows = nullptr) {
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
@@ -118,6 +138,7 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
     // (1) gather the corner positions into structure-of-arrays form
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
+      if (b + i + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, nullptr);
       for (int k = 0; k < 3; ++k) {
         const double* p = P + 3 * std::size_t(cv[c + k]);
         xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
@@ -128,6 +149,7 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
     // (3) the sums
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
+      if (rows && b + i + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, rows);
       if (std::isnan(w[0][i])) {  // out of the vector pass's range: scalar path
         degenerate += !triangle_angle_scalar<T>(P, cv, c, sink);
         continue;
@@ -142,16 +164,17 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
 
 template <class T, Weighting W, class Sink>
 inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
-                                          double scale = 1.0) {
+                                          double scale = 1.0, const T* rows = nullptr) {
   if constexpr (W == Weighting::Angle) {
     (void)scale;
-    return triangle_angle_contributions<T>(mesh, f_begin, f_end, sink);
+    return triangle_angle_contributions<T>(mesh, f_begin, f_end, sink, rows);
   } else {
     std::size_t degenerate = 0;
     const double* P = mesh.positions.data();
     const std::uint32_t* cv = mesh.corner_vertex.data();
     for (std::size_t f = f_begin; f < f_end; ++f) {
       const std::size_t c = 3 * f;
+      if (f + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, rows);
       const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
       const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
       if constexpr (W == Weighting::Area) {

@@ -82,6 +82,9 @@ void triangle_angle_block(std::size_t n, const double* __restrict corner_xyz, do
   double *c0x = contribution, *c0y = c0x + B, *c0z = c0y + B, *c1x = c0z + B, *c1y = c1x + B, *c1z = c1y + B;
   double *c2x = c1z + B, *c2y = c2x + B, *c2z = c2y + B;
   if (n > B) n = B;
+  // Two loops over the block, so that each holds fewer live values (fewer register spills):
+  // (a) geometry: area vector, |N|, cos parts; (b) angles and contributions.
+  alignas(32) double Nx[B], Ny[B], Nz[B], L[B], C0[B], C1[B];
   for (std::size_t i = 0; i < n; ++i) {
     // edges e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2 and their squared lengths
     const double e0x = x1[i] - x0[i], e0y = y1[i] - y0[i], e0z = z1[i] - z0[i];
@@ -97,15 +100,31 @@ void triangle_angle_block(std::size_t n, const double* __restrict corner_xyz, do
     const double bx = k2 ? e2x : (k0 ? e0x : e1x), by = k2 ? e2y : (k0 ? e0y : e1y), bz = k2 ? e2z : (k0 ? e0z : e1z);
     const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
     const double nn = nx * nx + ny * ny + nz * nz;
-    // In range: |N| is the correctly rounded root and the weights follow. Out of range (or zero,
-    // Inf, NaN): contributions NaN, the caller takes its scalar path for that face.
-    const double in = (nn >= 1e-250) & (nn <= 1e250) ? 1.0 : 0.0;
-    const double len = std::sqrt(in > 0.0 ? nn : 1.0);
-    const double inv = 1.0 / len;
-    const double cos0 = -(e0x * e2x + e0y * e2y + e0z * e2z), cos1 = -(e1x * e0x + e1y * e0y + e1z * e0z);
-    const double t0 = angle_of(len, cos0 * in), t1 = angle_of(len, cos1 * in);
-    const double flag = in > 0.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    // In range: |N| is the correctly rounded root. Out of range (or zero, Inf, NaN): L = NaN, and
+    // the contributions come out NaN: the caller takes its scalar path for that face.
+    const bool in = (nn >= 1e-250) & (nn <= 1e250);
+    Nx[i] = nx; Ny[i] = ny; Nz[i] = nz;
+    L[i] = in ? std::sqrt(in ? nn : 1.0) : std::numeric_limits<double>::quiet_NaN();
+    C0[i] = in ? -(e0x * e2x + e0y * e2y + e0z * e2z) : 0.0;
+    C1[i] = in ? -(e1x * e0x + e1y * e0y + e1z * e0z) : 0.0;
+  }
+  alignas(32) double T0[B], T1[B];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double s = L[i] > 0.0 ? L[i] : 1.0;  // NaN (out of range) -> 1: harmless, flagged below
+    T0[i] = angle_of(s, C0[i]);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const double s = L[i] > 0.0 ? L[i] : 1.0;
+    T1[i] = angle_of(s, C1[i]);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const double len = L[i];                     // NaN marks a face out of range
+    const double s = len > 0.0 ? len : 1.0;      // > 0 (divisor checked)
+    const double inv = 1.0 / s;
+    const double t0 = T0[i], t1 = T1[i];
+    const double flag = len > 0.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
     const double w0 = t0 * inv + flag, w1 = t1 * inv + flag, w2 = (kPi - t0 - t1) * inv + flag;
+    const double nx = Nx[i], ny = Ny[i], nz = Nz[i];
     c0x[i] = nx * w0; c0y[i] = ny * w0; c0z[i] = nz * w0;
     c1x[i] = nx * w1; c1y[i] = ny * w1; c1z[i] = nz * w1;
     c2x[i] = nx * w2; c2y[i] = ny * w2; c2z[i] = nz * w2;

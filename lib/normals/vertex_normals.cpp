@@ -89,7 +89,7 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
   const double scale = contribution_scale<T, W>(mesh);
   result.degenerate_faces = accumulate_by_target<false, T>(mesh, plan, nullptr,
       [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
-        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale)
+        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale, static_cast<const T*>(sum))
                          : polygon_contributions<T, W>(mesh, f_begin, f_end, sink, scale);
       }, sum);
 
