@@ -11,7 +11,7 @@ namespace shadetool::normals_detail {
 // possibly-signalling comparison feeding a select, counts as control flow and stops GCC from
 // vectorising; we never read errno or floating-point exception flags, and the values are the same.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define SHADETOOL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#define SHADETOOL_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define SHADETOOL_VECTOR_CLONES
 #endif
