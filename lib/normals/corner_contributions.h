@@ -37,7 +37,7 @@
 #include "core/mesh.h"
 #include "normals/face_geometry.h"
 #include "normals/interior_angle.h"
-#include "normals/interior_angles.h"
+#include "normals/triangle_blocks.h"
 #include "normals/weighting.h"
 
 namespace shadetool::normals_detail {
@@ -61,15 +61,6 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 // Zero-area check: dot(N, N) > 0 is false for a zero and for a NaN vector. A vector that
 // overflows (coordinates beyond ~1e150) passes and makes the vertex sum infinite: that vertex
 // then gets vertex_normals' fallback.
-// Angle weighting for triangles, in blocks of kAngleBlock faces and three passes over each block:
-// (1) gather the corner positions (structure of arrays), (2) the contributions
-// N theta_k / |N| for the whole block by the vectorised triangle_angle_block (interior_angles.h:
-// edges, shortest pair, cross product, square root, one division and a polynomial per angle; 2 or
-// 4 faces per instruction), (3) the sums. Faces the vector pass cannot take
-// (N . N outside [1e-250, 1e250]: degenerate, tiny or huge) go through triangle_angle_scalar. One face's chain (loads, cross product, square root,
-// division, arctangent, scatter) is long; split in passes, consecutive faces are independent and
-// overlap, and the arctangents run as a vector loop. The third angle is pi minus the other two
-// (absolute error ~1e-16, invisible in a weight).
 
 // Software prefetch, kPrefetchFaces faces ahead, of the positions a triangle loop will read and
 // (when the caller passes its per-vertex sums, `rows`, 3 values per vertex) of the sums it will
@@ -108,34 +99,70 @@ SHADETOOL_NORMALS_INLINE Vec3<T> scaled(const Vec3d& v, double scale) {
   else { (void)scale; return to<T>(v); }
 }
 
-// One triangle's angle contributions on the scalar path (faces whose N . N is out of the vector
-// pass's range: zero, tiny, huge or non-finite). Returns false for a degenerate face.
-template <class T, class Sink>
-inline bool triangle_angle_scalar(const double* P, const std::uint32_t* cv, std::size_t c, Sink&& sink) {
-  const Vec3d p0 = load_position(P, cv[c]), p1 = load_position(P, cv[c + 1]), p2 = load_position(P, cv[c + 2]);
+// One triangle's contributions on the scalar path: the faces the vector pass does not take
+// (triangle_blocks.h: N . N outside [1e-250, 1e250], or for max l0 l1 l2 outside the normal
+// range). The same formulas, with every length taken without over- or underflow. Returns false
+// for a degenerate face (zero or non-finite area vector), which contributes nothing.
+template <class T, Weighting W, class Sink>
+inline bool triangle_scalar(const double* P, const std::uint32_t* cv, std::size_t c, Sink&& sink, double scale) {
+  const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
+  const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
   const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
-  const Vec3d N = triangle_area_vector(P, cv[c], cv[c + 1], cv[c + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
-  const double len = checked_length(N);  // scales instead of squaring where N . N under/overflows
-  if (!(len > 0.0)) return false;
-  const Vec3d n = N * (1.0 / len);       // divisor checked
-  const double t0 = interior_angle(len, -dot(e0, e2)), t1 = interior_angle(len, -dot(e1, e0));
-  sink(c, cv[c], to<T>(n * t0));
-  sink(c + 1, cv[c + 1], to<T>(n * t1));
-  sink(c + 2, cv[c + 2], to<T>(n * (kPi - t0 - t1)));
-  return true;
+  const double l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
+  const Vec3d N = triangle_area_vector(P, v0, v1, v2, l0, l1, l2);
+  if constexpr (W == Weighting::Max) {
+    if (!(dot(N, N) > 0.0)) return false;
+    const double q = l0 * l1 * l2;
+    if (q > std::numeric_limits<double>::min() && q < std::numeric_limits<double>::max()) {  // divisor checked
+      const double inv = 1.0 / q;
+      sink(c, v0, scaled<T, W>(N * (l1 * inv), scale));
+      sink(c + 1, v1, scaled<T, W>(N * (l2 * inv), scale));
+      sink(c + 2, v2, scaled<T, W>(N * (l0 * inv), scale));
+    } else {  // the product under- or overflows: per corner, each divisor checked
+      const double d[3] = {l0 * l2, l1 * l0, l2 * l1};
+      const std::uint32_t v[3] = {v0, v1, v2};
+      for (int k = 0; k < 3; ++k) {
+        if (!(d[k] > 0.0)) continue;
+        const Vec3d w = N * (1.0 / d[k]);
+        if (is_finite(w)) sink(c + k, v[k], scaled<T, W>(w, scale));
+      }
+    }
+    return true;
+  } else {
+    (void)scale;
+    const double len = checked_length(N);  // scales instead of squaring where N . N under/overflows
+    if (!(len > 0.0)) return false;
+    const Vec3d n = N * (1.0 / len);       // divisor checked
+    if constexpr (W == Weighting::Uniform) {
+      const Vec3<T> u = to<T>(n);
+      sink(c, v0, u); sink(c + 1, v1, u); sink(c + 2, v2, u);
+    } else {
+      const double t0 = interior_angle(len, -dot(e0, e2)), t1 = interior_angle(len, -dot(e1, e0));
+      sink(c, v0, to<T>(n * t0));
+      sink(c + 1, v1, to<T>(n * t1));
+      sink(c + 2, v2, to<T>(n * (kPi - t0 - t1)));
+    }
+    return true;
+  }
 }
 
-template <class T, class Sink>
-inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
-                                                const T* rows = nullptr) {
+// Uniform, Angle and Max for triangles, in blocks of kTriangleBlock faces and three passes over
+// each block: (1) gather the corner positions (structure of arrays; positions prefetched
+// kPrefetchFaces ahead), (2) the contributions of the whole block by the vectorised
+// triangle_block_* (triangle_blocks.h: edges, shortest pair, cross product, and the weighting's
+// lengths, square root, division, arctangents; 2, 4 or 8 faces per instruction), (3) the sums
+// (the caller's sums prefetched ahead). Faces the vector pass cannot take go through
+// triangle_scalar.
+template <class T, Weighting W, class Sink>
+inline std::size_t triangle_block_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
+                                                double scale, const T* rows) {
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
-  alignas(32) double xyz[9][kAngleBlock];  // kAngleBlock: interior_angles.h
-  alignas(32) double w[9][kAngleBlock];
-  for (std::size_t b = f_begin; b < f_end; b += kAngleBlock) {
-    const std::size_t count = std::min(kAngleBlock, f_end - b);
-    // (1) gather the corner positions into structure-of-arrays form
+  alignas(64) double xyz[9][kTriangleBlock];
+  alignas(64) double w[9][kTriangleBlock];
+  for (std::size_t b = f_begin; b < f_end; b += kTriangleBlock) {
+    const std::size_t count = std::min(kTriangleBlock, f_end - b);
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
       if (b + i + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, nullptr);
@@ -144,19 +171,19 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
         xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
       }
     }
-    // (2) the contributions theta_k n, vectorised (interior_angles.h)
-    triangle_angle_block(count, &xyz[0][0], &w[0][0]);
-    // (3) the sums
+    if constexpr (W == Weighting::Angle) triangle_block_angle(count, &xyz[0][0], &w[0][0]);
+    else if constexpr (W == Weighting::Max) triangle_block_max(count, &xyz[0][0], &w[0][0]);
+    else triangle_block_uniform(count, &xyz[0][0], &w[0][0]);
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
       if (rows && b + i + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, rows);
       if (std::isnan(w[0][i])) {  // out of the vector pass's range: scalar path
-        degenerate += !triangle_angle_scalar<T>(P, cv, c, sink);
+        degenerate += !triangle_scalar<T, W>(P, cv, c, sink, scale);
         continue;
       }
-      sink(c, cv[c], to<T>(Vec3d{w[0][i], w[1][i], w[2][i]}));
-      sink(c + 1, cv[c + 1], to<T>(Vec3d{w[3][i], w[4][i], w[5][i]}));
-      sink(c + 2, cv[c + 2], to<T>(Vec3d{w[6][i], w[7][i], w[8][i]}));
+      sink(c, cv[c], scaled<T, W>(Vec3d{w[0][i], w[1][i], w[2][i]}, scale));
+      sink(c + 1, cv[c + 1], scaled<T, W>(Vec3d{w[3][i], w[4][i], w[5][i]}, scale));
+      sink(c + 2, cv[c + 2], scaled<T, W>(Vec3d{w[6][i], w[7][i], w[8][i]}, scale));
     }
   }
   return degenerate;
@@ -165,10 +192,10 @@ inline std::size_t triangle_angle_contributions(const Mesh& mesh, std::size_t f_
 template <class T, Weighting W, class Sink>
 inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
                                           double scale = 1.0, const T* rows = nullptr) {
-  if constexpr (W == Weighting::Angle) {
-    (void)scale;
-    return triangle_angle_contributions<T>(mesh, f_begin, f_end, sink, rows);
+  if constexpr (W != Weighting::Area) {
+    return triangle_block_contributions<T, W>(mesh, f_begin, f_end, sink, scale, rows);
   } else {
+    // Area: (p1 - p0) x (p2 - p0) and three additions per face; already memory-bound, no blocks.
     std::size_t degenerate = 0;
     const double* P = mesh.positions.data();
     const std::uint32_t* cv = mesh.corner_vertex.data();
@@ -177,41 +204,10 @@ inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin,
       if (f + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, rows);
       const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
       const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
-      if constexpr (W == Weighting::Area) {
-        const Vec3d N = cross(p1 - p0, p2 - p0);
-        if (!(dot(N, N) > 0.0)) { ++degenerate; continue; }
-        const Vec3<T> w = scaled<T, W>(N, scale);
-        sink(c, v0, w); sink(c + 1, v1, w); sink(c + 2, v2, w);
-      } else {
-        const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
-        const double l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
-        const Vec3d N = triangle_area_vector(P, v0, v1, v2, l0, l1, l2);
-        if constexpr (W == Weighting::Max) {
-          if (!(dot(N, N) > 0.0)) { ++degenerate; continue; }
-          // Corner 0 lies between e0 and -e2, corner 1 between e1 and -e0, corner 2 between e2
-          // and -e1: weights 1/(l0 l2), 1/(l1 l0), 1/(l2 l1) = (l1, l2, l0) / (l0 l1 l2), one division.
-          const double q = l0 * l1 * l2;
-          if (q > std::numeric_limits<double>::min() && q < std::numeric_limits<double>::max()) {  // divisor checked
-            const double inv = 1.0 / q;
-            sink(c, v0, scaled<T, W>(N * (l1 * inv), scale));
-            sink(c + 1, v1, scaled<T, W>(N * (l2 * inv), scale));
-            sink(c + 2, v2, scaled<T, W>(N * (l0 * inv), scale));
-          } else {  // the product under- or overflows: per corner, each divisor checked
-            const double d[3] = {l0 * l2, l1 * l0, l2 * l1};
-            const std::uint32_t v[3] = {v0, v1, v2};
-            for (int k = 0; k < 3; ++k) {
-              if (!(d[k] > 0.0)) continue;
-              const Vec3d w = N * (1.0 / d[k]);
-              if (is_finite(w)) sink(c + k, v[k], scaled<T, W>(w, scale));
-            }
-          }
-        } else {
-          const double len = checked_length(N);
-          if (!(len > 0.0)) { ++degenerate; continue; }  // degenerate: contributes nothing
-          const Vec3<T> n = to<T>(N * (1.0 / len));       // divisor checked above
-          sink(c, v0, n); sink(c + 1, v1, n); sink(c + 2, v2, n);  // Uniform
-        }
-      }
+      const Vec3d N = cross(p1 - p0, p2 - p0);
+      if (!(dot(N, N) > 0.0)) { ++degenerate; continue; }
+      const Vec3<T> w = scaled<T, W>(N, scale);
+      sink(c, v0, w); sink(c + 1, v1, w); sink(c + 2, v2, w);
     }
     return degenerate;
   }

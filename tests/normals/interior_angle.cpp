@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "normals/interior_angle.h"
-#include "normals/interior_angles.h"
+#include "normals/triangle_blocks.h"
 
 using shadetool::normals_detail::interior_angle;
 
@@ -70,7 +70,7 @@ TEST_CASE("interior_angle: tiny angles keep full relative accuracy (no acos canc
 }
 
 TEST_CASE("interior_angles: within 1e-13 relative of std::atan2 over 12 decades, exact at the octant points", "[interior_angle]") {
-  // interior_angles.h bounds the series' truncation by 1.8e-14 relative, plus a few ulp of
+  // triangle_blocks.h bounds the series' truncation by 1.8e-14 relative, plus a few ulp of
   // rounding; 1e-13 leaves room for the rounding and nothing more.
   using shadetool::normals_detail::interior_angles;
   std::mt19937_64 rng(3);
