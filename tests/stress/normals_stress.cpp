@@ -284,6 +284,45 @@ TEST_CASE("stress: meshes scaled to 1e-30 and 1e30 with float accumulation", "[s
   }
 }
 
+TEST_CASE("stress: faces beyond the vector pass's range (1e-70, 1e70) take the scalar path, interleaved with others",
+          "[stress][normals]") {
+  // The triangle kernels' vector pass (lib/normals/triangle_blocks.h) takes faces whose N . N lies
+  // in [1e-250, 1e250]; at scale 1e-70 (N . N ~ 1e-283) and 1e70 (~1e277) every face falls to the
+  // per-face scalar path, which scales lengths instead of squaring. Faces of a unit copy and a
+  // scaled copy alternate, so every block of faces mixes both paths. Expected: each copy's vertex
+  // normals equal the unit mesh's within 64 u (the scaled positions are rounded once, by u; the
+  // rest as in the 1e-30 case above), none falls back, in every weighting.
+  const AnalyticMesh sphere = testing::icosphere(3, 0.1, 5);
+  const Mesh& unit = sphere.mesh;
+  const std::size_t V = unit.num_vertices(), F = unit.num_faces();
+  const Weighting weightings[] = {Weighting::Uniform, Weighting::Area, Weighting::Angle, Weighting::Max};
+  for (double scale : {1e-70, 1e70}) {
+    INFO("scale " << scale);
+    Mesh mixed;
+    mixed.precision = ValuePrecision::Double;
+    for (std::size_t v = 0; v < V; ++v) mixed.add_vertex(unit.position(v));
+    for (std::size_t v = 0; v < V; ++v) mixed.add_vertex(unit.position(v) * scale);
+    for (std::size_t f = 0; f < F; ++f)
+      for (std::uint32_t offset : {0u, std::uint32_t(V)}) {
+        const std::uint32_t* c = &unit.corner_vertex[unit.face_start[f]];
+        mixed.add_face({c[0] + offset, c[1] + offset, c[2] + offset});
+      }
+    for (auto w : weightings) {
+      INFO("weighting " << int(w));
+      const auto ref = vertex_normals(unit, w).normals;
+      const VertexNormals vn = vertex_normals(mixed, w);
+      REQUIRE(all_finite(vn.normals));
+      CHECK(vn.fallback_vertices == 0);
+      CHECK(vn.degenerate_faces == 0);
+      double worst = 0;
+      for (std::size_t v = 0; v < V; ++v)
+        worst = std::max({worst, angle_between(get3(vn.normals, v), get3(ref, v)),
+                          angle_between(get3(vn.normals, V + v), get3(ref, v))});
+      CHECK(worst <= 64 * kU);
+    }
+  }
+}
+
 TEST_CASE("stress: degenerate faces and isolated vertices never give NaN", "[stress][normals]") {
   // Zero-area faces of every kind next to a good one: repeated index, three coincident positions,
   // three collinear points, a polygon whose corners all coincide, a face touching a vertex only
