@@ -53,15 +53,18 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
     const std::size_t n = 3 * V, blocks = (n + kZeroBlock - 1) / kZeroBlock;
     auto zero = [&](std::size_t b) {
       const std::size_t begin = b * kZeroBlock, end = std::min(n, begin + kZeroBlock);
-      std::fill(result.normals.begin() + std::ptrdiff_t(begin), result.normals.begin() + std::ptrdiff_t(end), 0.0);
-      if constexpr (!std::is_same_v<T, double>)
+      if constexpr (std::is_same_v<T, double>)
+        std::fill(result.normals.begin() + std::ptrdiff_t(begin), result.normals.begin() + std::ptrdiff_t(end), 0.0);
+      else
         std::fill(float_sum.begin() + std::ptrdiff_t(begin), float_sum.begin() + std::ptrdiff_t(end), 0.0f);
     };
     if (big && cached->K > 0) parallel_blocks(blocks, zero);
     else for (std::size_t b = 0; b < blocks; ++b) zero(b);
   } else {
     auto allocate = [&] {
-      result.normals.assign(3 * V, 0.0);
+      // float: the output is not a sum, and every entry is written (normalised or fallback)
+      if constexpr (std::is_same_v<T, double>) result.normals.assign(3 * V, 0.0);
+      else result.normals.resize(3 * V);
       if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * V, 0.0f);
     };
     // Without a cached plan, planning the parallel sum (two passes over the corners) costs about
