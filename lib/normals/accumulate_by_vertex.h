@@ -31,13 +31,19 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "core/mesh.h"
 #include "core/vec3.h"
+#include "normals/face_geometry.h"  // SHADETOOL_NORMALS_INLINE
 #include "normals/parallel.h"
 
 namespace shadetool::normals_detail {
@@ -115,8 +121,22 @@ void flag_border_faces(const Mesh& mesh, const std::uint32_t* target, ChunkPlan&
   });
 }
 
-// Passes 3 and 4 (sum: #rows by 3, zero on entry). Returns the sum of contribute's counts.
-template <bool Target, class T, class Contribute>
+// sum[row] += n for a row of Stride values (3, or 4 for float sums padded to 16 bytes: then one
+// SSE addition of x, y, z, 0; the padding stays 0).
+template <class T, std::size_t Stride>
+SHADETOOL_NORMALS_INLINE void add_to_row(T* o, const Vec3<T>& n) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, float> && Stride == 4) {
+    _mm_storeu_ps(o, _mm_add_ps(_mm_loadu_ps(o), _mm_setr_ps(n.x, n.y, n.z, 0.0f)));
+    return;
+  }
+#endif
+  o[0] += n.x; o[1] += n.y; o[2] += n.z;
+}
+
+// Passes 3 and 4 (sum: #rows by Stride, zero on entry; x, y, z first). Returns the sum of
+// contribute's counts.
+template <bool Target, class T, std::size_t Stride = 3, class Contribute>
 std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const std::uint32_t* target,
                                  const Contribute& contribute, T* sum) {
   const std::size_t F = mesh.num_faces(), K = plan.K;
@@ -127,8 +147,7 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
   };
   if (K == 0)
     return contribute(std::size_t(0), F, [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
-      T* o = s + 3 * std::size_t(row(c, v));
-      o[0] += n.x; o[1] += n.y; o[2] += n.z;
+      add_to_row<T, Stride>(s + Stride * std::size_t(row(c, v)), n);
     });
   // Pass 3: chunks in parallel; shared rows' terms go to side lists, in corner order.
   struct Term { std::uint32_t v; T x, y, z; };
@@ -136,8 +155,7 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
   std::vector<std::size_t> counts(K, 0);
   const std::atomic<std::uint8_t>* shared = plan.shared.get();
   auto direct = [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
-    T* o = s + 3 * std::size_t(row(c, v));
-    o[0] += n.x; o[1] += n.y; o[2] += n.z;
+    add_to_row<T, Stride>(s + Stride * std::size_t(row(c, v)), n);
   };
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     auto& list = side[k];
@@ -146,8 +164,7 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
       if (shared[v].load(std::memory_order_relaxed)) {
         list.push_back({v, n.x, n.y, n.z});
       } else {
-        T* o = s + 3 * std::size_t(v);
-        o[0] += n.x; o[1] += n.y; o[2] += n.z;
+        add_to_row<T, Stride>(s + Stride * std::size_t(v), n);
       }
     };
     const std::size_t f_begin = F * k / K, f_end = F * (k + 1) / K;
@@ -169,8 +186,7 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
   // Pass 4: shared rows, chunk by chunk in order.
   for (const auto& list : side)
     for (const Term& t : list) {
-      T* o = s + 3 * std::size_t(t.v);
-      o[0] += t.x; o[1] += t.y; o[2] += t.z;
+      add_to_row<T, Stride>(s + Stride * std::size_t(t.v), Vec3<T>{t.x, t.y, t.z});
     }
   std::size_t count = 0;
   for (auto n : counts) count += n;

@@ -47,8 +47,8 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Calls sink(corner, vertex, contribution) for every corner of the triangles in [f_begin, f_end)
 // whose area vector is valid. Requires mesh.all_triangles() (corner = 3 f + k).
-// Returns the number of degenerate faces skipped. rows (optional): the caller's per-vertex sums
-// (3 values per vertex), prefetched ahead of the sink's additions (kPrefetchFaces).
+// Returns the number of degenerate faces skipped. rows (optional): where the caller's per-vertex
+// sums are, prefetched ahead of the sink's additions (kPrefetchFaces).
 //
 // Which cross product, per weighting (e_a x e_b has rounding error ~ eps |e_a| |e_b|, i.e.
 // relative error ~ eps / sin(angle between them)):
@@ -68,12 +68,17 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 // (the hardware prefetchers do not follow the corner indices). Only a hint: no effect on results.
 constexpr std::size_t kPrefetchFaces = 64;
 
-template <class T>
-SHADETOOL_NORMALS_INLINE void prefetch_face(const double* P, const std::uint32_t* corners, const T* rows) {
+// The caller's per-vertex sums for prefetching: base address and bytes per vertex (none: null).
+struct RowHint {
+  const char* base = nullptr;
+  std::size_t bytes = 0;
+};
+
+SHADETOOL_NORMALS_INLINE void prefetch_face(const double* P, const std::uint32_t* corners, RowHint rows) {
 #if defined(__GNUC__)
   for (int k = 0; k < 3; ++k) {
     __builtin_prefetch(P + 3 * std::size_t(corners[k]));
-    if (rows) __builtin_prefetch(rows + 3 * std::size_t(corners[k]), 1);
+    if (rows.base) __builtin_prefetch(rows.base + rows.bytes * std::size_t(corners[k]), 1);
   }
 #else
   (void)P; (void)corners; (void)rows;
@@ -155,7 +160,7 @@ inline bool triangle_scalar(const double* P, const std::uint32_t* cv, std::size_
 // triangle_scalar.
 template <class T, Weighting W, class Sink>
 inline std::size_t triangle_block_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
-                                                double scale, const T* rows) {
+                                                double scale, RowHint rows) {
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
@@ -165,7 +170,7 @@ inline std::size_t triangle_block_contributions(const Mesh& mesh, std::size_t f_
     const std::size_t count = std::min(kTriangleBlock, f_end - b);
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
-      if (b + i + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, nullptr);
+      if (b + i + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{});
       for (int k = 0; k < 3; ++k) {
         const double* p = P + 3 * std::size_t(cv[c + k]);
         xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
@@ -176,7 +181,7 @@ inline std::size_t triangle_block_contributions(const Mesh& mesh, std::size_t f_
     else triangle_block_uniform(count, &xyz[0][0], &w[0][0]);
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
-      if (rows && b + i + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, rows);
+      if (rows.base && b + i + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, rows);
       if (std::isnan(w[0][i])) {  // out of the vector pass's range: scalar path
         degenerate += !triangle_scalar<T, W>(P, cv, c, sink, scale);
         continue;
@@ -191,7 +196,7 @@ inline std::size_t triangle_block_contributions(const Mesh& mesh, std::size_t f_
 
 template <class T, Weighting W, class Sink>
 inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
-                                          double scale = 1.0, const T* rows = nullptr) {
+                                          double scale = 1.0, RowHint rows = {}) {
   if constexpr (W != Weighting::Area) {
     return triangle_block_contributions<T, W>(mesh, f_begin, f_end, sink, scale, rows);
   } else {
@@ -201,7 +206,7 @@ inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin,
     const std::uint32_t* cv = mesh.corner_vertex.data();
     for (std::size_t f = f_begin; f < f_end; ++f) {
       const std::size_t c = 3 * f;
-      if (f + kPrefetchFaces < f_end) prefetch_face<T>(P, cv + c + 3 * kPrefetchFaces, rows);
+      if (f + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, rows);
       const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
       const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
       const Vec3d N = cross(p1 - p0, p2 - p0);

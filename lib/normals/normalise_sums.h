@@ -2,7 +2,8 @@
 // lib/normals; vertex_normals and corner_normals share it, so that a corner normal with no crease
 // in the way is its vertex normal bit for bit).
 //
-// Inputs:  sum     #rows by 3 sums (T = double or float; a float sum is widened exactly)
+// Inputs:  sum     #rows by Stride sums, x y z first (T = double or float; a float sum is widened
+//                  exactly); Stride 3, or 4 for padded float sums
 // Outputs: out     #rows by 3 unit vectors (double); out may alias sum when T = double
 //          failed  rows whose sum is zero or not finite (appended in ascending order; callers
 //                  give them their documented fallback)
@@ -35,15 +36,15 @@ SHADETOOL_NORMALS_INLINE bool normalise_sum(double x, double y, double z, double
   return true;
 }
 
-template <class T>
+template <class T, std::size_t Stride = 3>
 void normalise_range(const T* sum, double* out, std::size_t v_begin, std::size_t v_end, std::vector<std::uint32_t>& failed) {
   std::size_t v = v_begin;
 #if defined(__SSE2__)
   const __m128d lo = _mm_set1_pd(1e-280), hi = _mm_set1_pd(1e280);
   for (; v + 2 <= v_end; v += 2) {
-    const T* s = sum + 3 * v;
+    const T* s = sum + Stride * v;
     const double x0 = double(s[0]), y0 = double(s[1]), z0 = double(s[2]);
-    const double x1 = double(s[3]), y1 = double(s[4]), z1 = double(s[5]);
+    const double x1 = double(s[Stride]), y1 = double(s[Stride + 1]), z1 = double(s[Stride + 2]);
     const __m128d x = _mm_set_pd(x1, x0), y = _mm_set_pd(y1, y0), z = _mm_set_pd(z1, z0);
     const __m128d l2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y)), _mm_mul_pd(z, z));
     const __m128d in = _mm_and_pd(_mm_cmpge_pd(l2, lo), _mm_cmple_pd(l2, hi));
@@ -61,7 +62,7 @@ void normalise_range(const T* sum, double* out, std::size_t v_begin, std::size_t
   }
 #endif
   for (; v < v_end; ++v)
-    if (!normalise_sum(double(sum[3 * v]), double(sum[3 * v + 1]), double(sum[3 * v + 2]), out + 3 * v))
+    if (!normalise_sum(double(sum[Stride * v]), double(sum[Stride * v + 1]), double(sum[Stride * v + 2]), out + 3 * v))
       failed.push_back(std::uint32_t(v));
 }
 

@@ -43,14 +43,17 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
   // output array that already has the capacity (a caller reusing `result`) is reused, not
   // reallocated. Without a cached plan, the plan is made beside the (serial) zeroing; with one,
   // the zeroing is split over the threads.
+  // Float sums are padded to 4 per vertex (16 bytes): one SSE addition per corner instead of three
+  // scalar ones (accumulate_by_vertex.h, add_to_row).
+  constexpr std::size_t S = std::is_same_v<T, double> ? 3 : 4;
   std::vector<float> float_sum;
   ChunkPlan own_plan;
   const bool big = mesh.num_faces() >= kSerialBelow;
   if (cached) {
     result.normals.resize(3 * V);
-    if constexpr (!std::is_same_v<T, double>) float_sum.resize(3 * V);
+    if constexpr (!std::is_same_v<T, double>) float_sum.resize(S * V);
     constexpr std::size_t kZeroBlock = std::size_t(1) << 16;  // values
-    const std::size_t n = 3 * V, blocks = (n + kZeroBlock - 1) / kZeroBlock;
+    const std::size_t n = S * V, blocks = (n + kZeroBlock - 1) / kZeroBlock;
     auto zero = [&](std::size_t b) {
       const std::size_t begin = b * kZeroBlock, end = std::min(n, begin + kZeroBlock);
       if constexpr (std::is_same_v<T, double>)
@@ -65,7 +68,7 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
       // float: the output is not a sum, and every entry is written (normalised or fallback)
       if constexpr (std::is_same_v<T, double>) result.normals.assign(3 * V, 0.0);
       else result.normals.resize(3 * V);
-      if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * V, 0.0f);
+      if constexpr (!std::is_same_v<T, double>) float_sum.assign(S * V, 0.0f);
     };
     // Without a cached plan, planning the parallel sum (two passes over the corners) costs about
     // what the area-weighted kernel itself costs, so on 2 threads it would be slower than the
@@ -90,9 +93,10 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
   // float sum still overflows (a face ~2^100 times larger than the sampled ones) takes the
   // fallback below: a valid unit normal, counted.
   const double scale = contribution_scale<T, W>(mesh);
-  result.degenerate_faces = accumulate_by_target<false, T>(mesh, plan, nullptr,
+  const RowHint rows{reinterpret_cast<const char*>(sum), S * sizeof(T)};
+  result.degenerate_faces = accumulate_by_target<false, T, S>(mesh, plan, nullptr,
       [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
-        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale, static_cast<const T*>(sum))
+        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale, rows)
                          : polygon_contributions<T, W>(mesh, f_begin, f_end, sink, scale);
       }, sum);
 
@@ -102,7 +106,7 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
   const std::size_t blocks = (V + kBlock - 1) / kBlock;
   std::vector<std::vector<std::uint32_t>> failed(blocks);
   parallel_blocks(blocks, [&](std::size_t b) {
-    normalise_range<T>(sum, result.normals.data(), b * kBlock, std::min(V, (b + 1) * kBlock), failed[b]);
+    normalise_range<T, S>(sum, result.normals.data(), b * kBlock, std::min(V, (b + 1) * kBlock), failed[b]);
   });
   std::vector<std::uint32_t> needs_fallback;
   for (auto& list : failed) needs_fallback.insert(needs_fallback.end(), list.begin(), list.end());
