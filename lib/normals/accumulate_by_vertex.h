@@ -173,11 +173,17 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
     } else {
       // Faces in order: runs without a shared row through the plain sink, border faces through
       // the testing one (the order of every row's terms is the same as above).
+      // Consecutive border faces (they cluster at the chunk's two ends) go as one run.
+      const std::vector<std::uint32_t>& border = plan.border_faces[k];
       std::size_t n = 0, f = f_begin;
-      for (const std::uint32_t b : plan.border_faces[k]) {
-        if (b > f) n += contribute(f, std::size_t(b), direct);
-        n += contribute(std::size_t(b), std::size_t(b) + 1, testing);
-        f = std::size_t(b) + 1;
+      for (std::size_t i = 0; i < border.size();) {
+        std::size_t j = i + 1;
+        while (j < border.size() && border[j] == border[j - 1] + 1) ++j;
+        const std::size_t run_begin = border[i], run_end = std::size_t(border[j - 1]) + 1;
+        if (run_begin > f) n += contribute(f, run_begin, direct);
+        n += contribute(run_begin, run_end, testing);
+        f = run_end;
+        i = j;
       }
       if (f < f_end) n += contribute(f, f_end, direct);
       counts[k] = n;
