@@ -19,8 +19,6 @@
 #include <algorithm>
 #include <type_traits>
 
-#include <tbb/parallel_invoke.h>
-
 #include "core/error.h"
 #include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
@@ -41,8 +39,7 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
   // In double the output array itself accumulates the sums (normalised in place afterwards): no
   // second #V by 3 array to allocate, zero and copy. In float a float accumulator is used. An
   // output array that already has the capacity (a caller reusing `result`) is reused, not
-  // reallocated. Without a cached plan, the plan is made beside the (serial) zeroing; with one,
-  // the zeroing is split over the threads.
+  // reallocated. With a cached plan the zeroing is split over the threads.
   // Float sums are padded to 4 per vertex (16 bytes): one SSE addition per corner instead of three
   // scalar ones (accumulate_by_vertex.h, add_to_row).
   constexpr std::size_t S = std::is_same_v<T, double> ? 3 : 4;
@@ -70,19 +67,12 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
       else result.normals.resize(3 * V);
       if constexpr (!std::is_same_v<T, double>) float_sum.assign(S * V, 0.0f);
     };
-    // Without a cached plan, planning the parallel sum (two passes over the corners) costs about
-    // what the area-weighted kernel itself costs, so on 2 threads it would be slower than the
-    // serial loop (measured: bench/normals/results/notes.md): area stays serial; the costlier
-    // weightings plan and split. With a VertexNormalsPlan every weighting splits.
-    auto make_plan = [&] {
-      if constexpr (W != Weighting::Area) own_plan = plan_chunks<false>(mesh, nullptr, V);
-    };
-    if (!big) {
-      allocate();
-      make_plan();
-    } else {
-      tbb::parallel_invoke(allocate, make_plan);
-    }
+    // Without a cached plan the sum runs serially (own_plan stays empty, K = 0): planning the
+    // parallel sum (two passes over the corners, ~3-6 ms per million triangles) costs about what
+    // the area kernel itself costs and half the angle kernel, so on 2 threads the plain call was
+    // slower than the serial loop (measured, bench/normals/results/notes.md). Repeated calls that
+    // want threads build a VertexNormalsPlan once.
+    allocate();
   }
   const ChunkPlan& plan = cached ? *cached : own_plan;
   T* sum;
