@@ -14,8 +14,8 @@
 //          error (the result would then be wrong, as with a stale OpenMesh topology).
 // Results: bitwise the same with or without a plan, for any thread count (the plan only decides
 //          how the work is split; accumulate_by_vertex.h explains why the sums do not depend on it).
-// Threads: the plan is made for the concurrency of the arena that builds it (chunks = 4 x threads)
-//          and is correct under any other.
+// Threads: the plan is made for the concurrency of the arena that builds it (one chunk per
+//          thread) and is correct under any other.
 #pragma once
 
 #include <cstddef>

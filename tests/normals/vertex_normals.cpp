@@ -304,7 +304,7 @@ TEST_CASE("vertex_normals: the result is bitwise the same on 1 and 2 threads", "
 TEST_CASE("vertex_normals: with a reused plan and output, bitwise the plain 1-thread result on 1, 2 and 3 threads",
           "[vertex_normals][parallel]") {
   // The plan only decides how the sum is split (its chunk count follows the concurrency of the
-  // arena that builds it: 4 x threads); the sums add every vertex's terms in corner order either
+  // arena that builds it: one chunk per thread); the sums add every vertex's terms in corner order either
   // way (accumulate_by_vertex.h), so every combination of plan and arena must give the same bits.
   const Mesh meshes[] = {irregular(uv_sphere(300, 150, 0.15, 2)).mesh, shuffle_faces(irregular(icosphere(6, 0.3, 2)).mesh, 4)};
   for (const Mesh& m : meshes) {
