@@ -60,6 +60,8 @@ int main(int argc, char** argv) {
     for (const std::string& name : o.meshes) {
       const BenchMesh b = load_bench_mesh(name);
       std::vector<Case> cases = ours_vertex_cases("open3d", b, {Weighting::Area}, {Precision::Double, Precision::Float}, o.threads);
+      append(cases, ours_vertex_cases("open3d", b, {Weighting::Area}, {Precision::Double, Precision::Float}, o.threads,
+                                      /*prepared=*/true));
       append(cases, open3d_cases(b, o.threads));
       run_cases(b, cases, repeats_for(b, o.repeats));
     }

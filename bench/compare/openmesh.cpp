@@ -89,6 +89,8 @@ int main(int argc, char** argv) {
       const BenchMesh b = load_bench_mesh(name);
       std::vector<Case> cases = ours_vertex_cases("openmesh", b, {Weighting::Area, Weighting::Uniform},
                                                   {Precision::Double, Precision::Float}, {1});
+      append(cases, ours_vertex_cases("openmesh", b, {Weighting::Area, Weighting::Uniform},
+                                      {Precision::Double, Precision::Float}, {1}, /*prepared=*/true));
       append(cases, ours_face_cases("openmesh", b, {1}));
       append(cases, openmesh_cases<TriMeshF>(b, "float"));
       append(cases, openmesh_cases<TriMeshD>(b, "double"));

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
         cases = ours_vertex_cases("ours_refinement", b, all, {Precision::Double, Precision::Float}, {1});
       } else {
         cases = ours_vertex_cases("ours", b, all, {Precision::Double, Precision::Float}, o.threads);
+        append(cases, ours_vertex_cases("ours", b, all, {Precision::Double, Precision::Float}, o.threads, /*prepared=*/true));
         append(cases, ours_face_cases("ours", b, o.threads));
       }
       run_cases(b, cases, repeats_for(b, o.repeats));

@@ -7,12 +7,18 @@
 // error column is the poles'; the icosphere shows the weightings without them. Kernels timed in one process, IO excluded,
 // median of R repetitions (default 15), after one warm-up run. Threads: 1 and 2 (TBB arenas).
 // Output: a Markdown table on stdout (time, ratio to OpenMesh update_normals, error against the
-// analytic normals), and optionally CSV.
+// analytic normals), and optionally CSV. Our kernels run twice: "fresh" (the plain call: a new
+// result, allocation and the planning of the parallel sum inside the timing) and "prepared" (a
+// VertexNormalsPlan made before the timing, output written into the previous result's arrays, as
+// OpenMesh runs on a prebuilt topology and writes into preallocated normal properties). Both OpenMesh
+// mesh types are timed: double traits (Vec3d points/normals, like our double path) and the default
+// TriMesh (float, like our float path). OpenMesh's topology (half-edges) is built before timing.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <string>
 #include <vector>
@@ -42,6 +48,19 @@ using OMd = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 using OMf = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraits>;
 
 struct Err { double mean = 0, p99 = 0, max = 0; std::size_t bad = 0; };
+
+std::string load_average() {
+  char buf[128] = {0};
+  if (FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (!std::fgets(buf, sizeof buf, f)) buf[0] = 0;
+    std::fclose(f);
+  }
+  std::string s(buf);
+  std::size_t n = 0, cut = s.size();
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s[i] == ' ' && ++n == 3) { cut = i; break; }
+  return s.substr(0, cut);
+}
 
 template <class Get>
 Err error_of(std::size_t V, const std::vector<Vec3d>& exact, Get get) {
@@ -116,10 +135,11 @@ int main(int argc, char** argv) {
   }
   const Mesh& mesh = am.mesh;
   const std::size_t V = mesh.num_vertices();
+  const std::string load_start = load_average();
   std::printf("mesh: irregular %s sphere (jitter + 30%% edge flips), %zu vertices, %zu triangles; median of %d interleaved runs\n\n",
               shape == "ico" ? "icosphere" : "UV", V, mesh.num_faces(), reps);
 
-  struct Row { std::string method; int threads; double ms; Err err; };
+  struct Row { std::string method; int threads; double ms; double cpu_ms; Err err; };
   std::vector<Row> rows;
 
   // Every method is a closure run inside a TBB arena of its thread count. Repetitions are
@@ -145,79 +165,110 @@ int main(int argc, char** argv) {
 
   const std::pair<Weighting, const char*> weightings[] = {
       {Weighting::Area, "area"}, {Weighting::Angle, "angle"}, {Weighting::Max, "max"}, {Weighting::Uniform, "uniform"}};
-  std::vector<VertexNormals> results(2 * 4 * 2);
+  // Two rows per kernel: "fresh" returns a new VertexNormals from the plain call (allocation, and
+  // the planning of the parallel sum on 2 threads, inside the timing); "prepared" uses a
+  // VertexNormalsPlan built before the timing and writes into the previous call's VertexNormals,
+  // as OpenMesh's update_normals runs on a half-edge topology built before the timing and writes
+  // into normal properties allocated by request_vertex_normals.
+  std::vector<VertexNormals> results(2 * 4 * 2 * 2);
   std::vector<CornerNormals> corner_results(2);
+  std::vector<VertexNormalsPlan> plans(2);
+  for (int threads : {1, 2}) {
+    tbb::task_arena arena(threads);
+    arena.execute([&] { plans[threads - 1] = VertexNormalsPlan(mesh); });
+  }
   int slot = 0;
   for (int threads : {1, 2}) {
+    const VertexNormalsPlan* plan = &plans[threads - 1];
     for (auto [w, name] : weightings)
-      for (Precision p : {Precision::Double, Precision::Float}) {
-        VertexNormals* r = &results[slot++];
-        methods.push_back({std::string("shadetool vertex_normals ") + name + (p == Precision::Float ? " (float)" : " (double)"),
-                           threads, [&mesh, r, w = w, p] { *r = vertex_normals(mesh, w, p); },
-                           [r, &am, V] { return error_of(V, am.exact_normals, [&](std::size_t v) { return get3(r->normals, v); }); }});
-      }
+      for (Precision p : {Precision::Double, Precision::Float})
+        for (bool prepared : {false, true}) {
+          VertexNormals* r = &results[slot++];
+          const std::string label = std::string("shadetool vertex_normals ") + name +
+                                    (p == Precision::Float ? " (float)" : " (double)") + (prepared ? ", prepared" : "");
+          std::function<void()> run;
+          if (prepared) run = [&mesh, plan, r, w = w, p] { vertex_normals(mesh, *plan, w, p, *r); };
+          else run = [&mesh, r, w = w, p] { *r = vertex_normals(mesh, w, p); };
+          methods.push_back({label, threads, run,
+                             [r, &am, V] { return error_of(V, am.exact_normals, [&](std::size_t v) { return get3(r->normals, v); }); }});
+        }
     CornerNormals* cn = &corner_results[threads - 1];
     methods.push_back({"shadetool corner_normals angle, crease 30 (double)", threads,
                        [&mesh, cn] { *cn = corner_normals(mesh, 30.0 * kPi / 180.0, Weighting::Angle); },
                        [&mesh, cn, &am] { return corner_error(mesh, *cn, am); }});
   }
 
-  // --only: keep OpenMesh update_normals (the reference) and the methods whose name contains it.
+  // Control: a trivially parallel loop (two halves of 2.5M square roots) on 1 and 2 threads,
+  // interleaved with the other rows. Its 2-thread speed-up is what this machine gives at best
+  // during the run: near 1 means the second core was busy and the 2-thread rows mean little.
+  for (int threads : {1, 2})
+    methods.push_back({"control: parallel sqrt loop", threads, [] {
+                         static double sink = 0;
+                         double part[2] = {0, 0};
+                         tbb::parallel_for(0, 2, [&](int k) {
+                           double acc = 0;
+                           for (int i = 0; i < 2500000; ++i) acc += std::sqrt(double(i + k));
+                           part[k] = acc;
+                         });
+                         sink += part[0] + part[1];
+                       }, [] { return Err{}; }});
+
+  // --only: keep OpenMesh update_normals (the reference), the control and the methods whose name contains it.
   if (!only.empty()) {
     std::vector<Method> kept;
     for (auto& m : methods)
-      if (m.name == "OpenMesh update_normals (double)" || m.name.find(only) != std::string::npos) kept.push_back(m);
+      if (m.name.rfind("OpenMesh update_normals", 0) == 0 || m.name.rfind("control", 0) == 0 ||
+          m.name.find(only) != std::string::npos)
+        kept.push_back(m);
     methods.swap(kept);
   }
-  std::vector<std::vector<double>> times(methods.size());
+  // Wall time (steady_clock) and CPU time of the whole process (all threads) per run; medians.
+  auto cpu_now = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
+  };
+  std::vector<std::vector<double>> times(methods.size()), cpu(methods.size());
+  // One arena per thread count, made once and reused by every run (as an application keeps its
+  // thread pool): a fresh arena per run would add the workers' wake-up to every 2-thread timing.
+  tbb::task_arena arenas[2] = {tbb::task_arena(1), tbb::task_arena(2)};
   for (int rep = -1; rep < reps; ++rep)  // rep -1: warm-up
     for (std::size_t m = 0; m < methods.size(); ++m) {
-      tbb::task_arena arena(methods[m].threads);
+      tbb::task_arena& arena = arenas[methods[m].threads - 1];
       arena.execute([&] {
+        const double c0 = cpu_now();
         const auto t0 = std::chrono::steady_clock::now();
         methods[m].run();
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-        if (rep >= 0) times[m].push_back(ms);
+        if (rep >= 0) {
+          times[m].push_back(ms);
+          cpu[m].push_back(cpu_now() - c0);
+        }
       });
     }
   for (std::size_t m = 0; m < methods.size(); ++m) {
     std::sort(times[m].begin(), times[m].end());
-    rows.push_back({methods[m].name, methods[m].threads, times[m][times[m].size() / 2], methods[m].error()});
+    std::sort(cpu[m].begin(), cpu[m].end());
+    rows.push_back({methods[m].name, methods[m].threads, times[m][times[m].size() / 2], cpu[m][cpu[m].size() / 2],
+                    methods[m].error()});
   }
 
-  // Control: a trivially parallel loop on 1 and 2 threads. A ratio near 1 means the machine did
-  // not give this process two free cores during the run, and the 2-thread rows mean nothing.
-  {
-    double best[2] = {1e300, 1e300};
-    for (int rep = 0; rep < 5; ++rep)
-      for (int threads : {1, 2}) {
-        tbb::task_arena arena(threads);
-        arena.execute([&] {
-          double sink[2] = {0, 0};
-          const auto t0 = std::chrono::steady_clock::now();
-          tbb::parallel_for(0, 2, [&](int k) {
-            double acc = 0;
-            for (int i = 0; i < 5000000; ++i) acc += std::sqrt(double(i + k));
-            sink[k] = acc;
-          });
-          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-          best[threads - 1] = std::min(best[threads - 1], ms + 0 * (sink[0] + sink[1]));
-        });
-      }
-    std::printf("control (parallel sqrt loop): 1 thread %.1f ms, 2 threads %.1f ms, speed-up %.2fx\n\n", best[0],
-                best[1], best[0] / best[1]);
-  }
-
-  const double reference = rows[0].ms;  // OpenMesh update_normals (double)
   auto find = [&](const std::string& m, int th) {
     for (auto& r : rows)
       if (r.method == m && r.threads == th) return r.ms;
     return 0.0;
   };
-  std::printf("| method | threads | median ms | speed vs OpenMesh update_normals | mean err deg | p99 err deg | max err deg | NaN/zero |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  const double control1 = find("control: parallel sqrt loop", 1), control2 = find("control: parallel sqrt loop", 2);
+  std::printf("control (a trivially parallel sqrt loop, timed interleaved with the rows): 1 thread %.2f ms, 2 threads %.2f ms, "
+              "speed-up %.2fx (below ~1.9x the second core was not free, and the 2-thread rows say little)\n",
+              control1, control2, control1 / control2);
+  std::printf("load average (1, 5, 15 min) at start: %s, at end: %s\n\n", load_start.c_str(), load_average().c_str());
+
+  const double reference = rows[0].ms;  // OpenMesh update_normals (double)
+  std::printf("| method | threads | median ms | median CPU ms | speed vs OpenMesh update_normals | mean err deg | p99 err deg | max err deg | NaN/zero |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (auto& r : rows)
-    std::printf("| %s | %d | %.2f | %.1fx | %.3g | %.3g | %.3g | %zu |\n", r.method.c_str(), r.threads, r.ms,
+    std::printf("| %s | %d | %.2f | %.2f | %.2fx | %.3g | %.3g | %.3g | %zu |\n", r.method.c_str(), r.threads, r.ms, r.cpu_ms,
                 reference / r.ms, r.err.mean, r.err.p99, r.err.max, r.err.bad);
   // Targets (issue 8); a line is printed only when both of its methods ran (see --only).
   const double area1 = find("shadetool vertex_normals area (double)", 1), area2 = find("shadetool vertex_normals area (double)", 2);
@@ -226,21 +277,28 @@ int main(int argc, char** argv) {
     if (a > 0 && b > 0) std::printf("  %s: %.2fx (target %s)\n", what, a / b, target);
   };
   line("area, 1 thread, speed vs OpenMesh update_normals", reference, area1, ">= 5x");
+  const double area1r = find("shadetool vertex_normals area (double), prepared", 1);
+  const double area1f = find("shadetool vertex_normals area (float), prepared", 1);
+  const double om_float = find("OpenMesh update_normals (float)", 1);
+  line("area, prepared (as OpenMesh), 1 thread, speed vs OpenMesh update_normals (double)", reference, area1r, ">= 5x");
+  line("area float, prepared, 1 thread, speed vs OpenMesh update_normals (float)", om_float, area1f, ">= 5x");
+  line("angle time / area time, 1 thread, prepared", find("shadetool vertex_normals angle (double), prepared", 1), area1r, "<= 2");
   line("angle time / area time, 1 thread", find("shadetool vertex_normals angle (double)", 1), area1, "<= 2");
   line("max time / area time, 1 thread", find("shadetool vertex_normals max (double)", 1), area1, "<= 2");
-  for (auto [w, name] : weightings) {
-    const std::string m = std::string("shadetool vertex_normals ") + name + " (double)";
-    const std::string what = std::string(name) + ": speed on 2 threads / 1 thread";
-    line(what.c_str(), find(m, 1), find(m, 2), ">= 1.7x");
-  }
+  for (auto [w, name] : weightings)
+    for (const char* kind : {"", ", prepared"}) {
+      const std::string m = std::string("shadetool vertex_normals ") + name + " (double)" + kind;
+      const std::string what = std::string(name) + kind + ": speed on 2 threads / 1 thread";
+      line(what.c_str(), find(m, 1), find(m, 2), ">= 1.7x");
+    }
   line("area, 2 threads, speed vs OpenMesh update_normals", reference, area2, "-");
 
   if (!csv.empty()) {
     FILE* f = std::fopen(csv.c_str(), "w");
     if (!f) { std::perror(csv.c_str()); return 1; }
-    std::fprintf(f, "method,threads,median_ms,speedup_vs_openmesh_update_normals,mean_err_deg,p99_err_deg,max_err_deg,nan_or_zero\n");
+    std::fprintf(f, "method,threads,median_ms,median_cpu_ms,speedup_vs_openmesh_update_normals,mean_err_deg,p99_err_deg,max_err_deg,nan_or_zero\n");
     for (auto& r : rows)
-      std::fprintf(f, "\"%s\",%d,%.4f,%.3f,%.6g,%.6g,%.6g,%zu\n", r.method.c_str(), r.threads, r.ms, reference / r.ms,
+      std::fprintf(f, "\"%s\",%d,%.4f,%.4f,%.3f,%.6g,%.6g,%.6g,%zu\n", r.method.c_str(), r.threads, r.ms, r.cpu_ms, reference / r.ms,
                    r.err.mean, r.err.p99, r.err.max, r.err.bad);
     std::fclose(f);
   }

@@ -18,7 +18,9 @@
 // is appended to its chunk's side list. Pass 4 adds the side lists chunk by chunk, in order, on
 // one thread, so shared vertices too receive their terms in ascending corner order.
 // Faces stored with locality (every mesh file we have seen) share only the vertices along chunk
-// borders, so pass 4 is tiny. When the faces are in random order (more than a quarter of the
+// borders, so pass 4 is tiny. A reused plan (VertexNormalsPlan) also lists each chunk's border
+// faces (flag_border_faces), so that pass 3 tests rows only there and runs every other face
+// through the same plain sink as the serial loop. When the faces are in random order (more than a quarter of the
 // corners would go to side lists) the chunks are abandoned and the serial loop runs instead.
 // Small meshes (< kSerialBelow faces) and one-thread runs take the serial loop directly.
 // Memory: 3 bytes per vertex plus the side lists. plan_chunks (passes 1, 2) and
@@ -29,13 +31,19 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "core/mesh.h"
 #include "core/vec3.h"
+#include "normals/face_geometry.h"  // SHADETOOL_NORMALS_INLINE
 #include "normals/parallel.h"
 
 namespace shadetool::normals_detail {
@@ -45,6 +53,10 @@ namespace shadetool::normals_detail {
 struct ChunkPlan {
   std::size_t K = 0;
   std::unique_ptr<std::atomic<std::uint8_t>[]> shared;
+  // Optional (flag_border_faces): per chunk, ascending, the faces with a corner in a shared row.
+  // With them, pass 3 runs every other face through the serial loop's plain sink (no per-corner
+  // test); only these faces take the testing sink.
+  std::vector<std::vector<std::uint32_t>> border_faces;
 };
 
 // Rows are target[c] (Target = true; corner normals use it with target = the corner's smooth
@@ -54,7 +66,11 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
   ChunkPlan plan;
   const std::size_t F = mesh.num_faces(), V = num_rows;
   const std::size_t threads = std::size_t(tbb::this_task_arena::max_concurrency());
-  const std::size_t K = std::min<std::size_t>({F / 8192, 4 * threads, 65535});
+  // One chunk per thread: every chunk border costs (its vertices' terms go through side lists), and
+  // measured on the 1M sphere with both cores free, K = threads gave 1.82x (area) and 1.86x
+  // (angle) on 2 threads against 1.75x / 1.80x for K = 2 x threads and ~1.45x for 4 x threads.
+  // The price: no load balancing when another process holds one core.
+  const std::size_t K = std::min<std::size_t>({F / 8192, threads, 65535});
   if (F < kSerialBelow || threads < 2 || K < 2) return plan;
   auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_start[F * k / K]); };  // corner index
   const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
@@ -91,8 +107,40 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
   return plan;
 }
 
-// Passes 3 and 4 (sum: #rows by 3, zero on entry). Returns the sum of contribute's counts.
-template <bool Target, class T, class Contribute>
+// Fills plan.border_faces (a third pass over the corners; worth it for a plan that is reused).
+template <bool Target>
+void flag_border_faces(const Mesh& mesh, const std::uint32_t* target, ChunkPlan& plan) {
+  const std::size_t F = mesh.num_faces(), K = plan.K;
+  if (K == 0) return;
+  const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
+  plan.border_faces.assign(K, {});
+  tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
+    auto& list = plan.border_faces[k];
+    for (std::size_t f = F * k / K, e = F * (k + 1) / K; f < e; ++f) {
+      bool border = false;
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+        border = border || plan.shared[cv[c]].load(std::memory_order_relaxed);
+      if (border) list.push_back(std::uint32_t(f));
+    }
+  });
+}
+
+// sum[row] += n for a row of Stride values (3, or 4 for float sums padded to 16 bytes: then one
+// SSE addition of x, y, z, 0; the padding stays 0).
+template <class T, std::size_t Stride>
+SHADETOOL_NORMALS_INLINE void add_to_row(T* o, const Vec3<T>& n) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, float> && Stride == 4) {
+    _mm_storeu_ps(o, _mm_add_ps(_mm_loadu_ps(o), _mm_setr_ps(n.x, n.y, n.z, 0.0f)));
+    return;
+  }
+#endif
+  o[0] += n.x; o[1] += n.y; o[2] += n.z;
+}
+
+// Passes 3 and 4 (sum: #rows by Stride, zero on entry; x, y, z first). Returns the sum of
+// contribute's counts.
+template <bool Target, class T, std::size_t Stride = 3, class Contribute>
 std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const std::uint32_t* target,
                                  const Contribute& contribute, T* sum) {
   const std::size_t F = mesh.num_faces(), K = plan.K;
@@ -103,31 +151,52 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
   };
   if (K == 0)
     return contribute(std::size_t(0), F, [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
-      T* o = s + 3 * std::size_t(row(c, v));
-      o[0] += n.x; o[1] += n.y; o[2] += n.z;
+      add_to_row<T, Stride>(s + Stride * std::size_t(row(c, v)), n);
     });
   // Pass 3: chunks in parallel; shared rows' terms go to side lists, in corner order.
   struct Term { std::uint32_t v; T x, y, z; };
   std::vector<std::vector<Term>> side(K);
   std::vector<std::size_t> counts(K, 0);
   const std::atomic<std::uint8_t>* shared = plan.shared.get();
+  auto direct = [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
+    add_to_row<T, Stride>(s + Stride * std::size_t(row(c, v)), n);
+  };
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     auto& list = side[k];
-    counts[k] = contribute(F * k / K, F * (k + 1) / K, [&](std::size_t c, std::uint32_t vertex, const Vec3<T>& n) {
+    auto testing = [&](std::size_t c, std::uint32_t vertex, const Vec3<T>& n) {
       const std::uint32_t v = row(c, vertex);
       if (shared[v].load(std::memory_order_relaxed)) {
         list.push_back({v, n.x, n.y, n.z});
       } else {
-        T* o = s + 3 * std::size_t(v);
-        o[0] += n.x; o[1] += n.y; o[2] += n.z;
+        add_to_row<T, Stride>(s + Stride * std::size_t(v), n);
       }
-    });
+    };
+    const std::size_t f_begin = F * k / K, f_end = F * (k + 1) / K;
+    if (plan.border_faces.empty()) {
+      counts[k] = contribute(f_begin, f_end, testing);
+    } else {
+      // Faces in order: runs without a shared row through the plain sink, border faces through
+      // the testing one (the order of every row's terms is the same as above).
+      // Consecutive border faces (they cluster at the chunk's two ends) go as one run.
+      const std::vector<std::uint32_t>& border = plan.border_faces[k];
+      std::size_t n = 0, f = f_begin;
+      for (std::size_t i = 0; i < border.size();) {
+        std::size_t j = i + 1;
+        while (j < border.size() && border[j] == border[j - 1] + 1) ++j;
+        const std::size_t run_begin = border[i], run_end = std::size_t(border[j - 1]) + 1;
+        if (run_begin > f) n += contribute(f, run_begin, direct);
+        n += contribute(run_begin, run_end, testing);
+        f = run_end;
+        i = j;
+      }
+      if (f < f_end) n += contribute(f, f_end, direct);
+      counts[k] = n;
+    }
   });
   // Pass 4: shared rows, chunk by chunk in order.
   for (const auto& list : side)
     for (const Term& t : list) {
-      T* o = s + 3 * std::size_t(t.v);
-      o[0] += t.x; o[1] += t.y; o[2] += t.z;
+      add_to_row<T, Stride>(s + Stride * std::size_t(t.v), Vec3<T>{t.x, t.y, t.z});
     }
   std::size_t count = 0;
   for (auto n : counts) count += n;

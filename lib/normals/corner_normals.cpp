@@ -10,7 +10,8 @@
 // parallel scatter as vertex_normals (accumulate_by_vertex.h), so a group's sum adds its corners in
 // ascending corner order: with no crease in the way the result is vertex_normals' bit for bit;
 // (6) rows normalised in parallel, fallbacks for the rare rows that cannot be.
-// Precision: contributions and sums in T (double or float, as vertex_normals); the crease test
+// Precision: contributions in double, rounded once to T, sums in T (double or float, as
+// vertex_normals; corner_contributions.h); the crease test
 // compares angles in double: atan2(|n1 x n2|, n1 . n2) > crease_angle (interior_angle.h).
 #include "normals/corner_normals.h"
 
@@ -24,6 +25,7 @@
 #include "normals/corner_contributions.h"
 #include "normals/face_normals.h"
 #include "normals/interior_angle.h"
+#include "normals/normalise_sums.h"
 #include "normals/parallel.h"
 #include "normals/vertex_fallback.h"
 
@@ -191,10 +193,13 @@ CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision
   if constexpr (std::is_same_v<T, double>) sum = out.normals.data();
   else sum = float_sum.data();
   const bool triangles = mesh.all_triangles();
+  // float Area/Max: one power of two for the whole mesh (corner_contributions.h); a row whose float
+  // sum still overflows takes the fallback below (a valid unit normal, counted).
+  const double scale = contribution_scale<T, W>(mesh);
   out.degenerate_faces = accumulate_by_target<true, T>(mesh, plan, out.corner_index.data(),
       [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
-        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
-                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
+        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale)
+                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink, scale);
       }, sum);
   // A group made only of degenerate corners takes the vertex's smooth sum: all its valid
   // contributions, i.e. the sum of its other groups.
@@ -213,13 +218,10 @@ CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision
   parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
     for (std::size_t v = v_begin; v < v_end; ++v) {
       for (std::uint32_t r = base[v]; r < base[v + 1]; ++r) {
-        const Vec3<T> s{sum[3 * std::size_t(r)], sum[3 * std::size_t(r) + 1], sum[3 * std::size_t(r) + 2]};
-        const T len = checked_length(s);
         double* o = &out.normals[3 * std::size_t(r)];
-        if (len > T(0)) {  // divisor checked
-          o[0] = double(s.x / len); o[1] = double(s.y / len); o[2] = double(s.z / len);
+        if (normalise_sum(double(sum[3 * std::size_t(r)]), double(sum[3 * std::size_t(r) + 1]),
+                          double(sum[3 * std::size_t(r) + 2]), o))
           continue;
-        }
         std::uint32_t in_group = ~0u, any = ~0u;
         std::size_t corners_in_row = 0;
         for (std::uint32_t i = vc.offset[v]; i < vc.offset[v + 1]; ++i) {

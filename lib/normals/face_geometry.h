@@ -9,8 +9,9 @@
 //                         computing the plane equation of a polygon", Graphics Gems III, 1992),
 //                         evaluated about the polygon's first vertex to keep coordinates small.
 //
-// Precision: T is the type the caller computes in (double or float). Positions stay double; edge
-// vectors are formed in double and rounded once to T (see `edge`), everything after is in T.
+// Precision: the kernels call these with T = double (edges, cross products and lengths in double
+// whatever the accumulation precision; corner_contributions.h rounds the finished contribution
+// once). `edge<float>` (round an edge formed in double once to float) is kept for other callers.
 // Degenerate input: a repeated index or coincident positions give an exactly zero area vector;
 // callers take `checked_length` (0 for zero or non-finite vectors) and test it before dividing.
 #pragma once

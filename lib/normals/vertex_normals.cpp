@@ -1,11 +1,15 @@
 // vertex_normals.cpp: one unit normal per vertex, the normalised sum of its corners'
 // contributions (corner_contributions.h gives the formula and source of each weighting).
 //
-// Precision: Double accumulates in double (default: a vertex of high valence sums hundreds of
-// terms, and double keeps the result exact to ~1e-15 rad); Float forms edge vectors in double,
-// rounds them once to float and computes and accumulates in float, angles excepted (they cost the
-// same in double; interior_angle.h): half the accumulator memory and traffic, error ~1e-5 deg
-// against double, measured in tests and the benchmark.
+// Precision: every contribution is computed in double (corner_contributions.h). Double accumulates
+// in double (default: a vertex of high valence sums hundreds of terms, and double keeps the
+// result exact to ~1e-15 rad); Float rounds each contribution once to float (Area and Max after
+// one power-of-two scale per mesh, so meshes at 1e-30 or 1e30 neither under- nor overflow) and
+// accumulates in float: half the accumulator memory and traffic. Error against Double: each term
+// carries a relative error <= 2^-24 and the float sum of k terms <= (k-1) 2^-24 of the sum of
+// their magnitudes, so the angle to the double normal is <= ~k 2^-24 (|terms| / |sum|) rad, which
+// for any vertex whose terms do not cancel is < 1e-5 deg for k < 100; measured max 2e-5 deg on
+// the benchmark meshes (tests assert 1e-3 deg).
 // Fallback (never NaN): a vertex whose sum is zero or not finite takes the unit normal of its
 // first valid face (by face index) when it has one (contributions cancelled, e.g. a two-sided
 // sheet), else kFallbackNormal = (0, 0, 1) (isolated vertex, or only degenerate faces). Both are
@@ -15,10 +19,10 @@
 #include <algorithm>
 #include <type_traits>
 
-#include <tbb/parallel_invoke.h>
-
+#include "core/error.h"
 #include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
+#include "normals/normalise_sums.h"
 #include "normals/parallel.h"
 #include "normals/vertex_fallback.h"
 
@@ -27,51 +31,63 @@ namespace {
 
 using namespace normals_detail;
 
-// Normalises sum[v] (T) into out[v] (double) for v in [v_begin, v_end); appends the vertices whose
-// sum cannot be normalised to `failed`. `sum` and `out` may be the same array (T = double).
-template <class T>
-void normalise_range(const T* sum, double* out, std::size_t v_begin, std::size_t v_end, std::vector<std::uint32_t>& failed) {
-  for (std::size_t v = v_begin; v < v_end; ++v) {
-    const Vec3<T> s{sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]};
-    const T len = checked_length(s);
-    if (len > T(0)) {  // divisor checked; divide (not multiply by 1/len): one rounding per component
-      out[3 * v] = double(s.x / len);
-      out[3 * v + 1] = double(s.y / len);
-      out[3 * v + 2] = double(s.z / len);
-    } else {
-      failed.push_back(std::uint32_t(v));
-    }
-  }
-}
-
+// plan: the caller's cached chunk plan, or null (then made here, beside zeroing the sums).
 template <class T, Weighting W>
-VertexNormals compute(const Mesh& mesh, Precision precision) {
+void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, VertexNormals& result) {
   const std::size_t V = mesh.num_vertices();
-  VertexNormals result;
+  result.fallback_vertices = result.degenerate_faces = 0;
   // In double the output array itself accumulates the sums (normalised in place afterwards): no
-  // second #V by 3 array to allocate, zero and copy. In float a float accumulator is used.
-  // Zeroing (and first-touching) the arrays is serial; it runs beside the chunk plan.
+  // second #V by 3 array to allocate, zero and copy. In float a float accumulator is used. An
+  // output array that already has the capacity (a caller reusing `result`) is reused, not
+  // reallocated. With a cached plan the zeroing is split over the threads.
+  // Float sums are padded to 4 per vertex (16 bytes): one SSE addition per corner instead of three
+  // scalar ones (accumulate_by_vertex.h, add_to_row).
+  constexpr std::size_t S = std::is_same_v<T, double> ? 3 : 4;
   std::vector<float> float_sum;
-  ChunkPlan plan;
-  auto allocate = [&] {
-    result.normals.assign(3 * V, 0.0);
-    if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * V, 0.0f);
-  };
-  auto make_plan = [&] { plan = plan_chunks<false>(mesh, nullptr, V); };
-  if (mesh.num_faces() < kSerialBelow) {
-    allocate();
-    make_plan();
+  ChunkPlan own_plan;
+  const bool big = mesh.num_faces() >= kSerialBelow;
+  if (cached) {
+    result.normals.resize(3 * V);
+    if constexpr (!std::is_same_v<T, double>) float_sum.resize(S * V);
+    constexpr std::size_t kZeroBlock = std::size_t(1) << 16;  // values
+    const std::size_t n = S * V, blocks = (n + kZeroBlock - 1) / kZeroBlock;
+    auto zero = [&](std::size_t b) {
+      const std::size_t begin = b * kZeroBlock, end = std::min(n, begin + kZeroBlock);
+      if constexpr (std::is_same_v<T, double>)
+        std::fill(result.normals.begin() + std::ptrdiff_t(begin), result.normals.begin() + std::ptrdiff_t(end), 0.0);
+      else
+        std::fill(float_sum.begin() + std::ptrdiff_t(begin), float_sum.begin() + std::ptrdiff_t(end), 0.0f);
+    };
+    if (big && cached->K > 0) parallel_blocks(blocks, zero);
+    else for (std::size_t b = 0; b < blocks; ++b) zero(b);
   } else {
-    tbb::parallel_invoke(allocate, make_plan);
+    auto allocate = [&] {
+      // float: the output is not a sum, and every entry is written (normalised or fallback)
+      if constexpr (std::is_same_v<T, double>) result.normals.assign(3 * V, 0.0);
+      else result.normals.resize(3 * V);
+      if constexpr (!std::is_same_v<T, double>) float_sum.assign(S * V, 0.0f);
+    };
+    // Without a cached plan the sum runs serially (own_plan stays empty, K = 0): planning the
+    // parallel sum (two passes over the corners, ~3-6 ms per million triangles) costs about what
+    // the area kernel itself costs and half the angle kernel, so on 2 threads the plain call was
+    // slower than the serial loop (measured, bench/normals/results/notes.md). Repeated calls that
+    // want threads build a VertexNormalsPlan once.
+    allocate();
   }
+  const ChunkPlan& plan = cached ? *cached : own_plan;
   T* sum;
   if constexpr (std::is_same_v<T, double>) sum = result.normals.data();
   else sum = float_sum.data();
   const bool triangles = mesh.all_triangles();
-  result.degenerate_faces = accumulate_by_target<false, T>(mesh, plan, nullptr,
+  // float Area/Max: one power of two for the whole mesh (corner_contributions.h). A vertex whose
+  // float sum still overflows (a face ~2^100 times larger than the sampled ones) takes the
+  // fallback below: a valid unit normal, counted.
+  const double scale = contribution_scale<T, W>(mesh);
+  const RowHint rows{reinterpret_cast<const char*>(sum), S * sizeof(T)};
+  result.degenerate_faces = accumulate_by_target<false, T, S>(mesh, plan, nullptr,
       [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
-        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink)
-                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink);
+        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale, rows)
+                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink, scale);
       }, sum);
 
   // Normalise in fixed blocks (independent of the thread count); failures listed per block and
@@ -80,23 +96,41 @@ VertexNormals compute(const Mesh& mesh, Precision precision) {
   const std::size_t blocks = (V + kBlock - 1) / kBlock;
   std::vector<std::vector<std::uint32_t>> failed(blocks);
   parallel_blocks(blocks, [&](std::size_t b) {
-    normalise_range<T>(sum, result.normals.data(), b * kBlock, std::min(V, (b + 1) * kBlock), failed[b]);
+    normalise_range<T, S>(sum, result.normals.data(), b * kBlock, std::min(V, (b + 1) * kBlock), failed[b]);
   });
   std::vector<std::uint32_t> needs_fallback;
   for (auto& list : failed) needs_fallback.insert(needs_fallback.end(), list.begin(), list.end());
   result.fallback_vertices = needs_fallback.size();
   if (!needs_fallback.empty()) apply_vertex_fallback(mesh, needs_fallback, precision, result.normals);
-  return result;
 }
 
 }  // namespace
 
-VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision) {
-  return dispatch(weighting, precision, [&](auto t, auto w) {
+void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out) {
+  dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    return compute<T, W>(mesh, precision);
+    compute<T, W>(mesh, nullptr, precision, out);
+    return 0;
   });
+}
+
+void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
+                    VertexNormals& out) {
+  if (!plan.fits(mesh))
+    throw Error("vertex_normals: the plan was built for a mesh with other vertex, face or corner counts");
+  dispatch(weighting, precision, [&](auto t, auto w) {
+    using T = decltype(t);
+    constexpr Weighting W = decltype(w)::value;
+    compute<T, W>(mesh, &plan.chunks(), precision, out);
+    return 0;
+  });
+}
+
+VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision) {
+  VertexNormals result;
+  vertex_normals(mesh, weighting, precision, result);
+  return result;
 }
 
 }  // namespace shadetool

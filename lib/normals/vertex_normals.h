@@ -3,10 +3,13 @@
 // n_v = normalise( sum over the corners of v of w_c n_f ), weights per normals/weighting.h and
 // corner_contributions.h (Gouraud 1971; area; Thuermer & Wuethrich 1998; Max 1999). Polygons use
 // their Newell normal and their own corner at v. Degenerate faces contribute nothing.
-// Precision: Double (default) computes and sums in double. Float forms each edge vector in double,
-// rounds it once, and computes and sums in float (angles: double in both); measured within 1e-3
-// degree of Double (about 1e-5). Threads: TBB over face chunks for meshes of 32768+ faces; the
-// result is bitwise the same for any thread count (accumulate_by_vertex.h).
+// Precision: contributions are computed in double either way. Double (default) sums in double;
+// Float rounds each contribution once to float (area and max weights after one exact power-of-two
+// scale per mesh, so meshes scaled to 1e-30 or 1e30 work) and sums in float; measured within 1e-3
+// degree of Double (about 1e-5). Threads: the plain call sums serially (planning a parallel sum
+// costs as much as the area kernel); with a VertexNormalsPlan (vertex_normals_plan.h) the sum is
+// split over TBB threads for meshes of 32768+ faces. The result is bitwise the same either way
+// and for any thread count (accumulate_by_vertex.h).
 //
 // Inputs:  mesh      positions #V by 3, faces (triangles or polygons)
 //          weighting see normals/weighting.h (default Angle)
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "normals/vertex_normals_plan.h"
 #include "normals/weighting.h"
 
 namespace shadetool {
@@ -35,5 +39,17 @@ struct VertexNormals {
 
 VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting = Weighting::Angle,
                              Precision precision = Precision::Double);
+
+// The same into `out`, reusing the storage of out.normals when its capacity suffices (no
+// allocation and no fresh pages to fault in: for callers that compute normals repeatedly, as
+// OpenMesh's update_normals writes into its preallocated normal property). Every field of `out`
+// is overwritten.
+void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out);
+
+// The same with a plan of the mesh's connectivity made once (vertex_normals_plan.h): repeated calls
+// on 2+ threads skip the per-call planning of the parallel sum. Same result bit for bit. Throws
+// Error when the plan was built for other vertex/face/corner counts.
+void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
+                    VertexNormals& out);
 
 }  // namespace shadetool

@@ -241,23 +241,28 @@ TEST_CASE("stress: meshes scaled to 1e-30 and 1e30 keep their normals", "[stress
   }
 }
 
-// KNOWN DEFECT (reported to the normals module, see the reliability report): with float
-// accumulation the cross product of two edges is formed in float without rescaling, so at these
-// scales every face comes out degenerate. Tagged [!mayfail] so that the suite stays green while the
-// failure stays visible in every run; remove the tag when the kernels rescale.
-TEST_CASE("stress: meshes scaled to 1e-30 and 1e30 with float accumulation", "[stress][normals][!mayfail]") {
-  // Float accumulation: the edge vectors (~1e30 or ~1e-31) are representable in float, but their
-  // cross product (~1e60 / ~1e-62) is not (float spans 1.4e-45 .. 3.4e38). A kernel that does not
-  // rescale the edges (by one power of two for the whole mesh, so that area weights keep their
-  // ratios) before the cross product loses every face. Expected (the issue's "no overflow or
-  // underflow in lengths, normals unchanged"): the float normals at scale s equal the float
-  // normals at scale 1 within 16 u_f, and none is lost.
+// Float accumulation at the same scales. The edges (~1e30 or ~1e-31) fit in float, but their cross
+// product (~1e60 / ~1e-62) does not (float spans 1.4e-45 .. 3.4e38): the kernels form every
+// contribution in double and, for the scale-dependent weightings (area ~ s^2, max ~ s^-2), multiply
+// it by one power of two per mesh before rounding to float (lib/normals/corner_contributions.h).
+// Expected (the issue's "no overflow or underflow in lengths, normals unchanged"): float face
+// normals at scale s equal those at scale 1 within 16 u_f and none is lost; float vertex normals
+// of every weighting equal those at scale 1 within 64 u_f (one float rounding per term, at most 6
+// terms) and none falls back. At 2^-100 and 2^100 the area and max contributions are exactly
+// scaled in double and the chosen power of two undoes that scale exactly, so their float vertex
+// normals are bit for bit those at scale 1 (unit normals may differ in the last bit: the length
+// of a cross product ~2^+-200 is taken by scaling instead of squaring, checked_length).
+TEST_CASE("stress: meshes scaled to 1e-30 and 1e30 with float accumulation", "[stress][normals]") {
   const AnalyticMesh sphere = testing::icosphere(2, 0.1, 5);
   const auto ref = face_normals(sphere.mesh, Precision::Float);
-  for (double s : {1e-30, 1e30}) {
+  const Weighting weightings[] = {Weighting::Uniform, Weighting::Area, Weighting::Angle, Weighting::Max};
+  std::vector<std::vector<double>> ref_vertex;
+  for (auto w : weightings) ref_vertex.push_back(vertex_normals(sphere.mesh, w, Precision::Float).normals);
+  for (double s : {std::ldexp(1.0, -100), std::ldexp(1.0, 100), 1e-30, 1e30}) {
     Mesh scaled = sphere.mesh;
     for (double& x : scaled.positions) x *= s;
     INFO("scale " << s);
+    const bool exact_scale = s == std::ldexp(1.0, -100) || s == std::ldexp(1.0, 100);
     const auto fn = face_normals(scaled, Precision::Float);
     REQUIRE(all_finite(fn));
     std::size_t lost = 0;
@@ -266,9 +271,55 @@ TEST_CASE("stress: meshes scaled to 1e-30 and 1e30 with float accumulation", "[s
       CHECK(angle_between(get3(fn, f), get3(ref, f)) <= 16 * kUf);
     }
     CHECK(lost == 0);
-    const VertexNormals vn = vertex_normals(scaled, Weighting::Angle, Precision::Float);
-    CHECK(all_finite(vn.normals));
-    CHECK(vn.fallback_vertices == 0);
+    for (std::size_t k = 0; k < 4; ++k) {
+      INFO("weighting " << k);
+      const VertexNormals vn = vertex_normals(scaled, weightings[k], Precision::Float);
+      REQUIRE(all_finite(vn.normals));
+      CHECK(vn.fallback_vertices == 0);
+      for (std::size_t v = 0; v < scaled.num_vertices(); ++v)
+        CHECK(angle_between(get3(vn.normals, v), get3(ref_vertex[k], v)) <= 64 * kUf);
+      const bool scale_dependent = weightings[k] == Weighting::Area || weightings[k] == Weighting::Max;
+      if (exact_scale && scale_dependent) CHECK(vn.normals == ref_vertex[k]);
+    }
+  }
+}
+
+TEST_CASE("stress: faces beyond the vector pass's range (1e-70, 1e70) take the scalar path, interleaved with others",
+          "[stress][normals]") {
+  // The triangle kernels' vector pass (lib/normals/triangle_blocks.h) takes faces whose N . N lies
+  // in [1e-250, 1e250]; at scale 1e-70 (N . N ~ 1e-283) and 1e70 (~1e277) every face falls to the
+  // per-face scalar path, which scales lengths instead of squaring. Faces of a unit copy and a
+  // scaled copy alternate, so every block of faces mixes both paths. Expected: each copy's vertex
+  // normals equal the unit mesh's within 64 u (the scaled positions are rounded once, by u; the
+  // rest as in the 1e-30 case above), none falls back, in every weighting.
+  const AnalyticMesh sphere = testing::icosphere(3, 0.1, 5);
+  const Mesh& unit = sphere.mesh;
+  const std::size_t V = unit.num_vertices(), F = unit.num_faces();
+  const Weighting weightings[] = {Weighting::Uniform, Weighting::Area, Weighting::Angle, Weighting::Max};
+  for (double scale : {1e-70, 1e70}) {
+    INFO("scale " << scale);
+    Mesh mixed;
+    mixed.precision = ValuePrecision::Double;
+    for (std::size_t v = 0; v < V; ++v) mixed.add_vertex(unit.position(v));
+    for (std::size_t v = 0; v < V; ++v) mixed.add_vertex(unit.position(v) * scale);
+    for (std::size_t f = 0; f < F; ++f)
+      for (std::uint32_t offset : {0u, std::uint32_t(V)}) {
+        const std::uint32_t* c = &unit.corner_vertex[unit.face_start[f]];
+        mixed.add_face({c[0] + offset, c[1] + offset, c[2] + offset});
+      }
+    for (auto w : weightings) {
+      INFO("weighting " << int(w));
+      const auto ref = vertex_normals(unit, w).normals;
+      const VertexNormals vn = vertex_normals(mixed, w);
+      REQUIRE(all_finite(vn.normals));
+      CHECK(vn.fallback_vertices == 0);
+      CHECK(vn.degenerate_faces == 0);
+      double worst = 0;
+      for (std::size_t v = 0; v < V; ++v)
+        worst = std::max({worst, angle_between(get3(vn.normals, v), get3(ref, v)),
+                          angle_between(get3(vn.normals, V + v), get3(ref, v))});
+      CHECK(worst <= 64 * kU);
+    }
   }
 }
 
