@@ -32,6 +32,7 @@
 #include <type_traits>
 
 #include "normals/corner_normals.h"
+#include "load_average.h"
 #include "normals/vertex_normals.h"
 #include "support/analytic_meshes.h"
 
@@ -48,19 +49,6 @@ using OMd = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 using OMf = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraits>;
 
 struct Err { double mean = 0, p99 = 0, max = 0; std::size_t bad = 0; };
-
-std::string load_average() {
-  char buf[128] = {0};
-  if (FILE* f = std::fopen("/proc/loadavg", "r")) {
-    if (!std::fgets(buf, sizeof buf, f)) buf[0] = 0;
-    std::fclose(f);
-  }
-  std::string s(buf);
-  std::size_t n = 0, cut = s.size();
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (s[i] == ' ' && ++n == 3) { cut = i; break; }
-  return s.substr(0, cut);
-}
 
 template <class Get>
 Err error_of(std::size_t V, const std::vector<Vec3d>& exact, Get get) {

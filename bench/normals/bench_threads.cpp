@@ -22,6 +22,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "load_average.h"
 #include "normals/vertex_normals.h"
 #include "support/analytic_meshes.h"
 
@@ -36,18 +37,6 @@ double cpu_ms() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
-}
-std::string load_average() {
-  char buf[128] = {0};
-  if (FILE* f = std::fopen("/proc/loadavg", "r")) {
-    if (!std::fgets(buf, sizeof buf, f)) buf[0] = 0;
-    std::fclose(f);
-  }
-  std::string s(buf);
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (s[i] == ' ' && ++n == 3) return s.substr(0, i);
-  return s;
 }
 
 }  // namespace
