@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "core/error.h"
-#include "io/bulk_reserve.h"
+#include "core/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/split_face_colors.h"
 #include "io/text_parse.h"

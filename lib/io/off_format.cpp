@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "io/bulk_reserve.h"
+#include "core/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/split_corner_normals.h"
 #include "io/text_parse.h"

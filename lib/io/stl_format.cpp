@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "io/bulk_reserve.h"
+#include "core/bulk_reserve.h"
 #include "io/number_text.h"
 #include "io/text_parse.h"
 

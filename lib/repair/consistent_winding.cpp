@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "core/error.h"
-#include "io/bulk_reserve.h"
+#include "core/bulk_reserve.h"
 
 namespace shadetool {
 
@@ -47,9 +47,9 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
 
   ConsistentWinding w;
   w.non_manifold_edges = adj.non_manifold_edges;
-  io::reserve_bulk(w.face_component, F);  // huge pages for large fresh arrays (io/bulk_reserve.h)
+  reserve_bulk(w.face_component, F);  // huge pages for large fresh arrays (core/bulk_reserve.h)
   w.face_component.resize(F);
-  io::reserve_bulk(w.face_reverse, F);
+  reserve_bulk(w.face_reverse, F);
   w.face_reverse.resize(F);
   std::uint32_t* component = w.face_component.data();
   std::uint8_t* reverse = w.face_reverse.data();

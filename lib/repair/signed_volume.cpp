@@ -7,7 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "io/bulk_reserve.h"
+#include "core/bulk_reserve.h"
 
 namespace shadetool {
 
@@ -30,7 +30,7 @@ ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWind
     if (mesh.face_size(seed) > 0) out.reference[k] = position(cv[fs[seed]]);
   }
   if (degenerate) {
-    io::reserve_bulk(degenerate->kind, F);
+    reserve_bulk(degenerate->kind, F);
     degenerate->kind.resize(F);
   }
 

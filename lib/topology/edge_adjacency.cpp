@@ -9,7 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include "core/error.h"
-#include "io/bulk_reserve.h"
+#include "core/bulk_reserve.h"
 
 namespace shadetool {
 
@@ -64,8 +64,8 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   constexpr std::uint32_t kUnpaired = EdgeAdjacency::kUnpaired;
 
   EdgeAdjacency adj;
-  // Large fresh arrays: huge pages first (io/bulk_reserve.h); page faults are much of the cost.
-  io::reserve_bulk(adj.corner_mate, C);
+  // Large fresh arrays: huge pages first (core/bulk_reserve.h); page faults are much of the cost.
+  reserve_bulk(adj.corner_mate, C);
   adj.corner_mate.resize(C);
   std::uint32_t* mate = adj.corner_mate.data();
 
@@ -79,7 +79,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
 
   // Pass 1: range check; half-edges per lower vertex, counted at pos[lo + 1].
   std::vector<std::uint32_t> pos;
-  io::reserve_bulk(pos, V + 1);
+  reserve_bulk(pos, V + 1);
   pos.assign(V + 1, 0);
   std::uint32_t* count = pos.data() + 1;
   // (Both face passes are compiled twice: for a triangle mesh the corner loops have a constant
@@ -107,7 +107,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   // Pass 2: scatter (higher vertex << 32 | corner << 1 | tail is the lower vertex) in corner order;
   // corners that are no half-edge get kUnpaired now. pos[v] becomes the end of bucket v.
   std::vector<std::uint64_t> slot;
-  io::reserve_bulk(slot, H);
+  reserve_bulk(slot, H);
   slot.resize(H);
   auto scatter_pass = [&](auto all_triangles) {
     constexpr bool kTriangles = decltype(all_triangles)::value;

@@ -17,7 +17,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace shadetool::io {
+namespace shadetool {
 
 template <class T>
 void reserve_bulk(std::vector<T>& v, std::size_t n) {
@@ -35,4 +35,4 @@ void reserve_bulk(std::vector<T>& v, std::size_t n) {
 #endif
 }
 
-}  // namespace shadetool::io
+}  // namespace shadetool
