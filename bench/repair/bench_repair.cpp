@@ -32,7 +32,7 @@
 #include <tbb/task_arena.h>
 
 #include "info/edge_topology.h"
-#include "io/bulk_reserve.h"
+#include "core/bulk_reserve.h"
 #include "io/mesh_io.h"
 #include "repair/component_boundaries.h"
 #include "repair/consistent_winding.h"
@@ -205,7 +205,7 @@ int main(int argc, char** argv) {
   });
   const Timing f_fill_huge = median_ms(reps, [] {}, [&] {
     std::vector<std::uint32_t> fresh;
-    io::reserve_bulk(fresh, C);  // huge pages, as the repair's large arrays
+    reserve_bulk(fresh, C);  // huge pages, as the repair's large arrays
     fresh.resize(C);
     for (std::size_t c = 0; c < C; ++c) fresh[c] = std::uint32_t(c);
     sink = sink + fresh[C / 2];
@@ -215,7 +215,7 @@ int main(int argc, char** argv) {
     // The half-edges bucketed by lower vertex: counts, prefix sum, scatter of 8-byte keys; no
     // matching, no output. The least a flat-array edge adjacency can do.
     std::vector<std::uint32_t> pos;
-    io::reserve_bulk(pos, V + 1);
+    reserve_bulk(pos, V + 1);
     pos.assign(V + 1, 0);
     const std::uint32_t* cv = as_read.corner_vertex.data();
     for (std::size_t c = 0; c < C; c += 3) {
@@ -226,7 +226,7 @@ int main(int argc, char** argv) {
     }
     for (std::size_t v = 0; v < V; ++v) pos[v + 1] += pos[v];
     std::vector<std::uint64_t> slot;
-    io::reserve_bulk(slot, C);
+    reserve_bulk(slot, C);
     slot.resize(C);
     for (std::size_t c = 0; c < C; c += 3) {
       const std::uint32_t a = cv[c], b = cv[c + 1], d = cv[c + 2];
@@ -254,7 +254,7 @@ int main(int argc, char** argv) {
   row("floor: stream the 3M corner indices (12 MB)", f_stream);
   row("floor: gather one coordinate per corner (3M position reads)", f_gather);
   row("floor: fill a fresh 3M x uint32 array (one corner-sized output), 4 KiB pages", f_fill);
-  row("floor: the same in huge pages (io/bulk_reserve.h)", f_fill_huge);
+  row("floor: the same in huge pages (core/bulk_reserve.h)", f_fill_huge);
   row("floor: counting sort of the 3M half-edges by lower vertex (no matching)", f_counting_sort);
   row("floor: fill a fresh 1M x uint8 array (one face-sized flag array)", f_faces);
   return summary();
