@@ -23,6 +23,7 @@
 #include <tbb/task_arena.h>
 
 #include "load_average.h"
+#include "parallel_control.h"
 #include "normals/vertex_normals.h"
 #include "support/analytic_meshes.h"
 
@@ -71,15 +72,7 @@ int main(int argc, char** argv) {
   VertexNormals r1, r2, r3, r4;
   double sink = 0;
   auto control = [&](tbb::task_arena& a) {
-    a.execute([&] {
-      double part[2] = {0, 0};
-      tbb::parallel_for(0, 2, [&](int k) {
-        double acc = 0;
-        for (int i = 0; i < 2500000; ++i) acc += std::sqrt(double(i + k));
-        part[k] = acc;
-      });
-      sink += part[0] + part[1];
-    });
+    a.execute([&] { sink += parallel_sqrt_control(); });
   };
   struct Case { const char* name; std::function<void()> run; std::vector<double> wall, cpu; };
   std::vector<Case> cases = {
