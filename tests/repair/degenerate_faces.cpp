@@ -3,35 +3,19 @@
 
 #include <limits>
 
+#include "repair_test_meshes.h"
 #include "repair/degenerate_faces.h"
 
 using namespace shadetool;
 
 TEST_CASE("each kind of degenerate face is named; a tiny but well-shaped face is not one", "[repair][degenerate]") {
-  Mesh m;
-  m.add_vertex({0, 0, 0});                  // 0
-  m.add_vertex({1, 0, 0});                  // 1
-  m.add_vertex({0, 1, 0});                  // 2
-  m.add_vertex({2, 0, 0});                  // 3: collinear with 0 and 1
-  m.add_vertex({1e-20, 0, 0});              // 4
-  m.add_vertex({0, 1e-20, 0});              // 5
-  m.add_vertex({std::numeric_limits<double>::quiet_NaN(), 0, 0});  // 6
-  m.add_vertex({1, 1e-15, 0});              // 7: 1e-15 off the line: sin(angle) ~ 5e-16, below 1.4e-14
-  m.add_vertex({1, 1e-9, 0});               // 8: clearly off the line
-  m.add_face({0, 1, 2});     // fine
-  m.add_face({0, 1});        // too few corners
-  m.add_face({0, 1, 1});     // repeated index
-  m.add_face({0, 1, 3});     // collinear: zero area
-  m.add_face({0, 4, 5});     // 1e-20 wide, right-angled: fine
-  m.add_face({0, 1, 6});     // NaN corner
-  m.add_face({0, 3, 7});     // numerically collinear
-  m.add_face({0, 3, 8});     // thin but real
-  m.add_face({0, 1, 8, 2});  // a quad: fine
-  m.add_face({0, 1, 3, 1});  // quad with a repeated index
+  // Vertices and faces, each with its expected kind, in repair_test_meshes.h.
+  Mesh m = testing::degenerate_triangles_mesh();
+  testing::add_degenerate_polygons(m);
   const DegenerateFaces d = degenerate_faces(m);
   using K = DegenerateKind;
-  CHECK(d.kind == std::vector<K>{K::None, K::TooFewCorners, K::RepeatedIndex, K::ZeroArea, K::None, K::NonFinite,
-                                 K::ZeroArea, K::None, K::None, K::RepeatedIndex});
+  CHECK(d.kind == std::vector<K>{K::None, K::RepeatedIndex, K::ZeroArea, K::None, K::NonFinite, K::ZeroArea, K::None,
+                                 K::TooFewCorners, K::None, K::RepeatedIndex});
   CHECK(d.count() == 6);
   CHECK(d.zero_area == 2);
   CHECK(d.repeated_index == 2);

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <random>
 #include <set>
 #include <utility>
@@ -218,6 +219,38 @@ inline std::size_t same_direction_edges(const Mesh& m) {
   for (auto it = directed.begin(); it != directed.end(); it = directed.upper_bound(*it))
     if (directed.count(*it) == 2) ++n;
   return n;
+}
+
+// One small mesh with every kind of degenerate face, for the tests of repair/degenerate_faces and
+// of the volume pass that classifies faces the same way.
+// Seven triangles, expected kinds (DegenerateKind): None, RepeatedIndex, ZeroArea, None,
+// NonFinite, ZeroArea, None.
+inline Mesh degenerate_triangles_mesh() {
+  Mesh m;
+  m.add_vertex({0, 0, 0});                                         // 0
+  m.add_vertex({1, 0, 0});                                         // 1
+  m.add_vertex({0, 1, 0});                                         // 2
+  m.add_vertex({2, 0, 0});                                         // 3: collinear with 0 and 1
+  m.add_vertex({1e-20, 0, 0});                                     // 4
+  m.add_vertex({0, 1e-20, 0});                                     // 5
+  m.add_vertex({std::numeric_limits<double>::quiet_NaN(), 0, 0});  // 6
+  m.add_vertex({1, 1e-15, 0});  // 7: 1e-15 off the line: sin(angle) ~ 5e-16, below 1.4e-14
+  m.add_vertex({1, 1e-9, 0});   // 8: clearly off the line
+  m.add_face({0, 1, 2});  // fine
+  m.add_face({0, 1, 1});  // repeated index
+  m.add_face({0, 1, 3});  // collinear: zero area
+  m.add_face({0, 4, 5});  // 1e-20 wide, right-angled: fine
+  m.add_face({0, 1, 6});  // NaN corner
+  m.add_face({0, 3, 7});  // numerically collinear
+  m.add_face({0, 3, 8});  // thin but real
+  return m;
+}
+
+// Appends three faces that are not triangles; expected kinds: TooFewCorners, None, RepeatedIndex.
+inline void add_degenerate_polygons(Mesh& m) {
+  m.add_face({0, 1});        // too few corners
+  m.add_face({0, 1, 8, 2});  // a quad: fine
+  m.add_face({0, 1, 3, 1});  // quad with a repeated index
 }
 
 }  // namespace shadetool::testing

@@ -61,25 +61,9 @@ TEST_CASE("a two-sided sheet (two faces on the same three vertices) encloses not
 }
 
 TEST_CASE("the volume pass classifies degenerate faces exactly as degenerate_faces does", "[repair][volume][degenerate]") {
-  // The mesh of the degenerate_faces test, triangles only (the pass's fast path), then with
-  // polygons and a face of two corners (the general path).
-  Mesh m;
-  m.add_vertex({0, 0, 0});                                         // 0
-  m.add_vertex({1, 0, 0});                                         // 1
-  m.add_vertex({0, 1, 0});                                         // 2
-  m.add_vertex({2, 0, 0});                                         // 3: collinear with 0 and 1
-  m.add_vertex({1e-20, 0, 0});                                     // 4
-  m.add_vertex({0, 1e-20, 0});                                     // 5
-  m.add_vertex({std::numeric_limits<double>::quiet_NaN(), 0, 0});  // 6
-  m.add_vertex({1, 1e-15, 0});                                     // 7: numerically on the line
-  m.add_vertex({1, 1e-9, 0});                                      // 8: clearly off it
-  m.add_face({0, 1, 2});  // fine
-  m.add_face({0, 1, 1});  // repeated index
-  m.add_face({0, 1, 3});  // collinear: zero area
-  m.add_face({0, 4, 5});  // 1e-20 wide, right-angled: fine
-  m.add_face({0, 1, 6});  // NaN corner
-  m.add_face({0, 3, 7});  // numerically collinear
-  m.add_face({0, 3, 8});  // thin but real
+  // The mesh of the degenerate_faces test (repair_test_meshes.h), triangles only (the pass's
+  // fast path), then with polygons and a face of two corners (the general path).
+  Mesh m = testing::degenerate_triangles_mesh();
   using K = DegenerateKind;
   EdgeAdjacencyOptions left_out;
   left_out.skip_unwound_faces = true;
@@ -93,9 +77,7 @@ TEST_CASE("the volume pass classifies degenerate faces exactly as degenerate_fac
   CHECK(d.zero_area == 2);
   CHECK(d.repeated_index == 1);
   CHECK(d.non_finite == 1);
-  m.add_face({0, 1});        // too few corners
-  m.add_face({0, 1, 8, 2});  // a quad: fine
-  m.add_face({0, 1, 3, 1});  // quad with a repeated index
+  testing::add_degenerate_polygons(m);
   d = classify(m);
   CHECK(d.kind == std::vector<K>{K::None, K::RepeatedIndex, K::ZeroArea, K::None, K::NonFinite, K::ZeroArea, K::None,
                                  K::TooFewCorners, K::None, K::RepeatedIndex});
