@@ -25,8 +25,8 @@ std::string ply_head(const std::string& format, const std::string& nv) {
          "property list uchar int vertex_indices\nend_header\n";
 }
 
-bool has_subcommand(const ScratchDir& dir, const std::string& name) {
-  const Run r = run_cli("--help", dir);
+bool has_subcommand(const std::string& name) {
+  const Run r = run_cli("--help");
   return r.out.find("\n  " + name + " ") != std::string::npos || r.out.find(" " + name + "\n") != std::string::npos;
 }
 
@@ -62,24 +62,24 @@ TEST_CASE("CLI: every kind of bad input gives one FILE:LINE line, exit 1 and no 
   for (const auto& c : cases)
     if (c.file != "missing.obj" && c.file != "dir.obj") write_file(dir / c.file, c.contents);
 
-  const bool can_write = has_subcommand(dir, "normals");
+  const bool can_write = has_subcommand("normals");
   if (!can_write) WARN("no `normals` subcommand in this build: output checks skipped, messages and exit codes checked with `info`");
   for (const auto& c : cases) {
     INFO(c.file);
     const std::string path = dir / c.file;
-    const Run info = run_cli("info '" + path + "'", dir);
+    const Run info = run_cli("info '" + path + "'");
     CHECK(info.code == 1);
     CHECK(info.err == "shadetool: " + path + c.message + "\n");
     CHECK(info.out.empty());
     if (!can_write) continue;
     const std::string out = dir / "out.ply";
     std::filesystem::remove(out);
-    const Run n = run_cli("normals '" + path + "' -o '" + out + "'", dir);
+    const Run n = run_cli("normals '" + path + "' -o '" + out + "'");
     CHECK(n.code == 1);
     CHECK(n.err.find("shadetool: " + path + c.message + "\n") != std::string::npos);
     CHECK(!std::filesystem::exists(out));
     write_file(out, "precious");
-    CHECK(run_cli("normals '" + path + "' -o '" + out + "'", dir).code == 1);
+    CHECK(run_cli("normals '" + path + "' -o '" + out + "'").code == 1);
     CHECK(read_file(out) == "precious");
   }
 }
@@ -87,7 +87,7 @@ TEST_CASE("CLI: every kind of bad input gives one FILE:LINE line, exit 1 and no 
 TEST_CASE("CLI: NaN coordinates are read by info and reported", "[cli]") {
   ScratchDir dir;
   write_file(dir / "nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  const Run r = run_cli("info '" + (dir / "nan.obj") + "' --json", dir);
+  const Run r = run_cli("info '" + (dir / "nan.obj") + "' --json");
   CHECK(r.code == 0);
   CHECK(r.out.find("\"nonfinite_vertices\":1") != std::string::npos);
 }

@@ -116,7 +116,7 @@ inline Mesh rich_mesh() {
 
 // Runs the shadetool binary through the shell (tests/support/run_process.h).
 using Run = shadetool_test::ProcessResult;
-inline Run run_cli(const std::string& args, const ScratchDir&) { return shadetool_test::run_shadetool(args); }
+inline Run run_cli(const std::string& args) { return shadetool_test::run_shadetool(args); }
 
 inline std::string data_path(const std::string& name) { return std::string(SHADETOOL_SOURCE_DIR) + "/data/" + name; }
 

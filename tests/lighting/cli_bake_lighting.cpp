@@ -2,7 +2,6 @@
 // files checked (output read back with io/mesh_io.h).
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -33,7 +32,7 @@ struct TempDir {
   void write(const std::string& name, const std::string& text) const { std::ofstream(file(name)) << text; }
 };
 
-Run run(const TempDir&, const std::string& args) { return shadetool_test::run_shadetool("bake-lighting " + args); }
+Run run(const std::string& args) { return shadetool_test::run_shadetool("bake-lighting " + args); }
 
 // A 2 x 1 quad in z = 0, as two triangles, normal +z.
 const char* kQuadObj = "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
@@ -51,7 +50,7 @@ TEST_CASE("bake-lighting writes 8-bit vertex colours round(255 c)", "[lighting][
   TempDir dir;
   dir.write("quad.obj", kQuadObj);
   dir.write("scene.json", kFlatScene);
-  const Run r = run(dir, dir.file("quad.obj") + " -o " + dir.file("lit.ply") + " --scene " + dir.file("scene.json"));
+  const Run r = run(dir.file("quad.obj") + " -o " + dir.file("lit.ply") + " --scene " + dir.file("scene.json"));
   INFO(r.err);
   REQUIRE(r.code == 0);
   const Mesh m = read_mesh(dir.file("lit.ply"));
@@ -71,7 +70,7 @@ TEST_CASE("bake-lighting --hdr --srgb --per face --model --space", "[lighting][c
   TempDir dir;
   dir.write("quad.obj", kQuadObj);
   dir.write("scene.json", kFlatScene);
-  const Run r = run(dir, dir.file("quad.obj") + " -o " + dir.file("lit.ply") + " --scene " + dir.file("scene.json") +
+  const Run r = run(dir.file("quad.obj") + " -o " + dir.file("lit.ply") + " --scene " + dir.file("scene.json") +
                              " --per face --hdr --srgb --model blinn-phong --space object --stats");
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -95,7 +94,7 @@ TEST_CASE("bake-lighting with the example scenes", "[lighting][cli]") {
   dir.write("quad.obj", kQuadObj);
   for (const char* scene : {"studio.json", "sun.json", "stretched.json"}) {
     INFO(scene);
-    const Run r = run(dir, dir.file("quad.obj") + " -o " + dir.file("lit.obj") + " --scene " +
+    const Run r = run(dir.file("quad.obj") + " -o " + dir.file("lit.obj") + " --scene " +
                                std::string(SHADETOOL_SOURCE_DIR) + "/data/scenes/" + scene + " --stats");
     INFO(r.err);
     CHECK(r.code == 0);
@@ -111,30 +110,30 @@ TEST_CASE("bake-lighting errors: exit codes, one-line messages, no output", "[li
   const std::string out = dir.file("lit.ply");
 
   // a bad scene: exit 1, the file, the JSON path and the problem, no output
-  Run r = run(dir, dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("bad.json"));
+  Run r = run(dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("bad.json"));
   CHECK(r.code == 1);
   CHECK(r.err == "shadetool: " + dir.file("bad.json") +
                      ": $.lights[0].cutoff: must be in [0, 90] degrees or 180 (no cone), got 95\n");
   CHECK_FALSE(fs::exists(out));
 
   // a missing scene file: exit 1
-  r = run(dir, dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("none.json"));
+  r = run(dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("none.json"));
   CHECK(r.code == 1);
   CHECK(r.err.find("none.json: cannot read scene file") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
 
   // usage errors: exit 2
   dir.write("scene.json", kFlatScene);
-  r = run(dir, dir.file("quad.obj") + " -o " + out);  // no --scene
+  r = run(dir.file("quad.obj") + " -o " + out);  // no --scene
   CHECK(r.code == 2);
-  r = run(dir, dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("scene.json") + " --model gouraud");
+  r = run(dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("scene.json") + " --model gouraud");
   CHECK(r.code == 2);
-  r = run(dir, dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("scene.json") + " --per corner");
+  r = run(dir.file("quad.obj") + " -o " + out + " --scene " + dir.file("scene.json") + " --per corner");
   CHECK(r.code == 2);
   CHECK_FALSE(fs::exists(out));
 
   // a missing input mesh: exit 1, no output
-  r = run(dir, dir.file("none.obj") + " -o " + out + " --scene " + dir.file("scene.json"));
+  r = run(dir.file("none.obj") + " -o " + out + " --scene " + dir.file("scene.json"));
   CHECK(r.code == 1);
   CHECK_FALSE(fs::exists(out));
 }

@@ -48,7 +48,7 @@ void spit(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
-Run run(const TempDir&, const std::string& args) { return shadetool_test::run_shadetool(args); }
+Run run(const std::string& args) { return shadetool_test::run_shadetool(args); }
 
 std::vector<std::string> lines_starting(const std::string& text, const std::string& prefix) {
   std::vector<std::string> r;
@@ -126,7 +126,7 @@ std::string ply_normal_bytes(const std::string& file, std::size_t& vertex_count)
 TEST_CASE("cmd transform: translation keeps the normals' file bytes (OBJ text and binary PLY)", "[cmd_transform]") {
   TempDir dir;
   spit(dir / "tri.obj", kTriangleObj);
-  Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "out.obj" + "' --translate 10,-2.5,1e3 --stats");
+  Run r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "out.obj" + "' --translate 10,-2.5,1e3 --stats");
   CHECK(r.code == 0);
   CHECK(r.err.find("path=translation") != std::string::npos);
   CHECK(lines_starting(slurp(dir / "out.obj"), "vn ") == lines_starting(kTriangleObj, "vn "));
@@ -135,7 +135,7 @@ TEST_CASE("cmd transform: translation keeps the normals' file bytes (OBJ text an
 
   std::vector<float> normals;
   spit(dir / "in.ply", binary_ply_with_normals(normals));
-  r = run(dir, "transform '" + dir / "in.ply" + "' -o '" + dir / "out.ply" + "' --translate 0.1,0.2,0.3");
+  r = run("transform '" + dir / "in.ply" + "' -o '" + dir / "out.ply" + "' --translate 0.1,0.2,0.3");
   REQUIRE(r.code == 0);
   std::size_t nv = 0;
   const std::string got = ply_normal_bytes(slurp(dir / "out.ply"), nv);
@@ -147,20 +147,20 @@ TEST_CASE("cmd transform: flags act in command-line order", "[cmd_transform]") {
   TempDir dir;
   spit(dir / "tri.obj", kTriangleObj);
   // Vertex (1,0,0): rotate then translate -> (1,1,0); translate then rotate -> (0,2,0).
-  Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "a.obj" + "' --rotate 90,0,0,1 --translate 1,0,0");
+  Run r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "a.obj" + "' --rotate 90,0,0,1 --translate 1,0,0");
   REQUIRE(r.code == 0);
   CHECK(lines_starting(slurp(dir / "a.obj"), "v ")[0] == "v 1 1 0");
-  r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "b.obj" + "' --translate 1,0,0 --rotate 90,0,0,1");
+  r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "b.obj" + "' --translate 1,0,0 --rotate 90,0,0,1");
   REQUIRE(r.code == 0);
   CHECK(lines_starting(slurp(dir / "b.obj"), "v ")[0] == "v 0 2 0");
   // Repeated flags: (1 * 2 + 1) * 3 = 9 versus (1 + 1) * 2 * 3 = 12.
-  run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "c.obj" + "' --scale 2 --translate 1,0,0 --scale 3");
+  run("transform '" + dir / "tri.obj" + "' -o '" + dir / "c.obj" + "' --scale 2 --translate 1,0,0 --scale 3");
   CHECK(lines_starting(slurp(dir / "c.obj"), "v ")[0] == "v 9 0 0");
-  run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "d.obj" + "' --translate 1,0,0 --scale 2 --scale=3");
+  run("transform '" + dir / "tri.obj" + "' -o '" + dir / "d.obj" + "' --translate 1,0,0 --scale 2 --scale=3");
   CHECK(lines_starting(slurp(dir / "d.obj"), "v ")[0] == "v 12 0 0");
   // A matrix from a file, 3x4 with a comment: x' = 2x + 1.
   spit(dir / "m.txt", "# scale x by 2, then move by 1\n2 0 0 1\n0 1 0 0\n0 0 1 0\n");
-  r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "e.obj" + "' --matrix @'" + dir / "m.txt" + "' --stats");
+  r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "e.obj" + "' --matrix @'" + dir / "m.txt" + "' --stats");
   REQUIRE(r.code == 0);
   CHECK(lines_starting(slurp(dir / "e.obj"), "v ")[0] == "v 3 0 0");
   CHECK(r.err.find("path=general") != std::string::npos);
@@ -174,7 +174,7 @@ TEST_CASE("cmd transform: --stats names the path", "[cmd_transform]") {
                  Case{"--rotate 30,1,1,0", "path=rotation"}, Case{"--rotate 30,1,1,0 --scale 2", "path=uniform-scale"},
                  Case{"--scale 1,2,3", "path=general"}, Case{"--scale 1,1,0 --normals drop", "path=singular"},
                  Case{"--scale -1,1,1", "path=rotation"}}) {
-    const Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "o.obj" + "' --stats " + c.flags);
+    const Run r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "o.obj" + "' --stats " + c.flags);
     CAPTURE(c.flags, r.err);
     CHECK(r.code == 0);
     CHECK(r.err.find(c.path) != std::string::npos);
@@ -184,7 +184,7 @@ TEST_CASE("cmd transform: --stats names the path", "[cmd_transform]") {
 TEST_CASE("cmd transform: --json carries the path, the mirror flag and what happened to the normals", "[cmd_transform]") {
   TempDir dir;
   spit(dir / "tri.obj", kTriangleObj);
-  const Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "j.obj" + "' --scale 1,-2,3 --json");
+  const Run r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "j.obj" + "' --scale 1,-2,3 --json");
   REQUIRE(r.code == 0);
   CHECK(r.out.find("\"path\":\"general\"") != std::string::npos);
   CHECK(r.out.find("\"mirror\":true") != std::string::npos);
@@ -194,7 +194,7 @@ TEST_CASE("cmd transform: --json carries the path, the mirror flag and what happ
 TEST_CASE("cmd transform: --scale -1,1,1 re-winds the faces in the file and says so", "[cmd_transform]") {
   TempDir dir;
   spit(dir / "tri.obj", kTriangleObj);
-  const Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "m.obj" + "' --scale -1,1,1 --stats");
+  const Run r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "m.obj" + "' --scale -1,1,1 --stats");
   REQUIRE(r.code == 0);
   CHECK(r.err.find("mirror=true") != std::string::npos);
   CHECK(r.err.find("winding reversed") != std::string::npos);
@@ -223,7 +223,7 @@ TEST_CASE("cmd transform: malformed numbers are usage errors with a clear line a
                  Case{"--scale 1,1,1e-12 --normals transform", "--normals drop | --normals recompute"},
                  Case{"--normals sideways", "--normals"},
                  Case{"--scale 1e200 --scale 1e200", "shadetool: the composed transform has an entry that overflows"}}) {
-    const Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "never.obj" + "' " + c.flags);
+    const Run r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "never.obj" + "' " + c.flags);
     CAPTURE(c.flags, r.err);
     CHECK(r.code == 2);
     CHECK(r.err.find(c.message) != std::string::npos);
@@ -242,7 +242,7 @@ TEST_CASE("cmd transform: a bad matrix file is an input error naming FILE:LINE",
                         Case{"--matrix @'" + dir / "proj.txt" + "'", dir / "proj.txt" + ": the last row of a 4x4 matrix"},
                         Case{"--matrix @'" + dir / "short.txt" + "'", dir / "short.txt" + ": expected 12 or 16 numbers"},
                         Case{"--matrix @'" + dir / "missing.txt" + "'", dir / "missing.txt" + ": cannot open the matrix file"}}) {
-    const Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "never.obj" + "' " + c.flags);
+    const Run r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "never.obj" + "' " + c.flags);
     CAPTURE(c.flags, r.err);
     CHECK(r.code == 1);
     CHECK(r.err.find("shadetool: " + c.message) != std::string::npos);
@@ -253,11 +253,11 @@ TEST_CASE("cmd transform: a bad matrix file is an input error naming FILE:LINE",
 TEST_CASE("cmd transform: singular maps run with --normals drop or recompute", "[cmd_transform]") {
   TempDir dir;
   spit(dir / "tri.obj", kTriangleObj);
-  Run r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "flat.obj" + "' --scale 1,1,0 --normals drop");
+  Run r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "flat.obj" + "' --scale 1,1,0 --normals drop");
   CHECK(r.code == 0);
   CHECK(lines_starting(slurp(dir / "flat.obj"), "vn ").empty());
   CHECK(lines_starting(slurp(dir / "flat.obj"), "v ")[2] == "v 0 0 0");
-  r = run(dir, "transform '" + dir / "tri.obj" + "' -o '" + dir / "re.obj" + "' --scale 1,2,3 --normals recompute");
+  r = run("transform '" + dir / "tri.obj" + "' -o '" + dir / "re.obj" + "' --scale 1,2,3 --normals recompute");
   CHECK(r.code == 0);
   // Mapped triangle (1,0,0), (0,2,0), (0,0,3): plane x + y/2 + z/3 = 1, normal (6,3,2)/7.
   for (const auto& line : lines_starting(slurp(dir / "re.obj"), "vn ")) {
@@ -272,7 +272,7 @@ TEST_CASE("cmd transform: singular maps run with --normals drop or recompute", "
 
 TEST_CASE("cmd transform: every flag in --help is documented in the man page", "[cmd_transform]") {
   TempDir dir;
-  const Run r = run(dir, "transform --help");
+  const Run r = run("transform --help");
   CHECK(r.code == 0);
   const std::string man = slurp(std::string(SHADETOOL_SOURCE_DIR) + "/man/shadetool-transform.1");
   REQUIRE(!man.empty());
