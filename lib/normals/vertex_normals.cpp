@@ -61,18 +61,18 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
     if (big && cached->K > 0) parallel_blocks(blocks, zero);
     else for (std::size_t b = 0; b < blocks; ++b) zero(b);
   } else {
-    auto allocate = [&] {
-      // float: the output is not a sum, and every entry is written (normalised or fallback)
-      if constexpr (std::is_same_v<T, double>) result.normals.assign(3 * V, 0.0);
-      else result.normals.resize(3 * V);
-      if constexpr (!std::is_same_v<T, double>) float_sum.assign(S * V, 0.0f);
-    };
     // Without a cached plan the sum runs serially (own_plan stays empty, K = 0): planning the
     // parallel sum (two passes over the corners, ~3-6 ms per million triangles) costs about what
     // the area kernel itself costs and half the angle kernel, so on 2 threads the plain call was
     // slower than the serial loop (measured, bench/normals/results/notes.md). Repeated calls that
     // want threads build a VertexNormalsPlan once.
-    allocate();
+    // float: the output is not a sum, and every entry is written (normalised or fallback)
+    if constexpr (std::is_same_v<T, double>) {
+      result.normals.assign(3 * V, 0.0);
+    } else {
+      result.normals.resize(3 * V);
+      float_sum.assign(S * V, 0.0f);
+    }
   }
   const ChunkPlan& plan = cached ? *cached : own_plan;
   T* sum;
