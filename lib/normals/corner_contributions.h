@@ -234,7 +234,7 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
       const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
       N = triangle_area_vector(P, cv[begin], cv[begin + 1], cv[begin + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
     } else {
-      N = newell_area_vector<double>(mesh, f);
+      N = newell_area_vector(mesh, f);
     }
     const double len = checked_length(N);
     if (!(len > 0.0)) { ++degenerate; continue; }  // degenerate: contributes nothing

@@ -9,9 +9,8 @@
 //                         computing the plane equation of a polygon", Graphics Gems III, 1992),
 //                         evaluated about the polygon's first vertex to keep coordinates small.
 //
-// Precision: the kernels call these with T = double (edges, cross products and lengths in double
-// whatever the accumulation precision; corner_contributions.h rounds the finished contribution
-// once). `edge<float>` (round an edge formed in double once to float) is kept for other callers.
+// Precision: double (edges, cross products and lengths), whatever the kernels accumulate in;
+// corner_contributions.h and face_normals.cpp round the finished result once.
 // Degenerate input: a repeated index or coincident positions give an exactly zero area vector;
 // callers take `checked_length` (0 for zero or non-finite vectors) and test it before dividing.
 #pragma once
@@ -37,14 +36,6 @@ SHADETOOL_NORMALS_INLINE Vec3d load_position(const double* positions, std::uint3
   return {p[0], p[1], p[2]};
 }
 
-// Edge vector b - a: the subtraction is done in double (the stored precision), then rounded once
-// to T. For T = float this keeps the error relative to the edge's length, not to the coordinates'
-// magnitude (a 1e-3 edge at distance 1 from the origin keeps 7 digits, not 4).
-template <class T>
-SHADETOOL_NORMALS_INLINE Vec3<T> edge(const Vec3d& a, const Vec3d& b) {
-  return {T(b.x - a.x), T(b.y - a.y), T(b.z - a.z)};
-}
-
 // Area vector 2 A n of triangle (v0, v1, v2) whose edges e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2
 // have squared lengths l0, l1, l2. Any two edges from one vertex give the same cross product in
 // exact arithmetic; we take the two shortest, i.e. those from the vertex opposite the longest
@@ -65,26 +56,24 @@ SHADETOOL_NORMALS_INLINE int apex_corner(T l0, T l1, T l2) {
   return 1 + e0_longest - e1_longest;  // 2, 0, or 1 when e2 is longest
 }
 
-template <class T>
-SHADETOOL_NORMALS_INLINE Vec3<T> triangle_area_vector(const double* positions, std::uint32_t v0, std::uint32_t v1,
-                                                      std::uint32_t v2, T l0, T l1, T l2) {
+SHADETOOL_NORMALS_INLINE Vec3d triangle_area_vector(const double* positions, std::uint32_t v0, std::uint32_t v1,
+                                                    std::uint32_t v2, double l0, double l1, double l2) {
   const std::uint32_t v[5] = {v0, v1, v2, v0, v1};
   const int k = apex_corner(l0, l1, l2);
   const Vec3d p = load_position(positions, v[k]);
-  return cross(edge<T>(p, load_position(positions, v[k + 1])), edge<T>(p, load_position(positions, v[k + 2])));
+  return cross(load_position(positions, v[k + 1]) - p, load_position(positions, v[k + 2]) - p);
 }
 
 // Newell's method about p_0: N = sum_i (p_i - p_0) x (p_{i+1} - p_0) = 2 A n for a planar
 // polygon; for a non-planar one, the normal of the plane that best fits its projected areas.
-template <class T>
-inline Vec3<T> newell_area_vector(const Mesh& mesh, std::size_t f) {
+inline Vec3d newell_area_vector(const Mesh& mesh, std::size_t f) {
   const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1];
-  Vec3<T> n{};
+  Vec3d n{};
   if (end - begin < 3) return n;
   const Vec3d p0 = load_position(mesh.positions.data(), mesh.corner_vertex[begin]);
-  Vec3<T> prev = edge<T>(p0, load_position(mesh.positions.data(), mesh.corner_vertex[begin + 1]));
+  Vec3d prev = load_position(mesh.positions.data(), mesh.corner_vertex[begin + 1]) - p0;
   for (std::uint32_t c = begin + 2; c < end; ++c) {
-    const Vec3<T> cur = edge<T>(p0, load_position(mesh.positions.data(), mesh.corner_vertex[c]));
+    const Vec3d cur = load_position(mesh.positions.data(), mesh.corner_vertex[c]) - p0;
     n += cross(prev, cur);
     prev = cur;
   }

@@ -30,7 +30,7 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
       const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
       N = triangle_area_vector(P, cv[c], cv[c + 1], cv[c + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
     } else {
-      N = newell_area_vector<double>(mesh, f);
+      N = newell_area_vector(mesh, f);
     }
     const double l = checked_length(N);
     double* o = out + 3 * f;
