@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "core/bulk_reserve.h"
 #include "core/error.h"
 #include "normals/accumulate_by_vertex.h"
 #include "normals/corner_contributions.h"
@@ -46,6 +47,10 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
   std::vector<float> float_sum;
   ChunkPlan own_plan;
   const bool big = mesh.num_faces() >= kSerialBelow;
+  // A fresh output array in huge pages (core/bulk_reserve.h): a one-shot caller (the CLI, repair)
+  // otherwise pays a page fault per 4 KiB of it (bench/repair: 16.1 -> 12.1 ms for the angle
+  // normals of 1M triangles). No effect when `result` already has the capacity.
+  reserve_bulk(result.normals, 3 * V);
   if (cached) {
     result.normals.resize(3 * V);
     if constexpr (!std::is_same_v<T, double>) float_sum.resize(S * V);

@@ -4,6 +4,10 @@
 #include <algorithm>
 #include <type_traits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -46,6 +50,40 @@ void sort_bucket(std::uint64_t* s, std::uint32_t n) {
   }
 }
 
+// Pairs a bucket of n <= 8 half-edges (higher vertices hv, readable 8 past the start; corners
+// with direction bits cd) when each higher vertex occurs exactly twice: writes both mates of every
+// pair and returns true. Returns false, writing nothing, when some edge has valence other than 2.
+bool match_small_bucket(const std::uint32_t* hv, const std::uint32_t* cd, std::uint32_t n, std::uint32_t* mate) {
+  if (n % 2 != 0) return false;
+  std::uint32_t partner[8];
+  const unsigned valid = (1u << n) - 1u;
+#if defined(__SSE2__)
+  const __m128i h0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(hv));
+  const __m128i h1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(hv + 4));
+#endif
+  unsigned bad = 0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    unsigned m;
+#if defined(__SSE2__)
+    const __m128i x = _mm_set1_epi32(int(hv[i]));
+    m = unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(h0, x)))) |
+        (unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(h1, x)))) << 4);
+#else
+    m = 0;
+    for (std::uint32_t j = 0; j < 8; ++j) m |= unsigned(hv[j] == hv[i]) << j;
+#endif
+    m &= valid & ~(1u << i);
+    bad |= unsigned(m == 0 || (m & (m - 1)) != 0);  // no other, or two or more others
+    partner[i] = std::uint32_t(__builtin_ctz(m | 0x100u));
+  }
+  if (bad) return false;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t x = cd[i], y = cd[partner[i]];
+    mate[x >> 1] = (y & ~1u) | ((x ^ y ^ 1u) & 1u);
+  }
+  return true;
+}
+
 }  // namespace
 
 bool face_is_unwound(const Mesh& mesh, std::size_t f) {
@@ -65,8 +103,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
 
   EdgeAdjacency adj;
   // Large fresh arrays: huge pages first (core/bulk_reserve.h); page faults are much of the cost.
-  reserve_bulk(adj.corner_mate, C);
-  adj.corner_mate.resize(C);
+  adj.corner_mate.resize(C);  // every entry is written below
   std::uint32_t* mate = adj.corner_mate.data();
 
   // Whether face f contributes half-edges.
@@ -77,41 +114,87 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
     return !unwound(cv + b, e - b);
   };
 
-  // Pass 1: range check; half-edges per lower vertex, counted at pos[lo + 1].
-  std::vector<std::uint32_t> pos;
-  reserve_bulk(pos, V + 1);
-  pos.assign(V + 1, 0);
-  std::uint32_t* count = pos.data() + 1;
+  // Parts of the faces counted and scattered in parallel, each with its own cursor per vertex:
+  // within a bucket, part p's half-edges follow part p-1's, each part's in corner order, so the
+  // buckets (and everything after) are the same for any number of parts. One part below
+  // kParallelFaces faces or on one thread.
+  const std::size_t threads = std::min<std::size_t>(
+      std::size_t(tbb::this_task_arena::max_concurrency()),
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  const std::size_t parts = F >= kParallelFaces && threads >= 2 ? std::min<std::size_t>(threads, 4) : 1;
+  auto part_faces = [&](std::size_t p) { return std::pair<std::size_t, std::size_t>{F * p / parts, F * (p + 1) / parts}; };
+  auto for_parts = [&](auto&& body) {
+    if (parts == 1) body(std::size_t(0));
+    else tbb::parallel_for(std::size_t(0), parts, body);
+  };
+
+  // Pass 1: range check; half-edges per lower vertex and part: cursor[p][v].
+  std::vector<BulkVector<std::uint32_t>> cursor(parts);
+  std::vector<std::uint8_t> out_of_range(parts, 0);
   // (Both face passes are compiled twice: for a triangle mesh the corner loops have a constant
   // trip count of 3 and unroll.)
-  auto count_pass = [&](auto all_triangles) {
+  auto count_pass = [&](auto all_triangles, std::size_t p) {
     constexpr bool kTriangles = decltype(all_triangles)::value;
-    for (std::size_t f = 0; f < F; ++f) {
+    BulkVector<std::uint32_t>& count = cursor[p];
+    count.assign(V, 0);
+    std::uint32_t* n = count.data();
+    const auto [f0, f1] = part_faces(p);
+    for (std::size_t f = f0; f < f1; ++f) {
       const std::uint32_t b = kTriangles ? std::uint32_t(3 * f) : fs[f], e = kTriangles ? b + 3 : fs[f + 1];
       std::uint32_t highest = 0;
       for (std::uint32_t c = b; c < e; ++c) highest = std::max(highest, cv[c]);
-      if (highest >= V && e > b) fail("edge_adjacency", 0, "a face refers to a vertex index beyond the vertex count");
+      if (highest >= V && e > b) {
+        out_of_range[p] = 1;
+        return;
+      }
       if (!takes_part(f, b, e)) continue;
       for (std::uint32_t c = b; c < e; ++c) {
         const std::uint32_t t = cv[c], h = cv[c + 1 < e ? c + 1 : b];
-        if (t != h) ++count[std::min(t, h)];
+        if (t != h) ++n[std::min(t, h)];
       }
     }
   };
-  if (triangles) count_pass(std::true_type{});
-  else count_pass(std::false_type{});
-  // Prefix sum: pos[v] = start of bucket v; pos[V] = number of half-edges H.
-  for (std::size_t v = 0; v < V; ++v) pos[v + 1] += pos[v];
-  const std::size_t H = pos[V];
+  for_parts([&](std::size_t p) {
+    if (triangles) count_pass(std::true_type{}, p);
+    else count_pass(std::false_type{}, p);
+  });
+  for (std::uint8_t bad : out_of_range)
+    if (bad) fail("edge_adjacency", 0, "a face refers to a vertex index beyond the vertex count");
+  // Prefix sum: bucket v is [end[v-1], end[v]); part p's cursor starts after parts < p.
+  BulkVector<std::uint32_t> bucket_end(V);
+  std::uint32_t* end = bucket_end.data();
+  std::uint32_t* cur[4];
+  for (std::size_t p = 0; p < parts; ++p) cur[p] = cursor[p].data();
+  std::uint32_t H = 0;  // < 2^31 (corners)
+  if (parts == 1) {
+    for (std::size_t v = 0; v < V; ++v) {
+      const std::uint32_t n = cur[0][v];
+      cur[0][v] = H;
+      end[v] = H += n;
+    }
+  } else {
+    for (std::size_t v = 0; v < V; ++v) {
+      for (std::size_t p = 0; p < parts; ++p) {
+        const std::uint32_t n = cur[p][v];
+        cur[p][v] = H;
+        H += n;
+      }
+      end[v] = H;
+    }
+  }
 
-  // Pass 2: scatter (higher vertex << 32 | corner << 1 | tail is the lower vertex) in corner order;
-  // corners that are no half-edge get kUnpaired now. pos[v] becomes the end of bucket v.
-  std::vector<std::uint64_t> slot;
-  reserve_bulk(slot, H);
-  slot.resize(H);
-  auto scatter_pass = [&](auto all_triangles) {
+  // Pass 2: scatter each half-edge's higher vertex and (corner << 1 | tail is the lower vertex)
+  // in corner order; corners that are no half-edge get kUnpaired now. The higher vertices are an
+  // array of their own (padded by 8) so that pass 3 compares 8 of them at a time.
+  BulkVector<std::uint32_t> slot_hi(H + 8), slot_corner(H);  // written in full below: not zeroed first
+  std::fill(slot_hi.begin() + std::ptrdiff_t(H), slot_hi.end(), 0u);
+  std::uint32_t* his = slot_hi.data();
+  std::uint32_t* cds = slot_corner.data();
+  auto scatter_pass = [&](auto all_triangles, std::size_t p) {
     constexpr bool kTriangles = decltype(all_triangles)::value;
-    for (std::size_t f = 0; f < F; ++f) {
+    std::uint32_t* at = cur[p];
+    const auto [f0, f1] = part_faces(p);
+    for (std::size_t f = f0; f < f1; ++f) {
       const std::uint32_t b = kTriangles ? std::uint32_t(3 * f) : fs[f], e = kTriangles ? b + 3 : fs[f + 1];
       if (!takes_part(f, b, e)) {
         for (std::uint32_t c = b; c < e; ++c) mate[c] = kUnpaired;
@@ -124,54 +207,70 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
           continue;
         }
         const std::uint32_t lo = std::min(t, h), hi = std::max(t, h);
-        slot[pos[lo]++] = (std::uint64_t(hi) << 32) | (std::uint64_t(c) << 1) | std::uint64_t(t == lo);
+        const std::uint32_t i = at[lo]++;
+        his[i] = hi;
+        cds[i] = (c << 1) | std::uint32_t(t == lo);
       }
     }
   };
-  if (triangles) scatter_pass(std::true_type{});
-  else scatter_pass(std::false_type{});
-  const std::uint32_t* end = pos.data();
+  for_parts([&](std::size_t p) {
+    if (triangles) scatter_pass(std::true_type{}, p);
+    else scatter_pass(std::false_type{}, p);
+  });
+  cursor.clear();
+  cursor.shrink_to_fit();
 
-  // Pass 3: sort each bucket by (higher vertex, corner); pair the edges of valence 2, list the
-  // rest. Blocks of vertices on 2 threads when there are 2 (each block with its own list, joined in
-  // block order, so the output is the same for any number of threads). Passes 1 and 2 stay
-  // serial: split by faces they need a count array per chunk, which cost more than the second
-  // thread saved whenever the other core was busy (bench/repair/results.md).
+  // Pass 3: in each bucket, equal higher vertices form one edge; edges of valence 2 are paired,
+  // the rest listed in increasing (lo, hi) order with their corners in increasing order. A bucket
+  // of up to 8 half-edges is first tried without sorting: each higher vertex is compared with all
+  // 8 at once (SSE2); when every one of them equals exactly one other (all edges manifold, the
+  // common case) the pairs are written directly. Otherwise the bucket is sorted by (higher vertex,
+  // corner) (insertion sort; std::sort beyond 32) and scanned. Blocks of vertices on 2+ threads
+  // (each block with its own list, joined in block order, so the output is the same for any
+  // number of threads).
   struct Odd {
     std::vector<std::uint32_t> start, corner;
+    std::vector<std::uint64_t> keys;  // a bucket being sorted
     std::size_t pairs = 0, boundary = 0, non_manifold = 0;
   };
-  const std::size_t threads = std::min<std::size_t>(
-      std::size_t(tbb::this_task_arena::max_concurrency()),
-      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   const std::size_t blocks = F >= kParallelFaces && threads >= 2 ? std::max<std::size_t>(1, std::min<std::size_t>(16, V / 4096)) : 1;
   std::vector<Odd> odd(blocks);
+  auto match_sorted = [&](Odd& o, std::uint32_t b, std::uint32_t n) {
+    o.keys.resize(n);
+    std::uint64_t* s = o.keys.data();
+    for (std::uint32_t i = 0; i < n; ++i) s[i] = (std::uint64_t(his[b + i]) << 32) | cds[b + i];
+    sort_bucket(s, n);
+    for (std::uint32_t i = 0; i < n;) {
+      const std::uint32_t hi = std::uint32_t(s[i] >> 32);
+      std::uint32_t j = i + 1;
+      while (j < n && std::uint32_t(s[j] >> 32) == hi) ++j;
+      if (j - i == 2) {
+        const std::uint32_t x = std::uint32_t(s[i]), y = std::uint32_t(s[i + 1]);  // (c << 1) | dir
+        const std::uint32_t same = (x ^ y ^ 1u) & 1u;
+        mate[x >> 1] = (y & ~1u) | same;
+        mate[y >> 1] = (x & ~1u) | same;
+        ++o.pairs;
+      } else {
+        for (std::uint32_t k = i; k < j; ++k) {
+          mate[std::uint32_t(s[k]) >> 1] = kUnpaired;
+          o.corner.push_back(std::uint32_t(s[k]) >> 1);
+        }
+        o.start.push_back(std::uint32_t(o.corner.size()));
+        (j - i == 1 ? o.boundary : o.non_manifold) += 1;
+      }
+      i = j;
+    }
+  };
   auto match = [&](std::size_t blk) {
     Odd& o = odd[blk];
     for (std::size_t v = V * blk / blocks; v < V * (blk + 1) / blocks; ++v) {
       const std::uint32_t b = v == 0 ? 0 : end[v - 1], n = end[v] - b;
-      std::uint64_t* s = slot.data() + b;
-      sort_bucket(s, n);
-      for (std::uint32_t i = 0; i < n;) {
-        const std::uint32_t hi = std::uint32_t(s[i] >> 32);
-        std::uint32_t j = i + 1;
-        while (j < n && std::uint32_t(s[j] >> 32) == hi) ++j;
-        if (j - i == 2) {
-          const std::uint32_t x = std::uint32_t(s[i]), y = std::uint32_t(s[i + 1]);  // (c << 1) | dir
-          const std::uint32_t same = (x ^ y ^ 1u) & 1u;
-          mate[x >> 1] = (y & ~1u) | same;
-          mate[y >> 1] = (x & ~1u) | same;
-          ++o.pairs;
-        } else {
-          for (std::uint32_t k = i; k < j; ++k) {
-            mate[std::uint32_t(s[k]) >> 1] = kUnpaired;
-            o.corner.push_back(std::uint32_t(s[k]) >> 1);
-          }
-          o.start.push_back(std::uint32_t(o.corner.size()));
-          (j - i == 1 ? o.boundary : o.non_manifold) += 1;
-        }
-        i = j;
+      if (n == 0) continue;
+      if (n <= 8 && match_small_bucket(his + b, cds + b, n, mate)) {
+        o.pairs += n / 2;
+        continue;
       }
+      match_sorted(o, b, n);
     }
   };
   if (blocks == 1) match(0);

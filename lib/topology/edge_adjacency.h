@@ -26,13 +26,19 @@
 // Manifold edges are not listed: they are the pairs in corner_mate (one edge per pair).
 //
 // Method: a counting sort of the half-edges keyed on their lower vertex (counts, prefix sum,
-// scatter of (higher vertex, corner, direction) in corner order), then each small bucket (about
-// half the vertex degree) is sorted by (higher vertex, corner) and equal higher vertices form one
-// edge (the counts/offsets/data layout of meshoptimizer's adjacency). On a mesh whose vertex order
-// is coherent with its face order (what exporters and scanners write) every pass is nearly
-// streaming. O(C + V) plus O(d log d) per bucket of size d; no maps, no hashing. The bucket pass
-// runs on blocks of vertices in parallel (TBB) for meshes of 32768+ faces; the output depends on
-// nothing but the faces' vertex indices, the same for any number of threads.
+// scatter of the higher vertex and (corner, direction) in corner order; the counts/offsets/data
+// layout of meshoptimizer's adjacency), then in each small bucket (about half the vertex degree)
+// equal higher vertices form one edge. A bucket of up to 8 half-edges is first matched without
+// sorting: each higher vertex compared with all 8 at once (SSE2); when every one occurs exactly
+// twice (all manifold, the common case) the pairs are written directly. Other buckets are sorted
+// by (higher vertex, corner). On a mesh whose vertex order is coherent with its face order (what
+// exporters and scanners write) every pass is nearly streaming. O(C + V) plus O(d log d) per
+// unusual bucket of size d; no maps, no hashing. Threads (TBB, meshes of 32768+ faces): the count
+// and scatter run on parts of the faces, each part with its own counts (a bucket holds part 0's
+// half-edges, then part 1's, each in corner order: the same buckets for any number of parts), and
+// the matching on blocks of vertices; the output depends on nothing but the faces' vertex
+// indices. Large arrays are allocated unzeroed in huge pages (core/bulk_reserve.h BulkVector).
+// Measured (bench/repair, 1M triangles): 20 ms -> 13 ms on 2 threads, 18 ms on 1.
 // Throws Error if a face refers to a vertex index >= #V, or with 2^31 - 1 corners or more
 // (a corner and a flag share 32 bits).
 #pragma once
@@ -43,6 +49,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/bulk_reserve.h"
 #include "core/mesh.h"
 
 namespace shadetool {
@@ -55,7 +62,7 @@ struct EdgeAdjacencyOptions {
 struct EdgeAdjacency {
   static constexpr std::uint32_t kUnpaired = std::numeric_limits<std::uint32_t>::max();
 
-  std::vector<std::uint32_t> corner_mate;
+  BulkVector<std::uint32_t> corner_mate;  // std::vector, not zeroed on resize (core/bulk_reserve.h)
   std::vector<std::uint32_t> odd_edge_start{0};
   std::vector<std::uint32_t> odd_edge_corner;
   std::size_t num_edges = 0;
