@@ -10,21 +10,25 @@
 //                      ascending corner order, exactly as the serial loop would add them.
 //
 // Method (why the result does not depend on the thread count): faces are cut into K contiguous
-// chunks. Pass 1 writes, for every corner, its chunk id into owner[vertex] (relaxed stores; the
-// last writer wins). Pass 2 marks a vertex `shared` when some chunk touching it finds another
-// chunk's id there: after both passes, shared[v] is set exactly when v's corners lie in two or
-// more chunks. Pass 3 runs the chunks in parallel: a corner of an unshared vertex is added to
-// sum[v] directly (only its own chunk writes there, in corner order); a corner of a shared vertex
-// is appended to its chunk's side list. Pass 4 adds the side lists chunk by chunk, in order, on
-// one thread, so shared vertices too receive their terms in ascending corner order.
+// chunks. Passes 1-2 find the rows `shared` by two or more chunks: with K <= 8 each chunk marks
+// the rows of its corners in a bitmap of its own (#rows / 8 bytes, small enough to stay in cache)
+// and a row is shared when two bitmaps have its bit; with more chunks, pass 1 writes each
+// corner's chunk id into owner[row] (relaxed stores; the last writer wins) and pass 2 marks a row
+// shared when some chunk touching it finds another chunk's id there. Either way shared[v] is set
+// exactly when v's corners lie in two or more chunks. Pass 3 runs the chunks in parallel: a
+// corner of an unshared row is added to sum[v] directly (only its own chunk writes there, in
+// corner order); a corner of a shared row is appended to its chunk's side list. Pass 4 adds the
+// side lists chunk by chunk, in order, on one thread, so shared rows too receive their terms in
+// ascending corner order.
 // Faces stored with locality (every mesh file we have seen) share only the vertices along chunk
 // borders, so pass 4 is tiny. A reused plan (VertexNormalsPlan) also lists each chunk's border
 // faces (flag_border_faces), so that pass 3 tests rows only there and runs every other face
-// through the same plain sink as the serial loop. When the faces are in random order (more than a quarter of the
-// corners would go to side lists) the chunks are abandoned and the serial loop runs instead.
+// through the same plain sink as the serial loop. When the faces are in random order (more than
+// a quarter of the corners, or with bitmaps an eighth of the rows, would go to side lists) the
+// chunks are abandoned and the serial loop runs instead.
 // Small meshes (< kSerialBelow faces) and one-thread runs take the serial loop directly.
-// Memory: 3 bytes per vertex plus the side lists. plan_chunks (passes 1, 2) and
-// accumulate_by_target (passes 3, 4) are separate so callers can overlap the plan with
+// Memory: K / 8 bytes per row (K <= 8; else 3 bytes) plus the side lists. plan_chunks (passes
+// 1, 2) and accumulate_by_target (passes 3, 4) are separate so callers can overlap the plan with
 // allocating the sums.
 #pragma once
 
@@ -42,6 +46,7 @@
 #include <tbb/task_arena.h>
 
 #include "core/mesh.h"
+#include "core/usable_threads.h"
 #include "core/vec3.h"
 #include "normals/face_geometry.h"  // SHADETOOL_NORMALS_INLINE
 #include "normals/parallel.h"
@@ -52,11 +57,13 @@ namespace shadetool::normals_detail {
 // overlap them with allocating and zeroing `sum` (tbb::parallel_invoke). K == 0: serial loop.
 struct ChunkPlan {
   std::size_t K = 0;
-  std::unique_ptr<std::atomic<std::uint8_t>[]> shared;
+  std::vector<std::uint64_t> shared;  // bitmap: bit (v & 63) of word v >> 6 set when row v is shared
   // Optional (flag_border_faces): per chunk, ascending, the faces with a corner in a shared row.
   // With them, pass 3 runs every other face through the serial loop's plain sink (no per-corner
   // test); only these faces take the testing sink.
   std::vector<std::vector<std::uint32_t>> border_faces;
+
+  bool is_shared(std::uint32_t v) const { return (shared[v >> 6] >> (v & 63)) & 1u; }
 };
 
 // Rows are target[c] (Target = true; corner normals use it with target = the corner's smooth
@@ -65,7 +72,7 @@ template <bool Target>
 ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t num_rows) {
   ChunkPlan plan;
   const std::size_t F = mesh.num_faces(), V = num_rows;
-  const std::size_t threads = std::size_t(tbb::this_task_arena::max_concurrency());
+  const std::size_t threads = usable_threads();
   // One chunk per thread: every chunk border costs (its vertices' terms go through side lists), and
   // measured on the 1M sphere with both cores free, K = threads gave 1.82x (area) and 1.86x
   // (angle) on 2 threads against 1.75x / 1.80x for K = 2 x threads and ~1.45x for 4 x threads.
@@ -74,6 +81,38 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
   if (F < kSerialBelow || threads < 2 || K < 2) return plan;
   auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_start[F * k / K]); };  // corner index
   const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
+  const std::size_t words = (V + 63) / 64;
+  plan.shared.assign(words, 0);
+  std::uint64_t* shared = plan.shared.data();
+
+  if (K <= 8) {
+    // Passes 1-2 by bitmaps: chunk k marks its rows in bits[k]; shared = set in two or more.
+    std::vector<std::vector<std::uint64_t>> bits(K);
+    tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
+      bits[k].assign(words, 0);
+      std::uint64_t* b = bits[k].data();
+      for (std::size_t c = chunk_begin(k), e = chunk_begin(k + 1); c < e; ++c) {
+        const std::uint32_t v = cv[c];
+        b[v >> 6] |= std::uint64_t(1) << (v & 63);
+      }
+    });
+    std::size_t shared_rows = 0;
+    for (std::size_t w = 0; w < words; ++w) {
+      std::uint64_t once = 0, twice = 0;
+      for (std::size_t k = 0; k < K; ++k) {
+        twice |= once & bits[k][w];
+        once |= bits[k][w];
+      }
+      shared[w] = twice;
+      shared_rows += std::size_t(__builtin_popcountll(twice));
+    }
+    if (shared_rows > V / 8) {  // faces in random order: side lists would be huge
+      plan.shared.clear();
+      return plan;
+    }
+    plan.K = K;
+    return plan;
+  }
 
   // Pass 1: last chunk to touch each row.
   std::unique_ptr<std::atomic<std::uint16_t>[]> owner(new std::atomic<std::uint16_t>[V]());
@@ -82,8 +121,8 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
     for (std::size_t c = chunk_begin(k), e = chunk_begin(k + 1); c < e; ++c)
       owner[cv[c]].store(id, std::memory_order_relaxed);
   });
-  // Pass 2: rows touched by more than one chunk.
-  plan.shared.reset(new std::atomic<std::uint8_t>[V]());
+  // Pass 2: rows touched by more than one chunk (bytes, packed into the bitmap afterwards).
+  std::unique_ptr<std::atomic<std::uint8_t>[]> shared_byte(new std::atomic<std::uint8_t>[V]());
   std::vector<std::size_t> foreign(K, 0);
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     const auto id = std::uint16_t(k);
@@ -91,7 +130,7 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
     for (std::size_t c = chunk_begin(k), e = chunk_begin(k + 1); c < e; ++c) {
       const std::uint32_t v = cv[c];
       if (owner[v].load(std::memory_order_relaxed) != id) {
-        plan.shared[v].store(1, std::memory_order_relaxed);
+        shared_byte[v].store(1, std::memory_order_relaxed);
         ++n;
       }
     }
@@ -100,9 +139,11 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
   std::size_t foreign_corners = 0;
   for (auto n : foreign) foreign_corners += n;
   if (foreign_corners > mesh.num_corners() / 4) {  // faces in random order: side lists would be huge
-    plan.shared.reset();
+    plan.shared.clear();
     return plan;
   }
+  for (std::size_t v = 0; v < V; ++v)
+    shared[v >> 6] |= std::uint64_t(shared_byte[v].load(std::memory_order_relaxed)) << (v & 63);
   plan.K = K;
   return plan;
 }
@@ -119,7 +160,7 @@ void flag_border_faces(const Mesh& mesh, const std::uint32_t* target, ChunkPlan&
     for (std::size_t f = F * k / K, e = F * (k + 1) / K; f < e; ++f) {
       bool border = false;
       for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
-        border = border || plan.shared[cv[c]].load(std::memory_order_relaxed);
+        border = border || plan.is_shared(cv[c]);
       if (border) list.push_back(std::uint32_t(f));
     }
   });
@@ -157,7 +198,6 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
   struct Term { std::uint32_t v; T x, y, z; };
   std::vector<std::vector<Term>> side(K);
   std::vector<std::size_t> counts(K, 0);
-  const std::atomic<std::uint8_t>* shared = plan.shared.get();
   auto direct = [s, row](std::size_t c, std::uint32_t v, const Vec3<T>& n) {
     add_to_row<T, Stride>(s + Stride * std::size_t(row(c, v)), n);
   };
@@ -165,7 +205,7 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
     auto& list = side[k];
     auto testing = [&](std::size_t c, std::uint32_t vertex, const Vec3<T>& n) {
       const std::uint32_t v = row(c, vertex);
-      if (shared[v].load(std::memory_order_relaxed)) {
+      if (plan.is_shared(v)) {
         list.push_back({v, n.x, n.y, n.z});
       } else {
         add_to_row<T, Stride>(s + Stride * std::size_t(v), n);

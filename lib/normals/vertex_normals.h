@@ -6,9 +6,11 @@
 // Precision: contributions are computed in double either way. Double (default) sums in double;
 // Float rounds each contribution once to float (area and max weights after one exact power-of-two
 // scale per mesh, so meshes scaled to 1e-30 or 1e30 work) and sums in float; measured within 1e-3
-// degree of Double (about 1e-5). Threads: the plain call sums serially (planning a parallel sum
-// costs as much as the area kernel); with a VertexNormalsPlan (vertex_normals_plan.h) the sum is
-// split over TBB threads for meshes of 32768+ faces. The result is bitwise the same either way
+// degree of Double (about 1e-5). Threads: for meshes of 32768+ faces the sum is split over TBB
+// threads; the plain call plans the split itself for the angle and Max weightings (one bitmap
+// pass over the corners per thread; it costs half the area kernel, so area and uniform sum
+// serially), a VertexNormalsPlan (vertex_normals_plan.h) made once splits every weighting and
+// saves the planning on repeated calls. The result is bitwise the same either way
 // and for any thread count (accumulate_by_vertex.h).
 //
 // Inputs:  mesh      positions #V by 3, faces (triangles or polygons)

@@ -8,12 +8,11 @@
 #include <emmintrin.h>
 #endif
 
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "core/error.h"
 #include "core/bulk_reserve.h"
+#include "core/usable_threads.h"
 
 namespace shadetool {
 
@@ -118,9 +117,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   // within a bucket, part p's half-edges follow part p-1's, each part's in corner order, so the
   // buckets (and everything after) are the same for any number of parts. One part below
   // kParallelFaces faces or on one thread.
-  const std::size_t threads = std::min<std::size_t>(
-      std::size_t(tbb::this_task_arena::max_concurrency()),
-      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  const std::size_t threads = usable_threads();
   const std::size_t parts = F >= kParallelFaces && threads >= 2 ? std::min<std::size_t>(threads, 4) : 1;
   auto part_faces = [&](std::size_t p) { return std::pair<std::size_t, std::size_t>{F * p / parts, F * (p + 1) / parts}; };
   auto for_parts = [&](auto&& body) {

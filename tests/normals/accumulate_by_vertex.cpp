@@ -2,6 +2,9 @@
 // ascending corner order, exactly as the serial loop, for any thread count and face order.
 #include <catch2/catch.hpp>
 
+#include <set>
+
+#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
 #include "normals/accumulate_by_vertex.h"
@@ -44,18 +47,42 @@ std::vector<double> chunked_sums(const Mesh& m, int threads, std::size_t& count)
 
 }  // namespace
 
-TEST_CASE("accumulate_by_vertex: bitwise the serial order on 1 and 2 threads, ordered and shuffled faces", "[accumulate_by_vertex]") {
+TEST_CASE("accumulate_by_vertex: bitwise the serial order on 1, 2, 3 and 10 threads, ordered and shuffled faces", "[accumulate_by_vertex]") {
+  // Up to 8 chunks find their shared rows by bitmaps, more by owner ids: 10 threads (allowed
+  // above the core count here) take the second way.
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 16);
   AnalyticMesh quads, fan;
   quad_uv_sphere(300, 150, quads, fan);
   const Mesh meshes[] = {irregular(uv_sphere(300, 150, 0.15, 2)).mesh, quads.mesh, shuffle_faces(fan.mesh, 3)};
   for (const Mesh& m : meshes) {
     REQUIRE(m.num_faces() > 40000);  // above the serial threshold: the chunks are used
     const std::vector<double> expected = serial_sums(m);
-    for (int threads : {1, 2}) {
+    for (int threads : {1, 2, 3, 10}) {
       std::size_t count = 0;
       CHECK(chunked_sums(m, threads, count) == expected);
       CHECK(count == m.num_faces());  // contribute's counts summed over the chunks
     }
+  }
+}
+
+TEST_CASE("plan_chunks: one chunk per thread on ordered faces, exactly the rows of two or more chunks shared", "[accumulate_by_vertex]") {
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 16);
+  const Mesh m = irregular(uv_sphere(300, 150, 0.15, 2)).mesh;
+  for (int threads : {2, 3, 10}) {
+    const ChunkPlan plan = tbb::task_arena(threads).execute([&] { return plan_chunks<false>(m, nullptr, m.num_vertices()); });
+    REQUIRE(plan.K == std::size_t(threads));
+    // Reference: the chunks touching each vertex, from the chunk bounds plan_chunks uses.
+    const std::size_t F = m.num_faces(), K = plan.K;
+    std::vector<std::set<std::size_t>> chunks(m.num_vertices());
+    for (std::size_t k = 0; k < K; ++k)
+      for (std::size_t f = F * k / K; f < F * (k + 1) / K; ++f)
+        for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) chunks[m.corner_vertex[c]].insert(k);
+    std::size_t shared = 0;
+    for (std::uint32_t v = 0; v < m.num_vertices(); ++v) {
+      CHECK(plan.is_shared(v) == (chunks[v].size() >= 2));
+      shared += plan.is_shared(v);
+    }
+    CHECK(shared >= std::size_t(threads - 1) * 300);  // at least one ring of the 300 x 150 sphere per border
   }
 }
 
