@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <memory>
 
+#include <tbb/parallel_for.h>
+
 #include "core/error.h"
 #include "core/bulk_reserve.h"
+#include "core/usable_threads.h"
 
 namespace shadetool {
 
@@ -21,6 +24,77 @@ struct Step {
   std::uint64_t key;
   bool operator<(const Step& o) const { return face != o.face ? face < o.face : key < o.key; }
 };
+
+// Union-find with parity over the faces: node[f] = (parent << 1) | parity, the parity of f's
+// reversal relative to its parent's. Union by lower index, so each set's root is its lowest face:
+// the seed. Path halving keeps the parities: a node moved to its grandparent takes the XOR of the
+// two parities on the way. Every link points to a lower face.
+inline std::uint32_t find_root(std::uint32_t* node, std::uint32_t x, std::uint32_t& parity) {
+  parity = 0;
+  for (;;) {
+    const std::uint32_t nx = node[x], px = nx >> 1;
+    if (px == x) return x;
+    const std::uint32_t ny = node[px], py = ny >> 1;
+    if (py == px) {
+      parity ^= nx & 1u;
+      return px;
+    }
+    const std::uint32_t to_grandparent = (nx ^ ny) & 1u;
+    node[x] = (py << 1) | to_grandparent;
+    parity ^= to_grandparent;
+    x = py;
+  }
+}
+
+// The edge (f, g) says reverse[f] XOR reverse[g] = same. f's root and parity (rf, pf) are given
+// and updated: a union either hangs g's root under f's, or f's under g's (then f's parity to its
+// new root is its old one XOR the link's). An edge inside one set with the wrong parity is a
+// conflict: its component is non-orientable (settled by the canonical search).
+inline void unite_edge(std::uint32_t* node, std::uint32_t f, std::uint32_t& rf, std::uint32_t& pf, std::uint32_t g,
+                       std::uint32_t same, std::vector<std::uint32_t>& conflicts) {
+  std::uint32_t pg;
+  const std::uint32_t rg = find_root(node, g, pg);
+  const std::uint32_t parity = pf ^ pg ^ same;
+  if (rf == rg) {
+    if (parity) conflicts.push_back(f);
+  } else if (rf < rg) {
+    node[rg] = (rf << 1) | parity;
+  } else {
+    node[rf] = (rg << 1) | parity;
+    rf = rg;
+    pf ^= parity;
+  }
+}
+
+// The manifold edges of faces [lo, hi), each once from its lower corner; f's root is found once
+// per face. Edges to a face at or beyond hi are deferred (their corner listed), so that only
+// nodes in [lo, hi) are touched.
+template <bool kTriangles>
+void unite_faces(std::uint32_t lo, std::uint32_t hi, const std::uint32_t* fs, const std::uint32_t* face_of,
+                 const std::uint32_t* mate, std::uint32_t* node, std::vector<std::uint32_t>& deferred,
+                 std::vector<std::uint32_t>& conflicts) {
+  constexpr std::uint32_t kUnpaired = EdgeAdjacency::kUnpaired;
+  for (std::uint32_t f = lo; f < hi; ++f) {
+    const std::uint32_t b = kTriangles ? 3 * f : fs[f], e = kTriangles ? b + 3 : fs[f + 1];
+    std::uint32_t rf = 0, pf = 0;
+    bool found = false;
+    for (std::uint32_t c = b; c < e; ++c) {
+      const std::uint32_t m = mate[c];
+      if (m == kUnpaired || (m >> 1) < c) continue;
+      const std::uint32_t g = kTriangles ? (m >> 1) / 3 : face_of[m >> 1];
+      if (g == f) continue;  // a face using an edge twice is no bridge
+      if (g >= hi) {  // (g > f >= lo: only the upper bound can be crossed)
+        deferred.push_back(c);
+        continue;
+      }
+      if (!found) {
+        rf = find_root(node, f, pf);
+        found = true;
+      }
+      unite_edge(node, f, rf, pf, g, m & 1u, conflicts);
+    }
+  }
+}
 
 }  // namespace
 
@@ -47,8 +121,7 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
 
   ConsistentWinding w;
   w.non_manifold_edges = adj.non_manifold_edges;
-  reserve_bulk(w.face_component, F);  // huge pages for large fresh arrays (core/bulk_reserve.h)
-  w.face_component.resize(F);
+  w.face_component.resize(F);  // huge pages, unzeroed: the union-find's first pass writes every entry
   reserve_bulk(w.face_reverse, F);
   w.face_reverse.resize(F);
   std::uint32_t* component = w.face_component.data();
@@ -135,52 +208,37 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
     return non_orientable;
   };
 
-  // Union-find with parity over the faces: node[f] = (parent << 1) | parity, the parity of f's
-  // reversal relative to its parent's. Union by lower index, so each set's root is its lowest
-  // face: the seed. Path halving keeps the parities: a node moved to its grandparent takes the
-  // XOR of the two parities on the way. Every link points to a lower face. The nodes live in the
-  // storage of face_component, which the last pass overwrites in face order.
+  // Union-find with parity (find_root above). The nodes live in the storage of face_component,
+  // which the last pass overwrites in face order.
   std::uint32_t* node = component;
   for (std::size_t f = 0; f < F; ++f) node[f] = std::uint32_t(f) << 1;
-  auto find = [node](std::uint32_t x, std::uint32_t& parity) {
-    parity = 0;
-    for (;;) {
-      const std::uint32_t nx = node[x], px = nx >> 1;
-      if (px == x) return x;
-      const std::uint32_t ny = node[px], py = ny >> 1;
-      if (py == px) {
-        parity ^= nx & 1u;
-        return px;
-      }
-      const std::uint32_t to_grandparent = (nx ^ ny) & 1u;
-      node[x] = (py << 1) | to_grandparent;
-      parity ^= to_grandparent;
-      x = py;
-    }
+  // Every manifold edge (f, g), once, from its lower corner (unite_faces above). Threads: the
+  // faces are cut into P contiguous parts; part p unites only edges whose two faces both lie in it
+  // (every link and every path then stays inside the part: no two threads touch one node) and
+  // defers the rest, which one thread unites afterwards, in part order. The sets, their roots (the
+  // lowest face of each: union by lower index) and, on an orientable component, every parity are
+  // the same in any order of union; so is which components have a conflict.
+  const std::size_t parts = F >= (std::size_t(1) << 15) && usable_threads() >= 2 ? 2 : 1;
+  std::vector<std::vector<std::uint32_t>> deferred(parts), conflicts(parts);
+  auto unite_part = [&](std::size_t p) {
+    const std::uint32_t lo = std::uint32_t(F * p / parts), hi = std::uint32_t(F * (p + 1) / parts);
+    if (triangles) unite_faces<true>(lo, hi, fs, nullptr, mate, node, deferred[p], conflicts[p]);
+    else unite_faces<false>(lo, hi, fs, face_of.data(), mate, node, deferred[p], conflicts[p]);
   };
-  // Every manifold edge (f, g), once, from its lower corner: f and g must end with
-  // reverse[f] XOR reverse[g] = same_direction. An edge joining a set to itself with the wrong
-  // parity makes its component non-orientable (recorded, settled below).
+  if (parts == 1) unite_part(0);
+  else tbb::parallel_for(std::size_t(0), parts, unite_part);
   std::vector<std::uint32_t> conflict_faces;
-  for (std::size_t f = 0; f < F; ++f) {
-    const std::uint32_t b = triangles ? std::uint32_t(3 * f) : fs[f], e = triangles ? b + 3 : fs[f + 1];
-    for (std::uint32_t c = b; c < e; ++c) {
+  for (std::size_t p = 0; p < parts; ++p) {
+    for (std::uint32_t c : deferred[p]) {
       const std::uint32_t m = mate[c];
-      if (m == kUnpaired || (m >> 1) < c) continue;
-      const std::uint32_t g = triangles ? (m >> 1) / 3 : face_of[m >> 1];
-      if (g == f) continue;  // a face using an edge twice is no bridge
-      std::uint32_t pf, pg;
-      const std::uint32_t rf = find(std::uint32_t(f), pf), rg = find(g, pg);
-      const std::uint32_t parity = pf ^ pg ^ (m & 1u);
-      if (rf == rg) {
-        if (parity) conflict_faces.push_back(std::uint32_t(f));
-      } else if (rf < rg) {
-        node[rg] = (rf << 1) | parity;
-      } else {
-        node[rf] = (rg << 1) | parity;
-      }
+      const std::uint32_t f = triangles ? c / 3 : face_of[c], g = triangles ? (m >> 1) / 3 : face_of[m >> 1];
+      std::uint32_t pf;
+      std::uint32_t rf = find_root(node, f, pf);
+      unite_edge(node, f, rf, pf, g, m & 1u, conflicts[p]);
     }
+    conflict_faces.insert(conflict_faces.end(), conflicts[p].begin(), conflicts[p].end());
   }
+
   // Components numbered by their lowest face; reversal relative to it. In face order a face's
   // parent is lower, so already final: one step, no search. Faces left out are roots of nothing
   // (they have no manifold edges) and get no component. The per-component counts are summed over

@@ -48,6 +48,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/bulk_reserve.h"
 #include "core/mesh.h"
 #include "topology/edge_adjacency.h"
 
@@ -56,7 +57,7 @@ namespace shadetool {
 struct ConsistentWinding {
   static constexpr std::uint32_t kNoComponent = std::numeric_limits<std::uint32_t>::max();
 
-  std::vector<std::uint32_t> face_component;
+  BulkVector<std::uint32_t> face_component;  // std::vector, not zeroed on resize (core/bulk_reserve.h)
   std::vector<std::uint8_t> face_reverse;
   std::size_t num_components = 0;
   std::vector<std::uint32_t> component_seed;

@@ -2,6 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <random>
+
+#include <tbb/task_arena.h>
 
 #include "repair/consistent_winding.h"
 #include "repair_test_meshes.h"
@@ -128,4 +131,42 @@ TEST_CASE("quads: labels are exactly the reversed faces", "[repair][winding]") {
   CHECK(w.face_reverse == expected);
   CHECK(w.component_reverse_count[0] == std::size_t(nu * nv / 3));
   CHECK(w.component_non_orientable[0] == 0);
+}
+
+TEST_CASE("the same winding on 1 and 2 threads, with components cut by the parts and faces out of order", "[repair][winding]") {
+  // 2 parts above 32768 faces: the torus spans the cut between them (its edges across it are
+  // deferred), the Möbius strip lies in the second part; then the same with every face shuffled,
+  // so that half of all edges cross the cut.
+  Mesh m = testing::torus(150, 120).mesh;  // 36000 faces
+  const std::vector<std::size_t> flipped = flip_random_faces(m, 0.3, 4);
+  const std::size_t torus_faces = m.num_faces();
+  append(m, mobius_strip(2000));
+  Mesh shuffled;
+  shuffled.positions = m.positions;
+  std::vector<std::uint32_t> order(m.num_faces());
+  for (std::uint32_t f = 0; f < order.size(); ++f) order[f] = f;
+  std::mt19937 rng(9);
+  std::shuffle(order.begin(), order.end(), rng);
+  for (std::uint32_t f : order)
+    shuffled.add_face({m.corner_vertex[3 * f], m.corner_vertex[3 * f + 1], m.corner_vertex[3 * f + 2]});
+  for (const Mesh* mesh : {&m, &shuffled}) {
+    const ConsistentWinding one = tbb::task_arena(1).execute([&] { return wind(*mesh); });
+    const ConsistentWinding two = tbb::task_arena(2).execute([&] { return wind(*mesh); });
+    REQUIRE(one.num_components == 2);
+    CHECK(std::equal(one.face_component.begin(), one.face_component.end(), two.face_component.begin(), two.face_component.end()));
+    CHECK(one.face_reverse == two.face_reverse);
+    CHECK(one.component_seed == two.component_seed);
+    CHECK(one.component_faces == two.component_faces);
+    CHECK(one.component_reverse_count == two.component_reverse_count);
+    CHECK(one.component_non_orientable == two.component_non_orientable);
+    CHECK(one.inconsistent_edges == 1);
+    CHECK(two.inconsistent_edges == 1);
+  }
+  // In the ordered mesh the torus's labels are exactly its flips, relative to face 0.
+  const ConsistentWinding w = tbb::task_arena(2).execute([&] { return wind(m); });
+  const bool seed_flipped = std::find(flipped.begin(), flipped.end(), 0) != flipped.end();
+  std::vector<std::uint8_t> expected(torus_faces, seed_flipped ? 1 : 0);
+  for (std::size_t f : flipped) expected[f] ^= 1;
+  CHECK(std::vector<std::uint8_t>(w.face_reverse.begin(), w.face_reverse.begin() + std::ptrdiff_t(torus_faces)) == expected);
+  CHECK(w.component_non_orientable == std::vector<std::uint8_t>{0, 1});
 }
