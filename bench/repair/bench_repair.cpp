@@ -26,6 +26,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <tbb/global_control.h>
@@ -46,6 +47,7 @@
 #include "repair/signed_volume.h"
 #include "repair/repair_test_meshes.h"
 #include "topology/edge_adjacency.h"
+#include "normals/parallel_control.h"
 
 using namespace shadetool;
 using namespace shadetool::testing;
@@ -137,7 +139,23 @@ int main(int argc, char** argv) {
 
   Mesh as_read, work;
   const Timing read = median_ms(reps, [] {}, [&] { as_read = read_mesh(path); });
-  const Timing repair = median_ms(reps, [&] { work = as_read; }, [&] { repair_mesh(work); });
+  // The mesh to repair: a copy of the mesh as read (not timed), its large arrays fresh and in huge
+  // pages as read_mesh leaves them (a plain vector copy would put them in 4 KiB pages, which the
+  // CLI never sees, and cost every pass TLB misses).
+  auto copy_as_read = [&] {
+    work = Mesh();
+    work = as_read;
+    auto rehome = [](auto& v) {
+      std::remove_reference_t<decltype(v)> fresh;
+      reserve_bulk(fresh, v.size());
+      fresh.assign(v.begin(), v.end());
+      v.swap(fresh);
+    };
+    rehome(work.positions);
+    rehome(work.corner_vertex);
+    rehome(work.face_start);
+  };
+  const Timing repair = median_ms(reps, copy_as_read, [&] { repair_mesh(work); });
 
   // Check: the repaired mesh has the original winding, face for face (float positions round the
   // same way in both, and the winding does not depend on positions here).
@@ -157,6 +175,16 @@ int main(int argc, char** argv) {
     std::filesystem::remove(path);
     return restored ? 0 : 1;
   };
+  // Control: a trivially parallel loop on 1 and 2 threads in this process (bench/normals'
+  // parallel_control.h). Near 1x, the second core was busy and a 2-thread repair says little.
+  volatile double control_sink = 0;
+  const Timing control1 = median_ms(reps, [] {}, [&] {
+    tbb::task_arena(1).execute([&] { control_sink = control_sink + parallel_sqrt_control(); });
+  });
+  const Timing control2 = median_ms(reps, [] {}, [&] { control_sink = control_sink + parallel_sqrt_control(); });
+  std::printf("control (a trivially parallel sqrt loop): 1 thread %.2f ms, %zu threads %.2f ms: speed-up %.2fx\n",
+              control1.wall, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism),
+              control2.wall, control1.wall / control2.wall);
   row("read binary PLY (reference)", read);
   row("**repair_mesh, whole**", repair);
   if (!stages) return summary();
@@ -178,8 +206,8 @@ int main(int argc, char** argv) {
   const Timing t_outward = median_ms(reps, [] {}, [&] { outward_orientation(as_read, winding, bounds, volumes); });
   std::vector<std::uint8_t> flags(as_read.num_faces());
   for (std::size_t f = 0; f < flags.size(); ++f) flags[f] = winding.face_reverse[f];
-  const Timing t_reverse = median_ms(reps, [&] { work = as_read; }, [&] { reverse_faces(work, flags); });
-  const Timing t_normals = median_ms(reps, [&] { work = as_read; }, [&] { fix_normals(work); });
+  const Timing t_reverse = median_ms(reps, copy_as_read, [&] { reverse_faces(work, flags); });
+  const Timing t_normals = median_ms(reps, copy_as_read, [&] { fix_normals(work); });
   const Timing t_vertex_normals = median_ms(reps, [] {}, [&] { vertex_normals(as_read); });
 
   const Timing t_info_topology = median_ms(reps, [] {}, [&] { info::edge_topology(as_read); });
