@@ -59,6 +59,7 @@ struct UninitializedAllocator {
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < kHuge / 2) return std::allocator<T>().allocate(n);
+    if (bytes > std::size_t(-1) - kHuge) throw std::bad_alloc();  // the rounding below would wrap
     const std::size_t rounded = (bytes + kHuge - 1) & ~(kHuge - 1);
     void* p = nullptr;
     if (posix_memalign(&p, kHuge, rounded) != 0) throw std::bad_alloc();

@@ -23,8 +23,11 @@
 //   1. Union-find with parity over the faces, the edges taken in corner order (one streaming pass
 //      over corner_mate): union by lower index, so each set's root is its lowest face, the seed;
 //      path halving. Each node keeps its reversal relative to its parent; an edge inside one set
-//      with the wrong parity is a conflict. A second pass in face order gives every face its
-//      component (numbered by seed) and its reversal relative to the seed.
+//      with the wrong parity is a conflict. On 2+ threads (32768+ faces) two halves of the faces
+//      are united in parallel, each only through edges inside it; the edges across the cut are
+//      united afterwards on one thread (sets, roots and orientable parities do not depend on the
+//      order of union). A second pass in face order gives every face its component (numbered by
+//      seed) and its reversal relative to the seed.
 //      On an orientable component the consistent labelling with the seed unreversed is unique,
 //      so the result does not depend on the order the edges were taken in, nor on the input
 //      winding (repair is idempotent).
@@ -39,8 +42,8 @@
 // Why union-find: it reads corner_mate in order and touches the face array near the faces being
 // joined (with the vertex order coherent, as exporters write it), where a graph search jumps
 // along its front; measured in bench/repair (union-find ~11 ms, sorted DFS ~17 ms, BFS ~31 ms,
-// 1M triangles).
-// Cost: O(C alpha(F)), serial. At most 2^31 - 1 faces (a face index and a parity share 32 bits).
+// 1M triangles; with the halves in parallel 7.4 ms on 1 thread, 4.6 ms on 2).
+// Cost: O(C alpha(F)); the labelling pass is serial. At most 2^31 - 1 faces (a face index and a parity share 32 bits).
 #pragma once
 
 #include <cstddef>
