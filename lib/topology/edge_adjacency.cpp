@@ -163,21 +163,13 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   std::uint32_t* cur[4];
   for (std::size_t p = 0; p < parts; ++p) cur[p] = cursor[p].data();
   std::uint32_t H = 0;  // < 2^31 (corners)
-  if (parts == 1) {
-    for (std::size_t v = 0; v < V; ++v) {
-      const std::uint32_t n = cur[0][v];
-      cur[0][v] = H;
-      end[v] = H += n;
+  for (std::size_t v = 0; v < V; ++v) {
+    for (std::size_t p = 0; p < parts; ++p) {
+      const std::uint32_t n = cur[p][v];
+      cur[p][v] = H;
+      H += n;
     }
-  } else {
-    for (std::size_t v = 0; v < V; ++v) {
-      for (std::size_t p = 0; p < parts; ++p) {
-        const std::uint32_t n = cur[p][v];
-        cur[p][v] = H;
-        H += n;
-      }
-      end[v] = H;
-    }
+    end[v] = H;
   }
 
   // Pass 2: scatter each half-edge's higher vertex and (corner << 1 | tail is the lower vertex)
