@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "command_registry.h"
-#include "core/error.h"
-#include "core/validate.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
 #include "driver.h"
-#include "lighting/bake_lighting.h"
-#include "lighting/encode_color.h"
-#include "lighting/read_scene.h"
+#include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/lighting/encode_color.h>
+#include <shadetool/lighting/read_scene.h>
 
 namespace shadetool_cli {
 namespace {

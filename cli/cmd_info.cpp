@@ -8,8 +8,8 @@
 
 #include "command_registry.h"
 #include "driver.h"
-#include "info/mesh_info.h"
-#include "io/mesh_io.h"
+#include <shadetool/info/mesh_info.h>
+#include <shadetool/io/mesh_io.h>
 
 namespace shadetool_cli {
 namespace {

@@ -7,10 +7,10 @@
 #include <fmt/core.h>
 
 #include "command_registry.h"
-#include "core/error.h"
-#include "core/validate.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
 #include "driver.h"
-#include "normals/update_mesh_normals.h"
+#include <shadetool/normals/update_mesh_normals.h>
 #include "usage_error.h"
 
 namespace shadetool_cli {

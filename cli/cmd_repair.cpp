@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "command_registry.h"
-#include "core/error.h"
-#include "core/validate.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
 #include "driver.h"
-#include "io/atomic_write.h"
-#include "repair/repair_mesh.h"
+#include <shadetool/io/atomic_write.h>
+#include <shadetool/repair/repair_mesh.h>
 #include "usage_error.h"
 
 namespace shadetool_cli {

@@ -20,12 +20,12 @@
 #include <CLI/CLI.hpp>
 
 #include "command_registry.h"
-#include "core/error.h"
-#include "core/validate.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
 #include "driver.h"
-#include "transform/affine_maps.h"
-#include "transform/classify_affine.h"
-#include "transform/transform_mesh.h"
+#include <shadetool/transform/affine_maps.h>
+#include <shadetool/transform/classify_affine.h>
+#include <shadetool/transform/transform_mesh.h>
 #include "usage_error.h"
 
 namespace shadetool_cli {

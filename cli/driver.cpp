@@ -16,8 +16,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
-#include "core/error.h"
-#include "io/mesh_io.h"
+#include <shadetool/core/error.h>
+#include <shadetool/io/mesh_io.h>
 #include "usage_error.h"
 
 namespace shadetool_cli {

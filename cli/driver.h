@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace CLI { class App; }
 

@@ -18,9 +18,9 @@
 #include <string>
 #include <string_view>
 
-#include "core/error.h"
-#include "core/mesh.h"
-#include "io/mesh_io.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/mesh_io.h>
 
 namespace shadetool_fuzz {
 

@@ -13,10 +13,10 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "core/error.h"
-#include "core/mesh.h"
-#include "lighting/bake_lighting.h"
-#include "lighting/read_scene.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/lighting/read_scene.h>
 
 namespace {
 

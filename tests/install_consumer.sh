@@ -18,8 +18,8 @@ CM
 cat > "$tmp/consumer/main.cpp" <<'CPP'
 #include <cmath>
 #include <cstdio>
-#include <io/mesh_io.h>
-#include <normals/vertex_normals.h>
+#include <shadetool/io/mesh_io.h>
+#include <shadetool/normals/vertex_normals.h>
 int main(int argc, char** argv) {
   shadetool::Mesh mesh = shadetool::read_mesh(argv[1]);
   shadetool::VertexNormals n = shadetool::vertex_normals(mesh, shadetool::Weighting::Angle);

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "io/mesh_io.h"
+#include <shadetool/io/mesh_io.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

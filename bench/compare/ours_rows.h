@@ -16,8 +16,8 @@
 #include <tbb/task_arena.h>
 
 #include "harness.h"
-#include "normals/face_normals.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/vertex_normals.h>
 
 namespace shadetool::bench {
 

@@ -30,7 +30,7 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
-#include "io/mesh_io.h"
+#include <shadetool/io/mesh_io.h>
 
 using namespace shadetool;
 

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "lighting/look_at.h"
-#include "lighting/shade_points.h"
+#include <shadetool/lighting/look_at.h>
+#include <shadetool/lighting/shade_points.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

@@ -31,10 +31,10 @@
 #include <tbb/task_arena.h>
 #include <type_traits>
 
-#include "normals/corner_normals.h"
+#include <shadetool/normals/corner_normals.h>
 #include "load_average.h"
 #include "parallel_control.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/normals/vertex_normals.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

@@ -24,7 +24,7 @@
 
 #include "load_average.h"
 #include "parallel_control.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/normals/vertex_normals.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

@@ -32,21 +32,21 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
-#include "info/edge_topology.h"
-#include "core/bulk_reserve.h"
-#include "io/mesh_io.h"
-#include "repair/component_boundaries.h"
-#include "repair/consistent_winding.h"
-#include "repair/degenerate_faces.h"
-#include "repair/duplicate_faces.h"
-#include "normals/vertex_normals.h"
-#include "repair/fix_normals.h"
-#include "repair/outward_orientation.h"
-#include "repair/repair_mesh.h"
-#include "repair/reverse_faces.h"
-#include "repair/signed_volume.h"
+#include <shadetool/info/edge_topology.h>
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/io/mesh_io.h>
+#include <shadetool/repair/component_boundaries.h>
+#include <shadetool/repair/consistent_winding.h>
+#include <shadetool/repair/degenerate_faces.h>
+#include <shadetool/repair/duplicate_faces.h>
+#include <shadetool/normals/vertex_normals.h>
+#include <shadetool/repair/fix_normals.h>
+#include <shadetool/repair/outward_orientation.h>
+#include <shadetool/repair/repair_mesh.h>
+#include <shadetool/repair/reverse_faces.h>
+#include <shadetool/repair/signed_volume.h>
 #include "repair/repair_test_meshes.h"
-#include "topology/edge_adjacency.h"
+#include <shadetool/topology/edge_adjacency.h>
 #include "normals/parallel_control.h"
 
 using namespace shadetool;

@@ -32,8 +32,8 @@
 #include <assimp/scene.h>
 
 #include "support/analytic_meshes.h"
-#include "transform/affine_maps.h"
-#include "transform/transform_mesh.h"
+#include <shadetool/transform/affine_maps.h>
+#include <shadetool/transform/transform_mesh.h>
 
 using namespace shadetool;
 

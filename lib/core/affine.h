@@ -11,7 +11,7 @@
 #include <array>
 #include <cmath>
 
-#include "core/vec3.h"
+#include <shadetool/core/vec3.h>
 
 namespace shadetool {
 

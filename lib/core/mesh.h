@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "core/vec3.h"
+#include <shadetool/core/vec3.h>
 
 namespace shadetool {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
-#include "core/mesh.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

@@ -1,10 +1,10 @@
 // connected_components.cpp
-#include "info/connected_components.h"
+#include <shadetool/info/connected_components.h>
 
 #include <cstdint>
 #include <vector>
 
-#include "info/union_find.h"
+#include <shadetool/info/union_find.h>
 
 namespace shadetool::info {
 

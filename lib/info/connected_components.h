@@ -9,7 +9,7 @@
 
 #include <cstddef>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool::info {
 

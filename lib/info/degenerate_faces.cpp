@@ -1,5 +1,5 @@
 // degenerate_faces.cpp
-#include "info/degenerate_faces.h"
+#include <shadetool/info/degenerate_faces.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
 // edge_topology.cpp: edge counts and fans from the shared half-edge pairing (see the header).
-#include "info/edge_topology.h"
+#include <shadetool/info/edge_topology.h>
 
 #include <cstdint>
 #include <vector>
 
-#include "info/union_find.h"
-#include "topology/edge_adjacency.h"
+#include <shadetool/info/union_find.h>
+#include <shadetool/topology/edge_adjacency.h>
 
 namespace shadetool::info {
 

@@ -1,11 +1,11 @@
 // mesh_info.cpp
-#include "info/mesh_info.h"
+#include <shadetool/info/mesh_info.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
-#include "info/connected_components.h"
+#include <shadetool/info/connected_components.h>
 
 namespace shadetool::info {
 

@@ -17,10 +17,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/mesh.h"
-#include "core/vec3.h"
-#include "info/degenerate_faces.h"
-#include "info/edge_topology.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/core/vec3.h>
+#include <shadetool/info/degenerate_faces.h>
+#include <shadetool/info/edge_topology.h>
 
 namespace shadetool::info {
 

@@ -1,5 +1,5 @@
 // atomic_write.cpp: mkstemp in the target directory, write, (fsync if asked), rename.
-#include "io/atomic_write.h"
+#include <shadetool/io/atomic_write.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool::io {
 

@@ -1,6 +1,6 @@
 // file_bytes.cpp: mmap for large regular files; read(2) into an uninitialised buffer otherwise
 // (in growing chunks when the size is unknown: pipes, /dev/stdin).
-#include "io/file_bytes.h"
+#include <shadetool/io/file_bytes.h>
 
 #include <cerrno>
 #include <cstring>
@@ -10,7 +10,7 @@
 #include <unistd.h>
 #include <utility>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool::io {
 

@@ -1,16 +1,16 @@
 // mesh_io.cpp: format names, dispatch to the per-format readers and writers, atomic output.
-#include "io/mesh_io.h"
+#include <shadetool/io/mesh_io.h>
 
 #include <algorithm>
 #include <cctype>
 
-#include "core/error.h"
-#include "io/atomic_write.h"
-#include "io/file_bytes.h"
-#include "io/obj_format.h"
-#include "io/off_format.h"
-#include "io/ply_format.h"
-#include "io/stl_format.h"
+#include <shadetool/core/error.h>
+#include <shadetool/io/atomic_write.h>
+#include <shadetool/io/file_bytes.h>
+#include <shadetool/io/obj_format.h>
+#include <shadetool/io/off_format.h>
+#include <shadetool/io/ply_format.h>
+#include <shadetool/io/stl_format.h>
 
 namespace shadetool {
 

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

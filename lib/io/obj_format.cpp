@@ -1,16 +1,16 @@
 // obj_format.cpp: Wavefront OBJ, one pass over the bytes, line by line.
-#include "io/obj_format.h"
+#include <shadetool/io/obj_format.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 
-#include "core/error.h"
-#include "core/bulk_reserve.h"
-#include "io/number_text.h"
-#include "io/split_face_colors.h"
-#include "io/text_parse.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/io/number_text.h>
+#include <shadetool/io/split_face_colors.h>
+#include <shadetool/io/text_parse.h>
 
 namespace shadetool::io {
 

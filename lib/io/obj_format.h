@@ -24,8 +24,8 @@
 #include <string>
 #include <string_view>
 
-#include "core/mesh.h"
-#include "io/mesh_io.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/mesh_io.h>
 
 namespace shadetool::io {
 

@@ -1,5 +1,5 @@
 // off_format.cpp: OFF, line by line.
-#include "io/off_format.h"
+#include <shadetool/io/off_format.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -7,11 +7,11 @@
 #include <limits>
 #include <vector>
 
-#include "core/error.h"
-#include "core/bulk_reserve.h"
-#include "io/number_text.h"
-#include "io/split_corner_normals.h"
-#include "io/text_parse.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/io/number_text.h>
+#include <shadetool/io/split_corner_normals.h>
+#include <shadetool/io/text_parse.h>
 
 namespace shadetool::io {
 

@@ -46,7 +46,7 @@
 #pragma GCC diagnostic pop
 #endif
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

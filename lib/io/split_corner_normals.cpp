@@ -1,5 +1,5 @@
 // split_corner_normals.cpp
-#include "io/split_corner_normals.h"
+#include <shadetool/io/split_corner_normals.h>
 
 #include <cstdint>
 #include <vector>

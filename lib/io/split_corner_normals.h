@@ -14,7 +14,7 @@
 
 #include <cstddef>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool::io {
 

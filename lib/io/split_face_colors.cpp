@@ -1,12 +1,12 @@
 // split_face_colors.cpp
-#include "io/split_face_colors.h"
+#include <shadetool/io/split_face_colors.h>
 
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <vector>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool::io {
 

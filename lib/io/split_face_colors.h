@@ -20,7 +20,7 @@
 
 #include <cstddef>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool::io {
 

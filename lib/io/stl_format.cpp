@@ -1,5 +1,5 @@
 // stl_format.cpp
-#include "io/stl_format.h"
+#include <shadetool/io/stl_format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +8,10 @@
 #include <limits>
 #include <vector>
 
-#include "core/error.h"
-#include "core/bulk_reserve.h"
-#include "io/number_text.h"
-#include "io/text_parse.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/io/number_text.h>
+#include <shadetool/io/text_parse.h>
 
 namespace shadetool::io {
 

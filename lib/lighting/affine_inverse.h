@@ -11,7 +11,7 @@
 
 #include <cmath>
 
-#include "core/affine.h"
+#include <shadetool/core/affine.h>
 
 namespace shadetool {
 

@@ -1,8 +1,8 @@
 // bake_lighting.cpp: see bake_lighting.h.
-#include "lighting/bake_lighting.h"
+#include <shadetool/lighting/bake_lighting.h>
 
-#include "normals/face_normals.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/vertex_normals.h>
 
 namespace shadetool {
 

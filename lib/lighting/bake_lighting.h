@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh.h"
-#include "lighting/shade_points.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/lighting/shade_points.h>
 
 namespace shadetool {
 

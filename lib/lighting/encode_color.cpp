@@ -1,5 +1,5 @@
 // encode_color.cpp: see encode_color.h.
-#include "lighting/encode_color.h"
+#include <shadetool/lighting/encode_color.h>
 
 #include <cmath>
 

@@ -41,7 +41,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "lighting/shading_space.h"
+#include <shadetool/lighting/shading_space.h>
 
 namespace shadetool {
 

@@ -1,5 +1,5 @@
 // lighting_plan.cpp: see lighting_plan.h.
-#include "lighting/lighting_plan.h"
+#include <shadetool/lighting/lighting_plan.h>
 
 namespace shadetool {
 

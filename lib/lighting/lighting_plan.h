@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "lighting/scene.h"
+#include <shadetool/lighting/scene.h>
 
 namespace shadetool {
 

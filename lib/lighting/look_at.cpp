@@ -1,5 +1,5 @@
 // look_at.cpp: see look_at.h.
-#include "lighting/look_at.h"
+#include <shadetool/lighting/look_at.h>
 
 namespace shadetool {
 

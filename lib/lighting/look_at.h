@@ -8,8 +8,8 @@
 //          leaves `view` untouched (lengths are checked before every division).
 #pragma once
 
-#include "core/affine.h"
-#include "core/vec3.h"
+#include <shadetool/core/affine.h>
+#include <shadetool/core/vec3.h>
 
 namespace shadetool {
 

@@ -1,5 +1,5 @@
 // read_scene.cpp: JSON -> Scene with one-line errors `FILE: $.json.path: problem` (see read_scene.h).
-#include "lighting/read_scene.h"
+#include <shadetool/lighting/read_scene.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,9 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/error.h"
-#include "lighting/affine_inverse.h"
-#include "lighting/look_at.h"
+#include <shadetool/core/error.h>
+#include <shadetool/lighting/affine_inverse.h>
+#include <shadetool/lighting/look_at.h>
 
 namespace shadetool {
 

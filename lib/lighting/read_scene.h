@@ -33,7 +33,7 @@
 #include <string>
 #include <string_view>
 
-#include "lighting/scene.h"
+#include <shadetool/lighting/scene.h>
 
 namespace shadetool {
 

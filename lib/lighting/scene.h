@@ -11,8 +11,8 @@
 
 #include <vector>
 
-#include "core/affine.h"
-#include "core/vec3.h"
+#include <shadetool/core/affine.h>
+#include <shadetool/core/vec3.h>
 
 namespace shadetool {
 

@@ -1,5 +1,5 @@
 // shade_points.cpp: see shade_points.h.
-#include "lighting/shade_points.h"
+#include <shadetool/lighting/shade_points.h>
 
 #include <stdexcept>
 

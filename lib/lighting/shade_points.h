@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "lighting/lighting_equation.h"
-#include "lighting/lighting_plan.h"
-#include "lighting/scene.h"
-#include "lighting/shading_space.h"
+#include <shadetool/lighting/lighting_equation.h>
+#include <shadetool/lighting/lighting_plan.h>
+#include <shadetool/lighting/scene.h>
+#include <shadetool/lighting/shading_space.h>
 
 namespace shadetool {
 

@@ -1,11 +1,11 @@
 // shading_space.cpp: see shading_space.h.
-#include "lighting/shading_space.h"
+#include <shadetool/lighting/shading_space.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "lighting/affine_inverse.h"
+#include <shadetool/lighting/affine_inverse.h>
 
 namespace shadetool {
 

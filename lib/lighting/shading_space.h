@@ -35,9 +35,9 @@
 
 #include <string>
 
-#include "core/affine.h"
-#include "lighting/lighting_plan.h"
-#include "lighting/scene.h"
+#include <shadetool/core/affine.h>
+#include <shadetool/lighting/lighting_plan.h>
+#include <shadetool/lighting/scene.h>
 
 namespace shadetool {
 

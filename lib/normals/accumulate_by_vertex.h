@@ -45,11 +45,11 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "core/mesh.h"
-#include "core/usable_threads.h"
-#include "core/vec3.h"
-#include "normals/face_geometry.h"  // SHADETOOL_NORMALS_INLINE
-#include "normals/parallel.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/core/usable_threads.h>
+#include <shadetool/core/vec3.h>
+#include <shadetool/normals/face_geometry.h>  // SHADETOOL_NORMALS_INLINE
+#include <shadetool/normals/parallel.h>
 
 namespace shadetool::normals_detail {
 

@@ -34,11 +34,11 @@
 #include <limits>
 #include <type_traits>
 
-#include "core/mesh.h"
-#include "normals/face_geometry.h"
-#include "normals/interior_angle.h"
-#include "normals/triangle_blocks.h"
-#include "normals/weighting.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/normals/face_geometry.h>
+#include <shadetool/normals/interior_angle.h>
+#include <shadetool/normals/triangle_blocks.h>
+#include <shadetool/normals/weighting.h>
 
 namespace shadetool::normals_detail {
 

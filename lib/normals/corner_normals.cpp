@@ -13,7 +13,7 @@
 // Precision: contributions in double, rounded once to T, sums in T (double or float, as
 // vertex_normals; corner_contributions.h); the crease test
 // compares angles in double: atan2(|n1 x n2|, n1 . n2) > crease_angle (interior_angle.h).
-#include "normals/corner_normals.h"
+#include <shadetool/normals/corner_normals.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,13 +21,13 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include "normals/accumulate_by_vertex.h"
-#include "normals/corner_contributions.h"
-#include "normals/face_normals.h"
-#include "normals/interior_angle.h"
-#include "normals/normalise_sums.h"
-#include "normals/parallel.h"
-#include "normals/vertex_fallback.h"
+#include <shadetool/normals/accumulate_by_vertex.h>
+#include <shadetool/normals/corner_contributions.h>
+#include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/interior_angle.h>
+#include <shadetool/normals/normalise_sums.h>
+#include <shadetool/normals/parallel.h>
+#include <shadetool/normals/vertex_fallback.h>
 
 namespace shadetool {
 namespace {

@@ -18,8 +18,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "core/mesh.h"
-#include "core/vec3.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/core/vec3.h>
 
 // The kernels' per-face helpers must be inlined into their loops (GCC otherwise keeps some out of
 // line and the result goes through the stack); this only affects code generation.

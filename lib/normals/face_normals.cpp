@@ -7,10 +7,10 @@
 // back to double. Float therefore costs what Double costs here; it exists so that a float run is
 // float throughout. A degenerate face (fewer than 3 corners, zero area,
 // repeated index, non-finite position) gets (0, 0, 0).
-#include "normals/face_normals.h"
+#include <shadetool/normals/face_normals.h>
 
-#include "normals/face_geometry.h"
-#include "normals/parallel.h"
+#include <shadetool/normals/face_geometry.h>
+#include <shadetool/normals/parallel.h>
 
 namespace shadetool {
 namespace {

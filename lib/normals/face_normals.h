@@ -9,8 +9,8 @@
 
 #include <vector>
 
-#include "core/mesh.h"
-#include "normals/weighting.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/normals/weighting.h>
 
 namespace shadetool {
 

@@ -23,7 +23,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "normals/face_geometry.h"  // SHADETOOL_NORMALS_INLINE
+#include <shadetool/normals/face_geometry.h>  // SHADETOOL_NORMALS_INLINE
 
 namespace shadetool::normals_detail {
 

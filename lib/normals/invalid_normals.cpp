@@ -1,5 +1,5 @@
 // invalid_normals.cpp: see invalid_normals.h.
-#include "normals/invalid_normals.h"
+#include <shadetool/normals/invalid_normals.h>
 
 #include <cmath>
 

@@ -20,8 +20,8 @@
 #include <emmintrin.h>
 #endif
 
-#include "core/vec3.h"
-#include "normals/face_geometry.h"  // SHADETOOL_NORMALS_INLINE
+#include <shadetool/core/vec3.h>
+#include <shadetool/normals/face_geometry.h>  // SHADETOOL_NORMALS_INLINE
 
 namespace shadetool::normals_detail {
 

@@ -1,5 +1,5 @@
 // triangle_blocks.cpp: see triangle_blocks.h (methods, error bound, why the clones agree bitwise).
-#include "normals/triangle_blocks.h"
+#include <shadetool/normals/triangle_blocks.h>
 
 #include <cmath>
 #include <limits>

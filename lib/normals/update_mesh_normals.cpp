@@ -1,11 +1,11 @@
 // update_mesh_normals.cpp: see update_mesh_normals.h.
-#include "normals/update_mesh_normals.h"
+#include <shadetool/normals/update_mesh_normals.h>
 
-#include "normals/corner_normals.h"
-#include "normals/face_normals.h"
-#include "normals/invalid_normals.h"
-#include "normals/vertex_fallback.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/invalid_normals.h>
+#include <shadetool/normals/vertex_fallback.h>
+#include <shadetool/normals/vertex_normals.h>
 
 namespace shadetool {
 namespace {

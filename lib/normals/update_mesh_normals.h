@@ -27,8 +27,8 @@
 #include <cstddef>
 #include <string>
 
-#include "core/mesh.h"
-#include "normals/weighting.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/normals/weighting.h>
 
 namespace shadetool {
 

@@ -1,7 +1,7 @@
 // vertex_fallback.cpp: see vertex_fallback.h.
-#include "normals/vertex_fallback.h"
+#include <shadetool/normals/vertex_fallback.h>
 
-#include "normals/face_normals.h"
+#include <shadetool/normals/face_normals.h>
 
 namespace shadetool {
 

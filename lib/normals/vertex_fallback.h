@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
-#include "normals/weighting.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/normals/weighting.h>
 
 namespace shadetool {
 

@@ -14,20 +14,20 @@
 // first valid face (by face index) when it has one (contributions cancelled, e.g. a two-sided
 // sheet), else kFallbackNormal = (0, 0, 1) (isolated vertex, or only degenerate faces). Both are
 // counted in fallback_vertices.
-#include "normals/vertex_normals.h"
+#include <shadetool/normals/vertex_normals.h>
 
 #include <algorithm>
 #include <type_traits>
 
 #include <tbb/parallel_invoke.h>
 
-#include "core/bulk_reserve.h"
-#include "core/error.h"
-#include "normals/accumulate_by_vertex.h"
-#include "normals/corner_contributions.h"
-#include "normals/normalise_sums.h"
-#include "normals/parallel.h"
-#include "normals/vertex_fallback.h"
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/error.h>
+#include <shadetool/normals/accumulate_by_vertex.h>
+#include <shadetool/normals/corner_contributions.h>
+#include <shadetool/normals/normalise_sums.h>
+#include <shadetool/normals/parallel.h>
+#include <shadetool/normals/vertex_fallback.h>
 
 namespace shadetool {
 namespace {

@@ -27,9 +27,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/mesh.h"
-#include "normals/vertex_normals_plan.h"
-#include "normals/weighting.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/normals/vertex_normals_plan.h>
+#include <shadetool/normals/weighting.h>
 
 namespace shadetool {
 

@@ -22,7 +22,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

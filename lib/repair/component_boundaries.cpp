@@ -1,5 +1,5 @@
 // component_boundaries.cpp: closed components and boundary loops (see the header).
-#include "repair/component_boundaries.h"
+#include <shadetool/repair/component_boundaries.h>
 
 #include <algorithm>
 #include <numeric>

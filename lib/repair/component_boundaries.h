@@ -23,9 +23,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
-#include "repair/consistent_winding.h"
-#include "topology/edge_adjacency.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/repair/consistent_winding.h>
+#include <shadetool/topology/edge_adjacency.h>
 
 namespace shadetool {
 

@@ -1,15 +1,15 @@
 // consistent_winding.cpp: winding by union-find with parity, canonical depth-first search for
 // non-orientable components (see the header).
-#include "repair/consistent_winding.h"
+#include <shadetool/repair/consistent_winding.h>
 
 #include <algorithm>
 #include <memory>
 
 #include <tbb/parallel_for.h>
 
-#include "core/error.h"
-#include "core/bulk_reserve.h"
-#include "core/usable_threads.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/usable_threads.h>
 
 namespace shadetool {
 

@@ -51,9 +51,9 @@
 #include <limits>
 #include <vector>
 
-#include "core/bulk_reserve.h"
-#include "core/mesh.h"
-#include "topology/edge_adjacency.h"
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/topology/edge_adjacency.h>
 
 namespace shadetool {
 

@@ -1,5 +1,5 @@
 // degenerate_faces.cpp: degenerate face detection and face removal (see the header).
-#include "repair/degenerate_faces.h"
+#include <shadetool/repair/degenerate_faces.h>
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool {
 

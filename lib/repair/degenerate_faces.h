@@ -25,7 +25,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

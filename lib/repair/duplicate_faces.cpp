@@ -1,5 +1,5 @@
 // duplicate_faces.cpp: same-vertex-set faces among those on non-manifold edges (see the header).
-#include "repair/duplicate_faces.h"
+#include <shadetool/repair/duplicate_faces.h>
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // fix_normals.cpp: check stored normals against the repaired faces (see the header).
-#include "repair/fix_normals.h"
+#include <shadetool/repair/fix_normals.h>
 
 #include <cmath>
 #include <cstdint>
@@ -8,10 +8,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/error.h"
-#include "normals/corner_contributions.h"
-#include "normals/face_normals.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/core/error.h>
+#include <shadetool/normals/corner_contributions.h>
+#include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/vertex_normals.h>
 
 namespace shadetool {
 

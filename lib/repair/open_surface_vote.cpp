@@ -1,10 +1,10 @@
 // open_surface_vote.cpp: winding-number vote for an open component (see the header).
-#include "repair/open_surface_vote.h"
+#include <shadetool/repair/open_surface_vote.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "repair/winding_number.h"
+#include <shadetool/repair/winding_number.h>
 
 namespace shadetool {
 

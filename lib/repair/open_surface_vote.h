@@ -30,8 +30,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
-#include "repair/consistent_winding.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/repair/consistent_winding.h>
 
 namespace shadetool {
 

@@ -1,9 +1,9 @@
 // outward_orientation.cpp: volume, containment parity, vote, majority (see the header).
-#include "repair/outward_orientation.h"
+#include <shadetool/repair/outward_orientation.h>
 
-#include "repair/open_surface_vote.h"
-#include "repair/shell_nesting.h"
-#include "repair/signed_volume.h"
+#include <shadetool/repair/open_surface_vote.h>
+#include <shadetool/repair/shell_nesting.h>
+#include <shadetool/repair/signed_volume.h>
 
 namespace shadetool {
 

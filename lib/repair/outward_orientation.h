@@ -26,10 +26,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
-#include "repair/component_boundaries.h"
-#include "repair/consistent_winding.h"
-#include "repair/signed_volume.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/repair/component_boundaries.h>
+#include <shadetool/repair/consistent_winding.h>
+#include <shadetool/repair/signed_volume.h>
 
 namespace shadetool {
 

@@ -1,19 +1,19 @@
 // repair_mesh.cpp: the repair pipeline (see the header).
-#include "repair/repair_mesh.h"
+#include <shadetool/repair/repair_mesh.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
-#include "repair/component_boundaries.h"
-#include "repair/consistent_winding.h"
-#include "repair/degenerate_faces.h"
-#include "repair/duplicate_faces.h"
-#include "repair/outward_orientation.h"
-#include "repair/reverse_faces.h"
-#include "repair/signed_volume.h"
-#include "repair/weld_vertices.h"
-#include "topology/edge_adjacency.h"
+#include <shadetool/repair/component_boundaries.h>
+#include <shadetool/repair/consistent_winding.h>
+#include <shadetool/repair/degenerate_faces.h>
+#include <shadetool/repair/duplicate_faces.h>
+#include <shadetool/repair/outward_orientation.h>
+#include <shadetool/repair/reverse_faces.h>
+#include <shadetool/repair/signed_volume.h>
+#include <shadetool/repair/weld_vertices.h>
+#include <shadetool/topology/edge_adjacency.h>
 
 namespace shadetool {
 

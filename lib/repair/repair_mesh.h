@@ -23,9 +23,9 @@
 // Repairing the output again changes nothing (RepairReport::changes() == 0).
 #pragma once
 
-#include "core/mesh.h"
-#include "normals/weighting.h"
-#include "repair/repair_report.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/normals/weighting.h>
+#include <shadetool/repair/repair_report.h>
 
 namespace shadetool {
 

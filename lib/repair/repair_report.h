@@ -9,7 +9,7 @@
 
 #include <cstddef>
 
-#include "repair/fix_normals.h"
+#include <shadetool/repair/fix_normals.h>
 
 namespace shadetool {
 

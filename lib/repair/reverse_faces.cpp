@@ -1,5 +1,5 @@
 // reverse_faces.cpp: winding reversal keeping the first corner (see the header).
-#include "repair/reverse_faces.h"
+#include <shadetool/repair/reverse_faces.h>
 
 #include <algorithm>
 #include <functional>
@@ -7,7 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool {
 

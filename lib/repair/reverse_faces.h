@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

@@ -1,11 +1,11 @@
 // shell_nesting.cpp: nesting depth of closed shells by winding numbers (see the header).
-#include "repair/shell_nesting.h"
+#include <shadetool/repair/shell_nesting.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
-#include "repair/winding_number.h"
+#include <shadetool/repair/winding_number.h>
 
 namespace shadetool {
 

@@ -1,13 +1,13 @@
 // signed_volume.cpp: component volumes from a vertex of each component, in one pass over the
 // faces that can also classify degenerate faces (see the header).
-#include "repair/signed_volume.h"
+#include <shadetool/repair/signed_volume.h>
 
 #include <cmath>
 #include <cstdint>
 
 #include <tbb/parallel_for.h>
 
-#include "core/bulk_reserve.h"
+#include <shadetool/core/bulk_reserve.h>
 
 namespace shadetool {
 

@@ -29,10 +29,10 @@
 #include <cmath>
 #include <vector>
 
-#include "core/mesh.h"
-#include "core/vec3.h"
-#include "repair/consistent_winding.h"
-#include "repair/degenerate_faces.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/core/vec3.h>
+#include <shadetool/repair/consistent_winding.h>
+#include <shadetool/repair/degenerate_faces.h>
 
 namespace shadetool {
 

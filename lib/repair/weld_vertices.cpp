@@ -1,11 +1,11 @@
 // weld_vertices.cpp: grid-hash vertex welding (see the header).
-#include "repair/weld_vertices.h"
+#include <shadetool/repair/weld_vertices.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool {
 

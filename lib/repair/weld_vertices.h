@@ -26,7 +26,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

@@ -37,8 +37,8 @@
 #include <limits>
 #include <vector>
 
-#include "core/mesh.h"
-#include "core/vec3.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/core/vec3.h>
 
 namespace shadetool {
 

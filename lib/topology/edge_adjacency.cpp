@@ -1,5 +1,5 @@
 // edge_adjacency.cpp: half-edges paired by a counting sort on their lower vertex (see the header).
-#include "topology/edge_adjacency.h"
+#include <shadetool/topology/edge_adjacency.h>
 
 #include <algorithm>
 #include <type_traits>
@@ -10,9 +10,9 @@
 
 #include <tbb/parallel_for.h>
 
-#include "core/error.h"
-#include "core/bulk_reserve.h"
-#include "core/usable_threads.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/usable_threads.h>
 
 namespace shadetool {
 

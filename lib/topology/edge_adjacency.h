@@ -49,8 +49,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/bulk_reserve.h"
-#include "core/mesh.h"
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

@@ -1,10 +1,10 @@
 // affine_maps.cpp: see affine_maps.h.
-#include "transform/affine_maps.h"
+#include <shadetool/transform/affine_maps.h>
 
 #include <cmath>
 #include <sstream>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool {
 

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "core/affine.h"
-#include "core/vec3.h"
+#include <shadetool/core/affine.h>
+#include <shadetool/core/vec3.h>
 
 namespace shadetool {
 

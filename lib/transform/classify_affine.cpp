@@ -1,11 +1,11 @@
 // classify_affine.cpp: see classify_affine.h.
-#include "transform/classify_affine.h"
+#include <shadetool/transform/classify_affine.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool {
 

@@ -38,7 +38,7 @@
 // in [0.5, 1): det and the norms neither overflow nor underflow for any finite A (e.g. 1e200).
 #pragma once
 
-#include "core/affine.h"
+#include <shadetool/core/affine.h>
 
 namespace shadetool {
 

@@ -1,13 +1,13 @@
 // recompute_normals.cpp: see recompute_normals.h.
-#include "transform/recompute_normals.h"
+#include <shadetool/transform/recompute_normals.h>
 
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
 
-#include "normals/face_normals.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/vertex_normals.h>
 
 namespace shadetool {
 

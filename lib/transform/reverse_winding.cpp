@@ -1,10 +1,10 @@
 // reverse_winding.cpp: see reverse_winding.h.
-#include "transform/reverse_winding.h"
+#include <shadetool/transform/reverse_winding.h>
 
 #include <algorithm>
 #include <string>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 
 namespace shadetool {
 

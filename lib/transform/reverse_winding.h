@@ -13,7 +13,7 @@
 // Corner-attribute arrays of a size other than 0 or C are an inconsistent mesh: Error.
 #pragma once
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 
 namespace shadetool {
 

@@ -1,16 +1,16 @@
 // transform_mesh.cpp: see transform_mesh.h.
-#include "transform/transform_mesh.h"
+#include <shadetool/transform/transform_mesh.h>
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "core/error.h"
-#include "core/validate.h"
-#include "transform/parallel_ranges.h"
-#include "transform/recompute_normals.h"
-#include "transform/reverse_winding.h"
-#include "transform/transform_normals.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
+#include <shadetool/transform/parallel_ranges.h>
+#include <shadetool/transform/recompute_normals.h>
+#include <shadetool/transform/reverse_winding.h>
+#include <shadetool/transform/transform_normals.h>
 
 namespace shadetool {
 

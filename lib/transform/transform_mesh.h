@@ -30,9 +30,9 @@
 #include <cstddef>
 #include <string>
 
-#include "core/affine.h"
-#include "core/mesh.h"
-#include "transform/classify_affine.h"
+#include <shadetool/core/affine.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/transform/classify_affine.h>
 
 namespace shadetool {
 

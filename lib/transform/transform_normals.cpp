@@ -1,11 +1,11 @@
 // transform_normals.cpp: see transform_normals.h.
-#include "transform/transform_normals.h"
+#include <shadetool/transform/transform_normals.h>
 
 #include <cmath>
 
-#include "core/error.h"
-#include "core/mesh.h"
-#include "transform/parallel_ranges.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/transform/parallel_ranges.h>
 
 namespace shadetool {
 

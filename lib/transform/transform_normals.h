@@ -29,8 +29,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/affine.h"
-#include "transform/classify_affine.h"
+#include <shadetool/core/affine.h>
+#include <shadetool/transform/classify_affine.h>
 
 namespace shadetool {
 

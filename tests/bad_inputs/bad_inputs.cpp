@@ -22,7 +22,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "io/mesh_io.h"
+#include <shadetool/io/mesh_io.h>
 
 #include "support/run_process.h"
 

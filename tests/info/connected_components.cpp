@@ -1,7 +1,7 @@
 // Tests of info/connected_components.
 #include <catch2/catch.hpp>
 
-#include "info/connected_components.h"
+#include <shadetool/info/connected_components.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

@@ -3,7 +3,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "info/degenerate_faces.h"
+#include <shadetool/info/degenerate_faces.h>
 
 using namespace shadetool;
 

@@ -1,7 +1,7 @@
 // Tests of info/edge_topology against counts known by hand or by Euler's formula.
 #include <catch2/catch.hpp>
 
-#include "info/edge_topology.h"
+#include <shadetool/info/edge_topology.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

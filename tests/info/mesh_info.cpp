@@ -4,8 +4,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "info/mesh_info.h"
-#include "io/mesh_io.h"
+#include <shadetool/info/mesh_info.h>
+#include <shadetool/io/mesh_io.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

@@ -2,7 +2,7 @@
 // untouched on failure and replaced whole on success, no temporary file left behind.
 #include <sys/stat.h>
 
-#include "io/atomic_write.h"
+#include <shadetool/io/atomic_write.h>
 #include "io_test_util.h"
 
 using namespace shadetool;

@@ -17,9 +17,9 @@
 
 #include "support/run_process.h"
 
-#include "core/error.h"
-#include "core/mesh.h"
-#include "io/mesh_io.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/mesh_io.h>
 
 namespace shadetool::iotest {
 

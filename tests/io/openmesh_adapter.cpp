@@ -1,6 +1,6 @@
 // Tests of io/openmesh_adapter.h: a mesh with polygons and every attribute survives the trip to
 // OpenMesh and back; what OpenMesh cannot hold is counted, not silently lost.
-#include "io/openmesh_adapter.h"  // includes OpenMesh's PolyMesh and TriMesh
+#include <shadetool/io/openmesh_adapter.h>  // includes OpenMesh's PolyMesh and TriMesh
 #include "io_test_util.h"
 
 using namespace shadetool;

@@ -1,6 +1,6 @@
 // Tests of io/split_corner_normals: a cube with one normal per side (the flat-shaded cube) needs
 // 3 vertices per corner of the cube: 8 become 24.
-#include "io/split_corner_normals.h"
+#include <shadetool/io/split_corner_normals.h>
 #include "io_test_util.h"
 
 using namespace shadetool;

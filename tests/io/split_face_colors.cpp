@@ -1,6 +1,6 @@
 // Tests of io/split_face_colors: a cube with one colour per side (flat shading) needs 3 vertices
 // per corner of the cube (each touches 3 sides): 8 become 24, 16 added.
-#include "io/split_face_colors.h"
+#include <shadetool/io/split_face_colors.h>
 #include "io_test_util.h"
 
 using namespace shadetool;

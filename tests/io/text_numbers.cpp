@@ -1,6 +1,6 @@
 // Tests of io/number_text.h and io/text_parse.h: shortest output, strict tokens, the digit rule.
-#include "io/number_text.h"
-#include "io/text_parse.h"
+#include <shadetool/io/number_text.h>
+#include <shadetool/io/text_parse.h>
 #include "io_test_util.h"
 
 using namespace shadetool;

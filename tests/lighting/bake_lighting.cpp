@@ -2,8 +2,8 @@
 // and how colours are stored in the mesh.
 #include <catch2/catch.hpp>
 
-#include "lighting/bake_lighting.h"
-#include "lighting/encode_color.h"
+#include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/lighting/encode_color.h>
 #include "lighting_test_util.h"
 
 using namespace shadetool;

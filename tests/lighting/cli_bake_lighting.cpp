@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/mesh_io.h"
+#include <shadetool/io/mesh_io.h>
 #include "support/run_process.h"
 
 namespace fs = std::filesystem;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "lighting/encode_color.h"
+#include <shadetool/lighting/encode_color.h>
 
 using namespace shadetool;
 

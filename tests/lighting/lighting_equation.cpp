@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "lighting/shade_points.h"
+#include <shadetool/lighting/shade_points.h>
 #include "lighting_test_util.h"
 
 using namespace shadetool;

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <random>
 
-#include "lighting/lighting_plan.h"
-#include "lighting/shade_points.h"
+#include <shadetool/lighting/lighting_plan.h>
+#include <shadetool/lighting/shade_points.h>
 #include "lighting_test_util.h"
 #include "support/analytic_meshes.h"
 

@@ -3,9 +3,9 @@
 
 #include <vector>
 
-#include "core/vec3.h"
-#include "lighting/scene.h"
-#include "lighting/shade_points.h"
+#include <shadetool/core/vec3.h>
+#include <shadetool/lighting/scene.h>
+#include <shadetool/lighting/shade_points.h>
 
 namespace shadetool::testing {
 

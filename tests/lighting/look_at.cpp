@@ -1,7 +1,7 @@
 // look_at: the eye maps to the origin, the target onto -z, up into the +y half-plane; rigid.
 #include <catch2/catch.hpp>
 
-#include "lighting/look_at.h"
+#include <shadetool/lighting/look_at.h>
 
 using namespace shadetool;
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/error.h"
-#include "lighting/read_scene.h"
+#include <shadetool/core/error.h>
+#include <shadetool/lighting/read_scene.h>
 
 using namespace shadetool;
 

@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "lighting/shade_points.h"
+#include <shadetool/lighting/shade_points.h>
 #include "lighting_test_util.h"
 #include "support/analytic_meshes.h"
 

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <random>
 
-#include "lighting/encode_color.h"
-#include "lighting/look_at.h"
-#include "lighting/shade_points.h"
-#include "lighting/shading_space.h"
+#include <shadetool/lighting/encode_color.h>
+#include <shadetool/lighting/look_at.h>
+#include <shadetool/lighting/shade_points.h>
+#include <shadetool/lighting/shading_space.h>
 #include "lighting_test_util.h"
 #include "support/analytic_meshes.h"
 

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/mesh_io.h"
+#include <shadetool/io/mesh_io.h>
 #include "normals_test_util.h"
 
 using namespace shadetool;

@@ -13,8 +13,8 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <tbb/task_arena.h>
 
-#include "normals/corner_normals.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/vertex_normals.h>
 #include "normals_test_util.h"
 
 using namespace shadetool;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "normals/face_normals.h"
+#include <shadetool/normals/face_normals.h>
 
 using namespace shadetool;
 

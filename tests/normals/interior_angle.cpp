@@ -7,8 +7,8 @@
 #include <random>
 #include <vector>
 
-#include "normals/interior_angle.h"
-#include "normals/triangle_blocks.h"
+#include <shadetool/normals/interior_angle.h>
+#include <shadetool/normals/triangle_blocks.h>
 
 using shadetool::normals_detail::interior_angle;
 

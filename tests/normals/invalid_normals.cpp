@@ -3,7 +3,7 @@
 
 #include <limits>
 
-#include "normals/invalid_normals.h"
+#include <shadetool/normals/invalid_normals.h>
 
 TEST_CASE("count_invalid_normals: NaN, Inf and zero rows are invalid; non-unit finite rows are not", "[invalid_normals]") {
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();

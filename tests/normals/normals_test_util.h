@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
+#include <shadetool/core/mesh.h>
 #include "support/analytic_meshes.h"
 
 namespace shadetool::testing {

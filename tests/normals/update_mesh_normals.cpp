@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "normals/update_mesh_normals.h"
-#include "normals/vertex_fallback.h"
+#include <shadetool/normals/update_mesh_normals.h>
+#include <shadetool/normals/vertex_fallback.h>
 #include "normals_test_util.h"
 
 using namespace shadetool;

@@ -13,8 +13,8 @@
 
 #include <tbb/task_arena.h>
 
-#include "core/error.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/core/error.h>
+#include <shadetool/normals/vertex_normals.h>
 #include "normals_test_util.h"
 #include "support/analytic_meshes.h"
 

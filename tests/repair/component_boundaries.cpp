@@ -1,7 +1,7 @@
 // Tests of component_boundaries: closedness and loop counts against the topology of known shapes.
 #include <catch2/catch.hpp>
 
-#include "repair/component_boundaries.h"
+#include <shadetool/repair/component_boundaries.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

@@ -6,7 +6,7 @@
 
 #include <tbb/task_arena.h>
 
-#include "repair/consistent_winding.h"
+#include <shadetool/repair/consistent_winding.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

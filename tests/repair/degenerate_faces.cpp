@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "repair_test_meshes.h"
-#include "repair/degenerate_faces.h"
+#include <shadetool/repair/degenerate_faces.h>
 
 using namespace shadetool;
 

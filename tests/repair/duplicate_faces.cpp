@@ -1,8 +1,8 @@
 // Tests of duplicate_faces, and of repair with duplicated and two-sided faces.
 #include <catch2/catch.hpp>
 
-#include "repair/duplicate_faces.h"
-#include "repair/repair_mesh.h"
+#include <shadetool/repair/duplicate_faces.h>
+#include <shadetool/repair/repair_mesh.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

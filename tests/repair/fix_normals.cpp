@@ -5,7 +5,7 @@
 #include <cstring>
 #include <limits>
 
-#include "repair/fix_normals.h"
+#include <shadetool/repair/fix_normals.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

@@ -1,7 +1,7 @@
 // Tests of open_surface_vote: a shape that wraps a region is decided; a shape that does not is not.
 #include <catch2/catch.hpp>
 
-#include "repair/open_surface_vote.h"
+#include <shadetool/repair/open_surface_vote.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

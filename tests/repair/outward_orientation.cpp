@@ -1,7 +1,7 @@
 // Tests of outward_orientation: the basis chosen for each kind of component in one scene.
 #include <catch2/catch.hpp>
 
-#include "repair/outward_orientation.h"
+#include <shadetool/repair/outward_orientation.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <limits>
 
-#include "repair/repair_mesh.h"
+#include <shadetool/repair/repair_mesh.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

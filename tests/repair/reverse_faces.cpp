@@ -1,7 +1,7 @@
 // Tests of reverse_faces: the first corner stays, the rest reverse, attributes travel with corners.
 #include <catch2/catch.hpp>
 
-#include "repair/reverse_faces.h"
+#include <shadetool/repair/reverse_faces.h>
 
 using namespace shadetool;
 

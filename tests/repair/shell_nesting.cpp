@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "repair/shell_nesting.h"
+#include <shadetool/repair/shell_nesting.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

@@ -3,7 +3,7 @@
 
 #include <limits>
 
-#include "repair/signed_volume.h"
+#include <shadetool/repair/signed_volume.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

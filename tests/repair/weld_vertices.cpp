@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "repair/weld_vertices.h"
+#include <shadetool/repair/weld_vertices.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

@@ -7,7 +7,7 @@
 #include <numeric>
 #include <random>
 
-#include "repair/winding_number.h"
+#include <shadetool/repair/winding_number.h>
 #include "repair_test_meshes.h"
 
 using namespace shadetool;

@@ -9,8 +9,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "core/mesh.h"
-#include "io/mesh_io.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/mesh_io.h>
 #include "stress/stress_util.h"
 
 using namespace shadetool;

@@ -18,12 +18,12 @@
 
 #include <catch2/catch.hpp>
 
-#include "core/error.h"
-#include "core/mesh.h"
-#include "io/mesh_io.h"
-#include "lighting/bake_lighting.h"
-#include "lighting/read_scene.h"
-#include "lighting/shade_points.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/mesh_io.h>
+#include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/lighting/read_scene.h>
+#include <shadetool/lighting/shade_points.h>
 #include "stress/stress_util.h"
 #include "support/run_process.h"
 

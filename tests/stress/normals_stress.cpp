@@ -15,10 +15,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "core/mesh.h"
-#include "io/mesh_io.h"
-#include "normals/face_normals.h"
-#include "normals/vertex_normals.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/mesh_io.h>
+#include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/vertex_normals.h>
 #include "stress/stress_util.h"
 #include "support/analytic_meshes.h"
 

@@ -25,8 +25,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/mesh.h"
-#include "io/mesh_io.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/mesh_io.h>
 #include "stress/stress_util.h"
 #include "support/run_process.h"
 

@@ -10,8 +10,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "core/mesh.h"
-#include "repair/repair_mesh.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/repair/repair_mesh.h>
 #include "stress/stress_util.h"
 #include "support/analytic_meshes.h"
 

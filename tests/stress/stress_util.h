@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh.h"
-#include "core/vec3.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/core/vec3.h>
 
 namespace shadetool::stress {
 

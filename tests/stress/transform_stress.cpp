@@ -6,14 +6,14 @@
 
 #include <catch2/catch.hpp>
 
-#include "core/affine.h"
-#include "core/error.h"
-#include "core/mesh.h"
-#include "normals/face_normals.h"
+#include <shadetool/core/affine.h>
+#include <shadetool/core/error.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/normals/face_normals.h>
 #include "stress/stress_util.h"
 #include "support/analytic_meshes.h"
-#include "transform/affine_maps.h"
-#include "transform/transform_mesh.h"
+#include <shadetool/transform/affine_maps.h>
+#include <shadetool/transform/transform_mesh.h>
 
 using namespace shadetool;
 using namespace shadetool::stress;

@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/mesh.h"
-#include "core/vec3.h"
+#include <shadetool/core/mesh.h>
+#include <shadetool/core/vec3.h>
 
 namespace shadetool::testing {
 

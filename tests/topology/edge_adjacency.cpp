@@ -10,7 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "repair/repair_test_meshes.h"
-#include "topology/edge_adjacency.h"
+#include <shadetool/topology/edge_adjacency.h>
 
 using namespace shadetool;
 using namespace shadetool::testing;

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/error.h"
-#include "transform/affine_maps.h"
-#include "transform/classify_affine.h"
+#include <shadetool/core/error.h>
+#include <shadetool/transform/affine_maps.h>
+#include <shadetool/transform/classify_affine.h>
 
 using namespace shadetool;
 

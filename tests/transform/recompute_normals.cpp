@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "support/analytic_meshes.h"
-#include "transform/affine_maps.h"
-#include "transform/recompute_normals.h"
-#include "transform/transform_mesh.h"
+#include <shadetool/transform/affine_maps.h>
+#include <shadetool/transform/recompute_normals.h>
+#include <shadetool/transform/transform_mesh.h>
 
 using namespace shadetool;
 

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/error.h"
-#include "transform/reverse_winding.h"
+#include <shadetool/core/error.h>
+#include <shadetool/transform/reverse_winding.h>
 
 using namespace shadetool;
 

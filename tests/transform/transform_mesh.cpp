@@ -7,10 +7,10 @@
 #include <cstring>
 #include <vector>
 
-#include "core/error.h"
+#include <shadetool/core/error.h>
 #include "support/analytic_meshes.h"
-#include "transform/affine_maps.h"
-#include "transform/transform_mesh.h"
+#include <shadetool/transform/affine_maps.h>
+#include <shadetool/transform/transform_mesh.h>
 
 using namespace shadetool;
 using shadetool::testing::AnalyticMesh;

@@ -7,10 +7,10 @@
 #include <limits>
 #include <vector>
 
-#include "core/error.h"
-#include "transform/affine_maps.h"
-#include "transform/classify_affine.h"
-#include "transform/transform_normals.h"
+#include <shadetool/core/error.h>
+#include <shadetool/transform/affine_maps.h>
+#include <shadetool/transform/classify_affine.h>
+#include <shadetool/transform/transform_normals.h>
 
 using namespace shadetool;
 
