@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "command_registry.h"
+#include <shadetool/core/math_constants.h>
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
@@ -16,7 +17,6 @@
 namespace shadetool_cli {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 struct NormalsOptions {
   std::string weight = "angle";
@@ -66,7 +66,7 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
                    : opt.crease_degrees >= 0 ? shadetool::NormalKind::Corner
                                              : shadetool::NormalKind::Vertex;
     request.weighting = parse_weight(opt.weight);
-    request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * kPi / 180.0 : 0.0;
+    request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * shadetool::kPi / 180.0 : 0.0;
     request.precision = opt.precision == "float" ? shadetool::Precision::Float : shadetool::Precision::Double;
     request.recompute = opt.recompute;
     return run_mesh_command(

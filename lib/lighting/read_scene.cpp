@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <shadetool/core/error.h>
-#include <shadetool/lighting/affine_inverse.h>
+#include <shadetool/core/affine.h>
 #include <shadetool/lighting/look_at.h>
 
 namespace shadetool {

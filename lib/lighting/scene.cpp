@@ -1,7 +1,7 @@
 // scene.cpp: see scene.h.
 #include <shadetool/lighting/scene.h>
 
-#include <shadetool/lighting/affine_inverse.h>
+#include <shadetool/core/affine.h>
 
 namespace shadetool {
 

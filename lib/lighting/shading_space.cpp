@@ -1,11 +1,12 @@
 // shading_space.cpp: see shading_space.h.
+#include <shadetool/core/math_constants.h>
 #include <shadetool/lighting/shading_space.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include <shadetool/lighting/affine_inverse.h>
+#include <shadetool/core/affine.h>
 
 namespace shadetool {
 
@@ -23,7 +24,7 @@ double cos_degrees(double degrees) {
   if (degrees == 0) return 1;
   if (degrees == 90) return 0;
   if (degrees == 180) return -1;
-  return std::cos(degrees * (3.14159265358979323846 / 180.0));
+  return std::cos(degrees * kRadiansPerDegree);
 }
 
 SpaceMetric metric_of(const Mat3d& B) {

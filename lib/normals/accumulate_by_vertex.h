@@ -46,12 +46,16 @@
 #include <tbb/task_arena.h>
 
 #include <shadetool/core/mesh.h>
-#include <shadetool/core/usable_threads.h>
+#include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/core/vec3.h>
 #include <shadetool/normals/face_geometry.h>  // SHADETOOL_NORMALS_INLINE
-#include <shadetool/normals/parallel.h>
+#include <shadetool/core/engine/parallel.h>
 
 namespace shadetool::normals_detail {
+
+using engine::kSerialBelow;
+using engine::parallel_blocks;
+using engine::parallel_ranges;
 
 // The chunks and the shared rows (passes 1 and 2), computed before the sums so that a caller can
 // overlap them with allocating and zeroing `sum` (tbb::parallel_invoke). K == 0: serial loop.

@@ -34,6 +34,7 @@
 #include <limits>
 #include <type_traits>
 
+#include <shadetool/core/math_constants.h>
 #include <shadetool/core/mesh.h>
 #include <shadetool/normals/face_geometry.h>
 #include <shadetool/normals/interior_angle.h>
@@ -42,8 +43,6 @@
 
 namespace shadetool::normals_detail {
 
-constexpr double kPi = 3.14159265358979323846264338327950;
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Calls sink(corner, vertex, contribution) for every corner of the triangles in [f_begin, f_end)
 // whose area vector is valid. Requires mesh.all_triangles() (corner = 3 f + k).

@@ -26,13 +26,14 @@
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/interior_angle.h>
 #include <shadetool/normals/normalise_sums.h>
-#include <shadetool/normals/parallel.h>
+#include <shadetool/core/engine/parallel.h>
 #include <shadetool/normals/vertex_fallback.h>
 
 namespace shadetool {
 namespace {
 
 using namespace normals_detail;
+using namespace engine;
 
 // Corners of each vertex: corners[offset[v] .. offset[v+1]), ascending.
 struct VertexCorners {

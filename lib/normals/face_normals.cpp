@@ -10,7 +10,7 @@
 #include <shadetool/normals/face_normals.h>
 
 #include <shadetool/normals/face_geometry.h>
-#include <shadetool/normals/parallel.h>
+#include <shadetool/core/engine/parallel.h>
 
 namespace shadetool {
 namespace {
@@ -47,7 +47,7 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
 std::vector<double> face_normals(const Mesh& mesh, Precision precision) {
   const std::size_t F = mesh.num_faces();
   std::vector<double> out(3 * F);
-  normals_detail::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
+  engine::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
     if (precision == Precision::Float) face_normals_range<float>(mesh, b, e, out.data());
     else face_normals_range<double>(mesh, b, e, out.data());
   });

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <shadetool/core/math_constants.h>
 #include <shadetool/normals/face_geometry.h>  // SHADETOOL_NORMALS_INLINE
 
 namespace shadetool::normals_detail {
@@ -34,7 +35,6 @@ struct AtanTable {
                                         0.7188299996216245, 0.7853981633974483};
 };
 
-constexpr double kAtanPi = 3.141592653589793, kAtanHalfPi = 1.5707963267948966;
 
 // 1 - z/3 + z^2/5 - z^3/7 + z^4/9 - z^5/11 + z^6/13 by Estrin's scheme.
 SHADETOOL_NORMALS_INLINE double atan_series(double z) {
@@ -55,8 +55,8 @@ SHADETOOL_NORMALS_INLINE double interior_angle(double sin_part, double cos_part)
   const double ck = k * 0.125;
   const double x = (t - ck) / (1.0 + t * ck);  // 1 + t c_k >= 1
   double r = AtanTable::atan_k8[k] + x * atan_series(x * x);
-  if (s > c) r = kAtanHalfPi - r;
-  if (cos_part < 0.0) r = kAtanPi - r;
+  if (s > c) r = kHalfPi - r;
+  if (cos_part < 0.0) r = kPi - r;
   return r;
 }
 

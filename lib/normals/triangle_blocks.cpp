@@ -1,4 +1,5 @@
 // triangle_blocks.cpp: see triangle_blocks.h (methods, error bound, why the clones agree bitwise).
+#include <shadetool/core/math_constants.h>
 #include <shadetool/normals/triangle_blocks.h>
 
 #include <cmath>
@@ -18,7 +19,6 @@ namespace shadetool::normals_detail {
 
 namespace {
 
-constexpr double kPi = 3.141592653589793, kHalfPi = 1.5707963267948966, kQuarterPi = 0.7853981633974483;
 constexpr double kEighthPi = 0.39269908169872414;
 constexpr double kTanPi8 = 0.41421356237309503;     // tan(pi/8), the middle centre
 constexpr double kTanPi16 = 0.198912367379658;      // tan(pi/16), first interval's end

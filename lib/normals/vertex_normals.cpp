@@ -21,18 +21,19 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/engine/bulk_reserve.h>
 #include <shadetool/core/error.h>
 #include <shadetool/normals/accumulate_by_vertex.h>
 #include <shadetool/normals/corner_contributions.h>
 #include <shadetool/normals/normalise_sums.h>
-#include <shadetool/normals/parallel.h>
+#include <shadetool/core/engine/parallel.h>
 #include <shadetool/normals/vertex_fallback.h>
 
 namespace shadetool {
 namespace {
 
 using namespace normals_detail;
+using namespace engine;
 
 // plan: the caller's cached chunk plan, or null (then made here, beside zeroing the sums).
 template <class T, Weighting W>
@@ -49,7 +50,7 @@ void compute(const Mesh& mesh, const ChunkPlan* cached, Precision precision, Ver
   std::vector<float> float_sum;
   ChunkPlan own_plan;
   const bool big = mesh.num_faces() >= kSerialBelow;
-  // A fresh output array in huge pages (core/bulk_reserve.h): a one-shot caller (the CLI, repair)
+  // A fresh output array in huge pages (core/engine/bulk_reserve.h): a one-shot caller (the CLI, repair)
   // otherwise pays a page fault per 4 KiB of it (bench/repair: 16.1 -> 12.1 ms for the angle
   // normals of 1M triangles). No effect when `result` already has the capacity.
   reserve_bulk(result.normals, 3 * V);

@@ -1,5 +1,6 @@
 // consistent_winding.cpp: winding by union-find with parity, canonical depth-first search for
 // non-orientable components (see the header).
+#include <shadetool/core/engine/parallel.h>
 #include <shadetool/repair/consistent_winding.h>
 
 #include <algorithm>
@@ -8,8 +9,8 @@
 #include <tbb/parallel_for.h>
 
 #include <shadetool/core/error.h>
-#include <shadetool/core/bulk_reserve.h>
-#include <shadetool/core/usable_threads.h>
+#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/engine/usable_threads.h>
 
 namespace shadetool {
 
@@ -218,7 +219,7 @@ ConsistentWinding consistent_winding(const Mesh& mesh, const EdgeAdjacency& adj,
   // defers the rest, which one thread unites afterwards, in part order. The sets, their roots (the
   // lowest face of each: union by lower index) and, on an orientable component, every parity are
   // the same in any order of union; so is which components have a conflict.
-  const std::size_t parts = F >= (std::size_t(1) << 15) && usable_threads() >= 2 ? 2 : 1;
+  const std::size_t parts = F >= engine::kSerialBelow && usable_threads() >= 2 ? 2 : 1;
   std::vector<std::vector<std::uint32_t>> deferred(parts), conflicts(parts);
   auto unite_part = [&](std::size_t p) {
     const std::uint32_t lo = std::uint32_t(F * p / parts), hi = std::uint32_t(F * (p + 1) / parts);

@@ -1,4 +1,5 @@
 // reverse_faces.cpp: winding reversal keeping the first corner (see the header).
+#include <shadetool/core/engine/parallel.h>
 #include <shadetool/repair/reverse_faces.h>
 
 #include <algorithm>
@@ -34,7 +35,7 @@ std::size_t reverse_faces(Mesh& mesh, const std::vector<std::uint8_t>& reverse) 
       }
       return n;
     };
-    if (F < (std::size_t(1) << 15)) return swap_range(0, F);
+    if (F < engine::kSerialBelow) return swap_range(0, F);
     return tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, F, std::size_t(1) << 14), std::size_t(0),
         [&](const tbb::blocked_range<std::size_t>& r, std::size_t n) { return n + swap_range(r.begin(), r.end()); },

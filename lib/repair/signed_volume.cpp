@@ -1,5 +1,6 @@
 // signed_volume.cpp: component volumes from a vertex of each component, in one pass over the
 // faces that can also classify degenerate faces (see the header).
+#include <shadetool/core/engine/parallel.h>
 #include <shadetool/repair/signed_volume.h>
 
 #include <cmath>
@@ -7,7 +8,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/engine/bulk_reserve.h>
 
 namespace shadetool {
 
@@ -108,7 +109,7 @@ ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWind
   // Two fixed halves of the faces, in parallel, when the mesh is large and has few components
   // (each half keeps K sums); the halves are added in order, so the result does not depend on
   // the number of threads (only on F and K).
-  const std::size_t parts = F >= (std::size_t(1) << 15) && K <= 4096 ? 2 : 1;
+  const std::size_t parts = F >= engine::kSerialBelow && K <= 4096 ? 2 : 1;
   std::vector<Sums> part(parts);
   if (parts == 1) sum_part(0, F, part[0]);
   else tbb::parallel_for(std::size_t(0), parts, [&](std::size_t i) { sum_part(F * i / parts, F * (i + 1) / parts, part[i]); });

@@ -1,4 +1,5 @@
 // edge_adjacency.cpp: half-edges paired by a counting sort on their lower vertex (see the header).
+#include <shadetool/core/engine/parallel.h>
 #include <shadetool/topology/edge_adjacency.h>
 
 #include <algorithm>
@@ -11,14 +12,14 @@
 #include <tbb/parallel_for.h>
 
 #include <shadetool/core/error.h>
-#include <shadetool/core/bulk_reserve.h>
-#include <shadetool/core/usable_threads.h>
+#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/engine/usable_threads.h>
 
 namespace shadetool {
 
 namespace {
 
-constexpr std::size_t kParallelFaces = 1 << 15;  // below this, a second thread costs more than it saves
+constexpr std::size_t kParallelFaces = engine::kSerialBelow;
 
 // Whether a face of n corners has fewer than 3 corners or repeats a vertex index.
 bool unwound(const std::uint32_t* v, std::uint32_t n) {
@@ -101,7 +102,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   constexpr std::uint32_t kUnpaired = EdgeAdjacency::kUnpaired;
 
   EdgeAdjacency adj;
-  // Large fresh arrays: huge pages first (core/bulk_reserve.h); page faults are much of the cost.
+  // Large fresh arrays: huge pages first (core/engine/bulk_reserve.h); page faults are much of the cost.
   adj.corner_mate.resize(C);  // every entry is written below
   std::uint32_t* mate = adj.corner_mate.data();
 

@@ -1,4 +1,5 @@
 // affine_maps.cpp: see affine_maps.h.
+#include <shadetool/core/math_constants.h>
 #include <shadetool/transform/affine_maps.h>
 
 #include <cmath>
@@ -10,7 +11,6 @@ namespace shadetool {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 void require_finite(const Vec3d& v, const std::string& source, const char* what) {
   if (!is_finite(v)) fail(source, 0, std::string(what) + " must be finite numbers");

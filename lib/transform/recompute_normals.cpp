@@ -1,4 +1,5 @@
 // recompute_normals.cpp: see recompute_normals.h.
+#include <shadetool/core/math_constants.h>
 #include <shadetool/transform/recompute_normals.h>
 
 #include <cmath>
@@ -13,7 +14,6 @@ namespace shadetool {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Interior angle at corner c of face f (unit normal n), in [0, 2 pi); 0 for a zero-length edge.
 double corner_angle(const Mesh& mesh, std::size_t f, std::size_t c, const Vec3d& n) {

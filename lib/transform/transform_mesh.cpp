@@ -7,7 +7,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
-#include <shadetool/transform/parallel_ranges.h>
+#include <shadetool/core/engine/parallel.h>
 #include <shadetool/transform/recompute_normals.h>
 #include <shadetool/transform/reverse_winding.h>
 #include <shadetool/transform/transform_normals.h>
@@ -22,7 +22,7 @@ namespace {
 std::size_t transform_positions(Mesh& mesh, const Affine3d& M, bool translate_only) {
   double* data = mesh.positions.data();
   const Affine3d map = M;  // by value: the loop reads locals, not through a reference
-  return transform_detail::count_over_ranges(mesh.num_vertices(), [&](std::size_t begin, std::size_t end) {
+  return engine::count_over_ranges(mesh.num_vertices(), [&](std::size_t begin, std::size_t end) {
     double* p = data + 3 * begin;
     if (translate_only) {
       for (std::size_t v = begin; v < end; ++v, p += 3) {

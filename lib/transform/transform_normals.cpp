@@ -5,7 +5,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/mesh.h>
-#include <shadetool/transform/parallel_ranges.h>
+#include <shadetool/core/engine/parallel.h>
 
 namespace shadetool {
 
@@ -70,7 +70,7 @@ std::size_t transform_normals(std::vector<double>& normals, const NormalMap& map
   double* data = normals.data();
   const Mat3d B = map.B;
   const bool normalize = map.normalize;
-  return transform_detail::count_over_ranges(normals.size() / 3, [&](std::size_t begin, std::size_t end) {
+  return engine::count_over_ranges(normals.size() / 3, [&](std::size_t begin, std::size_t end) {
     std::size_t left = 0;
     for (std::size_t i = begin; i < end; ++i) {
       double* p = data + 3 * i;

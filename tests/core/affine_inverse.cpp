@@ -1,7 +1,7 @@
 // invert_affine and is_identity: an inverse that round-trips points, refusal of singular maps.
 #include <catch2/catch.hpp>
 
-#include <shadetool/lighting/affine_inverse.h>
+#include <shadetool/core/affine.h>
 
 using namespace shadetool;
 
