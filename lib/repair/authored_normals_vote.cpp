@@ -6,6 +6,7 @@
 #include <limits>
 
 #include <shadetool/core/vec3.h>
+#include <shadetool/geometry/face_area_vector.h>
 
 namespace shadetool {
 
@@ -25,16 +26,6 @@ Vec3d input_normal(const Mesh& mesh, std::size_t f, std::uint32_t c) {
   return normalized_or(n, Vec3d{0, 0, 0});
 }
 
-// Area vector of face f (Newell, any number of corners), as stored (input winding).
-Vec3d area_vector(const Mesh& mesh, std::size_t f) {
-  Vec3d N{0, 0, 0};
-  const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-  const Vec3d o = mesh.position(mesh.corner_vertex[b]);  // relative to the first corner: no cancellation far from 0
-  for (std::uint32_t c = b + 1; c + 1 < e; ++c)
-    N += cross(mesh.position(mesh.corner_vertex[c]) - o, mesh.position(mesh.corner_vertex[c + 1]) - o);
-  return 0.5 * N;
-}
-
 }  // namespace
 
 bool has_authored_normals(const Mesh& mesh) {
@@ -48,7 +39,7 @@ AuthoredNormalsVote authored_normals_vote(const Mesh& mesh, const ConsistentWind
   for (std::uint32_t f : faces) {
     Vec3d m{0, 0, 0};
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) m += input_normal(mesh, f, c);
-    double e = dot(area_vector(mesh, f), m);
+    double e = dot(face_area_vector(mesh, f), m);
     if (!std::isfinite(e)) continue;
     if (winding.face_reverse[f]) e = -e;
     v.vote += e;
@@ -64,7 +55,7 @@ bool thin_closed_component(const Mesh& mesh, const std::vector<std::uint32_t>& f
   constexpr double kInf = std::numeric_limits<double>::infinity();
   Vec3d lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
   for (std::uint32_t f : faces) {
-    area += length(area_vector(mesh, f));
+    area += 0.5 * length(face_area_vector(mesh, f));
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
       const Vec3d p = mesh.position(mesh.corner_vertex[c]);
       for (int i = 0; i < 3; ++i) {

@@ -11,7 +11,7 @@
 //          winding  face_reverse #F (the consistent winding)
 //          faces    the component's faces
 // Output:  AuthoredNormalsVote with
-//   vote       sum over faces of N_f . m_f, N_f the face's area vector as consistently wound,
+//   vote       sum over faces of N_f . m_f, N_f the face's area vector as consistently wound (geometry/face_area_vector.h),
 //              m_f the sum of its corners' unit input normals (non-finite or zero ones skipped)
 //   magnitude  sum of |N_f . m_f|
 //   decided    magnitude > 0 and |vote| >= magnitude / 3 (faces agreeing outweigh the others 2:1)
