@@ -15,9 +15,9 @@
 // 1e-30 or 1e30 over- or underflow float (range 1.2e-38 .. 3.4e38), so for T = float they are
 // multiplied by one power of two per mesh, `scale` (exact; the same for every face, so relative
 // weights and the unit vertex normal are unchanged; contribution_scale below chooses it).
-// Degenerate input: a face that geometry/degenerate_face.h calls degenerate (fewer than 3 corners,
-// repeated index, NaN/Inf, zero area to 64 eps) contributes nothing at all (the sink is not
-// called), and is counted; a Max corner whose edge-length product is zero or underflows
+// Degenerate input: a face without area by geometry/degenerate_face.h (face_area_kind: fewer than
+// 3 corners, NaN/Inf, zero area to 64 eps; a triangle with a repeated index has zero area)
+// contributes nothing at all (the sink is not called), and is counted; a Max corner whose edge-length product is zero or underflows
 // contributes nothing. Which path applies the rule how: see "Degenerate faces" below.
 #pragma once
 
@@ -59,7 +59,7 @@ namespace shadetool::normals_detail {
 //            squares test, the same expression on the same computed values (same bits); every
 //            other face goes to triangle_scalar.
 //   triangle_scalar, polygon_contributions  call the rule (triangle_degenerate_kind,
-//            face_degenerate_kind) for the face.
+//            face_area_kind) for the face.
 //   Area triangles  compute N0 = (p1 - p0) x (p2 - p0) (see below) and take a face as valid when
 //            N0 . N0 > (96 eps)^2 (|e0|^2 |e2|^2) with |e0|^2 |e2|^2 in [1e-250, 1e250] and
 //            N0 . N0 <= 1e250, else ask the rule. That test implies the rule's verdict None:
@@ -72,8 +72,9 @@ namespace shadetool::normals_detail {
 
 // Software prefetch, kPrefetchFaces faces ahead, of the positions a triangle loop will read and
 // (when the caller passes its per-vertex sums, `rows`, 3 values per vertex) of the sums it will
-// add to. Measured on the 1M-triangle irregular sphere: the area-weighted loop 6.5 -> 4.5 ms
-// (the hardware prefetchers do not follow the corner indices). Only a hint: no effect on results.
+// add to: the hardware prefetchers do not follow the corner indices (figures:
+// bench/normals/results/notes.md, "Timing notes moved from the source"). Only a hint: no effect
+// on results.
 constexpr std::size_t kPrefetchFaces = 64;
 
 // (96 eps)^2: the area kernel's sufficient test for a valid face (see "Degenerate faces" above).
@@ -243,10 +244,9 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
-  std::vector<std::uint32_t> scratch;
   for (std::size_t f = f_begin; f < f_end; ++f) {
     const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1], n_corners = end - begin;
-    if (face_degenerate_kind(mesh, f, scratch) != DegenerateKind::None) { ++degenerate; continue; }
+    if (face_area_kind(mesh, f) != DegenerateKind::None) { ++degenerate; continue; }
     Vec3d N;
     if (n_corners == 3) {
       const Vec3d p0 = load_position(P, cv[begin]), p1 = load_position(P, cv[begin + 1]), p2 = load_position(P, cv[begin + 2]);

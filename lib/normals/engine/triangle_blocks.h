@@ -4,7 +4,7 @@
 //
 // Vectorisation: no table, no branch, every step a lane-wise select, so that GCC vectorises the
 // loops at -O3 with the default x86-64 baseline (SSE2, 2 lanes) and, on processors that have them,
-// AVX2 (4 lanes) and AVX-512 (8 lanes, 32 registers: about twice as fast as AVX2 here, measured);
+// AVX2 (4 lanes) and AVX-512 (8 lanes, 32 registers: fewer spills than AVX2; notes.md in bench/normals/results);
 // GCC target_clones, one chosen at load time. Same bits from every clone: lane-wise IEEE
 // operations in the same order, and the file is built without FMA contraction (CMakeLists.txt),
 // so results depend neither on the processor's vector width nor on the thread count.
