@@ -70,6 +70,9 @@ SHADETOOL_INLINE bool triangle_kind_by_squares(const Vec3d& p0, const Vec3d& p1,
 
 // Kind of triangle (v0, v1, v2) from its positions only: None, ZeroArea or NonFinite (a repeated
 // index gives a zero edge and so ZeroArea here; face_degenerate_kind names it RepeatedIndex).
+#if defined(__GNUC__)
+__attribute__((cold))
+#endif
 DegenerateKind triangle_degenerate_kind(const double* positions, std::uint32_t v0, std::uint32_t v1, std::uint32_t v2);
 
 // Whether triangle (v0, v1, v2), whose TriangleAreaVector t the caller has computed, is degenerate
