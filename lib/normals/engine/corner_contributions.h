@@ -53,7 +53,7 @@ namespace shadetool::normals_detail {
 //            areas whatever the triangle's shape: no need to pay for choosing edges.
 //   Uniform, Angle  normalise N per face, and Max divides it by |a|^2 |b|^2: a sliver's error
 //            would be amplified by its aspect ratio, so these take the two shortest edges
-//            (face_geometry.h, triangle_area_vector), whose relative error is ~ 2 eps.
+//            (geometry/face_area_vector.h, triangle_area_vector), whose relative error is ~ 2 eps.
 // Degenerate faces (geometry/degenerate_face.h, the one rule), per path:
 //   vector pass (triangle_blocks.cpp)  takes a face only when la, lb (squared lengths of the two
 //            shortest edges) lie in (1e-125, 1e125) and N . N > tol^2 (la lb): the rule's own
