@@ -33,7 +33,7 @@
 #include <tbb/task_arena.h>
 
 #include <shadetool/info/edge_topology.h>
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/io/mesh_io.h>
 #include <shadetool/repair/component_boundaries.h>
 #include <shadetool/repair/consistent_winding.h>
@@ -282,7 +282,7 @@ int main(int argc, char** argv) {
   row("floor: stream the 3M corner indices (12 MB)", f_stream);
   row("floor: gather one coordinate per corner (3M position reads)", f_gather);
   row("floor: fill a fresh 3M x uint32 array (one corner-sized output), 4 KiB pages", f_fill);
-  row("floor: the same in huge pages (core/engine/bulk_reserve.h)", f_fill_huge);
+  row("floor: the same in huge pages (core/bulk_reserve.h)", f_fill_huge);
   row("floor: counting sort of the 3M half-edges by lower vertex (no matching)", f_counting_sort);
   row("floor: fill a fresh 1M x uint8 array (one face-sized flag array)", f_faces);
   return summary();

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include <shadetool/core/error.h>
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/io/number_text.h>
 #include <shadetool/io/split_face_colors.h>
 #include <shadetool/io/text_parse.h>

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <shadetool/core/error.h>
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/io/number_text.h>
 #include <shadetool/io/split_corner_normals.h>
 #include <shadetool/io/text_parse.h>

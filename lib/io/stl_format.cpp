@@ -9,7 +9,7 @@
 #include <vector>
 
 #include <shadetool/core/error.h>
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/io/number_text.h>
 #include <shadetool/io/text_parse.h>
 

@@ -10,7 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include <shadetool/core/error.h>
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/usable_threads.h>
 
 namespace shadetool {

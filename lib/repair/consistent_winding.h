@@ -51,7 +51,7 @@
 #include <limits>
 #include <vector>
 
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/mesh.h>
 #include <shadetool/topology/edge_adjacency.h>
 
@@ -60,7 +60,7 @@ namespace shadetool {
 struct ConsistentWinding {
   static constexpr std::uint32_t kNoComponent = std::numeric_limits<std::uint32_t>::max();
 
-  BulkVector<std::uint32_t> face_component;  // std::vector, not zeroed on resize (core/engine/bulk_reserve.h)
+  BulkVector<std::uint32_t> face_component;  // std::vector, not zeroed on resize (core/bulk_reserve.h)
   std::vector<std::uint8_t> face_reverse;
   std::size_t num_components = 0;
   std::vector<std::uint32_t> component_seed;

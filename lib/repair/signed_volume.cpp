@@ -8,7 +8,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 
 namespace shadetool {
 

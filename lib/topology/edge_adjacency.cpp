@@ -12,7 +12,7 @@
 #include <tbb/parallel_for.h>
 
 #include <shadetool/core/error.h>
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/usable_threads.h>
 
 namespace shadetool {
@@ -102,7 +102,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   constexpr std::uint32_t kUnpaired = EdgeAdjacency::kUnpaired;
 
   EdgeAdjacency adj;
-  // Large fresh arrays: huge pages first (core/engine/bulk_reserve.h); page faults are much of the cost.
+  // Large fresh arrays: huge pages first (core/bulk_reserve.h); page faults are much of the cost.
   adj.corner_mate.resize(C);  // every entry is written below
   std::uint32_t* mate = adj.corner_mate.data();
 

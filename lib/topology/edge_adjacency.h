@@ -37,7 +37,7 @@
 // and scatter run on parts of the faces, each part with its own counts (a bucket holds part 0's
 // half-edges, then part 1's, each in corner order: the same buckets for any number of parts), and
 // the matching on blocks of vertices; the output depends on nothing but the faces' vertex
-// indices. Large arrays are allocated unzeroed in huge pages (core/engine/bulk_reserve.h BulkVector).
+// indices. Large arrays are allocated unzeroed in huge pages (core/bulk_reserve.h BulkVector).
 // Measured (bench/repair, 1M triangles): 20 ms -> 13 ms on 2 threads, 18 ms on 1.
 // Throws Error if a face refers to a vertex index >= #V, or with 2^31 - 1 corners or more
 // (a corner and a flag share 32 bits).
@@ -49,7 +49,7 @@
 #include <utility>
 #include <vector>
 
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/mesh.h>
 
 namespace shadetool {
@@ -62,7 +62,7 @@ struct EdgeAdjacencyOptions {
 struct EdgeAdjacency {
   static constexpr std::uint32_t kUnpaired = std::numeric_limits<std::uint32_t>::max();
 
-  BulkVector<std::uint32_t> corner_mate;  // std::vector, not zeroed on resize (core/engine/bulk_reserve.h)
+  BulkVector<std::uint32_t> corner_mate;  // std::vector, not zeroed on resize (core/bulk_reserve.h)
   std::vector<std::uint32_t> odd_edge_start{0};
   std::vector<std::uint32_t> odd_edge_corner;
   std::size_t num_edges = 0;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <shadetool/core/error.h>
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/io/text_parse.h>
 
 namespace shadetool::io::ply {

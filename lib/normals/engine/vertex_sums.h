@@ -8,7 +8,7 @@
 //   place (no second array to allocate, zero and copy); for float, a float accumulator padded to 4
 //   per vertex (16 bytes: one SSE addition per corner, accumulate_by_vertex.h add_to_row). An
 //   output array that already has the capacity (a caller reusing its result) is reused; a fresh
-//   one is reserved in huge pages (core/engine/bulk_reserve.h: a one-shot caller otherwise pays a
+//   one is reserved in huge pages (core/bulk_reserve.h: a one-shot caller otherwise pays a
 //   page fault per 4 KiB of it).
 //   Threads: with a cached plan (VertexNormalsPlan) the zeroing and the sum are split over the
 //   threads; without one, the angle and Max kernels plan the chunks beside the serial zeroing
@@ -27,7 +27,7 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/core/mesh.h>

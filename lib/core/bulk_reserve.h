@@ -1,4 +1,6 @@
-// bulk_reserve.h: capacity for a large array that a reader is about to fill in one go.
+// bulk_reserve.h: memory plumbing for large arrays: capacity for an array a reader is about to fill in
+// one go, and BulkVector (unzeroed, huge-page) arrays, which public result types (EdgeAdjacency,
+// ConsistentWinding) hold, so this header is public.
 //
 // Inputs:  v  a vector (its contents are kept), n  the capacity wanted
 // Reserves n elements and, for blocks of 4 MiB or more on Linux, asks the kernel to back them
