@@ -12,7 +12,6 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
-#include <shadetool/io/atomic_write.h>
 #include <shadetool/repair/repair_mesh.h>
 #include "usage_error.h"
 
@@ -148,10 +147,11 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
       if (!dir.empty() && !std::filesystem::is_directory(dir))
         throw shadetool::Error(shadetool::located(opt.report, 0, "cannot write the report: no such directory"));
     }
-    RepairReport report;
-    const int code = run_mesh_command(
+    if (!opt.report.empty()) io.other_outputs = {{"--report", opt.report}};
+    // The report is committed together with the mesh (driver.h: both or neither).
+    return run_mesh_command(
         "repair", io,
-        [&report](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_finite_positions(mesh, input);
           shadetool::require_faces(mesh, input);
           shadetool::RepairOptions o;
@@ -161,17 +161,14 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
           const RepairReport rep = shadetool::repair_mesh(mesh, o);
           add_notes(rep, opt, r);
           add_stats(rep, r);
-          if (!opt.report.empty()) report = rep;  // --report means one input: no other thread writes it
+          if (!opt.report.empty()) {
+            nlohmann::json j{{"input", input}};
+            if (!io.output.empty()) j["output"] = io.output;
+            j.update(report_json(rep, opt));
+            r.other_files.emplace_back(opt.report, j.dump(2) + "\n");
+          }
         },
         true);
-    // The report is written only after the mesh was: no report for a failed repair.
-    if (code == kExitOk && !opt.report.empty()) {
-      nlohmann::json j{{"input", io.inputs[0]}};
-      if (!io.output.empty()) j["output"] = io.output;
-      j.update(report_json(report, opt));
-      shadetool::io::write_file_atomically(opt.report, j.dump(2) + "\n");
-    }
-    return code;
   };
 });
 

@@ -52,5 +52,36 @@ check "unknown flag exits 2" test $? -eq 2
 "$bin" normals "$tmp/a.obj" --output-dir "$tmp/missing-dir" 2>/dev/null
 check "missing output directory exits 1" test $? -eq 1
 
+# Nothing overwritten (issue 21, items 1-3): every path a command writes differs from every input
+# and from each other, checked before any work (exit 2); files that belong together are
+# committed together.
+mkdir -p "$tmp/ow/a" "$tmp/ow/b" "$tmp/ow/od"
+cp "$src/data/cube.obj" "$tmp/ow/in.obj"; cp "$src/data/cube.obj" "$tmp/ow/a/x.obj"; cp "$src/data/torus.obj" "$tmp/ow/b/x.obj"
+ln -s in.obj "$tmp/ow/link.obj"
+sum_in=$(cksum < "$tmp/ow/in.obj")
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/in.obj" 2> "$tmp/ow/err"
+check "--report equal to the input: exit 2" test $? -eq 2
+check "--report equal to the input: input intact, no output" test "$(cksum < "$tmp/ow/in.obj")" = "$sum_in" -a ! -e "$tmp/ow/out.obj"
+check "--report equal to the input: one line naming it" test "$(wc -l < "$tmp/ow/err")" -eq 1
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/link.obj" 2> /dev/null
+check "--report through a link to the input: exit 2" test $? -eq 2 -a "$(cksum < "$tmp/ow/in.obj")" = "$sum_in"
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/./out.obj" 2> "$tmp/ow/err"
+check "--report equal to -o: exit 2, nothing written" test $? -eq 2 -a ! -e "$tmp/ow/out.obj"
+check "--report equal to -o: says so" grep -q "same file" "$tmp/ow/err"
+"$bin" normals "$tmp/ow/a/x.obj" "$tmp/ow/b/x.obj" --output-dir "$tmp/ow/od" 2> "$tmp/ow/err"
+check "colliding names under --output-dir: exit 2" test $? -eq 2
+check "colliding names: nothing written" test -z "$(ls -A "$tmp/ow/od")"
+check "colliding names: both inputs named" grep -q "a/x.obj and .*b/x.obj" "$tmp/ow/err"
+"$bin" normals "$tmp/ow/a/x.obj" "$tmp/ow/in.obj" --output-dir "$tmp/ow" --format obj 2> /dev/null
+check "an output that is another input: exit 2" test $? -eq 2 -a "$(cksum < "$tmp/ow/in.obj")" = "$sum_in"
+# The report cannot be written (its path is a directory): exit 1 and -o not replaced either.
+echo old > "$tmp/ow/out.obj"; mkdir "$tmp/ow/r.json"
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/r.json" 2> /dev/null
+check "report not writable: exit 1" test $? -eq 1
+check "report not writable: -o untouched" test "$(cat "$tmp/ow/out.obj")" = old
+check "report not writable: no temporaries left" test -z "$(ls "$tmp/ow" | grep tmp-)"
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/r2.json" -q
+check "mesh and report both written" test $? -eq 0 -a -s "$tmp/ow/r2.json" -a "$(head -c 1 "$tmp/ow/out.obj")" = "#"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

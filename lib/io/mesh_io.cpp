@@ -57,12 +57,15 @@ std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, 
   return out;
 }
 
+Format output_format(const std::string& path, Format given) {
+  if (given != Format::Auto) return given;
+  if (path == "-") fail("stdout", 0, "writing stdout needs a format (--format)");
+  return format_from_extension(path);
+}
+
 void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options, WriteInfo* info) {
   WriteOptions o = options;
-  if (o.format == Format::Auto) {
-    if (path == "-") fail("stdout", 0, "writing stdout needs a format (--format)");
-    o.format = format_from_extension(path);
-  }
+  o.format = output_format(path, o.format);
   const std::string bytes = write_mesh_to_memory(mesh, o, info);
   io::write_file_atomically(path, bytes);
 }

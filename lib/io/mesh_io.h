@@ -28,6 +28,9 @@ Format parse_format_name(const std::string& name, const std::string& what);
 // From the extension of `path`; throws Error `path: unknown mesh format 'EXT' ...` otherwise.
 Format format_from_extension(const std::string& path);
 const char* format_extension(Format format);  // "obj", ... (no dot)
+// The format a file at `path` is written in: `given` unless Auto, else from the extension
+// ("-", stdout, has none: Error `stdout: writing stdout needs a format (--format)`).
+Format output_format(const std::string& path, Format given);
 
 struct ReadInfo {
   Format format = Format::Auto;
