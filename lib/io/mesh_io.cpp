@@ -1,12 +1,25 @@
 // mesh_io.cpp: format names and dispatch through the format table (format_table.h), atomic output.
 #include <shadetool/io/mesh_io.h>
 
+#include <algorithm>
+#include <cctype>
+
 #include <shadetool/core/error.h>
 #include <shadetool/io/atomic_write.h>
 #include <shadetool/io/file_bytes.h>
 #include <shadetool/io/format_table.h>
 
 namespace shadetool {
+
+namespace {
+
+std::string format_upper_name(const FormatEntry& format) {
+  std::string s = format.name;
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
 
 Format parse_format_name(const std::string& name, const std::string& what) {
   const FormatEntry* e = find_format(name);
@@ -38,7 +51,10 @@ Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::str
   ri.format = format;
   if (bytes.empty()) fail(name, 0, "file is empty");
   if (format == Format::Auto) fail(name, 0, "no mesh format given");
-  return format_entry(format).read(bytes, name, ri);
+  Mesh mesh = format_entry(format).read(bytes, name, ri);
+  // A file with content that yields no vertex is not an empty mesh but a file we could not read.
+  if (mesh.num_vertices() == 0) fail(name, 0, "no vertex in the file: nothing to read as a mesh");
+  return mesh;
 }
 
 Mesh read_mesh(const std::string& path, Format format, ReadInfo* info) {
@@ -53,7 +69,14 @@ std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, 
   WriteInfo& wi = info ? *info : local;
   if (options.format == Format::Auto) fail("<output>", 0, "no output format given");
   std::string out;
-  format_entry(options.format).write(mesh, options, out, wi);
+  const FormatEntry& format = format_entry(options.format);
+  format.write(mesh, options, out, wi);
+  if (mesh.has_groups() && format.holds.groups == Holds::No) {
+    std::size_t lines = 0;
+    for (const std::string& run : mesh.group_statements) lines += std::size_t(std::count(run.begin(), run.end(), '\n'));
+    wi.notes.push_back("materials and groups not written (" + std::to_string(lines) +
+                       " mtllib/usemtl/g/o/s lines): " + format_upper_name(format) + " holds none");
+  }
   return out;
 }
 

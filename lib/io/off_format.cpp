@@ -11,6 +11,7 @@
 #include <shadetool/core/engine/bulk_reserve.h>
 #include <shadetool/io/number_text.h>
 #include <shadetool/io/split_corner_normals.h>
+#include <shadetool/io/text_encoding.h>
 #include <shadetool/io/text_parse.h>
 
 namespace shadetool::io {
@@ -46,8 +47,11 @@ class Lines {
 
 }  // namespace
 
-Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
+Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
   (void)info;
+  refuse_utf16(file_bytes, name);
+  const LineEndings text(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
+  const std::string_view bytes = text.lf();
   Mesh mesh;
   Lines lines(bytes);
   const char *b, *e;

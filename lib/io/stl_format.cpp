@@ -11,6 +11,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/engine/bulk_reserve.h>
 #include <shadetool/io/number_text.h>
+#include <shadetool/io/text_encoding.h>
 #include <shadetool/io/text_parse.h>
 
 namespace shadetool::io {
@@ -220,11 +221,15 @@ Mesh read_ascii(std::string_view bytes, const std::string& name, ReadInfo& info)
 
 }  // namespace
 
-Mesh read_stl(std::string_view bytes, const std::string& name, ReadInfo& info) {
-  if (bytes.size() >= 84) {
-    const std::uint32_t n = load_le_u32(bytes.data() + 80);
-    if (84 + 50 * std::uint64_t(n) == bytes.size()) return read_binary(bytes, n, info);
+Mesh read_stl(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
+  if (file_bytes.size() >= 84) {
+    const std::uint32_t n = load_le_u32(file_bytes.data() + 80);
+    if (84 + 50 * std::uint64_t(n) == file_bytes.size()) return read_binary(file_bytes, n, info);
   }
+  // Not binary by its size: text, after the checks every text reader makes.
+  refuse_utf16(file_bytes, name);
+  const LineEndings text(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
+  const std::string_view bytes = text.lf();
   // Ascii: starts with "solid" and reads as text. Many binary files also start with "solid" in
   // their 80-byte header, but their counts and floats soon hold control bytes (0x00-0x08...).
   const char* p = bytes.data();

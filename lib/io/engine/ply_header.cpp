@@ -5,12 +5,14 @@
 #include <cstring>
 
 #include <shadetool/core/error.h>
+#include <shadetool/io/text_encoding.h>
 #include <shadetool/io/text_parse.h>
 
 namespace shadetool::io::ply {
 
 PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, ReadInfo& info) {
   (void)info;
+  refuse_utf16(bytes, name);
   const char* p = bytes.data();
   const char* const end = p + bytes.size();
   std::size_t line = 0;
