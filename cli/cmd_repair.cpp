@@ -2,6 +2,7 @@
 // [--remove-degenerate] [--weld EPS]`. Parses, prints one line per step that changed something,
 // writes the JSON report; the repair itself is lib/repair/repair_mesh.h.
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -12,6 +13,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include "number_flags.h"
 #include <shadetool/repair/repair_mesh.h>
 #include "usage_error.h"
 
@@ -137,7 +139,7 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
   sub->add_flag("--remove-degenerate", opt.remove_degenerate,
                 "Remove degenerate faces (zero area, repeated index, < 3 corners); default: report only");
   sub->add_option("--weld", opt.weld, "Merge vertices within distance EPS (>= 0) of each other before orienting")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_number(0.0, std::numeric_limits<double>::infinity()));
   return [] {
     if (!opt.report.empty() && io.inputs.size() != 1) throw UsageError("--report takes one input");
     if (opt.report == "-" && (io.output == "-" || io.json)) throw UsageError("--report - and -o - or --json all write stdout; choose one");

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <limits>
 
 #include <shadetool/core/error.h>
 #include <shadetool/io/atomic_write.h>
@@ -64,13 +66,73 @@ Mesh read_mesh(const std::string& path, Format format, ReadInfo* info) {
   return read_mesh_from_memory(bytes.view(), format, path, info);
 }
 
+namespace {
+
+bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+
+// Counts the rows of a flat N*3 array that are zero or not finite.
+std::size_t unusable_normals(const std::vector<double>& a) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i + 2 < a.size(); i += 3)
+    n += !finite3(&a[i]) || (a[i] == 0 && a[i + 1] == 0 && a[i + 2] == 0);
+  return n;
+}
+
+bool beyond_float(double x) { return std::fabs(x) > double(std::numeric_limits<float>::max()); }
+
+// What no writer writes (see mesh_io.h). Returns true when a float-typed binary output must widen
+// to double to hold the values (binary PLY), after refusing what cannot be written at all.
+bool check_writable(const Mesh& mesh, const FormatEntry& format, const WriteOptions& options, const std::string& name) {
+  std::size_t bad_positions = 0;
+  bool overflow = false;
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    bad_positions += !std::isfinite(mesh.positions[i]);
+    overflow = overflow || beyond_float(mesh.positions[i]);
+  }
+  if (bad_positions > 0)
+    fail(name, 0, std::to_string(bad_positions) + " coordinates are NaN or infinite: no writer writes them (nothing written)");
+  std::size_t bad_normals = 0;
+  if (format.holds.vertex_normals != Holds::No) bad_normals += unusable_normals(mesh.vertex_normals);
+  if (format.holds.corner_normals != Holds::No) bad_normals += unusable_normals(mesh.corner_normals);
+  if (format.holds.face_normals != Holds::No) bad_normals += unusable_normals(mesh.face_normals);
+  if (bad_normals > 0)
+    fail(name, 0, std::to_string(bad_normals) + (bad_normals == 1 ? " normal is" : " normals are") +
+                      " zero, NaN or infinite: no writer writes them (nothing written; `shadetool repair` or "
+                      "`shadetool normals --recompute` replaces them)");
+  if (format.holds.texcoords != Holds::No)
+    for (double t : mesh.texcoords) {
+      if (!std::isfinite(t)) fail(name, 0, "a texture coordinate is NaN or infinite: no writer writes it (nothing written)");
+      overflow = overflow || beyond_float(t);
+    }
+  if (mesh.colors_are_float)
+    for (const auto* a : {&mesh.vertex_colors, &mesh.face_colors})
+      for (float c : *a)
+        if (!std::isfinite(c)) fail(name, 0, "a colour value is NaN or infinite: no writer writes it (nothing written)");
+  if (!overflow || mesh.precision == ValuePrecision::Double || !options.binary || !format.has_binary_form) return false;
+  if (options.format == Format::Stl)
+    fail(name, 0, "a coordinate is beyond the range of float (|x| > 3.4e38), the only number type of binary STL: "
+                  "nothing written (write --ascii, or PLY, which takes double)");
+  return true;
+}
+
+}  // namespace
+
 std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info) {
   WriteInfo local;
   WriteInfo& wi = info ? *info : local;
-  if (options.format == Format::Auto) fail("<output>", 0, "no output format given");
+  const std::string name = options.name.empty() ? std::string("<output>") : options.name;
+  if (options.format == Format::Auto) fail(name, 0, "no output format given");
   std::string out;
   const FormatEntry& format = format_entry(options.format);
-  format.write(mesh, options, out, wi);
+  if (check_writable(mesh, format, options, name)) {
+    // A float-typed binary file cannot hold the values: the wider type (PLY: double properties).
+    Mesh wide = mesh;
+    wide.precision = ValuePrecision::Double;
+    format.write(wide, options, out, wi);
+    wi.notes.push_back("values beyond the range of float: written as double");
+  } else {
+    format.write(mesh, options, out, wi);
+  }
   if (mesh.has_groups() && format.holds.groups == Holds::No) {
     std::size_t lines = 0;
     for (const std::string& run : mesh.group_statements) lines += std::size_t(std::count(run.begin(), run.end(), '\n'));
@@ -89,6 +151,7 @@ Format output_format(const std::string& path, Format given) {
 void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options, WriteInfo* info) {
   WriteOptions o = options;
   o.format = output_format(path, o.format);
+  if (o.name.empty()) o.name = path;
   const std::string bytes = write_mesh_to_memory(mesh, o, info);
   io::write_file_atomically(path, bytes);
 }

@@ -8,6 +8,12 @@
 //                        directory and renamed into place; on any error no output file is left and
 //                        an existing file at `path` is untouched. "-" writes to stdout.
 // Errors throw shadetool::Error with `FILE:LINE: what is wrong` (see core/error.h).
+//
+// What no writer writes (Error `NAME: what`, nothing written): a NaN or infinite coordinate,
+// texture coordinate or float colour; a zero, NaN or infinite normal of a kind the format holds.
+// A finite value beyond the range of the output's number type is written in a wider type where the
+// format has one (binary PLY: double properties, with a note) and refused where it has none
+// (binary STL holds float only: use --ascii or another format).
 #pragma once
 
 #include <cstddef>
@@ -45,6 +51,7 @@ Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::str
 struct WriteOptions {
   Format format = Format::Auto;  // Auto: from the extension of the path
   bool binary = true;            // PLY and STL: binary (default) or ascii
+  std::string name;              // for messages ("" : the path given to write_mesh, or "<output>")
 };
 
 struct WriteInfo {

@@ -102,10 +102,51 @@ std::uint32_t load_le_u32(const char* p) {
          std::uint32_t(std::uint8_t(p[2])) << 16 | std::uint32_t(std::uint8_t(p[3])) << 24;
 }
 
+// Unit normal of a triangle (right-handed winding), or (0,0,0) when its area is zero or not
+// finite. The cross product is scaled by its largest component before the length is taken, so
+// its square neither overflows nor underflows (divisors checked).
+Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  Vec3d n = cross(b - a, c - a);
+  const double m = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
+  if (!(m > 0) || !std::isfinite(m)) return {0, 0, 0};
+  n = n * (1.0 / m);
+  return n * (1.0 / length(n));  // length in [1, sqrt(3)]
+}
+
+// Facet normals as read, checked against the winding: exporters often write (0,0,0) or the
+// opposite normal. A zero normal, or one pointing away from the triangle's own (dot < 0), is
+// replaced by the triangle's unit normal; a zero normal of a triangle with no area becomes +z.
+// NaN/Inf normals stay as read (info reports them; commands refuse them). All zero: none kept.
 void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merger, ReadInfo& info) {
   bool any = false;
   for (double n : normals) any = any || n != 0;
-  if (any) mesh.face_normals = std::move(normals);
+  if (any) {
+    std::size_t zero = 0, against = 0, no_area = 0;
+    for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+      const std::uint32_t c = mesh.face_start[f];
+      const Vec3d g = triangle_normal(mesh.position(mesh.corner_vertex[c]), mesh.position(mesh.corner_vertex[c + 1]),
+                                      mesh.position(mesh.corner_vertex[c + 2]));
+      const Vec3d n = get3(normals, f);
+      const bool is_zero = n.x == 0 && n.y == 0 && n.z == 0;
+      if (is_zero && g.x == 0 && g.y == 0 && g.z == 0) {
+        set3(normals, f, {0, 0, 1});
+        ++no_area;
+      } else if (is_zero) {
+        set3(normals, f, g);
+        ++zero;
+      } else if (dot(n, g) < 0) {
+        set3(normals, f, g);
+        ++against;
+      }
+    }
+    mesh.face_normals = std::move(normals);
+    if (zero + against + no_area > 0)
+      info.notes.push_back("facet normals replaced by the triangles' own: " + std::to_string(zero) + " zero, " +
+                           std::to_string(against) + " against the winding" +
+                           (no_area > 0 ? ", " + std::to_string(no_area) + " zero on a triangle with no area (+z)" : std::string()));
+  } else if (mesh.num_faces() > 0) {
+    info.notes.push_back("facet normals all (0,0,0): not kept (normals are computed from the triangles where needed)");
+  }
   info.merged_vertices = merger.merged();
   if (merger.merged() > 0)
     info.notes.push_back("merged " + std::to_string(merger.merged()) + " corners with identical positions into " +
@@ -260,13 +301,6 @@ void put_float(std::string& out, float f) {
   out.append(b, 4);
 }
 
-// Unit normal of a triangle, or (0,0,0) when its area is zero (or not finite).
-Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  const Vec3d n = cross(b - a, c - a);
-  const double len = length(n);
-  return (len > 0 && std::isfinite(len)) ? n * (1.0 / len) : Vec3d{0, 0, 0};
-}
-
 }  // namespace
 
 void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info) {
@@ -284,6 +318,7 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
   if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to STL");
 
   const bool face_normals = mesh.has_face_normals();
+  std::size_t no_area = 0;
   if (binary) {
     out.reserve(out.size() + 84 + 50 * triangles);
     std::string header = "binary STL written by shadetool";
@@ -301,9 +336,13 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
     for (std::uint32_t c = s + 1; c + 1 < e; ++c) {
       const Vec3d p1 = mesh.position(mesh.corner_vertex[c]);
       const Vec3d p2 = mesh.position(mesh.corner_vertex[c + 1]);
-      const Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(p0, p1, p2);
+      Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(p0, p1, p2);
+      if (!face_normals && n.x == 0 && n.y == 0 && n.z == 0) {  // no area: no normal of its own
+        n = {0, 0, 1};
+        ++no_area;
+      }
       if (binary) {
-        for (const Vec3d* v : {&n, &p0, &p1, &p2}) {
+        for (const Vec3d* v : {static_cast<const Vec3d*>(&n), &p0, &p1, &p2}) {
           put_float(out, float(v->x));
           put_float(out, float(v->y));
           put_float(out, float(v->z));
@@ -330,6 +369,9 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
     }
   }
   if (!binary) out += "endsolid shadetool\n";
+  if (no_area > 0)
+    info.notes.push_back(std::to_string(no_area) + " triangles with no area written with facet normal +z (STL "
+                                                   "has no 'none'; a zero normal is never written)");
 }
 
 }  // namespace shadetool::io

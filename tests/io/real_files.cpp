@@ -3,6 +3,9 @@
 // that exporter writes it (Blender's OBJ with materials and groups, a classic-Mac CR-only OBJ,
 // a Windows CRLF OBJ with a UTF-8 BOM, a UTF-16 text file, OBJ elements other readers skip).
 #include <algorithm>
+#include <array>
+
+#include <shadetool/io/text_parse.h>
 
 #include "io_test_util.h"
 
@@ -168,4 +171,107 @@ TEST_CASE("OBJ elements other readers skip are skipped with one counted note", "
   // Truly malformed numbers still stop.
   CHECK(error_of([] { read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3x\n", Format::Obj, nullptr, "m.obj"); }) ==
         "m.obj:4: malformed face index '3x'");
+}
+
+TEST_CASE("PLY: a header line without a keyword (Blender 2.4x) is a comment, with one note cut at a word", "[real_files][ply]") {
+  const std::string ply =
+      "ply\r\nformat ascii 1.0\r\n"
+      "Created by Blender3D 249 - www.blender.org, source file: 'untitled.blend'\r\n"
+      "element vertex 3\r\nproperty float x\r\nproperty float y\r\nproperty float z\r\n"
+      "element face 1\r\nproperty list uchar uint vertex_indices\r\nend_header\r\n"
+      "0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n";
+  ReadInfo info;
+  const Mesh m = read_text(ply, Format::Ply, &info);
+  CHECK(m.num_faces() == 1);
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0] == "1 header line without a PLY keyword read as comment (first: 'Created by Blender3D 249 "
+                         "-\u2026')");
+}
+
+TEST_CASE("quoted text in messages is cut at a word with an ellipsis", "[real_files][text]") {
+  CHECK(io::quoted_excerpt("short", 40) == "short");
+  CHECK(io::quoted_excerpt("alpha beta gamma delta", 12) == "alpha beta\u2026");
+  CHECK(io::quoted_excerpt(std::string(100, 'x'), 40) == std::string(40, 'x') + "\u2026");
+  // never inside a UTF-8 sequence
+  CHECK(io::quoted_excerpt(std::string(39, 'x') + "\u00e9\u00e9", 40) == std::string(39, 'x') + "\u2026");
+}
+
+namespace {
+
+std::string binary_stl(const std::vector<std::array<float, 12>>& facets) {
+  std::string s(80, ' ');
+  const std::uint32_t n = std::uint32_t(facets.size());
+  s.append(reinterpret_cast<const char*>(&n), 4);
+  for (const auto& f : facets) {
+    s.append(reinterpret_cast<const char*>(f.data()), 48);
+    s.append(2, '\0');
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("STL: zero and inverted facet normals are replaced on read, counted in a note", "[real_files][stl]") {
+  // A tetrahedron as exporters write it: facet 0 with (0,0,0), facet 1 inverted, 2 and 3 right.
+  const std::vector<std::array<float, 12>> facets = {
+      {0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 0, 0},    // z = 0 face, wound to -z: its normal is (0,0,-1)
+      {0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1},    // y = 0 face, wound to -y; stored +y (inverted)
+      {-1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 0},   // x = 0 face, -x, right
+      {1, 1, 1, 1, 0, 0, 0, 1, 0, 0, 0, 1}};  // slanted face, not unit but the right way
+  ReadInfo info;
+  const Mesh m = read_text(binary_stl(facets), Format::Stl, &info, "exporter.stl");
+  REQUIRE(m.has_face_normals());
+  CHECK(get3(m.face_normals, 0) == Vec3d{0, 0, -1});
+  CHECK(get3(m.face_normals, 1) == Vec3d{0, -1, 0});
+  CHECK(get3(m.face_normals, 2) == Vec3d{-1, 0, 0});
+  CHECK(get3(m.face_normals, 3) == Vec3d{1, 1, 1});  // agreeing normals are kept as read
+  CHECK(std::count_if(info.notes.begin(), info.notes.end(), [](const std::string& n) {
+          return n == "facet normals replaced by the triangles' own: 1 zero, 1 against the winding";
+        }) == 1);
+}
+
+TEST_CASE("no writer writes a zero or non-finite normal, nor a value its number type cannot hold", "[real_files][write]") {
+  Mesh m;
+  for (Vec3d p : {Vec3d{0, 0, 0}, Vec3d{1, 0, 0}, Vec3d{0, 1, 0}}) m.add_vertex(p);
+  m.add_face({0, 1, 2});
+  m.vertex_normals = {0, 0, 1, 0, 0, 0, 0, 0, 1};  // one zero
+  for (Format f : {Format::Obj, Format::Ply, Format::Off}) {
+    WriteOptions o;
+    o.format = f;
+    o.name = "out";
+    CHECK(error_of([&] { write_mesh_to_memory(m, o); }).find("out: 1 normal is zero, NaN or infinite") == 0);
+  }
+  // STL holds no vertex normals: nothing zero is written, and its facet normal is the triangle's.
+  WriteOptions stl;
+  stl.format = Format::Stl;
+  stl.binary = false;
+  CHECK(write_mesh_to_memory(m, stl).find("facet normal 0 0 1\n") != std::string::npos);
+  // A triangle with no area gets +z in STL, with a note.
+  Mesh flat = m;
+  flat.vertex_normals.clear();
+  flat.set_position(2, {2, 0, 0});
+  WriteInfo wi;
+  CHECK(write_mesh_to_memory(flat, stl, &wi).find("facet normal 0 0 1\n") != std::string::npos);
+  REQUIRE(wi.notes.size() == 1);
+  // Beyond float: binary PLY widens to double (note), binary STL refuses, text writes as is.
+  Mesh big = flat;
+  big.vertex_normals.clear();
+  big.set_position(1, {1e39, 0, 0});
+  big.precision = ValuePrecision::Float;
+  WriteOptions ply;
+  ply.format = Format::Ply;
+  WriteInfo wp;
+  const Mesh back = read_text(write_mesh_to_memory(big, ply, &wp), Format::Ply);
+  CHECK(back.positions[3] == 1e39);
+  CHECK(wp.notes.back() == "values beyond the range of float: written as double");
+  WriteOptions stl_bin;
+  stl_bin.format = Format::Stl;
+  stl_bin.name = "out.stl";
+  CHECK(error_of([&] { write_mesh_to_memory(big, stl_bin); }).find("out.stl: a coordinate is beyond the range of float") == 0);
+  big.set_position(1, {std::numeric_limits<double>::infinity(), 0, 0});
+  for (Format f : {Format::Obj, Format::Ply, Format::Off, Format::Stl}) {
+    WriteOptions o;
+    o.format = f;
+    CHECK(error_of([&] { write_mesh_to_memory(big, o); }).find("coordinates are NaN or infinite") != std::string::npos);
+  }
 }
