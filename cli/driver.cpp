@@ -302,6 +302,7 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
   std::mutex out_mutex;  // one line at a time on stdout and stderr
   std::atomic<std::size_t> next{0};
   std::atomic<int> failures{0};
+  std::atomic<int> usage_failures{0};  // a step's UsageError: the flags do not suit that file
   std::vector<std::string> failed;
   Progress progress(io, io.inputs.size());
   auto show_stage = [&](const std::string& input, const char* what) {
@@ -363,11 +364,12 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
     } catch (const std::exception& e) {
       // shadetool::Error already names the file; anything else (std::bad_alloc for a mesh that
       // does not fit in memory, ...) gets the input's name so the line still says which file.
-      const bool located = dynamic_cast<const shadetool::Error*>(&e) != nullptr;
+      const bool located = dynamic_cast<const shadetool::Error*>(&e) != nullptr || dynamic_cast<const UsageError*>(&e) != nullptr;
       const std::string message =
           located ? e.what()
                   : shadetool::located(input, 0, dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what());
       failures.fetch_add(1);
+      if (dynamic_cast<const UsageError*>(&e)) usage_failures.fetch_add(1);
       std::lock_guard<std::mutex> lock(out_mutex);
       failed.push_back(input);
       progress.clear();
@@ -401,7 +403,7 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
     for (auto& f : failed) list += (list.empty() ? "" : ", ") + f;
     fmt::print(stderr, "shadetool: {} of {} files failed: {}\n", failures.load(), n, list);
   }
-  return failures > 0 ? kExitFailure : kExitOk;
+  return usage_failures > 0 ? kExitUsage : failures > 0 ? kExitFailure : kExitOk;
 }
 
 int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh) {

@@ -13,7 +13,8 @@
 //                       JSON line's "stats" instead). info is one.
 // For every kind the driver handles -j (files in parallel), --json (one JSON line per file),
 // --stats, notes (stderr, one line each, unless --quiet), the per-file error line and the exit
-// code (0 all ok, 1 any file failed, 2 usage), and writes every file atomically (no output for a
+// code (0 all ok, 1 any file failed, 2 usage: also a step's UsageError, flags that do not suit a
+// file), and writes every file atomically (no output for a
 // failed file, an existing file untouched). Before any work it refuses (exit 2) an output that is
 // an input (same device and inode where the file exists, same normalised path where it does
 // not), two outputs that are one file (inputs a/x.obj and b/x.obj under --output-dir, -o equal to

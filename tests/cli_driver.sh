@@ -83,5 +83,23 @@ check "report not writable: no temporaries left" test -z "$(ls "$tmp/ow" | grep 
 "$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/r2.json" -q
 check "mesh and report both written" test $? -eq 0 -a -s "$tmp/ow/r2.json" -a "$(head -c 1 "$tmp/ow/out.obj")" = "#"
 
+# Flags (issue 21, item 13): non-finite values are usage errors saying so; numbers in shortest form;
+# a singular map is fine for a mesh with no normals, refused (exit 1) for one with normals.
+"$bin" normals "$tmp/a.obj" -o "$tmp/f.obj" --crease nan 2> "$tmp/err.txt"
+check "--crease nan: exit 2, not finite" test $? -eq 2 -a -n "$(grep "'nan' is not a finite number" "$tmp/err.txt")"
+"$bin" normals "$tmp/a.obj" -o "$tmp/f.obj" --crease abc 2> "$tmp/err.txt"
+check "--crease abc: not a number" test $? -eq 2 -a -n "$(grep "'abc' is not a number" "$tmp/err.txt")"
+"$bin" repair "$tmp/a.obj" -o "$tmp/f.obj" --weld -1 2> "$tmp/err.txt"
+check "--weld -1: shortest numbers" test $? -eq 2 -a "$(head -1 "$tmp/err.txt")" = "shadetool: --weld: -1 is out of range (>= 0)"
+"$bin" repair "$tmp/a.obj" -o "$tmp/f.obj" --weld inf 2> /dev/null
+check "--weld inf: exit 2" test $? -eq 2
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n' > "$tmp/plain.obj"
+"$bin" transform "$tmp/plain.obj" -o "$tmp/flat.obj" --scale 0,1,1 2> "$tmp/err.txt"
+check "singular map, no normals: exit 0" test $? -eq 0 -a -s "$tmp/flat.obj"
+check "singular map, no normals: a note says flattened" grep -q "flattened" "$tmp/err.txt"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n' > "$tmp/withn.obj"
+"$bin" transform "$tmp/withn.obj" -o "$tmp/flat2.obj" --scale 0,1,1 2> /dev/null
+check "singular map with normals: exit 1, no output" test $? -eq 1 -a ! -e "$tmp/flat2.obj"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
