@@ -193,7 +193,7 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
       const bool had_normals = mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals();
       shadetool::TransformOptions file_options = options;
       if (singular && had_normals && options.normals == shadetool::NormalsPolicy::Transform)
-        throw UsageError(shadetool::located(input, 0, shadetool::singular_map_message(shadetool::classify_affine(M))));
+        throw UsageError(shadetool::singular_map_message(shadetool::classify_affine(M)) + "; " + input + " has normals");
       if (singular && !had_normals && options.normals == shadetool::NormalsPolicy::Transform) {
         file_options.normals = shadetool::NormalsPolicy::Drop;  // nothing to drop: positions only
         r.notes.push_back("the transform is singular (det A = 0 or nearly): the mesh was flattened; it has no normals to transform");

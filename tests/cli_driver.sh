@@ -84,7 +84,7 @@ check "report not writable: no temporaries left" test -z "$(ls "$tmp/ow" | grep 
 check "mesh and report both written" test $? -eq 0 -a -s "$tmp/ow/r2.json" -a "$(head -c 1 "$tmp/ow/out.obj")" = "#"
 
 # Flags (issue 21, item 13): non-finite values are usage errors saying so; numbers in shortest form;
-# a singular map is fine for a mesh with no normals, refused (exit 1) for one with normals.
+# a singular map is fine for a mesh with no normals, refused (exit 2) for one with normals.
 "$bin" normals "$tmp/a.obj" -o "$tmp/f.obj" --crease nan 2> "$tmp/err.txt"
 check "--crease nan: exit 2, not finite" test $? -eq 2 -a -n "$(grep "'nan' is not a finite number" "$tmp/err.txt")"
 "$bin" normals "$tmp/a.obj" -o "$tmp/f.obj" --crease abc 2> "$tmp/err.txt"
@@ -99,7 +99,7 @@ check "singular map, no normals: exit 0" test $? -eq 0 -a -s "$tmp/flat.obj"
 check "singular map, no normals: a note says flattened" grep -q "flattened" "$tmp/err.txt"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n' > "$tmp/withn.obj"
 "$bin" transform "$tmp/withn.obj" -o "$tmp/flat2.obj" --scale 0,1,1 2> /dev/null
-check "singular map with normals: exit 1, no output" test $? -eq 1 -a ! -e "$tmp/flat2.obj"
+check "singular map with normals: exit 2, no output" test $? -eq 2 -a ! -e "$tmp/flat2.obj"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -134,7 +134,7 @@ void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merg
       } else if (is_zero) {
         set3(normals, f, g);
         ++zero;
-      } else if (dot(n, g) < 0) {
+      } else if (!(dot(n, g) > 0)) {  // against the winding, or perpendicular to the face
         set3(normals, f, g);
         ++against;
       }
