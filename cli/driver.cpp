@@ -272,6 +272,7 @@ void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& m
       wo.format = shadetool::output_format(output, wo.format);
       wo.binary = !io.ascii;
       wo.name = output == "-" ? "stdout" : output;
+      wo.refuse_unusable_normals = true;  // no subcommand writes a zero or non-finite normal
       shadetool::WriteInfo write_info;
       bytes = shadetool::write_mesh_to_memory(mesh, wo, &write_info);
       if (write_info.split_vertices > 0) result.stats["split_vertices"] = write_info.split_vertices;

@@ -92,9 +92,11 @@ bool check_writable(const Mesh& mesh, const FormatEntry& format, const WriteOpti
   if (bad_positions > 0)
     fail(name, 0, std::to_string(bad_positions) + " coordinates are NaN or infinite: no writer writes them (nothing written)");
   std::size_t bad_normals = 0;
-  if (format.holds.vertex_normals != Holds::No) bad_normals += unusable_normals(mesh.vertex_normals);
-  if (format.holds.corner_normals != Holds::No) bad_normals += unusable_normals(mesh.corner_normals);
-  if (format.holds.face_normals != Holds::No) bad_normals += unusable_normals(mesh.face_normals);
+  if (options.refuse_unusable_normals) {
+    if (format.holds.vertex_normals != Holds::No) bad_normals += unusable_normals(mesh.vertex_normals);
+    if (format.holds.corner_normals != Holds::No) bad_normals += unusable_normals(mesh.corner_normals);
+    if (format.holds.face_normals != Holds::No && options.format != Format::Stl) bad_normals += unusable_normals(mesh.face_normals);
+  }
   if (bad_normals > 0)
     fail(name, 0, std::to_string(bad_normals) + (bad_normals == 1 ? " normal is" : " normals are") +
                       " zero, NaN or infinite: no writer writes them (nothing written; `shadetool repair` or "
@@ -108,11 +110,11 @@ bool check_writable(const Mesh& mesh, const FormatEntry& format, const WriteOpti
     for (const auto* a : {&mesh.vertex_colors, &mesh.face_colors})
       for (float c : *a)
         if (!std::isfinite(c)) fail(name, 0, "a colour value is NaN or infinite: no writer writes it (nothing written)");
-  if (!overflow || mesh.precision == ValuePrecision::Double || !options.binary || !format.has_binary_form) return false;
-  if (options.format == Format::Stl)
+  if (!overflow || !options.binary || !format.has_binary_form) return false;
+  if (options.format == Format::Stl)  // binary STL is float whatever the mesh's precision
     fail(name, 0, "a coordinate is beyond the range of float (|x| > 3.4e38), the only number type of binary STL: "
                   "nothing written (write --ascii, or PLY, which takes double)");
-  return true;
+  return mesh.precision == ValuePrecision::Float;  // binary PLY: double properties hold it
 }
 
 }  // namespace

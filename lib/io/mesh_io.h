@@ -10,7 +10,8 @@
 // Errors throw shadetool::Error with `FILE:LINE: what is wrong` (see core/error.h).
 //
 // What no writer writes (Error `NAME: what`, nothing written): a NaN or infinite coordinate,
-// texture coordinate or float colour; a zero, NaN or infinite normal of a kind the format holds.
+// texture coordinate or float colour; with WriteOptions::refuse_unusable_normals (every
+// subcommand), a zero, NaN or infinite normal of a kind the format holds.
 // A finite value beyond the range of the output's number type is written in a wider type where the
 // format has one (binary PLY: double properties, with a note) and refused where it has none
 // (binary STL holds float only: use --ascii or another format).
@@ -52,6 +53,10 @@ struct WriteOptions {
   Format format = Format::Auto;  // Auto: from the extension of the path
   bool binary = true;            // PLY and STL: binary (default) or ascii
   std::string name;              // for messages ("" : the path given to write_mesh, or "<output>")
+  // Refuse a zero, NaN or infinite normal of a kind the format holds (every subcommand sets it;
+  // off for library users and test fixtures that must write such files on purpose). STL facet
+  // normals are never refused: a bad one is written as its triangle's own.
+  bool refuse_unusable_normals = false;
 };
 
 struct WriteInfo {

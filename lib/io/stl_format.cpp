@@ -134,7 +134,8 @@ void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merg
       } else if (is_zero) {
         set3(normals, f, g);
         ++zero;
-      } else if (!(dot(n, g) > 0)) {  // against the winding, or perpendicular to the face
+      } else if (std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(dot(n, g) > 0)) {
+        // against the winding, or perpendicular to the face (NaN/Inf stay as read: info reports them)
         set3(normals, f, g);
         ++against;
       }
@@ -318,7 +319,7 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
   if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to STL");
 
   const bool face_normals = mesh.has_face_normals();
-  std::size_t no_area = 0;
+  std::size_t no_area = 0, replaced = 0;
   if (binary) {
     out.reserve(out.size() + 84 + 50 * triangles);
     std::string header = "binary STL written by shadetool";
@@ -337,7 +338,12 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
       const Vec3d p1 = mesh.position(mesh.corner_vertex[c]);
       const Vec3d p2 = mesh.position(mesh.corner_vertex[c + 1]);
       Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(p0, p1, p2);
-      if (!face_normals && n.x == 0 && n.y == 0 && n.z == 0) {  // no area: no normal of its own
+      const bool usable = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(n.x == 0 && n.y == 0 && n.z == 0);
+      if (face_normals && !usable) {  // a zero or NaN face normal: the triangle's own instead
+        n = triangle_normal(p0, p1, p2);
+        ++replaced;
+      }
+      if (n.x == 0 && n.y == 0 && n.z == 0) {  // no area: no normal of its own
         n = {0, 0, 1};
         ++no_area;
       }
@@ -369,6 +375,9 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
     }
   }
   if (!binary) out += "endsolid shadetool\n";
+  if (replaced > 0)
+    info.notes.push_back(std::to_string(replaced) + " zero or non-finite face normals written as the triangles' own "
+                                                    "facet normals");
   if (no_area > 0)
     info.notes.push_back(std::to_string(no_area) + " triangles with no area written with facet normal +z (STL "
                                                    "has no 'none'; a zero normal is never written)");

@@ -239,6 +239,7 @@ TEST_CASE("no writer writes a zero or non-finite normal, nor a value its number 
     WriteOptions o;
     o.format = f;
     o.name = "out";
+    o.refuse_unusable_normals = true;  // as every subcommand writes
     CHECK(error_of([&] { write_mesh_to_memory(m, o); }).find("out: 1 normal is zero, NaN or infinite") == 0);
   }
   // STL holds no vertex normals: nothing zero is written, and its facet normal is the triangle's.
@@ -274,4 +275,23 @@ TEST_CASE("no writer writes a zero or non-finite normal, nor a value its number 
     o.format = f;
     CHECK(error_of([&] { write_mesh_to_memory(big, o); }).find("coordinates are NaN or infinite") != std::string::npos);
   }
+}
+
+TEST_CASE("numbers that do not fit: the reported cases of issue 21 item 15, through the CLI", "[real_files][cli]") {
+  ScratchDir dir;
+  // normals of an OBJ with coordinates 1e39 written to binary STL: refused, one line, no output
+  write_file(dir / "big.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1e39 0\nf 1 2 3\n");
+  Run r = run_cli("normals '" + dir / "big.obj" + "' -o '" + dir / "big.stl" + "'");
+  CHECK(r.code == 1);
+  CHECK(r.err.find("beyond the range of float") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(!fs::exists(dir / "big.stl"));
+  // transform of a float PLY by --scale 1e39: written as double PLY, the values intact
+  write_file(dir / "small.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  r = run_cli("transform '" + dir / "small.obj" + "' -o '" + dir / "scaled.ply" + "' --scale 1e39");
+  REQUIRE(r.code == 0);
+  CHECK(r.err.find("written as double") != std::string::npos);
+  const Mesh back = read_mesh(dir / "scaled.ply");
+  CHECK(back.positions[3] == 1e39);
+  for (double x : back.positions) CHECK(std::isfinite(x));
 }
