@@ -9,6 +9,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/io/engine/newell_normal.h>
 #include <shadetool/io/number_text.h>
 #include <shadetool/io/split_face_colors.h>
 #include <shadetool/io/text_encoding.h>
@@ -30,26 +31,6 @@ std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* wha
   fail(name, line,
        std::string(what) + " index " + std::to_string(idx) + " out of range (" + std::to_string(count) + " " +
            (count == 1 ? std::string(what) : plural) + " defined so far)");
-}
-
-// The unit normal of face f by Newell's sum over its corners (any polygon), or (0,0,0) when the
-// sum vanishes or is not finite (a face with no area). Sum in double; scaled by its largest
-// component before the length is taken, so the squares neither overflow nor underflow.
-Vec3d newell_normal(const Mesh& mesh, std::size_t f) {
-  Vec3d n{0, 0, 0};
-  const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-  for (std::uint32_t c = b; c < e; ++c) {
-    const Vec3d p = mesh.position(mesh.corner_vertex[c]);
-    const Vec3d q = mesh.position(mesh.corner_vertex[c + 1 < e ? c + 1 : b]);
-    n.x += (p.y - q.y) * (p.z + q.z);
-    n.y += (p.z - q.z) * (p.x + q.x);
-    n.z += (p.x - q.x) * (p.y + q.y);
-  }
-  const double m = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
-  if (!(m > 0) || !std::isfinite(m)) return {0, 0, 0};
-  n = n * (1.0 / m);  // divisor checked
-  const double len = length(n);  // in [1, sqrt(3)]
-  return n * (1.0 / len);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/io/engine/newell_normal.h>
 #include <shadetool/io/number_text.h>
 #include <shadetool/io/text_encoding.h>
 #include <shadetool/io/text_parse.h>
@@ -343,7 +344,8 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
         n = triangle_normal(p0, p1, p2);
         ++replaced;
       }
-      if (n.x == 0 && n.y == 0 && n.z == 0) {  // no area: no normal of its own
+      if (n.x == 0 && n.y == 0 && n.z == 0) n = newell_normal(mesh, f);  // a fan triangle: its polygon's
+      if (n.x == 0 && n.y == 0 && n.z == 0) {  // no area at all: no normal of its own
         n = {0, 0, 1};
         ++no_area;
       }
