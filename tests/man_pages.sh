@@ -55,6 +55,7 @@ fi
 # build's binary first on PATH; each must exit 0. Pages whose examples still name files that are
 # not in data/ are listed here until their owner converts them.
 not_yet_runnable="shadetool-bake-lighting.1"
+examples=0
 if command -v python3 > /dev/null; then
   bindir=$(mktemp -d); ln -s "$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")" "$bindir/shadetool"
   for page in "$src"/man/*.1; do
@@ -66,11 +67,13 @@ if command -v python3 > /dev/null; then
       out=$(cd "$work" && PATH="$bindir:$PATH" bash -c "$cmd" 2>&1 > /dev/null)
       code=$?
       check "$name example runs: $cmd${out:+ ($out)}" test $code -eq 0
+      examples=$((examples + 1))
       rm -rf "$work"
     done < <(awk '/^\.SH EXAMPLES/{s=1; next} /^\.SH/{s=0} s' "$page" | sed -e 's/^\.B //' -e 's/\\-/-/g' | grep -E '^(shadetool|cat) ')
   done
   rm -rf "$bindir"
 fi
 
+echo "$examples man-page examples run"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
