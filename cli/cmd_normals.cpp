@@ -11,6 +11,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include "number_flags.h"
 #include <shadetool/normals/update_mesh_normals.h>
 #include "usage_error.h"
 
@@ -51,7 +52,7 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
   auto* crease = sub->add_option("--crease", opt.crease_degrees,
                                  "Per-corner normals: split where the angle between two faces' normals exceeds DEG "
                                  "degrees (0..180); boundary and non-manifold edges always split")
-                     ->check(CLI::Range(0.0, 180.0))
+                     ->check(finite_number(0.0, 180.0))
                      ->type_name("DEG");
   sub->add_flag("--recompute", opt.recompute, "Discard normals read from the input and compute new ones");
   auto* faces = sub->add_flag("--faces", opt.faces, "Write one normal per face instead of vertex normals");

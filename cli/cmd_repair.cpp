@@ -2,6 +2,7 @@
 // [--remove-degenerate] [--weld EPS]`. Parses, prints one line per step that changed something,
 // writes the JSON report; the repair itself is lib/repair/repair_mesh.h.
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -12,7 +13,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
-#include <shadetool/io/atomic_write.h>
+#include "number_flags.h"
 #include <shadetool/repair/repair_mesh.h>
 #include "usage_error.h"
 
@@ -148,7 +149,7 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
   sub->add_flag("--remove-degenerate", opt.remove_degenerate,
                 "Remove degenerate faces (zero area, repeated index, < 3 corners); default: report only");
   sub->add_option("--weld", opt.weld, "Merge vertices within distance EPS (>= 0) of each other before orienting")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_number(0.0, std::numeric_limits<double>::infinity()));
   return [] {
     if (!opt.report.empty() && io.inputs.size() != 1) throw UsageError("--report takes one input");
     if (opt.report == "-" && (io.output == "-" || io.json)) throw UsageError("--report - and -o - or --json all write stdout; choose one");
@@ -158,10 +159,11 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
       if (!dir.empty() && !std::filesystem::is_directory(dir))
         throw shadetool::Error(shadetool::located(opt.report, 0, "cannot write the report: no such directory"));
     }
-    RepairReport report;
-    const int code = run_mesh_command(
+    if (!opt.report.empty()) io.other_outputs = {{"--report", opt.report}};
+    // The report is committed together with the mesh (driver.h: both or neither).
+    return run_mesh_command(
         "repair", io,
-        [&report](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_finite_positions(mesh, input);
           shadetool::require_faces(mesh, input);
           shadetool::RepairOptions o;
@@ -171,17 +173,14 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
           const RepairReport rep = shadetool::repair_mesh(mesh, o);
           add_notes(rep, opt, r);
           add_stats(rep, r);
-          if (!opt.report.empty()) report = rep;  // --report means one input: no other thread writes it
+          if (!opt.report.empty()) {
+            nlohmann::json j{{"input", input}};
+            if (!io.output.empty()) j["output"] = io.output;
+            j.update(report_json(rep, opt));
+            r.other_files.emplace_back(opt.report, j.dump(2) + "\n");
+          }
         },
         true);
-    // The report is written only after the mesh was: no report for a failed repair.
-    if (code == kExitOk && !opt.report.empty()) {
-      nlohmann::json j{{"input", io.inputs[0]}};
-      if (!io.output.empty()) j["output"] = io.output;
-      j.update(report_json(report, opt));
-      shadetool::io::write_file_atomically(opt.report, j.dump(2) + "\n");
-    }
-    return code;
   };
 });
 

@@ -184,19 +184,27 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
     }
     shadetool::TransformOptions options;
     options.normals = policy_from(opt.normals);
-    if (cls.path == shadetool::TransformPath::Singular && options.normals == shadetool::NormalsPolicy::Transform)
-      throw UsageError(shadetool::singular_map_message(cls));
+    // A singular map is fine for a mesh with no normals (it is flattened, and a note says so); a
+    // mesh with normals to transform is refused, file by file (exit 1), with the reason.
+    const bool singular = cls.path == shadetool::TransformPath::Singular;
     const bool no_map = maps.empty();
 
-    return run_mesh_command("transform", io, [M, options, no_map](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+    return run_mesh_command("transform", io, [M, options, no_map, singular](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       const bool had_normals = mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals();
+      shadetool::TransformOptions file_options = options;
+      if (singular && had_normals && options.normals == shadetool::NormalsPolicy::Transform)
+        throw UsageError(shadetool::singular_map_message(shadetool::classify_affine(M)) + "; " + input + " has normals");
+      if (singular && !had_normals && options.normals == shadetool::NormalsPolicy::Transform) {
+        file_options.normals = shadetool::NormalsPolicy::Drop;  // nothing to drop: positions only
+        r.notes.push_back("the transform is singular (det A = 0 or nearly): the mesh was flattened; it has no normals to transform");
+      }
       // transform_mesh leaves a NaN/Inf normal as read; the command does not write one unasked.
       if (options.normals == shadetool::NormalsPolicy::Transform)
         shadetool::require_finite_normals(mesh, input, "use --normals recompute or --normals drop (or `shadetool repair` first)");
-      const shadetool::TransformReport rep = shadetool::transform_mesh(mesh, M, options, input);
+      const shadetool::TransformReport rep = shadetool::transform_mesh(mesh, M, file_options, input);
       r.stats["path"] = shadetool::path_name(rep.affine.path);
       r.stats["mirror"] = rep.affine.mirror;
-      r.stats["normals"] = rep.normals;
+      r.stats["normals"] = file_options.normals != options.normals ? std::string("none") : rep.normals;
       if (no_map) r.notes.push_back("no --scale, --rotate, --translate or --matrix given: the output is a copy");
       if (rep.winding_reversed)
         r.notes.push_back("det(A) < 0 (a mirror): face winding reversed so that faces keep their orientation");

@@ -12,12 +12,14 @@
 #include <new>
 #include <thread>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <shadetool/core/error.h>
+#include <shadetool/io/atomic_write.h>
 #include <shadetool/io/format_table.h>
 #include <shadetool/io/image_io.h>
 #include <shadetool/io/mesh_io.h>
@@ -130,12 +132,14 @@ std::string output_path_for(const IoOptions& io, const std::string& input, Outpu
   return (fs::path(io.output_dir) / in.stem()).string() + "." + ext;
 }
 
+void refuse_overlapping_paths(const IoOptions& io, OutputKind kind);
+
 void validate(const IoOptions& io, OutputKind kind) {
   if (io.inputs.empty()) throw UsageError("no input given");
   const auto stdin_inputs = std::count(io.inputs.begin(), io.inputs.end(), std::string("-"));
   if (stdin_inputs > 1) throw UsageError("stdin (-) can be read only once");
   if (stdin_inputs == 1 && io.input_format.empty()) throw UsageError("reading stdin (-) needs --input-format");
-  if (kind == OutputKind::Report) return;
+  if (kind == OutputKind::Report) return refuse_overlapping_paths(io, kind);
   if (!io.output.empty() && !io.output_dir.empty()) throw UsageError("give -o or --output-dir, not both");
   if (io.output.empty() && io.output_dir.empty()) throw UsageError("no output given: use -o FILE or --output-dir DIR");
   if (!io.output.empty() && io.inputs.size() > 1)
@@ -144,6 +148,77 @@ void validate(const IoOptions& io, OutputKind kind) {
   if (io.output == "-" && io.json) throw UsageError("--json and -o - both write stdout; choose one");
   if (!io.output_dir.empty() && !fs::is_directory(io.output_dir))
     throw shadetool::Error(shadetool::located(io.output_dir, 0, "output directory does not exist"));
+  refuse_overlapping_paths(io, kind);
+}
+
+// A file as the system sees it: device and inode where it exists, else its normalised absolute
+// path (symbolic links in the existing part resolved), so that ./a.obj, a/../a.obj and a link to
+// a.obj are all one file.
+struct FileIdentity {
+  bool exists = false;
+  dev_t device = 0;
+  ino_t inode = 0;
+  std::string path;
+
+  explicit FileIdentity(const std::string& p) {
+    struct stat st {};
+    if (::stat(p.c_str(), &st) == 0) {
+      exists = true;
+      device = st.st_dev;
+      inode = st.st_ino;
+    }
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(fs::absolute(p, ec), ec);
+    path = ec ? fs::absolute(p).lexically_normal().string() : canonical.string();
+  }
+  bool same_file(const FileIdentity& o) const {
+    if (exists && o.exists) return device == o.device && inode == o.inode;
+    return path == o.path;
+  }
+};
+
+// Item by item: no output may be an input, and no two outputs one file. Usage errors (exit 2),
+// raised before anything is read or written.
+void refuse_overlapping_paths(const IoOptions& io, OutputKind kind) {
+  struct Output {
+    std::string path, origin;  // origin: the input it is written for, or the flag that names it
+    bool from_input;
+    FileIdentity id;
+  };
+  std::vector<Output> outputs;
+  if (kind != OutputKind::Report)
+    for (const std::string& input : io.inputs) {
+      const std::string out = output_path_for(io, input, kind);
+      if (out != "-") outputs.push_back({out, input, true, FileIdentity(out)});
+    }
+  for (const auto& [flag, path] : io.other_outputs)
+    if (!path.empty() && path != "-") outputs.push_back({path, flag, false, FileIdentity(path)});
+  std::vector<std::pair<std::string, FileIdentity>> inputs;
+  for (const std::string& input : io.inputs)
+    if (input != "-") inputs.emplace_back(input, FileIdentity(input));
+
+  for (const Output& o : outputs)
+    for (const auto& [input, id] : inputs)
+      if (o.id.same_file(id)) {
+        if (o.from_input && o.origin == input)
+          throw UsageError(shadetool::located(input, 0, "the output " + o.path + " is the input file: refusing to overwrite the input"));
+        if (o.from_input)
+          throw UsageError(shadetool::located(input, 0, "the output " + o.path + " (for " + o.origin +
+                                                            ") is this input file: refusing to overwrite an input"));
+        throw UsageError(shadetool::located(input, 0, o.origin + " " + o.path + " is the input file: refusing to overwrite the input"));
+      }
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    for (std::size_t j = i + 1; j < outputs.size(); ++j) {
+      const Output& a = outputs[i];
+      const Output& b = outputs[j];
+      if (!a.id.same_file(b.id)) continue;
+      if (a.from_input && b.from_input)
+        throw UsageError("inputs " + a.origin + " and " + b.origin + " would both be written to " + a.path +
+                         ": give them different names, or run them separately");
+      const std::string what_a = a.from_input ? "the output " + a.path : a.origin + " " + a.path;
+      const std::string what_b = b.from_input ? "the output " + b.path : b.origin + " " + b.path;
+      throw UsageError(what_b + " is the same file as " + what_a + ": one would overwrite the other");
+    }
 }
 
 // A one-line progress display on stderr, only when stderr is a terminal and the work is long
@@ -184,30 +259,39 @@ shadetool::Mesh read_input(const IoOptions& io, const std::string& input, shadet
                       : shadetool::read_mesh(input, in_format, &read_info);
 }
 
-// Writes what the step produced (a mesh or an image) to `output`; its notes and counts go to `result`.
+// Writes what the step produced (a mesh or an image) to `output`, together with the step's other
+// files (all or none); notes and counts go to `result`.
 void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& mesh, const std::string& output,
                   FileResult& result) {
+  std::string bytes;
   switch (kind) {
-    case OutputKind::Report: return;
+    case OutputKind::Report: break;
     case OutputKind::Mesh: {
       shadetool::WriteOptions wo;
       wo.format = io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format");
+      wo.format = shadetool::output_format(output, wo.format);
       wo.binary = !io.ascii;
+      wo.name = output == "-" ? "stdout" : output;
+      wo.refuse_unusable_normals = true;  // no subcommand writes a zero or non-finite normal
       shadetool::WriteInfo write_info;
-      shadetool::write_mesh(mesh, output, wo, &write_info);
+      bytes = shadetool::write_mesh_to_memory(mesh, wo, &write_info);
       if (write_info.split_vertices > 0) result.stats["split_vertices"] = write_info.split_vertices;
       for (auto& n : write_info.notes) result.notes.push_back(n);  // what the format could not carry
-      return;
+      break;
     }
     case OutputKind::Image: {
       shadetool::ImageWriteInfo write_info;
-      shadetool::write_image(result.image, output, io.format, &write_info);
+      bytes = shadetool::encode_image(result.image, shadetool::image_format_for(output, io.format), output, &write_info);
       result.stats["width"] = result.image.width;
       result.stats["height"] = result.image.height;
       for (auto& n : write_info.notes) result.notes.push_back(n);
-      return;
+      break;
     }
   }
+  std::vector<shadetool::io::FileToWrite> files;
+  if (kind != OutputKind::Report) files.push_back({output, bytes});
+  for (const auto& [path, content] : result.other_files) files.push_back({path, content});
+  shadetool::io::write_files_atomically(files);
 }
 
 }  // namespace
@@ -219,6 +303,7 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
   std::mutex out_mutex;  // one line at a time on stdout and stderr
   std::atomic<std::size_t> next{0};
   std::atomic<int> failures{0};
+  std::atomic<int> usage_failures{0};  // a step's UsageError: the flags do not suit that file
   std::vector<std::string> failed;
   Progress progress(io, io.inputs.size());
   auto show_stage = [&](const std::string& input, const char* what) {
@@ -233,12 +318,6 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
     if (writes_file) line["output"] = output;
     FileResult result;
     try {
-      // Writing over the input would lose it if anything failed later; the same file under another
-      // name (./a.obj, a link, --output-dir of the input's own folder) counts too.
-      std::error_code same_ec;
-      if (writes_file && input != "-" && output != "-" && fs::equivalent(input, output, same_ec))
-        throw shadetool::Error(shadetool::located(
-            input, 0, "the output " + output + " is the input file: refusing to overwrite the input"));
       show_stage(input, "reading");
       auto t0 = std::chrono::steady_clock::now();
       shadetool::ReadInfo read_info;
@@ -253,7 +332,7 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
       const double compute_ms = ms_since(t0);
 
       double write_ms = 0;
-      if (writes_file) {
+      if (writes_file || !result.other_files.empty()) {
         show_stage(input, "writing");
         t0 = std::chrono::steady_clock::now();
         write_output(io, kind, mesh, output, result);
@@ -286,11 +365,12 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
     } catch (const std::exception& e) {
       // shadetool::Error already names the file; anything else (std::bad_alloc for a mesh that
       // does not fit in memory, ...) gets the input's name so the line still says which file.
-      const bool located = dynamic_cast<const shadetool::Error*>(&e) != nullptr;
+      const bool located = dynamic_cast<const shadetool::Error*>(&e) != nullptr || dynamic_cast<const UsageError*>(&e) != nullptr;
       const std::string message =
           located ? e.what()
                   : shadetool::located(input, 0, dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what());
       failures.fetch_add(1);
+      if (dynamic_cast<const UsageError*>(&e)) usage_failures.fetch_add(1);
       std::lock_guard<std::mutex> lock(out_mutex);
       failed.push_back(input);
       progress.clear();
@@ -324,7 +404,7 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
     for (auto& f : failed) list += (list.empty() ? "" : ", ") + f;
     fmt::print(stderr, "shadetool: {} of {} files failed: {}\n", failures.load(), n, list);
   }
-  return failures > 0 ? kExitFailure : kExitOk;
+  return usage_failures > 0 ? kExitUsage : failures > 0 ? kExitFailure : kExitOk;
 }
 
 int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh) {

@@ -13,8 +13,12 @@
 //                       JSON line's "stats" instead). info is one.
 // For every kind the driver handles -j (files in parallel), --json (one JSON line per file),
 // --stats, notes (stderr, one line each, unless --quiet), the per-file error line and the exit
-// code (0 all ok, 1 any file failed, 2 usage), and writes every file atomically (no output for a
-// failed file, an existing file untouched).
+// code (0 all ok, 1 any file failed, 2 usage: also a step's UsageError, flags that do not suit a
+// file), and writes every file atomically (no output for a
+// failed file, an existing file untouched). Before any work it refuses (exit 2) an output that is
+// an input (same device and inode where the file exists, same normalised path where it does
+// not), two outputs that are one file (inputs a/x.obj and b/x.obj under --output-dir, -o equal to
+// --report), naming them.
 //
 // A new subcommand: add_io_options(sub, io, OutputKind::Image) when it adds its flags, then
 // `return run_command("render", io, step, OutputKind::Image);` from its run function.
@@ -24,6 +28,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -49,6 +54,10 @@ struct IoOptions {
   bool json = false;
   bool quiet = false;
   bool stats = false;
+  // Files a command writes besides its main output, as (flag, path): repair's --report. The
+  // driver refuses (exit 2, before any work) any two outputs that are one file, and any output
+  // that is an input.
+  std::vector<std::pair<std::string, std::string>> other_outputs;
 };
 
 // What one file's step reports back to the driver.
@@ -57,6 +66,9 @@ struct FileResult {
   nlohmann::json stats = nlohmann::json::object();  // counts for --stats and --json
   std::string text;                             // printed on stdout (info's report)
   shadetool::Image image;                       // OutputKind::Image: the picture to write
+  // Files that belong with the main output, as (path, bytes): committed together with it (every
+  // temporary written first, then all renamed; if one fails none replaces anything).
+  std::vector<std::pair<std::string, std::string>> other_files;
   double compute_ms = 0;                        // filled by the driver
 };
 

@@ -60,7 +60,7 @@ inline void check_invariants(const shadetool::Mesh& m) {
   if (!m.corner_texcoord_index.empty()) {
     if (m.corner_texcoord_index.size() != m.corner_vertex.size()) bug("corner_texcoord_index size");
     for (auto i : m.corner_texcoord_index)
-      if (i >= m.texcoords.size() / size_t(m.texcoord_dims)) bug("corner_texcoord_index out of range", i);
+      if (i != shadetool::kNoTexcoord && i >= m.texcoords.size() / size_t(m.texcoord_dims)) bug("corner_texcoord_index out of range", i);
   }
   if (m.color_channels != 3 && m.color_channels != 4) bug("color_channels", size_t(m.color_channels));
   const size_t ch = size_t(m.color_channels);

@@ -52,5 +52,64 @@ check "unknown flag exits 2" test $? -eq 2
 "$bin" normals "$tmp/a.obj" --output-dir "$tmp/missing-dir" 2>/dev/null
 check "missing output directory exits 1" test $? -eq 1
 
+# Nothing overwritten (issue 21, items 1-3): every path a command writes differs from every input
+# and from each other, checked before any work (exit 2); files that belong together are
+# committed together.
+mkdir -p "$tmp/ow/a" "$tmp/ow/b" "$tmp/ow/od"
+cp "$src/data/cube.obj" "$tmp/ow/in.obj"; cp "$src/data/cube.obj" "$tmp/ow/a/x.obj"; cp "$src/data/torus.obj" "$tmp/ow/b/x.obj"
+ln -s in.obj "$tmp/ow/link.obj"
+sum_in=$(cksum < "$tmp/ow/in.obj")
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/in.obj" 2> "$tmp/ow/err"
+check "--report equal to the input: exit 2" test $? -eq 2
+check "--report equal to the input: input intact, no output" test "$(cksum < "$tmp/ow/in.obj")" = "$sum_in" -a ! -e "$tmp/ow/out.obj"
+check "--report equal to the input: one line naming it" test "$(wc -l < "$tmp/ow/err")" -eq 1
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/link.obj" 2> /dev/null
+check "--report through a link to the input: exit 2" test $? -eq 2 -a "$(cksum < "$tmp/ow/in.obj")" = "$sum_in"
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/./out.obj" 2> "$tmp/ow/err"
+check "--report equal to -o: exit 2, nothing written" test $? -eq 2 -a ! -e "$tmp/ow/out.obj"
+check "--report equal to -o: says so" grep -q "same file" "$tmp/ow/err"
+"$bin" normals "$tmp/ow/a/x.obj" "$tmp/ow/b/x.obj" --output-dir "$tmp/ow/od" 2> "$tmp/ow/err"
+check "colliding names under --output-dir: exit 2" test $? -eq 2
+check "colliding names: nothing written" test -z "$(ls -A "$tmp/ow/od")"
+check "colliding names: both inputs named" grep -q "a/x.obj and .*b/x.obj" "$tmp/ow/err"
+"$bin" normals "$tmp/ow/a/x.obj" "$tmp/ow/in.obj" --output-dir "$tmp/ow" --format obj 2> /dev/null
+check "an output that is another input: exit 2" test $? -eq 2 -a "$(cksum < "$tmp/ow/in.obj")" = "$sum_in"
+# The report cannot be written (its path is a directory): exit 1 and -o not replaced either.
+echo old > "$tmp/ow/out.obj"; mkdir "$tmp/ow/r.json"
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/r.json" 2> /dev/null
+check "report not writable: exit 1" test $? -eq 1
+check "report not writable: -o untouched" test "$(cat "$tmp/ow/out.obj")" = old
+check "report not writable: no temporaries left" test -z "$(ls "$tmp/ow" | grep tmp-)"
+"$bin" repair "$tmp/ow/in.obj" -o "$tmp/ow/out.obj" --report "$tmp/ow/r2.json" -q
+check "mesh and report both written" test $? -eq 0 -a -s "$tmp/ow/r2.json" -a "$(head -c 1 "$tmp/ow/out.obj")" = "#"
+
+# Flags (issue 21, item 13): non-finite values are usage errors saying so; numbers in shortest form;
+# a singular map is fine for a mesh with no normals, refused (exit 2) for one with normals.
+"$bin" normals "$tmp/a.obj" -o "$tmp/f.obj" --crease nan 2> "$tmp/err.txt"
+check "--crease nan: exit 2, not finite" test $? -eq 2 -a -n "$(grep "'nan' is not a finite number" "$tmp/err.txt")"
+"$bin" normals "$tmp/a.obj" -o "$tmp/f.obj" --crease abc 2> "$tmp/err.txt"
+check "--crease abc: not a number" test $? -eq 2 -a -n "$(grep "'abc' is not a number" "$tmp/err.txt")"
+"$bin" repair "$tmp/a.obj" -o "$tmp/f.obj" --weld -1 2> "$tmp/err.txt"
+check "--weld -1: shortest numbers" test $? -eq 2 -a "$(head -1 "$tmp/err.txt")" = "shadetool: --weld: -1 is out of range (>= 0)"
+"$bin" repair "$tmp/a.obj" -o "$tmp/f.obj" --weld inf 2> /dev/null
+check "--weld inf: exit 2" test $? -eq 2
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n' > "$tmp/plain.obj"
+"$bin" transform "$tmp/plain.obj" -o "$tmp/flat.obj" --scale 0,1,1 2> "$tmp/err.txt"
+check "singular map, no normals: exit 0" test $? -eq 0 -a -s "$tmp/flat.obj"
+check "singular map, no normals: a note says flattened" grep -q "flattened" "$tmp/err.txt"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n' > "$tmp/withn.obj"
+"$bin" transform "$tmp/withn.obj" -o "$tmp/flat2.obj" --scale 0,1,1 2> /dev/null
+check "singular map with normals: exit 2, no output" test $? -eq 2 -a ! -e "$tmp/flat2.obj"
+
+# No subcommand writes a zero normal (issue 21, item 11): transform leaves a zero vn as read, so the
+# write refuses it (exit 1, one line, no output); STL facet normals are replaced on read.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n' > "$tmp/zero_vn.obj"
+"$bin" transform "$tmp/zero_vn.obj" -o "$tmp/zero_out.ply" --translate 1,0,0 2> "$tmp/err.txt"
+check "zero normal never written: exit 1, no output" test $? -eq 1 -a ! -e "$tmp/zero_out.ply"
+check "zero normal never written: one line" test "$(wc -l < "$tmp/err.txt")" -eq 1
+"$bin" normals "$src/data/part.stl" -o "$tmp/part.ply" --ascii 2> "$tmp/err.txt"
+check "STL zero facet normals replaced on read, counted" grep -q "2 zero, 2 against the winding" "$tmp/err.txt"
+check "no zero normal in the PLY" test -z "$(awk '/end_header/{b=1;next} b && NF>=6 && $4==0 && $5==0 && $6==0' "$tmp/part.ply")"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

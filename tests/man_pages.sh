@@ -50,5 +50,30 @@ if command -v groff > /dev/null; then
   done
 fi
 
+# Every EXAMPLE runs as written (issue 21, item 14): the command lines of each page's EXAMPLES
+# section run from a scratch directory that sees the source tree's data/ as ./data, with this
+# build's binary first on PATH; each must exit 0. Pages whose examples still name files that are
+# not in data/ are listed here until their owner converts them.
+not_yet_runnable="shadetool-bake-lighting.1"
+examples=0
+if command -v python3 > /dev/null; then
+  bindir=$(mktemp -d); ln -s "$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")" "$bindir/shadetool"
+  for page in "$src"/man/*.1; do
+    name=$(basename "$page")
+    if grep -qw "$name" <<< "$not_yet_runnable"; then echo "note: $name: examples not run (names files not in data/)"; continue; fi
+    while IFS= read -r cmd; do
+      [ -z "$cmd" ] && continue
+      work=$(mktemp -d); ln -s "$src/data" "$work/data"
+      out=$(cd "$work" && PATH="$bindir:$PATH" bash -c "$cmd" 2>&1 > /dev/null)
+      code=$?
+      check "$name example runs: $cmd${out:+ ($out)}" test $code -eq 0
+      examples=$((examples + 1))
+      rm -rf "$work"
+    done < <(awk '/^\.SH EXAMPLES/{s=1; next} /^\.SH/{s=0} s' "$page" | sed -e 's/^\.B //' -e 's/\\-/-/g' | grep -E '^(shadetool|cat) ')
+  done
+  rm -rf "$bindir"
+fi
+
+echo "$examples man-page examples run"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -13,9 +13,16 @@
 //   corner_normal_index 0 or C uint32       per-corner index into corner_normals (OBJ `vn`, creases)
 //   face_normals       0 or F*3 doubles     per-face normals
 //   texcoords          T*texcoord_dims      pool of texture coordinates (OBJ `vt`), kept through
-//   corner_texcoord_index 0 or C uint32     per-corner index into texcoords
+//   corner_texcoord_index 0 or C uint32     per-corner index into texcoords; kNoTexcoord where a
+//                                           corner has none (OBJ: `f 1/1 2/2 3/3` beside `f 4 5 6`)
 //   vertex_colors      0 or V*color_channels floats, linear, nominally in [0,1]
 //   face_colors        0 or F*color_channels floats
+//   group_statements   R strings            OBJ grouping lines (mtllib, usemtl, g, o, s) as read, one
+//                                           run of consecutive lines per string ('\n'-terminated)
+//   face_group_run     0 or F uint32        runs read before face f (non-decreasing): face f is
+//                                           preceded by runs [face_group_run[f-1], face_group_run[f]),
+//                                           runs from face_group_run[F-1] on follow the last face.
+//                                           Steps that remove faces keep it per face, like face_colors.
 //
 // Values are stored in double so that analytic test meshes lie on their surface and float input
 // (binary PLY, STL) round-trips bitwise: a float widened to double and narrowed back is unchanged.
@@ -33,6 +40,9 @@
 namespace shadetool {
 
 enum class ValuePrecision { Float, Double };
+
+// corner_texcoord_index of a corner without a texture coordinate.
+constexpr std::uint32_t kNoTexcoord = 0xFFFFFFFFu;
 
 struct Mesh {
   std::vector<double> positions;
@@ -53,6 +63,9 @@ struct Mesh {
   int color_channels = 3;  // 3 (rgb) or 4 (rgba), for both colour arrays
   bool colors_are_float = false;  // as read: PLY float colours / OBJ `v x y z r g b`; else uchar
 
+  std::vector<std::string> group_statements;
+  std::vector<std::uint32_t> face_group_run;
+
   ValuePrecision precision = ValuePrecision::Float;
 
   std::size_t num_vertices() const { return positions.size() / 3; }
@@ -69,6 +82,7 @@ struct Mesh {
   bool has_vertex_colors() const { return !vertex_colors.empty(); }
   bool has_face_colors() const { return !face_colors.empty(); }
   bool has_texcoords() const { return !corner_texcoord_index.empty(); }
+  bool has_groups() const { return !group_statements.empty(); }
 
   Vec3d position(std::size_t v) const { return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]}; }
   void set_position(std::size_t v, const Vec3d& p) {

@@ -46,12 +46,11 @@ mode_t current_umask() {
 
 }  // namespace
 
-void write_file_atomically(const std::string& path, std::string_view bytes) {
-  if (path == "-") {
-    std::fflush(stdout);
-    if (!write_all(STDOUT_FILENO, bytes)) fail("stdout", 0, std::string("cannot write: ") + std::strerror(errno));
-    return;
-  }
+namespace {
+
+// Writes `bytes` to a new temporary file next to `path` (same directory: rename(2) is atomic there)
+// with the mode the final file should get; returns its name. On any error nothing is left behind.
+std::string write_temporary(const std::string& path, std::string_view bytes) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) fail(path, 0, "cannot write: is a directory");
 
@@ -77,14 +76,54 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
     ok = false;
     saved = errno;
   }
-  if (ok && ::rename(tmp.c_str(), path.c_str()) != 0) {
-    ok = false;
-    saved = errno;
-  }
   if (!ok) {
     ::unlink(tmp.c_str());
     fail(path, 0, std::string("cannot write: ") + std::strerror(saved));
   }
+  return tmp;
+}
+
+void write_stdout(std::string_view bytes) {
+  std::fflush(stdout);
+  if (!write_all(STDOUT_FILENO, bytes)) fail("stdout", 0, std::string("cannot write: ") + std::strerror(errno));
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, std::string_view bytes) {
+  if (path == "-") return write_stdout(bytes);
+  const std::string tmp = write_temporary(path, bytes);
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int saved = errno;
+    ::unlink(tmp.c_str());
+    fail(path, 0, std::string("cannot write: ") + std::strerror(saved));
+  }
+}
+
+void write_files_atomically(const std::vector<FileToWrite>& files) {
+  std::vector<std::string> temporaries;  // one per file that is not stdout, in order
+  auto remove_temporaries = [&](std::size_t from) {
+    for (std::size_t i = from; i < temporaries.size(); ++i) ::unlink(temporaries[i].c_str());
+  };
+  try {
+    for (const FileToWrite& f : files)
+      if (f.path != "-") temporaries.push_back(write_temporary(f.path, f.bytes));
+  } catch (...) {
+    remove_temporaries(0);
+    throw;
+  }
+  std::size_t t = 0;
+  for (const FileToWrite& f : files) {
+    if (f.path == "-") continue;
+    if (::rename(temporaries[t].c_str(), f.path.c_str()) != 0) {
+      const int saved = errno;
+      remove_temporaries(t);
+      fail(f.path, 0, std::string("cannot write: ") + std::strerror(saved));
+    }
+    ++t;
+  }
+  for (const FileToWrite& f : files)
+    if (f.path == "-") write_stdout(f.bytes);
 }
 
 }  // namespace shadetool::io

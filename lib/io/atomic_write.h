@@ -7,13 +7,26 @@
 // SHADETOOL_FSYNC=1, for durability across a power loss). On any error the temporary file is removed
 // and an existing file at `path` is left untouched. The new file gets the usual 0666 & ~umask mode.
 // Errors: shadetool::Error `PATH: cannot write: REASON`.
+//
+// write_files_atomically: several files that belong together (a mesh and its report) committed
+// together: every temporary file is written first; if any of them fails, all are removed and no
+// file is replaced. Only then are they renamed into place, in order (a rename within a directory
+// does not fail for want of space; should one fail anyway, the later temporaries are removed).
+// Entries "-" are written to stdout last, after every rename.
 #pragma once
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace shadetool::io {
 
 void write_file_atomically(const std::string& path, std::string_view bytes);
+
+struct FileToWrite {
+  std::string path;  // "-": stdout
+  std::string_view bytes;
+};
+void write_files_atomically(const std::vector<FileToWrite>& files);
 
 }  // namespace shadetool::io

@@ -84,9 +84,9 @@ std::vector<FormatEntry> make_table() {
   std::vector<FormatEntry> t;
   {
     FormatEntry e{Format::Obj, "obj", {"obj"}, detect_obj, io::read_obj, write_obj_entry, false, {}};
-    e.holds.vertex_normals = Holds::Yes;   // one vn per vertex, indexed by each corner
+    e.holds.vertex_normals = Holds::Converted;  // one vn per vertex, each corner indexes its vertex's
     e.holds.corner_normals = Holds::Yes;   // the vn pool
-    e.holds.face_normals = Holds::Yes;     // one vn per face
+    e.holds.face_normals = Holds::Converted;    // one vn per face, indexed by the face's corners
     e.holds.texcoords = Holds::Yes;
     e.holds.vertex_colors = Holds::Yes;    // v x y z r g b
     e.holds.face_colors = Holds::Converted;  // vertices split (io/split_face_colors.h)

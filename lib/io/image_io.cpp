@@ -83,7 +83,7 @@ std::string encode_image(const Image& image, const ImageFormatEntry& format, con
   return format.encode(image, name, info ? *info : local);
 }
 
-void write_image(const Image& image, const std::string& path, const std::string& format_name, ImageWriteInfo* info) {
+const ImageFormatEntry& image_format_for(const std::string& path, const std::string& format_name) {
   std::string name = format_name;
   if (name.empty()) {
     if (path == "-") fail("stdout", 0, "writing stdout needs a format (--format)");
@@ -94,7 +94,11 @@ void write_image(const Image& image, const std::string& path, const std::string&
   for (const auto& n : image_format_names()) known += (known.empty() ? "" : ", ") + n;
   const ImageFormatEntry* format = find_image_format(name);
   if (!format) fail(path, 0, "unknown image format '" + name + "' (expected " + known + ")");
-  io::write_file_atomically(path, encode_image(image, *format, path, info));
+  return *format;
+}
+
+void write_image(const Image& image, const std::string& path, const std::string& format_name, ImageWriteInfo* info) {
+  io::write_file_atomically(path, encode_image(image, image_format_for(path, format_name), path, info));
 }
 
 }  // namespace shadetool

@@ -54,6 +54,8 @@ std::vector<std::string> image_format_names();
 // `name` is used in messages (the output path).
 std::string encode_image(const Image& image, const ImageFormatEntry& format, const std::string& name,
                          ImageWriteInfo* info = nullptr);
+// The format named `format_name` if not empty, else the one of `path`'s extension; Error otherwise.
+const ImageFormatEntry& image_format_for(const std::string& path, const std::string& format_name);
 // Format from `format_name` if not empty, else from the extension of `path` ("-" needs a name).
 void write_image(const Image& image, const std::string& path, const std::string& format_name,
                  ImageWriteInfo* info = nullptr);

@@ -1,12 +1,27 @@
 // mesh_io.cpp: format names and dispatch through the format table (format_table.h), atomic output.
 #include <shadetool/io/mesh_io.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
 #include <shadetool/core/error.h>
 #include <shadetool/io/atomic_write.h>
 #include <shadetool/io/file_bytes.h>
 #include <shadetool/io/format_table.h>
 
 namespace shadetool {
+
+namespace {
+
+std::string format_upper_name(const FormatEntry& format) {
+  std::string s = format.name;
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
 
 Format parse_format_name(const std::string& name, const std::string& what) {
   const FormatEntry* e = find_format(name);
@@ -38,7 +53,10 @@ Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::str
   ri.format = format;
   if (bytes.empty()) fail(name, 0, "file is empty");
   if (format == Format::Auto) fail(name, 0, "no mesh format given");
-  return format_entry(format).read(bytes, name, ri);
+  Mesh mesh = format_entry(format).read(bytes, name, ri);
+  // A file with content that yields no vertex is not an empty mesh but a file we could not read.
+  if (mesh.num_vertices() == 0) fail(name, 0, "no vertex in the file: nothing to read as a mesh");
+  return mesh;
 }
 
 Mesh read_mesh(const std::string& path, Format format, ReadInfo* info) {
@@ -48,21 +66,94 @@ Mesh read_mesh(const std::string& path, Format format, ReadInfo* info) {
   return read_mesh_from_memory(bytes.view(), format, path, info);
 }
 
+namespace {
+
+bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+
+// Counts the rows of a flat N*3 array that are zero or not finite.
+std::size_t unusable_normals(const std::vector<double>& a) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i + 2 < a.size(); i += 3)
+    n += !finite3(&a[i]) || (a[i] == 0 && a[i + 1] == 0 && a[i + 2] == 0);
+  return n;
+}
+
+bool beyond_float(double x) { return std::fabs(x) > double(std::numeric_limits<float>::max()); }
+
+// What no writer writes (see mesh_io.h). Returns true when a float-typed binary output must widen
+// to double to hold the values (binary PLY), after refusing what cannot be written at all.
+bool check_writable(const Mesh& mesh, const FormatEntry& format, const WriteOptions& options, const std::string& name) {
+  std::size_t bad_positions = 0;
+  bool overflow = false;
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    bad_positions += !std::isfinite(mesh.positions[i]);
+    overflow = overflow || beyond_float(mesh.positions[i]);
+  }
+  if (bad_positions > 0)
+    fail(name, 0, std::to_string(bad_positions) + " coordinates are NaN or infinite: no writer writes them (nothing written)");
+  std::size_t bad_normals = 0;
+  if (options.refuse_unusable_normals) {
+    if (format.holds.vertex_normals != Holds::No) bad_normals += unusable_normals(mesh.vertex_normals);
+    if (format.holds.corner_normals != Holds::No) bad_normals += unusable_normals(mesh.corner_normals);
+    if (format.holds.face_normals != Holds::No && options.format != Format::Stl) bad_normals += unusable_normals(mesh.face_normals);
+  }
+  if (bad_normals > 0)
+    fail(name, 0, std::to_string(bad_normals) + (bad_normals == 1 ? " normal is" : " normals are") +
+                      " zero, NaN or infinite: no writer writes them (nothing written; `shadetool repair` or "
+                      "`shadetool normals --recompute` replaces them)");
+  if (format.holds.texcoords != Holds::No)
+    for (double t : mesh.texcoords) {
+      if (!std::isfinite(t)) fail(name, 0, "a texture coordinate is NaN or infinite: no writer writes it (nothing written)");
+      overflow = overflow || beyond_float(t);
+    }
+  if (mesh.colors_are_float)
+    for (const auto* a : {&mesh.vertex_colors, &mesh.face_colors})
+      for (float c : *a)
+        if (!std::isfinite(c)) fail(name, 0, "a colour value is NaN or infinite: no writer writes it (nothing written)");
+  if (!overflow || !options.binary || !format.has_binary_form) return false;
+  if (options.format == Format::Stl)  // binary STL is float whatever the mesh's precision
+    fail(name, 0, "a coordinate is beyond the range of float (|x| > 3.4e38), the only number type of binary STL: "
+                  "nothing written (write --ascii, or PLY, which takes double)");
+  return mesh.precision == ValuePrecision::Float;  // binary PLY: double properties hold it
+}
+
+}  // namespace
+
 std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info) {
   WriteInfo local;
   WriteInfo& wi = info ? *info : local;
-  if (options.format == Format::Auto) fail("<output>", 0, "no output format given");
+  const std::string name = options.name.empty() ? std::string("<output>") : options.name;
+  if (options.format == Format::Auto) fail(name, 0, "no output format given");
   std::string out;
-  format_entry(options.format).write(mesh, options, out, wi);
+  const FormatEntry& format = format_entry(options.format);
+  if (check_writable(mesh, format, options, name)) {
+    // A float-typed binary file cannot hold the values: the wider type (PLY: double properties).
+    Mesh wide = mesh;
+    wide.precision = ValuePrecision::Double;
+    format.write(wide, options, out, wi);
+    wi.notes.push_back("values beyond the range of float: written as double");
+  } else {
+    format.write(mesh, options, out, wi);
+  }
+  if (mesh.has_groups() && format.holds.groups == Holds::No) {
+    std::size_t lines = 0;
+    for (const std::string& run : mesh.group_statements) lines += std::size_t(std::count(run.begin(), run.end(), '\n'));
+    wi.notes.push_back("materials and groups not written (" + std::to_string(lines) +
+                       " mtllib/usemtl/g/o/s lines): " + format_upper_name(format) + " holds none");
+  }
   return out;
+}
+
+Format output_format(const std::string& path, Format given) {
+  if (given != Format::Auto) return given;
+  if (path == "-") fail("stdout", 0, "writing stdout needs a format (--format)");
+  return format_from_extension(path);
 }
 
 void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options, WriteInfo* info) {
   WriteOptions o = options;
-  if (o.format == Format::Auto) {
-    if (path == "-") fail("stdout", 0, "writing stdout needs a format (--format)");
-    o.format = format_from_extension(path);
-  }
+  o.format = output_format(path, o.format);
+  if (o.name.empty()) o.name = path;
   const std::string bytes = write_mesh_to_memory(mesh, o, info);
   io::write_file_atomically(path, bytes);
 }

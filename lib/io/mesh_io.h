@@ -8,6 +8,13 @@
 //                        directory and renamed into place; on any error no output file is left and
 //                        an existing file at `path` is untouched. "-" writes to stdout.
 // Errors throw shadetool::Error with `FILE:LINE: what is wrong` (see core/error.h).
+//
+// What no writer writes (Error `NAME: what`, nothing written): a NaN or infinite coordinate,
+// texture coordinate or float colour; with WriteOptions::refuse_unusable_normals (every
+// subcommand), a zero, NaN or infinite normal of a kind the format holds.
+// A finite value beyond the range of the output's number type is written in a wider type where the
+// format has one (binary PLY: double properties, with a note) and refused where it has none
+// (binary STL holds float only: use --ascii or another format).
 #pragma once
 
 #include <cstddef>
@@ -28,6 +35,9 @@ Format parse_format_name(const std::string& name, const std::string& what);
 // From the extension of `path`; throws Error `path: unknown mesh format 'EXT' ...` otherwise.
 Format format_from_extension(const std::string& path);
 const char* format_extension(Format format);  // "obj", ... (no dot)
+// The format a file at `path` is written in: `given` unless Auto, else from the extension
+// ("-", stdout, has none: Error `stdout: writing stdout needs a format (--format)`).
+Format output_format(const std::string& path, Format given);
 
 struct ReadInfo {
   Format format = Format::Auto;
@@ -42,6 +52,11 @@ Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::str
 struct WriteOptions {
   Format format = Format::Auto;  // Auto: from the extension of the path
   bool binary = true;            // PLY and STL: binary (default) or ascii
+  std::string name;              // for messages ("" : the path given to write_mesh, or "<output>")
+  // Refuse a zero, NaN or infinite normal of a kind the format holds (every subcommand sets it;
+  // off for library users and test fixtures that must write such files on purpose). STL facet
+  // normals are never refused: a bad one is written as its triangle's own.
+  bool refuse_unusable_normals = false;
 };
 
 struct WriteInfo {

@@ -2,14 +2,17 @@
 #include <shadetool/io/obj_format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
+#include <shadetool/io/engine/newell_normal.h>
 #include <shadetool/io/number_text.h>
 #include <shadetool/io/split_face_colors.h>
+#include <shadetool/io/text_encoding.h>
 #include <shadetool/io/text_parse.h>
 
 namespace shadetool::io {
@@ -32,7 +35,10 @@ std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* wha
 
 }  // namespace
 
-Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
+Mesh read_obj(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
+  refuse_utf16(file_bytes, name);
+  const LineEndings lines(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
+  const std::string_view bytes = lines.lf();
   Mesh mesh;
   const char* p = bytes.data();
   const char* const end = p + bytes.size();
@@ -61,6 +67,9 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
   std::size_t corners_with_normal = 0, corners_with_tex = 0;
   std::size_t skipped_lines = 0;
   std::string skipped_keyword;
+  std::size_t skipped_empty_faces = 0, skipped_lines_l = 0, skipped_points = 0;
+  std::string pending_statements;              // grouping lines since the last face
+  bool any_statement = false;
 
   const char* eol = p;
   // Parses the next number of the line into x; false at the end of the line (or a comment).
@@ -151,15 +160,36 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
           if (have_ct) ct.push_back(t);
         }
         const std::size_t size = mesh.corner_vertex.size() - first_corner;
+        if (size == 0) {  // `f` alone: nothing to keep (other readers skip it too)
+          ++skipped_empty_faces;
+          if (eol == end) break;
+          p = eol + 1;
+          continue;
+        }
         if (size < 3)
           fail(name, line, "face has " + std::to_string(size) + (size == 1 ? " vertex" : " vertices") +
                                " (a face needs at least 3)");
         if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 1)
           fail(name, line, "too many face corners (more than 2^32)");
         mesh.face_start.push_back(static_cast<std::uint32_t>(mesh.corner_vertex.size()));
+        if (any_statement) {
+          if (!pending_statements.empty()) mesh.group_statements.push_back(std::move(pending_statements));
+          pending_statements.clear();
+          mesh.face_group_run.push_back(static_cast<std::uint32_t>(mesh.group_statements.size()));
+        }
       } else if ((kwlen == 1 && (kw[0] == 'o' || kw[0] == 'g' || kw[0] == 's')) ||
                  std::string_view(kw, kwlen) == "usemtl" || std::string_view(kw, kwlen) == "mtllib") {
-        // Accepted: grouping, smoothing groups and materials carry no geometry we keep.
+        // Grouping, smoothing groups and materials: kept verbatim, in place relative to the faces.
+        if (!any_statement) mesh.face_group_run.assign(mesh.num_faces(), 0);
+        any_statement = true;
+        const char* e = eol;
+        while (e > kw && is_space(e[-1])) --e;
+        pending_statements.append(kw, std::size_t(e - kw));
+        pending_statements += '\n';
+      } else if (kwlen == 1 && kw[0] == 'l') {
+        ++skipped_lines_l;
+      } else if (kwlen == 1 && kw[0] == 'p') {
+        ++skipped_points;
       } else {
         if (skipped_lines++ == 0) skipped_keyword.assign(kw, std::min<std::size_t>(kwlen, 40));
       }
@@ -168,30 +198,54 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
     p = eol + 1;
   }
 
+  if (!pending_statements.empty()) mesh.group_statements.push_back(std::move(pending_statements));
   if (mesh.num_vertices() == 0 && skipped_lines > 0)
     fail(name, 0, "not an OBJ file: no vertices, " + std::to_string(skipped_lines) + " line" +
                       (skipped_lines == 1 ? "" : "s") + " with unknown keywords (first: '" + skipped_keyword + "')");
+  if (mesh.num_vertices() == 0) fail(name, 0, "no vertex (`v` line) in the file: not a mesh");
   if (mesh.num_vertices() > std::numeric_limits<std::uint32_t>::max())
     fail(name, 0, "too many vertices (more than 2^32)");
 
   const std::size_t corners = mesh.corner_vertex.size();
-  if (corners_with_normal == corners && corners > 0) {
+  if (corners_with_normal > 0) {
+    // Faces without vn beside faces with vn: those corners get their face's normal (the mesh
+    // holds a normal for every corner or none); the faces that had vn keep theirs exactly.
+    std::size_t filled = 0, degenerate = 0;
+    std::uint32_t face_entry = kNone;
+    for (std::size_t f = 0; f + 1 < mesh.face_start.size(); ++f) {
+      face_entry = kNone;
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+        if (cn[c] != kNone) continue;
+        if (face_entry == kNone) {
+          Vec3d n = newell_normal(mesh, f);
+          if (n.x == 0 && n.y == 0 && n.z == 0) {
+            n = {0, 0, 1};  // a face with no area has no normal of its own: +z, counted
+            ++degenerate;
+          }
+          face_entry = std::uint32_t(normals.size() / 3);
+          normals.insert(normals.end(), {n.x, n.y, n.z});
+        }
+        cn[c] = face_entry;
+        ++filled;
+      }
+    }
     mesh.corner_normals = std::move(normals);
     mesh.corner_normal_index = std::move(cn);
-  } else if (corners_with_normal > 0) {
-    info.notes.push_back("normals (vn) dropped: " + std::to_string(corners - corners_with_normal) + " of " +
-                         std::to_string(corners) + " face corners have none");
+    if (filled > 0)
+      info.notes.push_back("normals (vn): " + std::to_string(filled) + " of " + std::to_string(corners) +
+                           " face corners have none: given their face's normal" +
+                           (degenerate > 0 ? " (" + std::to_string(degenerate) + (degenerate == 1 ? " face" : " faces") + " with no area: +z)"
+                                            : std::string()));
   }
-  if (corners_with_tex == corners && corners > 0) {
+  if (corners_with_tex > 0) {
+    // Corners without vt keep none (kNoTexcoord): OBJ writes them back as they were.
     const int dims = std::max(2, tex_dims);
     mesh.texcoord_dims = dims;
     mesh.texcoords.resize(tex.size() / 3 * std::size_t(dims));
     for (std::size_t i = 0; i < tex.size() / 3; ++i)
       for (int k = 0; k < dims; ++k) mesh.texcoords[i * std::size_t(dims) + std::size_t(k)] = tex[3 * i + std::size_t(k)];
     mesh.corner_texcoord_index = std::move(ct);
-  } else if (corners_with_tex > 0) {
-    info.notes.push_back("texture coordinates (vt) dropped: " + std::to_string(corners - corners_with_tex) + " of " +
-                         std::to_string(corners) + " face corners have none");
+    static_assert(kNone == kNoTexcoord, "a corner without vt is kNoTexcoord in the mesh");
   }
   if (!rgba.empty()) {
     mesh.color_channels = color_channels;
@@ -204,9 +258,19 @@ Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info) {
       info.notes.push_back(std::to_string(mesh.num_vertices() - colored_vertices) + " of " +
                            std::to_string(mesh.num_vertices()) + " vertices have no colour: given white");
   }
-  if (skipped_lines > 0)
-    info.notes.push_back("skipped " + std::to_string(skipped_lines) + " line" + (skipped_lines == 1 ? "" : "s") +
-                         " with keywords shadetool does not use (first: '" + skipped_keyword + "')");
+  if (skipped_lines + skipped_lines_l + skipped_points + skipped_empty_faces > 0) {
+    std::string what;
+    auto add = [&](std::size_t n, const std::string& kind) {
+      if (n > 0) what += (what.empty() ? "" : ", ") + std::to_string(n) + " " + kind;
+    };
+    add(skipped_lines_l, "`l` (polyline)");
+    add(skipped_points, "`p` (point)");
+    add(skipped_empty_faces, "`f` with no indices");
+    if (skipped_lines > 0)
+      add(skipped_lines, "with keywords shadetool does not use (first: '" + skipped_keyword + "')");
+    const std::size_t total = skipped_lines + skipped_lines_l + skipped_points + skipped_empty_faces;
+    info.notes.push_back("skipped " + std::to_string(total) + " line" + (total == 1 ? "" : "s") + ": " + what);
+  }
 
   // Values are kept as parsed (the double nearest to the text), never rounded: precision is only
   // the hint for the value type binary writers use.
@@ -237,6 +301,10 @@ void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
   out += "# written by shadetool\n";
   const std::size_t nv = mesh.num_vertices();
   const bool colors = mesh.has_vertex_colors() && mesh.vertex_colors.size() == nv * std::size_t(mesh.color_channels);
+  // `v x y z r g b`: readers (Blender, MeshLab, assimp) take 7 numbers as x y z w r g b or
+  // refuse them, so alpha is not written.
+  const int written_channels = std::min(mesh.color_channels, 3);
+  if (colors && mesh.color_channels == 4) info.notes.push_back("colour alpha not written: OBJ holds v x y z r g b");
   for (std::size_t v = 0; v < nv; ++v) {
     out += "v ";
     append_shortest(out, mesh.positions[3 * v]);
@@ -245,7 +313,7 @@ void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
     out += ' ';
     append_shortest(out, mesh.positions[3 * v + 2]);
     if (colors) {
-      for (int k = 0; k < mesh.color_channels; ++k) {
+      for (int k = 0; k < written_channels; ++k) {
         out += ' ';
         append_shortest_float(out, mesh.vertex_colors[v * std::size_t(mesh.color_channels) + std::size_t(k)]);
       }
@@ -290,14 +358,28 @@ void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
     }
   }
   const std::size_t nf = mesh.num_faces();
+  // Grouping statements (mtllib, usemtl, g, o, s) go back where they were relative to the faces.
+  const bool groups = mesh.has_groups();
+  const bool runs_per_face = mesh.face_group_run.size() == nf;
+  std::size_t next_run = 0;
+  auto write_runs_until = [&](std::size_t end_run) {
+    for (; next_run < end_run && next_run < mesh.group_statements.size(); ++next_run) out += mesh.group_statements[next_run];
+  };
+  if (groups && !runs_per_face) {
+    write_runs_until(mesh.group_statements.size());  // no face positions known: all before the faces
+    info.notes.push_back("grouping statements (mtllib, usemtl, g, o, s) written before the first face: their "
+                         "positions among the faces were not kept");
+  }
   for (std::size_t f = 0; f < nf; ++f) {
+    if (groups && runs_per_face) write_runs_until(mesh.face_group_run[f]);
     out += 'f';
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
       out += ' ';
       append_uint(out, std::uint64_t(mesh.corner_vertex[c]) + 1);
-      if (tex || source != NormalSource::None) {
+      const bool corner_tex = tex && mesh.corner_texcoord_index[c] != kNoTexcoord;
+      if (corner_tex || source != NormalSource::None) {
         out += '/';
-        if (tex) append_uint(out, std::uint64_t(mesh.corner_texcoord_index[c]) + 1);
+        if (corner_tex) append_uint(out, std::uint64_t(mesh.corner_texcoord_index[c]) + 1);
         if (source != NormalSource::None) {
           out += '/';
           const std::uint64_t n = source == NormalSource::Corner   ? input.corner_normal_index[c]
@@ -309,6 +391,7 @@ void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
     }
     out += '\n';
   }
+  if (groups) write_runs_until(mesh.group_statements.size());  // what followed the last face
 }
 
 }  // namespace shadetool::io

@@ -11,6 +11,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/io/number_text.h>
 #include <shadetool/io/split_corner_normals.h>
+#include <shadetool/io/text_encoding.h>
 #include <shadetool/io/text_parse.h>
 
 namespace shadetool::io {
@@ -46,8 +47,11 @@ class Lines {
 
 }  // namespace
 
-Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
+Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
   (void)info;
+  refuse_utf16(file_bytes, name);
+  const LineEndings text(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
+  const std::string_view bytes = text.lf();
   Mesh mesh;
   Lines lines(bytes);
   const char *b, *e;
@@ -209,6 +213,13 @@ Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info) {
   if (lines.next(b, e))
     fail(name, lines.line(), "more data than the header declares ('" + token_at(b, e) + "' after the last face)");
 
+  // Four components whose alpha is 1 everywhere (what the writer gives rgb colours) read as rgb.
+  if (channels == 4) {
+    bool opaque = true;
+    for (std::size_t i = 3; i < vrgba.size() && opaque; i += 4) opaque = vrgba[i] == 1.0f;
+    for (std::size_t i = 3; i < frgba.size() && opaque; i += 4) opaque = frgba[i] == 1.0f;
+    if (opaque) channels = 3;
+  }
   auto pack = [&](const std::vector<float>& rgba, std::vector<float>& out) {
     const std::size_t n = rgba.size() / 4;
     out.resize(n * std::size_t(channels));
@@ -270,8 +281,10 @@ void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
         out += ' ';
         append_shortest(out, mesh.vertex_normals[3 * v + std::size_t(k)]);
       }
-    if (vcolors)
+    if (vcolors) {
       for (int k = 0; k < ch; ++k) color(mesh.vertex_colors[std::size_t(ch) * v + std::size_t(k)]);
+      if (ch == 3) color(1.0f);  // r g b a: readers (assimp, MeshLab) expect four components
+    }
     out += '\n';
   }
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
@@ -280,8 +293,10 @@ void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
       out += ' ';
       append_uint(out, mesh.corner_vertex[c]);
     }
-    if (fcolors)
+    if (fcolors) {
       for (int k = 0; k < ch; ++k) color(mesh.face_colors[std::size_t(ch) * f + std::size_t(k)]);
+      if (ch == 3) color(1.0f);
+    }
     out += '\n';
   }
 }

@@ -4,7 +4,9 @@
 // then `#V #F [#E]`, #V vertex lines `x y z [nx ny nz] [r g b [a]] [s t]` and #F face lines
 // `k i_1 ... i_k [r g b [a]]` (0-based indices, polygons kept). Colours written as integers are
 // 0..255 and divided by 255; colours with a decimal point or exponent are taken as floats in [0,1].
-// Comments (#) and blank lines are skipped anywhere. Each vertex and face is one line; a line with
+// Four components whose alpha is 1 everywhere read as rgb (Mesh::color_channels 3): the writer
+// gives rgb colours alpha 1.
+// Comments (#) and blank lines are skipped anywhere. CR, LF and CRLF line endings, a UTF-8 BOM. Each vertex and face is one line; a line with
 // the wrong number of values, or content after the last face, means the header counts disagree
 // with the body and is an error. Counts are bounded by the file size before allocation.
 // Precision: as OBJ (obj_format.h): values stored as parsed, never rounded; Mesh::precision is
@@ -14,8 +16,9 @@
 // (C with vertex colours, N with vertex normals; per-corner normals are split into vertices,
 // WriteInfo::split_vertices); face colours after the indices (native in any OFF: no split).
 // Colours as floats when Mesh::colors_are_float, always with a decimal point ("1.0") so that they
-// cannot read back as 0..255 integers; else integers 0..255. Face normals and texcoords have no
-// OFF form (notes).
+// cannot read back as 0..255 integers; else integers 0..255. Always four components r g b a
+// (alpha 1 for rgb meshes): assimp and MeshLab read COFF colours as four. Face normals and
+// texcoords have no OFF form (notes).
 #pragma once
 
 #include <string>

@@ -57,6 +57,12 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   const bool uchar_count = max_size <= 255;
   const bool int_index = nv <= std::size_t(std::numeric_limits<std::int32_t>::max());
   if (wedge && mesh.texcoord_dims != 2) info.notes.push_back("texture coordinates: only u v written to PLY");
+  std::size_t corners_without_tex = 0;
+  if (wedge)
+    for (std::uint32_t t : mesh.corner_texcoord_index) corners_without_tex += t == kNoTexcoord;
+  if (corners_without_tex > 0)
+    info.notes.push_back("texture coordinates: " + std::to_string(corners_without_tex) +
+                         " face corners had none and are written as (0, 0): PLY's texcoord list holds one per corner");
 
   out.reserve(out.size() + 300 + nv * (dbl ? 24 : 12) * (vnormals ? 2 : 1) + mesh.num_corners() * 4 + nf);
   out += "ply\nformat ";
@@ -139,6 +145,11 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
       if (!binary) out += ' ';
       count_value(2 * (e - b));
       for (std::uint32_t c = b; c < e; ++c) {
+        if (mesh.corner_texcoord_index[c] == kNoTexcoord) {
+          real_value(0.0, false);
+          real_value(0.0, false);
+          continue;
+        }
         const std::size_t t = std::size_t(mesh.corner_texcoord_index[c]) * td;
         real_value(mesh.texcoords[t], false);
         real_value(td > 1 ? mesh.texcoords[t + 1] : 0.0, false);

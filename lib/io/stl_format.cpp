@@ -10,7 +10,9 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
+#include <shadetool/io/engine/newell_normal.h>
 #include <shadetool/io/number_text.h>
+#include <shadetool/io/text_encoding.h>
 #include <shadetool/io/text_parse.h>
 
 namespace shadetool::io {
@@ -101,10 +103,52 @@ std::uint32_t load_le_u32(const char* p) {
          std::uint32_t(std::uint8_t(p[2])) << 16 | std::uint32_t(std::uint8_t(p[3])) << 24;
 }
 
+// Unit normal of a triangle (right-handed winding), or (0,0,0) when its area is zero or not
+// finite. The cross product is scaled by its largest component before the length is taken, so
+// its square neither overflows nor underflows (divisors checked).
+Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  Vec3d n = cross(b - a, c - a);
+  const double m = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
+  if (!(m > 0) || !std::isfinite(m)) return {0, 0, 0};
+  n = n * (1.0 / m);
+  return n * (1.0 / length(n));  // length in [1, sqrt(3)]
+}
+
+// Facet normals as read, checked against the winding: exporters often write (0,0,0) or the
+// opposite normal. A zero normal, or one pointing away from the triangle's own (dot < 0), is
+// replaced by the triangle's unit normal; a zero normal of a triangle with no area becomes +z.
+// NaN/Inf normals stay as read (info reports them; commands refuse them). All zero: none kept.
 void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merger, ReadInfo& info) {
   bool any = false;
   for (double n : normals) any = any || n != 0;
-  if (any) mesh.face_normals = std::move(normals);
+  if (any) {
+    std::size_t zero = 0, against = 0, no_area = 0;
+    for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+      const std::uint32_t c = mesh.face_start[f];
+      const Vec3d g = triangle_normal(mesh.position(mesh.corner_vertex[c]), mesh.position(mesh.corner_vertex[c + 1]),
+                                      mesh.position(mesh.corner_vertex[c + 2]));
+      const Vec3d n = get3(normals, f);
+      const bool is_zero = n.x == 0 && n.y == 0 && n.z == 0;
+      if (is_zero && g.x == 0 && g.y == 0 && g.z == 0) {
+        set3(normals, f, {0, 0, 1});
+        ++no_area;
+      } else if (is_zero) {
+        set3(normals, f, g);
+        ++zero;
+      } else if (std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(dot(n, g) > 0)) {
+        // against the winding, or perpendicular to the face (NaN/Inf stay as read: info reports them)
+        set3(normals, f, g);
+        ++against;
+      }
+    }
+    mesh.face_normals = std::move(normals);
+    if (zero + against + no_area > 0)
+      info.notes.push_back("facet normals replaced by the triangles' own: " + std::to_string(zero) + " zero, " +
+                           std::to_string(against) + " against the winding" +
+                           (no_area > 0 ? ", " + std::to_string(no_area) + " zero on a triangle with no area (+z)" : std::string()));
+  } else if (mesh.num_faces() > 0) {
+    info.notes.push_back("facet normals all (0,0,0): not kept (normals are computed from the triangles where needed)");
+  }
   info.merged_vertices = merger.merged();
   if (merger.merged() > 0)
     info.notes.push_back("merged " + std::to_string(merger.merged()) + " corners with identical positions into " +
@@ -220,11 +264,15 @@ Mesh read_ascii(std::string_view bytes, const std::string& name, ReadInfo& info)
 
 }  // namespace
 
-Mesh read_stl(std::string_view bytes, const std::string& name, ReadInfo& info) {
-  if (bytes.size() >= 84) {
-    const std::uint32_t n = load_le_u32(bytes.data() + 80);
-    if (84 + 50 * std::uint64_t(n) == bytes.size()) return read_binary(bytes, n, info);
+Mesh read_stl(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
+  if (file_bytes.size() >= 84) {
+    const std::uint32_t n = load_le_u32(file_bytes.data() + 80);
+    if (84 + 50 * std::uint64_t(n) == file_bytes.size()) return read_binary(file_bytes, n, info);
   }
+  // Not binary by its size: text, after the checks every text reader makes.
+  refuse_utf16(file_bytes, name);
+  const LineEndings text(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
+  const std::string_view bytes = text.lf();
   // Ascii: starts with "solid" and reads as text. Many binary files also start with "solid" in
   // their 80-byte header, but their counts and floats soon hold control bytes (0x00-0x08...).
   const char* p = bytes.data();
@@ -255,13 +303,6 @@ void put_float(std::string& out, float f) {
   out.append(b, 4);
 }
 
-// Unit normal of a triangle, or (0,0,0) when its area is zero (or not finite).
-Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  const Vec3d n = cross(b - a, c - a);
-  const double len = length(n);
-  return (len > 0 && std::isfinite(len)) ? n * (1.0 / len) : Vec3d{0, 0, 0};
-}
-
 }  // namespace
 
 void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info) {
@@ -279,6 +320,7 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
   if (mesh.has_texcoords()) info.notes.push_back("texture coordinates not written to STL");
 
   const bool face_normals = mesh.has_face_normals();
+  std::size_t no_area = 0, replaced = 0;
   if (binary) {
     out.reserve(out.size() + 84 + 50 * triangles);
     std::string header = "binary STL written by shadetool";
@@ -296,9 +338,19 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
     for (std::uint32_t c = s + 1; c + 1 < e; ++c) {
       const Vec3d p1 = mesh.position(mesh.corner_vertex[c]);
       const Vec3d p2 = mesh.position(mesh.corner_vertex[c + 1]);
-      const Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(p0, p1, p2);
+      Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(p0, p1, p2);
+      const bool usable = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(n.x == 0 && n.y == 0 && n.z == 0);
+      if (face_normals && !usable) {  // a zero or NaN face normal: the triangle's own instead
+        n = triangle_normal(p0, p1, p2);
+        ++replaced;
+      }
+      if (n.x == 0 && n.y == 0 && n.z == 0) n = newell_normal(mesh, f);  // a fan triangle: its polygon's
+      if (n.x == 0 && n.y == 0 && n.z == 0) {  // no area at all: no normal of its own
+        n = {0, 0, 1};
+        ++no_area;
+      }
       if (binary) {
-        for (const Vec3d* v : {&n, &p0, &p1, &p2}) {
+        for (const Vec3d* v : {static_cast<const Vec3d*>(&n), &p0, &p1, &p2}) {
           put_float(out, float(v->x));
           put_float(out, float(v->y));
           put_float(out, float(v->z));
@@ -325,6 +377,12 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
     }
   }
   if (!binary) out += "endsolid shadetool\n";
+  if (replaced > 0)
+    info.notes.push_back(std::to_string(replaced) + " zero or non-finite face normals written as the triangles' own "
+                                                    "facet normals");
+  if (no_area > 0)
+    info.notes.push_back(std::to_string(no_area) + " triangles with no area written with facet normal +z (STL "
+                                                   "has no 'none'; a zero normal is never written)");
 }
 
 }  // namespace shadetool::io

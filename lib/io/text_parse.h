@@ -91,12 +91,25 @@ inline bool outside_float_range(double x) {
           (a != 0 && a <= double(std::numeric_limits<float>::denorm_min()) / 2));
 }
 
-// The token starting at p (for messages), at most 40 characters.
+// Text quoted in a message, at most `max` bytes: a longer text is cut at the last space before
+// the limit (mid-word only when one word is longer than the limit) and ends in an ellipsis.
+inline std::string quoted_excerpt(std::string_view s, std::size_t max) {
+  if (s.size() <= max) return std::string(s);
+  std::size_t cut = max;
+  const std::size_t space = s.substr(0, max + 1).find_last_of(" \t");
+  if (space != std::string_view::npos && space > max / 2) cut = space;
+  while (cut > 0 && (s[cut - 1] == ' ' || s[cut - 1] == '\t')) --cut;
+  // Never cut inside a UTF-8 sequence: back up over continuation bytes.
+  while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;
+  return std::string(s.substr(0, cut)) + "\u2026";
+}
+
+// The token starting at p (for messages), at most 40 characters (then an ellipsis).
 inline std::string token_at(const char* p, const char* end) {
   p = skip_spaces(p, end);
   const char* q = p;
-  while (q < end && !is_space_or_newline(*q) && q - p < 40) ++q;
-  return std::string(p, q);
+  while (q < end && !is_space_or_newline(*q) && q - p <= 40) ++q;
+  return quoted_excerpt(std::string_view(p, std::size_t(q - p)), 40);
 }
 
 }  // namespace shadetool::io

@@ -40,6 +40,7 @@ std::size_t remove_faces(Mesh& mesh, const std::vector<std::uint8_t>& remove) {
   const bool fn = mesh.has_face_normals(), fc = mesh.has_face_colors();
   const bool cn = mesh.has_corner_normals(), ct = mesh.has_texcoords();
   const std::size_t ch = std::size_t(mesh.color_channels);
+  const bool fg = mesh.face_group_run.size() == F;  // OBJ statements stay with the faces that remain
   std::size_t kept = 0, corner_out = 0;
   for (std::size_t f = 0; f < F; ++f) {
     if (remove[f]) continue;
@@ -51,6 +52,7 @@ std::size_t remove_faces(Mesh& mesh, const std::vector<std::uint8_t>& remove) {
     }
     if (fn) for (int i = 0; i < 3; ++i) mesh.face_normals[3 * kept + i] = mesh.face_normals[3 * f + i];
     if (fc) for (std::size_t i = 0; i < ch; ++i) mesh.face_colors[ch * kept + i] = mesh.face_colors[ch * f + i];
+    if (fg) mesh.face_group_run[kept] = mesh.face_group_run[f];
     mesh.face_start[kept + 1] = std::uint32_t(corner_out);
     ++kept;
   }
@@ -60,6 +62,7 @@ std::size_t remove_faces(Mesh& mesh, const std::vector<std::uint8_t>& remove) {
   if (ct) mesh.corner_texcoord_index.resize(corner_out);
   if (fn) mesh.face_normals.resize(3 * kept);
   if (fc) mesh.face_colors.resize(ch * kept);
+  if (fg) mesh.face_group_run.resize(kept);
   return F - kept;
 }
 

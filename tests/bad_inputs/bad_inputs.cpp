@@ -399,7 +399,7 @@ TEST_CASE("bad inputs: output path equal to the input path is refused, the input
       argv.insert(argv.end(), sub.args.begin(), sub.args.end());
       const ProcessResult r = run_process(argv);
       INFO(sub.name << " " << out[0] << " " << out[1]);
-      CHECK(r.code == 1);
+      CHECK(r.code == 2);  // a usage error, found before any work (issue 21, item 1)
       check_one_line(r.err, input.string());
       CHECK(r.err.find("is the input file") != std::string::npos);
       CHECK(read_file(input.string()) == before);

@@ -56,3 +56,22 @@ TEST_CASE("write_mesh: a failing write leaves an existing output untouched", "[a
   CHECK(read_file(dir / "out.xyz") == "precious");
   CHECK(files_in(dir) == 1);
 }
+
+TEST_CASE("write_files_atomically: files that belong together are all replaced or none is", "[atomic_write][errors]") {
+  ScratchDir dir;
+  write_file(dir / "mesh.obj", "old mesh");
+  write_file(dir / "report.json", "old report");
+  std::filesystem::create_directory(dir / "d.json");
+  // The second file cannot be written (a directory): the first is not replaced either.
+  CHECK(error_of([&] { io::write_files_atomically({{dir / "mesh.obj", "new mesh"}, {dir / "d.json", "r"}}); }) ==
+        dir / "d.json" + ": cannot write: is a directory");
+  CHECK(read_file(dir / "mesh.obj") == "old mesh");
+  CHECK(error_of([&] { io::write_files_atomically({{dir / "mesh.obj", "new mesh"}, {dir / "no/r.json", "r"}}); }) ==
+        dir / "no/r.json" + ": cannot write: No such file or directory");
+  CHECK(read_file(dir / "mesh.obj") == "old mesh");
+  CHECK(files_in(dir) == 2);  // mesh.obj, report.json: no temporaries left
+  io::write_files_atomically({{dir / "mesh.obj", "new mesh"}, {dir / "report.json", "new report"}});
+  CHECK(read_file(dir / "mesh.obj") == "new mesh");
+  CHECK(read_file(dir / "report.json") == "new report");
+  CHECK(files_in(dir) == 2);
+}

@@ -39,8 +39,9 @@ TEST_CASE("OBJ: negative indices count back from the last element defined so far
   // After 4 vertices, -1 is vertex 4 (index 3); after the 5th, -1 is index 4.
   Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf -4//-1 -3//-1 -2//-1\nv 2 2 0\nf -1 -2 -3\n", Format::Obj);
   CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 4, 3, 2});
-  // the second face has no normal: normals are dropped with a note (all corners or none)
-  CHECK(!m.has_corner_normals());
+  // the second face has no normal: it gets its face's normal, the first keeps vn 1 (issue 21, item 5)
+  REQUIRE(m.has_corner_normals());
+  CHECK(m.corner_normal_index[0] == 0);
 }
 
 TEST_CASE("OBJ: polygons, duplicate faces and isolated vertices are kept in order", "[obj]") {
@@ -83,7 +84,7 @@ TEST_CASE("OBJ: unknown keywords are skipped with one note", "[obj]") {
   CHECK(m.num_faces() == 1);
   REQUIRE(info.notes.size() == 1);
   CHECK(info.notes[0].find("skipped 2 lines") != std::string::npos);
-  CHECK(info.notes[0].find("'l'") != std::string::npos);
+  CHECK(info.notes[0].find("1 `l` (polyline), 1 `p` (point)") != std::string::npos);
 }
 
 TEST_CASE("OBJ: vertex colours after xyz, w ignored", "[obj]") {
@@ -323,11 +324,22 @@ TEST_CASE("OBJ: errors name the file and line", "[obj][errors]") {
   CHECK(err("# nothing\r\n\r\nv 1 2 3\r\nv 1 2 e\r\n") == "m.obj:4: malformed number 'e'");
 }
 
-TEST_CASE("OBJ: mixed presence of vn or vt drops them with a note", "[obj]") {
+TEST_CASE("OBJ: partial vn and vt are kept per face (vt absent where absent, vn from the face) with one note", "[obj]") {
+  // issue 21, item 5: `f 1/1/1 2/2/1 3/1/1` beside `f 1 2 3` keeps the first face's vt and vn.
   ReadInfo info;
-  Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nf 1/1/1 2/1/1 3/1/1\nf 1 2 3\n", Format::Obj, &info);
-  CHECK(!m.has_corner_normals());
-  CHECK(!m.has_texcoords());
-  REQUIRE(info.notes.size() == 2);
-  CHECK(info.notes[0] == "normals (vn) dropped: 3 of 6 face corners have none");
+  Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0.6 0.8\nvt 0.25 0.5\nvt 1 0\nf 1/1/1 2/2/1 3/1/1\nf 1 2 3\n",
+                     Format::Obj, &info);
+  REQUIRE(m.has_corner_normals());
+  REQUIRE(m.has_texcoords());
+  CHECK(m.corner_texcoord_index == std::vector<std::uint32_t>{0, 1, 0, kNoTexcoord, kNoTexcoord, kNoTexcoord});
+  // the first face keeps vn 1 exactly; the second gets its own geometric normal, +z (counter-clockwise)
+  for (int c = 0; c < 3; ++c) CHECK(get3(m.corner_normals, m.corner_normal_index[std::size_t(c)]) == Vec3d{0, 0.6, 0.8});
+  for (int c = 3; c < 6; ++c) CHECK(get3(m.corner_normals, m.corner_normal_index[std::size_t(c)]) == Vec3d{0, 0, 1});
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0] == "normals (vn): 3 of 6 face corners have none: given their face's normal");
+  // Written back as OBJ, the face without vt has none again.
+  WriteOptions o;
+  o.format = Format::Obj;
+  const std::string text = write_mesh_to_memory(m, o);
+  CHECK(text.find("f 1/1/1 2/2/1 3/1/1\nf 1//2 2//2 3//2\n") != std::string::npos);
 }

@@ -18,11 +18,15 @@ TEST_CASE("OFF: plain, with comments, counts on the keyword line, polygons", "[o
 TEST_CASE("OFF: NOFF normals, COFF integer and float colours, face colours", "[off]") {
   Mesh n = read_text("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0.6 0 0.8\n3 0 1 2\n", Format::Off);
   CHECK(n.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, 1, 0.6, 0, 0.8});  // as parsed, not narrowed
-  Mesh c = read_text("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 51 255\n3 0 1 2 10 20 30\n", Format::Off);
+  Mesh c = read_text("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 128\n0 1 0 0 0 51 255\n3 0 1 2 10 20 30\n", Format::Off);
   CHECK(c.color_channels == 4);
   CHECK(!c.colors_are_float);
-  CHECK(c.vertex_colors == std::vector<float>{1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 0.2f, 1});
+  CHECK(c.vertex_colors == std::vector<float>{1, 0, 0, 1, 0, 1, 0, 128 / 255.0f, 0, 0, 0.2f, 1});
   CHECK(c.face_colors == std::vector<float>{10 / 255.0f, 20 / 255.0f, 30 / 255.0f, 1});
+  // alpha 1 everywhere (what the writer gives rgb colours) reads as rgb
+  Mesh opaque = read_text("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 51 255\n3 0 1 2\n", Format::Off);
+  CHECK(opaque.color_channels == 3);
+  CHECK(opaque.vertex_colors == std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 0.2f});
   Mesh f = read_text("COFF\n3 1 0\n0 0 0 1.0 0.5 0\n1 0 0 0 1.0 0\n0 1 0 0 0 1.0\n3 0 1 2\n", Format::Off);
   CHECK(f.colors_are_float);
   CHECK(f.color_channels == 3);
@@ -60,13 +64,14 @@ TEST_CASE("OFF writer: face colours native after the indices; float colours keep
   WriteInfo wi;
   // uchar colours: round(255 c): 1 -> 255, 0.5 -> 128 (127.5 rounds up), 0.25 -> 64 (63.75)
   std::string text = write_mesh_to_memory(m, o, &wi);
-  CHECK(text == "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 255 0 0\n3 1 3 2 128 64 255\n");
+  // four components r g b a (alpha 255 for rgb): what assimp and MeshLab read (issue 21, item 10)
+  CHECK(text == "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 255 0 0 255\n3 1 3 2 128 64 255 255\n");
   CHECK(wi.split_vertices == 0);
   CHECK(wi.notes.empty());
   // float colours: 1 0 0 written as integers would read back as 1/255 0 0
   m.colors_are_float = true;
   text = write_mesh_to_memory(m, o);
-  CHECK(text.find("\n3 0 1 2 1.0 0.0 0.0\n3 1 3 2 0.5 0.25 1.0\n") != std::string::npos);
+  CHECK(text.find("\n3 0 1 2 1.0 0.0 0.0 1.0\n3 1 3 2 0.5 0.25 1.0 1.0\n") != std::string::npos);
   const Mesh back = read_text(text, Format::Off);
   CHECK(back.colors_are_float);
   CHECK(back.num_vertices() == 4);

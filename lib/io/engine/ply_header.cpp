@@ -5,12 +5,13 @@
 #include <cstring>
 
 #include <shadetool/core/error.h>
+#include <shadetool/io/text_encoding.h>
 #include <shadetool/io/text_parse.h>
 
 namespace shadetool::io::ply {
 
 PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, ReadInfo& info) {
-  (void)info;
+  refuse_utf16(bytes, name);
   const char* p = bytes.data();
   const char* const end = p + bytes.size();
   std::size_t line = 0;
@@ -41,6 +42,8 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, Read
   std::string_view l;
   if (!next_line(l) || l != "ply") fail(name, 1, "not a PLY file (first line is not 'ply')");
   PlyHeader header;
+  std::size_t unknown_lines = 0;
+  std::string first_unknown;
   Encoding& enc = header.encoding;
   bool have_format = false, have_end = false;
   std::vector<Element>& elements = header.elements;
@@ -86,9 +89,15 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, Read
       have_end = true;
       break;
     } else {
-      fail(name, line, "unexpected header line '" + std::string(l.substr(0, 40)) + "'");
+      // A line without a PLY keyword (Blender 2.4x wrote `Created by Blender3D ...` there): read
+      // as a comment, as other readers do, and counted in a note.
+      if (unknown_lines++ == 0) first_unknown = quoted_excerpt(l, 40);
     }
   }
+  if (unknown_lines > 0)
+    info.notes.push_back(std::to_string(unknown_lines) + " header line" + (unknown_lines == 1 ? "" : "s") +
+                         " without a PLY keyword read as comment" + (unknown_lines == 1 ? "" : "s") + " (first: '" +
+                         first_unknown + "')");
   if (!have_end) fail(name, line, "PLY header has no end_header");
   if (!have_format) fail(name, 2, "PLY header has no format line");
   header.body_offset = std::size_t(p - bytes.data());
