@@ -25,7 +25,8 @@
 //        phong    world position and world normal interpolated, the normal renormalised, the
 //                 lighting equation evaluated at the sample (render/lighting_adapter.h)
 //      quads: the sample's world point through the inverse bilinear map (inverse_bilinear.h) and
-//      the four corners' values blended bilinearly, so no diagonal seam shows;
+//      the four corners' values (colours; for phong positions and normals) blended bilinearly,
+//      so no diagonal seam shows and the image does not depend on the diagonal fanned along;
 //   5. box filter: each pixel is the mean of its N x N samples (strata centres, background where
 //      no triangle is).
 //

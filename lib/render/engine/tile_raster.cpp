@@ -86,11 +86,14 @@ Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double 
     case RenderShading::Phong: {
       double ob[3];
       original_barycentrics(in, t, lambda, ob);
-      Vec3d p{0, 0, 0};
-      for (int k = 0; k < 3; ++k) p += get3(s.positions_world, t.vertex[k]) * ob[k];
+      // Position and normal from the same weights: on a quad the point of the bilinear patch, so
+      // the quad's look does not depend on the diagonal it was fanned along.
       const VertexWeights w = vertex_weights(s, t, ob, fallbacks);
-      Vec3d n{0, 0, 0};
-      for (int k = 0; k < w.count; ++k) n += get3(s.normals_world, w.vertex[k]) * w.weight[k];
+      Vec3d p{0, 0, 0}, n{0, 0, 0};
+      for (int k = 0; k < w.count; ++k) {
+        p += get3(s.positions_world, w.vertex[k]) * w.weight[k];
+        n += get3(s.normals_world, w.vertex[k]) * w.weight[k];
+      }
       n = normalized_or(n, Vec3d{0, 0, 0});  // zero: the equation keeps only the ambient terms
       return s.shader->shade(p, n, counters);
     }
