@@ -39,6 +39,7 @@ struct SetupContext {
   double guard;                     // guard band g (clip_polygon.h)
   bool mirror;                      // det(V M) < 0
   bool two_sided;
+  bool quad = false;                // the face being set up has 4 corners
 };
 
 struct SetupOutput {
@@ -46,6 +47,12 @@ struct SetupOutput {
   std::vector<double> clip_b;
   std::size_t near_clipped = 0;
 };
+
+// Nearest integer, halves away from zero (|x| < 2^30 here: the guard band): a truncating cast
+// instead of llround's library call, the same for every triangle sharing the vertex.
+inline std::int64_t round_to_integer(double x) {
+  return x >= 0 ? std::int64_t(x + 0.5) : -std::int64_t(-x + 0.5);
+}
 
 // One original triangle (mesh vertices v[3], clip coordinates c[3]) to screen triangles.
 TriangleFate setup_triangle(const SetupContext& ctx, std::uint32_t face, const std::uint32_t v[3], const ClipPoint c[3],
@@ -77,8 +84,8 @@ TriangleFate setup_triangle(const SetupContext& ctx, std::uint32_t face, const s
     inv_w[i] = 1.0 / poly[i].w;                           // checked on the line before
     const double xs = (poly[i].x * inv_w[i] * 0.5 + 0.5) * ctx.sample_width;
     const double ys = (0.5 - poly[i].y * inv_w[i] * 0.5) * ctx.sample_height;
-    X[i] = std::int32_t(std::llround(xs * kSubUnits));
-    Y[i] = std::int32_t(std::llround(ys * kSubUnits));
+    X[i] = std::int32_t(round_to_integer(xs * kSubUnits));
+    Y[i] = std::int32_t(round_to_integer(ys * kSubUnits));
     z[i] = poly[i].z * inv_w[i];
   }
   std::int64_t area = 0;  // twice the polygon's signed area, y down
@@ -97,6 +104,7 @@ TriangleFate setup_triangle(const SetupContext& ctx, std::uint32_t face, const s
     if (a < 0) std::swap(k[1], k[2]);
     ScreenTriangle t;
     t.face = face;
+    t.quad = ctx.quad;
     for (int j = 0; j < 3; ++j) {
       t.X[j] = X[k[j]];
       t.Y[j] = Y[k[j]];
@@ -215,6 +223,8 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t k) {
     SetupOutput& out = parts[k];
     RenderStats& st = part_stats[k];
+    SetupContext face_ctx = ctx;
+    out.triangles.reserve(2 * kChunk);
     for (std::size_t f = k * kChunk; f < std::min(F, (k + 1) * kChunk); ++f) {
       const std::size_t size = mesh.face_size(f);
       if (size < 3) {
@@ -222,12 +232,13 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
         continue;
       }
       const std::uint32_t* corners = mesh.corner_vertex.data() + mesh.face_start[f];
+      face_ctx.quad = size == 4;
       bool drawn = false, culled = false, outside = false;
       for (std::size_t i = 1; i + 1 < size; ++i) {
         const std::uint32_t v[3] = {corners[0], corners[i], corners[i + 1]};
         const ClipPoint c[3] = {clip[v[0]], clip[v[1]], clip[v[2]]};
         ++st.triangles;
-        switch (setup_triangle(ctx, std::uint32_t(f), v, c, out)) {
+        switch (setup_triangle(face_ctx, std::uint32_t(f), v, c, out)) {
           case TriangleFate::Drawn: drawn = true; break;
           case TriangleFate::Culled: culled = true; break;
           case TriangleFate::Outside: outside = true; break;
@@ -250,6 +261,13 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
   raster.count_coverage = options.count_coverage;
   RenderStats& stats = result.stats;
   stats.faces = F;
+  std::size_t total = 0, total_b = 0;
+  for (const SetupOutput& part : parts) {
+    total += part.triangles.size();
+    total_b += part.clip_b.size();
+  }
+  raster.triangles.reserve(total);
+  raster.clip_b.reserve(total_b);
   for (std::size_t k = 0; k < chunks; ++k) {
     const std::int32_t offset = std::int32_t(raster.clip_b.size() / 9);
     for (ScreenTriangle t : parts[k].triangles) {

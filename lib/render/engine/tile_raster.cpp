@@ -7,6 +7,7 @@
 #include <limits>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <shadetool/render/fill_rule.h>
@@ -42,7 +43,7 @@ struct VertexWeights {
 VertexWeights vertex_weights(const SurfaceInputs& s, const ScreenTriangle& t, const double ob[3], std::size_t& fallbacks) {
   VertexWeights w;
   const Mesh& mesh = *s.mesh;
-  if (mesh.face_size(t.face) == 4) {
+  if (t.quad) {
     const std::uint32_t* q = mesh.corner_vertex.data() + mesh.face_start[t.face];
     Vec3d corners[4];
     for (int k = 0; k < 4; ++k) corners[k] = get3(s.positions_world, q[k]);
@@ -105,17 +106,37 @@ struct TileResult {
   std::size_t covered = 0, fallbacks = 0;
 };
 
+// Per-thread scratch for one tile (reused from tile to tile).
+struct TileBuffers {
+  std::vector<double> depth, lambda1, lambda2;
+  std::vector<std::uint32_t> owner;
+};
+
 TileResult raster_tile(const RasterInput& in, const std::vector<std::uint32_t>& bin, int tile_x, int tile_y,
-                       RasterOutput& out) {
+                       TileBuffers& buffers, RasterOutput& out) {
   const int N = in.samples;
   const int px0 = tile_x * kTilePixels, py0 = tile_y * kTilePixels;
   const int px1 = std::min(in.width, px0 + kTilePixels), py1 = std::min(in.height, py0 + kTilePixels);
+  const Vec3d background = in.surface->background;
+  if (bin.empty()) {  // nothing here: the background, no per-sample work
+    for (int py = py0; py < py1; ++py)
+      for (int pxl = px0; pxl < px1; ++pxl) {
+        float* o = out.image.pixel(pxl, py);
+        o[0] = float(background.x), o[1] = float(background.y), o[2] = float(background.z);
+      }
+    return {};
+  }
   const int sx0 = px0 * N, sy0 = py0 * N, sx1 = px1 * N - 1, sy1 = py1 * N - 1;  // inclusive
   const int tw = sx1 - sx0 + 1, th = sy1 - sy0 + 1;
   const std::size_t count = std::size_t(tw) * std::size_t(th);
-  std::vector<double> depth(count, std::numeric_limits<double>::infinity());
-  std::vector<std::uint32_t> owner(count, kNone);
-  std::vector<double> lambda1(count), lambda2(count);
+  buffers.depth.assign(count, std::numeric_limits<double>::infinity());
+  buffers.owner.assign(count, kNone);
+  buffers.lambda1.resize(count);
+  buffers.lambda2.resize(count);
+  double* depth = buffers.depth.data();
+  std::uint32_t* owner = buffers.owner.data();
+  double* lambda1 = buffers.lambda1.data();
+  double* lambda2 = buffers.lambda2.data();
   const std::size_t full_width = std::size_t(in.width) * std::size_t(N);
 
   for (const std::uint32_t id : bin) {
@@ -165,7 +186,6 @@ TileResult raster_tile(const RasterInput& in, const std::vector<std::uint32_t>& 
   TileResult r;
   ShadeCounters counters;
   const double inv_samples = 1.0 / double(N * N);  // N >= 1
-  const Vec3d background = in.surface->background;
   for (int py = py0; py < py1; ++py) {
     for (int pxl = px0; pxl < px1; ++pxl) {
       Vec3d sum{0, 0, 0};
@@ -214,13 +234,14 @@ RasterOutput rasterize_tiles(const RasterInput& in) {
   }
 
   std::vector<TileResult> results(bins.size());
-  auto run = [&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t k = r.begin(); k < r.end(); ++k)
-        results[k] = raster_tile(in, bins[k], int(k % std::size_t(tiles_x)), int(k / std::size_t(tiles_x)), out);
-    });
-  };
-  run();  // in the caller's arena (render_mesh sets the thread count)
+  tbb::enumerable_thread_specific<TileBuffers> scratch;
+  // In the caller's arena (render_mesh sets the thread count); which thread runs a tile does not
+  // change its pixels.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+    TileBuffers& buffers = scratch.local();
+    for (std::size_t k = r.begin(); k < r.end(); ++k)
+      results[k] = raster_tile(in, bins[k], int(k % std::size_t(tiles_x)), int(k / std::size_t(tiles_x)), buffers, out);
+  });
   for (const TileResult& r : results) {
     out.samples_covered += r.covered;
     out.quad_fallbacks += r.fallbacks;
