@@ -42,7 +42,7 @@ struct RenderCliOptions {
 void write_image(const std::string& path, const std::string& bytes) { shadetool::io::write_file_atomically(path, bytes); }
 
 std::string encode_image(const shadetool::ImageRGB& image, bool hdr, const std::string& name) {
-  if (hdr) return shadetool::io::encode_pfm(image.width, image.height, image.rgb, name);
+  if (hdr) return shadetool::io::encode_pfm(image.width, image.height, image.rgb.data(), image.rgb.size(), name);
   std::vector<std::uint8_t> srgb8(image.rgb.size());
   for (std::size_t i = 0; i < image.rgb.size(); ++i) srgb8[i] = shadetool::encode_srgb_8bit(image.rgb[i]);
   return shadetool::io::encode_png_srgb8(image.width, image.height, srgb8, name);

@@ -8,12 +8,12 @@
 
 namespace shadetool::io {
 
-std::string encode_pfm(int width, int height, const std::vector<float>& linear_rgb, const std::string& name) {
-  if (width <= 0 || height <= 0 || linear_rgb.size() != std::size_t(width) * std::size_t(height) * 3)
+std::string encode_pfm(int width, int height, const float* linear_rgb, std::size_t count, const std::string& name) {
+  if (width <= 0 || height <= 0 || count != std::size_t(width) * std::size_t(height) * 3)
     fail(name, 0, "cannot encode PFM: the pixel buffer does not match the image size");
   std::string out = "PF\n" + std::to_string(width) + " " + std::to_string(height) + "\n-1.0\n";
   const std::size_t row = std::size_t(width) * 3;
-  out.reserve(out.size() + linear_rgb.size() * 4);
+  out.reserve(out.size() + count * 4);
   for (int y = height - 1; y >= 0; --y) {
     for (std::size_t i = 0; i < row; ++i) {
       std::uint32_t bits;

@@ -73,7 +73,7 @@ TEST_CASE("the PNG is 8-bit RGB with an sRGB chunk and decodes to the bytes writ
 
 TEST_CASE("the PFM stores rows bottom to top as little-endian floats", "[render][pfm]") {
   const std::vector<float> rgb = {1, 2, 3, 4, 5, 6};  // 1 x 2: top pixel (1,2,3), bottom (4,5,6)
-  const std::string bytes = io::encode_pfm(1, 2, rgb, "t.pfm");
+  const std::string bytes = io::encode_pfm(1, 2, rgb.data(), rgb.size(), "t.pfm");
   const std::string header = "PF\n1 2\n-1.0\n";
   REQUIRE(bytes.size() == header.size() + 24);
   CHECK(bytes.compare(0, header.size(), header) == 0);

@@ -216,7 +216,7 @@ RasterOutput rasterize_tiles(const RasterInput& in) {
   RasterOutput out;
   out.image.width = in.width;
   out.image.height = in.height;
-  out.image.rgb.assign(std::size_t(in.width) * std::size_t(in.height) * 3, 0.0f);
+  out.image.rgb.resize(std::size_t(in.width) * std::size_t(in.height) * 3);  // every pixel written by its tile
   const int N = in.samples;
   if (in.count_coverage) out.coverage.assign(std::size_t(in.width) * N * std::size_t(in.height) * N, 0);
 
