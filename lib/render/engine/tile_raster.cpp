@@ -4,6 +4,7 @@
 #include <shadetool/render/engine/screen_triangle.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <tbb/blocked_range.h>
@@ -95,7 +96,11 @@ Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double 
         p += get3(s.positions_world, w.vertex[k]) * w.weight[k];
         n += get3(s.normals_world, w.vertex[k]) * w.weight[k];
       }
-      n = normalized_or(n, Vec3d{0, 0, 0});  // zero: the equation keeps only the ambient terms
+      // Renormalised. Vertex normals are finite (checked on input) and usually unit, so the plain
+      // squared length is safe; outside [2^-1000, 2^1000] (opposite normals cancelling, absurd
+      // input lengths) the normal counts as zero and the equation keeps only the ambient terms.
+      const double n2 = dot(n, n);
+      n = n2 > 0x1p-1000 && n2 <= 0x1p1000 ? n * (1.0 / std::sqrt(n2)) : Vec3d{0, 0, 0};  // divisor checked
       return s.shader->shade(p, n, counters);
     }
   }
