@@ -71,6 +71,23 @@ VertexWeights vertex_weights(const SurfaceInputs& s, const ScreenTriangle& t, co
   return w;
 }
 
+// The mesh-vertex weights at a sample with screen barycentrics lambda. Fast path, for the common
+// unclipped triangle: the perspective-correct barycentrics ARE the weights of its corners (in
+// screen order, t.perm); otherwise through the original triangle (clipped) and the quad's map.
+VertexWeights sample_weights(const RasterInput& in, const ScreenTriangle& t, const double lambda[3],
+                             std::size_t& fallbacks) {
+  if (!t.quad && t.clip_index < 0) {
+    VertexWeights w;
+    perspective_barycentrics(lambda, t.inv_w, w.weight);
+    for (int i = 0; i < 3; ++i) w.vertex[i] = t.vertex[t.perm[i]];
+    w.count = 3;
+    return w;
+  }
+  double ob[3];
+  original_barycentrics(in, t, lambda, ob);
+  return vertex_weights(*in.surface, t, ob, fallbacks);
+}
+
 Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double lambda[3], ShadeCounters& counters,
                    std::size_t& fallbacks) {
   const SurfaceInputs& s = *in.surface;
@@ -78,19 +95,15 @@ Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double 
     case RenderShading::Flat:
       return get3(s.face_rgb, t.face);
     case RenderShading::Gouraud: {
-      double ob[3];
-      original_barycentrics(in, t, lambda, ob);
-      const VertexWeights w = vertex_weights(s, t, ob, fallbacks);
+      const VertexWeights w = sample_weights(in, t, lambda, fallbacks);
       Vec3d c{0, 0, 0};
       for (int k = 0; k < w.count; ++k) c += get3(s.vertex_rgb, w.vertex[k]) * w.weight[k];
       return c;
     }
     case RenderShading::Phong: {
-      double ob[3];
-      original_barycentrics(in, t, lambda, ob);
       // Position and normal from the same weights: on a quad the point of the bilinear patch, so
       // the quad's look does not depend on the diagonal it was fanned along.
-      const VertexWeights w = vertex_weights(s, t, ob, fallbacks);
+      const VertexWeights w = sample_weights(in, t, lambda, fallbacks);
       Vec3d p{0, 0, 0}, n{0, 0, 0};
       for (int k = 0; k < w.count; ++k) {
         p += get3(s.positions_world, w.vertex[k]) * w.weight[k];
