@@ -249,6 +249,24 @@ struct MesaRenderer {
     glDrawElements(GL_TRIANGLES, GLsizei(indices.size()), GL_UNSIGNED_INT, indices.data());
     glFinish();
   }
+  // Mean |ours - Mesa| in 8-bit codes over pixels both cover (ours quantised linearly, as Mesa
+  // stores; GL's rows run bottom to top), and how many pixels only one of them covers.
+  void compare(const ImageRGB& ours, double& mean_codes, std::size_t& only_one) const {
+    double sum = 0;
+    std::size_t both = 0;
+    only_one = 0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        const unsigned char* m = &buffer[4 * (std::size_t(kHeight - 1 - y) * kWidth + x)];
+        const float* o = ours.pixel(x, y);
+        const bool mesa_on = (m[0] | m[1] | m[2]) != 0, ours_on = o[0] > 0 || o[1] > 0 || o[2] > 0;
+        if (mesa_on != ours_on) ++only_one;
+        if (!(mesa_on && ours_on)) continue;
+        ++both;
+        for (int c = 0; c < 3; ++c) sum += std::fabs(std::lround(255 * std::min(1.0f, std::max(0.0f, o[c]))) - m[c]);
+      }
+    mean_codes = both ? sum / double(3 * both) : 0;
+  }
   double coverage() const {
     std::size_t lit = 0;
     for (std::size_t i = 0; i < buffer.size(); i += 4) lit += (buffer[i] | buffer[i + 1] | buffer[i + 2]) != 0;
@@ -272,8 +290,8 @@ int main(int argc, char** argv) {
 
   std::printf("# bench_render: %dx%d, 1 sample/pixel, %d thread(s), medians of %d wall-clock runs\n", kWidth, kHeight,
               threads, g_repeats);
-  std::printf("%-10s %-8s %9s %9s %7s %9s %9s %7s %8s %8s\n", "triangles", "shading", "ours_ms", "mesa_ms", "ratio",
-              "ours_cpu", "mesa_cpu", "ratio", "cover_o", "cover_m");
+  std::printf("%-10s %-8s %9s %9s %7s %9s %9s %7s %8s %8s %9s %8s\n", "triangles", "shading", "ours_ms", "mesa_ms",
+              "ratio", "ours_cpu", "mesa_cpu", "ratio", "cover_o", "cover_m", "diff_8bit", "only_one");
   const Scene scene = bench_scene();
   for (const auto& [nu, nv] : std::vector<std::pair<int, int>>{{100, 51}, {1000, 501}}) {
     const Mesh mesh = testing::uv_sphere(nu, nv).mesh;
@@ -288,11 +306,13 @@ int main(int argc, char** argv) {
       o.check_eye_inside = false;  // not part of drawing (Mesa has nothing like it)
       std::vector<double> ours, theirs, ours_cpu, theirs_cpu;
       double ours_cover = 0;
+      ImageRGB last;
       for (int r = 0; r < g_repeats + 1; ++r) {  // run 0 warms up
         double t0 = now_ms(), c0 = cpu_ms();
         const RenderResult res = render_mesh(mesh, scene, o);
         const double t_ours = now_ms() - t0, c_ours = cpu_ms() - c0;
         ours_cover = double(res.stats.samples_covered) / double(kWidth * kHeight);
+        if (r == g_repeats) last = res.image;
         t0 = now_ms(), c0 = cpu_ms();
         mesa.draw(shading == RenderShading::Phong);
         const double t_mesa = now_ms() - t0, c_mesa = cpu_ms() - c0;
@@ -304,8 +324,12 @@ int main(int argc, char** argv) {
         }
       }
       const double mo = median(ours), mm = median(theirs), co = median(ours_cpu), cm = median(theirs_cpu);
-      std::printf("%-10zu %-8s %9.1f %9.1f %7.2f %9.1f %9.1f %7.2f %8.3f %8.3f\n", mesh.num_faces(),
-                  render_shading_name(shading), mo, mm, mo / mm, co, cm, co / cm, ours_cover, mesa.coverage());
+      double mean_codes = 0;
+      std::size_t only_one = 0;
+      mesa.compare(last, mean_codes, only_one);
+      std::printf("%-10zu %-8s %9.1f %9.1f %7.2f %9.1f %9.1f %7.2f %8.3f %8.3f %9.3f %8zu\n", mesh.num_faces(),
+                  render_shading_name(shading), mo, mm, mo / mm, co, cm, co / cm, ours_cover, mesa.coverage(),
+                  mean_codes, only_one);
       std::fflush(stdout);
     }
   }
