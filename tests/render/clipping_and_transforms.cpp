@@ -173,3 +173,34 @@ TEST_CASE("a quad shows no diagonal seam: both diagonals give the same image", "
     CHECK(max_abs_difference(fa.image, fb.image) > 0.01);
   }
 }
+
+TEST_CASE("back faces are culled, or lit from behind with two_sided", "[render][two_sided]") {
+  // A triangle facing +z seen from -z, a light travelling +z (shining onto its back, from the
+  // camera's side). Not two-sided: culled, background only. Two-sided: n -> -n, n.L = 1, so the
+  // colour is global ambient * ka + kd, exactly.
+  Mesh m;
+  m.add_vertex({-1, -1, 0});
+  m.add_vertex({1, -1, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_face({0, 1, 2});
+  Scene s = lit_scene({0, 0, -5});
+  s.model = ShadingModel::Lambert;
+  s.lights = {directional_light({0, 0, 1})};
+  RenderOptions o;
+  o.width = o.height = 41;
+  for (RenderShading shading : {RenderShading::Flat, RenderShading::Gouraud, RenderShading::Phong}) {
+    o.shading = shading;
+    INFO(render_shading_name(shading));
+    s.two_sided = false;
+    const RenderResult culled = render_mesh(m, s, o);
+    CHECK(culled.stats.faces_culled == 1);
+    CHECK(culled.stats.samples_covered == 0);
+    s.two_sided = true;
+    const RenderResult lit = render_mesh(m, s, o);
+    CHECK(lit.stats.faces_culled == 0);
+    REQUIRE(lit.stats.samples_covered > 100);
+    const float* c = lit.image.pixel(20, 20);
+    CHECK(c[0] == Approx(0.2 * 0.05 + 0.7).margin(1e-6));
+    CHECK(c[1] == Approx(0.2 * 0.05 + 0.5).margin(1e-6));
+  }
+}
