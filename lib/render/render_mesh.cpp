@@ -54,39 +54,85 @@ inline std::int64_t round_to_integer(double x) {
   return x >= 0 ? std::int64_t(x + 0.5) : -std::int64_t(-x + 0.5);
 }
 
-// One original triangle (mesh vertices v[3], clip coordinates c[3]) to screen triangles.
-TriangleFate setup_triangle(const SetupContext& ctx, std::uint32_t face, const std::uint32_t v[3], const ClipPoint c[3],
-                            SetupOutput& out) {
-  ClipVertex poly[kMaxClipVertices], scratch[kMaxClipVertices];
-  for (int i = 0; i < 3; ++i) {
-    poly[i] = {c[i].x, c[i].y, c[i].z, c[i].w, {0, 0, 0}};
-    poly[i].b[i] = 1;
-  }
-  int n = 3;
-  bool clipped = false;
-  for (int plane = 0; plane < 6; ++plane) {
-    int outside = 0;
-    for (int i = 0; i < n; ++i) outside += clip_distance(poly[i], plane, ctx.guard) < 0;
-    if (outside == 0) continue;
-    if (outside == n) return TriangleFate::Outside;
-    if (plane == 0) ++out.near_clipped;
-    n = clip_against(poly, n, plane, ctx.guard, scratch);
-    std::copy(scratch, scratch + n, poly);
-    clipped = true;
-    if (n < 3) return TriangleFate::Outside;
-  }
+// A vertex in clip space, which planes it is outside of (bit k: clip_distance(plane k) < 0), and,
+// when inside all of them, its snapped screen position: computed once per mesh vertex, so that
+// triangles sharing it read the very same numbers (and the common unclipped triangle does no
+// per-corner work).
+struct ScreenVertex {
+  std::int32_t X, Y;   // fixed point (fill_rule.h), y down
+  double inv_w, z;     // 1 / w and z / w
+};
+struct VertexSetup {
+  ClipPoint c;
+  std::uint8_t outcode = 0;
+  ScreenVertex screen{0, 0, 0, 0};
+};
 
-  // Project and snap: sample-grid coordinates in 1/256 units, y down.
+// Project and snap: sample-grid coordinates in 1/256 units, y down. w > 0.
+ScreenVertex project(double x, double y, double z, double w, const SetupContext& ctx) {
+  ScreenVertex s;
+  s.inv_w = 1.0 / w;  // w > 0: callers check
+  const double xs = (x * s.inv_w * 0.5 + 0.5) * ctx.sample_width;
+  const double ys = (0.5 - y * s.inv_w * 0.5) * ctx.sample_height;
+  s.X = std::int32_t(round_to_integer(xs * kSubUnits));
+  s.Y = std::int32_t(round_to_integer(ys * kSubUnits));
+  s.z = z * s.inv_w;
+  return s;
+}
+
+VertexSetup setup_vertex(const ClipPoint& c, const SetupContext& ctx) {
+  VertexSetup v;
+  v.c = c;
+  const ClipVertex cv{c.x, c.y, c.z, c.w, {0, 0, 0}};
+  for (int plane = 0; plane < 6; ++plane)
+    if (clip_distance(cv, plane, ctx.guard) < 0) v.outcode |= std::uint8_t(1u << plane);
+  if (v.outcode == 0 && c.w > 0) v.screen = project(c.x, c.y, c.z, c.w, ctx);
+  // w <= 0 (at or behind the eye) is outside the near plane: z + w = 2 far (w - near) / (far - near)
+  // < 0; kept so under rounding, so that such a point is never projected.
+  if (!(c.w > 0)) v.outcode |= 1;
+  return v;
+}
+
+// One original triangle (mesh vertices v[3], their setups) to screen triangles.
+TriangleFate setup_triangle(const SetupContext& ctx, std::uint32_t face, const std::uint32_t v[3],
+                            const VertexSetup* const vs[3], SetupOutput& out) {
+  if (vs[0]->outcode & vs[1]->outcode & vs[2]->outcode) return TriangleFate::Outside;  // all beyond one plane
+  ClipVertex poly[kMaxClipVertices], scratch[kMaxClipVertices];
   std::int32_t X[kMaxClipVertices], Y[kMaxClipVertices];
   double inv_w[kMaxClipVertices], z[kMaxClipVertices];
-  for (int i = 0; i < n; ++i) {
-    if (!(poly[i].w > 0)) return TriangleFate::Outside;  // only behind-the-eye points have w <= 0
-    inv_w[i] = 1.0 / poly[i].w;                           // checked on the line before
-    const double xs = (poly[i].x * inv_w[i] * 0.5 + 0.5) * ctx.sample_width;
-    const double ys = (0.5 - poly[i].y * inv_w[i] * 0.5) * ctx.sample_height;
-    X[i] = std::int32_t(round_to_integer(xs * kSubUnits));
-    Y[i] = std::int32_t(round_to_integer(ys * kSubUnits));
-    z[i] = poly[i].z * inv_w[i];
+  int n = 3;
+  const bool clipped = (vs[0]->outcode | vs[1]->outcode | vs[2]->outcode) != 0;
+  if (!clipped) {
+    for (int i = 0; i < 3; ++i) {
+      X[i] = vs[i]->screen.X;
+      Y[i] = vs[i]->screen.Y;
+      inv_w[i] = vs[i]->screen.inv_w;
+      z[i] = vs[i]->screen.z;
+    }
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      const ClipPoint& c = vs[i]->c;
+      poly[i] = {c.x, c.y, c.z, c.w, {0, 0, 0}};
+      poly[i].b[i] = 1;
+    }
+    for (int plane = 0; plane < 6; ++plane) {
+      int outside = 0;
+      for (int i = 0; i < n; ++i) outside += clip_distance(poly[i], plane, ctx.guard) < 0;
+      if (outside == 0) continue;
+      if (outside == n) return TriangleFate::Outside;
+      if (plane == 0) ++out.near_clipped;
+      n = clip_against(poly, n, plane, ctx.guard, scratch);
+      std::copy(scratch, scratch + n, poly);
+      if (n < 3) return TriangleFate::Outside;
+    }
+    for (int i = 0; i < n; ++i) {
+      if (!(poly[i].w > 0)) return TriangleFate::Outside;  // only behind-the-eye points have w <= 0
+      const ScreenVertex sv = project(poly[i].x, poly[i].y, poly[i].z, poly[i].w, ctx);
+      X[i] = sv.X;
+      Y[i] = sv.Y;
+      inv_w[i] = sv.inv_w;
+      z[i] = sv.z;
+    }
   }
   std::int64_t area = 0;  // twice the polygon's signed area, y down
   for (int i = 1; i + 1 < n; ++i) area += orient(X[0], Y[0], X[i], Y[i], X[i + 1], Y[i + 1]);
@@ -186,9 +232,6 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
   const RenderCamera cam = make_render_camera(scene, bounds, options.width, options.height);
   result.camera = cam;
   if (options.check_eye_inside && scene.has_camera) check_eye_outside(mesh, scene, cam, name);
-  std::vector<ClipPoint> clip(V);
-  for (std::size_t v = 0; v < V; ++v)
-    clip[v] = cam.to_clip(transform_point(cam.camera_from_world, get3(surface.positions_world, v)));
 
   std::unique_ptr<PointShader> shader;
   switch (options.shading) {
@@ -216,6 +259,11 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
   ctx.guard = double(1 << 20) / double(std::max(ctx.sample_width, ctx.sample_height));  // >= 4 (sizes checked)
   ctx.mirror = determinant(cam.camera_from_world.A * scene.world_from_object.A) < 0;
   ctx.two_sided = scene.two_sided;
+  std::vector<VertexSetup> vertex_setup(V);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, V, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t v = r.begin(); v < r.end(); ++v)
+      vertex_setup[v] = setup_vertex(cam.to_clip(transform_point(cam.camera_from_world, get3(surface.positions_world, v))), ctx);
+  });
   constexpr std::size_t kChunk = 4096;
   const std::size_t chunks = (F + kChunk - 1) / kChunk;
   std::vector<SetupOutput> parts(chunks);
@@ -236,7 +284,7 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
       bool drawn = false, culled = false, outside = false;
       for (std::size_t i = 1; i + 1 < size; ++i) {
         const std::uint32_t v[3] = {corners[0], corners[i], corners[i + 1]};
-        const ClipPoint c[3] = {clip[v[0]], clip[v[1]], clip[v[2]]};
+        const VertexSetup* const c[3] = {&vertex_setup[v[0]], &vertex_setup[v[1]], &vertex_setup[v[2]]};
         ++st.triangles;
         switch (setup_triangle(face_ctx, std::uint32_t(f), v, c, out)) {
           case TriangleFate::Drawn: drawn = true; break;
