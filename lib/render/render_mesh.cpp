@@ -272,7 +272,7 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
     SetupOutput& out = parts[k];
     RenderStats& st = part_stats[k];
     SetupContext face_ctx = ctx;
-    out.triangles.reserve(2 * kChunk);
+    out.triangles.reserve(kChunk);
     for (std::size_t f = k * kChunk; f < std::min(F, (k + 1) * kChunk); ++f) {
       const std::size_t size = mesh.face_size(f);
       if (size < 3) {
@@ -309,19 +309,13 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
   raster.count_coverage = options.count_coverage;
   RenderStats& stats = result.stats;
   stats.faces = F;
-  std::size_t total = 0, total_b = 0;
-  for (const SetupOutput& part : parts) {
-    total += part.triangles.size();
-    total_b += part.clip_b.size();
-  }
-  raster.triangles.reserve(total);
-  raster.clip_b.reserve(total_b);
+  raster.parts.resize(chunks);
   for (std::size_t k = 0; k < chunks; ++k) {
     const std::int32_t offset = std::int32_t(raster.clip_b.size() / 9);
-    for (ScreenTriangle t : parts[k].triangles) {
-      if (t.clip_index >= 0) t.clip_index += offset;
-      raster.triangles.push_back(t);
-    }
+    if (offset != 0)
+      for (ScreenTriangle& t : parts[k].triangles)
+        if (t.clip_index >= 0) t.clip_index += offset;
+    raster.parts[k] = std::move(parts[k].triangles);
     raster.clip_b.insert(raster.clip_b.end(), parts[k].clip_b.begin(), parts[k].clip_b.end());
     stats.triangles += part_stats[k].triangles;
     stats.faces_culled += part_stats[k].faces_culled;

@@ -40,7 +40,9 @@ struct SurfaceInputs {
 
 struct RasterInput {
   int width = 0, height = 0, samples = 1;
-  std::vector<ScreenTriangle> triangles;
+  // The triangles, in face order, as the setup's chunks made them (not joined into one array: at
+  // 1M triangles that copy alone was 100 MB of traffic). Tiles refer to them by address.
+  std::vector<std::vector<ScreenTriangle>> parts;
   std::vector<double> clip_b;  // 9 per clipped triangle: B_i (3 doubles) per screen vertex
   const SurfaceInputs* surface = nullptr;
   bool count_coverage = false;

@@ -19,7 +19,6 @@ namespace shadetool::render_engine {
 
 namespace {
 
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 // The original triangle's barycentrics at a sample with screen barycentrics lambda.
 void original_barycentrics(const RasterInput& in, const ScreenTriangle& t, const double lambda[3], double ob[3]) {
@@ -127,10 +126,10 @@ struct TileResult {
 // Per-thread scratch for one tile (reused from tile to tile).
 struct TileBuffers {
   std::vector<double> depth, lambda1, lambda2;
-  std::vector<std::uint32_t> owner;
+  std::vector<const ScreenTriangle*> owner;
 };
 
-TileResult raster_tile(const RasterInput& in, const std::vector<std::uint32_t>& bin, int tile_x, int tile_y,
+TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTriangle*>& bin, int tile_x, int tile_y,
                        TileBuffers& buffers, RasterOutput& out) {
   const int N = in.samples;
   const int px0 = tile_x * kTilePixels, py0 = tile_y * kTilePixels;
@@ -148,17 +147,17 @@ TileResult raster_tile(const RasterInput& in, const std::vector<std::uint32_t>& 
   const int tw = sx1 - sx0 + 1, th = sy1 - sy0 + 1;
   const std::size_t count = std::size_t(tw) * std::size_t(th);
   buffers.depth.assign(count, std::numeric_limits<double>::infinity());
-  buffers.owner.assign(count, kNone);
+  buffers.owner.assign(count, nullptr);
   buffers.lambda1.resize(count);
   buffers.lambda2.resize(count);
   double* depth = buffers.depth.data();
-  std::uint32_t* owner = buffers.owner.data();
+  const ScreenTriangle** owner = buffers.owner.data();
   double* lambda1 = buffers.lambda1.data();
   double* lambda2 = buffers.lambda2.data();
   const std::size_t full_width = std::size_t(in.width) * std::size_t(N);
 
-  for (const std::uint32_t id : bin) {
-    const ScreenTriangle& t = in.triangles[id];
+  for (const ScreenTriangle* tp : bin) {
+    const ScreenTriangle& t = *tp;
     const int bx0 = std::max(t.sx0, sx0), bx1 = std::min(t.sx1, sx1);
     const int by0 = std::max(t.sy0, sy0), by1 = std::min(t.sy1, sy1);
     if (bx0 > bx1 || by0 > by1) continue;
@@ -189,7 +188,7 @@ TileResult raster_tile(const RasterInput& in, const std::vector<std::uint32_t>& 
         const double z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
         if (z < depth[s]) {
           depth[s] = z;
-          owner[s] = id;
+          owner[s] = tp;
           lambda1[s] = l1;
           lambda2[s] = l2;
         }
@@ -210,13 +209,13 @@ TileResult raster_tile(const RasterInput& in, const std::vector<std::uint32_t>& 
       for (int j = 0; j < N; ++j) {
         for (int i = 0; i < N; ++i) {
           const std::size_t s = std::size_t((py - py0) * N + j) * std::size_t(tw) + std::size_t((pxl - px0) * N + i);
-          if (owner[s] == kNone) {
+          if (owner[s] == nullptr) {
             sum += background;
             continue;
           }
           ++r.covered;
           const double lambda[3] = {1.0 - lambda1[s] - lambda2[s], lambda1[s], lambda2[s]};
-          sum += shade_sample(in, in.triangles[owner[s]], lambda, counters, r.fallbacks);
+          sum += shade_sample(in, *owner[s], lambda, counters, r.fallbacks);
         }
       }
       float* out_px = out.image.pixel(pxl, py);
@@ -242,14 +241,14 @@ RasterOutput rasterize_tiles(const RasterInput& in) {
   const int tiles_x = (in.width + kTilePixels - 1) / kTilePixels;
   const int tiles_y = (in.height + kTilePixels - 1) / kTilePixels;
   const int tile_samples = kTilePixels * N;
-  std::vector<std::vector<std::uint32_t>> bins(std::size_t(tiles_x) * std::size_t(tiles_y));
-  for (std::size_t id = 0; id < in.triangles.size(); ++id) {
-    const ScreenTriangle& t = in.triangles[id];
-    if (t.sx0 > t.sx1 || t.sy0 > t.sy1) continue;
-    for (int ty = t.sy0 / tile_samples; ty <= t.sy1 / tile_samples; ++ty)
-      for (int tx = t.sx0 / tile_samples; tx <= t.sx1 / tile_samples; ++tx)
-        bins[std::size_t(ty) * std::size_t(tiles_x) + std::size_t(tx)].push_back(std::uint32_t(id));
-  }
+  std::vector<std::vector<const ScreenTriangle*>> bins(std::size_t(tiles_x) * std::size_t(tiles_y));
+  for (const auto& part : in.parts)
+    for (const ScreenTriangle& t : part) {
+      if (t.sx0 > t.sx1 || t.sy0 > t.sy1) continue;
+      for (int ty = t.sy0 / tile_samples; ty <= t.sy1 / tile_samples; ++ty)
+        for (int tx = t.sx0 / tile_samples; tx <= t.sx1 / tile_samples; ++tx)
+          bins[std::size_t(ty) * std::size_t(tiles_x) + std::size_t(tx)].push_back(&t);
+    }
 
   std::vector<TileResult> results(bins.size());
   tbb::enumerable_thread_specific<TileBuffers> scratch;
