@@ -14,7 +14,7 @@
 //   3. per triangle: clipped against near/far/guard band (clip_polygon.h), projected, snapped to
 //      1/256 of a sample (fill_rule.h), back faces culled unless scene.two_sided (orientation
 //      as seen by the camera, times sign(det(V M)): a mirror keeps its outside outside).
-//   4. tiles of 32 x 32 pixels on TBB threads (engine/tile_raster.h): per sample the nearest
+//   4. tiles of 32 x 32 pixels on TBB threads (engine/tile_raster.cpp): per sample the nearest
 //      triangle (depth test on z/w, ties to the lower triangle index) and its screen barycentrics;
 //      then per visible sample the perspective-correct barycentrics of the original triangle,
 //        b_i = (lambda_i / w_i) / sum_j (lambda_j / w_j)
@@ -34,8 +34,9 @@
 // the image is bitwise the same for any number of threads.
 // Precision: geometry and shading in double (the lighting's), fixed-point coverage (exact), the
 // image stored as float.
-// Errors (shadetool::Error, one line naming `name`): size or samples out of range, a camera whose
-// eye is inside the mesh (generalised winding number above 1/2).
+// Errors (shadetool::Error, one line naming `name`): size or samples out of range, a perspective
+// camera whose eye is inside the mesh (|generalised winding number| above 1/2, repair/
+// winding_number.h; tested only when the eye is inside the mesh's bounding box).
 #pragma once
 
 #include <cstddef>
