@@ -3,7 +3,6 @@
 
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/lighting/encode_color.h>
-#include <shadetool/lighting/lighting_plan.h>
 #include <shadetool/normals/vertex_normals.h>
 
 namespace shadetool {
@@ -56,17 +55,8 @@ std::vector<double> shading_vertex_normals(const Mesh& mesh) {
   return vertex_normals(mesh, Weighting::Angle, Precision::Double).normals;
 }
 
-PointShader::PointShader(const Scene& scene, const RenderLightingOptions& options) {
-  const ShadingModel model = options.model ? *options.model : scene.model;
-  const LightingPlan plan = plan_lighting(scene, model);
-  frame_ = make_frame(scene, plan, ShadingSpace::World);
-  eq_.model = model;
-  eq_.specular = plan.specular;
-  eq_.view = plan.view;
-  eq_.two_sided = scene.two_sided;
-  eq_.shininess = scene.material.shininess;
-  eq_.base = plan.base;
-}
+PointShader::PointShader(const Scene& scene, const RenderLightingOptions& options)
+    : lighting_(prepare_point_lighting(scene, options.model)) {}
 
 Vec3d scene_eye_world(const Scene& scene) { return eye_world(scene); }
 

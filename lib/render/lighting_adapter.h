@@ -9,8 +9,8 @@
 //                         vertex normals; else input corner normals that agree per vertex; else
 //                         angle-weighted, double), #V by 3 object space, so that Phong at a vertex
 //                         equals the baked colour there
-//   PointShader           Phong: the lighting equation (lighting/lighting_equation.h) at one world-
-//                         space point with a world-space normal; every light kind lighting supports
+//   PointShader           Phong: lighting/shade_point.h (the lighting equation at one world-space
+//                         point with a world-space normal; every light kind lighting supports)
 //   encode_srgb_8bit      lighting/encode_color.h's sRGB curve and 8-bit quantisation
 //
 // Precision: double, as lib/lighting. PointShader::shade is const and thread-safe (counters are
@@ -22,8 +22,9 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
-#include <shadetool/lighting/lighting_equation.h>
 #include <shadetool/lighting/scene.h>
+#include <shadetool/lighting/shade_point.h>
+#include <shadetool/lighting/shade_points.h>
 #include <shadetool/lighting/shading_space.h>
 
 namespace shadetool {
@@ -42,12 +43,11 @@ class PointShader {
   PointShader(const Scene& scene, const RenderLightingOptions& options);
   // The linear colour at p_world with normal n_world (any length; zero: ambient terms only).
   Vec3d shade(const Vec3d& p_world, const Vec3d& n_world, ShadeCounters& count) const {
-    return shade_point_in_space(IdentityMetric{}, frame_, eq_, p_world, n_world, count);
+    return shade_point(lighting_, p_world, n_world, &count);
   }
 
  private:
-  ShadingFrame frame_;  // world space: lights and eye in world coordinates, metric the identity
-  EquationSetup eq_;
+  PointLighting lighting_;  // world space: lights and eye in world coordinates
 };
 
 // The eye in world space (lighting/scene.h eye_world).
