@@ -165,7 +165,8 @@ class SceneReader {
 
   void camera(const json& j, const std::string& path, Scene& scene) const {
     require_object(j, path);
-    check_keys(j, path, {"eye", "target", "up", "view"}, "camera");
+    check_keys(j, path, {"eye", "target", "up", "view", "fov_y", "near", "far", "orthographic"}, "camera");
+    lens(j, path, scene.lens);
     if (const json* v = find(j, "view")) {
       if (find(j, "eye") || find(j, "target") || find(j, "up"))
         bad(path, "give either \"view\" or \"eye\"/\"target\"/\"up\", not both");
@@ -180,6 +181,26 @@ class SceneReader {
         bad(path + ".up", "is parallel to the view direction (target - eye)");
     }
     scene.has_camera = true;
+  }
+
+  // The projection fields of a camera (render/ reads them; see scene.h CameraLens).
+  void lens(const json& j, const std::string& path, CameraLens& lens) const {
+    if (const json* v = find(j, "fov_y")) {
+      lens.fov_y_degrees = number(*v, path + ".fov_y");
+      if (!(lens.fov_y_degrees > 0 && lens.fov_y_degrees < 180))
+        bad(path + ".fov_y", "must be in (0, 180) degrees, got " + number_text(lens.fov_y_degrees));
+    }
+    if (const json* v = find(j, "orthographic")) {
+      lens.orthographic_height = number(*v, path + ".orthographic");
+      if (!(lens.orthographic_height > 0)) bad(path + ".orthographic", "must be a height > 0 (world units)");
+      if (find(j, "fov_y")) bad(path, "give either \"fov_y\" (perspective) or \"orthographic\", not both");
+    }
+    const json* n = find(j, "near");
+    const json* f = find(j, "far");
+    if (n) lens.near = number(*n, path + ".near");
+    if (f) lens.far = number(*f, path + ".far");
+    if (n && !(lens.near > 0)) bad(path + ".near", "must be > 0, got " + number_text(lens.near));
+    if (f && !(lens.far > lens.near)) bad(path + ".far", "must be greater than near, got " + number_text(lens.far));
   }
 
   Material material(const json& j, const std::string& path) const {

@@ -49,12 +49,21 @@ struct Material {  // OpenGL's defaults (glMaterial)
   double shininess = 0;           // >= 0 (OpenGL caps at 128; we do not)
 };
 
+// The camera's projection, for renderers (render/camera.h); bake-lighting does not read it.
+// Read from the scene's "camera" object: fov_y, near, far, orthographic.
+struct CameraLens {
+  double fov_y_degrees = 45;       // perspective: full vertical field of view, (0, 180)
+  double near = 0, far = 0;        // 0: fitted to the mesh's bounds; given: 0 < near < far
+  double orthographic_height = 0;  // > 0: orthographic, this many world units tall (fov_y unused)
+};
+
 struct Scene {
   ShadingModel model = ShadingModel::BlinnPhong;
   bool model_given = false;                   // the file named a model (the CLI's --model wins)
   Affine3d world_from_object;                 // M; its 3x3 part must be invertible
   Affine3d camera_from_world;                 // V (view matrix); must be invertible
   bool has_camera = false;                    // false: OpenGL's default eye at the world origin
+  CameraLens lens;                            // projection (renderers only)
   Vec3d global_ambient{0.2, 0.2, 0.2};        // OpenGL's LIGHT_MODEL_AMBIENT default
   bool two_sided = false;                     // where n.V < 0, light the back: n -> -n
   Material material;

@@ -1,0 +1,269 @@
+// tile_raster.cpp (engine): binning, the tile loop on TBB threads, per-sample visibility and
+// shading, and the box filter. The formulas it calls live in lib/render/*.h by name:
+// fill_rule.h (coverage), perspective_barycentrics.h, inverse_bilinear.h, lighting_adapter.h.
+#include <shadetool/render/engine/screen_triangle.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <shadetool/render/fill_rule.h>
+#include <shadetool/render/inverse_bilinear.h>
+#include <shadetool/render/perspective_barycentrics.h>
+
+namespace shadetool::render_engine {
+
+namespace {
+
+
+// The original triangle's barycentrics at a sample with screen barycentrics lambda.
+void original_barycentrics(const RasterInput& in, const ScreenTriangle& t, const double lambda[3], double ob[3]) {
+  double b[3];
+  perspective_barycentrics(lambda, t.inv_w, b);
+  if (t.clip_index < 0) {
+    ob[0] = ob[1] = ob[2] = 0;
+    for (int i = 0; i < 3; ++i) ob[t.perm[i]] = b[i];
+    return;
+  }
+  const double* B = in.clip_b.data() + 9 * std::size_t(t.clip_index);
+  for (int k = 0; k < 3; ++k) ob[k] = b[0] * B[k] + b[1] * B[3 + k] + b[2] * B[6 + k];
+}
+
+// Weights of mesh vertices for the sample: 3 (triangle) or 4 (quad, bilinear) entries.
+struct VertexWeights {
+  std::uint32_t vertex[4];
+  double weight[4];
+  int count = 0;
+};
+
+VertexWeights vertex_weights(const SurfaceInputs& s, const ScreenTriangle& t, const double ob[3], std::size_t& fallbacks) {
+  VertexWeights w;
+  const Mesh& mesh = *s.mesh;
+  if (t.quad) {
+    const std::uint32_t* q = mesh.corner_vertex.data() + mesh.face_start[t.face];
+    Vec3d corners[4];
+    for (int k = 0; k < 4; ++k) corners[k] = get3(s.positions_world, q[k]);
+    Vec3d p{0, 0, 0};
+    for (int k = 0; k < 3; ++k) p += get3(s.positions_world, t.vertex[k]) * ob[k];
+    QuadUV uv;
+    if (inverse_bilinear_3d(p, corners, uv)) {
+      const double u = uv.u, v = uv.v;
+      const double weight[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+      for (int k = 0; k < 4; ++k) {
+        w.vertex[k] = q[k];
+        w.weight[k] = weight[k];
+      }
+      w.count = 4;
+      return w;
+    }
+    ++fallbacks;
+  }
+  for (int k = 0; k < 3; ++k) {
+    w.vertex[k] = t.vertex[k];
+    w.weight[k] = ob[k];
+  }
+  w.count = 3;
+  return w;
+}
+
+// The mesh-vertex weights at a sample with screen barycentrics lambda. Fast path, for the common
+// unclipped triangle: the perspective-correct barycentrics ARE the weights of its corners (in
+// screen order, t.perm); otherwise through the original triangle (clipped) and the quad's map.
+VertexWeights sample_weights(const RasterInput& in, const ScreenTriangle& t, const double lambda[3],
+                             std::size_t& fallbacks) {
+  if (!t.quad && t.clip_index < 0) {
+    VertexWeights w;
+    perspective_barycentrics(lambda, t.inv_w, w.weight);
+    for (int i = 0; i < 3; ++i) w.vertex[i] = t.vertex[t.perm[i]];
+    w.count = 3;
+    return w;
+  }
+  double ob[3];
+  original_barycentrics(in, t, lambda, ob);
+  return vertex_weights(*in.surface, t, ob, fallbacks);
+}
+
+Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double lambda[3], ShadeCounters& counters,
+                   std::size_t& fallbacks) {
+  const SurfaceInputs& s = *in.surface;
+  switch (s.shading) {
+    case RenderShading::Flat:
+      return get3(s.face_rgb, t.face);
+    case RenderShading::Gouraud: {
+      const VertexWeights w = sample_weights(in, t, lambda, fallbacks);
+      Vec3d c{0, 0, 0};
+      for (int k = 0; k < w.count; ++k) c += get3(s.vertex_rgb, w.vertex[k]) * w.weight[k];
+      return c;
+    }
+    case RenderShading::Phong: {
+      // Position and normal from the same weights: on a quad the point of the bilinear patch, so
+      // the quad's look does not depend on the diagonal it was fanned along.
+      const VertexWeights w = sample_weights(in, t, lambda, fallbacks);
+      Vec3d p{0, 0, 0}, n{0, 0, 0};
+      for (int k = 0; k < w.count; ++k) {
+        p += get3(s.positions_world, w.vertex[k]) * w.weight[k];
+        n += get3(s.normals_world, w.vertex[k]) * w.weight[k];
+      }
+      // Renormalised. Vertex normals are finite (checked on input) and usually unit, so the plain
+      // squared length is safe; outside [2^-1000, 2^1000] (opposite normals cancelling, absurd
+      // input lengths) the normal counts as zero and the equation keeps only the ambient terms.
+      const double n2 = dot(n, n);
+      n = n2 > 0x1p-1000 && n2 <= 0x1p1000 ? n * (1.0 / std::sqrt(n2)) : Vec3d{0, 0, 0};  // divisor checked
+      return s.shader->shade(p, n, counters);
+    }
+  }
+  return {0, 0, 0};
+}
+
+struct TileResult {
+  std::size_t covered = 0, fallbacks = 0;
+};
+
+// Per-thread scratch for one tile (reused from tile to tile).
+struct TileBuffers {
+  std::vector<double> depth, lambda1, lambda2;
+  std::vector<const ScreenTriangle*> owner;
+};
+
+TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTriangle*>& bin, int tile_x, int tile_y,
+                       TileBuffers& buffers, RasterOutput& out) {
+  const int N = in.samples;
+  const int px0 = tile_x * kTilePixels, py0 = tile_y * kTilePixels;
+  const int px1 = std::min(in.width, px0 + kTilePixels), py1 = std::min(in.height, py0 + kTilePixels);
+  const Vec3d background = in.surface->background;
+  if (bin.empty()) {  // nothing here: the background, no per-sample work
+    for (int py = py0; py < py1; ++py)
+      for (int pxl = px0; pxl < px1; ++pxl) {
+        float* o = out.image.pixel(pxl, py);
+        o[0] = float(background.x), o[1] = float(background.y), o[2] = float(background.z);
+      }
+    return {};
+  }
+  const int sx0 = px0 * N, sy0 = py0 * N, sx1 = px1 * N - 1, sy1 = py1 * N - 1;  // inclusive
+  const int tw = sx1 - sx0 + 1, th = sy1 - sy0 + 1;
+  const std::size_t count = std::size_t(tw) * std::size_t(th);
+  buffers.depth.assign(count, std::numeric_limits<double>::infinity());
+  buffers.owner.assign(count, nullptr);
+  buffers.lambda1.resize(count);
+  buffers.lambda2.resize(count);
+  double* depth = buffers.depth.data();
+  const ScreenTriangle** owner = buffers.owner.data();
+  double* lambda1 = buffers.lambda1.data();
+  double* lambda2 = buffers.lambda2.data();
+  const std::size_t full_width = std::size_t(in.width) * std::size_t(N);
+
+  for (const ScreenTriangle* tp : bin) {
+    const ScreenTriangle& t = *tp;
+    const int bx0 = std::max(t.sx0, sx0), bx1 = std::min(t.sx1, sx1);
+    const int by0 = std::max(t.sy0, sy0), by1 = std::min(t.sy1, sy1);
+    if (bx0 > bx1 || by0 > by1) continue;
+    const std::int64_t X0 = t.X[0], Y0 = t.Y[0], X1 = t.X[1], Y1 = t.Y[1], X2 = t.X[2], Y2 = t.Y[2];
+    const std::int64_t area = orient(X0, Y0, X1, Y1, X2, Y2);  // > 0 (setup)
+    const double inv_area = 1.0 / double(area);
+    const std::int64_t bias0 = top_left_bias(X1, Y1, X2, Y2);
+    const std::int64_t bias1 = top_left_bias(X2, Y2, X0, Y0);
+    const std::int64_t bias2 = top_left_bias(X0, Y0, X1, Y1);
+    // Per-sample steps of the edge functions (orient(a, b, p): d/dpx = -(by - ay), d/dpy = bx - ax).
+    const std::int64_t step_x0 = -(Y2 - Y1) * kSubUnits, step_y0 = (X2 - X1) * kSubUnits;
+    const std::int64_t step_x1 = -(Y0 - Y2) * kSubUnits, step_y1 = (X0 - X2) * kSubUnits;
+    const std::int64_t step_x2 = -(Y1 - Y0) * kSubUnits, step_y2 = (X1 - X0) * kSubUnits;
+    const std::int64_t px = std::int64_t(bx0) * kSubUnits + kSubUnits / 2;
+    const std::int64_t py = std::int64_t(by0) * kSubUnits + kSubUnits / 2;
+    std::int64_t row0 = orient(X1, Y1, X2, Y2, px, py) + bias0 - 1;  // inside: E + bias - 1 >= 0
+    std::int64_t row1 = orient(X2, Y2, X0, Y0, px, py) + bias1 - 1;
+    std::int64_t row2 = orient(X0, Y0, X1, Y1, px, py) + bias2 - 1;
+    for (int sy = by0; sy <= by1; ++sy) {
+      std::int64_t e0 = row0, e1 = row1, e2 = row2;
+      std::size_t s = std::size_t(sy - sy0) * std::size_t(tw) + std::size_t(bx0 - sx0);
+      for (int sx = bx0; sx <= bx1; ++sx, ++s, e0 += step_x0, e1 += step_x1, e2 += step_x2) {
+        if ((e0 | e1 | e2) < 0) continue;
+        if (in.count_coverage) ++out.coverage[std::size_t(sy) * full_width + std::size_t(sx)];
+        const double l0 = double(e0 + 1 - bias0) * inv_area;
+        const double l1 = double(e1 + 1 - bias1) * inv_area;
+        const double l2 = double(e2 + 1 - bias2) * inv_area;
+        const double z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
+        if (z < depth[s]) {
+          depth[s] = z;
+          owner[s] = tp;
+          lambda1[s] = l1;
+          lambda2[s] = l2;
+        }
+      }
+      row0 += step_y0;
+      row1 += step_y1;
+      row2 += step_y2;
+    }
+  }
+
+  // Shade the visible samples and box-filter them into pixels.
+  TileResult r;
+  ShadeCounters counters;
+  const double inv_samples = 1.0 / double(N * N);  // N >= 1
+  for (int py = py0; py < py1; ++py) {
+    for (int pxl = px0; pxl < px1; ++pxl) {
+      Vec3d sum{0, 0, 0};
+      for (int j = 0; j < N; ++j) {
+        for (int i = 0; i < N; ++i) {
+          const std::size_t s = std::size_t((py - py0) * N + j) * std::size_t(tw) + std::size_t((pxl - px0) * N + i);
+          if (owner[s] == nullptr) {
+            sum += background;
+            continue;
+          }
+          ++r.covered;
+          const double lambda[3] = {1.0 - lambda1[s] - lambda2[s], lambda1[s], lambda2[s]};
+          sum += shade_sample(in, *owner[s], lambda, counters, r.fallbacks);
+        }
+      }
+      float* out_px = out.image.pixel(pxl, py);
+      out_px[0] = float(sum.x * inv_samples);
+      out_px[1] = float(sum.y * inv_samples);
+      out_px[2] = float(sum.z * inv_samples);
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+RasterOutput rasterize_tiles(const RasterInput& in) {
+  RasterOutput out;
+  out.image.width = in.width;
+  out.image.height = in.height;
+  out.image.rgb.resize(std::size_t(in.width) * std::size_t(in.height) * 3);  // every pixel written by its tile
+  const int N = in.samples;
+  if (in.count_coverage) out.coverage.assign(std::size_t(in.width) * N * std::size_t(in.height) * N, 0);
+
+  // Bins: each tile lists the triangles whose sample bounds meet it, in triangle order.
+  const int tiles_x = (in.width + kTilePixels - 1) / kTilePixels;
+  const int tiles_y = (in.height + kTilePixels - 1) / kTilePixels;
+  const int tile_samples = kTilePixels * N;
+  std::vector<std::vector<const ScreenTriangle*>> bins(std::size_t(tiles_x) * std::size_t(tiles_y));
+  for (const auto& part : in.parts)
+    for (const ScreenTriangle& t : part) {
+      if (t.sx0 > t.sx1 || t.sy0 > t.sy1) continue;
+      for (int ty = t.sy0 / tile_samples; ty <= t.sy1 / tile_samples; ++ty)
+        for (int tx = t.sx0 / tile_samples; tx <= t.sx1 / tile_samples; ++tx)
+          bins[std::size_t(ty) * std::size_t(tiles_x) + std::size_t(tx)].push_back(&t);
+    }
+
+  std::vector<TileResult> results(bins.size());
+  tbb::enumerable_thread_specific<TileBuffers> scratch;
+  // In the caller's arena (render_mesh sets the thread count); which thread runs a tile does not
+  // change its pixels.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+    TileBuffers& buffers = scratch.local();
+    for (std::size_t k = r.begin(); k < r.end(); ++k)
+      results[k] = raster_tile(in, bins[k], int(k % std::size_t(tiles_x)), int(k / std::size_t(tiles_x)), buffers, out);
+  });
+  for (const TileResult& r : results) {
+    out.samples_covered += r.covered;
+    out.quad_fallbacks += r.fallbacks;
+  }
+  return out;
+}
+
+}  // namespace shadetool::render_engine

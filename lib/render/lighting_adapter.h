@@ -1,0 +1,59 @@
+// lighting_adapter.h: EVERY point where the renderer touches lib/lighting, in one file, so that a
+// change of lighting's API is absorbed here and nowhere else in lib/render.
+//
+//   baked_vertex_colors   Gouraud: the colours `bake-lighting --per vertex` computes (the same call,
+//                         lighting/bake_lighting.h), #V by 3 linear doubles
+//   baked_face_colors     flat: `bake-lighting --per face` (face normal at the face's centroid),
+//                         #F by 3 linear doubles
+//   shading_vertex_normals Phong: the vertex normals bake_lighting lights each vertex with (input
+//                         vertex normals; else input corner normals that agree per vertex; else
+//                         angle-weighted, double), #V by 3 object space, so that Phong at a vertex
+//                         equals the baked colour there
+//   PointShader           Phong: lighting/shade_point.h (the lighting equation at one world-space
+//                         point with a world-space normal; every light kind lighting supports)
+//   encode_srgb_8bit      lighting/encode_color.h's sRGB curve and 8-bit quantisation
+//
+// Precision: double, as lib/lighting. PointShader::shade is const and thread-safe (counters are
+// the caller's).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <shadetool/core/mesh.h>
+#include <shadetool/lighting/scene.h>
+#include <shadetool/lighting/shade_point.h>
+#include <shadetool/lighting/shade_points.h>
+#include <shadetool/lighting/shading_space.h>
+
+namespace shadetool {
+
+struct RenderLightingOptions {
+  std::optional<ShadingModel> model;        // overrides the scene's (--model)
+  ShadingSpace space = ShadingSpace::Auto;  // where bake_lighting evaluates (--space); same colours
+};
+
+std::vector<double> baked_vertex_colors(const Mesh& mesh, const Scene& scene, const RenderLightingOptions& options);
+std::vector<double> baked_face_colors(const Mesh& mesh, const Scene& scene, const RenderLightingOptions& options);
+std::vector<double> shading_vertex_normals(const Mesh& mesh);
+
+class PointShader {
+ public:
+  PointShader(const Scene& scene, const RenderLightingOptions& options);
+  // The linear colour at p_world with normal n_world (any length; zero: ambient terms only).
+  Vec3d shade(const Vec3d& p_world, const Vec3d& n_world, ShadeCounters& count) const {
+    return shade_point(lighting_, p_world, n_world, &count);
+  }
+
+ private:
+  PointLighting lighting_;  // world space: lights and eye in world coordinates
+};
+
+// The eye in world space (lighting/scene.h eye_world).
+Vec3d scene_eye_world(const Scene& scene);
+
+// Linear value -> 8-bit sRGB code (IEC 61966-2-1, then round(255 * clamp(c, 0, 1)); NaN -> 0).
+std::uint8_t encode_srgb_8bit(double linear);
+
+}  // namespace shadetool

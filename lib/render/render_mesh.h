@@ -1,0 +1,93 @@
+// render_mesh.h: a mesh rendered to a linear RGB image: flat, Gouraud or Phong shading, with the
+// lighting of lib/lighting (the same equation and code as `bake-lighting`).
+//
+// Inputs:  mesh     positions #V by 3 (object space), faces of any size; normals if it has them
+//          scene    lighting/scene.h: lights, material, world_from_object M, camera (render/camera.h
+//                   for the projection fields), two_sided
+//          options  shading, size W x H, N x N samples per pixel, background, model/space, threads
+// Output:  RenderResult: image (H x W x 3 floats, linear, unclamped, row 0 at the top), camera,
+//          counts (RenderStats), and optionally the coverage count of every sample.
+//
+// Pipeline (one step per file):
+//   1. positions to world (M) and to clip space (camera.h); normals to world by sign(det) cof(M).
+//   2. faces fanned into triangles from corner 0; quads keep their four corners for shading.
+//   3. per triangle: clipped against near/far/guard band (clip_polygon.h), projected, snapped to
+//      1/256 of a sample (fill_rule.h), back faces culled unless scene.two_sided (orientation
+//      as seen by the camera, times sign(det(V M)): a mirror keeps its outside outside).
+//   4. tiles of 32 x 32 pixels on TBB threads (engine/tile_raster.cpp): per sample the nearest
+//      triangle (depth test on z/w, ties to the lower triangle index) and its screen barycentrics;
+//      then per visible sample the perspective-correct barycentrics of the original triangle,
+//        b_i = (lambda_i / w_i) / sum_j (lambda_j / w_j)
+//      (screen barycentrics lambda are affine in screen space, attributes are affine in 1/w-space),
+//      and the shading:
+//        flat     the face's colour from bake_lighting per face (face normal at the centroid)
+//        gouraud  the baked vertex colours (bake_lighting per vertex), interpolated
+//        phong    world position and world normal interpolated, the normal renormalised, the
+//                 lighting equation evaluated at the sample (render/lighting_adapter.h)
+//      quads: the sample's world point through the inverse bilinear map (inverse_bilinear.h) and
+//      the four corners' values (colours; for phong positions and normals) blended bilinearly,
+//      so no diagonal seam shows and the image does not depend on the diagonal fanned along;
+//   5. box filter: each pixel is the mean of its N x N samples (strata centres, background where
+//      no triangle is).
+//
+// Determinism: every tile reads the triangles in index order and writes only its own pixels, so
+// the image is bitwise the same for any number of threads.
+// Precision: geometry and shading in double (the lighting's), fixed-point coverage (exact), the
+// image stored as float.
+// Errors (shadetool::Error, one line naming `name`): size or samples out of range, a perspective
+// camera whose eye is inside the mesh (|generalised winding number| above 1/2, repair/
+// winding_number.h; tested only when the eye is inside the mesh's bounding box).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <shadetool/core/mesh.h>
+#include <shadetool/lighting/scene.h>
+#include <shadetool/render/camera.h>
+#include <shadetool/render/image.h>
+#include <shadetool/render/lighting_adapter.h>
+
+namespace shadetool {
+
+enum class RenderShading { Flat, Gouraud, Phong };
+const char* render_shading_name(RenderShading shading);  // "flat", "gouraud", "phong"
+
+constexpr int kMaxImageSide = 16384;
+constexpr int kMaxSamples = 16;
+
+struct RenderOptions {
+  RenderShading shading = RenderShading::Phong;
+  int width = 800, height = 600;
+  int samples = 1;                    // N: N x N samples per pixel, 1..16
+  Vec3d background{0, 0, 0};          // linear RGB
+  RenderLightingOptions lighting;     // --model, --space
+  int threads = 0;                    // 0: TBB's default
+  bool count_coverage = false;        // fill RenderResult::coverage (tests)
+  bool check_eye_inside = true;       // refuse a camera inside the mesh
+};
+
+struct RenderStats {
+  std::size_t faces = 0;
+  std::size_t triangles = 0;              // after fanning
+  std::size_t faces_culled = 0;           // every triangle back-facing (not two_sided)
+  std::size_t faces_outside_view = 0;     // every triangle outside the view volume
+  std::size_t faces_degenerate = 0;       // < 3 corners, or zero area on screen (seen edge-on)
+  std::size_t triangles_near_clipped = 0; // triangles crossing the near plane, clipped
+  std::size_t samples_covered = 0;        // samples with a visible triangle
+  std::size_t quad_fallbacks = 0;         // quad samples whose inverse bilinear map failed (fan used)
+};
+
+struct RenderResult {
+  ImageRGB image;
+  RenderCamera camera;
+  RenderStats stats;
+  std::vector<std::uint32_t> coverage;  // count_coverage: (H N) x (W N) counts, row-major
+};
+
+RenderResult render_mesh(const Mesh& mesh, const Scene& scene, const RenderOptions& options,
+                         const std::string& name = "<mesh>");
+
+}  // namespace shadetool

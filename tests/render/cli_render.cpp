@@ -1,0 +1,81 @@
+// shadetool render from the command line: outputs, exit codes, no partial files.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "support/run_process.h"
+
+using shadetool_test::run_shadetool;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string src = SHADETOOL_SOURCE_DIR;
+const std::string torus = src + "/data/torus.obj";
+const std::string studio = src + "/data/scenes/studio.json";
+
+fs::path scratch(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("shadetool_render_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("render writes an sRGB PNG, or a PFM with --hdr", "[render][cli]") {
+  const fs::path d = scratch("ok");
+  const auto r = run_shadetool("render " + torus + " -o " + (d / "t.png").string() + " --scene " + studio +
+                               " --shading gouraud --size 64,48 --stats");
+  CHECK(r.code == 0);
+  CHECK(r.err.find("culled_faces=") != std::string::npos);
+  CHECK(r.err.find("faces_outside_view=0") != std::string::npos);
+  const std::string png = shadetool_test::read_file((d / "t.png").string());
+  REQUIRE(png.size() > 50);
+  CHECK(png.compare(1, 3, "PNG") == 0);
+  CHECK(png.find("sRGB") != std::string::npos);
+  const auto h = run_shadetool("render " + torus + " -o " + (d / "t.pfm").string() + " --scene " + studio + " --hdr --size 8,6");
+  CHECK(h.code == 0);
+  const std::string pfm = shadetool_test::read_file((d / "t.pfm").string());
+  CHECK(pfm.compare(0, 9, "PF\n8 6\n-1") == 0);
+  CHECK(pfm.size() == std::string("PF\n8 6\n-1.0\n").size() + 8 * 6 * 12);
+}
+
+TEST_CASE("render: bad input is one line, exit 1, and no output file", "[render][cli]") {
+  const fs::path d = scratch("bad");
+  const std::string out = (d / "o.png").string();
+  auto r = run_shadetool("render " + torus + " -o " + out + " --scene " + studio + " --size 0,10");
+  CHECK(r.code == 1);
+  CHECK(r.err.find("each side must be 1..16384") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(out));
+
+  r = run_shadetool("render " + torus + " -o " + (d / "missing" / "o.png").string() + " --scene " + studio + " --size 8,8");
+  CHECK(r.code == 1);
+  CHECK(r.err.find("cannot write") != std::string::npos);
+
+  std::ofstream(d / "up.json") << R"({"camera": {"eye": [0,5,0], "target": [0,0,0], "up": [0,1,0]}})";
+  r = run_shadetool("render " + torus + " -o " + out + " --scene " + (d / "up.json").string());
+  CHECK(r.code == 1);
+  CHECK(r.err.find("$.camera.up: is parallel to the view direction") != std::string::npos);
+
+  std::ofstream(d / "inside.json") << R"({"camera": {"eye": [1,0,0], "target": [0,1,0]}})";  // in the tube
+  r = run_shadetool("render " + torus + " -o " + out + " --scene " + (d / "inside.json").string() + " --size 8,8");
+  CHECK(r.code == 1);
+  CHECK(r.err.find("is inside the mesh") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+
+  // An existing output is not touched by a failed render.
+  std::ofstream(out) << "keep";
+  r = run_shadetool("render " + torus + " -o " + out + " --scene " + (d / "inside.json").string() + " --size 8,8");
+  CHECK(r.code == 1);
+  CHECK(shadetool_test::read_file(out) == "keep");
+
+  r = run_shadetool("render " + torus + " --scene " + studio);  // no output: usage
+  CHECK(r.code == 2);
+  r = run_shadetool("render " + torus + " -o " + out + " --scene " + studio + " --shading toon");
+  CHECK(r.code == 2);
+  r = run_shadetool("render " + torus + " -o " + out + " --scene " + studio + " --samples 0");
+  CHECK(r.code == 2);
+}
