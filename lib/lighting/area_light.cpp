@@ -45,11 +45,17 @@ const GaussRule& gauss_legendre(int q) {
 }
 
 // Orientation of a convex spherical polygon: +1 counter-clockwise seen from outside the sphere
-// (a x b points into the polygon), -1 clockwise; 0 when degenerate (zero area).
-double orientation(const Vec3d* d, int count) {
-  double s = 0;
-  for (int i = 1; i + 1 < count; ++i) s += dot(d[0], cross(d[i], d[i + 1]));
-  return s > 0 ? 1.0 : s < 0 ? -1.0 : 0.0;
+// (q_i x d_i points into the polygon), -1 clockwise; 0 when degenerate (zero area). The fan's
+// triple products q_0 . (q_i x q_(i+1)) = q_0 . (s_i x s_(i+1)) with s_i = q_i - q_0 summed from
+// edges (no cancellation).
+double orientation(const SphericalPolygon& P) {
+  double sum = 0;
+  Vec3d s{0, 0, 0};
+  for (int i = 1; i + 1 < P.count; ++i) {
+    s += P.d[i - 1];
+    sum += dot(P.q[0], cross(s, s + P.d[i]));
+  }
+  return sum > 0 ? 1.0 : sum < 0 ? -1.0 : 0.0;
 }
 
 // Integral over the spherical triangle (a, b, c) of f, by the central projection of the flat
@@ -74,6 +80,15 @@ double triangle_quadrature(const Vec3d& a, const Vec3d& b, const Vec3d& c, int q
   return sum;
 }
 
+// A unit vector perpendicular to unit `axis`, toward `toward` when it is not parallel: built from
+// the two vectors only (no world axis), so a rotated scene gets the rotated quadrature points.
+Vec3d frame_axis(const Vec3d& axis, const Vec3d& toward) {
+  const Vec3d t = toward - axis * dot(axis, toward);
+  if (length(t) > 1e-8) return normalized_or(t, Vec3d{0, 0, 0});
+  const Vec3d any = std::fabs(axis.x) < 0.6 ? Vec3d{1, 0, 0} : std::fabs(axis.y) < 0.6 ? Vec3d{0, 1, 0} : Vec3d{0, 0, 1};
+  return normalized_or(any - axis * dot(axis, any), Vec3d{0, 0, 1});
+}
+
 // E_k = integral along the arc from a to b (unit, angle theta) of (w.u)^k ds, k = start, start+2,
 // ...: h(s) = A cos s + B sin s, C^2 = A^2 + B^2, and
 //   E_k = (k-1)/k C^2 E_{k-2} - [h^{k-1} h']_0^theta / k,  E_0 = theta, E_1 = A sin + B (1 - cos).
@@ -85,82 +100,101 @@ struct EdgeMoment {
 
 }  // namespace
 
-int clip_to_hemisphere(const Vec3d* in, int count, const Vec3d& axis, Vec3d* out) {
+void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, SphericalPolygon& out) {
   int m = 0;
-  for (int i = 0; i < count; ++i) {
-    const Vec3d& a = in[i];
-    const Vec3d& b = in[(i + 1) % count];
+  bool horizon[kMaxClippedVertices];  // out vertex m starts an edge along the horizon
+  for (int i = 0; i < in.count; ++i) {
+    const int j = (i + 1) % in.count;
+    const Vec3d &a = in.q[i], &b = in.q[j];
     const double da = dot(axis, a), db = dot(axis, b);
-    if (da >= 0) out[m++] = a;
-    if ((da >= 0) != (db >= 0)) {
-      // The chord a + t (b - a) projects onto the arc: its crossing of the plane axis.x = 0 is the
-      // arc's. da - db != 0 (the signs differ).
+    const bool a_in = da >= 0, b_in = db >= 0;
+    if (a_in && b_in) {
+      out.q[m] = a, out.d[m] = in.d[i], horizon[m++] = false;
+    } else if (a_in != b_in) {
+      // The edge a + t d crosses the plane axis.x = 0 at t = da / (da - db) (the signs differ).
       const double t = da / (da - db);
-      out[m++] = normalized_or(a + (b - a) * t, a);
+      const Vec3d x = a + in.d[i] * t;
+      if (a_in) {
+        out.q[m] = a, out.d[m] = in.d[i] * t, horizon[m++] = false;
+        out.q[m] = x, horizon[m++] = true;  // leaves along the horizon
+      } else {
+        out.q[m] = x, out.d[m] = in.d[i] * (1 - t), horizon[m++] = false;
+      }
     }
   }
-  return m;
+  for (int i = 0; i < m; ++i)
+    if (horizon[i]) out.d[i] = out.q[(i + 1) % m] - out.q[i];
+  out.count = m;
 }
 
-double lambert_polygon_integral(const Vec3d* d, int count, const Vec3d& n) {
+double lambert_polygon_integral(const SphericalPolygon& P, const Vec3d& n) {
   double sum = 0;
-  for (int i = 0; i < count; ++i) {
-    const Vec3d c = cross(d[i], d[(i + 1) % count]);
+  for (int i = 0; i < P.count; ++i) {
+    const Vec3d c = cross(P.q[i], P.d[i]);  // = q_i x q_(i+1): the edge's plane normal
     const double s = length(c);
     if (!(s > 0)) continue;  // a zero-length edge: Theta = 0
-    sum += std::atan2(s, dot(d[i], d[(i + 1) % count])) * (dot(n, c) / s);  // divisor checked
+    const double theta = std::atan2(s, dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]));  // q_i . q_(i+1)
+    sum += theta * (dot(n, c) / s);  // divisor checked
   }
   return 0.5 * std::fabs(sum);
 }
 
-double polygon_solid_angle(const Vec3d* d, int count) {
+double polygon_solid_angle(const SphericalPolygon& P) {
+  // tan(Omega_t / 2) = |a.(b x c)| / (|a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|) per fan triangle
+  const Vec3d& a = P.q[0];
+  const double la = length(a);
   double omega = 0;
-  for (int i = 1; i + 1 < count; ++i) {
-    const Vec3d &a = d[0], &b = d[i], &c = d[i + 1];
-    const double det = std::fabs(dot(a, cross(b, c)));
-    omega += 2.0 * std::atan2(det, 1.0 + dot(a, b) + dot(b, c) + dot(c, a));
+  Vec3d s{0, 0, 0};
+  for (int i = 1; i + 1 < P.count; ++i) {
+    s += P.d[i - 1];
+    const Vec3d &b = P.q[i], c = P.q[i + 1];
+    const double det = std::fabs(dot(a, cross(s, s + P.d[i])));
+    const double lb = length(b), lc = length(c);
+    omega += 2.0 * std::atan2(det, la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la);
   }
   return omega;
 }
 
-double polygon_axial_moment(const Vec3d* d, int count, const Vec3d& w, int k) {
-  // tau_k = (k-1)/(k+1) tau_{k-2} + 1/(k+1) sum_i (w.gamma_i) E_i,{k-1}
-  // (Laplace-Beltrami of (w.u)^k and Stokes; gamma_i the unit normal of edge i's great circle
-  // pointing into the polygon), tau_0 = solid angle, tau_{-1} = 0.
-  const double o = orientation(d, count);
+double polygon_axial_moment(const SphericalPolygon& P, const Vec3d& w, int k) {
+  // tau_k = (k-1)/(k+1) tau_(k-2) + 1/(k+1) sum_i (w.gamma_i) E_i,(k-1)
+  // (the Laplace-Beltrami operator of (w.u)^k and Stokes over the polygon; gamma_i the unit
+  // normal of edge i's great circle pointing into the polygon), tau_0 = solid angle, tau_-1 = 0.
+  const double o = orientation(P);
   if (o == 0) return 0;
   EdgeMoment edges[kMaxClippedVertices];
   Vec3d gamma[kMaxClippedVertices];
   int m = 0;
   const bool odd = k % 2 == 1;
-  for (int i = 0; i < count; ++i) {
-    const Vec3d &a = d[i], &b = d[(i + 1) % count];
-    const Vec3d c = cross(a, b);
-    const double s = length(c);
-    if (!(s > 0)) continue;  // zero-length edge: no contribution
+  for (int i = 0; i < P.count; ++i) {
+    const Vec3d c = cross(P.q[i], P.d[i]);
+    const double s = length(c), la = length(P.q[i]);
+    if (!(s > 0) || !(la > 0)) continue;  // zero-length edge: no contribution
     const Vec3d g = c * (1.0 / s);
+    const Vec3d a = P.q[i] * (1.0 / la);
+    const Vec3d b = normalized_or(P.q[i] + P.d[i], a);
     const Vec3d t = cross(g, a);  // unit tangent at a toward b
     EdgeMoment e;
-    e.theta = std::atan2(s, dot(a, b));
+    e.theta = std::atan2(s, dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]));
+    const double sin_t = std::sin(e.theta), half = std::sin(0.5 * e.theta);
+    const double one_minus_cos = 2 * half * half;  // no cancellation for small edges
     e.A = dot(w, a);
     e.B = dot(w, t);
     e.hb = dot(w, b);
-    e.hb_prime = -e.A * std::sin(e.theta) + e.B * std::cos(e.theta);
+    e.hb_prime = -e.A * sin_t + e.B * std::cos(e.theta);
     e.C2 = e.A * e.A + e.B * e.B;
-    // E at k-1 = 0 (k odd) or 1 (k even)
-    e.E = odd ? e.theta : e.A * std::sin(e.theta) + e.B * (1 - std::cos(e.theta));
-    e.pow_a = odd ? e.A : e.A * e.A;       // A^(j-1) for the next E_j, j = k0 + 2
+    e.E = odd ? e.theta : e.A * sin_t + e.B * one_minus_cos;  // E_0 or E_1
+    e.pow_a = odd ? e.A : e.A * e.A;  // A^(j-1), hb^(j-1) for the next E_j, j = k0 + 2
     e.pow_b = odd ? e.hb : e.hb * e.hb;
     gamma[m] = g * o;
     edges[m++] = e;
   }
-  double tau = odd ? 0.0 : polygon_solid_angle(d, count);
-  for (int j = odd ? 1 : 2; j <= k; j += 2) {  // tau_j from tau_{j-2} and E_{j-1}
+  double tau = odd ? 0.0 : polygon_solid_angle(P);
+  for (int j = odd ? 1 : 2; j <= k; j += 2) {  // tau_j from tau_(j-2) and E_(j-1)
     double sum = 0;
     for (int i = 0; i < m; ++i) sum += dot(w, gamma[i]) * edges[i].E;
     tau = (j - 1.0) / (j + 1.0) * tau + sum / (j + 1.0);
     if (j + 2 > k) break;
-    const int next = j + 1;  // E_{next} from E_{next-2}
+    const int next = j + 1;  // E_next = (next-1)/next C^2 E_(next-2) - [h^(next-1) h']_0^theta / next
     for (int i = 0; i < m; ++i) {
       EdgeMoment& e = edges[i];
       e.E = (next - 1.0) / next * e.C2 * e.E - (e.pow_b * e.hb_prime - e.pow_a * e.B) / next;
@@ -205,31 +239,37 @@ double lobe_value(const SpecularLobe& lobe, const Vec3d& w) {
   return 0;
 }
 
-double polygon_specular_integral(const Vec3d* d, int count, const Vec3d& n, const SpecularLobe& lobe) {
+namespace {
+
+// The fan of spherical triangles (q_0, q_i, q_(i+1)), each by triangle_quadrature of order q.
+double polygon_quadrature(const SphericalPolygon& P, int q, const SpecularLobe& lobe) {
+  const Vec3d a = normalized_or(P.q[0], Vec3d{0, 0, 0});
+  double s = 0;
+  for (int i = 1; i + 1 < P.count; ++i)
+    s += triangle_quadrature(a, normalized_or(P.q[i], a), normalized_or(P.q[i + 1], a), q,
+                             [&](const Vec3d& w) { return lobe_value(lobe, w); });
+  return s;
+}
+
+}  // namespace
+
+double polygon_specular_integral(const SphericalPolygon& P, const SpecularLobe& lobe) {
   switch (lobe.kind) {
     case LobeKind::None: return 0;
     case LobeKind::Phong: {
-      if (lobe.shininess == 0) return polygon_solid_angle(d, count);  // max(R.w,0)^0 = 1 (0^0 = 1)
-      Vec3d clipped[kMaxClippedVertices];
-      const int m = clip_to_hemisphere(d, count, lobe.reflected, clipped);  // R = 0 (at the eye): all kept
-      if (m < 3) return 0;
-      if (lobe.reflected == Vec3d{0, 0, 0}) return 0;  // R.w = 0 everywhere: 0^s = 0 for s > 0
+      if (lobe.shininess == 0) return polygon_solid_angle(P);  // max(R.w,0)^0 = 1 (0^0 = 1)
+      if (lobe.reflected == Vec3d{0, 0, 0}) return 0;         // at the eye: R.w = 0, 0^s = 0
+      SphericalPolygon clipped;
+      clip_to_hemisphere(P, lobe.reflected, clipped);
+      if (clipped.count < 3) return 0;
       const double k = std::round(lobe.shininess);
-      if (k == lobe.shininess && k <= 4096) return polygon_axial_moment(clipped, m, lobe.reflected, int(k));
-      double s = 0;
-      for (int i = 1; i + 1 < m; ++i)
-        s += triangle_quadrature(clipped[0], clipped[i], clipped[i + 1], lobe.quadrature_order,
-                                 [&](const Vec3d& w) { return lobe_value(lobe, w); });
-      return s;
+      if (k == lobe.shininess && k <= 4096) {
+        if (polygon_solid_angle(clipped) >= 1e-4) return polygon_axial_moment(clipped, lobe.reflected, int(k));
+        return polygon_quadrature(clipped, 8, lobe);  // small: see polygon_axial_moment
+      }
+      return polygon_quadrature(clipped, lobe.quadrature_order, lobe);
     }
-    case LobeKind::BlinnPhong: {
-      (void)n;  // d is already inside n's hemisphere; lobe.normal is n
-      double s = 0;
-      for (int i = 1; i + 1 < count; ++i)
-        s += triangle_quadrature(d[0], d[i], d[i + 1], lobe.quadrature_order,
-                                 [&](const Vec3d& w) { return lobe_value(lobe, w); });
-      return s;
-    }
+    case LobeKind::BlinnPhong: return polygon_quadrature(P, lobe.quadrature_order, lobe);
   }
   return 0;
 }
@@ -242,16 +282,28 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
     t.inside = side == 0;
     return t;
   }
-  Vec3d dirs[kMaxAreaVertices];
-  for (int i = 0; i < count; ++i) dirs[i] = normalized_or(vertices[i] - p, Vec3d{0, 0, 0});  // p off the plane: != 0
-  Vec3d clipped[kMaxClippedVertices];
-  const int m = clip_to_hemisphere(dirs, count, n, clipped);
-  if (m < 3) {
+  // Directions from p scaled by one power of two (exact) so that no product overflows.
+  SphericalPolygon P;
+  P.count = count;
+  double big = 0;
+  for (int i = 0; i < count; ++i) {
+    P.q[i] = vertices[i] - p;
+    big = std::fmax(big, std::fmax(std::fabs(P.q[i].x), std::fmax(std::fabs(P.q[i].y), std::fabs(P.q[i].z))));
+  }
+  const int e = big > 0 && std::isfinite(big) ? std::ilogb(big) : 0;
+  for (int i = 0; i < count; ++i) {
+    const Vec3d edge = vertices[(i + 1) % count] - vertices[i];
+    P.q[i] = {std::scalbn(P.q[i].x, -e), std::scalbn(P.q[i].y, -e), std::scalbn(P.q[i].z, -e)};
+    P.d[i] = {std::scalbn(edge.x, -e), std::scalbn(edge.y, -e), std::scalbn(edge.z, -e)};
+  }
+  SphericalPolygon clipped;
+  clip_to_hemisphere(P, n, clipped);
+  if (clipped.count < 3) {
     t.below_horizon = true;
     return t;
   }
-  t.P = lambert_polygon_integral(clipped, m, n);
-  t.S = polygon_specular_integral(clipped, m, n, lobe);
+  t.P = lambert_polygon_integral(clipped, n);
+  t.S = polygon_specular_integral(clipped, lobe);
   return t;
 }
 
@@ -274,30 +326,50 @@ AreaTerms sphere_light_terms(const Vec3d& center, double radius, const Vec3d& p,
   }
   t.P = sphere_projected_solid_angle(cos_theta, sin2);
   if (lobe.kind == LobeKind::None) return t;
-  // S: polar Gauss-Legendre over the cap (theta in [0, sigma], q nodes, weight sin theta) times
-  // 2q equispaced azimuths (exact for trigonometric polynomials of degree < 2q), with [n.w > 0].
+  // S: polar Gauss-Legendre over the cap in u = 1 - cos(theta) (dw = du dphi), with the horizon
+  // cut done exactly per ring: with e1 toward n (n.e2 = 0), n.w > 0 on the ring at theta iff
+  // cos(phi) > -cos(theta) (n.c) / (sin(theta) (n.e1)), an arc |phi| < phi_max integrated by
+  // Gauss-Legendre too. The ring integral has a square-root kink where the ring touches the
+  // horizon (theta* = asin|n.c|): the u range is split there. Error measured in bench/lighting.
   const SpecularLobe& b = lobe;
-  const Vec3d e1 = normalized_or(std::fabs(c.x) < 0.9 ? cross(c, Vec3d{1, 0, 0}) : cross(c, Vec3d{0, 1, 0}), Vec3d{0, 0, 1});
+  const Vec3d e1 = frame_axis(c, n);  // toward n
   const Vec3d e2 = cross(c, e1);
+  const double n_c = dot(n, c), n_e1 = dot(n, e1);
   const double cos_sigma = std::sqrt(std::fmax(0.0, 1 - sin2));
   const double one_minus_cos_sigma = sin2 / (1 + cos_sigma);  // no cancellation for small lights
+  const double n_c2 = n_c * n_c;
+  const double u_star = n_c2 < sin2 ? n_c2 / (1 + std::sqrt(1 - n_c2)) : one_minus_cos_sigma;  // 1 - cos(theta*)
   const int q = lobe.quadrature_order;
   const GaussRule& g = gauss_legendre(q);
+  const GaussRule& gp = gauss_legendre(2 * q > 64 ? 64 : 2 * q);
   double s = 0;
-  for (int i = 0; i < q; ++i) {
-    // theta through u = 1 - cos(theta) in [0, 1 - cos sigma] (dw = du dphi): smooth in u.
-    const double one_minus_cos = one_minus_cos_sigma * g.x[i];
-    const double ct = 1 - one_minus_cos;
-    const double st = std::sqrt(std::fmax(0.0, one_minus_cos * (2 - one_minus_cos)));
-    double ring = 0;
-    for (int j = 0; j < 2 * q; ++j) {
-      const double phi = kPi * j / q;
-      const Vec3d w = c * ct + (e1 * std::cos(phi) + e2 * std::sin(phi)) * st;
-      if (dot(n, w) > 0) ring += lobe_value(b, w);
+  const double bounds[3] = {0, u_star, one_minus_cos_sigma};
+  for (int piece = 0; piece < 2; ++piece) {
+    const double u0 = bounds[piece], du = bounds[piece + 1] - u0;
+    if (!(du > 0)) continue;
+    for (int i = 0; i < q; ++i) {
+      const double one_minus_cos = u0 + du * g.x[i];
+      const double ct = 1 - one_minus_cos;
+      const double st = std::sqrt(std::fmax(0.0, one_minus_cos * (2 - one_minus_cos)));
+      double phi_max = kPi;  // the whole ring above the horizon
+      const double denom = st * n_e1;
+      if (denom > 0) {
+        const double x = -ct * n_c / denom;
+        phi_max = x >= 1 ? 0.0 : x <= -1 ? kPi : std::acos(x);
+      } else if (!(ct * n_c > 0)) {
+        phi_max = 0;
+      }
+      if (!(phi_max > 0)) continue;
+      double ring = 0;
+      for (std::size_t j = 0; j < gp.x.size(); ++j) {
+        const double phi = phi_max * (2 * gp.x[j] - 1);
+        const Vec3d w = c * ct + (e1 * std::cos(phi) + e2 * std::sin(phi)) * st;
+        ring += gp.w[j] * lobe_value(b, w);
+      }
+      s += g.w[i] * du * ring * (2 * phi_max);
     }
-    s += g.w[i] * ring * (kPi / q);
   }
-  t.S = s * one_minus_cos_sigma;
+  t.S = s;
   return t;
 }
 
@@ -308,17 +380,20 @@ SkyTerms sky_light_terms(const Vec3d& up, const Vec3d& n, const SpecularLobe& lo
   t.P_ground = P.ground;
   if (lobe.kind == LobeKind::None) return t;
   // Each hemisphere as four spherical triangles (pole, e_i, e_i+1), clipped to n's hemisphere.
-  const Vec3d e1 = normalized_or(std::fabs(up.x) < 0.9 ? cross(up, Vec3d{1, 0, 0}) : cross(up, Vec3d{0, 1, 0}), Vec3d{0, 0, 1});
+  const Vec3d e1 = frame_axis(up, n);
   const Vec3d e2 = cross(up, e1);
   const Vec3d ring[4] = {e1, e2, -e1, -e2};
   for (int half = 0; half < 2; ++half) {
     const Vec3d pole = half == 0 ? up : -up;
     double s = 0;
     for (int i = 0; i < 4; ++i) {
-      const Vec3d tri[3] = {pole, ring[i], ring[(i + 1) % 4]};
-      Vec3d clipped[kMaxClippedVertices];
-      const int m = clip_to_hemisphere(tri, 3, n, clipped);
-      if (m >= 3) s += polygon_specular_integral(clipped, m, n, lobe);
+      SphericalPolygon tri;
+      tri.count = 3;
+      tri.q[0] = pole, tri.q[1] = ring[i], tri.q[2] = ring[(i + 1) % 4];
+      for (int k = 0; k < 3; ++k) tri.d[k] = tri.q[(k + 1) % 3] - tri.q[k];
+      SphericalPolygon clipped;
+      clip_to_hemisphere(tri, n, clipped);
+      if (clipped.count >= 3) s += polygon_specular_integral(clipped, lobe);
     }
     (half == 0 ? t.S_sky : t.S_ground) = s;
   }
