@@ -155,7 +155,7 @@ double polygon_solid_angle(const SphericalPolygon& P) {
   return omega;
 }
 
-double polygon_axial_moment(const SphericalPolygon& P, const Vec3d& w, int k) {
+double polygon_axial_moment(const SphericalPolygon& P, const Vec3d& w, int k, double solid_angle) {
   // tau_k = (k-1)/(k+1) tau_(k-2) + 1/(k+1) sum_i (w.gamma_i) E_i,(k-1)
   // (the Laplace-Beltrami operator of (w.u)^k and Stokes over the polygon; gamma_i the unit
   // normal of edge i's great circle pointing into the polygon), tau_0 = solid angle, tau_-1 = 0.
@@ -174,13 +174,16 @@ double polygon_axial_moment(const SphericalPolygon& P, const Vec3d& w, int k) {
     const Vec3d b = normalized_or(P.q[i] + P.d[i], a);
     const Vec3d t = cross(g, a);  // unit tangent at a toward b
     EdgeMoment e;
-    e.theta = std::atan2(s, dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]));
-    const double sin_t = std::sin(e.theta), half = std::sin(0.5 * e.theta);
-    const double one_minus_cos = 2 * half * half;  // no cancellation for small edges
+    const double qq = dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]);  // |q_i| |q_(i+1)| cos(theta)
+    e.theta = std::atan2(s, qq);
+    const double r = std::hypot(s, qq);  // |q_i| |q_(i+1)| > 0 (s > 0)
+    const double sin_t = s / r, cos_t = qq / r;
+    // 1 - cos(theta) = sin^2 / (1 + cos) without cancellation for small edges; 2 when theta ~ pi
+    const double one_minus_cos = cos_t > -0.5 ? sin_t * sin_t / (1 + cos_t) : 1 - cos_t;
     e.A = dot(w, a);
     e.B = dot(w, t);
     e.hb = dot(w, b);
-    e.hb_prime = -e.A * sin_t + e.B * std::cos(e.theta);
+    e.hb_prime = -e.A * sin_t + e.B * cos_t;
     e.C2 = e.A * e.A + e.B * e.B;
     e.E = odd ? e.theta : e.A * sin_t + e.B * one_minus_cos;  // E_0 or E_1
     e.pow_a = odd ? e.A : e.A * e.A;  // A^(j-1), hb^(j-1) for the next E_j, j = k0 + 2
@@ -188,7 +191,7 @@ double polygon_axial_moment(const SphericalPolygon& P, const Vec3d& w, int k) {
     gamma[m] = g * o;
     edges[m++] = e;
   }
-  double tau = odd ? 0.0 : polygon_solid_angle(P);
+  double tau = odd ? 0.0 : solid_angle < 0 ? polygon_solid_angle(P) : solid_angle;
   for (int j = odd ? 1 : 2; j <= k; j += 2) {  // tau_j from tau_(j-2) and E_(j-1)
     double sum = 0;
     for (int i = 0; i < m; ++i) sum += dot(w, gamma[i]) * edges[i].E;
@@ -253,7 +256,7 @@ double polygon_quadrature(const SphericalPolygon& P, int q, const SpecularLobe& 
 
 }  // namespace
 
-double polygon_specular_integral(const SphericalPolygon& P, const SpecularLobe& lobe) {
+double polygon_specular_integral(const SphericalPolygon& P, const SpecularLobe& lobe, bool small_by_quadrature) {
   switch (lobe.kind) {
     case LobeKind::None: return 0;
     case LobeKind::Phong: {
@@ -264,7 +267,9 @@ double polygon_specular_integral(const SphericalPolygon& P, const SpecularLobe& 
       if (clipped.count < 3) return 0;
       const double k = std::round(lobe.shininess);
       if (k == lobe.shininess && k <= 4096) {
-        if (polygon_solid_angle(clipped) >= 1e-4) return polygon_axial_moment(clipped, lobe.reflected, int(k));
+        if (!small_by_quadrature) return polygon_axial_moment(clipped, lobe.reflected, int(k));
+        const double omega = polygon_solid_angle(clipped);
+        if (omega >= 1e-4) return polygon_axial_moment(clipped, lobe.reflected, int(k), omega);
         return polygon_quadrature(clipped, 8, lobe);  // small: see polygon_axial_moment
       }
       return polygon_quadrature(clipped, lobe.quadrature_order, lobe);
@@ -393,7 +398,9 @@ SkyTerms sky_light_terms(const Vec3d& up, const Vec3d& n, const SpecularLobe& lo
       for (int k = 0; k < 3; ++k) tri.d[k] = tri.q[(k + 1) % 3] - tri.q[k];
       SphericalPolygon clipped;
       clip_to_hemisphere(tri, n, clipped);
-      if (clipped.count >= 3) s += polygon_specular_integral(clipped, lobe);
+      // Pieces of a hemisphere: a small one's error is small in absolute terms, which is what
+      // counts here (its relative loss matters only for a light that is small as a whole).
+      if (clipped.count >= 3) s += polygon_specular_integral(clipped, lobe, false);
     }
     (half == 0 ? t.S_sky : t.S_ground) = s;
   }

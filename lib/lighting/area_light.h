@@ -77,7 +77,8 @@ double polygon_solid_angle(const SphericalPolygon& poly);
 // polygon's angular size delta to get a result of size delta^2, losing about 1e-16 / delta^2
 // relative: polygon_specular_integral uses it for solid angles >= 1e-4 (error <= 1e-12) and an
 // order-8 Gauss rule below (error below (k delta)^16 / 16!: < 1e-13 for k delta < 1).
-double polygon_axial_moment(const SphericalPolygon& poly, const Vec3d& w, int k);
+// solid_angle: the polygon's, when the caller has it (< 0: computed here).
+double polygon_axial_moment(const SphericalPolygon& poly, const Vec3d& w, int k, double solid_angle = -1);
 
 // Snyder's projected solid angle of a sphere seen at angle theta from n under half-angle sigma,
 // given cos(theta) and sin^2(sigma) in (0, 1).
@@ -104,8 +105,10 @@ struct SpecularLobe {
 double lobe_value(const SpecularLobe& lobe, const Vec3d& w);
 
 // S over a convex spherical polygon already clipped to n's upper hemisphere: Arvo's closed form
-// for Phong with an integer shininess, quadrature otherwise.
-double polygon_specular_integral(const SphericalPolygon& poly, const SpecularLobe& lobe);
+// for Phong with an integer shininess, quadrature otherwise. small_by_quadrature: a polygon below
+// 1e-4 sr takes an order-8 Gauss rule instead of the recurrence (see polygon_axial_moment); the
+// sky's pieces of a hemisphere do not need it.
+double polygon_specular_integral(const SphericalPolygon& poly, const SpecularLobe& lobe, bool small_by_quadrature = true);
 
 // P and S of one light at p (world space; n unit).
 struct AreaTerms {

@@ -168,6 +168,7 @@ ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpa
         break;
       case LightType::Sky:
         s.up = normalized_or(L.up, Vec3d{0, 1, 0});  // validated non-zero
+        s.to_light = unit_in(frame.metric, transform_vector(maps.space_from_world, L.up));  // up in S (diffuse path)
         s.ground_products.diffuse = mul(mat.diffuse, L.ground);
         s.ground_products.specular = plan.specular ? mul(mat.specular, L.ground) : Vec3d{0, 0, 0};
         s.has_specular = s.has_specular || (plan.specular && !is_zero(s.ground_products.specular));

@@ -61,7 +61,7 @@ SpaceMetric metric_of(const Mat3d& world_from_space_linear);
 struct SpaceLight {
   LightType type = LightType::Directional;  // Directional, Point or Spot (ambient is folded into the base)
   Vec3d position{0, 0, 0};       // Point/Spot, in S
-  Vec3d to_light{0, 0, 0};       // Directional: unit (in G) vector toward the light, in S
+  Vec3d to_light{0, 0, 0};       // Directional: unit (in G) vector toward the light, in S; Sky: up, in S
   Vec3d axis_lowered{0, 0, 0};   // Spot: G * axis, axis the unit (in G) spot direction in S
   bool cone = false;             // Spot with cutoff != 180
   double cos_cutoff = -1;        // cos(cutoff); exactly 0 for 90 and 1 for 0

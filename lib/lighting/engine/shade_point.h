@@ -123,8 +123,19 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
         n_dot_l = dot(n, L) * n_scale;
         break;
       }
-      case LightType::Area:
-      case LightType::Sky:  // P and S in world space (area_light.h)
+      case LightType::Sky:
+        if (!(eq.specular && light.has_specular)) {  // diffuse only: P from n.up in this space, no world map
+          if (n_scale == 0) {  // zero normal: the ambient term only
+            if (light.has_ambient) color += light.products.ambient;
+            continue;
+          }
+          const SkyProjection P = sky_projected_solid_angles(dot(n, light.to_light) * n_scale);
+          add_light_term(color, light.products, 1.0, P.sky, 0.0, light.has_ambient, false);
+          add_light_term(color, light.ground_products, 1.0, P.ground, 0.0, false, false);
+          continue;
+        }
+        [[fallthrough]];
+      case LightType::Area:  // P and S in world space (area_light.h)
         if (!world_ready) {
           world = world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0);
           world_ready = true;
