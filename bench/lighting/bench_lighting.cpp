@@ -159,9 +159,9 @@ void area_bench(const Points& pts) {
   };
   Light pt = point({0, 3, 0});
   Light window = rect({0, 3, 0}, {1, 0, 0}, {0, 0, 0.5}, 4);
-  window.vertices = {{-1, 3, -0.5}, {-1, 3, 0.5}, {1, 3, 0.5}, {1, 3, -0.5}};  // emits downward
+  window.vertices = {{-1, 3, -0.5}, {1, 3, -0.5}, {1, 3, 0.5}, {-1, 3, 0.5}};  // emits downward (-y)
   Light poly = window;
-  poly.vertices = {{-0.5, 3, -0.5}, {-0.5, 3, 0.5}, {0.3, 3, 0.8}, {0.8, 3, 0}, {0.3, 3, -0.8}};
+  poly.vertices = {{-0.5, 3, -0.5}, {0.3, 3, -0.8}, {0.8, 3, 0}, {0.3, 3, 0.8}, {-0.5, 3, 0.5}};  // emits -y
   Light sphere = window;
   sphere.shape = AreaShape::Sphere;
   sphere.center = {0, 3, 0};

@@ -131,7 +131,7 @@ double lambert_polygon_integral(const SphericalPolygon& P, const Vec3d& n) {
   double sum = 0;
   for (int i = 0; i < P.count; ++i) {
     const Vec3d c = cross(P.q[i], P.d[i]);  // = q_i x q_(i+1): the edge's plane normal
-    const double s = length(c);
+    const double s = std::sqrt(dot(c, c));  // q, d scaled to components below 2 (polygon_light_terms)
     if (!(s > 0)) continue;  // a zero-length edge: Theta = 0
     const double theta = std::atan2(s, dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]));  // q_i . q_(i+1)
     sum += theta * (dot(n, c) / s);  // divisor checked
@@ -162,7 +162,7 @@ double polygon_axial_moment(const SphericalPolygon& P, const Vec3d& w, int k, do
   const double o = orientation(P);
   if (o == 0) return 0;
   EdgeMoment edges[kMaxClippedVertices];
-  Vec3d gamma[kMaxClippedVertices];
+  Vec3Buffer<kMaxClippedVertices> gamma;
   int m = 0;
   const bool odd = k % 2 == 1;
   for (int i = 0; i < P.count; ++i) {
@@ -293,13 +293,21 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
   double big = 0;
   for (int i = 0; i < count; ++i) {
     P.q[i] = vertices[i] - p;
+    P.d[i] = vertices[(i + 1) % count] - vertices[i];
     big = std::fmax(big, std::fmax(std::fabs(P.q[i].x), std::fmax(std::fabs(P.q[i].y), std::fabs(P.q[i].z))));
   }
+  // 2^-e with big in [2^e, 2^(e+1)): every q then has components below 2, so |q x d|^2 and |q|^2
+  // neither overflow nor (for any edge longer than 1e-150 of the distance) underflow. The factor
+  // is exact; scalbn only where 2^-e itself is out of double's range.
   const int e = big > 0 && std::isfinite(big) ? std::ilogb(big) : 0;
-  for (int i = 0; i < count; ++i) {
-    const Vec3d edge = vertices[(i + 1) % count] - vertices[i];
-    P.q[i] = {std::scalbn(P.q[i].x, -e), std::scalbn(P.q[i].y, -e), std::scalbn(P.q[i].z, -e)};
-    P.d[i] = {std::scalbn(edge.x, -e), std::scalbn(edge.y, -e), std::scalbn(edge.z, -e)};
+  if (e > -1022 && e < 1023) {
+    const double f = std::ldexp(1.0, -e);
+    for (int i = 0; i < count; ++i) P.q[i] = P.q[i] * f, P.d[i] = P.d[i] * f;
+  } else {
+    for (int i = 0; i < count; ++i) {
+      P.q[i] = {std::scalbn(P.q[i].x, -e), std::scalbn(P.q[i].y, -e), std::scalbn(P.q[i].z, -e)};
+      P.d[i] = {std::scalbn(P.d[i].x, -e), std::scalbn(P.d[i].y, -e), std::scalbn(P.d[i].z, -e)};
+    }
   }
   SphericalPolygon clipped;
   clip_to_hemisphere(P, n, clipped);

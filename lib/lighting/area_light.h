@@ -55,10 +55,23 @@ constexpr int kMaxClippedVertices = kMaxAreaVertices + 2;
 // by subtracting nearly equal q's: a light 1e-6 wide keeps its digits (each edge's plane normal
 // q_i x d_i and angle are then accurate to an ulp, and Lambert's sum cancels only as the true
 // value does).
+// Fixed storage of N vectors left uninitialised (Vec3d's members have initialisers, so a plain
+// array would be zero-filled on every call: 3 KB per polygon per point, measured as the larger
+// part of a rect light's cost).
+template <int N>
+struct Vec3Buffer {
+  Vec3Buffer() {}
+  union {
+    Vec3d v[N];
+  };
+  Vec3d& operator[](int i) { return v[i]; }
+  const Vec3d& operator[](int i) const { return v[i]; }
+};
+
 struct SphericalPolygon {
   int count = 0;
-  Vec3d q[kMaxClippedVertices];
-  Vec3d d[kMaxClippedVertices];
+  Vec3Buffer<kMaxClippedVertices> q;
+  Vec3Buffer<kMaxClippedVertices> d;
 };
 
 // Sutherland-Hodgman on the sphere: `in` intersected with {w : axis.w >= 0}; out.count < 3: nothing
@@ -66,7 +79,8 @@ struct SphericalPolygon {
 void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, SphericalPolygon& out);
 
 // Lambert's formula: the projected solid angle about n of a convex spherical polygon lying in
-// n's upper hemisphere (clip first), either orientation.
+// n's upper hemisphere (clip first), either orientation. q and d with components below 2^500
+// (polygon_light_terms scales them below 2): |q x d|^2 is formed directly.
 double lambert_polygon_integral(const SphericalPolygon& poly, const Vec3d& n);
 
 // Solid angle of a convex spherical polygon (fan of Van Oosterom-Strackee triangles).

@@ -225,16 +225,20 @@ TEST_CASE("sky P = pi (1 +- n.up) / 2 equals a direction quadrature; sky = groun
   }
 }
 
-TEST_CASE("Phong S of the sky (the lune, Arvo per triangle) equals a direction quadrature", "[lighting][area]") {
+TEST_CASE("Phong S of the sky (the lune, Arvo per triangle) and Blinn-Phong S equal a direction quadrature",
+          "[lighting][area]") {
   std::mt19937_64 rng(19);
   for (int trial = 0; trial < 40; ++trial) {
     const Vec3d n = random_unit(rng), up = random_unit(rng), V = random_unit(rng);
     const Vec3d R = n * (2 * dot(n, V)) - V;
     const int k = 1 + trial % 12;
     SpecularLobe lobe;
-    lobe.kind = LobeKind::Phong;
+    const bool blinn = trial % 4 == 3;  // Blinn-Phong: the quadrature path on the same triangles
+    lobe.kind = blinn ? LobeKind::BlinnPhong : LobeKind::Phong;
     lobe.shininess = k;
     lobe.reflected = R;
+    lobe.view = V;
+    lobe.normal = n;
     const SkyTerms t = sky_light_terms(up, n, lobe);
     const Vec3d e1 = normalized_or(cross(n, std::fabs(n.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0}), Vec3d{0, 0, 1});
     const Vec3d e2 = cross(n, e1);
@@ -245,8 +249,7 @@ TEST_CASE("Phong S of the sky (the lune, Arvo per triangle) equals a direction q
       for (int j = 0; j < NP; ++j) {
         const double phi = kTwoPi * (j + 0.5) / NP;
         const Vec3d w = n * ct + (e1 * std::cos(phi) + e2 * std::sin(phi)) * st;
-        const double rw = dot(R, w);
-        (dot(up, w) > 0 ? sky : ground) += rw > 0 ? std::pow(rw, k) : 0.0;
+        (dot(up, w) > 0 ? sky : ground) += lobe_value(lobe, w);
       }
     }
     sky *= kTwoPi / (double(NT) * NP);
