@@ -142,14 +142,14 @@ double lambert_polygon_integral(const SphericalPolygon& P, const Vec3d& n) {
 double polygon_solid_angle(const SphericalPolygon& P) {
   // tan(Omega_t / 2) = |a.(b x c)| / (|a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|) per fan triangle
   const Vec3d& a = P.q[0];
-  const double la = length(a);
+  const double la = std::sqrt(dot(a, a));  // scaled below 2 or unit, as above
   double omega = 0;
   Vec3d s{0, 0, 0};
   for (int i = 1; i + 1 < P.count; ++i) {
     s += P.d[i - 1];
     const Vec3d &b = P.q[i], c = P.q[i + 1];
     const double det = std::fabs(dot(a, cross(s, s + P.d[i])));
-    const double lb = length(b), lc = length(c);
+    const double lb = std::sqrt(dot(b, b)), lc = std::sqrt(dot(c, c));
     omega += 2.0 * std::atan2(det, la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la);
   }
   return omega;
@@ -166,17 +166,19 @@ double polygon_axial_moment(const SphericalPolygon& P, const Vec3d& w, int k, do
   int m = 0;
   const bool odd = k % 2 == 1;
   for (int i = 0; i < P.count; ++i) {
+    // q and d are scaled below 2 (polygon_light_terms) or unit (the sky): squares are safe.
     const Vec3d c = cross(P.q[i], P.d[i]);
-    const double s = length(c), la = length(P.q[i]);
-    if (!(s > 0) || !(la > 0)) continue;  // zero-length edge: no contribution
+    const Vec3d qb = P.q[i] + P.d[i];
+    const double s = std::sqrt(dot(c, c)), la = std::sqrt(dot(P.q[i], P.q[i])), lb = std::sqrt(dot(qb, qb));
+    if (!(s > 0) || !(la > 0) || !(lb > 0)) continue;  // zero-length edge: no contribution
     const Vec3d g = c * (1.0 / s);
     const Vec3d a = P.q[i] * (1.0 / la);
-    const Vec3d b = normalized_or(P.q[i] + P.d[i], a);
+    const Vec3d b = qb * (1.0 / lb);
     const Vec3d t = cross(g, a);  // unit tangent at a toward b
     EdgeMoment e;
     const double qq = dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]);  // |q_i| |q_(i+1)| cos(theta)
     e.theta = std::atan2(s, qq);
-    const double r = std::hypot(s, qq);  // |q_i| |q_(i+1)| > 0 (s > 0)
+    const double r = la * lb;  // |q_i| |q_(i+1)| > 0
     const double sin_t = s / r, cos_t = qq / r;
     // 1 - cos(theta) = sin^2 / (1 + cos) without cancellation for small edges; 2 when theta ~ pi
     const double one_minus_cos = cos_t > -0.5 ? sin_t * sin_t / (1 + cos_t) : 1 - cos_t;
