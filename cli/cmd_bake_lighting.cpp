@@ -52,7 +52,8 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
   auto* sub = app.add_subcommand(
       "bake-lighting",
       "Bake lit colours into a mesh: OpenGL 2.1 fixed-function lighting (lambert, phong, blinn-phong; ambient, "
-      "directional, point and spot lights) per vertex or per face");
+      "directional, point and spot lights; area and sky lights, exact where a closed form exists) per vertex or per "
+      "face");
   add_io_options(*sub, io, /*writes_mesh=*/true);
   sub->add_option("--scene", opt.scene, "Scene file (JSON): material, lights, camera, world_from_object")
       ->required()
@@ -125,6 +126,10 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       r.stats["vertex_light_evaluations"] = rep.counters.vertex_light_evaluations;
       r.stats["back_facing_skips"] = rep.counters.back_facing;
       r.stats["outside_cone_skips"] = rep.counters.outside_cone;
+      if (rep.plan.area_lights > 0) {  // only then, so that other scenes' reports stay as they were
+        r.stats["below_horizon_skips"] = rep.counters.below_horizon;
+        r.stats["inside_light"] = rep.counters.inside_light;
+      }
     }, true);
   };
 });

@@ -3,7 +3,8 @@
 // Arbitrary bytes must either throw shadetool::Error (one line naming the problem) or give a Scene
 // that satisfies what read_scene.h promises: every number finite, colours, intensities, shininess,
 // exponents and attenuation >= 0, attenuation not all zero, light directions of non-zero length,
-// spot cutoff in [0, 90] or 180. Such a scene must then light a small mesh (a tetrahedron with an
+// spot cutoff in [0, 90] or 180; area lights with finite vertices (3 to 64) or a positive radius,
+// sky lights with a non-zero up. Such a scene must then light a small mesh (a tetrahedron with an
 // isolated vertex and a degenerate face, per vertex and per face, every shading model) with
 // colours that are all finite: a scene the parser accepts may not produce NaN downstream.
 #include <cmath>
@@ -15,6 +16,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/mesh.h>
+#include <shadetool/lighting/area_light.h>
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/lighting/read_scene.h>
 
@@ -73,6 +75,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       bug("attenuation 0 0 0 accepted");
     if (!(l.cutoff_degrees >= 0 && l.cutoff_degrees <= 90) && l.cutoff_degrees != 180) bug("cutoff out of range");
     if (!std::isfinite(l.exponent) || l.exponent < 0) bug("spot exponent");
+    // Area and sky lights (issue 16)
+    if (!finite(l.ground) || !non_negative(l.ground)) bug("sky ground radiance not finite and >= 0");
+    if (l.type == shadetool::LightType::Sky && l.up.x == 0 && l.up.y == 0 && l.up.z == 0) bug("zero sky up accepted");
+    if (l.type == shadetool::LightType::Area && l.shape == shadetool::AreaShape::Sphere &&
+        !(l.radius > 0 && std::isfinite(l.radius) && finite(l.center)))
+      bug("sphere light radius not > 0 or centre not finite");
+    if (l.type == shadetool::LightType::Area && l.shape == shadetool::AreaShape::Polygon) {
+      if (l.vertices.size() < 3 || l.vertices.size() > std::size_t(shadetool::kMaxAreaVertices))
+        bug("polygon light vertex count out of range");
+      for (const auto& v : l.vertices)
+        if (!finite(v)) bug("polygon light vertex not finite");
+    }
   }
   // Lighting with an accepted scene never yields NaN. (Inf can only come from colours or
   // intensities near the top of double's range; the equation's terms are sums of products of
@@ -81,7 +95,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   auto big = [](const shadetool::Vec3d& v) { return std::fabs(v.x) > 1e100 || std::fabs(v.y) > 1e100 || std::fabs(v.z) > 1e100; };
   for (const auto* v : colours) huge = huge || big(*v);
   for (const auto& l : scene.lights)
-    for (const auto* v : {&l.ambient, &l.diffuse, &l.specular}) huge = huge || big(*v);
+    for (const auto* v : {&l.ambient, &l.diffuse, &l.specular, &l.ground}) huge = huge || big(*v);
   for (auto freq : {shadetool::ShadingFrequency::PerVertex, shadetool::ShadingFrequency::PerFace})
     for (auto model : {shadetool::ShadingModel::Lambert, shadetool::ShadingModel::Phong, shadetool::ShadingModel::BlinnPhong}) {
       shadetool::ShadeOptions options;

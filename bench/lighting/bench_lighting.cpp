@@ -4,6 +4,8 @@
 // noisy cores; ratios are what matter), medians of N runs, all configurations in one process.
 //
 // Usage: bench_lighting [REPEATS]   (default 7)
+//        bench_lighting --area [REPEATS]   issue 16: area and sky lights against a point light, and
+//                                          the quadrature paths' time against error
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include <shadetool/lighting/area_light.h>
 #include <shadetool/lighting/look_at.h>
 #include <shadetool/lighting/shade_points.h>
 #include "support/analytic_meshes.h"
@@ -134,9 +137,127 @@ Mat3d rotation(const Vec3d& axis_in, double angle) {
   return R;
 }
 
+Light rect(const Vec3d& c, const Vec3d& u, const Vec3d& v, double intensity) {
+  Light L;
+  L.type = LightType::Area;
+  L.vertices = {c - u - v, c + u - v, c + u + v, c - u + v};
+  L.diffuse = L.specular = Vec3d{1, 1, 1} * intensity;
+  L.ambient = {0, 0, 0};
+  return L;
+}
+
+// Issue 16: per-vertex cost of area and sky lights against a point light on the same mesh, and
+// the quadrature paths as time against error (the error against Arvo's closed form).
+void area_bench(const Points& pts) {
+  tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  const double n_points = double(pts.p.size() / 3);
+  auto scene_with = [](ShadingModel model, const Light& L) {
+    Scene s = base_scene(model);
+    s.material.shininess = 32;
+    s.lights = {L};
+    return s;
+  };
+  Light pt = point({0, 3, 0});
+  Light window = rect({0, 3, 0}, {1, 0, 0}, {0, 0, 0.5}, 4);
+  window.vertices = {{-1, 3, -0.5}, {1, 3, -0.5}, {1, 3, 0.5}, {-1, 3, 0.5}};  // emits downward (-y)
+  Light poly = window;
+  poly.vertices = {{-0.5, 3, -0.5}, {0.3, 3, -0.8}, {0.8, 3, 0}, {0.3, 3, 0.8}, {-0.5, 3, 0.5}};  // emits -y
+  Light sphere = window;
+  sphere.shape = AreaShape::Sphere;
+  sphere.center = {0, 3, 0};
+  sphere.radius = 0.5;
+  Light sky;
+  sky.type = LightType::Sky;
+  sky.diffuse = sky.specular = {0.5, 0.7, 1};
+  sky.ground = {0.3, 0.25, 0.2};
+  sky.ambient = {0, 0, 0};
+  struct Row {
+    const char* name;
+    ShadingModel model;
+    Light light;
+  };
+  const Row rows[] = {
+      {"rect, diffuse (Lambert's formula)", ShadingModel::Lambert, window},
+      {"polygon (5), diffuse", ShadingModel::Lambert, poly},
+      {"sphere, diffuse (Snyder)", ShadingModel::Lambert, sphere},
+      {"sky, diffuse", ShadingModel::Lambert, sky},
+      {"rect, phong 32 (Arvo closed form)", ShadingModel::Phong, window},
+      {"sky, phong 32 (Arvo, 8 triangles)", ShadingModel::Phong, sky},
+      {"rect, blinn-phong 32 (quadrature q=16)", ShadingModel::BlinnPhong, window},
+      {"sphere, phong 32 (quadrature q=16)", ShadingModel::Phong, sphere},
+  };
+  std::printf("\nArea and sky lights (issue 16): %.0f points, 1 thread, median of %d interleaved runs, thread CPU ms\n",
+              n_points, g_repeats);
+  std::printf("%-40s %10s %12s %10s %8s\n", "light", "ms", "point light", "ns/vertex", "ratio");
+  for (const Row& r : rows) {
+    const Scene a = scene_with(r.model, r.light), b = scene_with(r.model, pt);
+    const auto t = interleaved_medians({shade_job(a, pts, ShadingSpace::Auto, {}), shade_job(b, pts, ShadingSpace::Auto, {})});
+    std::printf("%-40s %10.1f %12.1f %10.0f %7.2fx\n", r.name, t[0], t[1], t[0] * 1e6 / n_points, t[0] / t[1]);
+  }
+
+  // Quadrature order q against error: Phong with shininess 32 + 1e-9 takes the quadrature path;
+  // its truth is Arvo's closed form for 32 (the two integrands differ by < 1e-8 relative).
+  std::printf("\nQuadrature (rect light, phong 32 + 1e-9 vs Arvo's closed form for 32; sphere: vs q = 64)\n");
+  std::printf("%-8s %4s %12s %16s %16s\n", "light", "q", "ns/vertex", "max rel error", "median rel error");
+  const std::size_t n = pts.p.size() / 3;
+  const Vec3d eye{0, 4, 5};
+  std::vector<double> truth_rect(n), truth_sphere(n);
+  auto lobe_at = [&](std::size_t i, double shininess, int q) {
+    const Vec3d p{pts.p[3 * i], pts.p[3 * i + 1], pts.p[3 * i + 2]};
+    const Vec3d nn = normalized_or(Vec3d{pts.n[3 * i], pts.n[3 * i + 1], pts.n[3 * i + 2]}, Vec3d{0, 0, 1});
+    const Vec3d V = normalized_or(eye - p, Vec3d{0, 0, 0});
+    SpecularLobe lobe;
+    lobe.kind = LobeKind::Phong;
+    lobe.shininess = shininess;
+    lobe.reflected = nn * (2 * dot(nn, V)) - V;
+    lobe.quadrature_order = q;
+    return std::make_pair(lobe, std::make_pair(p, nn));
+  };
+  const Vec3d emit{0, -1, 0};
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto l = lobe_at(i, 32, 16);
+    truth_rect[i] = polygon_light_terms(window.vertices.data(), 4, emit, false, l.second.first, l.second.second, l.first).S;
+    auto l64 = lobe_at(i, 32, 64);
+    truth_sphere[i] = sphere_light_terms(sphere.center, sphere.radius, l.second.first, l.second.second, l64.first).S;
+  }
+  for (int shape = 0; shape < 2; ++shape)
+    for (int q : {2, 4, 8, 16, 32}) {
+      std::vector<double> got(n);
+      const auto t = interleaved_medians({[&] {
+        for (std::size_t i = 0; i < n; ++i) {
+          const auto l = lobe_at(i, shape == 0 ? 32 + 1e-9 : 32, q);
+          got[i] = shape == 0 ? polygon_light_terms(window.vertices.data(), 4, emit, false, l.second.first,
+                                                    l.second.second, l.first).S
+                              : sphere_light_terms(sphere.center, sphere.radius, l.second.first, l.second.second,
+                                                   l.first).S;
+        }
+        g_sink += got[n / 2];
+      }});
+      const std::vector<double>& truth = shape == 0 ? truth_rect : truth_sphere;
+      double scale = 0;
+      for (double x : truth) scale = std::max(scale, x);
+      std::vector<double> err;
+      for (std::size_t i = 0; i < n; ++i)
+        if (truth[i] > 1e-6 * scale) err.push_back(std::fabs(got[i] - truth[i]) / truth[i]);
+      std::sort(err.begin(), err.end());
+      std::printf("%-8s %4d %12.0f %16.2e %16.2e\n", shape == 0 ? "rect" : "sphere", q, t[0] * 1e6 / n_points,
+                  err.empty() ? 0.0 : err.back(), err.empty() ? 0.0 : err[err.size() / 2]);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--area") {  // issue 16's table only, on a 250 x 250 torus
+    if (argc > 2) g_repeats = std::max(1, std::atoi(argv[2]));
+    testing::AnalyticMesh torus = testing::torus(250, 250, 1.0, 0.4);
+    Points pts;
+    pts.p = torus.mesh.positions;
+    for (const Vec3d& n : torus.exact_normals) pts.n.insert(pts.n.end(), {n.x, n.y, n.z});
+    area_bench(pts);
+    std::printf("(checksum %g)\n", g_sink);
+    return 0;
+  }
   if (argc > 1) g_repeats = std::max(1, std::atoi(argv[1]));
   testing::AnalyticMesh torus = testing::torus(1000, 1000, 1.0, 0.4);  // 1,000,000 vertices
   Points pts;

@@ -20,26 +20,35 @@ LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOpt
 
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& L = scene.lights[i];
-    bool positional = false;
+    bool positional = false, area = false;
+    Vec3d diffuse = L.diffuse, specular = L.specular;  // the light's radiances that kd and ks meet
     switch (L.type) {  // exhaustive: a new kind must say where it goes
       case LightType::Ambient: continue;  // in plan.base
       case LightType::Directional: break;
       case LightType::Point:
       case LightType::Spot: positional = true; break;
+      case LightType::Area: area = positional = true; break;
+      case LightType::Sky:
+        area = true;
+        diffuse += L.ground;
+        specular += L.ground;
+        break;
     }
-    const bool dark = is_zero(mul(m.ambient, L.ambient)) && is_zero(mul(m.diffuse, L.diffuse)) &&
-                      (!specular_possible || is_zero(mul(m.specular, L.specular)));
+    const bool dark = is_zero(mul(m.ambient, L.ambient)) && is_zero(mul(m.diffuse, diffuse)) &&
+                      (!specular_possible || is_zero(mul(m.specular, specular)));
     if (dark && skips.dark_lights) {
       ++plan.dark_lights_dropped;
       continue;
     }
     plan.lights.push_back(i);
     if (positional) ++plan.positional_lights;
+    if (area) ++plan.area_lights;
   }
 
   bool any_light_specular = false;
   for (std::size_t i : plan.lights)
-    if (!is_zero(mul(m.specular, scene.lights[i].specular))) any_light_specular = true;
+    if (!is_zero(mul(m.specular, scene.lights[i].specular)) || !is_zero(mul(m.specular, scene.lights[i].ground)))
+      any_light_specular = true;
 
   if (!model_has_specular) {
     plan.specular_skip_reason = "model is lambert";

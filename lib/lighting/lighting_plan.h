@@ -39,7 +39,7 @@ struct SkipOptions {
 
 struct LightingPlan {
   ShadingModel model = ShadingModel::BlinnPhong;
-  std::vector<std::size_t> lights;  // indices into scene.lights: directional, point, spot, kept
+  std::vector<std::size_t> lights;  // indices into scene.lights: every kind but ambient, kept
   std::size_t dark_lights_dropped = 0;
   Vec3d base{0, 0, 0};              // emission + ka * (global ambient + sum of ambient lights)
   bool specular = false;            // evaluate the specular term at all
@@ -47,6 +47,7 @@ struct LightingPlan {
   bool view = false;                // compute V per point
   bool positions = false;           // the per-point position is read
   std::size_t positional_lights = 0;  // point and spot lights among `lights`
+  std::size_t area_lights = 0;        // area and sky lights among `lights` (evaluated in world space)
 };
 
 LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOptions& skips = {});

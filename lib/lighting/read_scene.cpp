@@ -17,6 +17,8 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/affine.h>
+#include <shadetool/core/math_constants.h>
+#include <shadetool/lighting/area_light.h>
 #include <shadetool/lighting/look_at.h>
 
 namespace shadetool {
@@ -235,6 +237,10 @@ class SceneReader {
          {"type", "position", "direction", "cutoff", "exponent", "attenuation", "color", "intensity", "ambient",
           "diffuse", "specular"},
          &SceneReader::spot_light},
+        {"area", LightType::Area,
+         {"type", "shape", "center", "u", "v", "vertices", "radius", "two_sided", "color", "intensity", "ambient"},
+         &SceneReader::area_light},
+        {"sky", LightType::Sky, {"type", "up", "sky", "ground", "intensity", "ambient"}, &SceneReader::sky_light},
     };
     return kinds;
   }
@@ -250,7 +256,7 @@ class SceneReader {
         names += std::string(i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + "\"" + kinds[i].name + "\"";
       bad(path + ".type", "must be " + names + ", got \"" + type + "\"");
     }
-    check_keys(j, path, kind->keys, (kind->type == LightType::Ambient ? "an " : "a ") + type + " light");
+    check_keys(j, path, kind->keys, (std::string("aeiou").find(type[0]) != std::string::npos ? "an " : "a ") + type + " light");
     Light L;
     L.type = kind->type;
     (this->*kind->parse)(j, path, L);
@@ -263,7 +269,16 @@ class SceneReader {
     double intensity = 1;
     if (const json* v = find(j, "color")) color = colour(*v, path + ".color");
     if (const json* v = find(j, "intensity")) intensity = non_negative(*v, path + ".intensity");
-    return color * intensity;
+    return scaled_colour(color, intensity, path + (find(j, "intensity") ? ".intensity" : ".color"));
+  }
+
+  // color * intensity, refused when a channel overflows (issue 21: Inf would reach the equation).
+  Vec3d scaled_colour(const Vec3d& color, double intensity, const std::string& path) const {
+    const Vec3d c = color * intensity;
+    if (!is_finite(c))
+      bad(path, "color x intensity overflows (" + number_text(std::fmax(color.x, std::fmax(color.y, color.z))) +
+                    " x " + number_text(intensity) + " is beyond double's range)");
+    return c;
   }
 
   void ambient_light(const json& j, const std::string& path, Light& L) const {
@@ -298,6 +313,96 @@ class SceneReader {
     light_colours(j, path, L);
     L.position = vec3(need(j, path, "position", "a point light"), path + ".position");
     attenuation(j, path, L);
+  }
+
+  // Area lights (issue 16): emitted radiance L = color * intensity in diffuse and specular.
+  void area_light(const json& j, const std::string& path, Light& L) const {
+    const std::string shape = string(need(j, path, "shape", "an area light"), path + ".shape");
+    if (shape == "rect") {
+      check_keys(j, path, {"type", "shape", "center", "u", "v", "two_sided", "color", "intensity", "ambient"},
+                 "a rect area light");
+    } else if (shape == "polygon") {
+      check_keys(j, path, {"type", "shape", "vertices", "two_sided", "color", "intensity", "ambient"},
+                 "a polygon area light");
+    } else if (shape == "sphere") {
+      check_keys(j, path, {"type", "shape", "center", "radius", "color", "intensity", "ambient"}, "a sphere area light");
+    } else {
+      bad(path + ".shape", "must be \"rect\", \"polygon\" or \"sphere\", got \"" + shape + "\"");
+    }
+    L.ambient = {0, 0, 0};
+    L.diffuse = L.specular = color_times_intensity(j, path);
+    if (const json* v = find(j, "ambient")) L.ambient = colour(*v, path + ".ambient");
+    if (const json* v = find(j, "two_sided")) L.two_sided = boolean(*v, path + ".two_sided");
+    const std::string what = "a " + shape + " area light";
+    if (shape == "sphere") {
+      L.shape = AreaShape::Sphere;
+      L.center = vec3(need(j, path, "center", what), path + ".center");
+      L.radius = number(need(j, path, "radius", what), path + ".radius");
+      if (!(L.radius > 0)) bad(path + ".radius", "must be > 0, got " + number_text(L.radius));
+      return;
+    }
+    L.shape = AreaShape::Polygon;
+    if (shape == "rect") {
+      const Vec3d c = vec3(need(j, path, "center", what), path + ".center");
+      const Vec3d u = direction(need(j, path, "u", what), path + ".u");
+      const Vec3d v = direction(need(j, path, "v", what), path + ".v");
+      L.vertices = {c - u - v, c + u - v, c + u + v, c - u + v};
+      for (int i = 0; i < 4; ++i)
+        if (!is_finite(L.vertices[i])) bad(path, "a corner center +- u +- v is beyond double's range");
+      const Vec3d uu = normalized_or(u, Vec3d{0, 0, 0}), vv = normalized_or(v, Vec3d{0, 0, 0});
+      if (!(length(cross(uu, vv)) > 1e-12)) bad(path + ".v", "is parallel to u: the rect has no area");
+      return;
+    }
+    const std::string p = path + ".vertices";
+    const json& vs = need(j, path, "vertices", what);
+    if (!vs.is_array() || vs.size() < 3 || vs.size() > std::size_t(kMaxAreaVertices))
+      bad(p, "must be an array of 3 to " + std::to_string(kMaxAreaVertices) + " points, got " + describe(vs));
+    for (std::size_t i = 0; i < vs.size(); ++i) L.vertices.push_back(vec3(vs[i], p + "[" + std::to_string(i) + "]"));
+    polygon_shape(L.vertices, p);
+  }
+
+  // A polygon light must be planar, convex and non-degenerate (its closed forms assume it).
+  void polygon_shape(const std::vector<Vec3d>& v, const std::string& p) const {
+    const std::size_t k = v.size();
+    double size = 0;  // largest distance from v[0]: the scale for the tolerances below
+    for (const Vec3d& x : v) size = std::fmax(size, length(x - v[0]));
+    if (!(size > 0) || !std::isfinite(size)) bad(p, "degenerate polygon: every vertex is the same point");
+    Vec3d normal{0, 0, 0};  // Newell, relative to v[0], on coordinates scaled by 1/size
+    const double inv = 1.0 / size;  // size > 0 checked
+    for (std::size_t i = 1; i + 1 < k; ++i) normal += cross((v[i] - v[0]) * inv, (v[i + 1] - v[0]) * inv);
+    const double area2 = length(normal);
+    if (!(area2 > 1e-12)) bad(p, "degenerate polygon: its vertices are collinear (zero area)");
+    const Vec3d n = normal * (1.0 / area2);
+    for (std::size_t i = 0; i < k; ++i) {
+      const double off = std::fabs(dot(v[i] - v[0], n)) * inv;
+      if (off > 1e-9)
+        bad(p + "[" + std::to_string(i) + "]", "not planar: " + number_text(off) +
+                                                   " of the polygon's size off the plane of the others");
+    }
+    double turning = 0;  // sum of exterior angles: 2 pi for a convex simple polygon
+    for (std::size_t i = 0; i < k; ++i) {
+      const Vec3d a = v[(i + 1) % k] - v[i], b = v[(i + 2) % k] - v[(i + 1) % k];
+      if (!(length(a) > 0)) bad(p + "[" + std::to_string((i + 1) % k) + "]", "repeats the previous vertex");
+      const double turn = dot(cross(a * inv, b * inv), n);
+      if (turn < -1e-12 * length(a * inv) * length(b * inv))
+        bad(p + "[" + std::to_string((i + 1) % k) + "]", "not convex: the polygon turns the other way here");
+      turning += std::atan2(turn, dot(a * inv, b * inv));
+    }
+    if (std::fabs(turning - 2 * kPi) > 1e-6) bad(p, "not convex: the polygon winds around more than once");
+  }
+
+  void sky_light(const json& j, const std::string& path, Light& L) const {
+    double intensity = 1;
+    if (const json* v = find(j, "intensity")) intensity = non_negative(*v, path + ".intensity");
+    Vec3d sky{1, 1, 1}, ground{0, 0, 0};
+    if (const json* v = find(j, "sky")) sky = colour(*v, path + ".sky");
+    if (const json* v = find(j, "ground")) ground = colour(*v, path + ".ground");
+    if (const json* v = find(j, "up")) L.up = direction(*v, path + ".up");
+    L.ambient = {0, 0, 0};
+    if (const json* v = find(j, "ambient")) L.ambient = colour(*v, path + ".ambient");
+    const std::string at = path + (find(j, "intensity") ? ".intensity" : ".sky");
+    L.diffuse = L.specular = scaled_colour(sky, intensity, at);
+    L.ground = scaled_colour(ground, intensity, path + (find(j, "intensity") ? ".intensity" : ".ground"));
   }
 
   void spot_light(const json& j, const std::string& path, Light& L) const {

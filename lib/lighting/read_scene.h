@@ -28,6 +28,14 @@
 //                     default to color*intensity, and ambient (black); directional: direction;
 //                     point: position, attenuation ([1,0,0]); spot: position, direction, cutoff,
 //                     exponent (0), attenuation. An "ambient" light has only color and intensity.
+//                     "area" (issue 16): shape "rect" (center, u, v), "polygon" (vertices: 3..64,
+//                     planar, convex, counter-clockwise seen from the emitting side) or "sphere"
+//                     (center, radius > 0); color, intensity (L = color * intensity), two_sided
+//                     (false), ambient. "sky": up ([0,1,0]), sky ([1,1,1]), ground ([0,0,0]),
+//                     intensity (1), ambient. Each kind is one entry of read_scene.cpp's light table.
+//          Also checked: color * intensity beyond double's range (issue 21), polygons that are
+//          non-planar (1e-9 of their size), non-convex, self-winding or of zero area, a rect with
+//          u parallel to v, a zero sky up.
 #pragma once
 
 #include <string>

@@ -27,6 +27,15 @@ enum class LightType {
   Directional,  // at infinity; `direction` is the way the light travels (toward the scene)
   Point,        // at `position`, attenuated with distance
   Spot,         // a point light restricted to a cone around `direction`
+  Area,         // a surface of constant radiance: convex polygon (rect) or sphere (issue 16)
+  Sky,          // radiance `sky` above the horizon of `up`, `ground` below it (issue 16)
+};
+// Every switch over LightType is exhaustive with no default: a new kind does not compile
+// (-Wswitch) until each place that reads lights has said what the kind does there.
+
+enum class AreaShape {
+  Polygon,  // planar convex polygon; rect is stored as one (corners center -u -v, +u -v, +u +v, -u +v)
+  Sphere,   // emits outward everywhere
 };
 
 struct Light {
@@ -39,6 +48,18 @@ struct Light {
   double cutoff_degrees = 180;  // Spot: cone half-angle, [0, 90] or 180 (= no cone, a point light)
   double exponent = 0;          // Spot: falloff max(cos, 0)^exponent, >= 0
   Vec3d attenuation{1, 0, 0};   // Point/Spot: kc kl kq >= 0, not all zero; att = 1/(kc+kl d+kq d^2)
+
+  // Area and Sky: `diffuse` and `specular` hold the emitted radiance L = color * intensity (Sky:
+  // the sky's), `ambient` the light's a_i (default black). The equation adds
+  // ka*a_i + kd*L*P + ks*L*S (lighting/area_light.h).
+  AreaShape shape = AreaShape::Polygon;
+  std::vector<Vec3d> vertices;  // Area Polygon, world: planar, convex, >= 3, counter-clockwise seen
+                                // from the emitting side
+  Vec3d center{0, 0, 0};        // Area Sphere, world
+  double radius = 0;            // Area Sphere, > 0
+  bool two_sided = false;       // Area Polygon: emits on both sides
+  Vec3d up{0, 1, 0};            // Sky, world, non-zero
+  Vec3d ground{0, 0, 0};        // Sky: radiance below the horizon (ground * intensity)
 };
 
 struct Material {  // OpenGL's defaults (glMaterial)

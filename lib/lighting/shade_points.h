@@ -35,6 +35,8 @@ struct ShadeCounters {
   std::size_t outside_cone = 0;              // pairs stopped at the spot-cone test
   std::size_t at_light = 0;                  // point exactly at a light's position
   std::size_t zero_normals = 0;              // points with a zero or non-finite normal
+  std::size_t below_horizon = 0;             // area lights wholly below the point's horizon: skipped
+  std::size_t inside_light = 0;              // point on an area light's plane or inside a sphere light
 
   ShadeCounters& operator+=(const ShadeCounters& o) {
     points += o.points;
@@ -43,6 +45,8 @@ struct ShadeCounters {
     outside_cone += o.outside_cone;
     at_light += o.at_light;
     zero_normals += o.zero_normals;
+    below_horizon += o.below_horizon;
+    inside_light += o.inside_light;
     return *this;
   }
 };

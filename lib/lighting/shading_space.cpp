@@ -75,6 +75,15 @@ Vec3d unit_in(const SpaceMetric& g, const Vec3d& v) {
   return {0, 0, 0};
 }
 
+// Unit normal of a planar polygon by Newell's method, sign by the vertex order (counter-clockwise
+// seen from the side it points to); the polygon was validated non-degenerate.
+Vec3d polygon_unit_normal(const std::vector<Vec3d>& v) {
+  Vec3d sum{0, 0, 0};
+  const Vec3d& o = v[0];  // relative to a vertex: no cancellation far from the origin
+  for (std::size_t i = 1; i + 1 < v.size(); ++i) sum += cross(v[i] - o, v[i + 1] - o);
+  return normalized_or(sum, Vec3d{0, 0, 0});
+}
+
 struct SpaceMaps {
   Affine3d world_from_space, space_from_world, space_from_object;
 };
@@ -114,6 +123,11 @@ ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpa
   frame.eye = frame.space == ShadingSpace::Camera ? Vec3d{0, 0, 0}  // the eye is the camera's origin
                                                   : transform_point(maps.space_from_world, eye_world(scene));
 
+  frame.world_from_space = maps.world_from_space;
+  frame.space_is_world = is_identity(maps.world_from_space);
+  frame.normal_to_world = signed_cofactor(maps.world_from_space.A);
+  frame.eye_world = eye_world(scene);
+
   const Material& mat = scene.material;
   for (std::size_t index : plan.lights) {
     const Light& L = scene.lights[index];
@@ -144,6 +158,21 @@ ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpa
           s.axis_lowered = lower(frame.metric, unit_in(frame.metric, transform_vector(maps.space_from_world, L.direction)));
         }
         break;
+      case LightType::Area:
+        s.shape = L.shape;
+        s.vertices = L.vertices;
+        s.two_sided = L.two_sided;
+        s.center = L.center;
+        s.radius = L.radius;
+        if (L.shape == AreaShape::Polygon) s.emit_normal = polygon_unit_normal(L.vertices);
+        break;
+      case LightType::Sky:
+        s.up = normalized_or(L.up, Vec3d{0, 1, 0});  // validated non-zero
+        s.to_light = unit_in(frame.metric, transform_vector(maps.space_from_world, L.up));  // up in S (diffuse path)
+        s.ground_products.diffuse = mul(mat.diffuse, L.ground);
+        s.ground_products.specular = plan.specular ? mul(mat.specular, L.ground) : Vec3d{0, 0, 0};
+        s.has_specular = s.has_specular || (plan.specular && !is_zero(s.ground_products.specular));
+        break;
     }
     frame.lights.push_back(s);
   }
@@ -164,6 +193,7 @@ SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan, const Ski
     if (transforms) cost += 15 + (plan.positions ? 18 : 0);
     if (metric.kind == MetricKind::General)
       cost += 15 + (plan.view ? 45 : 0) + 15.0 * double(plan.positional_lights);
+    if (plan.area_lights > 0 && !is_identity(maps.world_from_space)) cost += 18 + 15;  // p, n back to world
     const int slot = space == ShadingSpace::World ? 0 : space == ShadingSpace::Camera ? 1 : 2;
     choice.cost[slot] = cost;
     if (k == 0 || cost < best) {

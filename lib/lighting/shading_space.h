@@ -61,7 +61,7 @@ SpaceMetric metric_of(const Mat3d& world_from_space_linear);
 struct SpaceLight {
   LightType type = LightType::Directional;  // Directional, Point or Spot (ambient is folded into the base)
   Vec3d position{0, 0, 0};       // Point/Spot, in S
-  Vec3d to_light{0, 0, 0};       // Directional: unit (in G) vector toward the light, in S
+  Vec3d to_light{0, 0, 0};       // Directional: unit (in G) vector toward the light, in S; Sky: up, in S
   Vec3d axis_lowered{0, 0, 0};   // Spot: G * axis, axis the unit (in G) spot direction in S
   bool cone = false;             // Spot with cutoff != 180
   double cos_cutoff = -1;        // cos(cutoff); exactly 0 for 90 and 1 for 0
@@ -70,6 +70,17 @@ struct SpaceLight {
   LightProducts products;        // ka * a_i, kd * d_i, ks * s_i
   bool has_ambient = false;
   bool has_specular = false;
+
+  // Area and Sky (issue 16): evaluated in WORLD space, where their closed forms are exact for
+  // every world_from_object (the point and normal are mapped back by the frame, when needed).
+  AreaShape shape = AreaShape::Polygon;
+  std::vector<Vec3d> vertices;    // Area Polygon, world
+  Vec3d emit_normal{0, 0, 0};     // Area Polygon: unit normal of the emitting side (Newell), world
+  bool two_sided = false;         // Area Polygon
+  Vec3d center{0, 0, 0};          // Area Sphere, world
+  double radius = 0;              // Area Sphere
+  Vec3d up{0, 1, 0};              // Sky: unit, world
+  LightProducts ground_products;  // Sky: kd * ground, ks * ground (ambient in `products`)
 };
 
 struct ShadingFrame {
@@ -79,6 +90,11 @@ struct ShadingFrame {
   bool transform = true;            // false: space_from_object is exactly the identity (or skipped)
   SpaceMetric metric;
   Vec3d eye{0, 0, 0};               // in S
+  // For area and sky lights (world space): S -> world for points and normals, and the eye.
+  bool space_is_world = true;       // world_from_space is exactly the identity
+  Affine3d world_from_space;
+  Mat3d normal_to_world;            // sign(det) cof(world_from_space's linear part)
+  Vec3d eye_world{0, 0, 0};
   std::vector<SpaceLight> lights;   // the plan's lights, in S
 };
 

@@ -11,7 +11,7 @@
 //
 // Every switch over LightType here is exhaustive (no default): a new kind fails to compile
 // (-Wswitch) until it has its own branch. Ambient lights never reach this loop (plan_lighting
-// folds them into the constant base).
+// folds them into the constant base); area and sky lights go to engine/area_point.h.
 #pragma once
 
 #include <cmath>
@@ -19,6 +19,7 @@
 #include <shadetool/lighting/lighting_equation.h>
 #include <shadetool/lighting/shade_points.h>
 #include <shadetool/lighting/shading_space.h>
+#include <shadetool/lighting/engine/area_point.h>
 #include <shadetool/lighting/engine/metric.h>
 
 namespace shadetool {
@@ -75,6 +76,8 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
     }
   }
 
+  WorldPoint world;  // area and sky lights: p, n and the lobe in world space, made at the first one
+  bool world_ready = false;
   for (const SpaceLight& light : frame.lights) {
     ++count.vertex_light_evaluations;
     const bool with_ambient = light.has_ambient || !kEarlyTests;
@@ -120,6 +123,25 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
         n_dot_l = dot(n, L) * n_scale;
         break;
       }
+      case LightType::Sky:
+        if (!(eq.specular && light.has_specular)) {  // diffuse only: P from n.up in this space, no world map
+          if (n_scale == 0) {  // zero normal: the ambient term only
+            if (light.has_ambient) color += light.products.ambient;
+            continue;
+          }
+          const SkyProjection P = sky_projected_solid_angles(dot(n, light.to_light) * n_scale);
+          add_light_term(color, light.products, 1.0, P.sky, 0.0, light.has_ambient, false);
+          add_light_term(color, light.ground_products, 1.0, P.ground, 0.0, false, false);
+          continue;
+        }
+        [[fallthrough]];
+      case LightType::Area:  // P and S in world space (area_light.h)
+        if (!world_ready) {
+          world = world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0);
+          world_ready = true;
+        }
+        add_area_light(color, light, world, count);
+        continue;
     }
 
     const bool with_specular = eq.specular && light.has_specular;

@@ -1,0 +1,66 @@
+// engine/area_point.cpp: see area_point.h.
+#include <shadetool/lighting/engine/area_point.h>
+
+namespace shadetool {
+namespace lighting_engine {
+
+WorldPoint world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess,
+                       const Vec3d& p, const Vec3d& n, bool zero_normal) {
+  WorldPoint w;
+  w.p = frame.space_is_world ? p : transform_point(frame.world_from_space, p);
+  if (zero_normal) return w;
+  w.n = normalized_or(frame.space_is_world ? n : transform_normal(frame.normal_to_world, n), Vec3d{0, 0, 0});
+  if (!specular) return w;
+  const Vec3d V = normalized_or(frame.eye_world - w.p, Vec3d{0, 0, 0});  // 0 at the eye
+  w.lobe.shininess = shininess;
+  switch (model) {
+    case ShadingModel::Lambert: break;
+    case ShadingModel::Phong:
+      w.lobe.kind = LobeKind::Phong;
+      w.lobe.reflected = V == Vec3d{0, 0, 0} ? V : normalized_or(w.n * (2 * dot(w.n, V)) - V, Vec3d{0, 0, 0});
+      break;
+    case ShadingModel::BlinnPhong:
+      w.lobe.kind = LobeKind::BlinnPhong;
+      w.lobe.view = V;
+      w.lobe.normal = w.n;
+      break;
+  }
+  return w;
+}
+
+void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count) {
+  const bool with_specular = light.has_specular && point.lobe.kind != LobeKind::None;
+  if (point.n == Vec3d{0, 0, 0}) {  // zero normal: the ambient term only
+    if (light.has_ambient) color += light.products.ambient;
+    return;
+  }
+  SpecularLobe lobe = point.lobe;
+  if (!with_specular) lobe.kind = LobeKind::None;
+  switch (light.type) {
+    case LightType::Area: {
+      const AreaTerms t =
+          light.shape == AreaShape::Polygon
+              ? polygon_light_terms(light.vertices.data(), int(light.vertices.size()), light.emit_normal,
+                                    light.two_sided, point.p, point.n, lobe)
+              : sphere_light_terms(light.center, light.radius, point.p, point.n, lobe);
+      count.below_horizon += t.below_horizon;
+      count.inside_light += t.inside;
+      add_light_term(color, light.products, 1.0, t.P, t.S, light.has_ambient, with_specular);
+      return;
+    }
+    case LightType::Sky: {
+      const SkyTerms t = sky_light_terms(light.up, point.n, lobe);
+      add_light_term(color, light.products, 1.0, t.P_sky, t.S_sky, light.has_ambient, with_specular);
+      add_light_term(color, light.ground_products, 1.0, t.P_ground, t.S_ground, false, with_specular);
+      return;
+    }
+    case LightType::Ambient:
+    case LightType::Directional:
+    case LightType::Point:
+    case LightType::Spot:
+      return;  // not area lights: engine/shade_point.h's own branches
+  }
+}
+
+}  // namespace lighting_engine
+}  // namespace shadetool

@@ -1,0 +1,30 @@
+// engine/area_point.h: area and sky lights inside the per-point loop (engine/shade_point.h).
+// The point, its normal and the specular lobe are brought to world space once per point (only
+// when a scene has such lights), then lighting/area_light.h gives P and S and
+// lighting_equation.h's add_light_term adds ka*a + kd*L*P + ks*L*S. Internal: not installed.
+#pragma once
+
+#include <shadetool/lighting/area_light.h>
+#include <shadetool/lighting/lighting_equation.h>
+#include <shadetool/lighting/shade_points.h>
+#include <shadetool/lighting/shading_space.h>
+
+namespace shadetool {
+namespace lighting_engine {
+
+struct WorldPoint {
+  Vec3d p{0, 0, 0};
+  Vec3d n{0, 0, 0};  // unit, or zero (then only the ambient term is added)
+  SpecularLobe lobe;
+};
+
+// p, n in the frame's space S (n any length, already flipped for two-sided); zero_normal when the
+// loop found n zero or non-finite.
+WorldPoint world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess,
+                       const Vec3d& p, const Vec3d& n, bool zero_normal);
+
+// Adds one area or sky light's terms to color; counts skips.
+void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count);
+
+}  // namespace lighting_engine
+}  // namespace shadetool
