@@ -16,6 +16,7 @@
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/geometry/face_area_vector.h>
 #include <shadetool/geometry/scaled_length.h>
+#include <shadetool/normals/engine/mesh_scale.h>
 
 namespace shadetool {
 namespace {
@@ -50,11 +51,13 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
 }  // namespace
 
 std::vector<double> face_normals(const Mesh& mesh, Precision precision) {
+  Mesh storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const Mesh& in_range = normals_detail::in_kernel_range(mesh, storage);
   const std::size_t F = mesh.num_faces();
   std::vector<double> out(3 * F);
   engine::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
-    if (precision == Precision::Float) face_normals_range<float>(mesh, b, e, out.data());
-    else face_normals_range<double>(mesh, b, e, out.data());
+    if (precision == Precision::Float) face_normals_range<float>(in_range, b, e, out.data());
+    else face_normals_range<double>(in_range, b, e, out.data());
   });
   return out;
 }

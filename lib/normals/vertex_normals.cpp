@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <shadetool/core/error.h>
+#include <shadetool/normals/engine/mesh_scale.h>
 #include <shadetool/normals/engine/vertex_sums.h>
 #include <shadetool/normals/vertex_fallback.h>
 
@@ -45,10 +46,12 @@ void compute(const Mesh& mesh, const ChunkPlan* cached_plan, Precision precision
 }  // namespace
 
 void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out) {
+  Mesh storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const Mesh& in_range = in_kernel_range(mesh, storage);
   dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    compute<T, W>(mesh, nullptr, precision, out);
+    compute<T, W>(in_range, nullptr, precision, out);
     return 0;
   });
 }
@@ -57,10 +60,12 @@ void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting w
                     VertexNormals& out) {
   if (!plan.fits(mesh))
     throw Error("vertex_normals: the plan was built for a mesh with other vertex, face or corner counts");
+  Mesh storage;  // as above; the copy has the same connectivity, so the plan fits it
+  const Mesh& in_range = in_kernel_range(mesh, storage);
   dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    compute<T, W>(mesh, &plan.chunks(), precision, out);
+    compute<T, W>(in_range, &plan.chunks(), precision, out);
     return 0;
   });
 }

@@ -35,6 +35,7 @@
 #include <shadetool/geometry/face_area_vector.h>
 #include <shadetool/geometry/interior_angle.h>
 #include <shadetool/geometry/scaled_length.h>
+#include <shadetool/normals/engine/mesh_scale.h>
 #include <shadetool/normals/engine/triangle_blocks.h>
 #include <shadetool/normals/weighting.h>
 
@@ -337,9 +338,7 @@ inline double contribution_scale(const Mesh& mesh, bool sample = true) {
     } else {
       polygon_contributions<double, W>(mesh, 0, F, track);
     }
-    if (!(peak > 0.0)) return 1.0;
-    const int e = std::max(-1000, std::min(1000, std::ilogb(peak)));
-    return std::ldexp(1.0, -e);
+    return power_of_two_scale(peak);  // the one rule (engine/mesh_scale.h); 1 when no face is valid
   }
 }
 
