@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 #include <tbb/parallel_invoke.h>
@@ -300,7 +301,7 @@ GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint3
   if (num_groups >= kNoGroup) throw Error("corner_group_normals: too many groups");
   for (std::uint32_t g : corner_group)
     if (g != kNoGroup && g >= num_groups) throw Error("corner_group_normals: a corner's group is out of range");
-  Mesh storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
   const Mesh& in_range = in_kernel_range(mesh, storage);
   return dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
@@ -310,7 +311,7 @@ GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint3
 }
 
 CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting, Precision precision) {
-  Mesh storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
   const Mesh& in_range = in_kernel_range(mesh, storage);
   return dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);

@@ -8,8 +8,12 @@
 // back to double. Float therefore costs what Double costs here; it exists so that a float run is
 // float throughout. A face without area (geometry/degenerate_face.h, face_area_kind:
 // fewer than 3 corners, non-finite position, zero area to 64 eps) gets (0, 0, 0).
+// Scale: a mesh whose largest coordinate lies outside [2^-32, 2^32) is computed on a copy scaled
+// exactly by a power of two (engine/mesh_scale.h): the cross products of a mesh at 1e160 or 1e-160
+// neither overflow nor underflow, and a 2^k-scaled mesh gives bitwise the same normals.
 #include <shadetool/normals/face_normals.h>
 
+#include <optional>
 #include <vector>
 
 #include <shadetool/core/engine/parallel.h>
@@ -51,7 +55,7 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
 }  // namespace
 
 std::vector<double> face_normals(const Mesh& mesh, Precision precision) {
-  Mesh storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
   const Mesh& in_range = normals_detail::in_kernel_range(mesh, storage);
   const std::size_t F = mesh.num_faces();
   std::vector<double> out(3 * F);

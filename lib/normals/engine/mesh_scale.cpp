@@ -36,7 +36,7 @@ double power_of_two_scale(double peak) {
   return std::ldexp(1.0, -e);
 }
 
-const Mesh& in_kernel_range(const Mesh& mesh, Mesh& storage) {
+const Mesh& in_kernel_range(const Mesh& mesh, std::optional<Mesh>& storage) {
   const double sampled = sampled_max_coordinate(mesh);
   if (!(sampled > 0.0)) return mesh;  // no finite nonzero coordinate: nothing to scale
   const int e = std::ilogb(sampled);
@@ -45,12 +45,12 @@ const Mesh& in_kernel_range(const Mesh& mesh, Mesh& storage) {
   const std::size_t V = mesh.num_vertices();
   for (std::size_t v = 0; v < V; ++v) track(peak, mesh.positions.data() + 3 * v);
   const double scale = power_of_two_scale(peak);
-  storage = Mesh{};
-  storage.positions.resize(mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) storage.positions[i] = mesh.positions[i] * scale;  // exact
-  storage.face_start = mesh.face_start;
-  storage.corner_vertex = mesh.corner_vertex;
-  return storage;
+  Mesh& copy = storage.emplace();
+  copy.positions.resize(mesh.positions.size());
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) copy.positions[i] = mesh.positions[i] * scale;  // exact
+  copy.face_start = mesh.face_start;
+  copy.corner_vertex = mesh.corner_vertex;
+  return copy;
 }
 
 }  // namespace shadetool::normals_detail

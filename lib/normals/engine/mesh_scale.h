@@ -3,7 +3,7 @@
 // its weights ~ x^-2) over- or underflows, whatever the size of the mesh (internal to lib/normals).
 //
 // Inputs:  mesh     positions #V by 3, faces
-//          storage  a Mesh to hold the scaled copy when one is needed
+//          storage  holds the scaled copy when one is needed (left empty otherwise: no allocation)
 // Output:  in_kernel_range returns `mesh` itself when its sampled largest |coordinate| m lies in
 //          [2^-kKernelRangeExponent, 2^kKernelRangeExponent) (every ordinary mesh: no copy, no
 //          pass over the positions), else `storage`, filled with the mesh's positions times
@@ -29,6 +29,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include <shadetool/core/mesh.h>
 
@@ -48,6 +49,6 @@ double sampled_max_coordinate(const Mesh& mesh);
 double power_of_two_scale(double peak);
 
 // `mesh`, or its positions scaled into the kernels' range in `storage` (see above).
-const Mesh& in_kernel_range(const Mesh& mesh, Mesh& storage);
+const Mesh& in_kernel_range(const Mesh& mesh, std::optional<Mesh>& storage);
 
 }  // namespace shadetool::normals_detail
