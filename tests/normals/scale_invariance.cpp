@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include <shadetool/geometry/scaled_length.h>
 #include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/engine/normalise_sums.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 #include "normals_test_util.h"
@@ -193,4 +195,31 @@ TEST_CASE("an octahedron at 1e77, 1e-78, 1e300 and 1e-300 has its analytic norma
           CHECK(angle_degrees(get3(cn.normals, cn.corner_index[c]), get3(fn, c / 3)) < tol);
       }
   }
+}
+
+TEST_CASE("vertex sums are normalised by the one safe normalise (scaled_length.h), bitwise, tiny and huge sums included",
+          "[normals][scale]") {
+  // Pairs of rows through normalise_range's SSE2 path and its scalar fallback, against
+  // normalise_checked row by row: in range, both out of range, one of each, zero, Inf.
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> sum;
+  for (int k = -1070; k <= 1020; k += 30)
+    for (Vec3d v : {Vec3d{1, 2, 2}, Vec3d{-0.3, 1e-5, 0.7}, Vec3d{3, 4, 0}}) {
+      const Vec3d s = v * std::ldexp(1.0, k);
+      sum.insert(sum.end(), {s.x, s.y, s.z});
+    }
+  sum.insert(sum.end(), {0, 0, 0, inf, 1, 0, 1, 1, 1});
+  const std::size_t rows = sum.size() / 3;
+  std::vector<double> out(sum.size(), -7.0);
+  std::vector<std::uint32_t> failed;
+  normals_detail::normalise_range<double>(sum.data(), out.data(), 0, rows, failed);
+  std::vector<std::uint32_t> want_failed;
+  for (std::size_t r = 0; r < rows; ++r) {
+    double o[3];
+    if (!normalise_checked(sum[3 * r], sum[3 * r + 1], sum[3 * r + 2], o)) { want_failed.push_back(std::uint32_t(r)); continue; }
+    INFO("row " << r);
+    CHECK(std::memcmp(o, &out[3 * r], sizeof o) == 0);
+  }
+  CHECK(failed == want_failed);
+  CHECK(want_failed.size() == 2);
 }
