@@ -8,7 +8,7 @@
 // back to double. Float therefore costs what Double costs here; it exists so that a float run is
 // float throughout. A face without area (geometry/degenerate_face.h, face_area_kind:
 // fewer than 3 corners, non-finite position, zero area to 64 eps) gets (0, 0, 0).
-// Scale: a mesh whose largest coordinate lies outside [2^-32, 2^32) is computed on a copy scaled
+// Scale: a mesh whose largest sampled coordinate lies outside [2^-32, 2^32) is computed on a copy scaled
 // exactly by a power of two (engine/mesh_scale.h): the cross products of a mesh at 1e160 or 1e-160
 // neither overflow nor underflow, and a 2^k-scaled mesh gives bitwise the same normals.
 #include <shadetool/normals/face_normals.h>

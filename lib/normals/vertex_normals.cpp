@@ -7,7 +7,7 @@
 // result exact to ~1e-15 rad); Float rounds each contribution once to float (Area and Max after
 // one power-of-two scale per mesh, so meshes at 1e-30 or 1e30 neither under- nor overflow) and
 // accumulates in float: half the accumulator memory and traffic. Positions far from unit size
-// (largest coordinate outside [2^-32, 2^32)) are first scaled exactly by one power of two per mesh
+// (largest sampled coordinate outside [2^-32, 2^32)) are first scaled exactly by one power of two per mesh
 // (engine/mesh_scale.h; the float scale of contributions then follows the same rule). Error against Double: each term
 // carries a relative error <= 2^-24 and the float sum of k terms <= (k-1) 2^-24 of the sum of
 // their magnitudes, so the angle to the double normal is <= ~k 2^-24 (|terms| / |sum|) rad, which

@@ -167,6 +167,21 @@ TEST_CASE("a mesh of 80k faces (threads, sampled scale) scaled by 2^k gives bitw
     }
 }
 
+TEST_CASE("a mesh with a far isolated vertex (2^40 away) scaled by 2^k gives bitwise its normals at scale 1",
+          "[normals][scale]") {
+  Mesh m = keep_normal_when_scaled(irregular(icosphere(2, 0.3)).mesh);
+  m.add_vertex({std::ldexp(1.0, 40), 0.5, -0.25});  // in no face: its normal is the fallback
+  for (Weighting w : kWeightings)
+    for (Precision p : kPrecisions) {
+      const AllNormals base = all_normals(m, w, p);
+      CHECK(base.vertex.fallback_vertices == 1);
+      for (int k = -1000; k <= 950; k += 50) {
+        INFO(name(w, p) << " scale 2^" << k);
+        require_same(all_normals(scaled(m, std::ldexp(1.0, k)), w, p), base);
+      }
+    }
+}
+
 TEST_CASE("an octahedron at 1e77, 1e-78, 1e300 and 1e-300 has its analytic normals under every weighting",
           "[normals][scale]") {
   const Mesh unit = octahedron();

@@ -41,10 +41,7 @@ const Mesh& in_kernel_range(const Mesh& mesh, std::optional<Mesh>& storage) {
   if (!(sampled > 0.0)) return mesh;  // no finite nonzero coordinate: nothing to scale
   const int e = std::ilogb(sampled);
   if (e >= -kKernelRangeExponent && e < kKernelRangeExponent) return mesh;
-  double peak = 0.0;
-  const std::size_t V = mesh.num_vertices();
-  for (std::size_t v = 0; v < V; ++v) track(peak, mesh.positions.data() + 3 * v);
-  const double scale = power_of_two_scale(peak);
+  const double scale = power_of_two_scale(sampled);  // the trigger's own maximum: one rule, no second pass
   Mesh& copy = storage.emplace();
   copy.positions.resize(mesh.positions.size());
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) copy.positions[i] = mesh.positions[i] * scale;  // exact
