@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 #include <tbb/parallel_invoke.h>
@@ -28,6 +29,7 @@
 #include <shadetool/normals/engine/corner_contributions.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/geometry/interior_angle.h>
+#include <shadetool/normals/engine/mesh_scale.h>
 #include <shadetool/normals/engine/normalise_sums.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/normals/vertex_fallback.h>
@@ -299,18 +301,22 @@ GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint3
   if (num_groups >= kNoGroup) throw Error("corner_group_normals: too many groups");
   for (std::uint32_t g : corner_group)
     if (g != kNoGroup && g >= num_groups) throw Error("corner_group_normals: a corner's group is out of range");
+  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const Mesh& in_range = in_kernel_range(mesh, storage);
   return dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    return group_normals<T, W>(mesh, corner_group, num_groups);
+    return group_normals<T, W>(in_range, corner_group, num_groups);
   });
 }
 
 CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting, Precision precision) {
+  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const Mesh& in_range = in_kernel_range(mesh, storage);
   return dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    return compute<T, W>(mesh, crease_angle, precision);
+    return compute<T, W>(in_range, crease_angle, precision);
   });
 }
 

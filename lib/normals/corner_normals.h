@@ -23,6 +23,7 @@
 // Degenerate faces: their corners take the vertex's smooth normal (all valid contributions at
 // the vertex, creases ignored), sharing the vertex's only group when it has one; a vertex with no
 // valid face gets (0, 0, 1). A group whose sum cancels takes its first corner's face normal.
+// Scale: as vertex_normals (a 2^k-scaled mesh gives bitwise the same normals; engine/mesh_scale.h).
 #pragma once
 
 #include <cstddef>

@@ -8,14 +8,19 @@
 // back to double. Float therefore costs what Double costs here; it exists so that a float run is
 // float throughout. A face without area (geometry/degenerate_face.h, face_area_kind:
 // fewer than 3 corners, non-finite position, zero area to 64 eps) gets (0, 0, 0).
+// Scale: a mesh whose largest sampled coordinate lies outside [2^-32, 2^32) is computed on a copy scaled
+// exactly by a power of two (engine/mesh_scale.h): the cross products of a mesh at 1e160 or 1e-160
+// neither overflow nor underflow, and a 2^k-scaled mesh gives bitwise the same normals.
 #include <shadetool/normals/face_normals.h>
 
+#include <optional>
 #include <vector>
 
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/geometry/face_area_vector.h>
 #include <shadetool/geometry/scaled_length.h>
+#include <shadetool/normals/engine/mesh_scale.h>
 
 namespace shadetool {
 namespace {
@@ -50,11 +55,13 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
 }  // namespace
 
 std::vector<double> face_normals(const Mesh& mesh, Precision precision) {
+  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const Mesh& in_range = normals_detail::in_kernel_range(mesh, storage);
   const std::size_t F = mesh.num_faces();
   std::vector<double> out(3 * F);
   engine::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
-    if (precision == Precision::Float) face_normals_range<float>(mesh, b, e, out.data());
-    else face_normals_range<double>(mesh, b, e, out.data());
+    if (precision == Precision::Float) face_normals_range<float>(in_range, b, e, out.data());
+    else face_normals_range<double>(in_range, b, e, out.data());
   });
   return out;
 }

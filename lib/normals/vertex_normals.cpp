@@ -6,7 +6,9 @@
 // in double (default: a vertex of high valence sums hundreds of terms, and double keeps the
 // result exact to ~1e-15 rad); Float rounds each contribution once to float (Area and Max after
 // one power-of-two scale per mesh, so meshes at 1e-30 or 1e30 neither under- nor overflow) and
-// accumulates in float: half the accumulator memory and traffic. Error against Double: each term
+// accumulates in float: half the accumulator memory and traffic. Positions far from unit size
+// (largest sampled coordinate outside [2^-32, 2^32)) are first scaled exactly by one power of two per mesh
+// (engine/mesh_scale.h; the float scale of contributions then follows the same rule). Error against Double: each term
 // carries a relative error <= 2^-24 and the float sum of k terms <= (k-1) 2^-24 of the sum of
 // their magnitudes, so the angle to the double normal is <= ~k 2^-24 (|terms| / |sum|) rad, which
 // for any vertex whose terms do not cancel is < 1e-5 deg for k < 100; measured max 2e-5 deg on
@@ -17,9 +19,11 @@
 // counted in fallback_vertices.
 #include <shadetool/normals/vertex_normals.h>
 
+#include <optional>
 #include <vector>
 
 #include <shadetool/core/error.h>
+#include <shadetool/normals/engine/mesh_scale.h>
 #include <shadetool/normals/engine/vertex_sums.h>
 #include <shadetool/normals/vertex_fallback.h>
 
@@ -45,10 +49,12 @@ void compute(const Mesh& mesh, const ChunkPlan* cached_plan, Precision precision
 }  // namespace
 
 void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out) {
+  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const Mesh& in_range = in_kernel_range(mesh, storage);
   dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    compute<T, W>(mesh, nullptr, precision, out);
+    compute<T, W>(in_range, nullptr, precision, out);
     return 0;
   });
 }
@@ -57,10 +63,12 @@ void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting w
                     VertexNormals& out) {
   if (!plan.fits(mesh))
     throw Error("vertex_normals: the plan was built for a mesh with other vertex, face or corner counts");
+  std::optional<Mesh> storage;  // as above; the copy has the same connectivity, so the plan fits it
+  const Mesh& in_range = in_kernel_range(mesh, storage);
   dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    compute<T, W>(mesh, &plan.chunks(), precision, out);
+    compute<T, W>(in_range, &plan.chunks(), precision, out);
     return 0;
   });
 }

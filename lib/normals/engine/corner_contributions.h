@@ -11,10 +11,13 @@
 // one rounding (relative 2^-24 per component) per term and nothing else: slivers keep the
 // double-precision digits of their cross product (formerly the edges were rounded to float first,
 // which left 1.3e-3 deg differences from double at sliver vertices). Unit contributions (Uniform,
-// Angle) are scale-free. Area (~ length^2) and Max (~ length^-2) contributions of a mesh scaled to
-// 1e-30 or 1e30 over- or underflow float (range 1.2e-38 .. 3.4e38), so for T = float they are
-// multiplied by one power of two per mesh, `scale` (exact; the same for every face, so relative
-// weights and the unit vertex normal are unchanged; contribution_scale below chooses it).
+// Angle) are scale-free. The callers pass meshes whose largest coordinate lies in [2^-32, 2^32)
+// (engine/mesh_scale.h scales the others exactly), so no double product over- or underflows. Area
+// (~ length^2) and Max (~ length^-2) contributions can still leave float's range (1.2e-38 ..
+// 3.4e38) for a mesh with a wide range of face sizes, so for T = float they are multiplied by one
+// power of two per mesh, `scale` (exact; the same for every face, so relative weights and the
+// unit vertex normal are unchanged; contribution_scale below chooses it by the same rule,
+// power_of_two_scale).
 // Degenerate input: a face without area by geometry/degenerate_face.h (face_area_kind: fewer than
 // 3 corners, NaN/Inf, zero area to 64 eps; a triangle with a repeated index has zero area)
 // contributes nothing at all (the sink is not called), and is counted; a Max corner whose edge-length product is zero or underflows
@@ -35,6 +38,7 @@
 #include <shadetool/geometry/face_area_vector.h>
 #include <shadetool/geometry/interior_angle.h>
 #include <shadetool/geometry/scaled_length.h>
+#include <shadetool/normals/engine/mesh_scale.h>
 #include <shadetool/normals/engine/triangle_blocks.h>
 #include <shadetool/normals/weighting.h>
 
@@ -337,9 +341,7 @@ inline double contribution_scale(const Mesh& mesh, bool sample = true) {
     } else {
       polygon_contributions<double, W>(mesh, 0, F, track);
     }
-    if (!(peak > 0.0)) return 1.0;
-    const int e = std::max(-1000, std::min(1000, std::ilogb(peak)));
-    return std::ldexp(1.0, -e);
+    return power_of_two_scale(peak);  // the one rule (engine/mesh_scale.h); 1 when no face is valid
   }
 }
 
