@@ -1,7 +1,7 @@
 // cmd_render.cpp: `shadetool render IN -o OUT.png --scene SCENE.json [...]`.
-// Parses options, reads the scene once, and per mesh calls render/render_mesh.h; the image is
-// encoded by io/image_png.h or io/image_pfm.h and written by write_image (below), the one place
-// to move onto the driver's image output once it has one.
+// Parses options, reads the scene once, and per mesh calls render/render_mesh.h; the step hands
+// the picture to the driver (OutputKind::Image), which checks and writes the output like every
+// other subcommand's: PNG (8-bit sRGB) or, with --hdr or a .pfm output, PFM (linear float).
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -13,9 +13,7 @@
 #include "usage_error.h"
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
-#include <shadetool/io/atomic_write.h>
-#include <shadetool/io/image_pfm.h>
-#include <shadetool/io/image_png.h>
+#include <shadetool/io/image_io.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/render/render_mesh.h>
 
@@ -25,7 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RenderCliOptions {
-  std::string output, output_dir;
   std::string scene;
   std::string shading = "phong";
   std::vector<int> size{800, 600};
@@ -37,15 +34,29 @@ struct RenderCliOptions {
   int threads = 0;
 };
 
-// The image's bytes to `path` in one step (temporary file, then rename: no partial file on
-// failure, an existing file untouched), or to stdout for "-".
-void write_image(const std::string& path, const std::string& bytes) { shadetool::io::write_file_atomically(path, bytes); }
+// The rendered picture as the image the driver writes: linear float for PFM, else 8-bit sRGB.
+shadetool::Image to_output_image(const shadetool::ImageRGB& rendered, bool linear_float) {
+  shadetool::Image out;
+  out.width = std::size_t(rendered.width);
+  out.height = std::size_t(rendered.height);
+  out.channels = 3;
+  if (linear_float) {
+    out.pixel = shadetool::Image::Pixel::F32;
+    out.f32.assign(rendered.rgb.begin(), rendered.rgb.end());
+  } else {
+    out.pixel = shadetool::Image::Pixel::U8;
+    out.u8.resize(rendered.rgb.size());
+    for (std::size_t i = 0; i < rendered.rgb.size(); ++i) out.u8[i] = shadetool::encode_srgb_8bit(rendered.rgb[i]);
+  }
+  return out;
+}
 
-std::string encode_image(const shadetool::ImageRGB& image, bool hdr, const std::string& name) {
-  if (hdr) return shadetool::io::encode_pfm(image.width, image.height, image.rgb.data(), image.rgb.size(), name);
-  std::vector<std::uint8_t> srgb8(image.rgb.size());
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) srgb8[i] = shadetool::encode_srgb_8bit(image.rgb[i]);
-  return shadetool::io::encode_png_srgb8(image.width, image.height, srgb8, name);
+// Whether the image is written as PFM: --hdr, --format pfm, or an output named *.pfm.
+bool writes_pfm(const IoOptions& io, bool hdr) {
+  if (hdr) return true;
+  if (!io.format.empty()) return io.format == "pfm" || io.format == "PFM";
+  const std::string ext = fs::path(io.output).extension().string();
+  return ext == ".pfm" || ext == ".PFM";
 }
 
 shadetool::RenderShading parse_shading(const std::string& s) {
@@ -59,9 +70,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
   static RenderCliOptions opt;
   auto* sub = app.add_subcommand(
       "render", "Render a mesh to a PNG (or PFM): flat, Gouraud or Phong shading with bake-lighting's lighting");
-  add_io_options(*sub, io, /*writes_mesh=*/false);
-  sub->add_option("-o,--output", opt.output, "Output image (.png, or .pfm with --hdr); - writes stdout");
-  sub->add_option("--output-dir", opt.output_dir, "Write one image per input into DIR, named after the input");
+  add_io_options(*sub, io, OutputKind::Image);
   sub->add_option("--scene", opt.scene, "Scene file (JSON): material, lights, camera (fov_y, near, far, orthographic)")
       ->required()
       ->type_name("SCENE.json");
@@ -81,16 +90,18 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       ->check(CLI::Range(0, 1024));
 
   return [] {
-    if (opt.output.empty() && opt.output_dir.empty()) throw UsageError("no output given: use -o FILE or --output-dir DIR");
-    if (!opt.output.empty() && !opt.output_dir.empty()) throw UsageError("give -o or --output-dir, not both");
-    if (!opt.output.empty() && io.inputs.size() > 1) throw UsageError("-o takes one input; use --output-dir DIR for several");
-    if (opt.output == "-" && io.json) throw UsageError("--json and -o - both write stdout; choose one");
+    if (opt.hdr) {
+      if (!io.format.empty() && io.format != "pfm" && io.format != "PFM")
+        throw UsageError("--hdr writes a float image (PFM), not --format " + io.format);
+      const std::string ext = fs::path(io.output).extension().string();
+      if (!io.output.empty() && io.output != "-" && ext != ".pfm" && ext != ".PFM")
+        throw UsageError("--hdr writes a float image (PFM): name the output .pfm");
+      if (io.format.empty()) io.format = "pfm";
+    }
     if (opt.samples < 1 || opt.samples > shadetool::kMaxSamples)
       throw UsageError("--samples must be 1.." + std::to_string(shadetool::kMaxSamples));
     for (double c : opt.background)
       if (!(c >= 0) || !std::isfinite(c)) throw UsageError("--background channels must be finite and >= 0");
-    if (!opt.output_dir.empty() && !fs::is_directory(opt.output_dir))
-      throw shadetool::Error(shadetool::located(opt.output_dir, 0, "output directory does not exist"));
 
     // A zero size is bad input (exit 1), found before any file is read.
     const shadetool::Scene scene = shadetool::read_scene(opt.scene);
@@ -113,15 +124,8 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       throw shadetool::Error("--size " + std::to_string(ro.width) + "," + std::to_string(ro.height) +
                              ": each side must be 1.." + std::to_string(shadetool::kMaxImageSide) + " pixels");
 
-    return run_mesh_command("render", io, [ro, &scene](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
-      std::string output = opt.output;
-      if (output.empty()) {
-        const fs::path in = input == "-" ? fs::path("stdin") : fs::path(input);
-        output = (fs::path(opt.output_dir) / in.stem()).string() + (opt.hdr ? ".pfm" : ".png");
-      }
-      std::error_code same_ec;
-      if (input != "-" && output != "-" && fs::equivalent(input, output, same_ec))
-        throw shadetool::Error(shadetool::located(input, 0, "the output " + output + " is the input file: refusing to overwrite the input"));
+    const bool pfm = writes_pfm(io, opt.hdr);
+    return run_command("render", io, [ro, &scene, pfm](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       shadetool::require_finite_positions(mesh, input);
       shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
       const shadetool::RenderResult result = shadetool::render_mesh(mesh, scene, ro, input);
@@ -130,14 +134,13 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       if (nonfinite > 0)
         throw shadetool::Error(shadetool::located(input, 0, std::to_string(nonfinite) +
                                                                 " colour values came out NaN or infinite; nothing written"));
-      write_image(output, encode_image(result.image, opt.hdr, output));
+      r.image = to_output_image(result.image, pfm);
 
       const shadetool::RenderStats& s = result.stats;
       if (result.camera.framed) r.notes.push_back("the scene has no camera: using one that frames the mesh");
       if (s.quad_fallbacks > 0)
         r.notes.push_back(std::to_string(s.quad_fallbacks) +
                           " samples of degenerate quads were interpolated over their fan triangles");
-      r.stats["output"] = output;
       r.stats["shading"] = shadetool::render_shading_name(ro.shading);
       r.stats["size"] = std::to_string(ro.width) + "x" + std::to_string(ro.height);
       r.stats["samples_per_pixel"] = ro.samples * ro.samples;
@@ -147,7 +150,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       r.stats["degenerate_faces"] = s.faces_degenerate;
       r.stats["near_clipped_triangles"] = s.triangles_near_clipped;
       r.stats["covered_samples"] = s.samples_covered;
-    }, /*writes_mesh=*/false);
+    }, OutputKind::Image);
   };
 });
 

@@ -1,5 +1,6 @@
 // image_io.cpp: the image format table and the PFM writer (see image_io.h).
 #include <shadetool/io/image_io.h>
+#include <shadetool/io/image_png.h>
 
 #include <algorithm>
 #include <cctype>
@@ -51,11 +52,26 @@ std::string encode_pfm(const Image& image, const std::string& name, ImageWriteIn
   return out;
 }
 
+// PNG (io/image_png.h, libpng): 8-bit RGB marked sRGB; the caller has encoded the pixels (a float
+// image has no 8-bit meaning without a transfer curve and quantisation, which are the caller's).
+std::string encode_png(const Image& image, const std::string& name, ImageWriteInfo& info) {
+  if (image.pixel != Image::Pixel::U8) fail(name, 0, "PNG holds 8-bit pixels: encode the float image first (or write PFM)");
+  if (image.channels == 4) {
+    info.notes.push_back("alpha not written: the PNG writer holds RGB only");
+    std::vector<std::uint8_t> rgb(image.width * image.height * 3);
+    for (std::size_t i = 0; i < image.width * image.height; ++i)
+      for (int k = 0; k < 3; ++k) rgb[3 * i + k] = image.u8[4 * i + k];
+    return io::encode_png_srgb8(int(image.width), int(image.height), rgb, name);
+  }
+  return io::encode_png_srgb8(int(image.width), int(image.height), image.u8, name);
+}
+
 }  // namespace
 
 const std::vector<ImageFormatEntry>& image_formats() {
-  // The first entry is the default image format. A PNG entry goes first when it lands.
+  // The first entry is the default image format.
   static const std::vector<ImageFormatEntry> table = {
+      {"png", {"png"}, encode_png},
       {"pfm", {"pfm"}, encode_pfm},
   };
   return table;

@@ -26,7 +26,7 @@ TEST_CASE("a pixel centre on a vertex gets the vertex's baked colour (gouraud an
 
   for (std::uint32_t v : {5u, 40u, 77u, 150u, 211u}) {
     const Vec3d p_world = transform_point(base.world_from_object, mesh.position(v));
-    const Vec3d n_world = normalized_or(transform_normal(signed_cofactor(base.world_from_object.A), mesh.position(v)),
+    const Vec3d n_world = normalized_or(Vec3d(transform_normal(signed_cofactor(base.world_from_object.A), Normal3d(mesh.position(v)))),
                                         Vec3d{0, 0, 1});
     Scene s = base;
     const Vec3d up = std::fabs(n_world.y) < 0.9 ? Vec3d{0, 1, 0} : Vec3d{1, 0, 0};

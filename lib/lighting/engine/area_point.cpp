@@ -9,7 +9,7 @@ WorldPoint world_point(const ShadingFrame& frame, ShadingModel model, bool specu
   WorldPoint w;
   w.p = frame.space_is_world ? p : transform_point(frame.world_from_space, p);
   if (zero_normal) return w;
-  w.n = normalized_or(frame.space_is_world ? n : transform_normal(frame.normal_to_world, n), Vec3d{0, 0, 0});
+  w.n = normalized_or(frame.space_is_world ? n : Vec3d(transform_normal(frame.normal_to_world, Normal3d(n))), Vec3d{0, 0, 0});
   if (!specular) return w;
   const Vec3d V = normalized_or(frame.eye_world - w.p, Vec3d{0, 0, 0});  // 0 at the eye
   w.lobe.shininess = shininess;
