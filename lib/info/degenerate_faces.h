@@ -15,6 +15,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include <shadetool/core/mesh.h>
 
@@ -28,5 +30,11 @@ struct DegenerateFaces {
 };
 
 DegenerateFaces degenerate_faces(const Mesh& mesh);
+
+// The rule above for one face f, for passes that must leave degenerate faces out (the visibility
+// BVH): None, or the first of RepeatedIndex, NonFinite, ZeroArea that applies. `scratch` is reused
+// storage for faces of more than 8 corners.
+enum class FaceDegeneracy { None, RepeatedIndex, NonFinite, ZeroArea };
+FaceDegeneracy face_degeneracy(const Mesh& mesh, std::size_t f, std::vector<std::uint32_t>& scratch);
 
 }  // namespace shadetool::info
