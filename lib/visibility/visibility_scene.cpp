@@ -98,7 +98,7 @@ VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl
   if (!s.device) throw Error("visibility: Embree could not create a device");
   rtcSetDeviceMemoryMonitorFunction(s.device, count_bytes, &s);
   s.scene = rtcNewScene(s.device);
-  rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);  // no shortcuts that lose accuracy (watertight)
+  rtcSetSceneFlags(s.scene, RTCSceneFlags(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT));  // no shortcuts that lose accuracy (watertight)
   if (stats_.triangles > 0) {
     RTCGeometry g = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, s.vertices.data(), 0,
