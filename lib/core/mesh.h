@@ -16,6 +16,8 @@
 //   corner_texcoord_index 0 or C uint32     per-corner index into texcoords
 //   vertex_colors      0 or V*color_channels floats, linear, nominally in [0,1]
 //   face_colors        0 or F*color_channels floats
+//   vertex_quality     0 or V floats           a scalar per vertex (PLY `quality`, MeshLab's name)
+//   face_quality       0 or F floats           a scalar per face (PLY face `quality`)
 //
 // Values are stored in double so that analytic test meshes lie on their surface and float input
 // (binary PLY, STL) round-trips bitwise: a float widened to double and narrowed back is unchanged.
@@ -53,6 +55,9 @@ struct Mesh {
   int color_channels = 3;  // 3 (rgb) or 4 (rgba), for both colour arrays
   bool colors_are_float = false;  // as read: PLY float colours / OBJ `v x y z r g b`; else uchar
 
+  std::vector<float> vertex_quality;
+  std::vector<float> face_quality;
+
   ValuePrecision precision = ValuePrecision::Float;
 
   std::size_t num_vertices() const { return positions.size() / 3; }
@@ -69,6 +74,8 @@ struct Mesh {
   bool has_vertex_colors() const { return !vertex_colors.empty(); }
   bool has_face_colors() const { return !face_colors.empty(); }
   bool has_texcoords() const { return !corner_texcoord_index.empty(); }
+  bool has_vertex_quality() const { return !vertex_quality.empty(); }
+  bool has_face_quality() const { return !face_quality.empty(); }
 
   Vec3d position(std::size_t v) const { return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]}; }
   void set_position(std::size_t v, const Vec3d& p) {

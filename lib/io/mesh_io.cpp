@@ -95,6 +95,8 @@ std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, 
     case Format::Stl: io::write_stl(mesh, options.binary, out, wi); break;
     case Format::Auto: fail("<output>", 0, "no output format given");
   }
+  if (options.format != Format::Ply && (mesh.has_vertex_quality() || mesh.has_face_quality()))
+    wi.notes.push_back("quality (per-vertex / per-face scalar) not written: only PLY holds it");
   return out;
 }
 

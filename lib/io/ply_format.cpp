@@ -57,7 +57,7 @@ double color_divisor(Type t) {
   }
 }
 
-enum class Target { Skip, X, Y, Z, NX, NY, NZ, R, G, B, A, U, V, Indices, TexcoordList };
+enum class Target { Skip, X, Y, Z, NX, NY, NZ, R, G, B, A, U, V, Quality, Indices, TexcoordList };
 
 struct Property {
   std::string name;
@@ -386,6 +386,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
   bool vtex[2] = {false, false};
   bool colors_float = false;
   bool face_texcoords = false;
+  bool vquality = false, fquality = false;  // `quality` (MeshLab's per-vertex / per-face scalar)
   if (vertex) {
     for (auto& prop : vertex->props) {
       if (prop.is_list) continue;
@@ -403,6 +404,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       else if (n == "alpha" || n == "diffuse_alpha" || n == "a") t = Target::A;
       else if (n == "s" || n == "u" || n == "texture_u" || n == "texture_s") t = Target::U;
       else if (n == "t" || n == "v" || n == "texture_v" || n == "texture_t") t = Target::V;
+      else if (n == "quality" && !vquality) t = Target::Quality, vquality = true;
       prop.target = t;
       if (t >= Target::X && t <= Target::NZ) {
         if (t >= Target::NX) vnormal[int(t) - int(Target::NX)] = true;
@@ -445,6 +447,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       else if (n == "green" || n == "diffuse_green") t = Target::G;
       else if (n == "blue" || n == "diffuse_blue") t = Target::B;
       else if (n == "alpha" || n == "diffuse_alpha") t = Target::A;
+      else if (n == "quality" && !fquality) t = Target::Quality, fquality = true;
       prop.target = t;
       if (t >= Target::NX && t <= Target::NZ) {
         fnormal[int(t) - int(Target::NX)] = true;
@@ -488,6 +491,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       if (has_vnormals) mesh.vertex_normals.assign(3 * n, 0.0);
       if (has_vcolors) mesh.vertex_colors.assign(std::size_t(channels) * n, 1.0f);
       if (has_vtex) vtexcoords.assign(2 * n, 0.0);
+      if (vquality) mesh.vertex_quality.assign(n, 0.0f);
       for (; i < n; ++i) {
         for (const auto& prop : e.props) {
           if (prop.is_list) {
@@ -511,6 +515,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
               break;
             case Target::U: if (has_vtex) vtexcoords[2 * i] = v; break;
             case Target::V: if (has_vtex) vtexcoords[2 * i + 1] = v; break;
+            case Target::Quality: mesh.vertex_quality[i] = float(v); break;
             default: break;
           }
         }
@@ -521,6 +526,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
       reserve_bulk(mesh.corner_vertex, std::min<std::size_t>(3 * n, in.remaining()));
       if (has_fnormals) mesh.face_normals.assign(3 * n, 0.0);
       if (has_fcolors) mesh.face_colors.assign(std::size_t(channels) * n, 1.0f);
+      if (fquality) mesh.face_quality.assign(n, 0.0f);
       std::vector<double> wedge;  // texcoord list of the current face
       std::vector<double> corner_tex;
       std::size_t i = 0;
@@ -568,6 +574,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
                 mesh.face_colors[std::size_t(channels) * i + std::size_t(int(prop.target) - int(Target::R))] =
                     float(v / color_divisor(prop.type));
               break;
+            case Target::Quality: mesh.face_quality[i] = float(v); break;
             default: break;
           }
         }
@@ -665,6 +672,16 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   const bool fnormals = mesh.has_face_normals();
   const bool cfloat = mesh.colors_are_float;
   const bool wedge = mesh.has_texcoords();
+  // Quality (one float per vertex / face) is written when it has one value per element; a step
+  // that changed the element count without carrying it leaves it out, with a note.
+  const bool vquality = mesh.has_vertex_quality() && mesh.vertex_quality.size() == nv;
+  const bool fquality = mesh.has_face_quality() && mesh.face_quality.size() == nf;
+  if (mesh.has_vertex_quality() && !vquality)
+    info.notes.push_back("vertex quality not written: " + std::to_string(mesh.vertex_quality.size()) + " values for " +
+                         std::to_string(nv) + " vertices");
+  if (mesh.has_face_quality() && !fquality)
+    info.notes.push_back("face quality not written: " + std::to_string(mesh.face_quality.size()) + " values for " +
+                         std::to_string(nf) + " faces");
   std::uint32_t max_size = 0;
   for (std::size_t f = 0; f < nf; ++f) max_size = std::max<std::uint32_t>(max_size, std::uint32_t(mesh.face_size(f)));
   const bool uchar_count = max_size <= 255;
@@ -684,6 +701,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   static const char* cnames[] = {"red", "green", "blue", "alpha"};
   if (vcolors)
     for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
+  if (vquality) out += "property float quality\n";
   out += "element face ";
   append_uint(out, nf);
   out += "\nproperty list ";
@@ -695,6 +713,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
     for (const char* n : {"nx", "ny", "nz"}) out += std::string("property ") + real + " " + n + "\n";
   if (fcolors)
     for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
+  if (fquality) out += "property float quality\n";
   out += "end_header\n";
 
   auto real_value = [&](double v, bool first) {
@@ -716,6 +735,14 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
       else append_uint(out, color_to_uchar(c));
     }
   };
+  auto quality_value = [&](float q) {
+    if (binary) {
+      put<float>(out, q);
+    } else {
+      out += ' ';
+      append_shortest_float(out, q);
+    }
+  };
   auto count_value = [&](std::uint32_t k) {
     if (binary) {
       if (uchar_count) out += char(std::uint8_t(k));
@@ -733,6 +760,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
       for (int k = 0; k < 3; ++k) real_value(mesh.vertex_normals[3 * v + std::size_t(k)], false);
     if (vcolors)
       for (int k = 0; k < ch; ++k) color_value(mesh.vertex_colors[std::size_t(ch) * v + std::size_t(k)]);
+    if (vquality) quality_value(mesh.vertex_quality[v]);
     if (!binary) out += '\n';
   }
   const std::size_t td = std::size_t(mesh.texcoord_dims);
@@ -761,6 +789,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
       for (int k = 0; k < 3; ++k) real_value(mesh.face_normals[3 * f + std::size_t(k)], false);
     if (fcolors)
       for (int k = 0; k < ch; ++k) color_value(mesh.face_colors[std::size_t(ch) * f + std::size_t(k)]);
+    if (fquality) quality_value(mesh.face_quality[f]);
     if (!binary) out += '\n';
   }
 }
