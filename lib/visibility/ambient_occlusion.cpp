@@ -1,6 +1,7 @@
 // ambient_occlusion.cpp
 #include <shadetool/visibility/ambient_occlusion.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -24,12 +25,17 @@ std::uint32_t count_hits(RTCScene scene, const Vec3f& p_local, const Vec3d& n, s
   Vec3d t, b;
   visibility::orthonormal_basis(n, t, b);
   const Vec3f origin = visibility::offset_ray_origin(p_local, Vec3f(n));
+  constexpr std::uint32_t kStream = 64;  // rays made, then traced together
+  RTCRay rays[kStream];
   std::uint32_t hits = 0;
-  for (std::uint32_t k = 0; k < samples; ++k) {
-    const visibility::UnitSquarePoint s = visibility::scrambled_sobol_2d(k, seed);
-    const Vec3d w = visibility::cosine_hemisphere(s.u, s.v);
-    const Vec3d d = t * w.x + b * w.y + n * w.z;
-    hits += visibility_engine::occluded(scene, origin, Vec3f(d), tfar_local) ? 1u : 0u;
+  for (std::uint32_t first = 0; first < samples; first += kStream) {
+    const std::uint32_t count = std::min(kStream, samples - first);
+    for (std::uint32_t j = 0; j < count; ++j) {
+      const visibility::UnitSquarePoint s = visibility::scrambled_sobol_2d(first + j, seed);
+      const Vec3d w = visibility::cosine_hemisphere(s.u, s.v);
+      rays[j] = visibility_engine::make_ray(origin, Vec3f(t * w.x + b * w.y + n * w.z), tfar_local);
+    }
+    hits += visibility_engine::count_occluded(scene, rays, count);
   }
   return hits;
 }

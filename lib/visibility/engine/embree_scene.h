@@ -2,6 +2,7 @@
 // visibility estimate is built from (machinery; not installed for users, no Embree in the public
 // headers).
 //
+// make_ray(origin, direction, tfar): an RTCRay for the segment origin + t * direction, 0 <= t <= tfar.
 // occluded(origin, direction, tfar): true when the segment origin + t * direction, 0 < t <= tfar,
 // meets a triangle of the scene (rtcOccluded1; Embree reports a hit by setting tfar to -inf).
 // The ray mask is all ones: Debian builds Embree with ray masks, and a ray with mask 0 (a
@@ -33,9 +34,7 @@ struct VisibilityScene::Impl {
 
 namespace visibility_engine {
 
-inline bool occluded(RTCScene scene, const Vec3f& origin, const Vec3f& direction, float tfar) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+inline RTCRay make_ray(const Vec3f& origin, const Vec3f& direction, float tfar) {
   RTCRay ray;
   ray.org_x = origin.x;
   ray.org_y = origin.y;
@@ -49,8 +48,28 @@ inline bool occluded(RTCScene scene, const Vec3f& origin, const Vec3f& direction
   ray.mask = 0xFFFFFFFFu;
   ray.id = 0;
   ray.flags = 0;
+  return ray;
+}
+
+inline bool occluded(RTCScene scene, const Vec3f& origin, const Vec3f& direction, float tfar) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray = make_ray(origin, direction, tfar);
   rtcOccluded1(scene, &context, &ray);
   return ray.tfar < 0.0f;
+}
+
+// The rays of one point traced as a stream (rtcOccluded1M: Embree groups them into packets where
+// its ISA allows); returns how many were blocked. Each ray's answer is the same as rtcOccluded1's
+// for it alone (Embree's stream and single-ray kernels test the same triangles with the same
+// watertight arithmetic in robust mode).
+inline std::uint32_t count_occluded(RTCScene scene, RTCRay* rays, unsigned count) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded1M(scene, &context, rays, count, sizeof(RTCRay));
+  std::uint32_t hits = 0;
+  for (unsigned i = 0; i < count; ++i) hits += rays[i].tfar < 0.0f ? 1u : 0u;
+  return hits;
 }
 
 }  // namespace visibility_engine
