@@ -68,6 +68,8 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
         [options, per_face, colors, quality](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_faces(mesh, input);
           shadetool::require_finite_positions(mesh, input);
+          // Normals pass through to the output: none may carry NaN or Inf into it.
+          shadetool::require_finite_normals(mesh, input, "fix them first (`shadetool normals --recompute` or `shadetool repair`)");
           const shadetool::VisibilityScene scene(mesh);
           shadetool::AmbientOcclusion ao;
           if (per_face) {

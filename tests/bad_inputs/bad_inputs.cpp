@@ -96,6 +96,7 @@ std::vector<Subcommand> subcommands(const fs::path& scene) {
       {"repair", {"repair", {}, true}},
       {"transform", {"transform", {"--translate", "1,2,3"}, true}},
       {"bake-lighting", {"bake-lighting", {"--scene", scene.string()}, true}},
+      {"occlusion", {"occlusion", {"--samples", "4"}, true}},
   };
   const ProcessResult help = run_process({kBin, "--help"});
   REQUIRE(help.code == 0);

@@ -60,9 +60,8 @@ inline bool occluded(RTCScene scene, const Vec3f& origin, const Vec3f& direction
 }
 
 // The rays of one point traced as a stream (rtcOccluded1M: Embree groups them into packets where
-// its ISA allows); returns how many were blocked. Each ray's answer is the same as rtcOccluded1's
-// for it alone (Embree's stream and single-ray kernels test the same triangles with the same
-// watertight arithmetic in robust mode).
+// its ISA allows); returns how many were blocked. The answers are rtcOccluded1's for each ray
+// alone: bench/visibility checks that both count the same hits (4000 vertices x N = 4..1024 rays).
 inline std::uint32_t count_occluded(RTCScene scene, RTCRay* rays, unsigned count) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
