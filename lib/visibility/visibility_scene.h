@@ -13,7 +13,10 @@
 //          puts the mesh where ray_offset.h's constants are designed to work (extent about 1), so
 //          a 1e-3 mesh and a 1e6 mesh behave alike. Precision of the geometry: 2^-24 of the
 //          mesh's half extent. A vertex's local point is its BVH vertex exactly (same rounding).
-// Memory:  the float vertex and index buffers (owned here, shared with Embree) and Embree's BVH;
+// Memory:  the float vertex and index buffers (owned here, shared with Embree: 12 B per vertex,
+//          12 B per triangle) and Embree's BVH in its compact layout (RTC_SCENE_FLAG_COMPACT, about
+//          36 B per triangle; bench/visibility/results.md), built in robust mode
+//          (RTC_SCENE_FLAG_ROBUST: watertight, no ray leaks between triangles sharing an edge);
 //          bvh_bytes counts what Embree allocated through the device's memory monitor.
 // Threads: Embree builds with TBB (the caller's arena and limits); queries are read-only.
 // Errors:  throws Error when the mesh's extent overflows float after centring or Embree fails.
