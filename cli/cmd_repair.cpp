@@ -48,6 +48,7 @@ nlohmann::json report_json(const RepairReport& r, const RepairCliOptions& opt) {
   j["nested_shells"] = r.nested_shells;
   j["orientation"] = {{"by_volume", r.oriented_by_volume},
                       {"by_vote", r.oriented_by_vote},
+                      {"by_normals", r.oriented_by_normals},
                       {"by_majority", r.oriented_by_majority},
                       {"open_component_method", "generalized winding number"}};
   j["non_manifold_edges"] = r.non_manifold_edges;
@@ -62,6 +63,7 @@ nlohmann::json report_json(const RepairReport& r, const RepairCliOptions& opt) {
                              {"non_finite", r.degenerate_non_finite}};
   j["degenerate_faces_removed"] = r.degenerate_faces_removed;
   j["vertices_welded"] = r.vertices_welded;
+  j["seam_vertices_joined"] = r.seam_vertices_joined;
   j["weld_eps"] = opt.weld >= 0 ? nlohmann::json(opt.weld) : nlohmann::json(nullptr);
   j["normals_recomputed"] = {{"nan", r.normals.nan},         {"inf", r.normals.inf},
                              {"zero", r.normals.zero},       {"flipped", r.normals.flipped},
@@ -79,6 +81,12 @@ std::string count(std::size_t n, const char* one, const char* many) { return fmt
 void add_notes(const RepairReport& r, const RepairCliOptions& opt, FileResult& out) {
   if (r.vertices_welded > 0)
     out.notes.push_back(fmt::format("weld: merged {} within {}", count(r.vertices_welded, "vertex", "vertices"), opt.weld));
+  if (r.seam_vertices_joined > 0)
+    out.notes.push_back(fmt::format("seams: oriented across {} at the exact position of another (joined for the decision only; "
+                                    "the output keeps them)", count(r.seam_vertices_joined, "boundary vertex", "boundary vertices")));
+  if (r.oriented_by_normals > 0)
+    out.notes.push_back(fmt::format("orientation: {} followed the input's normals (no volume or too thin for its sign)",
+                                    count(r.oriented_by_normals, "component", "components")));
   if (r.faces_flipped_for_consistency > 0) {
     std::string s = fmt::format("winding: reversed {} to make the winding consistent in {}",
                                 count(r.faces_flipped_for_consistency, "face", "faces"),
@@ -124,6 +132,8 @@ void add_stats(const RepairReport& r, FileResult& out) {
   s["degenerate_faces"] = r.degenerate_faces;
   s["degenerate_faces_removed"] = r.degenerate_faces_removed;
   s["vertices_welded"] = r.vertices_welded;
+  s["seam_vertices_joined"] = r.seam_vertices_joined;
+  s["oriented_by_normals"] = r.oriented_by_normals;
   s["normals_recomputed"] = r.normals.total();
 }
 

@@ -2,6 +2,7 @@
 #include "driver.h"
 
 #include <algorithm>
+#include <cctype>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -17,6 +18,8 @@
 #include <fmt/core.h>
 
 #include <shadetool/core/error.h>
+#include <shadetool/io/format_table.h>
+#include <shadetool/io/image_io.h>
 #include <shadetool/io/mesh_io.h>
 #include "usage_error.h"
 
@@ -25,24 +28,57 @@ namespace shadetool_cli {
 namespace fs = std::filesystem;
 using shadetool::Format;
 
-void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh) {
-  sub.add_option("inputs", io.inputs, "Input mesh files (OBJ, PLY, OFF, STL); - reads stdin")->required();
+namespace {
+
+// "OBJ, PLY, OFF, STL": the mesh formats of io/format_table.h, for help texts.
+std::string upper_format_names() {
+  std::string s;
+  for (const std::string& n : shadetool::format_names()) {
+    if (!s.empty()) s += ", ";
+    for (char c : n) s += char(std::toupper(static_cast<unsigned char>(c)));
+  }
+  return s;
+}
+
+std::string image_format_list() {
+  std::string s;
+  const auto names = shadetool::image_format_names();
+  for (std::size_t i = 0; i < names.size(); ++i) s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return s;
+}
+
+}  // namespace
+
+void add_io_options(CLI::App& sub, IoOptions& io, OutputKind kind) {
+  sub.add_option("inputs", io.inputs, "Input mesh files (" + upper_format_names() + "); - reads stdin")->required();
   sub.add_option("--input-format", io.input_format, "Format of the input when it has no extension (stdin)")
-      ->check(CLI::IsMember({"obj", "ply", "off", "stl"}, CLI::ignore_case));
-  if (writes_mesh) {
+      ->check(CLI::IsMember(shadetool::format_names(), CLI::ignore_case));
+  if (kind == OutputKind::Mesh) {
     sub.add_option("-o,--output", io.output, "Output file; - writes stdout (then --format is needed)");
     sub.add_option("--output-dir", io.output_dir, "Write one output per input into DIR, named after the input");
-    sub.add_option("--format", io.format, "Output format: obj, ply, off or stl (default: from -o's extension)")
-        ->check(CLI::IsMember({"obj", "ply", "off", "stl"}, CLI::ignore_case));
+    sub.add_option("--format", io.format,
+                   "Output format: " + shadetool::format_list(false) + " (default: from -o's extension)")
+        ->check(CLI::IsMember(shadetool::format_names(), CLI::ignore_case));
     auto* a = sub.add_flag("--ascii", io.ascii, "Write PLY/STL as text");
     auto* b = sub.add_flag("--binary", io.binary, "Write PLY/STL as binary (the default)");
     a->excludes(b);
+  } else if (kind == OutputKind::Image) {
+    sub.add_option("-o,--output", io.output, "Output image; - writes stdout (then --format is needed)");
+    sub.add_option("--output-dir", io.output_dir, "Write one image per input into DIR, named after the input");
+    sub.add_option("--format", io.format,
+                   "Image format: " + image_format_list() + " (default: from -o's extension, else " +
+                       shadetool::image_format_names().front() + ")")
+        ->check(CLI::IsMember(shadetool::image_format_names(), CLI::ignore_case));
   }
   sub.add_option("-j,--jobs", io.jobs, "Files processed in parallel (default: number of cores)")
       ->check(CLI::Range(0, 1024));
   sub.add_flag("--json", io.json, "Print one JSON object per file on stdout (JSON Lines)");
   sub.add_flag("-q,--quiet", io.quiet, "Print no notes, only errors");
   sub.add_flag("--stats", io.stats, "Print counts and time per stage (read, compute, write) on stderr");
+}
+
+void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh) {
+  add_io_options(sub, io, writes_mesh ? OutputKind::Mesh : OutputKind::Report);
 }
 
 namespace {
@@ -76,23 +112,30 @@ std::string read_stdin() {
   return data;
 }
 
-// Where one input's output goes ("" when the command writes no mesh).
-std::string output_path_for(const IoOptions& io, const std::string& input, bool writes_mesh) {
-  if (!writes_mesh) return {};
+// Where one input's output goes ("" when the command writes no file).
+std::string output_path_for(const IoOptions& io, const std::string& input, OutputKind kind) {
+  if (kind == OutputKind::Report) return {};
   if (!io.output.empty()) return io.output;
   const fs::path in = input == "-" ? fs::path("stdin") : fs::path(input);
-  std::string ext = !io.format.empty() ? io.format : in.extension().string();
-  if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
-  if (ext.empty()) ext = io.input_format;
+  std::string ext;
+  if (kind == OutputKind::Image) {
+    const shadetool::ImageFormatEntry* f =
+        shadetool::find_image_format(io.format.empty() ? shadetool::image_format_names().front() : io.format);
+    ext = f ? f->extensions.front() : io.format;
+  } else {
+    ext = !io.format.empty() ? io.format : in.extension().string();
+    if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
+    if (ext.empty()) ext = io.input_format;
+  }
   return (fs::path(io.output_dir) / in.stem()).string() + "." + ext;
 }
 
-void validate(const IoOptions& io, bool writes_mesh) {
+void validate(const IoOptions& io, OutputKind kind) {
   if (io.inputs.empty()) throw UsageError("no input given");
   const auto stdin_inputs = std::count(io.inputs.begin(), io.inputs.end(), std::string("-"));
   if (stdin_inputs > 1) throw UsageError("stdin (-) can be read only once");
   if (stdin_inputs == 1 && io.input_format.empty()) throw UsageError("reading stdin (-) needs --input-format");
-  if (!writes_mesh) return;
+  if (kind == OutputKind::Report) return;
   if (!io.output.empty() && !io.output_dir.empty()) throw UsageError("give -o or --output-dir, not both");
   if (io.output.empty() && io.output_dir.empty()) throw UsageError("no output given: use -o FILE or --output-dir DIR");
   if (!io.output.empty() && io.inputs.size() > 1)
@@ -132,10 +175,46 @@ class Progress {
   bool enabled_ = false;
 };
 
+
+// Reads one input: a file, or stdin ("-") in the format --input-format names.
+shadetool::Mesh read_input(const IoOptions& io, const std::string& input, shadetool::ReadInfo& read_info) {
+  const Format in_format =
+      io.input_format.empty() ? Format::Auto : shadetool::parse_format_name(io.input_format, "--input-format");
+  return input == "-" ? shadetool::read_mesh_from_memory(read_stdin(), in_format, "stdin", &read_info)
+                      : shadetool::read_mesh(input, in_format, &read_info);
+}
+
+// Writes what the step produced (a mesh or an image) to `output`; its notes and counts go to `result`.
+void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& mesh, const std::string& output,
+                  FileResult& result) {
+  switch (kind) {
+    case OutputKind::Report: return;
+    case OutputKind::Mesh: {
+      shadetool::WriteOptions wo;
+      wo.format = io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format");
+      wo.binary = !io.ascii;
+      shadetool::WriteInfo write_info;
+      shadetool::write_mesh(mesh, output, wo, &write_info);
+      if (write_info.split_vertices > 0) result.stats["split_vertices"] = write_info.split_vertices;
+      for (auto& n : write_info.notes) result.notes.push_back(n);  // what the format could not carry
+      return;
+    }
+    case OutputKind::Image: {
+      shadetool::ImageWriteInfo write_info;
+      shadetool::write_image(result.image, output, io.format, &write_info);
+      result.stats["width"] = result.image.width;
+      result.stats["height"] = result.image.height;
+      for (auto& n : write_info.notes) result.notes.push_back(n);
+      return;
+    }
+  }
+}
+
 }  // namespace
 
-int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh) {
-  validate(io, writes_mesh);
+int run_command(const std::string& command, const IoOptions& io, const MeshStep& step, OutputKind kind) {
+  validate(io, kind);
+  const bool writes_file = kind != OutputKind::Report;
 
   std::mutex out_mutex;  // one line at a time on stdout and stderr
   std::atomic<std::size_t> next{0};
@@ -150,23 +229,20 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
 
   auto process = [&](const std::string& input) {
     nlohmann::json line = {{"command", command}, {"input", input}};
-    const std::string output = output_path_for(io, input, writes_mesh);
-    if (writes_mesh) line["output"] = output;
+    const std::string output = output_path_for(io, input, kind);
+    if (writes_file) line["output"] = output;
     FileResult result;
     try {
       // Writing over the input would lose it if anything failed later; the same file under another
       // name (./a.obj, a link, --output-dir of the input's own folder) counts too.
       std::error_code same_ec;
-      if (writes_mesh && input != "-" && output != "-" && fs::equivalent(input, output, same_ec))
+      if (writes_file && input != "-" && output != "-" && fs::equivalent(input, output, same_ec))
         throw shadetool::Error(shadetool::located(
             input, 0, "the output " + output + " is the input file: refusing to overwrite the input"));
       show_stage(input, "reading");
       auto t0 = std::chrono::steady_clock::now();
       shadetool::ReadInfo read_info;
-      const Format in_format =
-          io.input_format.empty() ? Format::Auto : shadetool::parse_format_name(io.input_format, "--input-format");
-      shadetool::Mesh mesh = input == "-" ? shadetool::read_mesh_from_memory(read_stdin(), in_format, "stdin", &read_info)
-                                          : shadetool::read_mesh(input, in_format, &read_info);
+      shadetool::Mesh mesh = read_input(io, input, read_info);
       const double read_ms = ms_since(t0);
       for (auto& n : read_info.notes) result.notes.push_back(n);
       if (read_info.merged_vertices > 0) result.stats["merged_vertices"] = read_info.merged_vertices;
@@ -177,17 +253,11 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
       const double compute_ms = ms_since(t0);
 
       double write_ms = 0;
-      if (writes_mesh) {
+      if (writes_file) {
         show_stage(input, "writing");
         t0 = std::chrono::steady_clock::now();
-        shadetool::WriteOptions wo;
-        wo.format = io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format");
-        wo.binary = !io.ascii;
-        shadetool::WriteInfo write_info;
-        shadetool::write_mesh(mesh, output, wo, &write_info);
+        write_output(io, kind, mesh, output, result);
         write_ms = ms_since(t0);
-        if (write_info.split_vertices > 0) result.stats["split_vertices"] = write_info.split_vertices;
-        for (auto& n : write_info.notes) result.notes.push_back(n);  // what the format could not carry
       }
       result.stats["vertices"] = mesh.num_vertices();
       result.stats["faces"] = mesh.num_faces();
@@ -255,6 +325,10 @@ int run_mesh_command(const std::string& command, const IoOptions& io, const Mesh
     fmt::print(stderr, "shadetool: {} of {} files failed: {}\n", failures.load(), n, list);
   }
   return failures > 0 ? kExitFailure : kExitOk;
+}
+
+int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh) {
+  return run_command(command, io, step, writes_mesh ? OutputKind::Mesh : OutputKind::Report);
 }
 
 }  // namespace shadetool_cli

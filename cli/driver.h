@@ -1,5 +1,25 @@
-// driver.h: what every mesh subcommand shares: inputs and outputs, formats, many files per call
-// in parallel, notes, --stats and --json. A subcommand supplies one step, Mesh -> Mesh.
+// driver.h: what every subcommand shares: inputs and outputs, formats, many files per call in
+// parallel, notes, --stats and --json, exit codes. A subcommand supplies one step per input file
+// (MeshStep: it gets the mesh read from the file) and says what the step produces (OutputKind):
+//
+//   OutputKind::Mesh    the step changes the mesh in place; the driver writes it with a mesh format
+//                       (io/format_table.h): -o FILE, -o - (stdout, needs --format), --output-dir
+//                       DIR (named after the input, extension from --format or the input's),
+//                       --format, --ascii/--binary.
+//   OutputKind::Image   the step fills FileResult::image; the driver writes it with an image format
+//                       (io/image_io.h: --format, else -o's extension; --output-dir names files
+//                       INPUT_STEM.EXT with EXT the format's, by default the table's first).
+//   OutputKind::Report  nothing is written to a file: FileResult::text goes to stdout (--json: the
+//                       JSON line's "stats" instead). info is one.
+// For every kind the driver handles -j (files in parallel), --json (one JSON line per file),
+// --stats, notes (stderr, one line each, unless --quiet), the per-file error line and the exit
+// code (0 all ok, 1 any file failed, 2 usage), and writes every file atomically (no output for a
+// failed file, an existing file untouched).
+//
+// A new subcommand: add_io_options(sub, io, OutputKind::Image) when it adds its flags, then
+// `return run_command("render", io, step, OutputKind::Image);` from its run function.
+// add_io_options(sub, io, bool) and run_mesh_command(...) are the older spelling of the same
+// (true = OutputKind::Mesh, false = OutputKind::Report).
 #pragma once
 
 #include <functional>
@@ -9,16 +29,19 @@
 #include <nlohmann/json.hpp>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/io/image_io.h>
 
 namespace CLI { class App; }
 
 namespace shadetool_cli {
 
+enum class OutputKind { Mesh, Image, Report };
+
 struct IoOptions {
   std::vector<std::string> inputs;
   std::string output;        // -o FILE or -o - (stdout); one input only
   std::string output_dir;    // --output-dir DIR: outputs named after the inputs
-  std::string format;        // --format obj|ply|off|stl
+  std::string format;        // --format: a mesh format (OutputKind::Mesh) or an image format (Image)
   std::string input_format;  // --input-format, needed for stdin
   bool ascii = false;
   bool binary = false;
@@ -33,15 +56,21 @@ struct FileResult {
   std::vector<std::string> notes;               // one line each on stderr, unless --quiet
   nlohmann::json stats = nlohmann::json::object();  // counts for --stats and --json
   std::string text;                             // printed on stdout (info's report)
+  shadetool::Image image;                       // OutputKind::Image: the picture to write
   double compute_ms = 0;                        // filled by the driver
 };
 
 using MeshStep = std::function<void(shadetool::Mesh& mesh, const std::string& input, FileResult& result)>;
 
-// Adds the shared options to a subcommand. `writes_mesh` = false for read-only commands (info).
-void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh);
+// Adds the shared options to a subcommand: inputs, --input-format, -j, --json, -q, --stats, and
+// for Mesh and Image outputs -o, --output-dir, --format (and --ascii/--binary for meshes).
+void add_io_options(CLI::App& sub, IoOptions& io, OutputKind kind);
+// Runs `step` over every input and writes what it produced; returns the exit code (0, or 1 if any
+// file failed). Usage errors throw UsageError (exit 2, from main).
+int run_command(const std::string& command, const IoOptions& io, const MeshStep& step, OutputKind kind);
 
-// Runs `step` over every input; returns the exit code (0, or 1 if any file failed).
+// The same for commands that write meshes (`writes_mesh`) or only report (false: info).
+void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh);
 int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh);
 
 // Exit codes shared by every subcommand.

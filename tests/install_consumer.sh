@@ -1,11 +1,19 @@
 #!/usr/bin/env bash
-# `cmake --install` exports shadetool::shadetool: a tiny consumer project finds it with
-# find_package(shadetool), builds, and computes the normals of a mesh from data/.
+# The installed library, as a consumer outside the source tree sees it (issue 15):
+#  1. `cmake --install` of this build (static libshadetool.a): a consumer finds it with
+#     find_package(shadetool) and, separately, with pkg-config (--static), and computes normals.
+#  2. The same sources configured with -DBUILD_SHARED_LIBS=ON (library target only): the installed
+#     libshadetool.so exports the public API and nothing else (no engine:: or *_detail:: symbol),
+#     and the same consumer builds and runs against it through CMake and through pkg-config.
+#  Consumers include <shadetool/...> only; <core/...>, <io/...> and engine/ headers are not installed.
 set -euo pipefail
 bin=$1 src=$2
 build_dir=$(dirname "$bin")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-cmake --install "$build_dir" --prefix "$tmp/prefix" > /dev/null
+passed=0
+ok() { echo "ok: $1"; passed=$((passed + 1)); }
+fail() { echo "FAIL: $1"; echo "$passed passed, 1 failed"; exit 1; }
+
 mkdir "$tmp/consumer"
 cat > "$tmp/consumer/CMakeLists.txt" <<'CM'
 cmake_minimum_required(VERSION 3.18)
@@ -20,7 +28,9 @@ cat > "$tmp/consumer/main.cpp" <<'CPP'
 #include <cstdio>
 #include <shadetool/io/mesh_io.h>
 #include <shadetool/normals/vertex_normals.h>
+#include <shadetool/shadetool.h>
 int main(int argc, char** argv) {
+  if (argc < 2) return 2;
   shadetool::Mesh mesh = shadetool::read_mesh(argv[1]);
   shadetool::VertexNormals n = shadetool::vertex_normals(mesh, shadetool::Weighting::Angle);
   // Every normal of a closed torus is a unit vector.
@@ -32,9 +42,46 @@ int main(int argc, char** argv) {
   return 0;
 }
 CPP
-cmake -S "$tmp/consumer" -B "$tmp/consumer/build" -DCMAKE_PREFIX_PATH="$tmp/prefix" > /dev/null
-cmake --build "$tmp/consumer/build" > /dev/null
-out=$("$tmp/consumer/build/consumer" "$src/data/torus.obj")
-[ "$out" = "1152 vertices" ] || { echo "consumer printed: $out"; echo "0 passed, 1 failed"; exit 1; }
-test -x "$tmp/prefix/bin/shadetool" && ls "$tmp/prefix/share/man/man1/shadetool.1" > /dev/null
-echo "1 passed, 0 failed"
+
+check_prefix() {  # kind prefix
+  local kind=$1 prefix=$2
+  [ -f "$prefix/include/shadetool/shadetool.h" ] || fail "$kind: no umbrella header"
+  for d in core io normals; do [ ! -e "$prefix/include/$d" ] || fail "$kind: include/$d installed"; done
+  if find "$prefix/include" -path '*engine*' | grep -q .; then fail "$kind: engine/ headers installed"; fi
+  # via CMake
+  cmake -S "$tmp/consumer" -B "$tmp/b-$kind" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+  cmake --build "$tmp/b-$kind" > /dev/null
+  out=$(LD_LIBRARY_PATH="$prefix/lib" "$tmp/b-$kind/consumer" "$src/data/torus.obj")
+  [ "$out" = "1152 vertices" ] || fail "$kind CMake consumer printed: $out"
+  ok "$kind library through find_package(shadetool)"
+  # via pkg-config
+  local pc="$prefix/lib/pkgconfig"; [ -d "$pc" ] || pc=$(dirname "$(find "$prefix" -name shadetool.pc | head -n 1)")
+  local flags; flags=$(PKG_CONFIG_PATH="$pc" pkg-config --cflags --libs $3 shadetool)
+  # shellcheck disable=SC2086
+  g++ "$tmp/consumer/main.cpp" -o "$tmp/pc-$kind" $flags
+  out=$(LD_LIBRARY_PATH="$(dirname "$pc")" "$tmp/pc-$kind" "$src/data/torus.obj")
+  [ "$out" = "1152 vertices" ] || fail "$kind pkg-config consumer printed: $out"
+  ok "$kind library through pkg-config ($flags)"
+}
+
+# 1. this build (static)
+cmake --install "$build_dir" --prefix "$tmp/static" > /dev/null
+test -x "$tmp/static/bin/shadetool" && ls "$tmp/static/share/man/man1/shadetool.1" > /dev/null
+check_prefix static "$tmp/static" --static
+
+# 2. a shared build of the library alone
+launcher=$(grep -m1 '^CMAKE_CXX_COMPILER_LAUNCHER:' "$build_dir/CMakeCache.txt" 2>/dev/null | cut -d= -f2 || true)
+cmake -S "$src" -B "$tmp/shared-build" -DBUILD_SHARED_LIBS=ON -DSHADETOOL_BUILD_TESTS=OFF \
+  -DCMAKE_BUILD_TYPE=Release ${launcher:+-DCMAKE_CXX_COMPILER_LAUNCHER=$launcher} > /dev/null
+cmake --build "$tmp/shared-build" --target shadetool -j2 > /dev/null
+cmake --install "$tmp/shared-build" --prefix "$tmp/shared" --component library > /dev/null
+so=$(find "$tmp/shared-build" -name 'libshadetool.so*' -type f | head -n 1)
+[ -n "$so" ] || fail "no libshadetool.so built"
+exports=$(nm -DC --defined-only "$so" | grep ' [TWVu] ' | grep 'shadetool::' || true)
+echo "$exports" | grep -q 'shadetool::vertex_normals' || fail "libshadetool.so does not export vertex_normals"
+echo "$exports" | grep -q 'shadetool::read_mesh' || fail "libshadetool.so does not export read_mesh"
+leaked=$(echo "$exports" | grep -E 'shadetool::(engine|[a-z_]*_detail)::' || true)
+[ -z "$leaked" ] || fail "libshadetool.so exports internals: $(echo "$leaked" | head -n 3)"
+ok "libshadetool.so exports $(echo "$exports" | wc -l) public symbols and no engine::/_detail:: symbol"
+check_prefix shared "$tmp/shared" ""
+echo "$passed passed, 0 failed"

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <shadetool/info/union_find.h>
+#include <shadetool/geometry/union_find.h>
 #include <shadetool/topology/edge_adjacency.h>
 
 namespace shadetool::info {

@@ -1,63 +1,33 @@
-// mesh_io.cpp: format names, dispatch to the per-format readers and writers, atomic output.
+// mesh_io.cpp: format names and dispatch through the format table (format_table.h), atomic output.
 #include <shadetool/io/mesh_io.h>
-
-#include <algorithm>
-#include <cctype>
 
 #include <shadetool/core/error.h>
 #include <shadetool/io/atomic_write.h>
 #include <shadetool/io/file_bytes.h>
-#include <shadetool/io/obj_format.h>
-#include <shadetool/io/off_format.h>
-#include <shadetool/io/ply_format.h>
-#include <shadetool/io/stl_format.h>
+#include <shadetool/io/format_table.h>
 
 namespace shadetool {
 
-namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s;
-}
-
-bool name_to_format(const std::string& name, Format& f) {
-  const std::string n = lower(name);
-  if (n == "obj") f = Format::Obj;
-  else if (n == "ply") f = Format::Ply;
-  else if (n == "off") f = Format::Off;
-  else if (n == "stl") f = Format::Stl;
-  else return false;
-  return true;
-}
-
-}  // namespace
-
 Format parse_format_name(const std::string& name, const std::string& what) {
-  Format f;
-  if (!name_to_format(name, f)) fail(what, 0, "unknown mesh format '" + name + "' (expected obj, ply, off or stl)");
-  return f;
+  const FormatEntry* e = find_format(name);
+  if (!e) fail(what, 0, "unknown mesh format '" + name + "' (expected " + format_list(false) + ")");
+  return e->format;
 }
 
 Format format_from_extension(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
   const std::size_t dot = path.find_last_of('.');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    fail(path, 0, "no file extension to tell the mesh format (expected .obj, .ply, .off or .stl)");
+    fail(path, 0, "no file extension to tell the mesh format (expected " + format_list(true) + ")");
   const std::string ext = path.substr(dot + 1);
-  Format f;
-  if (!name_to_format(ext, f)) fail(path, 0, "unknown mesh format '" + ext + "' (expected .obj, .ply, .off or .stl)");
-  return f;
+  const FormatEntry* e = find_format(ext);
+  if (!e) fail(path, 0, "unknown mesh format '" + ext + "' (expected " + format_list(true) + ")");
+  return e->format;
 }
 
 const char* format_extension(Format format) {
-  switch (format) {
-    case Format::Obj: return "obj";
-    case Format::Ply: return "ply";
-    case Format::Off: return "off";
-    case Format::Stl: return "stl";
-    case Format::Auto: break;
-  }
+  for (const FormatEntry& e : mesh_formats())
+    if (e.format == format) return e.extensions.front();
   return "";
 }
 
@@ -67,14 +37,8 @@ Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::str
   if (format == Format::Auto) format = format_from_extension(name);
   ri.format = format;
   if (bytes.empty()) fail(name, 0, "file is empty");
-  switch (format) {
-    case Format::Obj: return io::read_obj(bytes, name, ri);
-    case Format::Ply: return io::read_ply(bytes, name, ri);
-    case Format::Off: return io::read_off(bytes, name, ri);
-    case Format::Stl: return io::read_stl(bytes, name, ri);
-    case Format::Auto: break;
-  }
-  fail(name, 0, "no mesh format given");
+  if (format == Format::Auto) fail(name, 0, "no mesh format given");
+  return format_entry(format).read(bytes, name, ri);
 }
 
 Mesh read_mesh(const std::string& path, Format format, ReadInfo* info) {
@@ -87,15 +51,11 @@ Mesh read_mesh(const std::string& path, Format format, ReadInfo* info) {
 std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info) {
   WriteInfo local;
   WriteInfo& wi = info ? *info : local;
+  if (options.format == Format::Auto) fail("<output>", 0, "no output format given");
   std::string out;
-  switch (options.format) {
-    case Format::Obj: io::write_obj(mesh, out, wi); break;
-    case Format::Ply: io::write_ply(mesh, options.binary, out, wi); break;
-    case Format::Off: io::write_off(mesh, out, wi); break;
-    case Format::Stl: io::write_stl(mesh, options.binary, out, wi); break;
-    case Format::Auto: fail("<output>", 0, "no output format given");
-  }
-  if (options.format != Format::Ply && (mesh.has_vertex_quality() || mesh.has_face_quality()))
+  const FormatEntry& entry = format_entry(options.format);
+  entry.write(mesh, options, out, wi);
+  if (entry.holds.quality == Holds::No && (mesh.has_vertex_quality() || mesh.has_face_quality()))
     wi.notes.push_back("quality (per-vertex / per-face scalar) not written: only PLY holds it");
   return out;
 }

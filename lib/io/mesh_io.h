@@ -1,4 +1,5 @@
-// mesh_io.h: reading and writing meshes (OBJ, PLY, OFF, STL). The only way data enters or leaves.
+// mesh_io.h: reading and writing meshes (the formats of io/format_table.h: OBJ, PLY, OFF, STL).
+// The only way data enters or leaves.
 //
 // Contract used by every subcommand and by library users:
 //   read_mesh            file -> Mesh; format from the extension unless given
@@ -18,9 +19,11 @@
 
 namespace shadetool {
 
+// One enumerator per entry of io/format_table.h (Auto: from the file name's extension).
 enum class Format { Auto, Obj, Ply, Off, Stl };
 
-// "obj", "ply", "off", "stl" (any case) -> Format; throws Error naming `what` otherwise.
+// A format name or extension of format_table.h (any case) -> Format; throws Error naming `what`
+// and listing the names otherwise.
 Format parse_format_name(const std::string& name, const std::string& what);
 // From the extension of `path`; throws Error `path: unknown mesh format 'EXT' ...` otherwise.
 Format format_from_extension(const std::string& path);

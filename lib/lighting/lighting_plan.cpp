@@ -8,6 +8,7 @@ LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOpt
   LightingPlan plan;
   plan.model = model;
 
+  // Ambient lights add ka * a_i everywhere: folded into the constant base.
   Vec3d ambient = scene.global_ambient;
   for (const Light& L : scene.lights)
     if (L.type == LightType::Ambient) ambient += L.ambient;
@@ -19,7 +20,13 @@ LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOpt
 
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& L = scene.lights[i];
-    if (L.type == LightType::Ambient) continue;
+    bool positional = false;
+    switch (L.type) {  // exhaustive: a new kind must say where it goes
+      case LightType::Ambient: continue;  // in plan.base
+      case LightType::Directional: break;
+      case LightType::Point:
+      case LightType::Spot: positional = true; break;
+    }
     const bool dark = is_zero(mul(m.ambient, L.ambient)) && is_zero(mul(m.diffuse, L.diffuse)) &&
                       (!specular_possible || is_zero(mul(m.specular, L.specular)));
     if (dark && skips.dark_lights) {
@@ -27,7 +34,7 @@ LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOpt
       continue;
     }
     plan.lights.push_back(i);
-    if (L.type != LightType::Directional) ++plan.positional_lights;
+    if (positional) ++plan.positional_lights;
   }
 
   bool any_light_specular = false;

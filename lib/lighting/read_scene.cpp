@@ -66,6 +66,10 @@ class SceneReader {
 
   void check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> allowed,
                   const std::string& what) const {
+    check_keys(obj, path, std::vector<const char*>(allowed), what);
+  }
+  void check_keys(const json& obj, const std::string& path, const std::vector<const char*>& allowed,
+                  const std::string& what) const {
     for (auto it = obj.begin(); it != obj.end(); ++it) {
       const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* k) { return it.key() == k; });
       if (known) continue;
@@ -190,67 +194,102 @@ class SceneReader {
     return m;
   }
 
+  // The light-type table: one entry per kind, with its JSON name, its keys and its parser. A kind
+  // is reached only through its own entry (an unknown "type" is an error naming every entry).
+  struct LightKindEntry {
+    const char* name;  // the JSON "type"
+    LightType type;
+    std::vector<const char*> keys;
+    void (SceneReader::*parse)(const json&, const std::string&, Light&) const;
+  };
+  static const std::vector<LightKindEntry>& light_kinds() {
+    static const std::vector<LightKindEntry> kinds = {
+        {"ambient", LightType::Ambient, {"type", "color", "intensity"}, &SceneReader::ambient_light},
+        {"directional", LightType::Directional,
+         {"type", "direction", "color", "intensity", "ambient", "diffuse", "specular"}, &SceneReader::directional_light},
+        {"point", LightType::Point,
+         {"type", "position", "attenuation", "color", "intensity", "ambient", "diffuse", "specular"},
+         &SceneReader::point_light},
+        {"spot", LightType::Spot,
+         {"type", "position", "direction", "cutoff", "exponent", "attenuation", "color", "intensity", "ambient",
+          "diffuse", "specular"},
+         &SceneReader::spot_light},
+    };
+    return kinds;
+  }
+
   Light light(const json& j, const std::string& path) const {
     require_object(j, path);
     const std::string type = string(need(j, path, "type", "a light"), path + ".type");
-    Light L;
-    if (type == "ambient") {
-      L.type = LightType::Ambient;
-      check_keys(j, path, {"type", "color", "intensity"}, "an ambient light");
-    } else if (type == "directional") {
-      L.type = LightType::Directional;
-      check_keys(j, path, {"type", "direction", "color", "intensity", "ambient", "diffuse", "specular"},
-                 "a directional light");
-    } else if (type == "point") {
-      L.type = LightType::Point;
-      check_keys(j, path, {"type", "position", "attenuation", "color", "intensity", "ambient", "diffuse", "specular"},
-                 "a point light");
-    } else if (type == "spot") {
-      L.type = LightType::Spot;
-      check_keys(j, path,
-                 {"type", "position", "direction", "cutoff", "exponent", "attenuation", "color", "intensity", "ambient",
-                  "diffuse", "specular"},
-                 "a spot light");
-    } else {
-      bad(path + ".type", "must be \"ambient\", \"directional\", \"point\" or \"spot\", got \"" + type + "\"");
+    const auto& kinds = light_kinds();
+    const auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const LightKindEntry& k) { return type == k.name; });
+    if (kind == kinds.end()) {
+      std::string names;
+      for (std::size_t i = 0; i < kinds.size(); ++i)
+        names += std::string(i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + "\"" + kinds[i].name + "\"";
+      bad(path + ".type", "must be " + names + ", got \"" + type + "\"");
     }
+    check_keys(j, path, kind->keys, (kind->type == LightType::Ambient ? "an " : "a ") + type + " light");
+    Light L;
+    L.type = kind->type;
+    (this->*kind->parse)(j, path, L);
+    return L;
+  }
 
+  // color (default [1,1,1]) times intensity (default 1).
+  Vec3d color_times_intensity(const json& j, const std::string& path) const {
     Vec3d color{1, 1, 1};
     double intensity = 1;
     if (const json* v = find(j, "color")) color = colour(*v, path + ".color");
     if (const json* v = find(j, "intensity")) intensity = non_negative(*v, path + ".intensity");
-    const Vec3d scaled = color * intensity;
-    if (L.type == LightType::Ambient) {
-      L.ambient = scaled;
-      L.diffuse = L.specular = {0, 0, 0};
-      return L;
-    }
+    return color * intensity;
+  }
+
+  void ambient_light(const json& j, const std::string& path, Light& L) const {
+    L.ambient = color_times_intensity(j, path);
+    L.diffuse = L.specular = {0, 0, 0};
+  }
+
+  // OpenGL's a_i, d_i, s_i: ambient black, diffuse and specular color * intensity, each overridable.
+  void light_colours(const json& j, const std::string& path, Light& L) const {
     L.ambient = {0, 0, 0};
-    L.diffuse = L.specular = scaled;
+    L.diffuse = L.specular = color_times_intensity(j, path);
     if (const json* v = find(j, "ambient")) L.ambient = colour(*v, path + ".ambient");
     if (const json* v = find(j, "diffuse")) L.diffuse = colour(*v, path + ".diffuse");
     if (const json* v = find(j, "specular")) L.specular = colour(*v, path + ".specular");
+  }
 
-    const std::string what = "a " + type + " light";
-    if (L.type == LightType::Directional || L.type == LightType::Spot)
-      L.direction = direction(need(j, path, "direction", what), path + ".direction");
-    if (L.type == LightType::Point || L.type == LightType::Spot) {
-      L.position = vec3(need(j, path, "position", what), path + ".position");
-      if (const json* v = find(j, "attenuation")) {
-        const std::string p = path + ".attenuation";
-        if (!v->is_array() || v->size() != 3) bad(p, "must be [kc, kl, kq] (3 numbers >= 0), got " + describe(*v));
-        for (int i = 0; i < 3; ++i) L.attenuation[i] = non_negative((*v)[i], p + "[" + std::to_string(i) + "]");
-        if (L.attenuation == Vec3d{0, 0, 0}) bad(p, "is [0, 0, 0]: 1/(kc + kl d + kq d^2) has no finite value");
-      }
+  void attenuation(const json& j, const std::string& path, Light& L) const {
+    if (const json* v = find(j, "attenuation")) {
+      const std::string p = path + ".attenuation";
+      if (!v->is_array() || v->size() != 3) bad(p, "must be [kc, kl, kq] (3 numbers >= 0), got " + describe(*v));
+      for (int i = 0; i < 3; ++i) L.attenuation[i] = non_negative((*v)[i], p + "[" + std::to_string(i) + "]");
+      if (L.attenuation == Vec3d{0, 0, 0}) bad(p, "is [0, 0, 0]: 1/(kc + kl d + kq d^2) has no finite value");
     }
-    if (L.type == LightType::Spot) {
-      const std::string p = path + ".cutoff";
-      L.cutoff_degrees = number(need(j, path, "cutoff", what), p);
-      if (!((L.cutoff_degrees >= 0 && L.cutoff_degrees <= 90) || L.cutoff_degrees == 180))
-        bad(p, "must be in [0, 90] degrees or 180 (no cone), got " + number_text(L.cutoff_degrees));
-      if (const json* v = find(j, "exponent")) L.exponent = non_negative(*v, path + ".exponent");
-    }
-    return L;
+  }
+
+  void directional_light(const json& j, const std::string& path, Light& L) const {
+    light_colours(j, path, L);
+    L.direction = direction(need(j, path, "direction", "a directional light"), path + ".direction");
+  }
+
+  void point_light(const json& j, const std::string& path, Light& L) const {
+    light_colours(j, path, L);
+    L.position = vec3(need(j, path, "position", "a point light"), path + ".position");
+    attenuation(j, path, L);
+  }
+
+  void spot_light(const json& j, const std::string& path, Light& L) const {
+    const std::string what = "a spot light";
+    light_colours(j, path, L);
+    L.direction = direction(need(j, path, "direction", what), path + ".direction");
+    L.position = vec3(need(j, path, "position", what), path + ".position");
+    attenuation(j, path, L);
+    const std::string p = path + ".cutoff";
+    L.cutoff_degrees = number(need(j, path, "cutoff", what), p);
+    if (!((L.cutoff_degrees >= 0 && L.cutoff_degrees <= 90) || L.cutoff_degrees == 180))
+      bad(p, "must be in [0, 90] degrees or 180 (no cone), got " + number_text(L.cutoff_degrees));
+    if (const json* v = find(j, "exponent")) L.exponent = non_negative(*v, path + ".exponent");
   }
 
   Scene scene(const json& root) const {

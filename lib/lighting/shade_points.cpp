@@ -1,6 +1,8 @@
 // shade_points.cpp: see shade_points.h.
 #include <shadetool/lighting/shade_points.h>
 
+#include <shadetool/lighting/engine/shade_point.h>
+
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -19,8 +21,13 @@ const char* shading_model_name(ShadingModel model) {
 
 namespace {
 
+using lighting_engine::EquationSetup;
+using lighting_engine::GeneralMetric;
+using lighting_engine::IdentityMetric;
+using lighting_engine::ScaledMetric;
+
 // Points [begin, end): into the space (when needed), then the equation.
-template <class Metric>
+template <bool kEarlyTests, class Metric>
 ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
                           const double* points, const double* normals, double* out, std::size_t begin,
                           std::size_t end) {
@@ -32,7 +39,7 @@ ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const Equa
       if (map_points) p = transform_point(frame.space_from_object, p);
       n = transform_normal(frame.normal_to_space, n);
     }
-    const Vec3d c = shade_point_in_space(g, frame, eq, p, n, count);
+    const Vec3d c = lighting_engine::shade_point_in_space<kEarlyTests>(g, frame, eq, p, n, count);
     out[3 * i] = c.x;
     out[3 * i + 1] = c.y;
     out[3 * i + 2] = c.z;
@@ -40,17 +47,26 @@ ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const Equa
   return count;
 }
 
-template <class Metric>
+template <bool kEarlyTests, class Metric>
 ShadeCounters shade_all(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
                         const double* points, const double* normals, double* out, std::size_t n, bool parallel) {
-  if (!parallel || n < 4096) return shade_range(g, frame, eq, map_points, points, normals, out, 0, n);
+  if (!parallel || n < 4096) return shade_range<kEarlyTests>(g, frame, eq, map_points, points, normals, out, 0, n);
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, n, 2048), ShadeCounters{},
       [&](const tbb::blocked_range<std::size_t>& r, ShadeCounters acc) {
-        acc += shade_range(g, frame, eq, map_points, points, normals, out, r.begin(), r.end());
+        acc += shade_range<kEarlyTests>(g, frame, eq, map_points, points, normals, out, r.begin(), r.end());
         return acc;
       },
       [](ShadeCounters a, const ShadeCounters& b) { return a += b; });
+}
+
+// SkipOptions::early_tests picks the loop at compile time: the equation itself has no switch.
+template <class Metric>
+ShadeCounters shade_all_points(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool early_tests,
+                        bool map_points, const double* points, const double* normals, double* out, std::size_t n,
+                        bool parallel) {
+  return early_tests ? shade_all<true>(g, frame, eq, map_points, points, normals, out, n, parallel)
+                     : shade_all<false>(g, frame, eq, map_points, points, normals, out, n, parallel);
 }
 
 }  // namespace
@@ -80,7 +96,7 @@ std::vector<double> shade_points(const Scene& scene, const std::vector<double>& 
   eq.specular = r.plan.specular;
   eq.view = r.plan.view;
   eq.two_sided = scene.two_sided;
-  eq.early_tests = options.skips.early_tests;
+  const bool early = options.skips.early_tests;
   eq.shininess = scene.material.shininess;
   eq.base = r.plan.base;
 
@@ -89,15 +105,15 @@ std::vector<double> shade_points(const Scene& scene, const std::vector<double>& 
   const double* N = normals_object.data();
   switch (frame.metric.kind) {
     case MetricKind::Identity:
-      r.counters = shade_all(IdentityMetric{}, frame, eq, map_points, P, N, out.data(), n, options.parallel);
+      r.counters = shade_all_points(IdentityMetric{}, frame, eq, early, map_points, P, N, out.data(), n, options.parallel);
       break;
     case MetricKind::Scaled:
-      r.counters = shade_all(ScaledMetric{frame.metric.scale2, 1.0 / frame.metric.scale2}, frame, eq, map_points, P,
-                             N, out.data(), n, options.parallel);
+      r.counters = shade_all_points(ScaledMetric{frame.metric.scale2, 1.0 / frame.metric.scale2}, frame, eq, early, map_points,
+                             P, N, out.data(), n, options.parallel);
       break;
     case MetricKind::General:
-      r.counters = shade_all(GeneralMetric{frame.metric.B, transpose(frame.metric.B), frame.metric.B_inverse_transpose},
-                             frame, eq, map_points, P, N, out.data(), n, options.parallel);
+      r.counters = shade_all_points(GeneralMetric{frame.metric.B, transpose(frame.metric.B), frame.metric.B_inverse_transpose},
+                             frame, eq, early, map_points, P, N, out.data(), n, options.parallel);
       break;
   }
 

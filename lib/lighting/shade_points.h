@@ -16,16 +16,36 @@
 // independently, so the result is bitwise the same for any number of threads.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <shadetool/lighting/lighting_equation.h>
 #include <shadetool/lighting/lighting_plan.h>
 #include <shadetool/lighting/scene.h>
 #include <shadetool/lighting/shading_space.h>
 
 namespace shadetool {
+
+// What the per-point loop (engine/shade_point.h) did and skipped, summed over points.
+struct ShadeCounters {
+  std::size_t points = 0;
+  std::size_t vertex_light_evaluations = 0;  // (point, light) pairs entered
+  std::size_t back_facing = 0;               // pairs stopped before the square root: n.L <= 0, no ambient
+  std::size_t outside_cone = 0;              // pairs stopped at the spot-cone test
+  std::size_t at_light = 0;                  // point exactly at a light's position
+  std::size_t zero_normals = 0;              // points with a zero or non-finite normal
+
+  ShadeCounters& operator+=(const ShadeCounters& o) {
+    points += o.points;
+    vertex_light_evaluations += o.vertex_light_evaluations;
+    back_facing += o.back_facing;
+    outside_cone += o.outside_cone;
+    at_light += o.at_light;
+    zero_normals += o.zero_normals;
+    return *this;
+  }
+};
 
 struct ShadeOptions {
   std::optional<ShadingModel> model;  // overrides scene.model

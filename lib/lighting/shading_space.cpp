@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include <shadetool/core/affine.h>
+#include <shadetool/lighting/engine/metric.h>
 
 namespace shadetool {
 
@@ -50,15 +51,6 @@ SpaceMetric metric_of(const Mat3d& B) {
 
 namespace {
 
-double norm2(const SpaceMetric& g, const Vec3d& v) {
-  switch (g.kind) {
-    case MetricKind::Identity: return dot(v, v);
-    case MetricKind::Scaled: return g.scale2 * dot(v, v);
-    case MetricKind::General: return squared_length(g.B * v);
-  }
-  return dot(v, v);
-}
-
 Vec3d lower(const SpaceMetric& g, const Vec3d& v) {
   switch (g.kind) {
     case MetricKind::Identity: return v;
@@ -68,18 +60,19 @@ Vec3d lower(const SpaceMetric& g, const Vec3d& v) {
   return v;
 }
 
-// Unit length in the metric; v is non-zero (scene directions are validated non-zero).
+// Unit length in the metric, by engine/metric.h's one scaled-normalise rule (the per-point loop's);
+// v is non-zero (scene directions are validated non-zero).
 Vec3d unit_in(const SpaceMetric& g, const Vec3d& v) {
-  // The result does not depend on v's length, so v is first scaled by a power of two (exact) to
-  // bring its largest component into [0.5, 1): a direction of length 1e-320 or 1e300 then
-  // normalises like any other instead of its squared length under- or overflowing (to 0 or Inf).
-  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
-  if (!(m > 0) || !std::isfinite(m)) return {0, 0, 0};
-  int e = 0;
-  std::frexp(m, &e);
-  const Vec3d s{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
-  const double l2 = norm2(g, s);
-  return l2 > 0 && std::isfinite(l2) ? s * (1.0 / std::sqrt(l2)) : Vec3d{0, 0, 0};
+  switch (g.kind) {
+    case MetricKind::Identity: return lighting_engine::metric_normalize(lighting_engine::IdentityMetric{}, v).unit;
+    case MetricKind::Scaled:
+      return lighting_engine::metric_normalize(lighting_engine::ScaledMetric{g.scale2, 1.0 / g.scale2}, v).unit;
+    case MetricKind::General: {
+      const lighting_engine::GeneralMetric general{g.B, transpose(g.B), g.B_inverse_transpose};
+      return lighting_engine::metric_normalize(general, v).unit;
+    }
+  }
+  return {0, 0, 0};
 }
 
 struct SpaceMaps {
@@ -126,25 +119,31 @@ ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpa
     const Light& L = scene.lights[index];
     SpaceLight s;
     s.type = L.type;
-    s.ambient = mul(mat.ambient, L.ambient);
-    s.diffuse = mul(mat.diffuse, L.diffuse);
-    s.specular = plan.specular ? mul(mat.specular, L.specular) : Vec3d{0, 0, 0};
-    s.has_ambient = !is_zero(s.ambient);
-    s.has_specular = plan.specular && (!is_zero(s.specular) || !skips.specular);
-    if (L.type == LightType::Directional) {
-      // Travels along `direction`; the unit vector toward the light is -direction.
-      s.to_light = unit_in(frame.metric, transform_vector(maps.space_from_world, -L.direction));
-    } else {
-      s.position = transform_point(maps.space_from_world, L.position);
-      s.kc = L.attenuation.x;
-      s.kl = L.attenuation.y;
-      s.kq = L.attenuation.z;
-      if (L.type == LightType::Spot && L.cutoff_degrees != 180) {  // 180: OpenGL's "no cone", spot = 1
-        s.cone = true;
-        s.cos_cutoff = cos_degrees(L.cutoff_degrees);
-        s.exponent = L.exponent;
-        s.axis_lowered = lower(frame.metric, unit_in(frame.metric, transform_vector(maps.space_from_world, L.direction)));
-      }
+    s.products.ambient = mul(mat.ambient, L.ambient);
+    s.products.diffuse = mul(mat.diffuse, L.diffuse);
+    s.products.specular = plan.specular ? mul(mat.specular, L.specular) : Vec3d{0, 0, 0};
+    s.has_ambient = !is_zero(s.products.ambient);
+    s.has_specular = plan.specular && (!is_zero(s.products.specular) || !skips.specular);
+    switch (L.type) {
+      case LightType::Ambient:  // folded into plan.base; plan.lights never holds one
+        continue;
+      case LightType::Directional:
+        // Travels along `direction`; the unit vector toward the light is -direction.
+        s.to_light = unit_in(frame.metric, transform_vector(maps.space_from_world, -L.direction));
+        break;
+      case LightType::Point:
+      case LightType::Spot:
+        s.position = transform_point(maps.space_from_world, L.position);
+        s.kc = L.attenuation.x;
+        s.kl = L.attenuation.y;
+        s.kq = L.attenuation.z;
+        if (L.type == LightType::Spot && L.cutoff_degrees != 180) {  // 180: OpenGL's "no cone", spot = 1
+          s.cone = true;
+          s.cos_cutoff = cos_degrees(L.cutoff_degrees);
+          s.exponent = L.exponent;
+          s.axis_lowered = lower(frame.metric, unit_in(frame.metric, transform_vector(maps.space_from_world, L.direction)));
+        }
+        break;
     }
     frame.lights.push_back(s);
   }

@@ -36,6 +36,7 @@
 #include <string>
 
 #include <shadetool/core/affine.h>
+#include <shadetool/lighting/lighting_equation.h>
 #include <shadetool/lighting/lighting_plan.h>
 #include <shadetool/lighting/scene.h>
 
@@ -58,7 +59,7 @@ SpaceMetric metric_of(const Mat3d& world_from_space_linear);
 
 // A light as the equation in space S reads it (material products folded in).
 struct SpaceLight {
-  LightType type = LightType::Directional;  // Directional, Point or Spot
+  LightType type = LightType::Directional;  // Directional, Point or Spot (ambient is folded into the base)
   Vec3d position{0, 0, 0};       // Point/Spot, in S
   Vec3d to_light{0, 0, 0};       // Directional: unit (in G) vector toward the light, in S
   Vec3d axis_lowered{0, 0, 0};   // Spot: G * axis, axis the unit (in G) spot direction in S
@@ -66,9 +67,7 @@ struct SpaceLight {
   double cos_cutoff = -1;        // cos(cutoff); exactly 0 for 90 and 1 for 0
   double exponent = 0;
   double kc = 1, kl = 0, kq = 0;
-  Vec3d ambient{0, 0, 0};        // ka * a_i
-  Vec3d diffuse{0, 0, 0};        // kd * d_i
-  Vec3d specular{0, 0, 0};       // ks * s_i
+  LightProducts products;        // ka * a_i, kd * d_i, ks * s_i
   bool has_ambient = false;
   bool has_specular = false;
 };

@@ -21,11 +21,14 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include <shadetool/normals/accumulate_by_vertex.h>
-#include <shadetool/normals/corner_contributions.h>
+#include <shadetool/core/error.h>
+
+#include <shadetool/geometry/interior_angle.h>
+#include <shadetool/normals/engine/accumulate_by_vertex.h>
+#include <shadetool/normals/engine/corner_contributions.h>
 #include <shadetool/normals/face_normals.h>
-#include <shadetool/normals/interior_angle.h>
-#include <shadetool/normals/normalise_sums.h>
+#include <shadetool/geometry/interior_angle.h>
+#include <shadetool/normals/engine/normalise_sums.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/normals/vertex_fallback.h>
 
@@ -86,6 +89,65 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
     i = parent[i];
   }
   return i;
+}
+
+// Sums of the corners' contributions into rows: row target[c] < rows for every corner, added in
+// ascending corner order by the deterministic parallel scatter (accumulate_by_vertex.h). The sums
+// are in `normals` (3 rows values) for T = double, else in float_sum. The chunk plan is made
+// beside the (serial) zeroing of the arrays. Returns the number of degenerate faces.
+template <class T, Weighting W>
+std::size_t sum_rows(const Mesh& mesh, const std::uint32_t* target, std::size_t rows, std::vector<double>& normals,
+                     std::vector<float>& float_sum) {
+  ChunkPlan plan;
+  tbb::parallel_invoke(
+      [&] {
+        normals.assign(3 * rows, 0.0);
+        if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * rows, 0.0f);
+      },
+      [&] { plan = plan_chunks<true>(mesh, target, rows); });
+  T* sum;
+  if constexpr (std::is_same_v<T, double>) sum = normals.data();
+  else sum = float_sum.data();
+  const bool triangles = mesh.all_triangles();
+  // float Area/Max: one power of two for the whole mesh (corner_contributions.h); a row whose float
+  // sum still overflows cannot be normalised and takes the caller's fallback (a valid unit normal, counted).
+  const double scale = contribution_scale<T, W>(mesh);
+  return accumulate_by_target<true, T>(mesh, plan, target,
+      [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
+        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale)
+                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink, scale);
+      }, sum);
+}
+
+template <class T, Weighting W>
+GroupNormals group_normals(const Mesh& mesh, const std::vector<std::uint32_t>& corner_group, std::size_t num_groups) {
+  GroupNormals out;
+  // Corners in no group go to one extra row, dropped afterwards.
+  bool any_outside = false;
+  for (std::uint32_t g : corner_group) any_outside = any_outside || g == kNoGroup;
+  std::vector<std::uint32_t> mapped;
+  const std::uint32_t* target = corner_group.data();
+  if (any_outside) {
+    mapped = corner_group;
+    for (std::uint32_t& g : mapped)
+      if (g == kNoGroup) g = std::uint32_t(num_groups);
+    target = mapped.data();
+  }
+  const std::size_t rows = num_groups + (any_outside ? 1 : 0);
+  std::vector<float> float_sum;
+  out.degenerate_faces = sum_rows<T, W>(mesh, target, rows, out.normals, float_sum);
+  const T* sum;
+  if constexpr (std::is_same_v<T, double>) sum = out.normals.data();
+  else sum = float_sum.data();
+  out.normals.resize(3 * num_groups);
+  for (std::size_t g = 0; g < num_groups; ++g) {
+    double* o = &out.normals[3 * g];
+    if (!normalise_sum(double(sum[3 * g]), double(sum[3 * g + 1]), double(sum[3 * g + 2]), o)) {
+      o[0] = o[1] = o[2] = 0.0;
+      out.failed.push_back(std::uint32_t(g));
+    }
+  }
+  return out;
 }
 
 template <class T, Weighting W>
@@ -180,28 +242,12 @@ CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision
     for (std::size_t c = b; c < e; ++c) out.corner_index[c] += base[mesh.corner_vertex[c]];
   });
 
-  // (5) sums: in the output array itself in double, else in a float accumulator; the chunk plan
-  // is made beside the (serial) zeroing of the arrays.
+  // (5) sums: in the output array itself in double, else in a float accumulator.
   std::vector<float> float_sum;
-  ChunkPlan plan;
-  tbb::parallel_invoke(
-      [&] {
-        out.normals.assign(3 * N, 0.0);
-        if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * N, 0.0f);
-      },
-      [&] { plan = plan_chunks<true>(mesh, out.corner_index.data(), N); });
+  out.degenerate_faces = sum_rows<T, W>(mesh, out.corner_index.data(), N, out.normals, float_sum);
   T* sum;
   if constexpr (std::is_same_v<T, double>) sum = out.normals.data();
   else sum = float_sum.data();
-  const bool triangles = mesh.all_triangles();
-  // float Area/Max: one power of two for the whole mesh (corner_contributions.h); a row whose float
-  // sum still overflows takes the fallback below (a valid unit normal, counted).
-  const double scale = contribution_scale<T, W>(mesh);
-  out.degenerate_faces = accumulate_by_target<true, T>(mesh, plan, out.corner_index.data(),
-      [&](std::size_t f_begin, std::size_t f_end, auto&& sink) {
-        return triangles ? triangle_contributions<T, W>(mesh, f_begin, f_end, sink, scale)
-                         : polygon_contributions<T, W>(mesh, f_begin, f_end, sink, scale);
-      }, sum);
   // A group made only of degenerate corners takes the vertex's smooth sum: all its valid
   // contributions, i.e. the sum of its other groups.
   parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
@@ -245,6 +291,20 @@ CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision
 }
 
 }  // namespace
+
+GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint32_t>& corner_group,
+                                  std::size_t num_groups, Weighting weighting, Precision precision) {
+  if (corner_group.size() != mesh.num_corners())
+    throw Error("corner_group_normals: the group array's size differs from the corner count");
+  if (num_groups >= kNoGroup) throw Error("corner_group_normals: too many groups");
+  for (std::uint32_t g : corner_group)
+    if (g != kNoGroup && g >= num_groups) throw Error("corner_group_normals: a corner's group is out of range");
+  return dispatch(weighting, precision, [&](auto t, auto w) {
+    using T = decltype(t);
+    constexpr Weighting W = decltype(w)::value;
+    return group_normals<T, W>(mesh, corner_group, num_groups);
+  });
+}
 
 CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting, Precision precision) {
   return dispatch(weighting, precision, [&](auto t, auto w) {

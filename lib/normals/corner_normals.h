@@ -44,4 +44,30 @@ struct CornerNormals {
 CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting = Weighting::Angle,
                              Precision precision = Precision::Double);
 
+// corner_group_normals: one normal per group of corners that the caller chose (a file's smoothing
+// groups, a stored normal pool), with the same weightings, kernels and summation order as
+// corner_normals: a group's normal is the normalised weighted sum of its corners' contributions,
+// added in ascending corner order.
+// Inputs:  mesh          positions #V by 3, faces
+//          corner_group  #C: the group of each corner, < num_groups, or kNoGroup (the corner
+//                        contributes to nothing). Groups need not stay at one vertex.
+//          num_groups    G
+// Output:  normals       G by 3 unit normals; (0, 0, 0) for a failed group
+//          failed        groups (ascending) whose sum is zero or not finite: no corner, only
+//                        degenerate faces, or cancelling contributions. The caller gives them its
+//                        fallback (they have no direction of their own).
+//          degenerate_faces  faces that contributed nothing (geometry/degenerate_face.h)
+// Throws Error when corner_group's size is not #C or a group is >= num_groups (and not kNoGroup).
+constexpr std::uint32_t kNoGroup = 0xffffffffu;
+
+struct GroupNormals {
+  std::vector<double> normals;
+  std::vector<std::uint32_t> failed;
+  std::size_t degenerate_faces = 0;
+};
+
+GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint32_t>& corner_group,
+                                  std::size_t num_groups, Weighting weighting = Weighting::Angle,
+                                  Precision precision = Precision::Double);
+
 }  // namespace shadetool

@@ -1,38 +1,44 @@
 // face_normals.cpp: one unit normal per face (see face_normals.h).
 //
-// Triangles: cross product of the two shortest edges; polygons: Newell's method (face_geometry.h).
+// Triangles: cross product of the two shortest edges; polygons: Newell's method
+// (geometry/face_area_vector.h).
 // Precision: both compute in double (edges, cross product, length, division); Float then rounds
 // the unit normal once to float (relative error <= 2^-24 per component, so within ~1e-5 deg of
 // Double whatever the triangle's shape or the mesh's scale: 1e-30 and 1e30 included) and widens it
 // back to double. Float therefore costs what Double costs here; it exists so that a float run is
-// float throughout. A degenerate face (fewer than 3 corners, zero area,
-// repeated index, non-finite position) gets (0, 0, 0).
+// float throughout. A degenerate face (geometry/degenerate_face.h: fewer than 3
+// corners, repeated index, non-finite position, zero area to 64 eps) gets (0, 0, 0).
 #include <shadetool/normals/face_normals.h>
 
-#include <shadetool/normals/face_geometry.h>
+#include <vector>
+
 #include <shadetool/core/engine/parallel.h>
+#include <shadetool/geometry/degenerate_face.h>
+#include <shadetool/geometry/face_area_vector.h>
+#include <shadetool/geometry/scaled_length.h>
 
 namespace shadetool {
 namespace {
-
-using namespace normals_detail;
 
 template <class T>
 void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, double* out) {
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
   const bool triangles = mesh.all_triangles();
+  std::vector<std::uint32_t> scratch;
   for (std::size_t f = f_begin; f < f_end; ++f) {
     Vec3d N;
+    bool degenerate;
     if (triangles || mesh.face_size(f) == 3) {
       const std::size_t c = triangles ? 3 * f : mesh.face_start[f];
-      const Vec3d p0 = load_position(P, cv[c]), p1 = load_position(P, cv[c + 1]), p2 = load_position(P, cv[c + 2]);
-      const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
-      N = triangle_area_vector(P, cv[c], cv[c + 1], cv[c + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
+      const TriangleAreaVector t = triangle_area_vector(P, cv[c], cv[c + 1], cv[c + 2]);
+      N = t.N;
+      degenerate = triangle_is_degenerate(t, P, cv[c], cv[c + 1], cv[c + 2]);
     } else {
       N = newell_area_vector(mesh, f);
+      degenerate = face_degenerate_kind(mesh, f, scratch) != DegenerateKind::None;
     }
-    const double l = checked_length(N);
+    const double l = degenerate ? 0.0 : checked_length(N);
     double* o = out + 3 * f;
     if (l > 0.0) {  // divisor checked: non-zero and finite
       o[0] = double(T(N.x / l)); o[1] = double(T(N.y / l)); o[2] = double(T(N.z / l));

@@ -23,9 +23,9 @@
 
 #include <shadetool/core/engine/bulk_reserve.h>
 #include <shadetool/core/error.h>
-#include <shadetool/normals/accumulate_by_vertex.h>
-#include <shadetool/normals/corner_contributions.h>
-#include <shadetool/normals/normalise_sums.h>
+#include <shadetool/normals/engine/accumulate_by_vertex.h>
+#include <shadetool/normals/engine/corner_contributions.h>
+#include <shadetool/normals/engine/normalise_sums.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/normals/vertex_fallback.h>
 

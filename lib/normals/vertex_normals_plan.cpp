@@ -1,7 +1,7 @@
 // vertex_normals_plan.cpp: see vertex_normals_plan.h.
 #include <shadetool/normals/vertex_normals_plan.h>
 
-#include <shadetool/normals/accumulate_by_vertex.h>
+#include <shadetool/normals/engine/accumulate_by_vertex.h>
 
 namespace shadetool {
 

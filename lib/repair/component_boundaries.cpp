@@ -4,16 +4,9 @@
 #include <algorithm>
 #include <numeric>
 
+#include <shadetool/geometry/union_find.h>
+
 namespace shadetool {
-
-namespace {
-
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];  // path halving
-  return x;
-}
-
-}  // namespace
 
 ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& adj, const ConsistentWinding& winding) {
   const std::size_t K = winding.num_components;
@@ -59,8 +52,7 @@ ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& 
   std::iota(parent.begin(), parent.end(), 0u);
   for (auto [k, e] : boundary) {
     const auto [v0, v1] = half_edge_ends(mesh, adj.odd_edge_corner[adj.odd_edge_start[e]]);
-    const std::uint32_t x = find_root(parent, id(k, v0)), y = find_root(parent, id(k, v1));
-    if (x != y) parent[std::max(x, y)] = std::min(x, y);
+    union_find_unite(parent.data(), id(k, v0), id(k, v1));
   }
   // Cycle rank per component: E_b - V_b + (pieces).
   std::vector<std::int64_t> rank(K, 0);
@@ -68,7 +60,7 @@ ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& 
   for (std::uint32_t i = 0; i < keys.size(); ++i) {
     const std::uint32_t k = std::uint32_t(keys[i] >> 32);
     --rank[k];
-    if (find_root(parent, i) == i) ++rank[k];
+    if (union_find_root(parent.data(), i) == i) ++rank[k];
   }
   for (std::size_t k = 0; k < K; ++k) {
     b.component_loops[k] = std::uint32_t(std::max<std::int64_t>(rank[k], 0));

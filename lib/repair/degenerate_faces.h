@@ -7,12 +7,10 @@
 //             vector vanishes to rounding), NonFinite (a corner has a NaN or Inf coordinate)
 //   counts by kind, and count() = all degenerate faces
 //
-// Zero area: N = sum over the fan (p0, pi, pi+1) of (pi - p0) x (pi+1 - p0) (twice the area
-// vector, Newell's sum for planar polygons) against the bound B = sum |pi - p0| |pi+1 - p0| that
-// its rounding error scales with: |N| <= 64 eps B, i.e. for a triangle sin(angle) <= 1.4e-14,
-// collinear to double precision. The test is scale-free (a face 1e-20 wide is not degenerate if
-// its shape is fine). Triangles whose squared edge lengths lie in (1e-100, 1e100) compare the
-// squares instead, |N|^2 <= (64 eps)^2 |e1|^2 |e2|^2: the same test without square roots.
+// What counts as degenerate, and the tolerance, is the one rule of geometry/degenerate_face.h
+// (also used by info and normals): zero area means |N| <= 64 eps |a| |b| for a triangle's two
+// shortest edges a, b (sin of its largest angle <= 1.4e-14: collinear to double precision, in any
+// corner order), |N| <= 64 eps sum |p_i - p_0| |p_{i+1} - p_0| for a polygon. Scale-free.
 // Precision: double. Faces are classified in parallel (TBB); the result does not depend on the
 // number of threads.
 //
@@ -26,10 +24,9 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/geometry/degenerate_face.h>
 
 namespace shadetool {
-
-enum class DegenerateKind : std::uint8_t { None = 0, TooFewCorners, RepeatedIndex, ZeroArea, NonFinite };
 
 struct DegenerateFaces {
   std::vector<DegenerateKind> kind;
@@ -39,19 +36,8 @@ struct DegenerateFaces {
 
 DegenerateFaces degenerate_faces(const Mesh& mesh);
 
-// The kind of one face (the per-face test of degenerate_faces).
-DegenerateKind degenerate_kind(const Mesh& mesh, std::size_t f);
-
-// The triangle test on squares, for a caller that has the edge vectors e1 = p1 - p0, e2 = p2 - p0
-// at hand: l1 = |e1|^2, l2 = |e2|^2, a2 = |e1 x e2|^2. Sets `kind` (None or ZeroArea) and returns
-// true while the squares can neither overflow nor underflow; else returns false (NaN included):
-// use degenerate_kind.
-inline bool triangle_kind_by_squares(double l1, double l2, double a2, DegenerateKind& kind) {
-  constexpr double kTolerance = 64 * 2.220446049250313e-16;  // 64 eps
-  if (!(l1 > 1e-100 && l1 < 1e100 && l2 > 1e-100 && l2 < 1e100)) return false;
-  kind = a2 <= kTolerance * kTolerance * l1 * l2 ? DegenerateKind::ZeroArea : DegenerateKind::None;
-  return true;
-}
+// The kind of one face (geometry/degenerate_face.h's face_degenerate_kind).
+inline DegenerateKind degenerate_kind(const Mesh& mesh, std::size_t f) { return face_degenerate_kind(mesh, f); }
 
 // Fills the counts of `d` from d.kind.
 void count_degenerate_kinds(DegenerateFaces& d);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include <shadetool/core/error.h>
-#include <shadetool/normals/corner_contributions.h>
+#include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 
@@ -84,29 +84,25 @@ NormalsFix fix_normals(Mesh& mesh, Weighting weighting) {
   if (mesh.has_corner_normals()) {
     const std::size_t N = mesh.corner_normals.size() / 3;
     constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-    std::vector<double> reference(3 * N, 0.0);
+    // Reference: each pool entry's normal from the corners that reference it (the normals
+    // library's corner_group_normals); entries with no corner or no valid face have none.
+    std::vector<std::uint32_t> group(C);
     std::vector<std::uint32_t> first_corner(N, kNone);
     for (std::size_t c = 0; c < C; ++c) {
       const std::uint32_t i = mesh.corner_normal_index[c];
+      group[c] = i < N ? i : kNoGroup;
       if (i < N && first_corner[i] == kNone) first_corner[i] = std::uint32_t(c);
     }
-    normals_detail::dispatch(weighting, Precision::Double, [&](auto t, auto w) {
-      using T = decltype(t);
-      constexpr Weighting W = decltype(w)::value;
-      auto add = [&](std::size_t c, std::uint32_t, const Vec3<T>& n) {
-        const std::uint32_t i = mesh.corner_normal_index[c];
-        if (i >= N) return;
-        reference[3 * i] += double(n.x); reference[3 * i + 1] += double(n.y); reference[3 * i + 2] += double(n.z);
-      };
-      normals_detail::polygon_contributions<T, W>(mesh, 0, F, add);
-    });
+    const GroupNormals reference = corner_group_normals(mesh, group, N, weighting, Precision::Double);
+    std::vector<std::uint8_t> has_reference(N, 1);
+    for (std::uint32_t i : reference.failed) has_reference[i] = 0;
     for (std::size_t i = 0; i < N; ++i) {
       if (first_corner[i] == kNone) continue;  // unreferenced: left alone
-      const Vec3d ref = get3(reference, i);
+      const Vec3d ref = get3(reference.normals, i);  // (0, 0, 0) when failed: no flipped test
       const Verdict verdict = judge(get3(mesh.corner_normals, i), ref);
       const std::uint32_t v = mesh.corner_vertex[first_corner[i]];
       const Vec3d fallback = v < V ? get3(recomputed.normals, v) : Vec3d{0, 0, 1};
-      fix.corner += replace(&mesh.corner_normals[3 * i], verdict, normalized_or(ref, fallback), fix);
+      fix.corner += replace(&mesh.corner_normals[3 * i], verdict, has_reference[i] ? ref : fallback, fix);
     }
   }
 

@@ -12,8 +12,8 @@
 //   flipped  finite and nonzero, but dot(stored, reference) < 0, where the reference is
 //              vertex normal   the vertex normal recomputed from the repaired faces
 //                              (normals/vertex_normals.h, `weighting`)
-//              corner normal   the weighted sum of the face normals of the corners that
-//                              reference this pool entry (corner_contributions.h): a
+//              corner normal   the normal of the group of corners that reference this pool
+//                              entry (normals/corner_normals.h, corner_group_normals): a
 //                              flat-shaded cube's shared `vn` and a smooth vertex's `vn` alike
 //              face normal     the face's own unit normal (normals/face_normals.h)
 //            A vertex with no valid face (isolated, or only degenerate faces) has no reference:

@@ -1,6 +1,7 @@
 // outward_orientation.cpp: volume, containment parity, vote, majority (see the header).
 #include <shadetool/repair/outward_orientation.h>
 
+#include <shadetool/repair/authored_normals_vote.h>
 #include <shadetool/repair/open_surface_vote.h>
 #include <shadetool/repair/shell_nesting.h>
 #include <shadetool/repair/signed_volume.h>
@@ -28,19 +29,46 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
   };
   std::vector<std::uint32_t> shells;
   std::vector<std::uint32_t> faces;
+  const bool normals = has_authored_normals(mesh);
+  auto component_faces = [&](std::size_t k) -> const std::vector<std::uint32_t>& {
+    const ComponentFaces& g = group();
+    faces.assign(g.faces.begin() + g.start[k], g.faces.begin() + g.start[k + 1]);
+    return faces;
+  };
+  // The input's normals decide where the geometry does not (see the header); `faces` holds k's.
+  auto by_normals = [&](std::size_t k) {
+    const AuthoredNormalsVote vote = authored_normals_vote(mesh, winding, faces);
+    if (!vote.decided) return false;
+    out.component_invert[k] = vote.invert;
+    out.component_basis[k] = OrientationBasis::AuthoredNormals;
+    ++out.normals_components;
+    return true;
+  };
   for (std::size_t k = 0; k < K; ++k) {
     if (winding.component_non_orientable[k]) continue;
     if (boundaries.component_closed[k]) {
-      if (!volume_has_sign(volumes.volume[k], volumes.magnitude[k])) continue;
+      const bool has_sign = volume_has_sign(volumes.volume[k], volumes.magnitude[k]);
+      if (normals && (!has_sign || thin_closed_component(mesh, component_faces(k), volumes.volume[k]))) {
+        component_faces(k);
+        if (by_normals(k)) continue;
+      }
+      if (!has_sign) continue;
       out.component_invert[k] = volumes.volume[k] < 0;
       out.component_basis[k] = OrientationBasis::Volume;
       shells.push_back(std::uint32_t(k));
     } else {
-      if (winding.component_faces[k] < 2) continue;  // one face wraps nothing: no evidence
-      const ComponentFaces& g = group();
-      faces.assign(g.faces.begin() + g.start[k], g.faces.begin() + g.start[k + 1]);
-      const OpenSurfaceVote vote = open_surface_vote(mesh, winding, faces);
-      if (!vote.decided) continue;
+      if (winding.component_faces[k] < 2) {  // one face wraps nothing: no geometric evidence
+        if (normals) {
+          component_faces(k);
+          by_normals(k);
+        }
+        continue;
+      }
+      const OpenSurfaceVote vote = open_surface_vote(mesh, winding, component_faces(k));
+      if (!vote.decided) {
+        if (normals) by_normals(k);
+        continue;
+      }
       out.component_invert[k] = vote.invert;
       out.component_basis[k] = OrientationBasis::SurfaceVote;
     }

@@ -10,6 +10,9 @@
 //     NestedShell  as Volume, then reversed because an odd number of other closed shells contain
 //                  it (shell_nesting.h): the inner shell of a hollow ball faces its cavity
 //     SurfaceVote  open, orientable: the winding-number vote (open_surface_vote.h) was decisive
+//     AuthoredNormals  the input's normals (authored_normals_vote.h) were decisive where geometry
+//                  is not: a closed component too thin for its volume's sign to mean anything
+//                  (thin_closed_component) or with no volume, or an open one with an undecided vote
 //     Majority     no geometric evidence (non-orientable; closed with no volume; open with an
 //                  undecided vote): the winding most of the component's input faces already had
 //                  is kept (ties keep the seed face's), so nothing is reversed that the input
@@ -17,8 +20,8 @@
 //   nested_shells        components with basis NestedShell
 //   majority_components  components with basis Majority
 //
-// Every decision depends on the geometry and the consistent winding only, never on the input
-// winding of a single face, except Majority, which a repaired mesh satisfies with zero reversals:
+// Every decision depends on the geometry, the input normals and the consistent winding only, never
+// on the input winding of a single face, except Majority, which a repaired mesh satisfies with zero reversals:
 // repairing a repaired mesh changes nothing.
 #pragma once
 
@@ -33,13 +36,14 @@
 
 namespace shadetool {
 
-enum class OrientationBasis : std::uint8_t { Volume, NestedShell, SurfaceVote, Majority };
+enum class OrientationBasis : std::uint8_t { Volume, NestedShell, SurfaceVote, AuthoredNormals, Majority };
 
 struct OutwardOrientation {
   std::vector<std::uint8_t> component_invert;
   std::vector<OrientationBasis> component_basis;
   std::size_t nested_shells = 0;
   std::size_t majority_components = 0;
+  std::size_t normals_components = 0;  // basis AuthoredNormals
 };
 
 OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding& winding,

@@ -11,6 +11,7 @@
 #include <shadetool/repair/duplicate_faces.h>
 #include <shadetool/repair/outward_orientation.h>
 #include <shadetool/repair/reverse_faces.h>
+#include <shadetool/repair/seam_join.h>
 #include <shadetool/repair/signed_volume.h>
 #include <shadetool/repair/weld_vertices.h>
 #include <shadetool/topology/edge_adjacency.h>
@@ -30,16 +31,36 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   EdgeAdjacencyOptions left_out;
   left_out.skip_unwound_faces = true;
   EdgeAdjacency adj = edge_adjacency(mesh, left_out);
-  ConsistentWinding winding = consistent_winding(mesh, adj, left_out);
-  const DuplicateFaces duplicates = duplicate_faces(mesh, adj, winding);
+  // Seams: boundary vertices at exactly the same position are joined, for the decisions of steps 1
+  // and 2 only (seam_join.h): `decide` is the mesh with those corners re-pointed; the output keeps
+  // its vertices. A mesh without such vertices is decided on as it is.
+  Mesh seams;
+  const Mesh* decide = &mesh;
+  if (adj.boundary_edges > 0) {
+    SeamJoin join = seam_join(mesh, adj);
+    if (join.joined > 0) {
+      report.seam_vertices_joined = join.joined;
+      seams.positions = mesh.positions;
+      seams.face_start = mesh.face_start;
+      seams.corner_vertex = std::move(join.corner_vertex);
+      seams.vertex_normals = mesh.vertex_normals;  // evidence for outward_orientation
+      seams.corner_normals = mesh.corner_normals;
+      seams.corner_normal_index = mesh.corner_normal_index;
+      seams.face_normals = mesh.face_normals;
+      decide = &seams;
+      adj = edge_adjacency(seams, left_out);
+    }
+  }
+  ConsistentWinding winding = consistent_winding(*decide, adj, left_out);
+  const DuplicateFaces duplicates = duplicate_faces(*decide, adj, winding);
   report.duplicate_faces = duplicates.count;
   if (duplicates.count > 0) {
     left_out.skip.assign(F, 0);
     for (std::size_t f = 0; f < F; ++f) left_out.skip[f] = duplicates.original[f] != DuplicateFaces::kNone;
-    adj = edge_adjacency(mesh, left_out);
-    winding = consistent_winding(mesh, adj, left_out);
+    adj = edge_adjacency(*decide, left_out);
+    winding = consistent_winding(*decide, adj, left_out);
   }
-  const ComponentBoundaries boundaries = component_boundaries(mesh, adj, winding);
+  const ComponentBoundaries boundaries = component_boundaries(*decide, adj, winding);
   report.components = winding.num_components;
   report.non_manifold_edges = winding.non_manifold_edges;
   report.inconsistent_edges = winding.inconsistent_edges;
@@ -50,7 +71,9 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   }
 
   // Step 2: outward orientation, then every face reversed at most once. The volume pass also
-  // finds the degenerate faces (step 4), sharing its reads of the positions.
+  // finds the degenerate faces (step 4), sharing its reads of the positions. It reads the output
+  // mesh: joined vertices have the same positions, so the volumes are the same, and a face with
+  // two coincident corners stays what it is (zero area, not a repeated index).
   DegenerateFaces degenerate;
   const ComponentVolumes volumes = component_signed_volumes(mesh, winding, &degenerate);
   report.degenerate_faces = degenerate.count();
@@ -58,9 +81,10 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   report.degenerate_repeated_index = degenerate.repeated_index;
   report.degenerate_too_few_corners = degenerate.too_few_corners;
   report.degenerate_non_finite = degenerate.non_finite;
-  const OutwardOrientation outward = outward_orientation(mesh, winding, boundaries, volumes);
+  const OutwardOrientation outward = outward_orientation(*decide, winding, boundaries, volumes);
   report.nested_shells = outward.nested_shells;
   report.oriented_by_majority = outward.majority_components;
+  report.oriented_by_normals = outward.normals_components;
   for (std::size_t k = 0; k < winding.num_components; ++k) {
     const std::size_t reversed = winding.component_reverse_count[k], total = winding.component_faces[k];
     // Faces the component's majority disagreed with: the consistency step's share.
@@ -71,7 +95,7 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     switch (outward.component_basis[k]) {
       case OrientationBasis::Volume: case OrientationBasis::NestedShell: ++report.oriented_by_volume; break;
       case OrientationBasis::SurfaceVote: ++report.oriented_by_vote; break;
-      case OrientationBasis::Majority: break;
+      case OrientationBasis::AuthoredNormals: case OrientationBasis::Majority: break;
     }
   }
   // The final reversal of each face, in place of the winding's (relative to each seed; 0 for

@@ -18,6 +18,8 @@ struct RepairReport {
   std::size_t vertices_welded = 0;
 
   // Step 1: consistent winding.
+  std::size_t seam_vertices_joined = 0;        // boundary vertices at an earlier one's exact position,
+                                               // joined for steps 1-2 only (seam_join.h)
   std::size_t components = 0;
   std::size_t closed_components = 0;
   std::size_t open_components = 0;
@@ -34,7 +36,8 @@ struct RepairReport {
   std::size_t nested_shells = 0;               // closed shells at odd nesting depth: face inward
   std::size_t oriented_by_volume = 0;          // closed: signed volume (incl. nested shells)
   std::size_t oriented_by_vote = 0;            // open: winding-number vote decisive
-  std::size_t oriented_by_majority = 0;        // no geometric evidence: input majority kept
+  std::size_t oriented_by_normals = 0;         // the input's normals decided (authored_normals_vote.h)
+  std::size_t oriented_by_majority = 0;        // no evidence at all: input majority kept
   std::size_t faces_flipped = 0;               // total faces whose winding changed (steps 1 + 2)
 
   // Step 3: normals.

@@ -79,7 +79,7 @@ ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWind
       if (triangles) {
         const Vec3d p0 = position(cv[b]), p1 = position(cv[b + 1]), p2 = position(cv[b + 2]);
         const Vec3d e1 = p1 - p0, e2 = p2 - p0, n = cross(e1, e2);
-        if (kind && !triangle_kind_by_squares(squared_length(e1), squared_length(e2), squared_length(n), kind[f]))
+        if (kind && !triangle_kind_by_squares(p0, p1, p2, kind[f]))
           kind[f] = degenerate_kind(mesh, f);
         const Vec3d q0 = p0 - r;
         det_sum = dot(q0, n);  // det(p0 - r, p1 - r, p2 - r)

@@ -7,18 +7,15 @@
 //                            independent of how the surface is triangulated)
 //   corner normals           the smoothing groups of the input are kept: corners of one vertex
 //                            that shared one pool normal still share one. Each group's normal is
-//                            the sum of the unit face normals of its corners weighted by the
-//                            interior angle at the corner (Thuermer & Wuethrich 1998, as for
-//                            vertex normals), normalised. The pool is rebuilt
-//                            with one entry per (vertex, old pool index) group, in order of first
-//                            use; corner_normal_index is renumbered accordingly.
-// Returns the number of vertices / corner groups that had no valid face (zero area, repeated
-// index) and got the fallback: for a vertex, the normals library's documented fallback; for a
-// corner group, its vertex's recomputed normal.
+//                            normals/corner_normals.h's corner_group_normals, angle weighting
+//                            (Thuermer & Wuethrich 1998, as for vertex normals). The pool is
+//                            rebuilt with one entry per (vertex, old pool index) group, in order
+//                            of first use; corner_normal_index is renumbered accordingly.
+// Returns the number of vertices / corner groups that had no valid face (degenerate faces only:
+// geometry/degenerate_face.h) and got the fallback: for a vertex, the normals library's
+// documented fallback; for a corner group, its vertex's recomputed normal.
 //
-// Precision: double accumulation (the normals library's Precision::Double; corner groups here); the corner angle is
-// atan2(|a x b|, a . b) (accurate for tiny and near-straight angles) with the sign of
-// (a x b) . n for polygons, in [0, 2 pi) so a reflex corner of a concave polygon counts as reflex.
+// Precision: double accumulation (the normals library's Precision::Double).
 #pragma once
 
 #include <cstddef>

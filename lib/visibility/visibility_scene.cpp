@@ -8,7 +8,7 @@
 #include <string>
 
 #include <shadetool/core/error.h>
-#include <shadetool/info/degenerate_faces.h>
+#include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/visibility/engine/embree_scene.h>
 
 namespace shadetool {
@@ -32,7 +32,7 @@ void check_device(RTCDevice device, const char* what) {
 
 VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   const auto start = std::chrono::steady_clock::now();
-  // 1. Which faces take part (info/degenerate_faces.h's rule), and their bounding box.
+  // 1. Which faces take part (geometry/degenerate_face.h, the library's one rule), and their box.
   std::vector<std::uint32_t> kept;
   kept.reserve(mesh.num_faces());
   std::vector<std::uint32_t> scratch;
@@ -41,11 +41,12 @@ VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl
   Vec3d hi = -lo;
   std::size_t corners = 0;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
-    switch (info::face_degeneracy(mesh, f, scratch)) {
-      case info::FaceDegeneracy::None: break;
-      case info::FaceDegeneracy::RepeatedIndex:
-      case info::FaceDegeneracy::ZeroArea: ++stats_.degenerate_faces; continue;
-      case info::FaceDegeneracy::NonFinite: ++stats_.nonfinite_faces; continue;
+    switch (face_degenerate_kind(mesh, f, scratch)) {
+      case DegenerateKind::None: break;
+      case DegenerateKind::TooFewCorners:
+      case DegenerateKind::RepeatedIndex:
+      case DegenerateKind::ZeroArea: ++stats_.degenerate_faces; continue;
+      case DegenerateKind::NonFinite: ++stats_.nonfinite_faces; continue;
     }
     kept.push_back(std::uint32_t(f));
     corners += mesh.face_size(f);

@@ -3,8 +3,8 @@
 //
 // Inputs:  mesh  positions #V by 3, faces (triangles or polygons; non-manifold is fine)
 // Builds:  an Embree triangle scene of the mesh's non-degenerate faces. Degenerate faces by the
-//          rule of info/degenerate_faces.h (repeated index, zero area vector, non-finite corner)
-//          take no part; polygons are fanned (c0, c_i, c_{i+1}) for the BVH only, the mesh is not
+//          library's one rule, geometry/degenerate_face.h (fewer than 3 corners, repeated index,
+//          area vector zero to rounding, non-finite corner) take no part; polygons are fanned (c0, c_i, c_{i+1}) for the BVH only, the mesh is not
 //          touched.
 // Frame:   Embree intersects in float. The BVH holds  local = (p - centre) * 2^-e  rounded once to
 //          float, where centre is the middle of the kept faces' bounding box (in double) and 2^e
@@ -34,7 +34,7 @@ namespace shadetool {
 struct VisibilitySceneStats {
   std::size_t faces_used = 0;           // faces in the BVH
   std::size_t triangles = 0;            // triangles after fanning polygons
-  std::size_t degenerate_faces = 0;     // left out: repeated index or zero area
+  std::size_t degenerate_faces = 0;     // left out: too few corners, repeated index or zero area
   std::size_t nonfinite_faces = 0;      // left out: a NaN or Inf corner
   std::size_t bvh_bytes = 0;            // Embree's allocations for the scene (net, after build)
   std::size_t buffer_bytes = 0;         // float vertices and uint32 triangle indices

@@ -7,7 +7,7 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
-#include <shadetool/normals/accumulate_by_vertex.h>
+#include <shadetool/normals/engine/accumulate_by_vertex.h>
 #include "normals_test_util.h"
 
 using namespace shadetool;

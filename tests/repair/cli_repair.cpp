@@ -2,7 +2,10 @@
 // report JSON, and that nothing is written when it fails.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -230,4 +233,75 @@ TEST_CASE("repair: --json carries the counts", "[repair][cli]") {
   CHECK(j["stats"]["faces_flipped"] == 2);
   CHECK(j["stats"]["components"] == 1);
   CHECK(j["stats"]["faces"] == 12);
+}
+
+namespace {
+
+// A cube as a game exporter writes it for flat shading with UVs: every face its own 4 vertices
+// (24 in all, positions repeated bitwise), per-vertex normals and texture coordinates, two
+// triangles per face. The triangles of faces `inverted` are wound inside out (the normals still
+// say outward, as authored).
+std::string seam_split_cube_ply(const std::vector<int>& inverted) {
+  const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const double n[6][3] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}};
+  std::string s = "ply\nformat ascii 1.0\ncomment exported with per-face vertices (UV seams)\nelement vertex 24\n"
+                  "property float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\n"
+                  "property float nz\nproperty float s\nproperty float t\nelement face 12\n"
+                  "property list uchar int vertex_indices\nend_header\n";
+  for (int f = 0; f < 6; ++f)
+    for (int k = 0; k < 4; ++k) {
+      const int i = q[f][k];
+      s += std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " + std::to_string((i >> 2) & 1) + " " +
+           std::to_string(n[f][0]) + " " + std::to_string(n[f][1]) + " " + std::to_string(n[f][2]) + " " +
+           std::to_string(k == 1 || k == 2) + " " + std::to_string(k >= 2) + "\n";
+    }
+  for (int f = 0; f < 6; ++f) {
+    const bool flip = std::find(inverted.begin(), inverted.end(), f) != inverted.end();
+    for (int t = 0; t < 2; ++t) {
+      int a = 4 * f, b = 4 * f + t + 1, c = 4 * f + t + 2;
+      if (flip) std::swap(b, c);
+      s += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("repair orients a cube split at its UV seams as one closed surface (issue 21 item 12)", "[repair][cli][seams]") {
+  TempDir tmp;
+  write_text(tmp / "cube.ply", seam_split_cube_ply({1, 4}));
+  REQUIRE(run("repair '" + tmp / "cube.ply" + "' -o '" + tmp / "out.ply" + "' --ascii --report '" + tmp / "r.json" + "'",
+              tmp / "err") == 0);
+  const nlohmann::json r = nlohmann::json::parse(slurp(tmp / "r.json"));
+  CHECK(r["seam_vertices_joined"] == 16);  // 24 vertices at 8 positions
+  CHECK(r["closed_components"] == 1);
+  CHECK(r["faces_flipped"] == 4);  // the two inverted faces' triangles, nothing else
+  // The output keeps its 24 vertices (and their UVs) and every triangle faces outward.
+  std::istringstream out(slurp(tmp / "out.ply"));
+  std::string line;
+  int vertices = 0;
+  while (std::getline(out, line) && line != "end_header")
+    if (line.rfind("element vertex ", 0) == 0) vertices = std::stoi(line.substr(15));
+  CHECK(vertices == 24);
+  std::vector<std::array<double, 3>> p(vertices);
+  for (auto& v : p) {
+    std::getline(out, line);
+    std::istringstream(line) >> v[0] >> v[1] >> v[2];
+  }
+  int outward = 0;
+  for (int f = 0; f < 12; ++f) {
+    std::getline(out, line);
+    int k, a, b, c;
+    std::istringstream(line) >> k >> a >> b >> c;
+    double e1[3], e2[3], centre[3];
+    for (int i = 0; i < 3; ++i) {
+      e1[i] = p[b][i] - p[a][i];
+      e2[i] = p[c][i] - p[a][i];
+      centre[i] = (p[a][i] + p[b][i] + p[c][i]) / 3 - 0.5;
+    }
+    const double N[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    outward += N[0] * centre[0] + N[1] * centre[1] + N[2] * centre[2] > 0;
+  }
+  CHECK(outward == 12);
 }

@@ -1,4 +1,5 @@
-// interior_angle.h: the angle between two edge vectors from |a x b| and a . b, fast and accurate.
+// interior_angle.h: the one interior angle: the angle between two edge vectors from |a x b| and
+// a . b, fast and accurate; and the corner angle of a polygon, reflex corners included.
 //
 // Inputs:  sin_part  |a x b| = |a||b| sin(theta), >= 0
 //          cos_part  a . b   = |a||b| cos(theta)
@@ -6,9 +7,10 @@
 //          NaN or Inf input gives NaN or some angle in [0, pi], never an out-of-range table read.
 //
 // Why not std::atan2: the libm call (not inlined) cost several times the whole area-weighted
-// kernel. This is the textbook reduction, inlined and branch-free. It serves the scalar paths
-// (polygons, the crease test, triangles out of the vector pass's range); the triangle kernels'
-// vectorised pass has its own table-free version (triangle_blocks.h):
+// kernel. This is the textbook reduction, inlined and branch-free. It is the definition every
+// module uses (normals' scalar paths and crease test, repair, transform); the normals triangle
+// kernels' vectorised pass has a table-free version of it (normals/engine/triangle_blocks.h),
+// tested within 1e-13 relative of this one (tests/geometry/interior_angle.cpp):
 //   1. octant: t = min / max of (sin_part, |cos_part|) in [0, 1]; theta from atan(t) by
 //      pi/2 - . (when sin_part > |cos_part|) and pi - . (when cos_part < 0);
 //   2. table: atan(t) = atan(c_k) + atan((t - c_k) / (1 + t c_k)) with c_k = k/8 (exact in
@@ -24,9 +26,11 @@
 #include <cmath>
 
 #include <shadetool/core/math_constants.h>
-#include <shadetool/normals/face_geometry.h>  // SHADETOOL_NORMALS_INLINE
+#include <shadetool/geometry/face_area_vector.h>  // SHADETOOL_INLINE
 
-namespace shadetool::normals_detail {
+namespace shadetool {
+
+namespace interior_angle_detail {
 
 // atan(k/8), k = 0..8, correctly rounded.
 struct AtanTable {
@@ -37,13 +41,16 @@ struct AtanTable {
 
 
 // 1 - z/3 + z^2/5 - z^3/7 + z^4/9 - z^5/11 + z^6/13 by Estrin's scheme.
-SHADETOOL_NORMALS_INLINE double atan_series(double z) {
+SHADETOOL_INLINE double atan_series(double z) {
   const double z2 = z * z, z4 = z2 * z2;
   const double a = 1.0 - z * (1.0 / 3), b = 1.0 / 5 - z * (1.0 / 7), c = 1.0 / 9 - z * (1.0 / 11);
   return (a + z2 * b) + z4 * (c + z2 * (1.0 / 13));
 }
 
-SHADETOOL_NORMALS_INLINE double interior_angle(double sin_part, double cos_part) {
+}  // namespace interior_angle_detail
+
+SHADETOOL_INLINE double interior_angle(double sin_part, double cos_part) {
+  using namespace interior_angle_detail;
   const double s = sin_part, c = std::fabs(cos_part);
   const double num = std::min(s, c), den = std::max(s, c);
   const double t = den > 0.0 ? num / den : 0.0;  // divisor checked: both zero is a degenerate corner
@@ -60,4 +67,12 @@ SHADETOOL_NORMALS_INLINE double interior_angle(double sin_part, double cos_part)
   return r;
 }
 
-}  // namespace shadetool::normals_detail
+// Angle at a polygon corner with edges a, b (to the next and previous corners), in [0, 2 pi):
+// signed_sin = (a x b) . n about the face's unit normal n, cos_part = a . b. A reflex corner of a
+// concave polygon (signed_sin < 0) counts as reflex, 2 pi - theta. 0 for a zero-length edge.
+SHADETOOL_INLINE double polygon_corner_angle(double signed_sin, double cos_part) {
+  const double theta = interior_angle(std::fabs(signed_sin), cos_part);
+  return signed_sin < 0.0 ? kTwoPi - theta : theta;
+}
+
+}  // namespace shadetool

@@ -1,13 +1,15 @@
 // triangle_blocks.cpp: see triangle_blocks.h (methods, error bound, why the clones agree bitwise).
+#include <shadetool/normals/engine/triangle_blocks.h>
+
 #include <shadetool/core/math_constants.h>
-#include <shadetool/normals/triangle_blocks.h>
+#include <shadetool/geometry/degenerate_face.h>
 
 #include <cmath>
 #include <limits>
 
 namespace shadetool::normals_detail {
 
-// GCC: one clone for AVX2 and one for the baseline, picked at load time (ifunc). This file is built
+// GCC: one clone each for AVX-512, AVX2 and the baseline, picked at load time (ifunc). This file is built
 // with -fno-math-errno -fno-trapping-math (CMakeLists.txt): a std::sqrt that may set errno, or a
 // possibly-signalling comparison feeding a select, counts as control flow and stops GCC from
 // vectorising; we never read errno or floating-point exception flags, and the values are the same.
@@ -82,7 +84,13 @@ inline __attribute__((always_inline)) void block_geometry(std::size_t n, const d
     const double bx = k2 ? e2x : (k0 ? e0x : e1x), by = k2 ? e2y : (k0 ? e0y : e1y), bz = k2 ? e2z : (k0 ? e0z : e1z);
     const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
     const double nn = nx * nx + ny * ny + nz * nz;
-    const bool in = (nn >= 1e-250) & (nn <= 1e250);
+    // Valid by the one degenerate-face rule's squares test (geometry/degenerate_face.h,
+    // triangle_zero_area_by_squares: the same expression on the same values, so the same verdict);
+    // faces outside its range, or degenerate, go to the scalar path, which asks the rule itself.
+    const double la = k2 ? l1 : (k0 ? l2 : l0), lb = k2 ? l2 : (k0 ? l0 : l1);
+    const bool valid = (la > kSquaresTestFrom) & (la < kSquaresTestTo) & (lb > kSquaresTestFrom) &
+                       (lb < kSquaresTestTo) & (nn > kDegenerateTolerance2 * (la * lb));
+    const bool in = (nn >= 1e-250) & (nn <= 1e250) & valid;
     Nx[i] = nx; Ny[i] = ny; Nz[i] = nz;
     L[i] = in ? std::sqrt(in ? nn : 1.0) : std::numeric_limits<double>::quiet_NaN();
     if constexpr (Lengths) { L0[i] = l0; L1[i] = l1; L2[i] = l2; }

@@ -43,9 +43,11 @@
 //                        of corner 1, of corner 2
 // Outputs: contribution  9 rows of kTriangleBlock values (first n written): x, y, z of corner 0's
 //                        contribution, then corner 1's, corner 2's. NaN for a triangle the vector
-//                        pass does not take: N . N outside [1e-250, 1e250] (zero area, tiny or
-//                        huge, non-finite input) or, for max, l0 l1 l2 outside the normal range;
-//                        the caller computes that one on its scalar path.
+//                        pass does not take: degenerate or out of the squares test's range by
+//                        geometry/degenerate_face.h (the rule's own test, same values), N . N
+//                        outside [1e-250, 1e250] (tiny or huge, non-finite input) or, for max,
+//                        l0 l1 l2 outside the normal range; the caller computes that one on its
+//                        scalar path (which asks the rule).
 #pragma once
 
 #include <cstddef>

@@ -1,18 +1,10 @@
-// corner_contributions.h: what each face corner adds to its vertex's normal under each weighting
-// (internal to lib/normals; header-only so that the kernels inline it into their loops).
+// corner_contributions.h: the loops that call each face corner's contribution (the formulas:
+// normals/weighting.h) for a range of faces, on the fastest path that gives them (internal to
+// lib/normals; header-only so that the kernels inline it into their loops).
 //
-// For face f with area vector N = 2 A n (face_geometry.h) and a corner at vertex v whose edges
-// to the next and previous corners are a and b, the contribution is
-//   Uniform  n                                  (Gouraud 1971)
-//   Area     N = 2 A n                          (area weighting; OpenMesh update_normals,
-//                                                libigl PER_VERTEX_NORMALS_WEIGHTING_TYPE_AREA)
-//   Angle    theta n, theta = atan2(|a x b|, a.b) (Thuermer & Wuethrich 1998; libigl ANGLE);
-//            in a triangle the third angle is pi minus the other two; angles in double
-//   Max      n sin(theta) / (|a| |b|) = (a x b) / (|a|^2 |b|^2) for a triangle (Max 1999, eq. 6)
 // For a triangle, |a x b| = |N| at every corner, so all three corners use the one well-conditioned
-// N. For a polygon (4+ corners), n comes from Newell's method and the corner's own angle is used:
-// theta = atan2((a x b).n, a.b), taken in [0, 2 pi) so that a reflex corner of a concave polygon
-// counts as reflex; Max uses |(a x b).n| / (|a|^2 |b|^2).
+// N (geometry/face_area_vector.h). For a polygon (4+ corners), n comes from Newell's method and
+// the corner's own angle is used (geometry/interior_angle.h, polygon_corner_angle).
 //
 // Precision: every contribution is computed in double (edges, cross products, lengths, angles,
 // weights) and rounded once to T (the accumulation type) on its way to the sink, so T = float adds
@@ -23,9 +15,10 @@
 // 1e-30 or 1e30 over- or underflow float (range 1.2e-38 .. 3.4e38), so for T = float they are
 // multiplied by one power of two per mesh, `scale` (exact; the same for every face, so relative
 // weights and the unit vertex normal are unchanged; contribution_scale below chooses it).
-// Degenerate input: a face whose area vector is zero or not finite (repeated index, coincident or
-// collinear positions, NaN/Inf) contributes nothing at all (the sink is not called); a Max corner
-// whose edge-length product is zero or underflows contributes nothing.
+// Degenerate input: a face that geometry/degenerate_face.h calls degenerate (fewer than 3 corners,
+// repeated index, NaN/Inf, zero area to 64 eps) contributes nothing at all (the sink is not
+// called), and is counted; a Max corner whose edge-length product is zero or underflows
+// contributes nothing. Which path applies the rule how: see "Degenerate faces" below.
 #pragma once
 
 #include <algorithm>
@@ -33,12 +26,15 @@
 #include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 #include <shadetool/core/math_constants.h>
 #include <shadetool/core/mesh.h>
-#include <shadetool/normals/face_geometry.h>
-#include <shadetool/normals/interior_angle.h>
-#include <shadetool/normals/triangle_blocks.h>
+#include <shadetool/geometry/degenerate_face.h>
+#include <shadetool/geometry/face_area_vector.h>
+#include <shadetool/geometry/interior_angle.h>
+#include <shadetool/geometry/scaled_length.h>
+#include <shadetool/normals/engine/triangle_blocks.h>
 #include <shadetool/normals/weighting.h>
 
 namespace shadetool::normals_detail {
@@ -57,9 +53,22 @@ namespace shadetool::normals_detail {
 //   Uniform, Angle  normalise N per face, and Max divides it by |a|^2 |b|^2: a sliver's error
 //            would be amplified by its aspect ratio, so these take the two shortest edges
 //            (face_geometry.h, triangle_area_vector), whose relative error is ~ 2 eps.
-// Zero-area check: dot(N, N) > 0 is false for a zero and for a NaN vector. A vector that
-// overflows (coordinates beyond ~1e150) passes and makes the vertex sum infinite: that vertex
-// then gets vertex_normals' fallback.
+// Degenerate faces (geometry/degenerate_face.h, the one rule), per path:
+//   vector pass (triangle_blocks.cpp)  takes a face only when la, lb (squared lengths of the two
+//            shortest edges) lie in (1e-125, 1e125) and N . N > tol^2 (la lb): the rule's own
+//            squares test, the same expression on the same computed values (same bits); every
+//            other face goes to triangle_scalar.
+//   triangle_scalar, polygon_contributions  call the rule (triangle_degenerate_kind,
+//            face_degenerate_kind) for the face.
+//   Area triangles  compute N0 = (p1 - p0) x (p2 - p0) (see below) and take a face as valid when
+//            N0 . N0 > (96 eps)^2 (|e0|^2 |e2|^2) with |e0|^2 |e2|^2 in [1e-250, 1e250] and
+//            N0 . N0 <= 1e250, else ask the rule. That test implies the rule's verdict None:
+//            N0 and the rule's N are both within 5 eps |e0| |e2| of the exact area vector
+//            (rounded edges, two products and a difference per component, no over/underflow in
+//            that range) and the rule's |a| |b| <= |e0| |e2| (the two shortest edges have the
+//            smallest product), so |N| > (96 - 10) eps |e0| |e2| > 64 eps |a| |b| with room for
+//            the rule's own rounding of its lengths. It costs two dot products per triangle and
+//            no branch that mispredicts (the rule itself runs only for near-degenerate faces).
 
 // Software prefetch, kPrefetchFaces faces ahead, of the positions a triangle loop will read and
 // (when the caller passes its per-vertex sums, `rows`, 3 values per vertex) of the sums it will
@@ -67,13 +76,16 @@ namespace shadetool::normals_detail {
 // (the hardware prefetchers do not follow the corner indices). Only a hint: no effect on results.
 constexpr std::size_t kPrefetchFaces = 64;
 
+// (96 eps)^2: the area kernel's sufficient test for a valid face (see "Degenerate faces" above).
+constexpr double kAreaKernelValid2 = (96 * 2.220446049250313e-16) * (96 * 2.220446049250313e-16);
+
 // The caller's per-vertex sums for prefetching: base address and bytes per vertex (none: null).
 struct RowHint {
   const char* base = nullptr;
   std::size_t bytes = 0;
 };
 
-SHADETOOL_NORMALS_INLINE void prefetch_face(const double* P, const std::uint32_t* corners, RowHint rows) {
+SHADETOOL_INLINE void prefetch_face(const double* P, const std::uint32_t* corners, RowHint rows) {
 #if defined(__GNUC__)
   for (int k = 0; k < 3; ++k) {
     __builtin_prefetch(P + 3 * std::size_t(corners[k]));
@@ -86,7 +98,7 @@ SHADETOOL_NORMALS_INLINE void prefetch_face(const double* P, const std::uint32_t
 
 // A double contribution rounded to the accumulation type (no-op for double).
 template <class T>
-SHADETOOL_NORMALS_INLINE Vec3<T> to(const Vec3d& v) {
+SHADETOOL_INLINE Vec3<T> to(const Vec3d& v) {
   if constexpr (std::is_same_v<T, double>) return v;
   else return {T(v.x), T(v.y), T(v.z)};
 }
@@ -98,7 +110,7 @@ constexpr bool kScaledContributions = !std::is_same_v<T, double> && (W == Weight
 // A double contribution times `scale` (only where kScaledContributions; else scale is 1 and unused)
 // rounded to T.
 template <class T, Weighting W>
-SHADETOOL_NORMALS_INLINE Vec3<T> scaled(const Vec3d& v, double scale) {
+SHADETOOL_INLINE Vec3<T> scaled(const Vec3d& v, double scale) {
   if constexpr (kScaledContributions<T, W>) return to<T>(v * scale);
   else { (void)scale; return to<T>(v); }
 }
@@ -113,9 +125,9 @@ inline bool triangle_scalar(const double* P, const std::uint32_t* cv, std::size_
   const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
   const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
   const double l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
+  if (triangle_degenerate_kind(P, v0, v1, v2) != DegenerateKind::None) return false;
   const Vec3d N = triangle_area_vector(P, v0, v1, v2, l0, l1, l2);
   if constexpr (W == Weighting::Max) {
-    if (!(dot(N, N) > 0.0)) return false;
     const double q = l0 * l1 * l2;
     if (q > std::numeric_limits<double>::min() && q < std::numeric_limits<double>::max()) {  // divisor checked
       const double inv = 1.0 / q;
@@ -135,16 +147,16 @@ inline bool triangle_scalar(const double* P, const std::uint32_t* cv, std::size_
   } else {
     (void)scale;
     const double len = checked_length(N);  // scales instead of squaring where N . N under/overflows
-    if (!(len > 0.0)) return false;
-    const Vec3d n = N * (1.0 / len);       // divisor checked
+    if (!(len > 0.0)) return false;        // not reached for a face the rule calls valid
+    const Vec3d n = unit_normal(N, len);   // divisor checked
     if constexpr (W == Weighting::Uniform) {
-      const Vec3<T> u = to<T>(n);
+      const Vec3<T> u = to<T>(uniform_contribution(n));
       sink(c, v0, u); sink(c + 1, v1, u); sink(c + 2, v2, u);
     } else {
       const double t0 = interior_angle(len, -dot(e0, e2)), t1 = interior_angle(len, -dot(e1, e0));
-      sink(c, v0, to<T>(n * t0));
-      sink(c + 1, v1, to<T>(n * t1));
-      sink(c + 2, v2, to<T>(n * (kPi - t0 - t1)));
+      sink(c, v0, to<T>(angle_contribution(n, t0)));
+      sink(c + 1, v1, to<T>(angle_contribution(n, t1)));
+      sink(c + 2, v2, to<T>(angle_contribution(n, kPi - t0 - t1)));
     }
     return true;
   }
@@ -208,9 +220,16 @@ inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin,
       if (f + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, rows);
       const std::uint32_t v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
       const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
-      const Vec3d N = cross(p1 - p0, p2 - p0);
-      if (!(dot(N, N) > 0.0)) { ++degenerate; continue; }
-      const Vec3<T> w = scaled<T, W>(N, scale);
+      const Vec3d e0 = p1 - p0, e2 = p2 - p0;
+      const Vec3d N = cross(e0, e2);
+      const double nn = dot(N, N), q = dot(e0, e0) * dot(e2, e2);
+      // valid by the sufficient test (see "Degenerate faces" above), else by the rule itself
+      if (!((nn > kAreaKernelValid2 * q) & (q >= 1e-250) & (q <= 1e250) & (nn <= 1e250)) &&
+          triangle_degenerate_kind(P, v0, v1, v2) != DegenerateKind::None) {
+        ++degenerate;
+        continue;
+      }
+      const Vec3<T> w = scaled<T, W>(area_contribution(N), scale);
       sink(c, v0, w); sink(c + 1, v1, w); sink(c + 2, v2, w);
     }
     return degenerate;
@@ -224,9 +243,10 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
+  std::vector<std::uint32_t> scratch;
   for (std::size_t f = f_begin; f < f_end; ++f) {
     const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1], n_corners = end - begin;
-    if (n_corners < 3) { ++degenerate; continue; }
+    if (face_degenerate_kind(mesh, f, scratch) != DegenerateKind::None) { ++degenerate; continue; }
     Vec3d N;
     if (n_corners == 3) {
       const Vec3d p0 = load_position(P, cv[begin]), p1 = load_position(P, cv[begin + 1]), p2 = load_position(P, cv[begin + 2]);
@@ -236,14 +256,14 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
       N = newell_area_vector(mesh, f);
     }
     const double len = checked_length(N);
-    if (!(len > 0.0)) { ++degenerate; continue; }  // degenerate: contributes nothing
-    const Vec3d n = N * (1.0 / len);                // divisor checked
+    if (!(len > 0.0)) { ++degenerate; continue; }  // not reached for a face the rule calls valid
+    const Vec3d n = unit_normal(N, len);            // divisor checked
     for (std::uint32_t c = begin; c < end; ++c) {
       const std::uint32_t v = cv[c];
       if constexpr (W == Weighting::Uniform) {
-        sink(c, v, to<T>(n));
+        sink(c, v, to<T>(uniform_contribution(n)));
       } else if constexpr (W == Weighting::Area) {
-        sink(c, v, scaled<T, W>(N, scale));
+        sink(c, v, scaled<T, W>(area_contribution(N), scale));
       } else {
         const std::uint32_t next = c + 1 < end ? c + 1 : begin, prev = c > begin ? c - 1 : end - 1;
         const Vec3d p = load_position(P, v);
@@ -251,26 +271,18 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
         if (n_corners == 3) {
           // Triangle among polygons: |a x b| = |N| exactly as in triangle_contributions.
           if constexpr (W == Weighting::Angle) {
-            sink(c, v, to<T>(n * interior_angle(len, dot(a, b))));
+            sink(c, v, to<T>(angle_contribution(n, interior_angle(len, dot(a, b)))));
           } else {
-            const double d = dot(a, a) * dot(b, b);
-            if (d > 0.0) {
-              const Vec3d w = N * (1.0 / d);  // divisor checked
-              if (is_finite(w)) sink(c, v, scaled<T, W>(w, scale));
-            }
+            Vec3d w;
+            if (max_contribution(N, 1.0, dot(a, a) * dot(b, b), w)) sink(c, v, scaled<T, W>(w, scale));
           }
         } else {
           const double s = dot(cross(a, b), n);  // |a||b| sin(theta), signed about the face normal
           if constexpr (W == Weighting::Angle) {
-            double theta = interior_angle(std::fabs(s), dot(a, b));
-            if (s < 0.0) theta = kTwoPi - theta;  // reflex corner of a concave polygon
-            sink(c, v, to<T>(n * theta));
+            sink(c, v, to<T>(angle_contribution(n, polygon_corner_angle(s, dot(a, b)))));
           } else {
-            const double d = dot(a, a) * dot(b, b);
-            if (d > 0.0) {
-              const Vec3d w = n * (std::fabs(s) / d);  // divisor checked
-              if (is_finite(w)) sink(c, v, scaled<T, W>(w, scale));
-            }
+            Vec3d w;
+            if (max_contribution(n, std::fabs(s), dot(a, a) * dot(b, b), w)) sink(c, v, scaled<T, W>(w, scale));
           }
         }
       }

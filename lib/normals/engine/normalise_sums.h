@@ -8,8 +8,8 @@
 //          failed  rows whose sum is zero or not finite (appended in ascending order; callers
 //                  give them their documented fallback)
 // Arithmetic in double: out = s / |s|, dividing rather than multiplying by 1/|s| (one rounding
-// per component). |s| = sqrt(s . s) where s . s lies in [1e-280, 1e280]; else the scaled length of
-// core/vec3.h (never over- or underflows). normalise_range does two rows at a time in SSE2 (sqrtpd,
+// per component). |s| by the one safe length, geometry/scaled_length.h (sqrt(s . s) where s . s
+// lies in [1e-280, 1e280], else scaled). normalise_range does two rows at a time in SSE2 (sqrtpd,
 // divpd: the same IEEE operations as the scalar code, so the same bits) when both are in range.
 #pragma once
 
@@ -21,26 +21,19 @@
 #endif
 
 #include <shadetool/core/vec3.h>
-#include <shadetool/normals/face_geometry.h>  // SHADETOOL_NORMALS_INLINE
+#include <shadetool/geometry/scaled_length.h>
 
 namespace shadetool::normals_detail {
 
-// o = s / |s| and true, or false (o untouched) when s is zero or not finite.
-SHADETOOL_NORMALS_INLINE bool normalise_sum(double x, double y, double z, double* o) {
-  const double l2 = x * x + y * y + z * z;
-  double len;
-  if (l2 >= 1e-280 && l2 <= 1e280) len = std::sqrt(l2);
-  else len = length(Vec3d{x, y, z});
-  if (!(len > 0.0) || !std::isfinite(len)) return false;
-  o[0] = x / len; o[1] = y / len; o[2] = z / len;  // divisor checked
-  return true;
-}
+// o = s / |s| and true, or false (o untouched) when s is zero or not finite: the one safe
+// normalise (geometry/scaled_length.h).
+SHADETOOL_INLINE bool normalise_sum(double x, double y, double z, double* o) { return normalise_checked(x, y, z, o); }
 
 template <class T, std::size_t Stride = 3>
 void normalise_range(const T* sum, double* out, std::size_t v_begin, std::size_t v_end, std::vector<std::uint32_t>& failed) {
   std::size_t v = v_begin;
 #if defined(__SSE2__)
-  const __m128d lo = _mm_set1_pd(1e-280), hi = _mm_set1_pd(1e280);
+  const __m128d lo = _mm_set1_pd(kSquaresFrom), hi = _mm_set1_pd(kSquaresTo);
   for (; v + 2 <= v_end; v += 2) {
     const T* s = sum + Stride * v;
     const double x0 = double(s[0]), y0 = double(s[1]), z0 = double(s[2]);

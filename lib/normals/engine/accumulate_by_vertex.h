@@ -48,7 +48,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/core/vec3.h>
-#include <shadetool/normals/face_geometry.h>  // SHADETOOL_NORMALS_INLINE
+#include <shadetool/geometry/face_area_vector.h>  // SHADETOOL_INLINE
 #include <shadetool/core/engine/parallel.h>
 
 namespace shadetool::normals_detail {
@@ -173,7 +173,7 @@ void flag_border_faces(const Mesh& mesh, const std::uint32_t* target, ChunkPlan&
 // sum[row] += n for a row of Stride values (3, or 4 for float sums padded to 16 bytes: then one
 // SSE addition of x, y, z, 0; the padding stays 0).
 template <class T, std::size_t Stride>
-SHADETOOL_NORMALS_INLINE void add_to_row(T* o, const Vec3<T>& n) {
+SHADETOOL_INLINE void add_to_row(T* o, const Vec3<T>& n) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<T, float> && Stride == 4) {
     _mm_storeu_ps(o, _mm_add_ps(_mm_loadu_ps(o), _mm_setr_ps(n.x, n.y, n.z, 0.0f)));

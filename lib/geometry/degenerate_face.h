@@ -1,0 +1,90 @@
+// degenerate_face.h: the one rule for a degenerate face, used by info (counts), repair (removal)
+// and normals (which faces contribute nothing).
+//
+// Inputs:  mesh  positions #V by 3, a face f (any corner count)
+// Output:  DegenerateKind of face f, tested in this order:
+//   TooFewCorners  fewer than 3 corners
+//   RepeatedIndex  a vertex index used at two corners ((a, a, b) has no winding of its own)
+//   NonFinite      a corner position, the area vector or its bound is NaN or Inf (positions
+//                  beyond ~1e150 whose cross products overflow count here)
+//   ZeroArea       the area vector N (geometry/face_area_vector.h) vanishes to rounding:
+//                  |N| <= kDegenerateTolerance * B, kDegenerateTolerance = 64 eps (~1.4e-14),
+//                  B = |a| |b| for a triangle (a, b its two shortest edges, the pair N is made
+//                  of: the test reads sin(largest angle) <= 64 eps, i.e. collinear to double
+//                  precision, whatever the corner order), B = sum_i |p_i - p_0| |p_{i+1} - p_0|
+//                  for a polygon (the bound Newell's sum's rounding scales with)
+//   None           otherwise
+// The test is scale-free: a face 1e-20 wide with a fine shape is not degenerate. One tolerance
+// for every caller; nothing else in the library decides what a degenerate face is.
+// Precision: double. A triangle whose two shortest squared edge lengths la, lb both lie in
+// (1e-125, 1e125) is tested on squares, N . N <= tol^2 (la lb) (triangle_zero_area_by_squares;
+// no square roots, no over- or underflow there: la lb in (1e-250, 1e250)); others use the scaled
+// lengths of core/vec3.h. The normals kernels evaluate that same expression on the same values
+// (normals/engine/triangle_blocks.cpp), or a sufficient test that provably implies it
+// (normals/engine/corner_contributions.h, the area kernel), and call triangle_degenerate_kind
+// for every other face, so they skip exactly the faces this rule calls degenerate.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <shadetool/core/mesh.h>
+#include <shadetool/geometry/face_area_vector.h>
+
+namespace shadetool {
+
+enum class DegenerateKind : std::uint8_t { None = 0, TooFewCorners, RepeatedIndex, ZeroArea, NonFinite };
+
+constexpr double kDegenerateTolerance = 64 * 2.220446049250313e-16;  // 64 eps
+constexpr double kDegenerateTolerance2 = kDegenerateTolerance * kDegenerateTolerance;
+// Squared lengths for which the triangle test runs on squares.
+constexpr double kSquaresTestFrom = 1e-125, kSquaresTestTo = 1e125;
+
+// The triangle test on squares: true when la and lb (squared lengths of the two shortest edges)
+// are in range; then `zero_area` says whether nn = N . N <= tol^2 (la lb). False: use
+// triangle_degenerate_kind (scaled lengths). NaN input returns false.
+SHADETOOL_INLINE bool triangle_zero_area_by_squares(double nn, double la, double lb, bool& zero_area) {
+  if (!((la > kSquaresTestFrom) & (la < kSquaresTestTo) & (lb > kSquaresTestFrom) & (lb < kSquaresTestTo))) return false;
+  zero_area = !(nn > kDegenerateTolerance2 * (la * lb));
+  return true;
+}
+
+// The same from a triangle's corner positions, for a caller that has them loaded: true and `kind`
+// (None or ZeroArea) when the squares are in range; false otherwise (NaN, a zero edge, a repeated
+// index included): then call face_degenerate_kind.
+SHADETOOL_INLINE bool triangle_kind_by_squares(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, DegenerateKind& kind) {
+  const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
+  const double l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
+  const int k = apex_corner(l0, l1, l2);
+  // two shortest edges, as triangle_area_vector: e0 longest -> e1 x e2; e1 longest -> e2 x e0; else e0 x e1
+  const Vec3d a = k == 2 ? e1 : (k == 0 ? e2 : e0), b = k == 2 ? e2 : (k == 0 ? e0 : e1);
+  const double la = k == 2 ? l1 : (k == 0 ? l2 : l0), lb = k == 2 ? l2 : (k == 0 ? l0 : l1);
+  const Vec3d N = cross(a, b);
+  bool zero_area = false;
+  if (!triangle_zero_area_by_squares(dot(N, N), la, lb, zero_area)) return false;
+  kind = zero_area ? DegenerateKind::ZeroArea : DegenerateKind::None;
+  return true;
+}
+
+// Kind of triangle (v0, v1, v2) from its positions only: None, ZeroArea or NonFinite (a repeated
+// index gives a zero edge and so ZeroArea here; face_degenerate_kind names it RepeatedIndex).
+DegenerateKind triangle_degenerate_kind(const double* positions, std::uint32_t v0, std::uint32_t v1, std::uint32_t v2);
+
+// Whether triangle (v0, v1, v2), whose TriangleAreaVector t the caller has computed, is degenerate
+// (the squares test on t, else triangle_degenerate_kind).
+SHADETOOL_INLINE bool triangle_is_degenerate(const TriangleAreaVector& t, const double* positions, std::uint32_t v0,
+                                             std::uint32_t v1, std::uint32_t v2) {
+  bool zero_area = false;
+  if (triangle_zero_area_by_squares(dot(t.N, t.N), t.la, t.lb, zero_area)) return zero_area;
+  return triangle_degenerate_kind(positions, v0, v1, v2) != DegenerateKind::None;
+}
+
+// Kind of face f. scratch: reused storage for the repeated-index test of large polygons.
+DegenerateKind face_degenerate_kind(const Mesh& mesh, std::size_t f, std::vector<std::uint32_t>& scratch);
+DegenerateKind face_degenerate_kind(const Mesh& mesh, std::size_t f);
+
+// Whether a polygon's corner list uses one vertex twice.
+bool has_repeated_index(const std::uint32_t* corner_vertex, std::uint32_t n, std::vector<std::uint32_t>& scratch);
+
+}  // namespace shadetool

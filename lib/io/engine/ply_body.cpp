@@ -1,0 +1,379 @@
+// ply_body.cpp: the PLY body (see ply_body.h).
+#include <shadetool/io/engine/ply_body.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include <shadetool/core/error.h>
+#include <shadetool/core/engine/bulk_reserve.h>
+#include <shadetool/io/text_parse.h>
+
+namespace shadetool::io::ply {
+
+namespace {
+
+// ---- the body reader: one interface over ascii tokens and binary values
+
+class BodyReader {
+ public:
+  BodyReader(const char* p, const char* end, Encoding enc, const std::string& name, std::size_t line)
+      : p_(p), end_(end), enc_(enc), swap_(host_is_little() != (enc == Encoding::BinaryLE)), name_(name), line_(line) {}
+
+  bool ascii() const { return enc_ == Encoding::Ascii; }
+  std::size_t remaining() const { return std::size_t(end_ - p_); }
+  std::size_t line() const { return ascii() ? line_ : 0; }
+  const char* pos() const { return p_; }
+  const char* end() const { return end_; }
+  bool swap() const { return swap_; }
+  void advance(std::size_t n) { p_ += n; }
+
+  // Where we are, for messages: ascii gives the line; binary names the element and item.
+  [[noreturn]] void error(const std::string& what) const { fail(name_, line(), what); }
+
+  double scalar(Type t, const char* what) {
+    if (ascii()) {
+      skip_ascii_space();
+      if (p_ == end_) error(std::string("file ends early, in ") + what);
+      double v;
+      const char* b = p_;
+      if (!parse_double(p_, end_, v)) error(std::string("malformed number '") + token_at(b, end_) + "' in " + what);
+      return v;
+    }
+    const std::size_t s = type_size(t);
+    if (remaining() < s) error(std::string("file is truncated: it ends in ") + what);
+    const double v = load_as_double(p_, t, swap_);
+    p_ += s;
+    return v;
+  }
+
+  std::int64_t integer(Type t, const char* what) {
+    if (ascii()) {
+      skip_ascii_space();
+      if (p_ == end_) error(std::string("file ends early, in ") + what);
+      std::int64_t v;
+      const char* b = p_;
+      if (!parse_int64(p_, end_, v) || (p_ < end_ && !is_space_or_newline(*p_)))
+        error(std::string("malformed integer '") + token_at(b, end_) + "' in " + what);
+      return v;
+    }
+    const std::size_t s = type_size(t);
+    if (remaining() < s) error(std::string("file is truncated: it ends in ") + what);
+    const std::int64_t v = load_as_int(p_, t, swap_);
+    p_ += s;
+    return v;
+  }
+
+  void skip_ascii_space() {
+    while (p_ < end_ && is_space_or_newline(*p_)) {
+      if (*p_ == '\n') ++line_;
+      ++p_;
+    }
+  }
+
+ private:
+  const char* p_;
+  const char* end_;
+  Encoding enc_;
+  bool swap_;
+  const std::string& name_;
+  std::size_t line_;
+};
+
+std::string element_item(const Element& e, std::uint64_t i) {
+  return e.name + " " + std::to_string(i) + " of " + std::to_string(e.count);
+}
+
+// Smallest number of body bytes one item of `e` can take: bounds header counts by the file size.
+std::size_t min_item_bytes(const Element& e, Encoding enc) {
+  std::size_t s = 0;
+  for (const auto& p : e.props) s += enc == Encoding::Ascii ? 2 : type_size(p.is_list ? p.count_type : p.type);
+  return s;
+}
+
+// Fast path for binary vertex records of scalars only: the positions of every vertex, at fixed
+// offsets, by declared type (float x y z in native order, the common case, without a switch).
+// Other kept properties are left to the general loop, which then starts at 0; returns how many
+// vertices were read here (all of them, or 0).
+std::size_t read_binary_vertices_fast(const Element& e, BodyReader& in, Mesh& mesh) {
+  std::size_t record = 0, ox = 0, oy = 0, oz = 0;
+  bool only_xyz_float = true;
+  for (const auto& p : e.props) {
+    if (p.is_list) return 0;
+    if (p.target == Target::X) ox = record;
+    else if (p.target == Target::Y) oy = record;
+    else if (p.target == Target::Z) oz = record;
+    else if (p.target != Target::Skip) return 0;
+    if (p.target != Target::Skip && p.type != Type::Float32) only_xyz_float = false;
+    record += type_size(p.type);
+  }
+  const std::size_t n = std::size_t(e.count);
+  if (n == 0 || n * record > in.remaining()) return 0;  // the general loop reports the truncation
+  const char* base = in.pos();
+  reserve_bulk(mesh.positions, 3 * n);
+  mesh.positions.resize(3 * n);
+  double* out = mesh.positions.data();
+  if (only_xyz_float && !in.swap()) {
+    for (std::size_t i = 0; i < n; ++i, base += record) {
+      float x, y, z;
+      std::memcpy(&x, base + ox, 4);
+      std::memcpy(&y, base + oy, 4);
+      std::memcpy(&z, base + oz, 4);
+      out[3 * i] = x;
+      out[3 * i + 1] = y;
+      out[3 * i + 2] = z;
+    }
+  } else {
+    Type tx = Type::Float32, ty = Type::Float32, tz = Type::Float32;
+    for (const auto& p : e.props) {
+      if (p.target == Target::X) tx = p.type;
+      if (p.target == Target::Y) ty = p.type;
+      if (p.target == Target::Z) tz = p.type;
+    }
+    for (std::size_t i = 0; i < n; ++i, base += record) {
+      out[3 * i] = load_as_double(base + ox, tx, in.swap());
+      out[3 * i + 1] = load_as_double(base + oy, ty, in.swap());
+      out[3 * i + 2] = load_as_double(base + oz, tz, in.swap());
+    }
+  }
+  in.advance(n * record);
+  return n;
+}
+
+// Fast path for binary faces that are only `list uchar int|uint vertex_indices` holding
+// triangles: reads until the first face that is not a valid triangle (returns how many it read;
+// the general loop goes on from there and reports any error).
+std::size_t read_binary_triangles_fast(const Element& e, BodyReader& in, std::uint64_t nv, Mesh& mesh) {
+  if (e.props.size() != 1 || e.props[0].target != Target::Indices || e.props[0].count_type != Type::UInt8 ||
+      (e.props[0].type != Type::Int32 && e.props[0].type != Type::UInt32))
+    return 0;
+  const std::size_t n = std::size_t(e.count);
+  const bool swap = in.swap();
+  const char* p = in.pos();
+  const char* const end = in.end();
+  const std::size_t fit = std::min<std::size_t>(n, in.remaining() / 13);
+  if (mesh.corner_vertex.size() + 3 * fit >= std::numeric_limits<std::uint32_t>::max()) return 0;
+  const std::size_t first_corner = mesh.corner_vertex.size(), first_face = mesh.face_start.size();
+  reserve_bulk(mesh.corner_vertex, first_corner + 3 * fit);
+  reserve_bulk(mesh.face_start, first_face + fit);
+  mesh.corner_vertex.resize(first_corner + 3 * fit);
+  mesh.face_start.resize(first_face + fit);
+  std::uint32_t* cv = mesh.corner_vertex.data() + first_corner;
+  std::uint32_t* fs = mesh.face_start.data() + first_face;
+  std::size_t f = 0;
+  for (; f < fit && end - p >= 13 && p[0] == 3; ++f, p += 13) {
+    const std::uint32_t a = load<std::uint32_t>(p + 1, swap), b = load<std::uint32_t>(p + 5, swap),
+                        c = load<std::uint32_t>(p + 9, swap);
+    if (a >= nv || b >= nv || c >= nv) break;  // (negative int32 indices are huge as uint32)
+    cv[3 * f] = a;
+    cv[3 * f + 1] = b;
+    cv[3 * f + 2] = c;
+    fs[f] = std::uint32_t(first_corner + 3 * (f + 1));
+  }
+  mesh.corner_vertex.resize(first_corner + 3 * f);
+  mesh.face_start.resize(first_face + f);
+  in.advance(std::size_t(p - in.pos()));
+  return f;
+}
+
+
+// The vertex element: positions (fast path for binary scalar records), normals, colours, and
+// per-vertex texcoords into `vtexcoords` (u v per vertex; they become per-corner at the end).
+void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& in, Mesh& mesh,
+                         std::vector<double>& vtexcoords, const std::string& name) {
+  if (layout.num_vertices() > std::numeric_limits<std::uint32_t>::max()) fail(name, e.line, "too many vertices (more than 2^32)");
+  const std::size_t n = std::size_t(e.count);
+  std::size_t i = in.ascii() ? 0 : read_binary_vertices_fast(e, in, mesh);
+  if (i == 0) {
+    reserve_bulk(mesh.positions, 3 * n);
+    mesh.positions.assign(3 * n, 0.0);
+  }
+  if (layout.has_vnormals()) mesh.vertex_normals.assign(3 * n, 0.0);
+  if (layout.has_vcolors()) mesh.vertex_colors.assign(std::size_t(layout.channels()) * n, 1.0f);
+  if (layout.has_vtex()) vtexcoords.assign(2 * n, 0.0);
+  if (layout.vquality) mesh.vertex_quality.assign(n, 0.0f);
+  for (; i < n; ++i) {
+    for (const auto& prop : e.props) {
+      if (prop.is_list) {
+        const std::int64_t k = in.integer(prop.count_type, "a vertex list count");
+        if (k < 0) in.error("negative list count in " + element_item(e, i));
+        for (std::int64_t j = 0; j < k; ++j) in.scalar(prop.type, "a vertex list");
+        continue;
+      }
+      const double v = in.scalar(prop.type, "vertex data");
+      switch (prop.target) {
+        case Target::X: mesh.positions[3 * i] = v; break;
+        case Target::Y: mesh.positions[3 * i + 1] = v; break;
+        case Target::Z: mesh.positions[3 * i + 2] = v; break;
+        case Target::NX: case Target::NY: case Target::NZ:
+          if (layout.has_vnormals()) mesh.vertex_normals[3 * i + std::size_t(int(prop.target) - int(Target::NX))] = v;
+          break;
+        case Target::R: case Target::G: case Target::B: case Target::A:
+          if (layout.has_vcolors())
+            mesh.vertex_colors[std::size_t(layout.channels()) * i + std::size_t(int(prop.target) - int(Target::R))] =
+                float(v / color_divisor(prop.type));
+          break;
+        case Target::U: if (layout.has_vtex()) vtexcoords[2 * i] = v; break;
+        case Target::V: if (layout.has_vtex()) vtexcoords[2 * i + 1] = v; break;
+        case Target::Quality: mesh.vertex_quality[i] = float(v); break;
+        default: break;
+      }
+    }
+  }
+}
+
+// The face element: index lists (fast path for binary triangles), face normals and colours, and
+// MeshLab's per-corner `texcoord` lists.
+void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in, Mesh& mesh, const std::string& name) {
+  const std::size_t n = std::size_t(e.count);
+  reserve_bulk(mesh.face_start, n + 1);
+  reserve_bulk(mesh.corner_vertex, std::min<std::size_t>(3 * n, in.remaining()));
+  if (layout.has_fnormals()) mesh.face_normals.assign(3 * n, 0.0);
+  if (layout.has_fcolors()) mesh.face_colors.assign(std::size_t(layout.channels()) * n, 1.0f);
+  if (layout.fquality) mesh.face_quality.assign(n, 0.0f);
+  std::vector<double> wedge;  // texcoord list of the current face
+  std::vector<double> corner_tex;
+  std::size_t i = 0;
+  if (!in.ascii()) i = read_binary_triangles_fast(e, in, layout.num_vertices(), mesh);
+  for (; i < n; ++i) {
+    if (in.ascii()) in.skip_ascii_space();
+    const std::size_t item_line = in.line();
+    bool have_wedge = false;
+    wedge.clear();
+    for (const auto& prop : e.props) {
+      if (prop.is_list) {
+        const std::int64_t k = in.integer(prop.count_type, "a face list count");
+        if (k < 0) in.error("negative list count in " + element_item(e, i));
+        if (!in.ascii() && std::uint64_t(k) > in.remaining() / type_size(prop.type))
+          in.error("file is truncated: it ends in " + element_item(e, i));
+        if (prop.target == Target::Indices) {
+          if (k < 3)
+            fail(name, item_line, element_item(e, i) + " has " + std::to_string(k) +
+                                      (k == 1 ? " vertex" : " vertices") + " (a face needs at least 3)");
+          for (std::int64_t j = 0; j < k; ++j) {
+            const std::int64_t idx = in.integer(prop.type, "a face's vertex indices");
+            if (idx < 0 || std::uint64_t(idx) >= layout.num_vertices())
+              fail(name, in.line(), element_item(e, i) + ": vertex index " + std::to_string(idx) +
+                                        " out of range (" + std::to_string(layout.num_vertices()) + " vertices)");
+            mesh.corner_vertex.push_back(std::uint32_t(idx));
+          }
+          if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 1)
+            in.error("too many face corners (more than 2^32)");
+          mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
+        } else if (prop.target == Target::TexcoordList) {
+          have_wedge = true;
+          for (std::int64_t j = 0; j < k; ++j) wedge.push_back(in.scalar(prop.type, "a face's texcoord list"));
+        } else {
+          for (std::int64_t j = 0; j < k; ++j) in.scalar(prop.type, "a face list");
+        }
+        continue;
+      }
+      const double v = in.scalar(prop.type, "face data");
+      switch (prop.target) {
+        case Target::NX: case Target::NY: case Target::NZ:
+          if (layout.has_fnormals()) mesh.face_normals[3 * i + std::size_t(int(prop.target) - int(Target::NX))] = v;
+          break;
+        case Target::R: case Target::G: case Target::B: case Target::A:
+          if (layout.has_fcolors())
+            mesh.face_colors[std::size_t(layout.channels()) * i + std::size_t(int(prop.target) - int(Target::R))] =
+                float(v / color_divisor(prop.type));
+          break;
+        case Target::Quality: mesh.face_quality[i] = float(v); break;
+        default: break;
+      }
+    }
+    if (layout.face_texcoords) {
+      const std::size_t size = mesh.face_size(i);
+      if (!have_wedge || wedge.size() != 2 * size)
+        fail(name, item_line, element_item(e, i) + ": texcoord list has " + std::to_string(wedge.size()) +
+                                  " values, expected " + std::to_string(2 * size) + " (u v per corner)");
+      corner_tex.insert(corner_tex.end(), wedge.begin(), wedge.end());
+    }
+  }
+  if (layout.face_texcoords) {
+    mesh.texcoords = std::move(corner_tex);
+    mesh.texcoord_dims = 2;
+    mesh.corner_texcoord_index.resize(mesh.corner_vertex.size());
+    for (std::size_t c = 0; c < mesh.corner_texcoord_index.size(); ++c) mesh.corner_texcoord_index[c] = std::uint32_t(c);
+  }
+}
+
+// An element we do not keep: skipped by its declared types, counted in a note.
+void skip_element(const Element& e, BodyReader& in, ReadInfo& info) {
+  // An element we do not keep: skipped by its declared types. One without properties takes no
+  // bytes in either encoding (looping over its claimed count would hang on a count like 2^60).
+  bool fixed = !in.ascii() || e.props.empty();
+  std::size_t size = 0;
+  for (const auto& prop : e.props) {
+    fixed = fixed && !prop.is_list;
+    size += type_size(prop.type);
+  }
+  if (fixed) {
+    if (e.count * size > in.remaining()) in.error("file is truncated: it ends in the " + e.name + " elements");
+    in.advance(std::size_t(e.count) * size);
+    return;
+  }
+  for (std::uint64_t i = 0; i < e.count; ++i)
+    for (const auto& prop : e.props) {
+      if (prop.is_list) {
+        const std::int64_t k = in.integer(prop.count_type, "a list count");
+        if (k < 0) in.error("negative list count in " + element_item(e, i));
+        if (!in.ascii() && std::uint64_t(k) > in.remaining() / type_size(prop.type))
+          in.error("file is truncated: it ends in " + element_item(e, i));
+        for (std::int64_t j = 0; j < k; ++j) in.scalar(prop.type, e.name.c_str());
+      } else {
+        in.scalar(prop.type, e.name.c_str());
+      }
+    }
+  info.notes.push_back("skipped " + std::to_string(e.count) + " '" + e.name + "' elements");
+}
+
+// Whatever follows the last element means the header counts disagree with the body.
+void refuse_trailing_data(BodyReader& in, const std::string& name) {
+  if (in.ascii()) {
+    in.skip_ascii_space();
+    if (in.remaining() > 0)
+      in.error("more data than the header declares ('" + token_at(in.pos(), in.end()) + "' after the last element)");
+  } else {
+    const char* q = in.pos();
+    while (q < in.end() && is_space_or_newline(*q)) ++q;
+    if (q < in.end())
+      fail(name, 0, std::to_string(in.remaining()) + " bytes after the last element: the header counts disagree with the body");
+  }
+
+}
+
+}  // namespace
+
+Mesh read_ply_body(std::string_view bytes, const PlyHeader& header, const PlyLayout& layout, const std::string& name,
+                   ReadInfo& info) {
+  const Encoding enc = header.encoding;
+  BodyReader in(bytes.data() + header.body_offset, bytes.data() + bytes.size(), enc, name, header.lines + 1);
+  Mesh mesh;
+  std::vector<double> vtexcoords;
+  for (const Element& e : header.elements) {
+    // Bound the claimed count by the bytes left before allocating anything for it.
+    const std::size_t min_bytes = min_item_bytes(e, enc);
+    if (min_bytes > 0 && e.count > in.remaining() / min_bytes + (enc == Encoding::Ascii ? 1 : 0))
+      fail(name, e.line, "header claims " + std::to_string(e.count) + " " + e.name + " elements but only " +
+                             std::to_string(in.remaining()) + " bytes of data follow");
+    if (&e == layout.vertex) read_vertex_element(e, layout, in, mesh, vtexcoords, name);
+    else if (&e == layout.face) read_face_element(e, layout, in, mesh, name);
+    else skip_element(e, in, info);
+  }
+  refuse_trailing_data(in, name);
+
+  if (layout.has_vtex() && !layout.face_texcoords) {
+    mesh.texcoords = std::move(vtexcoords);
+    mesh.texcoord_dims = 2;
+    mesh.corner_texcoord_index = mesh.corner_vertex;
+  }
+  mesh.color_channels = layout.channels();
+  mesh.colors_are_float = layout.colors_float;
+  mesh.precision = layout.any_double ? ValuePrecision::Double : ValuePrecision::Float;
+  return mesh;
+}
+
+}  // namespace shadetool::io::ply

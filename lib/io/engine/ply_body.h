@@ -1,0 +1,27 @@
+// ply_body.h (engine, not installed): the PLY body, element by element, by declared type.
+//
+// Inputs:  bytes   the whole file; header  parse_ply_header's result; layout  map_ply_properties's
+//          name    for messages
+// Output:  the Mesh: positions, faces and the attributes the layout keeps; every other element
+//          is skipped by its declared types (a note counts it). Claimed counts are bounded by the
+//          bytes left before anything is allocated. Binary vertex records of scalars and binary
+//          triangle lists take fast paths (plain loads at fixed offsets) that read the same values.
+//          Mesh::precision, colour channels and float-ness are set from the layout.
+// Errors:  truncated or malformed data, indices out of range, faces with fewer than 3 corners,
+//          data after the last element (`NAME:LINE: what` in ascii, `NAME: what` in binary).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/engine/ply_header.h>
+#include <shadetool/io/engine/ply_properties.h>
+#include <shadetool/io/mesh_io.h>
+
+namespace shadetool::io::ply {
+
+Mesh read_ply_body(std::string_view bytes, const PlyHeader& header, const PlyLayout& layout, const std::string& name,
+                   ReadInfo& info);
+
+}  // namespace shadetool::io::ply

@@ -1,0 +1,69 @@
+// format_table.h: every mesh format shadetool reads and writes, one entry each.
+//
+// An entry says everything the rest of the program needs to know about a format: its name and
+// file extensions, how to recognise its bytes, its reader and writer, whether it has a binary
+// and a text form, and which attributes of a Mesh it can hold. Format names in messages, the CLI's
+// option checks (--format, --input-format), --output-dir's extension and the notes about what an
+// output format leaves out are all derived from this table, so adding a format is one entry here
+// (plus its enumerator in mesh_io.h's Format).
+//
+// Inputs/outputs of the functions below:
+//   mesh_formats()            the table, in the order formats are listed to users
+//   format_entry(Format)      the entry of one format (Format::Auto has none: throws Error)
+//   find_format(name)         the entry whose name or one of whose extensions equals `name`,
+//                             any case, without a leading dot; nullptr if none
+//   format_names()            {"obj", "ply", ...}: what CLI option checks accept
+//   format_list(dot)          "obj, ply, off or stl" (dot: ".obj, .ply, .off or .stl"): for messages
+//   detect_format(bytes)      the format whose detect() recognises the bytes, else Format::Auto.
+//                             Detection is a hint for messages and for callers without a file
+//                             name; reading always uses the extension or the format given.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/mesh_io.h>
+
+namespace shadetool {
+
+// How an output format holds one attribute of a Mesh.
+enum class Holds {
+  No,         // left out (a note names it)
+  Yes,        // written as it is
+  Converted,  // written in another form (corner normals as split vertices, face colours as split
+              // vertex colours, a per-vertex attribute as per-corner ...); a note may say so
+};
+
+// What a format holds, attribute by attribute (as written; readers may accept more forms).
+struct FormatAttributes {
+  Holds vertex_normals = Holds::No;
+  Holds corner_normals = Holds::No;
+  Holds face_normals = Holds::No;
+  Holds texcoords = Holds::No;
+  Holds vertex_colors = Holds::No;
+  Holds face_colors = Holds::No;
+  Holds groups = Holds::No;  // materials and groups (OBJ mtllib, usemtl, g, o, s)
+  Holds quality = Holds::No;  // vertex_quality / face_quality (PLY `quality`)
+};
+
+struct FormatEntry {
+  Format format;
+  const char* name;                     // lower case, as on the command line: "obj"
+  std::vector<const char*> extensions;  // lower case, no dot; the first is what writers name files
+  bool (*detect)(std::string_view bytes);
+  Mesh (*read)(std::string_view bytes, const std::string& name, ReadInfo& info);
+  void (*write)(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info);
+  bool has_binary_form;                 // --ascii / --binary choose between two forms
+  FormatAttributes holds;
+};
+
+const std::vector<FormatEntry>& mesh_formats();
+const FormatEntry& format_entry(Format format);
+const FormatEntry* find_format(std::string_view name_or_extension);
+std::vector<std::string> format_names();
+std::string format_list(bool with_dots);
+Format detect_format(std::string_view bytes);
+
+}  // namespace shadetool

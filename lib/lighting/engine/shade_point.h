@@ -1,0 +1,138 @@
+// engine/shade_point.h: the per-point loop around lighting_equation.h, in a shading space with
+// metric G (engine/metric.h): the normal's length, V, and per light L, the distance, attenuation
+// and spot factor; then lighting_equation.h's add_light_term. Internal: not installed.
+//
+// Order of work per light (what is skipped is counted in ShadeCounters):
+//   1. sign of n.(position - p), no square root: back-facing lights without an ambient term stop.
+//   2. distance, then the spot-cone test: points outside the cone stop.
+//   3. attenuation, spot exponent (pow), diffuse, specular (pow).
+// kEarlyTests = false (SkipOptions::early_tests off, for bench/lighting and the tests that prove
+// the skips change no bit) computes every step for every light and adds the zeros.
+//
+// Every switch over LightType here is exhaustive (no default): a new kind fails to compile
+// (-Wswitch) until it has its own branch. Ambient lights never reach this loop (plan_lighting
+// folds them into the constant base).
+#pragma once
+
+#include <cmath>
+
+#include <shadetool/lighting/lighting_equation.h>
+#include <shadetool/lighting/shade_points.h>
+#include <shadetool/lighting/shading_space.h>
+#include <shadetool/lighting/engine/metric.h>
+
+namespace shadetool {
+namespace lighting_engine {
+
+// What the per-point evaluation needs besides the frame.
+struct EquationSetup {
+  ShadingModel model = ShadingModel::BlinnPhong;
+  bool specular = false;     // plan.specular
+  bool view = false;         // plan.view
+  bool two_sided = false;
+  double shininess = 0;
+  Vec3d base{0, 0, 0};       // plan.base
+};
+
+#if defined(__GNUC__)
+#define SHADETOOL_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define SHADETOOL_ALWAYS_INLINE inline
+#endif
+
+// The colour at p (in the frame's space) with normal n (in the frame's space, any length).
+// Always inlined into the per-point loop (see bench/lighting/results.md for why).
+template <bool kEarlyTests, class Metric>
+SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame,
+                                                   const EquationSetup& eq, const Vec3d& p, Vec3d n,
+                                                   ShadeCounters& count) {
+  ++count.points;
+  Vec3d color = eq.base;
+
+  const double n2 = g.conorm2(n);
+  double n_scale = 0;  // 1 / |n|_{G^-1}; 0 leaves only the ambient terms
+  if (n2 > 0 && std::isfinite(n2)) {
+    n_scale = 1.0 / std::sqrt(n2);
+  } else {
+    n = {0, 0, 0};
+    ++count.zero_normals;
+  }
+
+  Vec3d V{0, 0, 0}, V_lowered{0, 0, 0};
+  double v_unit = 0;  // |V|^2: 1, or 0 at the eye
+  double n_dot_v = 0;
+  if (eq.view) {
+    const UnitAndLength eye_dir = metric_normalize(g, frame.eye - p);
+    if (eye_dir.length > 0) {
+      V = eye_dir.unit;
+      V_lowered = g.lower(V);
+      v_unit = 1;
+      n_dot_v = dot(n, V) * n_scale;
+    }
+    if (eq.two_sided && n_dot_v < 0) {
+      n = -n;
+      n_dot_v = -n_dot_v;
+    }
+  }
+
+  for (const SpaceLight& light : frame.lights) {
+    ++count.vertex_light_evaluations;
+    const bool with_ambient = light.has_ambient || !kEarlyTests;
+    Vec3d L;             // unit (in G) toward the light
+    double n_dot_l = 0;  // unit-normal n . L
+    double att_spot = 1;
+    switch (light.type) {
+      case LightType::Ambient:  // folded into eq.base by plan_lighting; never in frame.lights
+        continue;
+      case LightType::Directional:
+        L = light.to_light;
+        n_dot_l = dot(n, L) * n_scale;
+        if (kEarlyTests && !(n_dot_l > 0) && !light.has_ambient) {
+          ++count.back_facing;
+          continue;
+        }
+        break;
+      case LightType::Point:
+      case LightType::Spot: {
+        const Vec3d to_light = light.position - p;
+        if (kEarlyTests && !(dot(n, to_light) > 0) && !light.has_ambient) {  // sign of n.L, no sqrt
+          ++count.back_facing;
+          continue;
+        }
+        const UnitAndLength light_dir = metric_normalize(g, to_light);
+        const double d = light_dir.length;
+        if (!(d > 0)) {  // the point is at the light: L and att undefined, the light adds nothing
+          ++count.at_light;
+          continue;
+        }
+        L = light_dir.unit;
+        double spot = 1;
+        if (light.cone) {
+          const double cos_t = -dot(L, light.axis_lowered);
+          if (kEarlyTests && cos_t < light.cos_cutoff) {
+            ++count.outside_cone;
+            continue;
+          }
+          spot = spot_factor(cos_t, light.cos_cutoff, light.exponent);
+        }
+        // kc, kl, kq >= 0, not all zero, and d > 0: the denominator is positive.
+        att_spot = spot / attenuation_denominator(light.kc, light.kl, light.kq, d);
+        n_dot_l = dot(n, L) * n_scale;
+        break;
+      }
+    }
+
+    const bool with_specular = eq.specular && light.has_specular;
+    double spec = 0;
+    if (with_specular && (n_dot_l > 0 || !kEarlyTests)) {
+      const double l_dot_v = dot(L, V_lowered);
+      spec = eq.model == ShadingModel::BlinnPhong ? specular_blinn_phong(n_dot_l, n_dot_v, l_dot_v, v_unit, eq.shininess)
+                                                  : specular_phong(n_dot_l, n_dot_v, l_dot_v, eq.shininess);
+    }
+    add_light_term(color, light.products, att_spot, n_dot_l, spec, with_ambient, with_specular);
+  }
+  return color;
+}
+
+}  // namespace lighting_engine
+}  // namespace shadetool
