@@ -20,29 +20,16 @@ cmake_minimum_required(VERSION 3.18)
 project(consumer CXX)
 set(CMAKE_CXX_STANDARD 17)
 find_package(shadetool REQUIRED)
-add_executable(consumer main.cpp)
+add_executable(consumer main.cpp umbrella.cpp)
 target_link_libraries(consumer PRIVATE shadetool::shadetool)
 CM
-cat > "$tmp/consumer/main.cpp" <<'CPP'
-#include <cmath>
-#include <cstdio>
-#include <shadetool/io/mesh_io.h>
-#include <shadetool/normals/vertex_normals.h>
-#include <shadetool/shadetool.h>
-int main(int argc, char** argv) {
-  if (argc < 2) return 2;
-  shadetool::Mesh mesh = shadetool::read_mesh(argv[1]);
-  shadetool::VertexNormals n = shadetool::vertex_normals(mesh, shadetool::Weighting::Angle);
-  // Every normal of a closed torus is a unit vector.
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    const double* p = &n.normals[3 * v];
-    if (std::fabs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1) > 1e-12) return 1;
-  }
-  std::printf("%zu vertices\n", mesh.num_vertices());
-  return 0;
-}
-CPP
+# The program is the README's "Using the library" example, verbatim; a second file includes the
+# umbrella header, so every installed header must compile on its own terms.
+sed -n '/^\/\/ my_app.cpp/,/^```$/p' "$src/README.md" | sed '$d' > "$tmp/consumer/main.cpp"
+grep -q 'int main' "$tmp/consumer/main.cpp" || fail "README has no my_app.cpp example"
+printf '#include <shadetool/shadetool.h>\nint umbrella_compiles = 1;\n' > "$tmp/consumer/umbrella.cpp"
 
+expected="1152 vertices, 2304 faces"
 check_prefix() {  # kind prefix
   local kind=$1 prefix=$2
   [ -f "$prefix/include/shadetool/shadetool.h" ] || fail "$kind: no umbrella header"
@@ -51,16 +38,17 @@ check_prefix() {  # kind prefix
   # via CMake
   cmake -S "$tmp/consumer" -B "$tmp/b-$kind" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
   cmake --build "$tmp/b-$kind" > /dev/null
-  out=$(LD_LIBRARY_PATH="$prefix/lib" "$tmp/b-$kind/consumer" "$src/data/torus.obj")
-  [ "$out" = "1152 vertices" ] || fail "$kind CMake consumer printed: $out"
+  out=$(LD_LIBRARY_PATH="$prefix/lib" "$tmp/b-$kind/consumer" "$src/data/torus.obj" "$tmp/out-$kind.ply")
+  [ "$out" = "$expected" ] || fail "$kind CMake consumer printed: $out"
+  "$bin" info "$tmp/out-$kind.ply" | grep -q 'vertex normals' || fail "$kind: the written PLY has no normals"
   ok "$kind library through find_package(shadetool)"
   # via pkg-config
   local pc="$prefix/lib/pkgconfig"; [ -d "$pc" ] || pc=$(dirname "$(find "$prefix" -name shadetool.pc | head -n 1)")
   local flags; flags=$(PKG_CONFIG_PATH="$pc" pkg-config --cflags --libs $3 shadetool)
   # shellcheck disable=SC2086
-  g++ "$tmp/consumer/main.cpp" -o "$tmp/pc-$kind" $flags
-  out=$(LD_LIBRARY_PATH="$(dirname "$pc")" "$tmp/pc-$kind" "$src/data/torus.obj")
-  [ "$out" = "1152 vertices" ] || fail "$kind pkg-config consumer printed: $out"
+  g++ "$tmp/consumer/main.cpp" "$tmp/consumer/umbrella.cpp" -o "$tmp/pc-$kind" $flags
+  out=$(LD_LIBRARY_PATH="$(dirname "$pc")" "$tmp/pc-$kind" "$src/data/torus.obj" "$tmp/pc-$kind.ply")
+  [ "$out" = "$expected" ] || fail "$kind pkg-config consumer printed: $out"
   ok "$kind library through pkg-config ($flags)"
 }
 

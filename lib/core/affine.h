@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 #include <shadetool/core/vec3.h>
 
@@ -78,7 +79,15 @@ inline Vec3d transform_vector(const Affine3d& M, const Vec3d& v) { return M.A * 
 
 // Normal transform, unnormalised: sign(det A) cof(A) n, so outward stays outward also for mirrors
 // (whose faces are re-wound). Pass cof = cofactor(M.A) and its sign once per mesh.
-inline Vec3d transform_normal(const Mat3d& signed_cofactor, const Vec3d& n) { return signed_cofactor * n; }
+inline Normal3d transform_normal(const Mat3d& signed_cofactor, const Normal3d& n) {
+  return Normal3d(signed_cofactor * static_cast<const Vec3d&>(n));
+}
+// A normal is not a point or a direction: mapping it by A is the mistake these make impossible.
+// (Templates, so that a braced {x, y, z} still means a point, not an ambiguity.)
+template <class N, std::enable_if_t<std::is_same_v<N, Normal3d>, int> = 0>
+Vec3d transform_point(const Affine3d& M, const N& n) = delete;
+template <class N, std::enable_if_t<std::is_same_v<N, Normal3d>, int> = 0>
+Vec3d transform_vector(const Affine3d& M, const N& n) = delete;
 inline Mat3d signed_cofactor(const Mat3d& A) {
   Mat3d c = cofactor(A);
   if (determinant(A) < 0)

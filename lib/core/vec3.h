@@ -1,10 +1,9 @@
 // vec3.h: a small 3-vector used by every kernel.
 //
 // Storage in shadetool is flat arrays of double (#V by 3); Vec3<T> is the value type the kernels
-// compute with. Points, directions and normals share this type; what distinguishes them is how
-// they transform, and lib/core/affine.h names those transforms apart (transform_point,
-// transform_vector, transform_normal) so a normal cannot be pushed through the point map by
-// accident.
+// compute with for points and directions; normals have their own type, Normal3 (below), because
+// they transform differently: lib/core/affine.h's transform_normal takes only a Normal3, and
+// transform_point / transform_vector refuse one, so neither mistake compiles.
 #pragma once
 
 #include <cmath>
@@ -31,6 +30,20 @@ struct Vec3 {
 
 using Vec3d = Vec3<double>;
 using Vec3f = Vec3<float>;
+
+// A surface normal: a Vec3 that transforms by the cofactor of the map (core/affine.h,
+// transform_normal), never by the map itself. Its own type (pbrt-v4's Normal3) so that a point or
+// a direction cannot be passed where a normal is transformed: Normal3 converts to Vec3 (for dot,
+// cross, length), but a Vec3 becomes a Normal3 only by saying so, Normal3d(v). No cost: the same
+// three values.
+template <class T>
+struct Normal3 : Vec3<T> {
+  constexpr Normal3() = default;
+  constexpr Normal3(T x_, T y_, T z_) : Vec3<T>(x_, y_, z_) {}
+  constexpr explicit Normal3(const Vec3<T>& v) : Vec3<T>(v) {}
+};
+
+using Normal3d = Normal3<double>;
 
 template <class T> constexpr Vec3<T> operator+(Vec3<T> a, const Vec3<T>& b) { return a += b; }
 template <class T> constexpr Vec3<T> operator-(Vec3<T> a, const Vec3<T>& b) { return a -= b; }

@@ -36,10 +36,16 @@ DegenerateKind triangle_degenerate_kind(const double* P, std::uint32_t v0, std::
 }
 
 DegenerateKind face_degenerate_kind(const Mesh& mesh, std::size_t f, std::vector<std::uint32_t>& scratch) {
+  const std::uint32_t b = mesh.face_start[f], n = mesh.face_start[f + 1] - b;
+  if (n < 3) return DegenerateKind::TooFewCorners;
+  if (has_repeated_index(mesh.corner_vertex.data() + b, n, scratch)) return DegenerateKind::RepeatedIndex;
+  return face_area_kind(mesh, f);
+}
+
+DegenerateKind face_area_kind(const Mesh& mesh, std::size_t f) {
   const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1], n = e - b;
   const std::uint32_t* cv = mesh.corner_vertex.data() + b;
   if (n < 3) return DegenerateKind::TooFewCorners;
-  if (has_repeated_index(cv, n, scratch)) return DegenerateKind::RepeatedIndex;
   const double* P = mesh.positions.data();
   if (n == 3) return triangle_degenerate_kind(P, cv[0], cv[1], cv[2]);
   // Polygon: Newell's sum about p0 against the bound its rounding scales with.

@@ -2,7 +2,8 @@
 // and normals (which faces contribute nothing).
 //
 // Inputs:  mesh  positions #V by 3, a face f (any corner count)
-// Output:  DegenerateKind of face f, tested in this order:
+// Output:  DegenerateKind of face f, tested in this order (the last three: face_area_kind, the
+//          part normals use, see there):
 //   TooFewCorners  fewer than 3 corners
 //   RepeatedIndex  a vertex index used at two corners ((a, a, b) has no winding of its own)
 //   NonFinite      a corner position, the area vector or its bound is NaN or Inf (positions
@@ -69,6 +70,9 @@ SHADETOOL_INLINE bool triangle_kind_by_squares(const Vec3d& p0, const Vec3d& p1,
 
 // Kind of triangle (v0, v1, v2) from its positions only: None, ZeroArea or NonFinite (a repeated
 // index gives a zero edge and so ZeroArea here; face_degenerate_kind names it RepeatedIndex).
+#if defined(__GNUC__)
+__attribute__((cold))
+#endif
 DegenerateKind triangle_degenerate_kind(const double* positions, std::uint32_t v0, std::uint32_t v1, std::uint32_t v2);
 
 // Whether triangle (v0, v1, v2), whose TriangleAreaVector t the caller has computed, is degenerate
@@ -83,6 +87,13 @@ SHADETOOL_INLINE bool triangle_is_degenerate(const TriangleAreaVector& t, const 
 // Kind of face f. scratch: reused storage for the repeated-index test of large polygons.
 DegenerateKind face_degenerate_kind(const Mesh& mesh, std::size_t f, std::vector<std::uint32_t>& scratch);
 DegenerateKind face_degenerate_kind(const Mesh& mesh, std::size_t f);
+
+// The area part of the rule alone (TooFewCorners, NonFinite, ZeroArea or None; no index test):
+// whether face f has an area vector, i.e. a normal. Normals use this: a face with a repeated
+// index (a quad (a, a, b, c) is the triangle (a, b, c)) has no winding of its own, so info counts
+// it and repair removes it, but when it still has area its normal is well defined and it
+// contributes to its vertices' normals. A face without area is degenerate for all three.
+DegenerateKind face_area_kind(const Mesh& mesh, std::size_t f);
 
 // Whether a polygon's corner list uses one vertex twice.
 bool has_repeated_index(const std::uint32_t* corner_vertex, std::uint32_t n, std::vector<std::uint32_t>& scratch);

@@ -18,7 +18,7 @@
 //      formula for arctangent; e.g. Muller, "Elementary Functions", 3rd ed., ch. 5);
 //   3. series: atan(x) = x (1 - z/3 + z^2/5 - ... + z^6/13), z = x^2 (Taylor), evaluated by
 //      Estrin's scheme; the first omitted term x^15/15 is below 2e-19 relative.
-// Accuracy: within 4 ulp of std::atan2 (tests/normals/interior_angle.cpp), in double. The float
+// Accuracy: within 4 ulp of std::atan2 (tests/geometry/interior_angle.cpp), in double. The float
 // kernels call the double version too (converting in and out): an angle costs the same either way.
 #pragma once
 

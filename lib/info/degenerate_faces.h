@@ -2,7 +2,8 @@
 //
 // Inputs:  mesh  positions (V*3), face_start (F+1), corner_vertex (C)
 // Outputs: DegenerateFaces, counted by the one rule of geometry/degenerate_face.h (the rule repair
-//          removes by and normals skips by, so the three agree face for face):
+//          removes by and normals skips by, so the three agree face for face; normals still use a
+//          repeated-index face that has area):
 //   repeated_index  faces that use one vertex index at more than one corner
 //   zero_area       faces whose area vector vanishes to rounding (|N| <= 64 eps |a| |b|, a and b
 //                   a triangle's two shortest edges; the Newell sum against its bound for a

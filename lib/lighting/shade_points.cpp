@@ -37,7 +37,7 @@ ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const Equa
     Vec3d n{normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
     if (frame.transform) {
       if (map_points) p = transform_point(frame.space_from_object, p);
-      n = transform_normal(frame.normal_to_space, n);
+      n = transform_normal(frame.normal_to_space, Normal3d(n));
     }
     const Vec3d c = lighting_engine::shade_point_in_space<kEarlyTests>(g, frame, eq, p, n, count);
     out[3 * i] = c.x;

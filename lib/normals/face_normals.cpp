@@ -6,8 +6,8 @@
 // the unit normal once to float (relative error <= 2^-24 per component, so within ~1e-5 deg of
 // Double whatever the triangle's shape or the mesh's scale: 1e-30 and 1e30 included) and widens it
 // back to double. Float therefore costs what Double costs here; it exists so that a float run is
-// float throughout. A degenerate face (geometry/degenerate_face.h: fewer than 3
-// corners, repeated index, non-finite position, zero area to 64 eps) gets (0, 0, 0).
+// float throughout. A face without area (geometry/degenerate_face.h, face_area_kind:
+// fewer than 3 corners, non-finite position, zero area to 64 eps) gets (0, 0, 0).
 #include <shadetool/normals/face_normals.h>
 
 #include <vector>
@@ -25,7 +25,6 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
   const bool triangles = mesh.all_triangles();
-  std::vector<std::uint32_t> scratch;
   for (std::size_t f = f_begin; f < f_end; ++f) {
     Vec3d N;
     bool degenerate;
@@ -36,7 +35,7 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
       degenerate = triangle_is_degenerate(t, P, cv[c], cv[c + 1], cv[c + 2]);
     } else {
       N = newell_area_vector(mesh, f);
-      degenerate = face_degenerate_kind(mesh, f, scratch) != DegenerateKind::None;
+      degenerate = face_area_kind(mesh, f) != DegenerateKind::None;
     }
     const double l = degenerate ? 0.0 : checked_length(N);
     double* o = out + 3 * f;

@@ -3,8 +3,9 @@
 // Inputs:  mesh      positions #V by 3, faces (triangles or polygons)
 //          precision accumulation precision
 // Output:  #F by 3 flat array of unit normals. Triangles: cross product of the two shortest edges
-//          (best conditioned for slivers); polygons: Newell's method. A degenerate face (zero area,
-//          repeated index, non-finite position) gets (0, 0, 0), never NaN.
+//          (best conditioned for slivers); polygons: Newell's method. A face without area (geometry/degenerate_face.h,
+//          face_area_kind: zero area to 64 eps, non-finite position, fewer than 3 corners) gets
+//          (0, 0, 0), never NaN.
 #pragma once
 
 #include <vector>

@@ -1,14 +1,14 @@
 // vertex_normals.h: one unit normal per vertex from the normals of its faces.
 //
-// n_v = normalise( sum over the corners of v of w_c n_f ), weights per normals/weighting.h and
-// corner_contributions.h (Gouraud 1971; area; Thuermer & Wuethrich 1998; Max 1999). Polygons use
+// n_v = normalise( sum over the corners of v of w_c n_f ), contributions per normals/weighting.h
+// (Gouraud 1971; area; Thuermer & Wuethrich 1998; Max 1999). Polygons use
 // their Newell normal and their own corner at v. Degenerate faces contribute nothing.
 // Precision: contributions are computed in double either way. Double (default) sums in double;
 // Float rounds each contribution once to float (area and max weights after one exact power-of-two
 // scale per mesh, so meshes scaled to 1e-30 or 1e30 work) and sums in float; measured within 1e-3
 // degree of Double (about 1e-5). Threads: for meshes of 32768+ faces the sum is split over TBB
 // threads; the plain call plans the split itself for the angle and Max weightings (one bitmap
-// pass over the corners per thread; it costs half the area kernel, so area and uniform sum
+// pass over the corners per thread; it would cost half the area kernel, so area and uniform sum
 // serially), a VertexNormalsPlan (vertex_normals_plan.h) made once splits every weighting and
 // saves the planning on repeated calls. The result is bitwise the same either way
 // and for any thread count (accumulate_by_vertex.h).
@@ -20,8 +20,10 @@
 //          fallback_vertices  how many vertices had no valid face (isolated, or only degenerate
 //          faces) or whose weighted sum cancelled, and got the documented fallback instead
 //          (never NaN; see vertex_fallback.h)
-//          degenerate_faces  faces that contributed nothing (zero area, repeated index, fewer than
-//          3 corners, non-finite position)
+//          degenerate_faces  faces that contributed nothing: without area by the one rule of
+//          geometry/degenerate_face.h (face_area_kind: fewer than 3 corners, non-finite position,
+//          zero area to 64 eps), the rule info counts and repair removes by (they also count
+//          faces with a repeated index, which contribute here while they have area)
 #pragma once
 
 #include <cstddef>

@@ -5,9 +5,9 @@
 // Input:   mesh   faces (face_start, corner_vertex) and the vertex count; positions are not read
 // Holds:   the chunks of faces that threads sum in parallel and which vertices lie on chunk
 //          borders (accumulate_by_vertex.h): 1 bit per vertex, and each chunk's border faces.
-//          Building costs two passes over the corners (~3 ms per million triangles on 2 threads);
-//          without a plan, the angle and Max calls of vertex_normals pay the first again each
-//          time (~1.5 ms) and the others sum serially.
+//          Building costs two passes over the corners; without a plan, the angle and Max calls
+//          of vertex_normals pay the first again each time and the others sum serially
+//          (figures: bench/normals/results/notes.md).
 // Use:     VertexNormalsPlan plan(mesh);  ... vertex_normals(mesh, plan, weighting, precision, out);
 //          Valid while the mesh's faces and vertex count stay as they were (positions may change:
 //          that is the case it serves, e.g. animation or repeated updates). vertex_normals checks

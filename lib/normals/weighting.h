@@ -3,7 +3,7 @@
 // weightings, as four small scalar functions side by side (as OpenMesh's calc_vertex_normal_fast,
 // _correct, _loop). Every path of the normals kernels computes these formulas; the vectorised
 // triangle kernels (normals/engine/triangle_blocks.h) are tested against them
-// (tests/normals/weightings.cpp).
+// (tests/normals/weighting.cpp).
 //
 // The corner: face area vector N = 2 A n (geometry/face_area_vector.h), |N| = len > 0 (the face is
 // not degenerate by geometry/degenerate_face.h: a degenerate face contributes nothing, under every

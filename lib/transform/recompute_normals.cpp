@@ -1,8 +1,9 @@
 // recompute_normals.cpp: see recompute_normals.h.
 #include <shadetool/transform/recompute_normals.h>
 
+#include <algorithm>
 #include <cstdint>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <shadetool/normals/corner_normals.h>
@@ -17,16 +18,22 @@ namespace {
 // fell back to their vertex normal.
 std::size_t recompute_corner_groups(Mesh& mesh, const std::vector<double>& vertex_n) {
   const std::size_t C = mesh.num_corners();
-  // Group = (vertex, old pool index), numbered in order of first use.
-  std::unordered_map<std::uint64_t, std::uint32_t> group_of;
-  group_of.reserve(C);
-  std::vector<std::uint32_t> corner_group(C);
-  std::vector<std::uint32_t> group_vertex;
-  for (std::size_t c = 0; c < C; ++c) {
-    const std::uint64_t key = (std::uint64_t(mesh.corner_vertex[c]) << 32) | mesh.corner_normal_index[c];
-    auto [it, inserted] = group_of.try_emplace(key, std::uint32_t(group_vertex.size()));
-    if (inserted) group_vertex.push_back(mesh.corner_vertex[c]);
-    corner_group[c] = it->second;
+  // Group = (vertex, old pool index), numbered in order of first use: sort the corners by
+  // (key, corner), so each group is a run whose first entry is its first corner; then number the
+  // runs by first corner (flat arrays, two sorts).
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_key(C);
+  for (std::size_t c = 0; c < C; ++c)
+    by_key[c] = {(std::uint64_t(mesh.corner_vertex[c]) << 32) | mesh.corner_normal_index[c], std::uint32_t(c)};
+  std::sort(by_key.begin(), by_key.end());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;  // (first corner, start in by_key)
+  for (std::size_t i = 0; i < C; ++i)
+    if (i == 0 || by_key[i].first != by_key[i - 1].first) runs.emplace_back(by_key[i].second, std::uint32_t(i));
+  std::sort(runs.begin(), runs.end());
+  std::vector<std::uint32_t> corner_group(C), group_vertex(runs.size());
+  for (std::size_t g = 0; g < runs.size(); ++g) {  // group g = the run with the g-th first corner
+    group_vertex[g] = mesh.corner_vertex[runs[g].first];
+    const std::uint64_t key = by_key[runs[g].second].first;
+    for (std::size_t i = runs[g].second; i < C && by_key[i].first == key; ++i) corner_group[by_key[i].second] = std::uint32_t(g);
   }
   GroupNormals groups = corner_group_normals(mesh, corner_group, group_vertex.size(), Weighting::Angle);
   for (std::uint32_t g : groups.failed) set3(groups.normals, g, get3(vertex_n, group_vertex[g]));

@@ -1,4 +1,4 @@
-// Tests of normals/accumulate_by_vertex.h: the chunked parallel scatter adds every row's terms in
+// Tests of normals/engine/accumulate_by_vertex.h: the chunked parallel scatter adds every row's terms in
 // ascending corner order, exactly as the serial loop, for any thread count and face order.
 #include <catch2/catch.hpp>
 

@@ -238,3 +238,36 @@ TEST_CASE("corner_normals: bitwise the same on 1 and 2 threads", "[corner_normal
   CHECK(one.normals == two.normals);
   CHECK(one.corner_index == two.corner_index);
 }
+
+TEST_CASE("corner_group_normals: given corner_normals' own groups it returns its normals bitwise; "
+          "corners in no group add nothing; bad groups throw", "[corner_normals][groups]") {
+  const AnalyticMesh meshes[] = {irregular(torus(64, 32, 1, 0.4, 0.15, 2)), icosphere(3)};
+  for (const auto& am : meshes)
+    for (Weighting w : kAll)
+      for (Precision p : {Precision::Double, Precision::Float}) {
+        const CornerNormals cn = corner_normals(am.mesh, 30 * kDeg, w, p);
+        const std::size_t G = cn.normals.size() / 3;
+        const GroupNormals g = corner_group_normals(am.mesh, cn.corner_index, G, w, p);
+        CHECK(g.failed.empty());
+        CHECK(g.normals == cn.normals);
+      }
+  // One group holding the corners of face 0 only, the rest in no group: the face's unit normal
+  // (every weighting multiplies it by a positive weight).
+  const Mesh& m = meshes[1].mesh;
+  std::vector<std::uint32_t> group(m.num_corners(), kNoGroup);
+  for (std::uint32_t c = m.face_start[0]; c < m.face_start[1]; ++c) group[c] = 0;
+  const Vec3d p0 = m.position(m.corner_vertex[0]), p1 = m.position(m.corner_vertex[1]), p2 = m.position(m.corner_vertex[2]);
+  const Vec3d N = cross(p1 - p0, p2 - p0), n = N * (1.0 / std::sqrt(dot(N, N)));
+  for (Weighting w : kAll) {
+    const GroupNormals g = corner_group_normals(m, group, 1, w);
+    REQUIRE(g.normals.size() == 3);
+    CHECK(dot(get3(g.normals, 0), n) == Approx(1.0).epsilon(1e-14));
+  }
+  // A group with no corner cannot be normalised: reported, (0, 0, 0).
+  const GroupNormals two = corner_group_normals(m, group, 2);
+  CHECK(two.failed == std::vector<std::uint32_t>{1});
+  CHECK(get3(two.normals, 1) == Vec3d{0, 0, 0});
+  group[5] = 7;
+  CHECK_THROWS(corner_group_normals(m, group, 2));
+  CHECK_THROWS(corner_group_normals(m, std::vector<std::uint32_t>(3, 0), 1));
+}

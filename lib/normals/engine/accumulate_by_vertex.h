@@ -77,10 +77,9 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
   ChunkPlan plan;
   const std::size_t F = mesh.num_faces(), V = num_rows;
   const std::size_t threads = usable_threads();
-  // One chunk per thread: every chunk border costs (its vertices' terms go through side lists), and
-  // measured on the 1M sphere with both cores free, K = threads gave 1.82x (area) and 1.86x
-  // (angle) on 2 threads against 1.75x / 1.80x for K = 2 x threads and ~1.45x for 4 x threads.
-  // The price: no load balancing when another process holds one core.
+  // One chunk per thread: every chunk border costs (its vertices' terms go through side lists), so
+  // more chunks than threads measured slower (bench/normals/results/notes.md). The price: no load
+  // balancing when another process holds one core.
   const std::size_t K = std::min<std::size_t>({F / 8192, threads, 65535});
   if (F < kSerialBelow || threads < 2 || K < 2) return plan;
   auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_start[F * k / K]); };  // corner index

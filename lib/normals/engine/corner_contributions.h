@@ -15,15 +15,16 @@
 // 1e-30 or 1e30 over- or underflow float (range 1.2e-38 .. 3.4e38), so for T = float they are
 // multiplied by one power of two per mesh, `scale` (exact; the same for every face, so relative
 // weights and the unit vertex normal are unchanged; contribution_scale below chooses it).
-// Degenerate input: a face that geometry/degenerate_face.h calls degenerate (fewer than 3 corners,
-// repeated index, NaN/Inf, zero area to 64 eps) contributes nothing at all (the sink is not
-// called), and is counted; a Max corner whose edge-length product is zero or underflows
+// Degenerate input: a face without area by geometry/degenerate_face.h (face_area_kind: fewer than
+// 3 corners, NaN/Inf, zero area to 64 eps; a triangle with a repeated index has zero area)
+// contributes nothing at all (the sink is not called), and is counted; a Max corner whose edge-length product is zero or underflows
 // contributes nothing. Which path applies the rule how: see "Degenerate faces" below.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -52,17 +53,17 @@ namespace shadetool::normals_detail {
 //            areas whatever the triangle's shape: no need to pay for choosing edges.
 //   Uniform, Angle  normalise N per face, and Max divides it by |a|^2 |b|^2: a sliver's error
 //            would be amplified by its aspect ratio, so these take the two shortest edges
-//            (face_geometry.h, triangle_area_vector), whose relative error is ~ 2 eps.
+//            (geometry/face_area_vector.h, triangle_area_vector), whose relative error is ~ 2 eps.
 // Degenerate faces (geometry/degenerate_face.h, the one rule), per path:
 //   vector pass (triangle_blocks.cpp)  takes a face only when la, lb (squared lengths of the two
 //            shortest edges) lie in (1e-125, 1e125) and N . N > tol^2 (la lb): the rule's own
 //            squares test, the same expression on the same computed values (same bits); every
 //            other face goes to triangle_scalar.
 //   triangle_scalar, polygon_contributions  call the rule (triangle_degenerate_kind,
-//            face_degenerate_kind) for the face.
+//            face_area_kind) for the face.
 //   Area triangles  compute N0 = (p1 - p0) x (p2 - p0) (see below) and take a face as valid when
-//            N0 . N0 > (96 eps)^2 (|e0|^2 |e2|^2) with |e0|^2 |e2|^2 in [1e-250, 1e250] and
-//            N0 . N0 <= 1e250, else ask the rule. That test implies the rule's verdict None:
+//            N0 . N0 > (96 eps)^2 (|e0|^2 |e2|^2) with |e0|^2 |e2|^2 in [1e-250, 1e249] (then
+//            N0 . N0 <= |e0|^2 |e2|^2 is in range too), else ask the rule. That test implies the rule's verdict None:
 //            N0 and the rule's N are both within 5 eps |e0| |e2| of the exact area vector
 //            (rounded edges, two products and a difference per component, no over/underflow in
 //            that range) and the rule's |a| |b| <= |e0| |e2| (the two shortest edges have the
@@ -72,12 +73,17 @@ namespace shadetool::normals_detail {
 
 // Software prefetch, kPrefetchFaces faces ahead, of the positions a triangle loop will read and
 // (when the caller passes its per-vertex sums, `rows`, 3 values per vertex) of the sums it will
-// add to. Measured on the 1M-triangle irregular sphere: the area-weighted loop 6.5 -> 4.5 ms
-// (the hardware prefetchers do not follow the corner indices). Only a hint: no effect on results.
+// add to: the hardware prefetchers do not follow the corner indices (figures:
+// bench/normals/results/notes.md, "Timing notes moved from the source"). Only a hint: no effect
+// on results.
 constexpr std::size_t kPrefetchFaces = 64;
 
 // (96 eps)^2: the area kernel's sufficient test for a valid face (see "Degenerate faces" above).
 constexpr double kAreaKernelValid2 = (96 * 2.220446049250313e-16) * (96 * 2.220446049250313e-16);
+constexpr double kAreaKernelValidLagrange = kAreaKernelValid2 / (1 - kAreaKernelValid2);
+// Bit patterns of 1e-250 and 1e249, and the span between them (see the area kernel).
+constexpr std::uint64_t kAreaKernelQFrom = 0x0c06e93f5da2824cull, kAreaKernelQTo = 0x73a1e0b622c774d0ull;
+constexpr std::uint64_t kAreaKernelQSpan = kAreaKernelQTo - kAreaKernelQFrom;
 
 // The caller's per-vertex sums for prefetching: base address and bytes per vertex (none: null).
 struct RowHint {
@@ -222,10 +228,17 @@ inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin,
       const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
       const Vec3d e0 = p1 - p0, e2 = p2 - p0;
       const Vec3d N = cross(e0, e2);
-      const double nn = dot(N, N), q = dot(e0, e0) * dot(e2, e2);
-      // valid by the sufficient test (see "Degenerate faces" above), else by the rule itself
-      if (!((nn > kAreaKernelValid2 * q) & (q >= 1e-250) & (q <= 1e250) & (nn <= 1e250)) &&
-          triangle_degenerate_kind(P, v0, v1, v2) != DegenerateKind::None) {
+      // Valid by the sufficient test (see "Degenerate faces" above), else ask the rule (rare).
+      // |e0|^2 |e2|^2 = nn + (e0 . e2)^2 (Lagrange's identity), so the test
+      // nn > (96 eps)^2 |e0|^2 |e2|^2 reads nn > K' d^2 with K' = (96 eps)^2 / (1 - (96 eps)^2):
+      // one dot product instead of two squared lengths and their product. q = nn + d^2 in
+      // [1e-250, 1e249] as one unsigned compare of the bit patterns (monotonic for q >= 0; NaN
+      // lies above).
+      const double nn = dot(N, N), d = dot(e0, e2), d2 = d * d, q = nn + d2;
+      std::uint64_t q_bits;
+      std::memcpy(&q_bits, &q, sizeof q);
+      const bool fast = (nn > kAreaKernelValidLagrange * d2) & (q_bits - kAreaKernelQFrom < kAreaKernelQSpan);
+      if (__builtin_expect(!fast, 0) && triangle_degenerate_kind(P, v0, v1, v2) != DegenerateKind::None) {
         ++degenerate;
         continue;
       }
@@ -243,10 +256,9 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
   std::size_t degenerate = 0;
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
-  std::vector<std::uint32_t> scratch;
   for (std::size_t f = f_begin; f < f_end; ++f) {
     const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1], n_corners = end - begin;
-    if (face_degenerate_kind(mesh, f, scratch) != DegenerateKind::None) { ++degenerate; continue; }
+    if (face_area_kind(mesh, f) != DegenerateKind::None) { ++degenerate; continue; }
     Vec3d N;
     if (n_corners == 3) {
       const Vec3d p0 = load_position(P, cv[begin]), p1 = load_position(P, cv[begin + 1]), p2 = load_position(P, cv[begin + 2]);

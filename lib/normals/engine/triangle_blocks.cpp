@@ -114,7 +114,7 @@ inline __attribute__((always_inline)) void store_corner(double* __restrict out, 
 SHADETOOL_VECTOR_CLONES
 void triangle_block_angle(std::size_t n, const double* __restrict corner_xyz, double* __restrict contribution) {
   // Separate loops over the block (geometry, each arctangent, contributions) hold fewer live
-  // values than one loop would: fewer register spills (measured ~20% faster with AVX2).
+  // values than one loop would: fewer register spills (bench/normals/results/notes.md).
   if (n > B) n = B;
   alignas(64) double Nx[B], Ny[B], Nz[B], L[B], C0[B], C1[B], T0[B], T1[B];
   block_geometry<false, true>(n, corner_xyz, Nx, Ny, Nz, L, nullptr, nullptr, nullptr, C0, C1);

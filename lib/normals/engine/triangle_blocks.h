@@ -4,7 +4,7 @@
 //
 // Vectorisation: no table, no branch, every step a lane-wise select, so that GCC vectorises the
 // loops at -O3 with the default x86-64 baseline (SSE2, 2 lanes) and, on processors that have them,
-// AVX2 (4 lanes) and AVX-512 (8 lanes, 32 registers: about twice as fast as AVX2 here, measured);
+// AVX2 (4 lanes) and AVX-512 (8 lanes, 32 registers: fewer spills than AVX2; notes.md in bench/normals/results);
 // GCC target_clones, one chosen at load time. Same bits from every clone: lane-wise IEEE
 // operations in the same order, and the file is built without FMA contraction (CMakeLists.txt),
 // so results depend neither on the processor's vector width nor on the thread count.
@@ -23,7 +23,7 @@
 // omitted term, |x| z^10 / 21 <= 4.5e-16 |x|; the centre tan(pi/8) is rounded, which shifts x by
 // ~1e-16 absolute (an angle error ~1e-16 rad on an angle >= pi/16); rounding in steps 1-4 adds a
 // few ulp. Measured against std::atan2: relative error <= 1e-13 asserted
-// (tests/normals/interior_angle.cpp), 7e-16 observed.
+// (tests/normals/triangle_blocks.cpp, also against geometry/interior_angle.h), 7e-16 observed.
 // Why even 1e-13 is invisible in a vertex normal: the angle-weighted sum S = sum_i w_i n_i (unit
 // n_i); weights perturbed by relative delta change S by at most delta sum_i w_i, so the normal
 // turns by at most delta (sum_i w_i) / |S| rad. Unless the terms nearly cancel (|S| < 1e-3
@@ -32,7 +32,7 @@
 //
 // triangle_block_{angle,max,uniform}: for triangle i of the block, with corners p0, p1, p2, edges
 // e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2, squared lengths l0, l1, l2, and area vector N = 2 A n
-// from the two shortest edges (the same products as face_geometry.h's triangle_area_vector, so
+// from the two shortest edges (the same products as geometry/face_area_vector.h's triangle_area_vector, so
 // the same bits), the contributions of its corners 0, 1, 2 (corner_contributions.h):
 //   angle    N theta_k / |N|, theta_0 = atan2(|N|, -e0.e2), theta_1 = atan2(|N|, -e1.e0),
 //            theta_2 = pi - theta_0 - theta_1
