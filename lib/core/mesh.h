@@ -23,6 +23,8 @@
 //                                           preceded by runs [face_group_run[f-1], face_group_run[f]),
 //                                           runs from face_group_run[F-1] on follow the last face.
 //                                           Steps that remove faces keep it per face, like face_colors.
+//   vertex_quality     0 or V floats           a scalar per vertex (PLY `quality`, MeshLab's name)
+//   face_quality       0 or F floats           a scalar per face (PLY face `quality`)
 //
 // Values are stored in double so that analytic test meshes lie on their surface and float input
 // (binary PLY, STL) round-trips bitwise: a float widened to double and narrowed back is unchanged.
@@ -65,6 +67,8 @@ struct Mesh {
 
   std::vector<std::string> group_statements;
   std::vector<std::uint32_t> face_group_run;
+  std::vector<float> vertex_quality;
+  std::vector<float> face_quality;
 
   ValuePrecision precision = ValuePrecision::Float;
 
@@ -83,6 +87,8 @@ struct Mesh {
   bool has_face_colors() const { return !face_colors.empty(); }
   bool has_texcoords() const { return !corner_texcoord_index.empty(); }
   bool has_groups() const { return !group_statements.empty(); }
+  bool has_vertex_quality() const { return !vertex_quality.empty(); }
+  bool has_face_quality() const { return !face_quality.empty(); }
 
   Vec3d position(std::size_t v) const { return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]}; }
   void set_position(std::size_t v, const Vec3d& p) {

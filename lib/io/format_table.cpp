@@ -101,6 +101,7 @@ std::vector<FormatEntry> make_table() {
     e.holds.texcoords = Holds::Yes;             // per-corner list `texcoord`
     e.holds.vertex_colors = Holds::Yes;
     e.holds.face_colors = Holds::Yes;
+    e.holds.quality = Holds::Yes;               // float `quality` of vertex and face
     t.push_back(e);
   }
   {

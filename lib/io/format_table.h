@@ -45,6 +45,7 @@ struct FormatAttributes {
   Holds vertex_colors = Holds::No;
   Holds face_colors = Holds::No;
   Holds groups = Holds::No;  // materials and groups (OBJ mtllib, usemtl, g, o, s)
+  Holds quality = Holds::No;  // vertex_quality / face_quality (PLY `quality`)
 };
 
 struct FormatEntry {

@@ -141,6 +141,8 @@ std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, 
     wi.notes.push_back("materials and groups not written (" + std::to_string(lines) +
                        " mtllib/usemtl/g/o/s lines): " + format_upper_name(format) + " holds none");
   }
+  if (format.holds.quality == Holds::No && (mesh.has_vertex_quality() || mesh.has_face_quality()))
+    wi.notes.push_back("quality (per-vertex / per-face scalar) not written: only PLY holds it");
   return out;
 }
 

@@ -52,6 +52,16 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   const bool fnormals = mesh.has_face_normals();
   const bool cfloat = mesh.colors_are_float;
   const bool wedge = mesh.has_texcoords();
+  // Quality (one float per vertex / face) is written when it has one value per element; a step
+  // that changed the element count without carrying it leaves it out, with a note.
+  const bool vquality = mesh.has_vertex_quality() && mesh.vertex_quality.size() == nv;
+  const bool fquality = mesh.has_face_quality() && mesh.face_quality.size() == nf;
+  if (mesh.has_vertex_quality() && !vquality)
+    info.notes.push_back("vertex quality not written: " + std::to_string(mesh.vertex_quality.size()) + " values for " +
+                         std::to_string(nv) + " vertices");
+  if (mesh.has_face_quality() && !fquality)
+    info.notes.push_back("face quality not written: " + std::to_string(mesh.face_quality.size()) + " values for " +
+                         std::to_string(nf) + " faces");
   std::uint32_t max_size = 0;
   for (std::size_t f = 0; f < nf; ++f) max_size = std::max<std::uint32_t>(max_size, std::uint32_t(mesh.face_size(f)));
   const bool uchar_count = max_size <= 255;
@@ -77,6 +87,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   static const char* cnames[] = {"red", "green", "blue", "alpha"};
   if (vcolors)
     for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
+  if (vquality) out += "property float quality\n";
   out += "element face ";
   append_uint(out, nf);
   out += "\nproperty list ";
@@ -88,6 +99,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
     for (const char* n : {"nx", "ny", "nz"}) out += std::string("property ") + real + " " + n + "\n";
   if (fcolors)
     for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
+  if (fquality) out += "property float quality\n";
   out += "end_header\n";
 
   auto real_value = [&](double v, bool first) {
@@ -109,6 +121,14 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
       else append_uint(out, color_to_uchar(c));
     }
   };
+  auto quality_value = [&](float q) {
+    if (binary) {
+      put<float>(out, q);
+    } else {
+      out += ' ';
+      append_shortest_float(out, q);
+    }
+  };
   auto count_value = [&](std::uint32_t k) {
     if (binary) {
       if (uchar_count) out += char(std::uint8_t(k));
@@ -126,6 +146,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
       for (int k = 0; k < 3; ++k) real_value(mesh.vertex_normals[3 * v + std::size_t(k)], false);
     if (vcolors)
       for (int k = 0; k < ch; ++k) color_value(mesh.vertex_colors[std::size_t(ch) * v + std::size_t(k)]);
+    if (vquality) quality_value(mesh.vertex_quality[v]);
     if (!binary) out += '\n';
   }
   const std::size_t td = std::size_t(mesh.texcoord_dims);
@@ -159,6 +180,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
       for (int k = 0; k < 3; ++k) real_value(mesh.face_normals[3 * f + std::size_t(k)], false);
     if (fcolors)
       for (int k = 0; k < ch; ++k) color_value(mesh.face_colors[std::size_t(ch) * f + std::size_t(k)]);
+    if (fquality) quality_value(mesh.face_quality[f]);
     if (!binary) out += '\n';
   }
 }

@@ -24,6 +24,7 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
   if (mesh.has_vertex_normals()) out.vertex_normals = mesh.vertex_normals;
   const int ch = mesh.color_channels;
   const bool colors = mesh.has_vertex_colors();
+  const bool quality = mesh.vertex_quality.size() == nv;
   // For each normal index, the vertex that last used it (owner) and the output vertex made for
   // that use (copy_of): a lookup is O(1), so a vertex shared by k corners with k distinct normals
   // costs O(k), not O(k^2) (a hostile OBJ can give one vertex millions of distinct normals).
@@ -44,6 +45,7 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
           out.vertex_normals.insert(out.vertex_normals.end(), {0.0, 0.0, 0.0});
           if (colors)
             for (int j = 0; j < ch; ++j) out.vertex_colors.push_back(mesh.vertex_colors[v * std::size_t(ch) + std::size_t(j)]);
+          if (quality) out.vertex_quality.push_back(mesh.vertex_quality[v]);
           ++added;
         }
         for (int j = 0; j < 3; ++j) out.vertex_normals[3 * std::size_t(target) + std::size_t(j)] = mesh.corner_normals[3 * std::size_t(n) + std::size_t(j)];

@@ -97,6 +97,7 @@ std::vector<Subcommand> subcommands(const fs::path& scene) {
       {"transform", {"transform", {"--translate", "1,2,3"}, true}},
       {"bake-lighting", {"bake-lighting", {"--scene", scene.string()}, true}},
       {"render", {"render", {"--scene", scene.string(), "--size", "16,12"}, true}},
+      {"occlusion", {"occlusion", {"--samples", "4"}, true}},
   };
   const ProcessResult help = run_process({kBin, "--help"});
   REQUIRE(help.code == 0);
@@ -365,7 +366,8 @@ TEST_CASE("bad inputs: output path is an existing directory", "[bad_inputs]") {
     TempDir dir;
     const fs::path input = dir.path / "cube.obj";
     fs::copy_file(fs::path(SHADETOOL_SOURCE_DIR) / "data" / "cube.obj", input);
-    const fs::path output = dir.path / "taken.obj";
+    const std::string taken = sub.name == "render" ? "taken.png" : "taken.obj";  // an image, or a mesh
+    const fs::path output = dir.path / taken;
     fs::create_directory(output);
     std::vector<std::string> argv = {kBin, sub.name, input.string(), "-o", output.string()};
     argv.insert(argv.end(), sub.args.begin(), sub.args.end());
@@ -376,7 +378,7 @@ TEST_CASE("bad inputs: output path is an existing directory", "[bad_inputs]") {
     CHECK(r.err.find("is a directory") != std::string::npos);
     CHECK(fs::is_directory(output));
     CHECK(fs::is_empty(output));
-    CHECK(listing(dir.path) == std::set<std::string>{"cube.obj", "taken.obj"});
+    CHECK(listing(dir.path) == std::set<std::string>{"cube.obj", taken});
   }
 }
 

@@ -193,6 +193,7 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
   if (layout.has_vnormals()) mesh.vertex_normals.assign(3 * n, 0.0);
   if (layout.has_vcolors()) mesh.vertex_colors.assign(std::size_t(layout.channels()) * n, 1.0f);
   if (layout.has_vtex()) vtexcoords.assign(2 * n, 0.0);
+  if (layout.vquality) mesh.vertex_quality.assign(n, 0.0f);
   for (; i < n; ++i) {
     for (const auto& prop : e.props) {
       if (prop.is_list) {
@@ -216,6 +217,7 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
           break;
         case Target::U: if (layout.has_vtex()) vtexcoords[2 * i] = v; break;
         case Target::V: if (layout.has_vtex()) vtexcoords[2 * i + 1] = v; break;
+        case Target::Quality: mesh.vertex_quality[i] = float(v); break;
         default: break;
       }
     }
@@ -230,6 +232,7 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
   reserve_bulk(mesh.corner_vertex, std::min<std::size_t>(3 * n, in.remaining()));
   if (layout.has_fnormals()) mesh.face_normals.assign(3 * n, 0.0);
   if (layout.has_fcolors()) mesh.face_colors.assign(std::size_t(layout.channels()) * n, 1.0f);
+  if (layout.fquality) mesh.face_quality.assign(n, 0.0f);
   std::vector<double> wedge;  // texcoord list of the current face
   std::vector<double> corner_tex;
   std::size_t i = 0;
@@ -277,6 +280,7 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
             mesh.face_colors[std::size_t(layout.channels()) * i + std::size_t(int(prop.target) - int(Target::R))] =
                 float(v / color_divisor(prop.type));
           break;
+        case Target::Quality: mesh.face_quality[i] = float(v); break;
         default: break;
       }
     }

@@ -24,6 +24,7 @@ void map_vertex_properties(Element& vertex, PlyLayout& layout, const std::string
     else if (n == "alpha" || n == "diffuse_alpha" || n == "a") t = Target::A;
     else if (n == "s" || n == "u" || n == "texture_u" || n == "texture_s") t = Target::U;
     else if (n == "t" || n == "v" || n == "texture_v" || n == "texture_t") t = Target::V;
+    else if (n == "quality" && !layout.vquality) t = Target::Quality, layout.vquality = true;
     prop.target = t;
     if (t >= Target::X && t <= Target::NZ) {
       if (t >= Target::NX) layout.vnormal[int(t) - int(Target::NX)] = true;
@@ -67,6 +68,7 @@ void map_face_properties(Element& face, PlyLayout& layout, const std::string& na
     else if (n == "green" || n == "diffuse_green") t = Target::G;
     else if (n == "blue" || n == "diffuse_blue") t = Target::B;
     else if (n == "alpha" || n == "diffuse_alpha") t = Target::A;
+    else if (n == "quality" && !layout.fquality) t = Target::Quality, layout.fquality = true;
     prop.target = t;
     if (t >= Target::NX && t <= Target::NZ) {
       layout.fnormal[int(t) - int(Target::NX)] = true;

@@ -8,8 +8,9 @@
 //          double (or a 32-bit integer): Mesh::precision.
 //   vertex:  x y z; nx ny nz; red green blue alpha (also diffuse_*, r g b a); s t / u v /
 //            texture_u texture_v / texture_s texture_t
+//            quality (MeshLab's per-vertex scalar; the first such property)
 //   face:    list vertex_indices or vertex_index (integer items; the first one), list texcoord
-//            (float items: per-corner u v), nx ny nz, red green blue alpha (also diffuse_*)
+//            (float items: per-corner u v), nx ny nz, red green blue alpha (also diffuse_*), quality
 // Errors:  a vertex element without x, y and z; a face element without an index list; faces but
 //          no vertex element.
 #pragma once
@@ -31,6 +32,7 @@ struct PlyLayout {
   bool colors_float = false;
   bool face_texcoords = false;
   bool any_double = false;
+  bool vquality = false, fquality = false;  // `quality`: MeshLab's per-vertex / per-face scalar (float)
 
   bool has_vnormals() const { return vnormal[0] && vnormal[1] && vnormal[2]; }
   bool has_fnormals() const { return fnormal[0] && fnormal[1] && fnormal[2]; }

@@ -51,7 +51,7 @@ inline double color_divisor(Type t) {
   }
 }
 
-enum class Target { Skip, X, Y, Z, NX, NY, NZ, R, G, B, A, U, V, Indices, TexcoordList };
+enum class Target { Skip, X, Y, Z, NX, NY, NZ, R, G, B, A, U, V, Quality, Indices, TexcoordList };
 
 struct Property {
   std::string name;

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# bench/visibility/run.sh [--quick]: builds bench_visibility and make_torus_knot (Release,
+# -DSHADETOOL_BUILD_BENCH=ON), generates a (2,3) torus-knot tube of 1M triangles (--quick: 100k),
+# and writes bench/visibility/results/: ao.md (the table printed), ao.csv, error_vs_time.png
+# (gnuplot-nox, a bench dependency already) and memory.md (peak RSS of `shadetool occlusion` on the
+# same mesh, /usr/bin/time). No package beyond the main build's is needed for the numbers.
+set -euo pipefail
+src=$(cd "$(dirname "$0")/../.." && pwd)
+build=${BUILD_DIR:-$src/build-bench}
+along=12500 points=4000 runs=5
+if [ "${1:-}" = "--quick" ]; then along=1250 points=500 runs=3; fi
+cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSHADETOOL_BUILD_BENCH=ON > /dev/null
+cmake --build "$build" -j2 --target bench_visibility make_torus_knot shadetool_cli > /dev/null
+out=$src/bench/visibility/results
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$out"
+"$build/bench/visibility/make_torus_knot" "$along" 40 "$tmp/knot.ply" > /dev/null
+{
+  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo
+  "$build/bench/visibility/bench_visibility" "$tmp/knot.ply" --points "$points" --runs "$runs" --full-n 64 --csv "$out/ao.csv"
+} | tee "$out/ao.md"
+# Peak memory of the whole command (read, BVH, rays, write) against the mesh's arrays.
+/usr/bin/time -f '%M' -o "$tmp/rss" "$build/shadetool" occlusion "$tmp/knot.ply" -o "$tmp/ao.ply" --samples 16 --stats 2> "$tmp/stats"
+rss_kb=$(tail -1 "$tmp/rss")
+{
+  echo "\`shadetool occlusion knot.ply -o ao.ply --samples 16\` on the $(sed -n 's/.*faces=\([0-9]*\).*/\1/p' "$tmp/stats") -triangle knot:"
+  echo
+  echo "- peak RSS: $((rss_kb / 1024)) MB"
+  echo "- stats: $(tail -1 "$tmp/stats")"
+} | tee "$out/memory.md"
+if command -v gnuplot > /dev/null; then
+  gnuplot <<GP
+set terminal pngcairo size 800,500
+set output "$out/error_vs_time.png"
+set datafile separator ","
+set logscale xy
+set xlabel "time per vertex (microseconds, 2 threads)"
+set ylabel "RMS error of the open fraction (vs 4096 samples)"
+set key top right
+set grid
+plot "$out/ao.csv" skip 1 using 6:2 with linespoints title "shadetool occlusion (N = 4..1024)", \
+     "$out/ao.csv" skip 1 using (1000*\$4/$points):2 with linespoints title "bare Embree rtcOccluded1, same rays"
+GP
+fi

@@ -1,0 +1,130 @@
+// cmd_occlusion.cpp: `shadetool occlusion IN -o OUT [--samples N] [--distance D]
+// [--as color|quality|both] [--per vertex|face] [--stats]`.
+// Parses, builds lib/visibility's BVH, calls visibility/ambient_occlusion.h, stores the open
+// fraction as grey colours and/or quality, prints notes and counts; exit codes in driver.h.
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "command_registry.h"
+#include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
+#include "driver.h"
+#include <shadetool/normals/invalid_normals.h>
+#include <shadetool/normals/vertex_normals.h>
+#include <shadetool/visibility/ambient_occlusion.h>
+#include <shadetool/visibility/visibility_scene.h>
+
+namespace shadetool_cli {
+namespace {
+
+struct OcclusionOptions {
+  std::uint32_t samples = 64;
+  double distance = std::numeric_limits<double>::infinity();
+  std::string as = "both";
+  std::string per = "vertex";
+};
+
+// The open fraction as grey (r = g = b = value, alpha 1) in `colors`, keeping the channel count the
+// mesh's other colour array uses.
+void store_grey(shadetool::Mesh& mesh, const std::vector<float>& open, std::vector<float>& colors, bool other_has_colors) {
+  if (!other_has_colors) mesh.color_channels = 3;
+  const std::size_t ch = std::size_t(mesh.color_channels);
+  colors.assign(ch * open.size(), 1.0f);
+  for (std::size_t i = 0; i < open.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k) colors[ch * i + k] = open[i];
+}
+
+RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
+  static IoOptions io;
+  static OcclusionOptions opt;
+  auto* sub = app.add_subcommand(
+      "occlusion",
+      "Ambient occlusion by ray casting (Embree): per vertex or face, the cosine-weighted fraction of the sky "
+      "open to distance D, as grey colours and/or a PLY quality property");
+  add_io_options(*sub, io, /*writes_mesh=*/true);
+  sub->add_option("--samples", opt.samples, "Rays per vertex or face (default 64; error falls as N^-3/4)")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->type_name("N");
+  sub->add_option("--distance", opt.distance,
+                  "Only occluders nearer than D (mesh units) count (default: unlimited)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("D");
+  sub->add_option("--as", opt.as, "Store the open fraction as grey colours, the PLY quality property, or both (default)")
+      ->check(CLI::IsMember({"color", "quality", "both"}));
+  sub->add_option("--per", opt.per, "One value per vertex (default) or per face")
+      ->check(CLI::IsMember({"vertex", "face"}));
+  return [] {
+    shadetool::AmbientOcclusionOptions options;
+    options.samples = opt.samples;
+    options.max_distance = opt.distance;
+    const bool per_face = opt.per == "face";
+    const bool colors = opt.as != "quality", quality = opt.as != "color";
+    return run_mesh_command(
+        "occlusion", io,
+        [options, per_face, colors, quality](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+          shadetool::require_faces(mesh, input);
+          shadetool::require_finite_positions(mesh, input);
+          // Normals pass through to the output: none may carry NaN or Inf into it.
+          shadetool::require_finite_normals(mesh, input, "fix them first (`shadetool normals --recompute` or `shadetool repair`)");
+          const shadetool::VisibilityScene scene(mesh);
+          shadetool::AmbientOcclusion ao;
+          if (per_face) {
+            ao = shadetool::ambient_occlusion_per_face(scene, mesh, options);
+          } else if (mesh.has_vertex_normals()) {
+            const std::size_t invalid = shadetool::count_invalid_normals(mesh.vertex_normals);
+            if (invalid > 0)
+              throw shadetool::Error(shadetool::located(
+                  input, 0,
+                  fmt::format("{} of {} vertex normals are invalid (NaN, Inf or zero length); they give the "
+                              "hemisphere's axis: use `shadetool normals --recompute` first",
+                              invalid, mesh.num_vertices())));
+            ao = shadetool::ambient_occlusion_per_vertex(scene, mesh, mesh.vertex_normals, options);
+          } else {
+            // No normals given: the library's angle-weighted vertex normals (not written out).
+            ao = shadetool::ambient_occlusion_per_vertex(scene, mesh, shadetool::vertex_normals(mesh).normals, options);
+            r.stats["normals"] = "computed (angle-weighted)";
+          }
+          const char* what = per_face ? "face" : "vertex";
+          if (colors) {
+            if (per_face ? mesh.has_face_colors() : mesh.has_vertex_colors())
+              r.notes.push_back(fmt::format("the input's {} colours replaced by grey occlusion", what));
+            if (per_face) store_grey(mesh, ao.open_fraction, mesh.face_colors, mesh.has_vertex_colors());
+            else store_grey(mesh, ao.open_fraction, mesh.vertex_colors, mesh.has_face_colors());
+          }
+          if (quality) {
+            if (per_face ? mesh.has_face_quality() : mesh.has_vertex_quality())
+              r.notes.push_back(fmt::format("the input's {} quality replaced by occlusion", what));
+            (per_face ? mesh.face_quality : mesh.vertex_quality) = ao.open_fraction;
+          }
+          const shadetool::VisibilitySceneStats& s = scene.stats();
+          if (s.degenerate_faces > 0)
+            r.notes.push_back(fmt::format("{} degenerate faces (repeated index or zero area) cast no shadow", s.degenerate_faces));
+          if (ao.skipped > 0)
+            r.notes.push_back(fmt::format("{} {} without a usable normal (isolated vertices, degenerate faces) given "
+                                          "open fraction 1, no ray cast",
+                                          ao.skipped, per_face ? "faces" : "vertices"));
+          double mean = 0;
+          for (float v : ao.open_fraction) mean += v;
+          r.stats["per"] = what;
+          r.stats["samples"] = options.samples;
+          if (std::isfinite(options.max_distance)) r.stats["distance"] = options.max_distance;
+          r.stats["rays"] = ao.rays;
+          r.stats["hits"] = ao.hits;
+          r.stats["skipped"] = ao.skipped;
+          r.stats["mean_open_fraction"] = ao.open_fraction.empty() ? 1.0 : mean / double(ao.open_fraction.size());
+          r.stats["bvh_triangles"] = s.triangles;
+          r.stats["bvh_bytes"] = s.bvh_bytes;
+          r.stats["bvh_buffer_bytes"] = s.buffer_bytes;
+          r.stats["bvh_build_ms"] = s.build_ms;
+          r.stats["degenerate_faces"] = s.degenerate_faces;
+        },
+        true);
+  };
+});
+
+}  // namespace
+}  // namespace shadetool_cli
