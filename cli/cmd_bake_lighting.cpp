@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct BakeLightingOptions {
   std::string per = "vertex";
   bool hdr = false;
   bool srgb = false;
+  bool shadows = false;
+  std::uint32_t samples = 16;
 };
 
 shadetool::ShadingModel parse_model(const std::string& s) {
@@ -67,8 +70,16 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       ->check(CLI::IsMember({"vertex", "face"}));
   sub->add_flag("--hdr", opt.hdr, "Write float colours, unclamped (default: 8-bit, round(255 * clamp(c, 0, 1)))");
   sub->add_flag("--srgb", opt.srgb, "Encode colours with the sRGB curve (default: linear)");
+  auto* shadows_flag = sub->add_flag("--shadows", opt.shadows,
+                "Shadows: multiply each light's diffuse and specular terms by its visibility from the point (one ray "
+                "for directional, point and spot lights; --samples rays for area and sky lights)");
+  auto* samples = sub->add_option("--samples", opt.samples,
+                                  "With --shadows: rays per point per area or sky light (default 16; a sky casts them "
+                                  "for the sky and again for the ground)")
+                      ->check(CLI::Range(1u, 1u << 20))
+                      ->needs(shadows_flag);
 
-  return [] {
+  return [samples] {
     // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
     const shadetool::Scene scene = shadetool::read_scene(opt.scene);
     shadetool::ShadeOptions shade;
@@ -78,6 +89,10 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
     shadetool::ColorEncoding encoding;
     encoding.hdr = opt.hdr;
     encoding.srgb = opt.srgb;
+    shadetool::ShadowOptions shadows;
+    shadows.enabled = opt.shadows;
+    shadows.samples = opt.samples;
+    const bool samples_given = samples->count() > 0;
 
     return run_mesh_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       shadetool::require_finite_positions(mesh, input);
@@ -88,7 +103,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       } else if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0) {
         throw shadetool::Error(shadetool::located(input, 0, "no vertex normals and no faces to compute them from"));
       }
-      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade);
+      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade, shadows);
       const shadetool::ShadeReport& rep = baked.report;
 
       if (frequency == shadetool::ShadingFrequency::PerVertex && baked.normals_source.rfind("computed", 0) == 0)
@@ -103,6 +118,9 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       if (rep.counters.at_light > 0)
         r.notes.push_back(std::to_string(rep.counters.at_light) +
                           " vertex-light pairs have the point at the light's position: that light adds nothing there");
+      if (shadows.enabled && samples_given && baked.shadows.sampled_lights == 0)
+        r.notes.push_back("--samples ignored: the scene has no area or sky light (directional, point and spot "
+                          "lights cast one shadow ray each)");
       if (rep.plan.view && !scene.has_camera)
         r.notes.push_back("the scene has no camera: the eye is at the world origin (OpenGL's default)");
 
@@ -129,6 +147,12 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       if (rep.plan.area_lights > 0) {  // only then, so that other scenes' reports stay as they were
         r.stats["below_horizon_skips"] = rep.counters.below_horizon;
         r.stats["inside_light"] = rep.counters.inside_light;
+      }
+      if (shadows.enabled) {
+        r.stats["shadow_rays"] = baked.shadows.shadow_rays;
+        r.stats["occluded_light_terms"] = baked.shadows.occluded_terms;
+        r.stats["shadow_samples"] = baked.shadows.sampled_lights > 0 ? shadows.samples : 1u;
+        r.stats["bvh_bytes"] = baked.shadows.bvh_bytes;
       }
     }, true);
   };

@@ -29,9 +29,39 @@ bool corner_normals_per_vertex(const Mesh& mesh, std::vector<double>& normals) {
   return true;
 }
 
+// Shades object-space points and normals, with shadows when asked: the visibility is computed
+// from world-space copies (the lights' space) and handed to shade_points.
+std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, const std::vector<double>& points,
+                                       const std::vector<double>& normals, const ShadeOptions& options,
+                                       const ShadowOptions& shadows, BakeResult& result) {
+  if (!shadows.enabled) return shade_points(scene, points, normals, options, &result.report);
+  const Affine3d& M = scene.world_from_object;
+  const Mat3d cof = signed_cofactor(M.A);
+  Mesh world;
+  world.positions.resize(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) set3(world.positions, v, transform_point(M, mesh.position(v)));
+  world.face_start = mesh.face_start;
+  world.corner_vertex = mesh.corner_vertex;
+  const VisibilityScene bvh(world);
+
+  const std::size_t P = points.size() / 3;
+  std::vector<double> wp(3 * P), wn(3 * P);
+  for (std::size_t i = 0; i < P; ++i) {
+    set3(wp, i, transform_point(M, get3(points, i)));
+    set3(wn, i, Vec3d(transform_normal(cof, Normal3d(get3(normals, i)))));
+  }
+  const ShadingModel model = options.model ? *options.model : scene.model;
+  const LightingPlan plan = plan_lighting(scene, model, options.skips);
+  const std::vector<double> visibility = light_visibility(bvh, scene, plan, wp, wn, {}, shadows.samples, &result.shadows);
+  ShadeOptions with = options;
+  with.visibility = &visibility;
+  return shade_points(scene, points, normals, with, &result.report);
+}
+
 }  // namespace
 
-BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency, const ShadeOptions& options) {
+BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency, const ShadeOptions& options,
+                         const ShadowOptions& shadows) {
   BakeResult result;
   if (frequency == ShadingFrequency::PerVertex) {
     std::vector<double> normals;
@@ -48,7 +78,7 @@ BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency 
       result.normal_fallback_vertices = computed.fallback_vertices;
       normals = std::move(computed.normals);
     }
-    result.rgb = shade_points(scene, mesh.positions, normals, options, &result.report);
+    result.rgb = shade_with_shadows(mesh, scene, mesh.positions, normals, options, shadows, result);
     return result;
   }
 
@@ -73,7 +103,7 @@ BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency 
     for (std::size_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) sum += mesh.position(mesh.corner_vertex[c]);
     set3(centroids, f, sum * (1.0 / double(size)));  // size > 0 checked above
   }
-  result.rgb = shade_points(scene, centroids, normals, options, &result.report);
+  result.rgb = shade_with_shadows(mesh, scene, centroids, normals, options, shadows, result);
   return result;
 }
 

@@ -15,6 +15,12 @@
 // normals/face_normals.h. A vertex or face whose normal is zero (isolated vertex, degenerate face)
 // gets only the emission and ambient terms, and is counted (report.counters.zero_normals).
 //
+// Shadows (shadows.enabled, lighting/light_visibility.h): the mesh's non-degenerate faces, placed in
+// the world by world_from_object, go into one VisibilityScene; each point's visibility of each
+// kept light (rays from its world position, offset along its world normal) multiplies that
+// light's diffuse and specular terms. Seeds: the vertex id (PerVertex) or face id (PerFace).
+// report.shadows counts the rays; with shadows off nothing of this runs.
+//
 // store_baked_colors puts encoded colours into the mesh: vertex_colors (PerVertex) or face_colors
 // (PerFace), the other array cleared, 3 channels, colors_are_float = hdr. Positions and faces are
 // not touched.
@@ -25,6 +31,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/lighting/light_visibility.h>
 #include <shadetool/lighting/shade_points.h>
 
 namespace shadetool {
@@ -36,10 +43,11 @@ struct BakeResult {
   ShadeReport report;
   std::string normals_source;          // e.g. "input vertex normals", "computed (angle-weighted)"
   std::size_t normal_fallback_vertices = 0;  // computed normals that needed the fallback
+  ShadowStats shadows;                 // zero unless shadows.enabled
 };
 
 BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency,
-                         const ShadeOptions& options = {});
+                         const ShadeOptions& options = {}, const ShadowOptions& shadows = {});
 
 void store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr);
 

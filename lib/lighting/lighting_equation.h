@@ -91,14 +91,18 @@ struct LightProducts {
 //   att_spot * ( ka*a_i + max(n.L, 0) kd*d_i + [n.L > 0] spec ks*s_i )
 // with_ambient / with_specular: false leaves that term out where its colour product is zero
 // (att_spot * 0 would be NaN where att_spot overflows). Nothing is added but the ambient term
-// when n.L <= 0. A visibility factor in [0, 1] (shadows) scales att_spot for the diffuse and
-// specular terms only.
+// when n.L <= 0. visibility in [0, 1] (shadows: the fraction of the light the point sees)
+// scales att_spot for the diffuse and specular terms only; ambient is not shadowed. A wholly
+// shadowed light (visibility 0) adds nothing more (0 * an overflowed att_spot would be NaN).
+// Without shadows the callers pass the constant 1: att_spot * 1.0 is exact, and the compiler
+// folds both the product and the test away, so that path is the same bits and the same code.
 inline void add_light_term(Vec3d& color, const LightProducts& k, double att_spot, double n_dot_l, double spec,
-                           bool with_ambient, bool with_specular) {
+                           bool with_ambient, bool with_specular, double visibility = 1.0) {
   if (with_ambient) color += k.ambient * att_spot;
-  if (!(n_dot_l > 0)) return;
-  color += k.diffuse * (att_spot * n_dot_l);
-  if (with_specular) color += k.specular * (att_spot * spec);
+  if (!(n_dot_l > 0) || !(visibility > 0)) return;
+  const double a = att_spot * visibility;
+  color += k.diffuse * (a * n_dot_l);
+  if (with_specular) color += k.specular * (a * spec);
 }
 
 }  // namespace shadetool

@@ -25,7 +25,7 @@ Vec3d shade_point(const PointLighting& lighting, const Vec3d& position_world, co
   eq.shininess = lighting.shininess;
   eq.base = lighting.plan.base;
   ShadeCounters local;
-  const Vec3d c = lighting_engine::shade_point_in_space<true>(lighting_engine::IdentityMetric{}, lighting.frame, eq,
+  const Vec3d c = lighting_engine::shade_point_in_space<true, false>(lighting_engine::IdentityMetric{}, lighting.frame, eq,
                                                               position_world, normal_world, counters ? *counters : local);
   return c;
 }

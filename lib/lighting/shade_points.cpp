@@ -27,10 +27,11 @@ using lighting_engine::IdentityMetric;
 using lighting_engine::ScaledMetric;
 
 // Points [begin, end): into the space (when needed), then the equation.
-template <bool kEarlyTests, class Metric>
+template <bool kEarlyTests, bool kShadows, class Metric>
 ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
-                          const double* points, const double* normals, double* out, std::size_t begin,
-                          std::size_t end) {
+                          const double* points, const double* normals, const double* visibility, double* out,
+                          std::size_t begin, std::size_t end) {
+  const std::size_t row = 2 * frame.lights.size();
   ShadeCounters count;
   for (std::size_t i = begin; i < end; ++i) {
     Vec3d p{points[3 * i], points[3 * i + 1], points[3 * i + 2]};
@@ -39,7 +40,8 @@ ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const Equa
       if (map_points) p = transform_point(frame.space_from_object, p);
       n = transform_normal(frame.normal_to_space, Normal3d(n));
     }
-    const Vec3d c = lighting_engine::shade_point_in_space<kEarlyTests>(g, frame, eq, p, n, count);
+    const Vec3d c = lighting_engine::shade_point_in_space<kEarlyTests, kShadows>(
+        g, frame, eq, p, n, count, kShadows ? visibility + row * i : nullptr);
     out[3 * i] = c.x;
     out[3 * i + 1] = c.y;
     out[3 * i + 2] = c.z;
@@ -47,26 +49,33 @@ ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const Equa
   return count;
 }
 
-template <bool kEarlyTests, class Metric>
+template <bool kEarlyTests, bool kShadows, class Metric>
 ShadeCounters shade_all(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
-                        const double* points, const double* normals, double* out, std::size_t n, bool parallel) {
-  if (!parallel || n < 4096) return shade_range<kEarlyTests>(g, frame, eq, map_points, points, normals, out, 0, n);
+                        const double* points, const double* normals, const double* visibility, double* out,
+                        std::size_t n, bool parallel) {
+  if (!parallel || n < 4096)
+    return shade_range<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, 0, n);
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, n, 2048), ShadeCounters{},
       [&](const tbb::blocked_range<std::size_t>& r, ShadeCounters acc) {
-        acc += shade_range<kEarlyTests>(g, frame, eq, map_points, points, normals, out, r.begin(), r.end());
+        acc += shade_range<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, r.begin(),
+                                                  r.end());
         return acc;
       },
       [](ShadeCounters a, const ShadeCounters& b) { return a += b; });
 }
 
-// SkipOptions::early_tests picks the loop at compile time: the equation itself has no switch.
+// SkipOptions::early_tests and shadows (visibility non-null) pick the loop at compile time: the
+// equation itself has no switch, and the loop without shadows reads no visibility.
 template <class Metric>
 ShadeCounters shade_all_points(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool early_tests,
-                        bool map_points, const double* points, const double* normals, double* out, std::size_t n,
-                        bool parallel) {
-  return early_tests ? shade_all<true>(g, frame, eq, map_points, points, normals, out, n, parallel)
-                     : shade_all<false>(g, frame, eq, map_points, points, normals, out, n, parallel);
+                        bool map_points, const double* points, const double* normals, const double* visibility,
+                        double* out, std::size_t n, bool parallel) {
+  if (visibility)
+    return early_tests ? shade_all<true, true>(g, frame, eq, map_points, points, normals, visibility, out, n, parallel)
+                       : shade_all<false, true>(g, frame, eq, map_points, points, normals, visibility, out, n, parallel);
+  return early_tests ? shade_all<true, false>(g, frame, eq, map_points, points, normals, nullptr, out, n, parallel)
+                     : shade_all<false, false>(g, frame, eq, map_points, points, normals, nullptr, out, n, parallel);
 }
 
 }  // namespace
@@ -103,17 +112,25 @@ std::vector<double> shade_points(const Scene& scene, const std::vector<double>& 
   std::vector<double> out(3 * n);
   const double* P = points_object.data();
   const double* N = normals_object.data();
+  const double* V = nullptr;
+  if (options.visibility) {
+    if (options.visibility->size() != 2 * frame.lights.size() * n)
+      throw std::invalid_argument("shade_points: visibility has " + std::to_string(options.visibility->size()) +
+                                  " values, expected 2 per kept light per point (" +
+                                  std::to_string(2 * frame.lights.size() * n) + ")");
+    V = options.visibility->data();
+  }
   switch (frame.metric.kind) {
     case MetricKind::Identity:
-      r.counters = shade_all_points(IdentityMetric{}, frame, eq, early, map_points, P, N, out.data(), n, options.parallel);
+      r.counters = shade_all_points(IdentityMetric{}, frame, eq, early, map_points, P, N, V, out.data(), n, options.parallel);
       break;
     case MetricKind::Scaled:
       r.counters = shade_all_points(ScaledMetric{frame.metric.scale2, 1.0 / frame.metric.scale2}, frame, eq, early, map_points,
-                             P, N, out.data(), n, options.parallel);
+                             P, N, V, out.data(), n, options.parallel);
       break;
     case MetricKind::General:
       r.counters = shade_all_points(GeneralMetric{frame.metric.B, transpose(frame.metric.B), frame.metric.B_inverse_transpose},
-                             frame, eq, early, map_points, P, N, out.data(), n, options.parallel);
+                             frame, eq, early, map_points, P, N, V, out.data(), n, options.parallel);
       break;
   }
 

@@ -56,6 +56,11 @@ struct ShadeOptions {
   ShadingSpace space = ShadingSpace::Auto;
   SkipOptions skips;                  // all on by default; off only to measure or test them
   bool parallel = true;
+  // Shadows (lighting/light_visibility.h computes it): null = no shadows. Otherwise #P rows of
+  // 2 * plan.lights.size() values in [0, 1]: per kept light (plan order) its visible fraction,
+  // then (sky lights) the ground's, 1 where unused. Multiplies each light's diffuse and specular
+  // terms (ambient is not shadowed). The caller owns it for the duration of the call.
+  const std::vector<double>* visibility = nullptr;
 };
 
 struct ShadeReport {

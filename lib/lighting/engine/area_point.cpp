@@ -28,7 +28,8 @@ WorldPoint world_point(const ShadingFrame& frame, ShadingModel model, bool specu
   return w;
 }
 
-void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count) {
+void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
+                    double visibility, double visibility_ground) {
   const bool with_specular = light.has_specular && point.lobe.kind != LobeKind::None;
   if (point.n == Vec3d{0, 0, 0}) {  // zero normal: the ambient term only
     if (light.has_ambient) color += light.products.ambient;
@@ -45,13 +46,14 @@ void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& poi
               : sphere_light_terms(light.center, light.radius, point.p, point.n, lobe);
       count.below_horizon += t.below_horizon;
       count.inside_light += t.inside;
-      add_light_term(color, light.products, 1.0, t.P, t.S, light.has_ambient, with_specular);
+      add_light_term(color, light.products, 1.0, t.P, t.S, light.has_ambient, with_specular, visibility);
       return;
     }
     case LightType::Sky: {
       const SkyTerms t = sky_light_terms(light.up, point.n, lobe);
-      add_light_term(color, light.products, 1.0, t.P_sky, t.S_sky, light.has_ambient, with_specular);
-      add_light_term(color, light.ground_products, 1.0, t.P_ground, t.S_ground, false, with_specular);
+      add_light_term(color, light.products, 1.0, t.P_sky, t.S_sky, light.has_ambient, with_specular, visibility);
+      add_light_term(color, light.ground_products, 1.0, t.P_ground, t.S_ground, false, with_specular,
+                     visibility_ground);
       return;
     }
     case LightType::Ambient:

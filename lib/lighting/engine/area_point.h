@@ -23,8 +23,10 @@ struct WorldPoint {
 WorldPoint world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess,
                        const Vec3d& p, const Vec3d& n, bool zero_normal);
 
-// Adds one area or sky light's terms to color; counts skips.
-void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count);
+// Adds one area or sky light's terms to color; counts skips. visibility (shadows; 1 without):
+// the light's visible fraction; visibility_ground the sky's ground's (sky lights only).
+void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
+                    double visibility = 1.0, double visibility_ground = 1.0);
 
 }  // namespace lighting_engine
 }  // namespace shadetool

@@ -43,10 +43,13 @@ struct EquationSetup {
 
 // The colour at p (in the frame's space) with normal n (in the frame's space, any length).
 // Always inlined into the per-point loop (see bench/lighting/results.md for why).
-template <bool kEarlyTests, class Metric>
+// kShadows: visibility points at this point's row of ShadeOptions::visibility (2 values per
+// frame light: the light's visible fraction, and for a sky its ground's); without shadows it is
+// unused and every light's visibility is the constant 1 (the same code and bits as before).
+template <bool kEarlyTests, bool kShadows, class Metric>
 SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame,
                                                    const EquationSetup& eq, const Vec3d& p, Vec3d n,
-                                                   ShadeCounters& count) {
+                                                   ShadeCounters& count, const double* visibility = nullptr) {
   ++count.points;
   Vec3d color = eq.base;
 
@@ -78,7 +81,10 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
 
   WorldPoint world;  // area and sky lights: p, n and the lobe in world space, made at the first one
   bool world_ready = false;
-  for (const SpaceLight& light : frame.lights) {
+  for (std::size_t j = 0; j < frame.lights.size(); ++j) {
+    const SpaceLight& light = frame.lights[j];
+    const double vis = kShadows ? visibility[2 * j] : 1.0;
+    const double vis_ground = kShadows ? visibility[2 * j + 1] : 1.0;
     ++count.vertex_light_evaluations;
     const bool with_ambient = light.has_ambient || !kEarlyTests;
     Vec3d L;             // unit (in G) toward the light
@@ -130,8 +136,8 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
             continue;
           }
           const SkyProjection P = sky_projected_solid_angles(dot(n, light.to_light) * n_scale);
-          add_light_term(color, light.products, 1.0, P.sky, 0.0, light.has_ambient, false);
-          add_light_term(color, light.ground_products, 1.0, P.ground, 0.0, false, false);
+          add_light_term(color, light.products, 1.0, P.sky, 0.0, light.has_ambient, false, vis);
+          add_light_term(color, light.ground_products, 1.0, P.ground, 0.0, false, false, vis_ground);
           continue;
         }
         [[fallthrough]];
@@ -140,7 +146,7 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
           world = world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0);
           world_ready = true;
         }
-        add_area_light(color, light, world, count);
+        add_area_light(color, light, world, count, vis, vis_ground);
         continue;
     }
 
@@ -151,7 +157,7 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
       spec = eq.model == ShadingModel::BlinnPhong ? specular_blinn_phong(n_dot_l, n_dot_v, l_dot_v, v_unit, eq.shininess)
                                                   : specular_phong(n_dot_l, n_dot_v, l_dot_v, eq.shininess);
     }
-    add_light_term(color, light.products, att_spot, n_dot_l, spec, with_ambient, with_specular);
+    add_light_term(color, light.products, att_spot, n_dot_l, spec, with_ambient, with_specular, vis);
   }
   return color;
 }
