@@ -150,7 +150,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       }
       if (shadows.enabled) {
         r.stats["shadow_rays"] = baked.shadows.shadow_rays;
-        r.stats["occluded_light_terms"] = baked.shadows.occluded_terms;
+        r.stats["occluded_light_terms"] = rep.counters.shadowed;
         r.stats["shadow_samples"] = baked.shadows.sampled_lights > 0 ? shadows.samples : 1u;
         r.stats["bvh_bytes"] = baked.shadows.bvh_bytes;
       }

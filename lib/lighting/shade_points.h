@@ -37,6 +37,8 @@ struct ShadeCounters {
   std::size_t zero_normals = 0;              // points with a zero or non-finite normal
   std::size_t below_horizon = 0;             // area lights wholly below the point's horizon: skipped
   std::size_t inside_light = 0;              // point on an area light's plane or inside a sphere light
+  std::size_t shadowed = 0;                  // shadows: pairs with visibility < 1 that the light would
+                                             // light (n.L > 0; area and sky lights: any)
 
   ShadeCounters& operator+=(const ShadeCounters& o) {
     points += o.points;
@@ -47,6 +49,7 @@ struct ShadeCounters {
     zero_normals += o.zero_normals;
     below_horizon += o.below_horizon;
     inside_light += o.inside_light;
+    shadowed += o.shadowed;
     return *this;
   }
 };

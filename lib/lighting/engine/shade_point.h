@@ -135,6 +135,7 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
             if (light.has_ambient) color += light.products.ambient;
             continue;
           }
+          if (kShadows && (vis < 1 || vis_ground < 1)) ++count.shadowed;
           const SkyProjection P = sky_projected_solid_angles(dot(n, light.to_light) * n_scale);
           add_light_term(color, light.products, 1.0, P.sky, 0.0, light.has_ambient, false, vis);
           add_light_term(color, light.ground_products, 1.0, P.ground, 0.0, false, false, vis_ground);
@@ -142,6 +143,7 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
         }
         [[fallthrough]];
       case LightType::Area:  // P and S in world space (area_light.h)
+        if (kShadows && (vis < 1 || vis_ground < 1)) ++count.shadowed;
         if (!world_ready) {
           world = world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0);
           world_ready = true;
@@ -150,6 +152,7 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
         continue;
     }
 
+    if (kShadows && vis < 1 && n_dot_l > 0) ++count.shadowed;
     const bool with_specular = eq.specular && light.has_specular;
     double spec = 0;
     if (with_specular && (n_dot_l > 0 || !kEarlyTests)) {
