@@ -137,3 +137,45 @@ TEST_CASE("bake-lighting errors: exit codes, one-line messages, no output", "[li
   CHECK(r.code == 1);
   CHECK_FALSE(fs::exists(out));
 }
+
+TEST_CASE("bake-lighting --shadows: the face under an occluder gets only its ambient terms", "[lighting][cli][shadows]") {
+  TempDir dir;
+  // Face 1: a floor tile under face 3 (an occluder at z = 1); face 2: a floor tile in the open;
+  // all facing +z, light straight down, no ambient: lit faces are kd, the shadowed one black.
+  dir.write("scene.obj",
+            "v -0.25 -0.25 0\nv 0.25 -0.25 0\nv 0.25 0.25 0\nv -0.25 0.25 0\n"
+            "v 2.75 -0.25 0\nv 3.25 -0.25 0\nv 3.25 0.25 0\nv 2.75 0.25 0\n"
+            "v -0.5 -0.5 1\nv 0.5 -0.5 1\nv 0.5 0.5 1\nv -0.5 0.5 1\n"
+            "f 1 2 3 4\nf 5 6 7 8\nf 9 10 11 12\n");
+  dir.write("scene.json", kFlatScene);
+  const std::string base = dir.file("scene.obj") + " --scene " + dir.file("scene.json") + " --per face";
+
+  Run r = run(base + " -o " + dir.file("plain.ply"));
+  REQUIRE(r.code == 0);
+  r = run(base + " -o " + dir.file("shadows.ply") + " --shadows --stats");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.err.find("shadow_rays=3") != std::string::npos);
+  CHECK(r.err.find("occluded_light_terms=1") != std::string::npos);
+  const Mesh plain = read_mesh(dir.file("plain.ply"));
+  const Mesh shadows = read_mesh(dir.file("shadows.ply"));
+  REQUIRE(shadows.face_colors.size() == 9);
+  const double kd[3] = {128, 64, 255};  // round(255 kd), read back as channel / 255
+  for (int c = 0; c < 3; ++c) {
+    CHECK(plain.face_colors[c] * 255.0 == Approx(kd[c]));   // without shadows the tile is lit
+    CHECK(shadows.face_colors[c] == 0);                     // with them it is black (no ambient)
+    CHECK(shadows.face_colors[3 + c] * 255.0 == Approx(kd[c]));  // the open tile and the occluder's top
+    CHECK(shadows.face_colors[6 + c] * 255.0 == Approx(kd[c]));
+  }
+
+  // --samples with only a directional light: ignored, with a note; without --shadows: exit 2.
+  r = run(base + " -o " + dir.file("s.ply") + " --shadows --samples 8");
+  CHECK(r.code == 0);
+  CHECK(r.err.find("--samples ignored") != std::string::npos);
+  r = run(base + " -o " + dir.file("u.ply") + " --samples 8");
+  CHECK(r.code == 2);
+  CHECK_FALSE(fs::exists(dir.file("u.ply")));
+  r = run(base + " -o " + dir.file("z.ply") + " --shadows --samples 0");
+  CHECK(r.code == 2);
+  CHECK_FALSE(fs::exists(dir.file("z.ply")));
+}
