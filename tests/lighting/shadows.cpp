@@ -250,3 +250,15 @@ TEST_CASE("shadows: the same bits for 1 and 2 threads", "[lighting][shadows]") {
   CHECK(shadowed[0] == shadowed[1]);
   CHECK(same_bits(results[0], results[1]));
 }
+
+TEST_CASE("shadows on a mesh without faces (points with normals): nothing casts a shadow", "[lighting][shadows]") {
+  Mesh cloud;
+  cloud.positions = {0, 0, 0, 1, 2, 3, -1, 0.5, 0};
+  cloud.vertex_normals = {0, 0, 1, 0, 1, 0, 0, 0, 0};  // the last one zero: ambient and emission only
+  Scene scene = lit_scene(directional({0, -0.5, -1}));
+  scene.lights.push_back(point_light({0, 3, 3}));
+  const BakeResult shadowed = bake_lighting(cloud, scene, ShadingFrequency::PerVertex, {}, shadows_on());
+  const BakeResult plain = bake_lighting(cloud, scene, ShadingFrequency::PerVertex);
+  CHECK(same_bits(shadowed.rgb, plain.rgb));
+  CHECK(shadowed.report.counters.shadowed == 0);
+}
