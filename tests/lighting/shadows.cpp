@@ -262,3 +262,37 @@ TEST_CASE("shadows on a mesh without faces (points with normals): nothing casts 
   CHECK(same_bits(shadowed.rgb, plain.rgb));
   CHECK(shadowed.report.counters.shadowed == 0);
 }
+
+TEST_CASE("a sphere light and a sky half hidden by a half-plane occluder: the diffuse term halves",
+          "[lighting][shadows]") {
+  // The occluder covers x < 0 at z = 1 (a square 2000 wide: the directions it misses are below
+  // 0.06 degrees of elevation, a fraction < 1e-6 of the cosine-weighted hemisphere). The probe at
+  // the origin faces +z; both lights are symmetric about x = 0, so the visible fraction is 1/2.
+  Mesh mesh;
+  mesh.positions = {0, 0, 0};
+  add_polygon(mesh, {{-1000, -1000, 1}, {0, -1000, 1}, {0, 1000, 1}, {-1000, 1000, 1}});
+  mesh.vertex_normals.assign(3 * mesh.num_vertices(), 0.0);
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) mesh.vertex_normals[3 * v + 2] = 1;
+  Scene scene = dark_scene(ShadingModel::Lambert);
+  scene.material.diffuse = {1, 1, 1};
+  Light light;
+  light.diffuse = {1, 1, 1};
+  SECTION("sphere") {
+    light.type = LightType::Area;
+    light.shape = AreaShape::Sphere;
+    light.center = {0, 0, 3};
+    light.radius = 0.5;
+  }
+  SECTION("sky") {
+    light.type = LightType::Sky;
+    light.up = {0, 0, 1};
+  }
+  scene.lights.push_back(light);
+  const double unshadowed = bake_lighting(mesh, scene, ShadingFrequency::PerVertex).rgb[0];
+  REQUIRE(unshadowed > 0);
+  for (const std::uint32_t n : {16u, 256u}) {
+    const double f = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, shadows_on(n)).rgb[0] / unshadowed;
+    INFO("samples " << n << " fraction " << f);
+    CHECK(std::fabs(f - 0.5) <= 2.0 / std::sqrt(double(n)));
+  }
+}
