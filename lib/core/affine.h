@@ -14,6 +14,7 @@
 
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // Row-major 3x3: m[r][c].
@@ -122,3 +123,4 @@ inline bool is_identity(const Affine3d& M) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -23,6 +23,7 @@
 #include <sys/mman.h>
 #endif
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 template <class T, class Allocator>
@@ -89,3 +90,4 @@ template <class T>
 using BulkVector = std::vector<T, UninitializedAllocator<T>>;
 
 }  // namespace shadetool
+#pragma GCC visibility pop

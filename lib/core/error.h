@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 class Error : public std::runtime_error {
@@ -29,3 +30,4 @@ inline std::string located(const std::string& file, std::size_t line, const std:
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

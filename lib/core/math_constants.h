@@ -5,6 +5,7 @@
 // the command line and in scene files only (radians inside).
 #pragma once
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 constexpr double kPi = 3.14159265358979323846264338327950288;
@@ -14,3 +15,4 @@ constexpr double kQuarterPi = kPi / 4;
 constexpr double kRadiansPerDegree = kPi / 180;
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -39,6 +39,7 @@
 
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class ValuePrecision { Float, Double };
@@ -118,3 +119,4 @@ inline void set3(std::vector<double>& a, std::size_t i, const Vec3d& v) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

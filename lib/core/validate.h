@@ -12,6 +12,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any.
@@ -53,3 +54,4 @@ inline void require_faces(const Mesh& mesh, const std::string& name) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

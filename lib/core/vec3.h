@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 template <class T>
@@ -85,3 +86,4 @@ template <class T> bool is_finite(const Vec3<T>& a) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

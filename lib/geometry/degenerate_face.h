@@ -33,6 +33,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/geometry/face_area_vector.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class DegenerateKind : std::uint8_t { None = 0, TooFewCorners, RepeatedIndex, ZeroArea, NonFinite };
@@ -99,3 +100,4 @@ DegenerateKind face_area_kind(const Mesh& mesh, std::size_t f);
 bool has_repeated_index(const std::uint32_t* corner_vertex, std::uint32_t n, std::vector<std::uint32_t>& scratch);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -31,6 +31,7 @@
 #define SHADETOOL_INLINE inline
 #endif
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 SHADETOOL_INLINE Vec3d load_position(const double* positions, std::uint32_t v) {
@@ -105,3 +106,4 @@ inline Vec3d face_area_vector(const Mesh& mesh, std::size_t f) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

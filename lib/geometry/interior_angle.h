@@ -28,12 +28,13 @@
 #include <shadetool/core/math_constants.h>
 #include <shadetool/geometry/face_area_vector.h>  // SHADETOOL_INLINE
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 namespace interior_angle_detail {
 
 // atan(k/8), k = 0..8, correctly rounded.
-struct AtanTable {
+struct __attribute__((visibility("hidden"))) AtanTable {  // internal: each binary keeps its own copy
   static constexpr double atan_k8[9] = {0.0, 0.12435499454676144, 0.24497866312686414, 0.35877067027057225,
                                         0.4636476090008061, 0.5585993153435624, 0.6435011087932844,
                                         0.7188299996216245, 0.7853981633974483};
@@ -76,3 +77,4 @@ SHADETOOL_INLINE double polygon_corner_angle(double signed_sin, double cos_part)
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

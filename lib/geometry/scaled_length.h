@@ -22,6 +22,7 @@
 #include <shadetool/core/vec3.h>
 #include <shadetool/geometry/face_area_vector.h>  // SHADETOOL_INLINE
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 constexpr double kSquaresFrom = 1e-280, kSquaresTo = 1e280;
@@ -59,3 +60,4 @@ SHADETOOL_INLINE bool normalise_checked(const Vec3d& v, Vec3d& o) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -15,6 +15,7 @@
 #include <numeric>
 #include <vector>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // The root of x's set, halving the path on the way.
@@ -63,3 +64,4 @@ inline std::uint32_t union_find_root_with_parity(std::uint32_t* node, std::uint3
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

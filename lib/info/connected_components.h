@@ -11,8 +11,10 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::info {
 
 std::size_t connected_components(const Mesh& mesh);
 
 }  // namespace shadetool::info
+#pragma GCC visibility pop

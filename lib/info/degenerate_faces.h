@@ -17,6 +17,7 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::info {
 
 struct DegenerateFaces {
@@ -29,3 +30,4 @@ struct DegenerateFaces {
 DegenerateFaces degenerate_faces(const Mesh& mesh);
 
 }  // namespace shadetool::info
+#pragma GCC visibility pop

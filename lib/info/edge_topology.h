@@ -21,6 +21,7 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::info {
 
 struct EdgeTopology {
@@ -34,3 +35,4 @@ struct EdgeTopology {
 EdgeTopology edge_topology(const Mesh& mesh);
 
 }  // namespace shadetool::info
+#pragma GCC visibility pop

@@ -22,6 +22,7 @@
 #include <shadetool/info/degenerate_faces.h>
 #include <shadetool/info/edge_topology.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::info {
 
 struct MeshInfo {
@@ -56,3 +57,4 @@ struct MeshInfo {
 MeshInfo mesh_info(const Mesh& mesh);
 
 }  // namespace shadetool::info
+#pragma GCC visibility pop

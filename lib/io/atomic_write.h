@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 void write_file_atomically(const std::string& path, std::string_view bytes);
@@ -30,3 +31,4 @@ struct FileToWrite {
 void write_files_atomically(const std::vector<FileToWrite>& files);
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

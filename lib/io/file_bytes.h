@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 class FileBytes {
@@ -40,3 +41,4 @@ class FileBytes {
 FileBytes read_file_bytes(const std::string& path);
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

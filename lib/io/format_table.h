@@ -26,6 +26,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/io/mesh_io.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // How an output format holds one attribute of a Mesh.
@@ -67,3 +68,4 @@ std::string format_list(bool with_dots);
 Format detect_format(std::string_view bytes);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

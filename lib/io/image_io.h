@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct Image {
@@ -61,3 +62,4 @@ void write_image(const Image& image, const std::string& path, const std::string&
                  ImageWriteInfo* info = nullptr);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

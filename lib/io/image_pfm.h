@@ -10,8 +10,10 @@
 #include <cstddef>
 #include <string>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 std::string encode_pfm(int width, int height, const float* linear_rgb, std::size_t count, const std::string& name);
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

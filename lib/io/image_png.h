@@ -13,8 +13,10 @@
 #include <string>
 #include <vector>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 std::string encode_png_srgb8(int width, int height, const std::vector<std::uint8_t>& srgb8, const std::string& name);
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

@@ -24,6 +24,7 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // One enumerator per entry of io/format_table.h (Auto: from the file name's extension).
@@ -71,3 +72,4 @@ void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& o
 std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info = nullptr);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

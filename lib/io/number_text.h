@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <string>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 // True when x is exactly representable as a float: double(float(x)) == x. Values beyond float's
@@ -58,3 +59,4 @@ inline std::uint8_t color_to_uchar(float c) {
 }
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

@@ -27,9 +27,11 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/io/mesh_io.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info);
 void write_obj(const Mesh& mesh, std::string& out, WriteInfo& info);
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

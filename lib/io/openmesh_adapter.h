@@ -48,6 +48,7 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 namespace openmesh_detail {
@@ -207,3 +208,4 @@ Mesh from_openmesh(const OM& om) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -16,6 +16,7 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 Mesh split_corner_normals(const Mesh& mesh, std::size_t& added);
@@ -25,3 +26,4 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added);
 const Mesh& with_corner_normals_split(const Mesh& input, Mesh& storage, std::size_t& added);
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

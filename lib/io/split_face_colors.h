@@ -22,8 +22,10 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 Mesh split_face_colors(const Mesh& mesh, std::size_t& added, std::size_t& unreferenced);
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

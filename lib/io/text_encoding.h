@@ -19,6 +19,7 @@
 
 #include <shadetool/core/error.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 inline void refuse_utf16(std::string_view bytes, const std::string& name) {
@@ -65,3 +66,4 @@ class LineEndings {
 };
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

@@ -13,6 +13,7 @@
 
 #include <fast_float/fast_float.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -113,3 +114,4 @@ inline std::string token_at(const char* p, const char* end) {
 }
 
 }  // namespace shadetool::io
+#pragma GCC visibility pop

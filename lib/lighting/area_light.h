@@ -43,6 +43,7 @@
 
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // Polygons have at most this many vertices (validated when the scene is read); clipping by two
@@ -146,3 +147,4 @@ struct SkyTerms {
 SkyTerms sky_light_terms(const Vec3d& up, const Vec3d& n, const SpecularLobe& lobe);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

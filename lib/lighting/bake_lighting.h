@@ -34,6 +34,7 @@
 #include <shadetool/lighting/light_visibility.h>
 #include <shadetool/lighting/shade_points.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class ShadingFrequency { PerVertex, PerFace };
@@ -52,3 +53,4 @@ BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency 
 void store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 double srgb_encode(double linear);
@@ -27,3 +28,4 @@ struct ColorEncoding {
 std::vector<float> encode_colors(const std::vector<double>& linear_rgb, const ColorEncoding& encoding);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -41,6 +41,7 @@
 
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // max(x, 0), inline (std::fmax is a libm call in GCC's -O2 code); NaN -> 0.
@@ -106,3 +107,4 @@ inline void add_light_term(Vec3d& color, const LightProducts& k, double att_spot
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

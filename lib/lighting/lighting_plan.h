@@ -24,6 +24,7 @@
 
 #include <shadetool/lighting/scene.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct SkipOptions {
@@ -57,3 +58,4 @@ inline Vec3d mul(const Vec3d& a, const Vec3d& b) { return {a.x * b.x, a.y * b.y,
 inline bool is_zero(const Vec3d& a) { return a.x == 0 && a.y == 0 && a.z == 0; }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -11,8 +11,10 @@
 #include <shadetool/core/affine.h>
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 bool look_at(const Vec3d& eye, const Vec3d& target, const Vec3d& up, Affine3d& view);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -43,9 +43,11 @@
 
 #include <shadetool/lighting/scene.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 Scene read_scene(const std::string& path);
 Scene parse_scene(std::string_view json_text, const std::string& name);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -14,6 +14,7 @@
 #include <shadetool/core/affine.h>
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class ShadingModel {
@@ -95,3 +96,4 @@ struct Scene {
 Vec3d eye_world(const Scene& scene);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

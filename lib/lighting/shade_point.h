@@ -22,6 +22,7 @@
 #include <shadetool/lighting/shade_points.h>
 #include <shadetool/lighting/shading_space.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct PointLighting {
@@ -39,3 +40,4 @@ Vec3d shade_point(const PointLighting& lighting, const Vec3d& position_world, co
                   ShadeCounters* counters = nullptr);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -25,6 +25,7 @@
 #include <shadetool/lighting/scene.h>
 #include <shadetool/lighting/shading_space.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // What the per-point loop (engine/shade_point.h) did and skipped, summed over points.
@@ -83,3 +84,4 @@ std::vector<double> shade_points(const Scene& scene, const std::vector<double>& 
                                  ShadeReport* report = nullptr);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -40,6 +40,7 @@
 #include <shadetool/lighting/lighting_plan.h>
 #include <shadetool/lighting/scene.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class ShadingSpace { Auto, World, Camera, Object };
@@ -116,3 +117,4 @@ SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan, const Ski
 double cos_degrees(double degrees);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -33,6 +33,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/normals/weighting.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct CornerNormals {
@@ -72,3 +73,4 @@ GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint3
                                   Precision precision = Precision::Double);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

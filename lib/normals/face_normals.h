@@ -13,8 +13,10 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/normals/weighting.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 std::vector<double> face_normals(const Mesh& mesh, Precision precision = Precision::Double);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -9,8 +9,10 @@
 #include <cstddef>
 #include <vector>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 std::size_t count_invalid_normals(const std::vector<double>& normals);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -30,6 +30,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/normals/weighting.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class NormalKind { Vertex, Corner, Face };
@@ -57,3 +58,4 @@ struct NormalsReport {
 NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -17,6 +17,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/normals/weighting.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 constexpr double kFallbackNormal[3] = {0.0, 0.0, 1.0};
@@ -25,3 +26,4 @@ void apply_vertex_fallback(const Mesh& mesh, const std::vector<std::uint32_t>& v
                            std::vector<double>& normals);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -37,6 +37,7 @@
 #include <shadetool/normals/vertex_normals_plan.h>
 #include <shadetool/normals/weighting.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct VertexNormals {
@@ -61,3 +62,4 @@ void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting w
                     VertexNormals& out);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -24,6 +24,7 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 namespace normals_detail {
@@ -45,3 +46,4 @@ class VertexNormalsPlan {
 };
 
 }  // namespace shadetool
+#pragma GCC visibility pop

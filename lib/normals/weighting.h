@@ -27,6 +27,7 @@
 #include <shadetool/core/vec3.h>
 #include <shadetool/geometry/face_area_vector.h>  // SHADETOOL_INLINE
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class Weighting {
@@ -55,3 +56,4 @@ SHADETOOL_INLINE bool max_contribution(const Vec3d& v, double s, double d, Vec3d
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

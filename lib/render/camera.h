@@ -29,6 +29,7 @@
 #include <shadetool/core/affine.h>
 #include <shadetool/lighting/scene.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct Bounds3d {
@@ -59,3 +60,4 @@ struct RenderCamera {
 RenderCamera make_render_camera(const Scene& scene, const Bounds3d& bounds_world, int width, int height);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -22,6 +22,7 @@
 
 #include <cstddef>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct ClipVertex {
@@ -82,3 +83,4 @@ inline int clip_against(const ClipVertex* in, int n, int plane, double g, ClipVe
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -20,6 +20,7 @@
 
 #include <cstdint>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 inline std::int64_t orient(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t px,
@@ -34,3 +35,4 @@ inline std::int64_t top_left_bias(std::int64_t ax, std::int64_t ay, std::int64_t
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

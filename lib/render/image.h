@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // An allocator whose resize() leaves new floats uninitialised: the renderer writes every pixel
@@ -44,3 +45,4 @@ struct ImageRGB {
 };
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -24,6 +24,7 @@
 
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct QuadUV {
@@ -86,3 +87,4 @@ inline bool inverse_bilinear_3d(const Vec3d& p, const Vec3d q[4], QuadUV& out) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

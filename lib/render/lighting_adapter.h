@@ -27,6 +27,7 @@
 #include <shadetool/lighting/shade_points.h>
 #include <shadetool/lighting/shading_space.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct RenderLightingOptions {
@@ -57,3 +58,4 @@ Vec3d scene_eye_world(const Scene& scene);
 std::uint8_t encode_srgb_8bit(double linear);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

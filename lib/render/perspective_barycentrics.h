@@ -13,6 +13,7 @@
 // is checked anyway and b = lambda returned if it is not positive. Precision: double.
 #pragma once
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 inline void perspective_barycentrics(const double lambda[3], const double inv_w[3], double b[3]) {
@@ -29,3 +30,4 @@ inline void perspective_barycentrics(const double lambda[3], const double inv_w[
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

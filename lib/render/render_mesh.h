@@ -50,6 +50,7 @@
 #include <shadetool/render/image.h>
 #include <shadetool/render/lighting_adapter.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class RenderShading { Flat, Gouraud, Phong };
@@ -91,3 +92,4 @@ RenderResult render_mesh(const Mesh& mesh, const Scene& scene, const RenderOptio
                          const std::string& name = "<mesh>");
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -27,6 +27,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/repair/consistent_winding.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct AuthoredNormalsVote {
@@ -43,3 +44,4 @@ AuthoredNormalsVote authored_normals_vote(const Mesh& mesh, const ConsistentWind
 bool thin_closed_component(const Mesh& mesh, const std::vector<std::uint32_t>& faces, double volume);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

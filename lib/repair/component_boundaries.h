@@ -27,6 +27,7 @@
 #include <shadetool/repair/consistent_winding.h>
 #include <shadetool/topology/edge_adjacency.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct ComponentBoundaries {
@@ -39,3 +40,4 @@ struct ComponentBoundaries {
 ComponentBoundaries component_boundaries(const Mesh& mesh, const EdgeAdjacency& adj, const ConsistentWinding& winding);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -55,6 +55,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/topology/edge_adjacency.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct ConsistentWinding {
@@ -83,3 +84,4 @@ struct ComponentFaces {
 ComponentFaces faces_by_component(const ConsistentWinding& winding);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -26,6 +26,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/geometry/degenerate_face.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct DegenerateFaces {
@@ -46,3 +47,4 @@ void count_degenerate_kinds(DegenerateFaces& d);
 std::size_t remove_faces(Mesh& mesh, const std::vector<std::uint8_t>& remove);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -29,6 +29,7 @@
 #include <shadetool/repair/consistent_winding.h>
 #include <shadetool/topology/edge_adjacency.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct DuplicateFaces {
@@ -42,3 +43,4 @@ DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj, const
 DuplicateFaces duplicate_faces(const Mesh& mesh, const EdgeAdjacency& adj);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

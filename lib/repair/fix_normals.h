@@ -32,6 +32,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/normals/weighting.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct NormalsFix {
@@ -43,3 +44,4 @@ struct NormalsFix {
 NormalsFix fix_normals(Mesh& mesh, Weighting weighting = Weighting::Angle);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -33,6 +33,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/repair/consistent_winding.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct OpenSurfaceVote {
@@ -46,3 +47,4 @@ OpenSurfaceVote open_surface_vote(const Mesh& mesh, const ConsistentWinding& win
                                   const std::vector<std::uint32_t>& faces);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -34,6 +34,7 @@
 #include <shadetool/repair/consistent_winding.h>
 #include <shadetool/repair/signed_volume.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class OrientationBasis : std::uint8_t { Volume, NestedShell, SurfaceVote, AuthoredNormals, Majority };
@@ -53,3 +54,4 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
                                        const ComponentBoundaries& boundaries, const ComponentVolumes& volumes);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

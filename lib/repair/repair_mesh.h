@@ -27,6 +27,7 @@
 #include <shadetool/normals/weighting.h>
 #include <shadetool/repair/repair_report.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct RepairOptions {
@@ -38,3 +39,4 @@ struct RepairOptions {
 RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options = {});
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -11,6 +11,7 @@
 
 #include <shadetool/repair/fix_normals.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct RepairReport {
@@ -59,3 +60,4 @@ struct RepairReport {
 };
 
 }  // namespace shadetool
+#pragma GCC visibility pop

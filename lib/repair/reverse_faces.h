@@ -16,9 +16,11 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 // Returns how many faces were reversed.
 std::size_t reverse_faces(Mesh& mesh, const std::vector<std::uint8_t>& reverse);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

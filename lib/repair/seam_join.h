@@ -26,6 +26,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/topology/edge_adjacency.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct SeamJoin {
@@ -36,3 +37,4 @@ struct SeamJoin {
 SeamJoin seam_join(const Mesh& mesh, const EdgeAdjacency& adj);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -30,6 +30,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/repair/consistent_winding.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 std::vector<std::uint32_t> shell_nesting_depth(const Mesh& mesh, const ConsistentWinding& winding,
@@ -37,3 +38,4 @@ std::vector<std::uint32_t> shell_nesting_depth(const Mesh& mesh, const Consisten
                                                const std::vector<std::uint8_t>& shell_invert);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

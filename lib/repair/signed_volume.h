@@ -34,6 +34,7 @@
 #include <shadetool/repair/consistent_winding.h>
 #include <shadetool/repair/degenerate_faces.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct ComponentVolumes {
@@ -53,3 +54,4 @@ inline bool volume_has_sign(double volume, double magnitude) {
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

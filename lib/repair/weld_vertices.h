@@ -28,6 +28,7 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct WeldResult {
@@ -38,3 +39,4 @@ struct WeldResult {
 WeldResult weld_vertices(Mesh& mesh, double eps);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -40,6 +40,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 double triangle_solid_angle(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& q);
@@ -68,3 +69,4 @@ double winding_number(const WindingNumberTree& tree, const Vec3d& q,
                       std::uint32_t skip_face = WindingNumberTree::kNoFace, double beta = 2.0);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -52,6 +52,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct EdgeAdjacencyOptions {
@@ -102,3 +103,4 @@ inline std::pair<std::uint32_t, std::uint32_t> half_edge_ends(const Mesh& mesh, 
 }
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -29,6 +29,7 @@
 #include <shadetool/core/affine.h>
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 Affine3d scale_map(const Vec3d& s, const std::string& source = "--scale");
@@ -41,3 +42,4 @@ Affine3d compose_in_order(const std::vector<Affine3d>& maps);
 void sin_cos_degrees(double degrees, double& sin_out, double& cos_out);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -40,6 +40,7 @@
 
 #include <shadetool/core/affine.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class TransformPath { Identity, Translation, Rotation, UniformScale, General, Singular };
@@ -66,3 +67,4 @@ const char* path_name(TransformPath path);
 Mat3d scaled_to_unit(const Mat3d& A, int& exponent);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -22,8 +22,10 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 std::size_t recompute_normals(Mesh& mesh);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

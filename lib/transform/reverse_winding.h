@@ -15,8 +15,10 @@
 
 #include <shadetool/core/mesh.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 void reverse_winding(Mesh& mesh);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

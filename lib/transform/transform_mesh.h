@@ -34,6 +34,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/transform/classify_affine.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 enum class NormalsPolicy { Transform, Recompute, Drop };
@@ -60,3 +61,4 @@ TransformReport transform_mesh(Mesh& mesh, const Affine3d& M, const TransformOpt
 std::string singular_map_message(const AffineClass& c);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

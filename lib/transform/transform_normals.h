@@ -32,6 +32,7 @@
 #include <shadetool/core/affine.h>
 #include <shadetool/transform/classify_affine.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct NormalMap {
@@ -46,3 +47,4 @@ NormalMap normal_map(const Affine3d& M, const AffineClass& c);
 std::size_t transform_normals(std::vector<double>& normals, const NormalMap& map);
 
 }  // namespace shadetool
+#pragma GCC visibility pop

@@ -39,6 +39,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/visibility/visibility_scene.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct AmbientOcclusionOptions {
@@ -67,3 +68,4 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
                                              const AmbientOcclusionOptions& options = {});
 
 }  // namespace shadetool
+#pragma GCC visibility pop

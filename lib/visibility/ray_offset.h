@@ -24,6 +24,7 @@
 
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::visibility {
 
 constexpr float kOffsetOrigin = 1.0f / 32.0f;       // below this |p_i|, add a fixed offset
@@ -46,3 +47,4 @@ inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& n) {
 }
 
 }  // namespace shadetool::visibility
+#pragma GCC visibility pop

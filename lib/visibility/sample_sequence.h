@@ -30,6 +30,7 @@
 #include <shadetool/core/math_constants.h>
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::visibility {
 
 inline std::uint32_t reverse_bits(std::uint32_t x) {
@@ -114,3 +115,4 @@ inline void orthonormal_basis(const Vec3d& n, Vec3d& t, Vec3d& b) {
 }
 
 }  // namespace shadetool::visibility
+#pragma GCC visibility pop

@@ -41,6 +41,7 @@
 #include <shadetool/core/vec3.h>
 #include <shadetool/visibility/visibility_scene.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 std::vector<std::uint8_t> shadow_visibility_directional(const VisibilityScene& scene, const std::vector<double>& points,
@@ -69,3 +70,4 @@ std::vector<double> shadow_visibility_sampled(const VisibilityScene& scene, cons
                                               const ShadowSampleOptions& options = {});
 
 }  // namespace shadetool
+#pragma GCC visibility pop

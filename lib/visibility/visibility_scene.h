@@ -29,6 +29,7 @@
 #include <shadetool/core/mesh.h>
 #include <shadetool/core/vec3.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct VisibilitySceneStats {
@@ -68,3 +69,4 @@ class VisibilityScene {
 };
 
 }  // namespace shadetool
+#pragma GCC visibility pop
