@@ -35,6 +35,7 @@
 #include <shadetool/lighting/scene.h>
 #include <shadetool/visibility/visibility_scene.h>
 
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
 struct ShadowOptions {
@@ -57,3 +58,4 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
                                      ShadowStats* stats = nullptr);
 
 }  // namespace shadetool
+#pragma GCC visibility pop
