@@ -51,13 +51,22 @@ shadetool::Image to_output_image(const shadetool::ImageRGB& rendered, bool linea
   return out;
 }
 
-// Whether the image is written as PFM: --hdr, --format pfm, or an output named *.pfm.
-bool writes_pfm(const IoOptions& io, bool hdr) {
-  if (hdr) return true;
-  if (!io.format.empty()) return io.format == "pfm" || io.format == "PFM";
-  const std::string ext = fs::path(io.output).extension().string();
-  return ext == ".pfm" || ext == ".PFM";
+// A path's extension without its dot ("" when none).
+std::string extension_of(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  if (!ext.empty()) ext.erase(0, 1);  // the dot
+  return ext;
 }
+
+// The image format the driver will write (io/image_io.h's table, looked up the way the driver
+// looks it up: --format, else -o's extension, else the table's default), or null when unknown.
+const shadetool::ImageFormatEntry* output_image_format(const IoOptions& io) {
+  std::string name = io.format;
+  if (name.empty() && !io.output.empty() && io.output != "-") name = extension_of(io.output);
+  return shadetool::find_image_format(name.empty() ? shadetool::image_format_names().front() : name);
+}
+
+bool is_pfm(const shadetool::ImageFormatEntry* f) { return f != nullptr && std::string(f->name) == "pfm"; }
 
 shadetool::RenderShading parse_shading(const std::string& s) {
   if (s == "flat") return shadetool::RenderShading::Flat;
@@ -91,10 +100,9 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
 
   return [] {
     if (opt.hdr) {
-      if (!io.format.empty() && io.format != "pfm" && io.format != "PFM")
+      if (!io.format.empty() && !is_pfm(shadetool::find_image_format(io.format)))
         throw UsageError("--hdr writes a float image (PFM), not --format " + io.format);
-      const std::string ext = fs::path(io.output).extension().string();
-      if (!io.output.empty() && io.output != "-" && ext != ".pfm" && ext != ".PFM")
+      if (!io.output.empty() && io.output != "-" && !is_pfm(shadetool::find_image_format(extension_of(io.output))))
         throw UsageError("--hdr writes a float image (PFM): name the output .pfm");
       if (io.format.empty()) io.format = "pfm";
     }
@@ -124,7 +132,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       throw shadetool::Error("--size " + std::to_string(ro.width) + "," + std::to_string(ro.height) +
                              ": each side must be 1.." + std::to_string(shadetool::kMaxImageSide) + " pixels");
 
-    const bool pfm = writes_pfm(io, opt.hdr);
+    const bool pfm = is_pfm(output_image_format(io));  // --hdr has set io.format to pfm
     return run_command("render", io, [ro, &scene, pfm](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       shadetool::require_finite_positions(mesh, input);
       shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
