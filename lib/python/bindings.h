@@ -18,7 +18,7 @@ void init_normals(py::module_& m);
 void init_pipeline(py::module_& m);
 void init_lighting(py::module_& m);
 
-// Raises FileNotFoundError(errno.ENOENT, "PATH: what", PATH).
+// Raises FileNotFoundError(errno.ENOENT, what, PATH): "[Errno 2] what: 'PATH'".
 [[noreturn]] void throw_file_not_found(const std::string& path, const std::string& what);
 
 }  // namespace shadetool_python

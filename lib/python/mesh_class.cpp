@@ -2,6 +2,8 @@
 #include <filesystem>
 #include <string>
 
+#include <pybind11/stl/filesystem.h>
+
 #include <shadetool/io/mesh_io.h>
 
 #include "arrays.h"
@@ -83,7 +85,7 @@ the mesh in place): vertices (n, 3) float64, faces (m, k) uint32 (ValueError whe
 differ: use face_indices / face_offsets), face_indices (C,) uint32, face_offsets (m + 1,) uint32,
 vertex_normals (n, 3) float64 or None, face_normals (m, 3) float64 or None, corner_normals
 (p, 3) float64 pool or None with corner_normal_index (C,) uint32, vertex_colors / face_colors
-(rows, 3 or 4) float32 or None. Assigning an attribute copies the whole mesh once (views taken
+(rows, 3 or 4) float32 or None, vertex_quality (n,) / face_quality (m,) float32 or None. Assigning an attribute copies the whole mesh once (views taken
 before keep the old arrays, so none dangles).
 )doc")
       .def(py::init([](py::handle vertices, py::handle faces, py::handle vertex_normals, py::handle face_normals,
@@ -226,6 +228,30 @@ before keep the old arrays, so none dangles).
             });
           },
           "(m, 3|4) float32 view (linear colours) or None")
+      .def_property_readonly(
+          "vertex_quality",
+          [](PyMesh& s) -> py::object {
+            if (!s.mesh->has_vertex_quality()) return py::none();
+            return view(s.mesh, s.mesh->vertex_quality, {py::ssize_t(s.mesh->vertex_quality.size())});
+          },
+          "(n,) float32 view of a scalar per vertex (PLY `quality`; occlusion's output) or None")
+      .def_property_readonly(
+          "face_quality",
+          [](PyMesh& s) -> py::object {
+            if (!s.mesh->has_face_quality()) return py::none();
+            return view(s.mesh, s.mesh->face_quality, {py::ssize_t(s.mesh->face_quality.size())});
+          },
+          "(m,) float32 view of a scalar per face (PLY face `quality`) or None")
+      .def("clear_normals",
+           [](PyMesh& s) {
+             change(s, [](Mesh& m) {
+               m.vertex_normals.clear();
+               m.corner_normals.clear();
+               m.corner_normal_index.clear();
+               m.face_normals.clear();
+             });
+           },
+           "Removes every normal (vertex, corner, face), as `shadetool normals --recompute` does first.")
       .def_property(
           "precision",
           [](const PyMesh& s) { return s.mesh->precision == shadetool::ValuePrecision::Double ? "double" : "float"; },

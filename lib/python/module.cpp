@@ -12,7 +12,7 @@
 namespace shadetool_python {
 
 void throw_file_not_found(const std::string& path, const std::string& what) {
-  py::object error = py::module_::import("builtins").attr("FileNotFoundError")(ENOENT, path + ": " + what, path);
+  py::object error = py::module_::import("builtins").attr("FileNotFoundError")(ENOENT, what, path);
   PyErr_SetObject(PyExc_FileNotFoundError, error.ptr());
   throw py::error_already_set();
 }

@@ -76,7 +76,7 @@ shadetool::NormalsPolicy parse_policy(const std::string& s) {
 void init_pipeline(py::module_& m) {
   m.def(
       "repair",
-      [](py::handle V, py::handle F, const std::string& weight, bool remove_degenerate) {
+      [](py::handle V, py::handle F, const std::string& weight, bool remove_degenerate, bool return_normals) {
         FaceLayout layout;
         shadetool::Mesh mesh = owned_mesh(V, F, "repair", layout);
         shadetool::RepairOptions options;
@@ -90,10 +90,14 @@ void init_pipeline(py::module_& m) {
           report = shadetool::repair_mesh(mesh, options);
         }
         py::dict d = report_dict(report, weight);
-        return py::make_tuple(faces_out(std::move(mesh), layout), d);
+        if (!return_normals) return py::make_tuple(faces_out(std::move(mesh), layout), d);
+        py::object N = py::none();
+        if (mesh.has_vertex_normals()) N = to_numpy(std::move(mesh.vertex_normals), {py::ssize_t(mesh.num_vertices()), 3});
+        return py::make_tuple(faces_out(std::move(mesh), layout), N, d);
       },
       py::arg("V"), py::arg("F") = py::none(), py::arg("weight") = "angle", py::arg("remove_degenerate") = false,
-      R"doc(repair(V, F=None, weight="angle", remove_degenerate=False) -> (F, report)
+      py::arg("return_normals") = false,
+      R"doc(repair(V, F=None, weight="angle", remove_degenerate=False, return_normals=False) -> (F, report)
 
 Orients the faces consistently and outward (the library's repair/repair_mesh.h, what
 `shadetool repair` does): consistent winding per component, outward by signed volume (closed),
@@ -103,6 +107,8 @@ counted, and removed with remove_degenerate. Positions are not changed.
   F  (m, k) integers or (indices, offsets); copied once into uint32
 Returns F repaired, uint32, in F's layout ((m', k), or (indices, offsets)), and the report: a dict
 with the keys of `shadetool repair --report` (faces_flipped, components, orientation, ...).
+return_normals=True returns (F, N, report): N the repaired vertex normals (n, 3) float64 (the
+mesh's own, fixed where NaN, zero or flipped; computed where missing), as `shadetool repair` writes.
 ValueError for bad shapes, dtypes or indices, non-finite positions, no faces.
 )doc");
 
