@@ -309,7 +309,7 @@ message for bad content.
           to_write = given;
         } else {
           auto built = std::make_shared<Mesh>();
-          if (F.is_none()) throw py::value_error("write_mesh: F is required when V is an array");
+          if (F.is_none()) throw py::value_error("write_mesh: F: is required when V is an array");
           read_positions(mesh, "write_mesh: V", *built);
           read_faces(F, "write_mesh: F", *built);
           if (!vertex_normals.is_none())
