@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <limits>
 
 #include <shadetool/core/engine/parallel.h>
@@ -44,24 +45,50 @@ T load(const char* base, py::ssize_t s0, py::ssize_t s1, std::size_t i, std::siz
   return v;
 }
 
-// rows x cols values of a 2-D float array (float64 or float32) into out[rows * cols] of Out.
+// rows x cols values of a 2-D float array (float64 or float32) into `out` (resized). Contiguous
+// input: one converting pass (assign: no zero-fill first, vectorised), serial: it is bound by
+// memory and page faults, and a second thread on a busy 2-core machine costs more than it brings.
+// Strided input: element by element over TBB ranges.
 template <class Out>
-void copy_float_rows(const py::array& a, std::size_t rows, std::size_t cols, Out* out) {
+void copy_float_rows(const py::array& a, std::size_t rows, std::size_t cols, std::vector<Out>& out) {
   const char* base = static_cast<const char*>(a.data());
   const py::ssize_t s0 = a.strides(0), s1 = a.strides(1);
   const bool f64 = a.itemsize() == 8;
   const bool contiguous = s1 == a.itemsize() && s0 == py::ssize_t(cols) * a.itemsize();
   py::gil_scoped_release nogil;
-  engine::parallel_ranges(rows, [&](std::size_t b, std::size_t e) {
-    if (contiguous && f64 && std::is_same_v<Out, double>) {
-      std::memcpy(out + b * cols, base + b * cols * 8, (e - b) * cols * 8);
-      return;
+  if (contiguous || rows == 0) {
+    if (f64) {
+      const double* p = reinterpret_cast<const double*>(base);
+      out.assign(p, p + rows * cols);
+    } else {
+      const float* p = reinterpret_cast<const float*>(base);
+      out.assign(p, p + rows * cols);
     }
+    return;
+  }
+  out.resize(rows * cols);
+  Out* o = out.data();
+  engine::parallel_ranges(rows, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i)
       for (std::size_t k = 0; k < cols; ++k)
-        out[i * cols + k] = f64 ? Out(load<double>(base, s0, s1, i, k)) : Out(load<float>(base, s0, s1, i, k));
+        o[i * cols + k] = f64 ? Out(load<double>(base, s0, s1, i, k)) : Out(load<float>(base, s0, s1, i, k));
   });
 }
+
+// 0, k, 2k, ...: a forward iterator, so that vector::assign writes the face starts in one pass.
+struct Multiples {
+  using iterator_category = std::forward_iterator_tag;
+  using value_type = std::uint32_t;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const std::uint32_t*;
+  using reference = std::uint32_t;
+  std::uint64_t i, k;
+  std::uint32_t operator*() const { return std::uint32_t(i * k); }
+  Multiples& operator++() { ++i; return *this; }
+  Multiples operator++(int) { Multiples t = *this; ++i; return t; }
+  bool operator==(const Multiples& o) const { return i == o.i; }
+  bool operator!=(const Multiples& o) const { return i != o.i; }
+};
 
 py::array float_rows(py::handle A, std::size_t rows, std::size_t cols, const std::string& what) {
   py::array a = as_array(A, what);
@@ -103,16 +130,35 @@ std::int64_t as_int64(I v) {
     return std::int64_t(v);
 }
 
-// Copies rows x cols integers of `a` (2-D, or 1-D with cols = 1) into out as uint32, checking
-// 0 <= value < limit; returns how many are out of range (the first is found by the caller).
+// Copies rows x cols integers of `a` (2-D, or 1-D with cols = 1) into `out` (resized) as uint32,
+// checking 0 <= value < limit; returns how many are out of range (the first is found by the
+// caller). Contiguous input: the range check is one read-only pass of min and max (vectorised), then
+// one converting assign; strided input: element by element over TBB ranges.
 std::size_t copy_indices(const py::array& a, std::size_t rows, std::size_t cols, std::uint64_t limit,
-                         std::uint32_t* out, const std::string& what) {
+                         std::vector<std::uint32_t>& out, const std::string& what) {
   const char* base = static_cast<const char*>(a.data());
-  const py::ssize_t s0 = a.strides(0), s1 = a.ndim() == 2 ? a.strides(1) : 0;
+  const py::ssize_t s0 = a.ndim() >= 1 ? a.strides(0) : 0, s1 = a.ndim() == 2 ? a.strides(1) : 0;
+  const bool contiguous = (a.ndim() == 1 && s0 == a.itemsize()) ||
+                          (a.ndim() == 2 && s1 == a.itemsize() && s0 == py::ssize_t(cols) * a.itemsize());
   std::size_t bad_count = 0;
   with_integer_type(a, what, [&](auto tag) {
     using I = decltype(tag);
     py::gil_scoped_release nogil;
+    const std::size_t total = rows * cols;
+    if (contiguous || total == 0) {
+      const I* p = reinterpret_cast<const I*>(base);
+      I lo = total ? p[0] : I(0), hi = lo;
+      for (std::size_t i = 0; i < total; ++i) {
+        lo = p[i] < lo ? p[i] : lo;
+        hi = p[i] > hi ? p[i] : hi;
+      }
+      if (total == 0 || (as_int64(lo) >= 0 && std::uint64_t(as_int64(hi)) < limit)) {
+        out.assign(p, p + total);
+        return;
+      }
+    }
+    out.resize(total);
+    std::uint32_t* o = out.data();
     bad_count = engine::count_over_ranges(rows, [&](std::size_t b, std::size_t e) {
       std::size_t n_bad = 0;
       for (std::size_t i = b; i < e; ++i)
@@ -120,7 +166,7 @@ std::size_t copy_indices(const py::array& a, std::size_t rows, std::size_t cols,
           const std::int64_t v = as_int64(load<I>(base, s0, s1, i, k));
           const bool ok = v >= 0 && std::uint64_t(v) < limit;
           n_bad += !ok;
-          out[i * cols + k] = ok ? std::uint32_t(v) : 0;
+          o[i * cols + k] = ok ? std::uint32_t(v) : 0;
         }
       return n_bad;
     });
@@ -171,9 +217,8 @@ void read_positions(py::handle V, const std::string& what, Mesh& mesh) {
   py::array a = float_rows(V, std::size_t(-1), 3, what);
   const std::size_t n = std::size_t(a.shape(0));
   if (n > kMaxIndex) bad(what, plural(n, " vertex", " vertices") + ": more than the library's 2^32 - 1");
-  mesh.positions.resize(3 * n);
   mesh.precision = a.itemsize() == 8 ? shadetool::ValuePrecision::Double : shadetool::ValuePrecision::Float;
-  copy_float_rows(a, n, 3, mesh.positions.data());
+  copy_float_rows(a, n, 3, mesh.positions);
 }
 
 FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
@@ -197,9 +242,8 @@ FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
     const std::size_t corners = std::size_t(indices.shape(0));
     const std::size_t faces = std::size_t(offsets.shape(0)) - 1;
     if (corners > kMaxIndex) bad(what, std::to_string(corners) + " corners: more than the library's 2^32 - 1");
-    mesh.face_start.resize(faces + 1);
     // Offsets within [0, C]: checked by the same copy (limit C + 1), then their order.
-    const std::size_t bad_offsets = copy_indices(offsets, faces + 1, 1, std::uint64_t(corners) + 1, mesh.face_start.data(),
+    const std::size_t bad_offsets = copy_indices(offsets, faces + 1, 1, std::uint64_t(corners) + 1, mesh.face_start,
                                                  what + "[1] (offsets)");
     if (bad_offsets > 0) bad(what + "[1] (offsets)", plural(bad_offsets, " offset", " offsets") + " outside [0, " + std::to_string(corners) + "]");
     if (mesh.face_start.front() != 0) bad(what + "[1] (offsets)", "must start at 0, got " + std::to_string(mesh.face_start.front()));
@@ -208,8 +252,7 @@ FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
     for (std::size_t f = 0; f < faces; ++f)
       if (mesh.face_start[f + 1] < mesh.face_start[f])
         bad(what + "[1] (offsets)", "must be non-decreasing (offsets[" + std::to_string(f + 1) + "] < offsets[" + std::to_string(f) + "])");
-    mesh.corner_vertex.resize(corners);
-    const std::size_t bad_indices = copy_indices(indices, corners, 1, n, mesh.corner_vertex.data(), what + "[0] (indices)");
+    const std::size_t bad_indices = copy_indices(indices, corners, 1, n, mesh.corner_vertex, what + "[0] (indices)");
     if (bad_indices > 0) index_error(indices, corners, 1, bad_indices, "indices");
     return FaceLayout{0};
   }
@@ -219,35 +262,26 @@ FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
                   shape_text(a));
   const std::size_t faces = std::size_t(a.shape(0)), k = std::size_t(a.shape(1));
   if (faces * k > kMaxIndex) bad(what, std::to_string(faces * k) + " corners: more than the library's 2^32 - 1");
-  mesh.corner_vertex.resize(faces * k);
-  mesh.face_start.resize(faces + 1);
-  std::size_t bad_indices = 0;
-  {
-    const std::size_t count = copy_indices(a, faces, k, n, mesh.corner_vertex.data(), what);
-    bad_indices = count;
-  }
+  const std::size_t bad_indices = copy_indices(a, faces, k, n, mesh.corner_vertex, what);
   if (bad_indices > 0) index_error(a, faces, k, bad_indices, "");
-  std::uint32_t* starts = mesh.face_start.data();
   {
     py::gil_scoped_release nogil;
-    engine::parallel_ranges(faces + 1, [&](std::size_t b, std::size_t e) {
-      for (std::size_t f = b; f < e; ++f) starts[f] = std::uint32_t(f * k);
-    });
+    mesh.face_start.assign(Multiples{0, k}, Multiples{faces + 1, k});
   }
   return FaceLayout{k};
 }
 
 std::vector<double> read_double_rows(py::handle A, std::size_t rows, std::size_t cols, const std::string& what) {
   py::array a = float_rows(A, rows, cols, what);
-  std::vector<double> out(rows * cols);
-  copy_float_rows(a, rows, cols, out.data());
+  std::vector<double> out;
+  copy_float_rows(a, rows, cols, out);
   return out;
 }
 
 std::vector<float> read_float_rows(py::handle A, std::size_t rows, std::size_t cols, const std::string& what) {
   py::array a = float_rows(A, rows, cols, what);
-  std::vector<float> out(rows * cols);
-  copy_float_rows(a, rows, cols, out.data());
+  std::vector<float> out;
+  copy_float_rows(a, rows, cols, out);
   return out;
 }
 
