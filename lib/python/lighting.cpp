@@ -76,7 +76,7 @@ bool parse_per(const std::string& s, const std::string& fn) {
 void init_lighting(py::module_& m) {
   m.def(
       "bake_lighting",
-      [](py::handle V, py::handle F, py::handle N, py::handle scene_arg, const std::string& per, py::handle model,
+      [](py::object V, py::object F, py::object N, py::object scene_arg, const std::string& per, py::object model,
          const std::string& space, bool shadows, std::uint32_t samples) {
         const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "bake_lighting");
         const shadetool::Scene scene = scene_of(scene_arg, "bake_lighting");
@@ -130,7 +130,7 @@ positions or normals.
 
   m.def(
       "occlusion",
-      [](py::handle V, py::handle F, py::handle N, std::uint32_t samples, double distance, const std::string& per,
+      [](py::object V, py::object F, py::object N, std::uint32_t samples, double distance, const std::string& per,
          std::uint32_t seed) {
         const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "occlusion");
         const bool per_face = parse_per(per, "occlusion");
@@ -180,8 +180,8 @@ Points without a usable normal get 1 (no ray cast).
 
   m.def(
       "render",
-      [](py::handle V, py::handle F, py::handle N, py::handle scene_arg, int width, int height,
-         const std::string& shading, int samples, py::handle background, py::handle model, const std::string& space,
+      [](py::object V, py::object F, py::object N, py::object scene_arg, int width, int height,
+         const std::string& shading, int samples, py::object background, py::object model, const std::string& space,
          bool hdr, int threads) -> py::object {
         const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "render");
         const shadetool::Scene scene = scene_of(scene_arg, "render");

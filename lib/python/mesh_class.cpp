@@ -88,8 +88,8 @@ vertex_normals (n, 3) float64 or None, face_normals (m, 3) float64 or None, corn
 (rows, 3 or 4) float32 or None, vertex_quality (n,) / face_quality (m,) float32 or None. Assigning an attribute copies the whole mesh once (views taken
 before keep the old arrays, so none dangles).
 )doc")
-      .def(py::init([](py::handle vertices, py::handle faces, py::handle vertex_normals, py::handle face_normals,
-                       py::handle vertex_colors, py::handle face_colors) {
+      .def(py::init([](py::object vertices, py::object faces, py::object vertex_normals, py::object face_normals,
+                       py::object vertex_colors, py::object face_colors) {
              PyMesh self;
              Mesh& mesh = *self.mesh;
              read_positions(vertices, "Mesh: vertices", mesh);
@@ -118,7 +118,7 @@ before keep the old arrays, so none dangles).
       .def_property_readonly("num_faces", [](const PyMesh& s) { return s.mesh->num_faces(); })
       .def_property(
           "vertices", [](PyMesh& s) { return view(s.mesh, s.mesh->positions, {rows(s.mesh->positions), 3}); },
-          [](PyMesh& s, py::handle V) {
+          [](PyMesh& s, py::object V) {
             change(s, [&](Mesh& m) {
               const std::size_t n = m.num_vertices();
               m.positions = read_double_rows(V, n, 3, "Mesh.vertices (same vertex count; build a new Mesh to change it)");
@@ -134,7 +134,7 @@ before keep the old arrays, so none dangles).
             return view(s.mesh, s.mesh->corner_vertex,
                         {py::ssize_t(s.mesh->num_faces()), py::ssize_t(layout.corners_per_face)});
           },
-          [](PyMesh& s, py::handle F) { change(s, [&](Mesh& m) { set_faces(m, F); }); },
+          [](PyMesh& s, py::object F) { change(s, [&](Mesh& m) { set_faces(m, F); }); },
           "(m, k) uint32 view of the faces' vertex indices (every face with k corners)")
       .def_property_readonly(
           "face_indices", [](PyMesh& s) { return view(s.mesh, s.mesh->corner_vertex, {py::ssize_t(s.mesh->num_corners())}); },
@@ -148,7 +148,7 @@ before keep the old arrays, so none dangles).
             if (!s.mesh->has_vertex_normals()) return py::none();
             return view(s.mesh, s.mesh->vertex_normals, {rows(s.mesh->vertex_normals), 3});
           },
-          [](PyMesh& s, py::handle N) {
+          [](PyMesh& s, py::object N) {
             change(s, [&](Mesh& m) {
               if (N.is_none()) m.vertex_normals.clear();
               else m.vertex_normals = read_double_rows(N, m.num_vertices(), 3, "Mesh.vertex_normals");
@@ -161,7 +161,7 @@ before keep the old arrays, so none dangles).
             if (!s.mesh->has_face_normals()) return py::none();
             return view(s.mesh, s.mesh->face_normals, {rows(s.mesh->face_normals), 3});
           },
-          [](PyMesh& s, py::handle N) {
+          [](PyMesh& s, py::object N) {
             change(s, [&](Mesh& m) {
               if (N.is_none()) m.face_normals.clear();
               else m.face_normals = read_double_rows(N, m.num_faces(), 3, "Mesh.face_normals");
@@ -189,7 +189,7 @@ before keep the old arrays, so none dangles).
             const py::ssize_t ch = s.mesh->color_channels;
             return view(s.mesh, s.mesh->vertex_colors, {py::ssize_t(s.mesh->vertex_colors.size()) / ch, ch});
           },
-          [](PyMesh& s, py::handle C) {
+          [](PyMesh& s, py::object C) {
             change(s, [&](Mesh& m) {
               if (C.is_none()) {
                 m.vertex_colors.clear();
@@ -212,7 +212,7 @@ before keep the old arrays, so none dangles).
             const py::ssize_t ch = s.mesh->color_channels;
             return view(s.mesh, s.mesh->face_colors, {py::ssize_t(s.mesh->face_colors.size()) / ch, ch});
           },
-          [](PyMesh& s, py::handle C) {
+          [](PyMesh& s, py::object C) {
             change(s, [&](Mesh& m) {
               if (C.is_none()) {
                 m.face_colors.clear();
@@ -300,7 +300,7 @@ message for bad content.
 
   m.def(
       "write_mesh",
-      [](const fs::path& path, py::handle mesh, py::handle F, py::handle vertex_normals, bool binary,
+      [](const fs::path& path, py::object mesh, py::object F, py::object vertex_normals, bool binary,
          const std::string& format) {
         std::shared_ptr<const Mesh> to_write;
         if (std::shared_ptr<Mesh> given = as_mesh(mesh)) {

@@ -27,7 +27,7 @@ constexpr const char* kMeshArgs = R"doc(
 void init_normals(py::module_& m) {
   m.def(
       "face_normals",
-      [](py::handle V, py::handle F, const std::string& precision) {
+      [](py::object V, py::object F, const std::string& precision) {
         const MeshInput in = mesh_input(V, F, "face_normals");
         const shadetool::Precision p = parse_precision(precision, "face_normals");
         std::vector<double> normals;
@@ -49,7 +49,7 @@ corners) gets (0, 0, 0), never NaN. The library's normals/face_normals.h.
 
   m.def(
       "vertex_normals",
-      [](py::handle V, py::handle F, const std::string& weight, const std::string& precision) {
+      [](py::object V, py::object F, const std::string& weight, const std::string& precision) {
         const MeshInput in = mesh_input(V, F, "vertex_normals");
         const shadetool::Weighting w = parse_weighting(weight, "vertex_normals");
         const shadetool::Precision p = parse_precision(precision, "vertex_normals");
@@ -78,7 +78,7 @@ the GIL released; the result is bitwise the same for any thread count.
 
   m.def(
       "corner_normals",
-      [](py::handle V, py::handle F, py::object crease_deg, const std::string& weight, const std::string& precision) {
+      [](py::object V, py::object F, py::object crease_deg, const std::string& weight, const std::string& precision) {
         if (crease_deg.is_none()) throw py::value_error("corner_normals: crease_deg is required (degrees, 0..180)");
         const double deg = crease_deg.cast<double>();
         if (!(deg >= 0.0 && deg <= 180.0))

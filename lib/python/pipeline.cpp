@@ -76,7 +76,7 @@ shadetool::NormalsPolicy parse_policy(const std::string& s) {
 void init_pipeline(py::module_& m) {
   m.def(
       "repair",
-      [](py::handle V, py::handle F, const std::string& weight, bool remove_degenerate, bool return_normals) {
+      [](py::object V, py::object F, const std::string& weight, bool remove_degenerate, bool return_normals) {
         FaceLayout layout;
         shadetool::Mesh mesh = owned_mesh(V, F, "repair", layout);
         shadetool::RepairOptions options;
@@ -114,7 +114,7 @@ ValueError for bad shapes, dtypes or indices, non-finite positions, no faces.
 
   m.def(
       "transform",
-      [](py::handle V, py::handle F, py::handle N, py::handle matrix, const std::string& normals) {
+      [](py::object V, py::object F, py::object N, py::object matrix, const std::string& normals) {
         FaceLayout layout;
         shadetool::Mesh mesh = owned_mesh(V, F, "transform", layout);
         if (!N.is_none()) {
