@@ -74,12 +74,12 @@ def test_help_documents_shapes_and_dtypes():
 
 
 def test_the_gil_is_released_while_computing():
-    # While a thread is inside vertex_normals (a 960k-triangle mesh), the main thread keeps running
+    # While a thread is inside vertex_normals (a 1.9M-triangle mesh), the main thread keeps running
     # Python: it records time stamps inside the call's window, which it could not do if the call held
     # the GIL. Two threads at once give the same bits as one.
     mesh = shadetool.read_mesh(DATA / "torus_knot.ply")
     V0, F0 = np.array(mesh.vertices), np.array(mesh.faces).astype(np.int64)
-    copies = 100
+    copies = 200
     V = np.concatenate([V0 + 3.0 * k for k in range(copies)])
     F = np.concatenate([F0 + len(V0) * k for k in range(copies)])
     expected = shadetool.vertex_normals(V, F)
