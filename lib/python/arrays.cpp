@@ -6,6 +6,7 @@
 #include <iterator>
 #include <limits>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/parallel.h>
 
 namespace shadetool_python {
@@ -57,6 +58,7 @@ void copy_float_rows(const py::array& a, std::size_t rows, std::size_t cols, std
   const bool contiguous = s1 == a.itemsize() && s0 == py::ssize_t(cols) * a.itemsize();
   py::gil_scoped_release nogil;
   if (contiguous || rows == 0) {
+    shadetool::reserve_bulk(out, rows * cols);  // huge pages for fresh large arrays, as the readers do
     if (f64) {
       const double* p = reinterpret_cast<const double*>(base);
       out.assign(p, p + rows * cols);
@@ -153,6 +155,7 @@ std::size_t copy_indices(const py::array& a, std::size_t rows, std::size_t cols,
         hi = p[i] > hi ? p[i] : hi;
       }
       if (total == 0 || (as_int64(lo) >= 0 && std::uint64_t(as_int64(hi)) < limit)) {
+        shadetool::reserve_bulk(out, total);
         out.assign(p, p + total);
         return;
       }
@@ -266,6 +269,7 @@ FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
   if (bad_indices > 0) index_error(a, faces, k, bad_indices, "");
   {
     py::gil_scoped_release nogil;
+    shadetool::reserve_bulk(mesh.face_start, faces + 1);
     mesh.face_start.assign(Multiples{0, k}, Multiples{faces + 1, k});
   }
   return FaceLayout{k};
