@@ -49,13 +49,14 @@ T load(const char* base, py::ssize_t s0, py::ssize_t s1, std::size_t i, std::siz
 // rows x cols values of a 2-D float array (float64 or float32) into `out` (resized). Contiguous
 // input: one converting pass (assign: no zero-fill first, vectorised), serial: it is bound by
 // memory and page faults, and a second thread on a busy 2-core machine costs more than it brings.
-// Strided input: element by element over TBB ranges.
+// Strided or unaligned input: element by element (memcpy loads) over TBB ranges.
 template <class Out>
 void copy_float_rows(const py::array& a, std::size_t rows, std::size_t cols, std::vector<Out>& out) {
   const char* base = static_cast<const char*>(a.data());
   const py::ssize_t s0 = a.strides(0), s1 = a.strides(1);
   const bool f64 = a.itemsize() == 8;
-  const bool contiguous = s1 == a.itemsize() && s0 == py::ssize_t(cols) * a.itemsize();
+  const bool aligned = reinterpret_cast<std::uintptr_t>(base) % std::uintptr_t(a.itemsize()) == 0;
+  const bool contiguous = aligned && s1 == a.itemsize() && s0 == py::ssize_t(cols) * a.itemsize();
   py::gil_scoped_release nogil;
   if (contiguous || rows == 0) {
     shadetool::reserve_bulk(out, rows * cols);  // huge pages for fresh large arrays, as the readers do
@@ -140,8 +141,9 @@ std::size_t copy_indices(const py::array& a, std::size_t rows, std::size_t cols,
                          std::vector<std::uint32_t>& out, const std::string& what) {
   const char* base = static_cast<const char*>(a.data());
   const py::ssize_t s0 = a.ndim() >= 1 ? a.strides(0) : 0, s1 = a.ndim() == 2 ? a.strides(1) : 0;
-  const bool contiguous = (a.ndim() == 1 && s0 == a.itemsize()) ||
-                          (a.ndim() == 2 && s1 == a.itemsize() && s0 == py::ssize_t(cols) * a.itemsize());
+  const bool aligned = reinterpret_cast<std::uintptr_t>(base) % std::uintptr_t(a.itemsize()) == 0;
+  const bool contiguous = aligned && ((a.ndim() == 1 && s0 == a.itemsize()) ||
+                                      (a.ndim() == 2 && s1 == a.itemsize() && s0 == py::ssize_t(cols) * a.itemsize()));
   std::size_t bad_count = 0;
   with_integer_type(a, what, [&](auto tag) {
     using I = decltype(tag);

@@ -64,6 +64,15 @@ def test_vertex_normals_from_arrays_equal_those_of_the_read_mesh():
     assert same_bits(shadetool.vertex_normals(wide[:, ::2], F), expected)
     F_fortran = np.asfortranarray(F.astype(np.int64))
     assert same_bits(shadetool.vertex_normals(V, F_fortran), expected)
+    # Negative strides: vertices in reverse order, faces (same order) renumbered to match.
+    n = len(V)
+    assert same_bits(shadetool.vertex_normals(V[::-1], n - 1 - F), expected[::-1])
+    # Unaligned memory (an array inside a bytes buffer at an odd offset) is read element by element.
+    raw = bytearray(V.nbytes + 1)
+    unaligned = np.frombuffer(raw, dtype=np.float64, count=V.size, offset=1).reshape(-1, 3)
+    unaligned[...] = V
+    assert not unaligned.flags.aligned
+    assert same_bits(shadetool.vertex_normals(unaligned, F), expected)
     # float32 positions are widened exactly: the same as widening them first.
     V32 = V.astype(np.float32)
     assert same_bits(shadetool.vertex_normals(V32, F), shadetool.vertex_normals(V32.astype(np.float64), F))
