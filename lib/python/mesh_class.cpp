@@ -86,7 +86,8 @@ differ: use face_indices / face_offsets), face_indices (C,) uint32, face_offsets
 vertex_normals (n, 3) float64 or None, face_normals (m, 3) float64 or None, corner_normals
 (p, 3) float64 pool or None with corner_normal_index (C,) uint32, vertex_colors / face_colors
 (rows, 3 or 4) float32 or None, vertex_quality (n,) / face_quality (m,) float32 or None. Assigning an attribute copies the whole mesh once (views taken
-before keep the old arrays, so none dangles).
+before keep the old arrays, so none dangles). Do not write into a view while another thread
+computes on the same Mesh (the library reads it without the GIL).
 )doc")
       .def(py::init([](py::object vertices, py::object faces, py::object vertex_normals, py::object face_normals,
                        py::object vertex_colors, py::object face_colors) {
