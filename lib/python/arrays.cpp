@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <iterator>
 #include <limits>
 
 #include <shadetool/core/bulk_reserve.h>
@@ -78,21 +77,6 @@ void copy_float_rows(const py::array& a, std::size_t rows, std::size_t cols, std
   });
 }
 
-// 0, k, 2k, ...: a forward iterator, so that vector::assign writes the face starts in one pass.
-struct Multiples {
-  using iterator_category = std::forward_iterator_tag;
-  using value_type = std::uint32_t;
-  using difference_type = std::ptrdiff_t;
-  using pointer = const std::uint32_t*;
-  using reference = std::uint32_t;
-  std::uint64_t i, k;
-  std::uint32_t operator*() const { return std::uint32_t(i * k); }
-  Multiples& operator++() { ++i; return *this; }
-  Multiples operator++(int) { Multiples t = *this; ++i; return t; }
-  bool operator==(const Multiples& o) const { return i == o.i; }
-  bool operator!=(const Multiples& o) const { return i != o.i; }
-};
-
 py::array float_rows(py::handle A, std::size_t rows, std::size_t cols, const std::string& what) {
   py::array a = as_array(A, what);
   if (a.ndim() != 2 || (rows != std::size_t(-1) && std::size_t(a.shape(0)) != rows) || std::size_t(a.shape(1)) != cols) {
@@ -158,7 +142,13 @@ std::size_t copy_indices(const py::array& a, std::size_t rows, std::size_t cols,
       }
       if (total == 0 || (as_int64(lo) >= 0 && std::uint64_t(as_int64(hi)) < limit)) {
         shadetool::reserve_bulk(out, total);
-        out.assign(p, p + total);
+        if constexpr (sizeof(I) == sizeof(std::uint32_t)) {
+          // int32 / uint32 in [0, limit): the same bits as uint32, so a plain copy (memmove).
+          const std::uint32_t* q = reinterpret_cast<const std::uint32_t*>(p);
+          out.assign(q, q + total);
+        } else {
+          out.assign(p, p + total);
+        }
         return;
       }
     }
@@ -272,7 +262,10 @@ FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
   {
     py::gil_scoped_release nogil;
     shadetool::reserve_bulk(mesh.face_start, faces + 1);
-    mesh.face_start.assign(Multiples{0, k}, Multiples{faces + 1, k});
+    mesh.face_start.resize(faces + 1);
+    std::uint32_t* starts = mesh.face_start.data();
+    const std::uint32_t step = std::uint32_t(k);  // faces * k < 2^32: checked above
+    for (std::size_t f = 0; f <= faces; ++f) starts[f] = std::uint32_t(f) * step;
   }
   return FaceLayout{k};
 }
