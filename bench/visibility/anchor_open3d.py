@@ -18,7 +18,7 @@ import time
 import numpy as np
 import open3d as o3d
 
-from anchor_common import read_export, read_shadetool, rms, shadetool_us_per_vertex_at
+from anchor_common import equal_error_cells, read_export, read_shadetool, rms, shadetool_us_per_vertex_at
 
 
 def tangent_frames(n):
@@ -91,9 +91,8 @@ def main():
         e = rms(open_fraction, reference)
         g, tr = float(np.median(gen)), float(np.median(trace))
         us = 1000 * (g + tr) / K
-        ours_us = shadetool_us_per_vertex_at(ours, e)
-        ratio = f"{us / ours_us:.1f}" if ours_us else "-"
-        ours_txt = f"{ours_us:.2f}" if ours_us else "- (outside shadetool's rows)"
+        ours_us, bound = shadetool_us_per_vertex_at(ours, e)
+        ours_txt, ratio = equal_error_cells(us, ours_us, bound)
         print(f"| {n_samples} | {e:.5f} | {g:.1f} | {tr:.1f} | {g + tr:.1f} | {us:.2f} | {ours_txt} | {ratio} |")
         rows.append((n_samples, e, g, tr, us, ours_us or float("nan")))
     with open(out_csv, "w") as f:
