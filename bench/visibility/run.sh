@@ -51,13 +51,26 @@ fi
 # Peak memory of the whole command (read, BVH, rays, write) against the mesh's arrays.
 /usr/bin/time -f '%M' -o "$tmp/rss" "$build/shadetool" occlusion "$tmp/knot.ply" -o "$tmp/ao.ply" --samples 16 --stats 2> "$tmp/stats"
 rss_kb=$(tail -1 "$tmp/rss")
+stats=$(tail -1 "$tmp/stats")
+nv=$(echo "$stats" | sed -n 's/.* vertices=\([0-9]*\).*/\1/p')
+nf=$(echo "$stats" | sed -n 's/.* faces=\([0-9]*\).*/\1/p')
+nc=$((3 * nf))  # the knot is all triangles
+arrays=$((24 * nv + 4 * nc + 4 * (nf + 1)))  # positions (double), corners, face starts (uint32)
 {
-  echo "\`shadetool occlusion knot.ply -o ao.ply --samples 16\` on the $(sed -n 's/.*faces=\([0-9]*\).*/\1/p' "$tmp/stats") -triangle knot:"
+  echo "\`shadetool occlusion knot.ply -o ao.ply --samples 16\` on the $nf-triangle knot:"
   echo
-  echo "- peak RSS: $((rss_kb / 1024)) MB"
-  echo "- stats: $(tail -1 "$tmp/stats")"
+  echo "- mesh arrays: $arrays bytes ($(awk "BEGIN {printf \"%.1f\", $arrays / 1e6}") MB)"
+  echo "- peak RSS: $rss_kb KiB ($(awk "BEGIN {printf \"%.1f MB, %.2fx the mesh arrays\", $rss_kb * 1024 / 1e6, $rss_kb * 1024 / $arrays}"))"
+  echo "- stats: $stats"
 } | tee "$out/memory.md"
 if command -v gnuplot > /dev/null; then
+  anchors=""
+  if [ -s "$out/open3d.csv" ] && head -1 "$out/open3d.csv" | grep -q samples; then
+    anchors="$anchors, \"$out/open3d.csv\" skip 1 using 5:2 with linespoints title \"Open3D RaycastingScene, numpy i.i.d. rays\""
+  fi
+  if [ -s "$out/blender.csv" ] && head -1 "$out/blender.csv" | grep -q samples; then
+    anchors="$anchors, \"$out/blender.csv\" skip 1 using (1000*\$4/$nv):2 with linespoints title \"Blender 3.4 Cycles AO bake (whole job)\""
+  fi
   gnuplot <<GP
 set terminal pngcairo size 800,500
 set output "$out/error_vs_time.png"
@@ -68,6 +81,6 @@ set ylabel "RMS error of the open fraction (vs 4096 samples)"
 set key top right
 set grid
 plot "$out/ao.csv" skip 1 using 6:2 with linespoints title "shadetool occlusion (N = 4..1024)", \
-     "$out/ao.csv" skip 1 using (1000*\$4/$points):2 with linespoints title "bare Embree rtcOccluded1, same rays"
+     "$out/ao.csv" skip 1 using (1000*\$4/$points):2 with linespoints title "bare Embree rtcOccluded1, same rays"$anchors
 GP
 fi
