@@ -51,6 +51,7 @@ struct VisibilitySceneStats {
 class VisibilityScene {
  public:
   explicit VisibilityScene(const Mesh& mesh);
+  explicit VisibilityScene(Mesh&&) = delete;  // the scene may share the mesh's corner array: no temporaries
   ~VisibilityScene();
   VisibilityScene(VisibilityScene&&) noexcept;
   VisibilityScene& operator=(VisibilityScene&&) noexcept;
