@@ -106,5 +106,16 @@ inline void add_light_term(Vec3d& color, const LightProducts& k, double att_spot
   if (with_specular) color += k.specular * (a * spec);
 }
 
+// The same term for a light whose P and S are colours (an environment map: per channel, the
+// radiance is inside the integrals): ka*a_i + kd*P + ks*S, P and S scaled by visibility. P and S
+// >= 0 (the caller clamps an approximation's negative lobes).
+inline void add_light_term_rgb(Vec3d& color, const LightProducts& k, const Vec3d& P, const Vec3d& S,
+                               bool with_ambient, bool with_specular, double visibility = 1.0) {
+  if (with_ambient) color += k.ambient;
+  if (!(visibility > 0)) return;
+  color += Vec3d{k.diffuse.x * P.x, k.diffuse.y * P.y, k.diffuse.z * P.z} * visibility;
+  if (with_specular) color += Vec3d{k.specular.x * S.x, k.specular.y * S.y, k.specular.z * S.z} * visibility;
+}
+
 }  // namespace shadetool
 #pragma GCC visibility pop

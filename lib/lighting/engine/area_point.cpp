@@ -1,6 +1,8 @@
 // engine/area_point.cpp: see area_point.h.
 #include <shadetool/lighting/engine/area_point.h>
 
+#include <shadetool/lighting/environment_map.h>
+
 namespace shadetool {
 namespace lighting_engine {
 
@@ -54,6 +56,26 @@ void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& poi
       add_light_term(color, light.products, 1.0, t.P_sky, t.S_sky, light.has_ambient, with_specular, visibility);
       add_light_term(color, light.ground_products, 1.0, t.P_ground, t.S_ground, false, with_specular,
                      visibility_ground);
+      return;
+    }
+    case LightType::Environment: {
+      // In the map's frame: n (and the lobe) rotated by the inverse of the light's rotation.
+      const EnvironmentMap& map = *light.environment;
+      const Mat3d& R = light.map_from_world;
+      const Vec3d n_map = R * point.n;
+      const Vec3d sh = environment_irradiance_sh(map, n_map);
+      // The nine-term approximation of max(cos, 0) dips to -0.04 of a single texel's peak behind
+      // it: clamped at 0 (the true P is >= 0).
+      const Vec3d P{positive_part(sh.x), positive_part(sh.y), positive_part(sh.z)};
+      Vec3d S{0, 0, 0};
+      if (with_specular) {
+        SpecularLobe m = lobe;
+        m.reflected = R * lobe.reflected;
+        m.view = R * lobe.view;
+        m.normal = R * lobe.normal;
+        S = environment_specular_sum(map, n_map, m, environment_specular_level(map, lobe.shininess));
+      }
+      add_light_term_rgb(color, light.products, P, S, light.has_ambient, with_specular, visibility);
       return;
     }
     case LightType::Ambient:
