@@ -4,8 +4,9 @@
 // noisy cores; ratios are what matter), medians of N runs, all configurations in one process.
 //
 // Usage: bench_lighting [REPEATS]   (default 7)
-//        bench_lighting --area [REPEATS]   issue 16: area and sky lights against a point light, and
-//                                          the quadrature paths' time against error
+//        bench_lighting --area [REPEATS] [ratios]   issue 16: area, sky and environment lights
+//                                          against a point light, and (without `ratios`) the
+//                                          quadrature paths' and the environment's time against error
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -29,6 +30,7 @@ using namespace shadetool;
 namespace {
 
 int g_repeats = 7;
+bool g_ratios_only = false;  // --area REPEATS ratios: the table against the point light only
 double g_sink = 0;  // keeps results alive
 
 struct Points {
@@ -166,12 +168,12 @@ std::shared_ptr<const EnvironmentMap> sunny_map(int width, int height) {
 // Issue 16's environment light: the SH diffuse and the down-sampled specular sums against the
 // full-resolution texel sum (errors relative to the largest full-resolution value over the
 // points: a per-point relative error is meaningless where the value is ~0), on a 512 x 256 map
-// with a sun, at every 16th vertex of the torus (3,907 points).
+// with a sun, at every 64th vertex of the torus (977 points).
 void environment_bench(const Points& pts) {
   const auto map = sunny_map(512, 256);
   const Vec3d eye{0, 4, 5};
   std::vector<Vec3d> normals, views;
-  for (std::size_t i = 0; i < pts.p.size() / 3; i += 16) {
+  for (std::size_t i = 0; i < pts.p.size() / 3; i += 64) {
     const Vec3d p{pts.p[3 * i], pts.p[3 * i + 1], pts.p[3 * i + 2]};
     normals.push_back(normalized_or(Vec3d{pts.n[3 * i], pts.n[3 * i + 1], pts.n[3 * i + 2]}, Vec3d{0, 0, 1}));
     views.push_back(normalized_or(eye - p, Vec3d{0, 0, 0}));
@@ -286,6 +288,7 @@ void area_bench(const Points& pts) {
     std::printf("%-40s %10.1f %12.1f %10.0f %7.2fx\n", r.name, t[0], t[1], t[0] * 1e6 / n_points, t[0] / t[1]);
   }
 
+  if (g_ratios_only) return;
   // Quadrature order q against error: Phong with shininess 32 + 1e-9 takes the quadrature path;
   // its truth is Arvo's closed form for 32 (the two integrands differ by < 1e-8 relative).
   std::printf("\nQuadrature (rect light, phong 32 + 1e-9 vs Arvo's closed form for 32; sphere: vs q = 64)\n");
@@ -340,8 +343,10 @@ void area_bench(const Points& pts) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // line by line: a long run shows its tables as they come
   if (argc > 1 && std::string(argv[1]) == "--area") {  // issue 16's table only, on a 250 x 250 torus
     if (argc > 2) g_repeats = std::max(1, std::atoi(argv[2]));
+    g_ratios_only = argc > 3 && std::string(argv[3]) == "ratios";
     testing::AnalyticMesh torus = testing::torus(250, 250, 1.0, 0.4);
     Points pts;
     pts.p = torus.mesh.positions;
