@@ -277,6 +277,7 @@ void area_bench(const Points& pts) {
       {"rect, blinn-phong 32 (quadrature q=16)", ShadingModel::BlinnPhong, window},
       {"sphere, phong 32 (quadrature q=16)", ShadingModel::Phong, sphere},
       {"environment 64x32, diffuse (SH)", ShadingModel::Lambert, env},
+      {"environment 64x32, phong 32 (sum)", ShadingModel::Phong, env},
       {"environment 64x32, blinn-phong 32 (sum)", ShadingModel::BlinnPhong, env},
   };
   std::printf("\nArea and sky lights (issue 16): %.0f points, 1 thread, median of %d interleaved runs, thread CPU ms\n",

@@ -10,6 +10,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/math_constants.h>
+#include <shadetool/lighting/lighting_equation.h>
 
 // stb_image, HDR decoder only, with every function static to this file: no symbol can clash with
 // another copy of stb in the process (tinygltf's, libstb's).
@@ -262,17 +263,42 @@ Vec3d environment_irradiance_sum(const EnvironmentMap& map, const Vec3d& n, int 
 }
 
 Vec3d environment_specular_sum(const EnvironmentMap& map, const Vec3d& normal, const SpecularLobe& lobe, int level_index) {
-  if (lobe.kind == LobeKind::None) return {0, 0, 0};
   const EnvironmentLevel& level = map.levels[level_index];
+  const double s = lobe.shininess;
+  // The lobe's base b (R.w for Phong, n.H for Blinn-Phong; spec = b^s) below `cut` gives
+  // spec < 2^-40: such texels are skipped, so the omitted part of S is below 2^-40 of the
+  // integral of L over the hemisphere. Shininess 0 (spec = 1 everywhere): nothing is skipped.
+  const double cut = s > 0 ? std::exp2(-40.0 / s) : 0.0;  // s > 0 checked
+  int j0 = 0, j1 = level.height - 1;
+  Vec3d V = lobe.view;
+  double n_dot_v = 0, v_unit = 0;
+  switch (lobe.kind) {
+    case LobeKind::None: return {0, 0, 0};
+    case LobeKind::Phong:
+      if (cut > 0) {  // only rows whose centres can be within acos(cut) of R (one row of margin)
+        const double theta_r = std::acos(std::fmax(-1.0, std::fmin(1.0, lobe.reflected.y)));
+        const double alpha = std::acos(cut), row = kPi / level.height;
+        j0 = std::max(0, int(std::floor((theta_r - alpha) / row - 0.5)) - 1);
+        j1 = std::min(level.height - 1, int(std::ceil((theta_r + alpha) / row - 0.5)) + 1);
+      }
+      break;
+    case LobeKind::BlinnPhong:
+      n_dot_v = dot(normal, V);
+      v_unit = V == Vec3d{0, 0, 0} ? 0.0 : 1.0;  // at the eye H = w (lighting_equation.h)
+      break;
+  }
   Vec3d S{0, 0, 0};
-  for (int j = 0; j < level.height; ++j) {
+  for (int j = j0; j <= j1; ++j) {
     Vec3d row{0, 0, 0};
     for (int i = 0; i < level.width; ++i) {
       const std::size_t t = std::size_t(j) * level.width + i;
       const Vec3d w = level.direction.empty() ? environment_direction(level.width, level.height, j, i) : level.direction[t];
-      if (!(dot(normal, w) > 0)) continue;
-      const double s = lobe_value(lobe, w);
-      if (s > 0) row += texel_rgb(level, t) * s;
+      const double n_dot_w = dot(normal, w);
+      if (!(n_dot_w > 0)) continue;
+      const double b = positive_part(lobe.kind == LobeKind::Phong ? dot(lobe.reflected, w)
+                                                                  : blinn_phong_n_dot_h(n_dot_w, n_dot_v, dot(w, V), v_unit));
+      if (b < cut) continue;
+      row += texel_rgb(level, t) * std::pow(b, s);
     }
     S += row * level.row_solid_angle[j];
   }

@@ -29,7 +29,10 @@
 // filters weighted by solid angle, so each level holds the same integral of L) of
 //   L_t [n.w_t > 0] spec(w_t) dOmega_t,  w_t the texel's centre direction.
 // The level is chosen by the lobe's width (environment_specular_level); its error against the
-// full-resolution sum is measured in bench/lighting and bounded in tests/lighting.
+// full-resolution sum is measured in bench/lighting and bounded in tests/lighting. Texels where
+// spec(w) < 2^-40 are skipped (and, for Phong, the rows that cannot reach R's cap): the omitted
+// part is below 2^-40 of the integral of L over the hemisphere. spec is the point light's
+// formula (lighting_equation.h: R.w, and n.H from n.w, n.V, w.V).
 //
 // Radiance values: Radiance RGBE (.hdr) decoded by stb_image (libstb-dev), which maps a texel
 // (m, e) to m * 2^(e - 136) WITHOUT the +0.5 that Radiance's own reader and Blender add: a file

@@ -68,10 +68,12 @@ inline double spot_factor(double cos_t, double cos_cutoff, double exponent) {
 // spec_i, Blinn-Phong: max(n.H, 0)^shininess with n.H = (n.L + n.V) / |L + V| and
 // |L + V|^2 = 1 + 2 L.G V + |V|^2 (v_unit = |V|^2: 1, or 0 at the eye, where H = L).
 // L = -V exactly (|L + V| = 0): n.H = 0.
-inline double specular_blinn_phong(double n_dot_l, double n_dot_v, double l_dot_v, double v_unit, double shininess) {
+inline double blinn_phong_n_dot_h(double n_dot_l, double n_dot_v, double l_dot_v, double v_unit) {
   const double h2 = 1.0 + 2.0 * l_dot_v + v_unit;
-  const double n_dot_h = h2 > 0 ? (n_dot_l + n_dot_v) / std::sqrt(h2) : 0.0;  // divisor checked
-  return std::pow(positive_part(n_dot_h), shininess);
+  return h2 > 0 ? (n_dot_l + n_dot_v) / std::sqrt(h2) : 0.0;  // divisor checked
+}
+inline double specular_blinn_phong(double n_dot_l, double n_dot_v, double l_dot_v, double v_unit, double shininess) {
+  return std::pow(positive_part(blinn_phong_n_dot_h(n_dot_l, n_dot_v, l_dot_v, v_unit)), shininess);
 }
 
 // spec_i, Phong: max(R.V, 0)^shininess with R.V = 2 (n.L)(n.V) - L.V (R never formed).
