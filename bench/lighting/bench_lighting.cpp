@@ -4,8 +4,9 @@
 // noisy cores; ratios are what matter), medians of N runs, all configurations in one process.
 //
 // Usage: bench_lighting [REPEATS]   (default 7)
-//        bench_lighting --area [REPEATS]   issue 16: area and sky lights against a point light, and
-//                                          the quadrature paths' time against error
+//        bench_lighting --area [REPEATS] [ratios]   issue 16: area, sky and environment lights
+//                                          against a point light, and (without `ratios`) the
+//                                          quadrature paths' and the environment's time against error
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include <shadetool/lighting/area_light.h>
+#include <shadetool/lighting/environment_map.h>
 #include <shadetool/lighting/look_at.h>
 #include <shadetool/lighting/shade_points.h>
 #include "support/analytic_meshes.h"
@@ -28,6 +30,7 @@ using namespace shadetool;
 namespace {
 
 int g_repeats = 7;
+bool g_ratios_only = false;  // --area REPEATS ratios: the table against the point light only
 double g_sink = 0;  // keeps results alive
 
 struct Points {
@@ -146,6 +149,89 @@ Light rect(const Vec3d& c, const Vec3d& u, const Vec3d& v, double intensity) {
   return L;
 }
 
+// A procedural sky for the environment rows: gradient, a 2x2-texel sun of radiance 48, a ground.
+std::shared_ptr<const EnvironmentMap> sunny_map(int width, int height) {
+  std::vector<float> rgb;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const Vec3d w = environment_direction(width, height, j, i);
+      const Vec3d c = w.y < 0 ? Vec3d{0.25, 0.1875, 0.125} * (1 + 0.5 * w.y) : Vec3d{0.75 - 0.5 * w.y, 0.8125 - 0.25 * w.y, 1.0};
+      rgb.insert(rgb.end(), {float(c.x), float(c.y), float(c.z)});
+    }
+  const int sun_row = height / 5, sun_col = 5 * width / 8;
+  for (int j = sun_row; j < sun_row + 2; ++j)
+    for (int i = sun_col; i < sun_col + 2; ++i)
+      for (int k = 0; k < 3; ++k) rgb[(std::size_t(j) * width + i) * 3 + k] = k == 2 ? 40.f : 48.f;
+  return make_environment_map(width, height, rgb);
+}
+
+// Issue 16's environment light: the SH diffuse and the down-sampled specular sums against the
+// full-resolution texel sum (errors relative to the largest full-resolution value over the
+// points: a per-point relative error is meaningless where the value is ~0), on a 512 x 256 map
+// with a sun, at every 64th vertex of the torus (977 points).
+void environment_bench(const Points& pts) {
+  const auto map = sunny_map(512, 256);
+  const Vec3d eye{0, 4, 5};
+  std::vector<Vec3d> normals, views;
+  for (std::size_t i = 0; i < pts.p.size() / 3; i += 64) {
+    const Vec3d p{pts.p[3 * i], pts.p[3 * i + 1], pts.p[3 * i + 2]};
+    normals.push_back(normalized_or(Vec3d{pts.n[3 * i], pts.n[3 * i + 1], pts.n[3 * i + 2]}, Vec3d{0, 0, 1}));
+    views.push_back(normalized_or(eye - p, Vec3d{0, 0, 0}));
+  }
+  const std::size_t n = normals.size();
+  auto max_abs = [](const Vec3d& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); };
+  auto errors = [&](const std::vector<Vec3d>& got, const std::vector<Vec3d>& truth) {
+    double peak = 0;
+    for (const Vec3d& t : truth) peak = std::max(peak, max_abs(t));
+    std::vector<double> e;
+    for (std::size_t i = 0; i < n; ++i) e.push_back(peak > 0 ? max_abs(got[i] - truth[i]) / peak : 0.0);
+    std::sort(e.begin(), e.end());
+    return std::make_pair(e.back(), e[e.size() / 2]);
+  };
+  std::printf("\nEnvironment 512x256 with a sun: P and S against the full-resolution texel sum, %zu points;\n"
+              "errors relative to the largest full-resolution value\n", n);
+  std::printf("%-34s %12s %14s %14s\n", "path", "ns/point", "max error", "median error");
+  std::vector<Vec3d> full(n), sh(n);
+  const auto t = interleaved_medians({[&] {
+                                        for (std::size_t i = 0; i < n; ++i) full[i] = environment_irradiance_sum(*map, normals[i]);
+                                        g_sink += full[n / 2].x;
+                                      },
+                                      [&] {
+                                        for (std::size_t i = 0; i < n; ++i) sh[i] = environment_irradiance_sh(*map, normals[i]);
+                                        g_sink += sh[n / 2].x;
+                                      }});
+  auto e = errors(sh, full);
+  std::printf("%-34s %12.0f %14s %14s\n", "P, every texel (reference)", t[0] * 1e6 / n, "-", "-");
+  std::printf("%-34s %12.0f %14.2e %14.2e\n", "P, 9 SH coefficients", t[1] * 1e6 / n, e.first, e.second);
+  for (LobeKind kind : {LobeKind::Phong, LobeKind::BlinnPhong})
+    for (double shininess : {8.0, 32.0, 128.0}) {
+      auto lobe_at = [&](std::size_t i) {
+        SpecularLobe lobe;
+        lobe.kind = kind;
+        lobe.shininess = shininess;
+        lobe.reflected = normalized_or(normals[i] * (2 * dot(normals[i], views[i])) - views[i], Vec3d{0, 0, 0});
+        lobe.view = views[i];
+        lobe.normal = normals[i];
+        return lobe;
+      };
+      std::vector<Vec3d> truth(n);
+      for (std::size_t i = 0; i < n; ++i) truth[i] = environment_specular_sum(*map, normals[i], lobe_at(i), 0);
+      const int chosen = environment_specular_level(*map, shininess);
+      for (int level = 1; level < int(map->levels.size()); ++level) {
+        std::vector<Vec3d> got(n);
+        const auto tl = interleaved_medians({[&] {
+          for (std::size_t i = 0; i < n; ++i) got[i] = environment_specular_sum(*map, normals[i], lobe_at(i), level);
+          g_sink += got[n / 2].x;
+        }});
+        const auto el = errors(got, truth);
+        char name[64];
+        std::snprintf(name, sizeof name, "S %s %g, %dx%d%s", kind == LobeKind::Phong ? "phong" : "blinn", shininess,
+                      map->levels[level].width, map->levels[level].height, level == chosen ? " (chosen)" : "");
+        std::printf("%-34s %12.0f %14.2e %14.2e\n", name, tl[0] * 1e6 / n, el.first, el.second);
+      }
+    }
+}
+
 // Issue 16: per-vertex cost of area and sky lights against a point light on the same mesh, and
 // the quadrature paths as time against error (the error against Arvo's closed form).
 void area_bench(const Points& pts) {
@@ -171,6 +257,11 @@ void area_bench(const Points& pts) {
   sky.diffuse = sky.specular = {0.5, 0.7, 1};
   sky.ground = {0.3, 0.25, 0.2};
   sky.ambient = {0, 0, 0};
+  Light env;
+  env.type = LightType::Environment;
+  env.environment = sunny_map(64, 32);
+  env.diffuse = env.specular = {0.3, 0.3, 0.3};
+  env.ambient = {0, 0, 0};
   struct Row {
     const char* name;
     ShadingModel model;
@@ -185,6 +276,9 @@ void area_bench(const Points& pts) {
       {"sky, phong 32 (Arvo, 8 triangles)", ShadingModel::Phong, sky},
       {"rect, blinn-phong 32 (quadrature q=16)", ShadingModel::BlinnPhong, window},
       {"sphere, phong 32 (quadrature q=16)", ShadingModel::Phong, sphere},
+      {"environment 64x32, diffuse (SH)", ShadingModel::Lambert, env},
+      {"environment 64x32, phong 32 (sum)", ShadingModel::Phong, env},
+      {"environment 64x32, blinn-phong 32 (sum)", ShadingModel::BlinnPhong, env},
   };
   std::printf("\nArea and sky lights (issue 16): %.0f points, 1 thread, median of %d interleaved runs, thread CPU ms\n",
               n_points, g_repeats);
@@ -195,6 +289,7 @@ void area_bench(const Points& pts) {
     std::printf("%-40s %10.1f %12.1f %10.0f %7.2fx\n", r.name, t[0], t[1], t[0] * 1e6 / n_points, t[0] / t[1]);
   }
 
+  if (g_ratios_only) return;
   // Quadrature order q against error: Phong with shininess 32 + 1e-9 takes the quadrature path;
   // its truth is Arvo's closed form for 32 (the two integrands differ by < 1e-8 relative).
   std::printf("\nQuadrature (rect light, phong 32 + 1e-9 vs Arvo's closed form for 32; sphere: vs q = 64)\n");
@@ -243,13 +338,16 @@ void area_bench(const Points& pts) {
       std::printf("%-8s %4d %12.0f %16.2e %16.2e\n", shape == 0 ? "rect" : "sphere", q, t[0] * 1e6 / n_points,
                   err.empty() ? 0.0 : err.back(), err.empty() ? 0.0 : err[err.size() / 2]);
     }
+  environment_bench(pts);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // line by line: a long run shows its tables as they come
   if (argc > 1 && std::string(argv[1]) == "--area") {  // issue 16's table only, on a 250 x 250 torus
     if (argc > 2) g_repeats = std::max(1, std::atoi(argv[2]));
+    g_ratios_only = argc > 3 && std::string(argv[3]) == "ratios";
     testing::AnalyticMesh torus = testing::torus(250, 250, 1.0, 0.4);
     Points pts;
     pts.p = torus.mesh.positions;

@@ -3,6 +3,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <shadetool/core/math_constants.h>
@@ -98,6 +100,19 @@ struct EdgeMoment {
   double pow_a, pow_b;                   // A^(k-1), hb^(k-1) for the next step (k+2 needs ^(k+1))
 };
 
+// ilogb and ldexp for the normal range, from the bits (glibc's are calls: 7% of a rect light).
+int binary_exponent(double x) {  // x > 0 finite; subnormals give -1023 (the caller's slow path)
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return int((bits >> 52) & 0x7ff) - 1023;
+}
+double power_of_two(int e) {  // e in [-1022, 1023]
+  const std::uint64_t bits = std::uint64_t(e + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
 }  // namespace
 
 void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, SphericalPolygon& out) {
@@ -133,7 +148,7 @@ double lambert_polygon_integral(const SphericalPolygon& P, const Vec3d& n) {
     const Vec3d c = cross(P.q[i], P.d[i]);  // = q_i x q_(i+1): the edge's plane normal
     const double s = std::sqrt(dot(c, c));  // q, d scaled to components below 2 (polygon_light_terms)
     if (!(s > 0)) continue;  // a zero-length edge: Theta = 0
-    const double theta = std::atan2(s, dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]));  // q_i . q_(i+1)
+    const double theta = edge_angle(s, dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]));  // q_i . q_(i+1)
     sum += theta * (dot(n, c) / s);  // divisor checked
   }
   return 0.5 * std::fabs(sum);
@@ -150,7 +165,7 @@ double polygon_solid_angle(const SphericalPolygon& P) {
     const Vec3d &b = P.q[i], c = P.q[i + 1];
     const double det = std::fabs(dot(a, cross(s, s + P.d[i])));
     const double lb = std::sqrt(dot(b, b)), lc = std::sqrt(dot(c, c));
-    omega += 2.0 * std::atan2(det, la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la);
+    omega += 2.0 * edge_angle(det, la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la);
   }
   return omega;
 }
@@ -177,7 +192,7 @@ double polygon_axial_moment(const SphericalPolygon& P, const Vec3d& w, int k, do
     const Vec3d t = cross(g, a);  // unit tangent at a toward b
     EdgeMoment e;
     const double qq = dot(P.q[i], P.q[i]) + dot(P.q[i], P.d[i]);  // |q_i| |q_(i+1)| cos(theta)
-    e.theta = std::atan2(s, qq);
+    e.theta = edge_angle(s, qq);
     const double r = la * lb;  // |q_i| |q_(i+1)| > 0
     const double sin_t = s / r, cos_t = qq / r;
     // 1 - cos(theta) = sin^2 / (1 + cos) without cancellation for small edges; 2 when theta ~ pi
@@ -296,20 +311,29 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
   for (int i = 0; i < count; ++i) {
     P.q[i] = vertices[i] - p;
     P.d[i] = vertices[(i + 1) % count] - vertices[i];
-    big = std::fmax(big, std::fmax(std::fabs(P.q[i].x), std::fmax(std::fabs(P.q[i].y), std::fabs(P.q[i].z))));
+    const double m = std::fabs(P.q[i].x) > std::fabs(P.q[i].y) ? std::fabs(P.q[i].x) : std::fabs(P.q[i].y);
+    const double mz = std::fabs(P.q[i].z) > m ? std::fabs(P.q[i].z) : m;
+    big = mz > big ? mz : big;  // inline max: std::fmax is a libm call here
   }
   // 2^-e with big in [2^e, 2^(e+1)): every q then has components below 2, so |q x d|^2 and |q|^2
   // neither overflow nor (for any edge longer than 1e-150 of the distance) underflow. The factor
   // is exact; scalbn only where 2^-e itself is out of double's range.
-  const int e = big > 0 && std::isfinite(big) ? std::ilogb(big) : 0;
+  const int e = big > 0 && std::isfinite(big) ? binary_exponent(big) : 0;
   if (e > -1022 && e < 1023) {
-    const double f = std::ldexp(1.0, -e);
+    const double f = power_of_two(-e);
     for (int i = 0; i < count; ++i) P.q[i] = P.q[i] * f, P.d[i] = P.d[i] * f;
   } else {
     for (int i = 0; i < count; ++i) {
       P.q[i] = {std::scalbn(P.q[i].x, -e), std::scalbn(P.q[i].y, -e), std::scalbn(P.q[i].z, -e)};
       P.d[i] = {std::scalbn(P.d[i].x, -e), std::scalbn(P.d[i].y, -e), std::scalbn(P.d[i].z, -e)};
     }
+  }
+  bool above = true;  // wholly above p's horizon (the common case): no clipped copy
+  for (int i = 0; i < count && above; ++i) above = dot(n, P.q[i]) >= 0;
+  if (above) {
+    t.P = lambert_polygon_integral(P, n);
+    t.S = polygon_specular_integral(P, lobe);
+    return t;
   }
   SphericalPolygon clipped;
   clip_to_hemisphere(P, n, clipped);

@@ -35,8 +35,8 @@
 //   p inside or on a sphere light (d <= r)               P = S = 0 (it emits outward)
 //   an edge of zero length after clipping                contributes 0 (Theta = 0)
 //
-// Precision: double. Lambert's sum has at most 2 + #vertices terms; atan2(|a x b|, a.b) keeps
-// each edge angle accurate to an ulp down to 1e-300 radians.
+// Precision: double. Lambert's sum has at most 2 + #vertices terms; edge_angle(|a x b|, a.b)
+// keeps each edge angle accurate to 1e-15 relative down to 1e-300 radians.
 #pragma once
 
 #include <cstddef>
@@ -78,6 +78,35 @@ struct SphericalPolygon {
 // Sutherland-Hodgman on the sphere: `in` intersected with {w : axis.w >= 0}; out.count < 3: nothing
 // left. The new edge along the horizon gets d = q_next - q (it is not small).
 void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, SphericalPolygon& out);
+
+// The angle between two vectors a, b from s = |a x b| >= 0 and c = a.b: atan2(s, c) in [0, pi],
+// to 1e-15 relative (checked against std::atan2 in tests/lighting/area_light.cpp). One division and
+// an 11-term odd Taylor polynomial: the ratio min/max of (s, |c|) is reduced to |x| <= tan(pi/16)
+// around 0, pi/8 or pi/4 (x = (num - t_k den) / (den + t_k num), t_k = tan(k pi/8)), where the
+// series' first omitted term x^23/23 is below 2e-17 of x. s = c = 0 gives 0.
+// Lambert's formula needs one per edge; glibc's atan2 was a quarter of a rect light's time.
+// Inline and branch-free (selects, an Estrin-ordered polynomial), so that the edges of a polygon
+// overlap in the pipeline.
+inline double edge_angle(double s, double c) {
+  const double ac = c < 0 ? -c : c;
+  const bool swap = s > ac;  // reduce to num / den in [0, 1]: theta' = atan(num / den) in [0, pi/4]
+  const double num = swap ? ac : s, den = swap ? s : ac;
+  if (!(den > 0)) return 0;  // s = c = 0: a zero-length vector (NaN: 0 as well)
+  // Nearest of 0, pi/8, pi/4 (boundaries tan(pi/16), tan(3 pi/16)): |x| <= tan(pi/16) = 0.1989.
+  const bool k1 = num >= 0.19891236737965800 * den, k2 = num >= 0.66817863791929890 * den;
+  const double tk = k2 ? 1.0 : k1 ? 0.41421356237309503 : 0.0;              // tan(pi/8) rounded
+  const double base = k2 ? 0.78539816339744831 : k1 ? 0.39269908169872414 : 0.0;  // pi/4, pi/8
+  const double x = (num - tk * den) / (den + tk * num);  // den + tk num >= den > 0: divisor checked
+  const double y = x * x, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+  // atan(x) = x - x y (1/3 - y/5 + y^2/7 - ... + y^9/21): the bracket by Estrin's scheme.
+  constexpr double c3 = -1.0 / 3, c5 = 1.0 / 5, c7 = -1.0 / 7, c9 = 1.0 / 9, c11 = -1.0 / 11, c13 = 1.0 / 13,
+                   c15 = -1.0 / 15, c17 = 1.0 / 17, c19 = -1.0 / 19, c21 = 1.0 / 21;
+  const double q0 = c3 + c5 * y, q1 = c7 + c9 * y, q2 = c11 + c13 * y, q3 = c15 + c17 * y, q4 = c19 + c21 * y;
+  const double p = (q0 + q1 * y2) + (q2 + q3 * y2) * y4 + q4 * y8;
+  const double a = base + (x + x * (y * p));  // atan(t_k) = theta_k to 2e-17 (t1's rounding)
+  const double b = swap ? 1.5707963267948966 - a : a;
+  return c < 0 ? 3.1415926535897931 - b : b;
+}
 
 // Lambert's formula: the projected solid angle about n of a convex spherical polygon lying in
 // n's upper hemisphere (clip first), either orientation. q and d with components below 2^500

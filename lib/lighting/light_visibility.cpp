@@ -6,6 +6,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/math_constants.h>
+#include <shadetool/lighting/environment_map.h>
 #include <shadetool/visibility/shadow_visibility.h>
 
 namespace shadetool {
@@ -113,6 +114,23 @@ LightSample sample_sky(const Light& light, const Vec3d& n, double u, double v, b
   return out;
 }
 
+// Environment: cosine-weighted directions about n (as the sky), weighted by the map's luminance
+// there (Rec. 709), so that the fraction sum w V / sum w estimates the visible share of P.
+LightSample sample_environment(const Light& light, const Vec3d& n, double u, double v) {
+  LightSample out;
+  out.at_infinity = true;
+  out.target = n;
+  if (n == Vec3d{0, 0, 0}) return out;
+  Vec3d t1, t2;
+  orthonormal_basis(n, t1, t2);
+  const double r = std::sqrt(u), phi = kTwoPi * v;
+  const Vec3d dir = t1 * (r * std::cos(phi)) + t2 * (r * std::sin(phi)) + n * std::sqrt(std::fmax(0.0, 1 - u));
+  out.target = dir;
+  const Vec3d L = environment_radiance(*light.environment, transpose(light.world_from_map) * dir);
+  out.weight = 0.2126 * L.x + 0.7152 * L.y + 0.0722 * L.z;
+  return out;
+}
+
 }  // namespace
 
 std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& lighting, const LightingPlan& plan,
@@ -197,6 +215,18 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
           store_sampled(j, slot, parts[slot]);
         }
         for (std::size_t i = 0; i < P; ++i) st.occluded_terms += parts[0][i] < 1 || parts[1][i] < 1;
+        break;
+      }
+      case LightType::Environment: {
+        ++st.sampled_lights;
+        const LightSampler sampler = [&light, &normals, &sampled_rays](std::size_t i, const Vec3d&, double u, double v) {
+          const LightSample s = sample_environment(light, unit_normal(normals, i), u, v);
+          if (s.weight > 0) sampled_rays.fetch_add(1, std::memory_order_relaxed);
+          return s;
+        };
+        const std::vector<double> v = shadow_visibility_sampled(scene, points, normals, ids, sampler, so);
+        store_sampled(j, 0, v);
+        for (std::size_t i = 0; i < P; ++i) st.occluded_terms += v[i] < 1;
         break;
       }
     }

@@ -68,10 +68,12 @@ inline double spot_factor(double cos_t, double cos_cutoff, double exponent) {
 // spec_i, Blinn-Phong: max(n.H, 0)^shininess with n.H = (n.L + n.V) / |L + V| and
 // |L + V|^2 = 1 + 2 L.G V + |V|^2 (v_unit = |V|^2: 1, or 0 at the eye, where H = L).
 // L = -V exactly (|L + V| = 0): n.H = 0.
-inline double specular_blinn_phong(double n_dot_l, double n_dot_v, double l_dot_v, double v_unit, double shininess) {
+inline double blinn_phong_n_dot_h(double n_dot_l, double n_dot_v, double l_dot_v, double v_unit) {
   const double h2 = 1.0 + 2.0 * l_dot_v + v_unit;
-  const double n_dot_h = h2 > 0 ? (n_dot_l + n_dot_v) / std::sqrt(h2) : 0.0;  // divisor checked
-  return std::pow(positive_part(n_dot_h), shininess);
+  return h2 > 0 ? (n_dot_l + n_dot_v) / std::sqrt(h2) : 0.0;  // divisor checked
+}
+inline double specular_blinn_phong(double n_dot_l, double n_dot_v, double l_dot_v, double v_unit, double shininess) {
+  return std::pow(positive_part(blinn_phong_n_dot_h(n_dot_l, n_dot_v, l_dot_v, v_unit)), shininess);
 }
 
 // spec_i, Phong: max(R.V, 0)^shininess with R.V = 2 (n.L)(n.V) - L.V (R never formed).
@@ -104,6 +106,17 @@ inline void add_light_term(Vec3d& color, const LightProducts& k, double att_spot
   const double a = att_spot * visibility;
   color += k.diffuse * (a * n_dot_l);
   if (with_specular) color += k.specular * (a * spec);
+}
+
+// The same term for a light whose P and S are colours (an environment map: per channel, the
+// radiance is inside the integrals): ka*a_i + kd*P + ks*S, P and S scaled by visibility. P and S
+// >= 0 (the caller clamps an approximation's negative lobes).
+inline void add_light_term_rgb(Vec3d& color, const LightProducts& k, const Vec3d& P, const Vec3d& S,
+                               bool with_ambient, bool with_specular, double visibility = 1.0) {
+  if (with_ambient) color += k.ambient;
+  if (!(visibility > 0)) return;
+  color += Vec3d{k.diffuse.x * P.x, k.diffuse.y * P.y, k.diffuse.z * P.z} * visibility;
+  if (with_specular) color += Vec3d{k.specular.x * S.x, k.specular.y * S.y, k.specular.z * S.z} * visibility;
 }
 
 }  // namespace shadetool

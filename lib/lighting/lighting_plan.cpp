@@ -28,6 +28,7 @@ LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOpt
       case LightType::Point:
       case LightType::Spot: positional = true; break;
       case LightType::Area: area = positional = true; break;
+      case LightType::Environment: area = true; break;  // intensity in diffuse and specular
       case LightType::Sky:
         area = true;
         diffuse += L.ground;

@@ -19,6 +19,7 @@
 #include <shadetool/core/affine.h>
 #include <shadetool/core/math_constants.h>
 #include <shadetool/lighting/area_light.h>
+#include <shadetool/lighting/environment_map.h>
 #include <shadetool/lighting/look_at.h>
 
 namespace shadetool {
@@ -56,7 +57,8 @@ std::string number_text(double x) {
 // One scene file being read: its name for messages, and typed accessors that fail with the path.
 class SceneReader {
  public:
-  explicit SceneReader(std::string file) : file_(std::move(file)) {}
+  // base_dir: where relative paths in the scene (an environment's image) start: the scene file's folder.
+  SceneReader(std::string file, std::string base_dir) : file_(std::move(file)), base_dir_(std::move(base_dir)) {}
 
   [[noreturn]] void bad(const std::string& path, const std::string& problem) const {
     fail(file_, 0, path + ": " + problem);
@@ -241,6 +243,8 @@ class SceneReader {
          {"type", "shape", "center", "u", "v", "vertices", "radius", "two_sided", "color", "intensity", "ambient"},
          &SceneReader::area_light},
         {"sky", LightType::Sky, {"type", "up", "sky", "ground", "intensity", "ambient"}, &SceneReader::sky_light},
+        {"environment", LightType::Environment, {"type", "image", "rotation", "intensity", "ambient"},
+         &SceneReader::environment_light},
     };
     return kinds;
   }
@@ -405,6 +409,37 @@ class SceneReader {
     L.ground = scaled_colour(ground, intensity, path + (find(j, "intensity") ? ".intensity" : ".ground"));
   }
 
+  // An equirectangular Radiance .hdr (lighting/environment_map.h), path relative to the scene
+  // file, rotated by "rotation": [degrees, ax, ay, az] (axis non-zero). The image is read here, so
+  // that an unreadable one fails with the scene's other errors, before any mesh is read.
+  void environment_light(const json& j, const std::string& path, Light& L) const {
+    double intensity = 1;
+    if (const json* v = find(j, "intensity")) intensity = non_negative(*v, path + ".intensity");
+    L.ambient = {0, 0, 0};
+    if (const json* v = find(j, "ambient")) L.ambient = colour(*v, path + ".ambient");
+    L.diffuse = L.specular = {intensity, intensity, intensity};
+    if (const json* v = find(j, "rotation")) {
+      const std::string p = path + ".rotation";
+      if (!v->is_array() || v->size() != 4)
+        bad(p, "must be [degrees, ax, ay, az] (an angle and a non-zero axis), got " + describe(*v));
+      const double degrees = number((*v)[0], p + "[0]");
+      const Vec3d axis{number((*v)[1], p + "[1]"), number((*v)[2], p + "[2]"), number((*v)[3], p + "[3]")};
+      if (!(length(axis) > 0)) bad(p, "the axis [ax, ay, az] is zero");
+      L.world_from_map = environment_rotation(degrees, axis);
+    }
+    const std::string p = path + ".image";
+    const std::string name = string(need(j, path, "image", "an environment light"), p);
+    if (name.empty()) bad(p, "is empty (expected a .hdr file, relative to the scene file)");
+    const std::filesystem::path image = std::filesystem::path(base_dir_) / name;  // absolute names stay absolute
+    std::error_code ec;
+    if (std::filesystem::is_directory(image, ec)) bad(p, "'" + image.string() + "' is a directory");
+    try {
+      L.environment = read_environment_map(image.string());
+    } catch (const Error& e) {
+      bad(p, "'" + image.string() + "': " + e.what());
+    }
+  }
+
   void spot_light(const json& j, const std::string& path, Light& L) const {
     const std::string what = "a spot light";
     light_colours(j, path, L);
@@ -447,6 +482,7 @@ class SceneReader {
 
  private:
   std::string file_;
+  std::string base_dir_;
 };
 
 // Tracks the JSON path while nlohmann parses, to report duplicate keys (which nlohmann would
@@ -530,7 +566,7 @@ Scene parse_scene(std::string_view json_text, const std::string& name) {
     fail_json(name, e);
   }
   if (!duplicates.first_duplicate.empty()) fail(name, 0, duplicates.first_duplicate);
-  return SceneReader(name).scene(root);
+  return SceneReader(name, std::filesystem::path(name).parent_path().string()).scene(root);
 }
 
 Scene read_scene(const std::string& path) {

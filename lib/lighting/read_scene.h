@@ -32,10 +32,14 @@
 //                     planar, convex, counter-clockwise seen from the emitting side) or "sphere"
 //                     (center, radius > 0); color, intensity (L = color * intensity), two_sided
 //                     (false), ambient. "sky": up ([0,1,0]), sky ([1,1,1]), ground ([0,0,0]),
-//                     intensity (1), ambient. Each kind is one entry of read_scene.cpp's light table.
+//                     intensity (1), ambient. "environment": image (a Radiance .hdr, relative to
+//                     the scene file's folder; read here, lighting/environment_map.h), rotation
+//                     ([degrees, ax, ay, az], none), intensity (1), ambient. Each kind is one
+//                     entry of read_scene.cpp's light table.
 //          Also checked: color * intensity beyond double's range (issue 21), polygons that are
 //          non-planar (1e-9 of their size), non-convex, self-winding or of zero area, a rect with
-//          u parallel to v, a zero sky up.
+//          u parallel to v, a zero sky up, an environment image that cannot be opened, is not a
+//          Radiance .hdr or ends early, a rotation with a zero axis.
 #pragma once
 
 #include <string>

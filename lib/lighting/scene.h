@@ -9,6 +9,7 @@
 // Colours are linear RGB, each channel >= 0 (no upper bound: HDR light intensities are allowed).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include <shadetool/core/affine.h>
@@ -16,6 +17,8 @@
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
+
+struct EnvironmentMap;  // lighting/environment_map.h
 
 enum class ShadingModel {
   Lambert,     // ambient + diffuse, no specular term
@@ -30,6 +33,7 @@ enum class LightType {
   Spot,         // a point light restricted to a cone around `direction`
   Area,         // a surface of constant radiance: convex polygon (rect) or sphere (issue 16)
   Sky,          // radiance `sky` above the horizon of `up`, `ground` below it (issue 16)
+  Environment,  // radiance from an equirectangular HDR image around the scene (issue 16)
 };
 // Every switch over LightType is exhaustive with no default: a new kind does not compile
 // (-Wswitch) until each place that reads lights has said what the kind does there.
@@ -61,6 +65,10 @@ struct Light {
   bool two_sided = false;       // Area Polygon: emits on both sides
   Vec3d up{0, 1, 0};            // Sky, world, non-zero
   Vec3d ground{0, 0, 0};        // Sky: radiance below the horizon (ground * intensity)
+  // Environment: the image's radiance (shared, read once) rotated by world_from_map; `diffuse`
+  // and `specular` hold intensity in each channel (the image's colour is in the map).
+  std::shared_ptr<const EnvironmentMap> environment;  // non-null for Environment
+  Mat3d world_from_map;                               // a rotation (lighting/environment_map.h)
 };
 
 struct Material {  // OpenGL's defaults (glMaterial)

@@ -173,6 +173,10 @@ ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpa
         s.ground_products.specular = plan.specular ? mul(mat.specular, L.ground) : Vec3d{0, 0, 0};
         s.has_specular = s.has_specular || (plan.specular && !is_zero(s.ground_products.specular));
         break;
+      case LightType::Environment:
+        s.environment = L.environment;
+        s.map_from_world = transpose(L.world_from_map);  // a rotation: its inverse is its transpose
+        break;
     }
     frame.lights.push_back(s);
   }

@@ -33,6 +33,7 @@
 // about cond(A) * 2^-53, as world space's own normal transform.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include <shadetool/core/affine.h>
@@ -82,6 +83,8 @@ struct SpaceLight {
   double radius = 0;              // Area Sphere
   Vec3d up{0, 1, 0};              // Sky: unit, world
   LightProducts ground_products;  // Sky: kd * ground, ks * ground (ambient in `products`)
+  std::shared_ptr<const EnvironmentMap> environment;  // Environment: the map (products hold kd, ks * intensity)
+  Mat3d map_from_world;                               // Environment: the inverse of its rotation
 };
 
 struct ShadingFrame {

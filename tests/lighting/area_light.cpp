@@ -347,3 +347,31 @@ TEST_CASE("sphere S by polar quadrature is within 1e-3 of a dense cap quadrature
     CHECK(got.S == Approx(S).epsilon(1e-2).margin(1e-3 * kTwoPi * omcs));
   }
 }
+
+TEST_CASE("edge_angle is atan2(s, c) to 1e-15 relative, from 1e-300 radians to pi", "[lighting][area]") {
+  std::mt19937_64 rng(1995);
+  std::uniform_real_distribution<double> u(-1, 1), e(-300, 3);
+  double worst = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    // Random angles, and random (s, c) pairs of any scale (the function sees unnormalised pairs).
+    double s, c;
+    if (trial % 2 == 0) {
+      const double theta = trial % 4 == 0 ? std::pow(10.0, e(rng)) : kPi * (0.5 + 0.5 * u(rng));
+      const double r = std::pow(2.0, 40 * u(rng));
+      s = r * std::sin(theta);
+      c = r * std::cos(theta);
+    } else {
+      s = std::fabs(u(rng)) * std::pow(10.0, 3 * u(rng));
+      c = u(rng) * std::pow(10.0, 3 * u(rng));
+    }
+    const double want = std::atan2(s, c), got = edge_angle(s, c);
+    worst = std::fmax(worst, std::fabs(got - want) / want);
+  }
+  INFO("worst relative error " << worst);
+  CHECK(worst <= 1e-15);
+  CHECK(edge_angle(0, 0) == 0);
+  CHECK(edge_angle(0, 1) == 0);
+  CHECK(std::fabs(edge_angle(0, -1) - kPi) <= 4e-16 * kPi);
+  CHECK(std::fabs(edge_angle(1, 0) - kPi / 2) <= 2e-16 * kPi);
+  CHECK(edge_angle(1e-300, 1) == 1e-300);
+}

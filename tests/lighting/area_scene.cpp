@@ -252,7 +252,7 @@ TEST_CASE("bad area and sky lights: one line with the JSON path", "[lighting][ar
         "s.json: $.lights[0].u: unknown key in a sphere area light (expected one of: type, shape, center, radius, color, "
         "intensity, ambient)");
   CHECK(error_of(with_light(R"({"type": "lamp"})")) ==
-        "s.json: $.lights[0].type: must be \"ambient\", \"directional\", \"point\", \"spot\", \"area\" or \"sky\", got \"lamp\"");
+        "s.json: $.lights[0].type: must be \"ambient\", \"directional\", \"point\", \"spot\", \"area\", \"sky\" or \"environment\", got \"lamp\"");
 }
 
 TEST_CASE("issue 21: colour x intensity that overflows is refused when read, naming the JSON path", "[lighting][read_scene]") {

@@ -179,3 +179,26 @@ TEST_CASE("bake-lighting --shadows: the face under an occluder gets only its amb
   CHECK(r.code == 2);
   CHECK_FALSE(fs::exists(dir.file("z.ply")));
 }
+
+TEST_CASE("bake-lighting with an environment light: data/scenes/environment.json lights; a bad image fails before "
+          "the mesh is read", "[lighting][cli][environment]") {
+  TempDir dir;
+  dir.write("quad.obj", kQuadObj);
+  const std::string example = std::string(SHADETOOL_SOURCE_DIR) + "/data/scenes/environment.json";
+  const Run ok = run(dir.file("quad.obj") + " -o " + dir.file("lit.ply") + " --scene " + example + " --hdr");
+  INFO(ok.err);
+  REQUIRE(ok.code == 0);
+  const Mesh m = read_mesh(dir.file("lit.ply"));
+  REQUIRE(m.vertex_colors.size() == 12);
+  CHECK(m.vertex_colors[0] > 0);  // lit by the sky above the quad (normal +z, the map rotated about y)
+
+  // A scene whose image is not an HDR, and a mesh that does not exist: the scene's error wins
+  // (it is read first), exit 1, one line, no output file.
+  dir.write("fake.hdr", "P3\n1 1\n255\n0 0 0\n");
+  dir.write("bad.json", R"({"lights": [{"type": "environment", "image": "fake.hdr"}]})");
+  const Run bad = run(dir.file("missing.obj") + " -o " + dir.file("out.ply") + " --scene " + dir.file("bad.json"));
+  CHECK(bad.code == 1);
+  CHECK(bad.err == "shadetool: " + dir.file("bad.json") + ": $.lights[0].image: '" + dir.file("fake.hdr") +
+                       "': not a Radiance .hdr (RGBE) image\n");
+  CHECK_FALSE(fs::exists(dir.file("out.ply")));
+}

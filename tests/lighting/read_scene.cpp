@@ -125,7 +125,7 @@ TEST_CASE("invalid scenes: one line with file, JSON path and problem", "[lightin
   CHECK(error_of(R"({"lights": {}})") == "scene.json: $.lights: must be an array of lights, got an object");
   CHECK(error_of(with_light(R"({"direction": [0,0,-1]})")) == "scene.json: $.lights[0]: a light needs 'type'");
   CHECK(error_of(with_light(R"({"type": "sun"})")) ==
-        "scene.json: $.lights[0].type: must be \"ambient\", \"directional\", \"point\", \"spot\", \"area\" or \"sky\", got \"sun\"");
+        "scene.json: $.lights[0].type: must be \"ambient\", \"directional\", \"point\", \"spot\", \"area\", \"sky\" or \"environment\", got \"sun\"");
   CHECK(error_of(with_light(R"({"type": "directional", "direction": [0,0,0]})")) ==
         "scene.json: $.lights[0].direction: zero-length direction");
   CHECK(error_of(with_light(R"({"type": "directional"})")) ==

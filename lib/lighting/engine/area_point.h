@@ -19,9 +19,10 @@ struct WorldPoint {
 };
 
 // p, n in the frame's space S (n any length, already flipped for two-sided); zero_normal when the
-// loop found n zero or non-finite.
-WorldPoint world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess,
-                       const Vec3d& p, const Vec3d& n, bool zero_normal);
+// loop found n zero or non-finite. Fills a default-constructed `out` (written in place: a
+// returned WorldPoint was zero-filled twice per point, a third of this function's time).
+void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess, const Vec3d& p,
+                 const Vec3d& n, bool zero_normal, WorldPoint& out);
 
 // Adds one area or sky light's terms to color; counts skips. visibility (shadows; 1 without):
 // the light's visible fraction; visibility_ground the sky's ground's (sky lights only).

@@ -142,10 +142,11 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
           continue;
         }
         [[fallthrough]];
-      case LightType::Area:  // P and S in world space (area_light.h)
+      case LightType::Area:  // P and S in world space (area_light.h, environment_map.h)
+      case LightType::Environment:
         if (kShadows && (vis < 1 || vis_ground < 1)) ++count.shadowed;
         if (!world_ready) {
-          world = world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0);
+          world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0, world);
           world_ready = true;
         }
         add_area_light(color, light, world, count, vis, vis_ground);
