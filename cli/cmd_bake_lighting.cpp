@@ -119,7 +119,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
         r.notes.push_back(std::to_string(rep.counters.at_light) +
                           " vertex-light pairs have the point at the light's position: that light adds nothing there");
       if (shadows.enabled && samples_given && baked.shadows.sampled_lights == 0)
-        r.notes.push_back("--samples ignored: the scene has no area or sky light (directional, point and spot "
+        r.notes.push_back("--samples ignored: the scene has no area, sky or environment light (directional, point and spot "
                           "lights cast one shadow ray each)");
       if (rep.plan.view && !scene.has_camera)
         r.notes.push_back("the scene has no camera: the eye is at the world origin (OpenGL's default)");
