@@ -107,7 +107,8 @@ RegisterCommand reg(10, [](CLI::App& app) -> std::function<int()> {
         "info", io,
         [](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           std::string format;
-          if (!io.input_format.empty()) format = io.input_format;
+          if (r.gltf_document) format = r.gltf_document->was_binary ? "glb" : "gltf";
+          else if (!io.input_format.empty()) format = io.input_format;
           else format = shadetool::format_extension(shadetool::format_from_extension(input));
           for (auto& c : format) c = char(std::toupper(static_cast<unsigned char>(c)));
           const MeshInfo m = shadetool::info::mesh_info(mesh);
