@@ -359,10 +359,16 @@ struct PrimitiveWriter {
         if (decoded && !decoded->empty()) {
           if (!keep_all || !same_vertex_data(*decoded, *before))
             targets[t][attr] = add_float_accessor(out, gather(*decoded, 3, split.source_vertex), 3, attr == "POSITION", true);
+        } else if (decoded && !before->empty()) {
+          targets[t].erase(attr);  // the command removed them (normals dropped)
         } else if (!keep_all) {
           targets[t][attr] = add_gathered_accessor(out, *model, index, split.source_vertex, name);
         }
       }
+      // Deltas the command added (NORMAL deltas computed for a target that had none).
+      if (same_vertices && now.normal_deltas.size() == 3 * gp.mesh.num_vertices() && was.normal_deltas.empty() &&
+          !targets[t].contains("NORMAL"))
+        targets[t]["NORMAL"] = add_float_accessor(out, gather(now.normal_deltas, 3, split.source_vertex), 3, false, true);
     }
   }
 };
