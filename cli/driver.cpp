@@ -342,7 +342,7 @@ void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, 
       else if (it.value().is_number() && dst.is_number()) dst = dst.get<double>() + it.value().get<double>();
       else dst = it.value();
     }
-    if (!r.text.empty()) result.text += several ? p.json_path + ":\n" + r.text : r.text;
+    result.text += r.text;  // each primitive's text names it (the step's input is "FILE: JSON.PATH")
     if (several) per_primitive[p.json_path] = r.stats;
     for (auto& [path, content] : r.other_files) {  // one file per path: several primitives' JSON reports side by side
       auto same = std::find_if(result.other_files.begin(), result.other_files.end(), [&](const auto& f) { return f.first == path; });

@@ -93,9 +93,12 @@ int add_float_accessor(OutBuffer& out, const std::vector<double>& values, int co
 }
 
 // COLOR_0 in the component type the input had (float, or normalised ubyte / ushort).
-int add_color_accessor(OutBuffer& out, const std::vector<float>& colors, int channels, int component_type) {
+int add_color_accessor(OutBuffer& out, const std::vector<float>& colors, int channels, int component_type, std::size_t& clamped) {
   if (component_type != kUByte && component_type != kUShort) {
+    // glTF COLOR_0 holds [0, 1] (spec 3.7.2.1; the validator's ACCESSOR_NON_CLAMPED): clamped.
     std::vector<double> d(colors.begin(), colors.end());
+    for (double& c : d)
+      if (c < 0 || c > 1) c = std::clamp(c, 0.0, 1.0), ++clamped;
     return add_float_accessor(out, d, channels, false, true);
   }
   const std::size_t count = colors.size() / std::size_t(channels);
@@ -285,7 +288,10 @@ struct PrimitiveWriter {
           }
         if (mesh.has_vertex_colors() && !mesh.has_face_colors()) col = gather(mesh.vertex_colors, std::size_t(channels), split.source_vertex);
         const int ct = gp.color_component_type == kUByte || gp.color_component_type == kUShort ? gp.color_component_type : kFloat;
-        attrs["COLOR_0"] = add_color_accessor(out, col, channels, ct);
+        std::size_t clamped = 0;
+        attrs["COLOR_0"] = add_color_accessor(out, col, channels, ct, clamped);
+        if (clamped > 0)
+          result.notes.push_back(gp.json_path + ": " + std::to_string(clamped) + " colour values outside [0, 1] clamped: glTF's COLOR_0 holds [0, 1]");
       }
     }
 
