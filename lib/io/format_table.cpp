@@ -187,8 +187,11 @@ std::string format_list(bool with_dots) {
   std::string s;
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (i > 0) s += i + 1 == t.size() ? " or " : ", ";
-    if (with_dots) s += '.';
-    s += t[i].name;
+    if (!with_dots) {
+      s += t[i].name;
+      continue;
+    }
+    for (std::size_t k = 0; k < t[i].extensions.size(); ++k) s += std::string(k ? "/." : ".") + t[i].extensions[k];
   }
   return s;
 }
