@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
     std::fseek(f, 0, SEEK_END);
     const long n = std::ftell(f);
     std::fseek(f, 0, SEEK_SET);
-    std::vector<char> buf(std::size_t(n));
+    std::vector<char> buf(static_cast<std::size_t>(n));
     if (std::fread(buf.data(), 1, buf.size(), f) != buf.size()) std::perror("fread");
     std::fclose(f);
     write_all(out_copy, buf.data(), buf.size());

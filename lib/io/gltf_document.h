@@ -53,8 +53,9 @@ struct GltfPrimitive {
   std::vector<double> tangents;       // #V by 4 (xyz, w = handedness +-1), or empty
   std::vector<GltfMorphTarget> targets;
   int color_component_type = 0;       // COLOR_0 as read (5126 float, 5121, 5123); 0: none
-  // As read, to write only what changed.
-  Mesh read_mesh;
+  // As read, to write only what changed (positions, normals, colours and corners are compared
+  // with their accessors in the source, without a copy).
+  std::size_t read_vertices = 0;
   std::vector<double> read_tangents;
   std::vector<GltfMorphTarget> read_targets;
 };

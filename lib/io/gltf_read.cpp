@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 #include "engine/gltf_accessor.h"
 #include "engine/gltf_source.h"
@@ -18,7 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using io::gltf::accessor_doubles;
-using io::gltf::accessor_indices;
 
 std::uint32_t le32(const char* p) {
   std::uint32_t v;
@@ -222,43 +222,14 @@ void decode_primitive(const tinygltf::Model& model, bool quantized, GltfPrimitiv
   }
 
   // Corners: the indices (or 0..V-1), strips and fans unrolled (spec 3.7.2.1).
-  std::vector<std::uint32_t> idx;
-  if (prim.indices >= 0) {
-    idx = accessor_indices(model, prim.indices, name);
-    for (std::size_t i = 0; i < idx.size(); ++i)
-      if (idx[i] >= V)
-        fail(name, 0, path + ".indices: index " + std::to_string(idx[i]) + " (element " + std::to_string(i) +
-                          " of accessors[" + std::to_string(prim.indices) + "]) is out of range: POSITION has " +
-                          std::to_string(V) + " vertices");
-  } else {
-    idx.resize(V);
-    for (std::size_t i = 0; i < V; ++i) idx[i] = std::uint32_t(i);
-  }
-  const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-  std::vector<std::uint32_t>& cv = mesh.corner_vertex;
-  if (mode == TINYGLTF_MODE_TRIANGLES) {
-    if (idx.size() % 3 != 0)
-      fail(name, 0, path + (prim.indices >= 0 ? ".indices" : ".attributes.POSITION") + ": " + std::to_string(idx.size()) +
-                        " vertices do not make whole triangles (TRIANGLES needs a multiple of 3)");
-    cv = std::move(idx);
-  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-    for (std::size_t i = 0; i + 2 < idx.size(); ++i) {
-      cv.push_back(idx[i]);
-      cv.push_back(idx[i + 1 + i % 2]);
-      cv.push_back(idx[i + 2 - i % 2]);
-    }
-  } else {  // TRIANGLE_FAN
-    for (std::size_t i = 0; i + 2 < idx.size(); ++i) {
-      cv.push_back(idx[i + 1]);
-      cv.push_back(idx[i + 2]);
-      cv.push_back(idx[0]);
-    }
-  }
+  mesh.corner_vertex = io::gltf::primitive_corners(model, prim.indices, prim.mode, V, path, name);
+  const std::vector<std::uint32_t>& cv = mesh.corner_vertex;
   const std::size_t F = cv.size() / 3;
+  reserve_bulk(mesh.face_start, F + 1);
   mesh.face_start.resize(F + 1);
   for (std::size_t f = 0; f <= F; ++f) mesh.face_start[f] = std::uint32_t(3 * f);
   mesh.precision = ValuePrecision::Float;
-  gp.read_mesh = mesh;
+  gp.read_vertices = V;
   gp.read_tangents = gp.tangents;
   gp.read_targets = gp.targets;
 }

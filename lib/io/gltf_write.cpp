@@ -11,6 +11,10 @@
 #include <unordered_map>
 
 #include <shadetool/core/error.h>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 #include "engine/gltf_accessor.h"
 #include "engine/gltf_source.h"
 
@@ -155,6 +159,20 @@ std::vector<T> gather(const std::vector<T>& a, std::size_t comps, const std::vec
   return out;
 }
 
+// Capacity for the output in one block; big blocks are advised as huge pages (first touch of fresh
+// memory is most of the cost of writing, as in core/bulk_reserve.h; only the 2 MiB-aligned
+// interior is advised).
+void reserve_output(std::string& s, std::size_t n) {
+  s.reserve(n);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t(1) << 21;
+  if (n < 2 * kHuge) return;
+  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(s.data()), end = begin + n;
+  const std::uintptr_t b = (begin + kHuge - 1) & ~(kHuge - 1), e = end & ~(kHuge - 1);
+  if (e > b) ::madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
+#endif
+}
+
 std::string base64(const std::string& in) {
   static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -236,23 +254,29 @@ struct PrimitiveWriter {
 
   void write(const GltfPrimitive& gp, json& jprim) {
     const Mesh& mesh = gp.mesh;
-    const Mesh& read = gp.read_mesh;
+    const tinygltf::Primitive* src = model ? &model->meshes[gp.mesh_index].primitives[gp.primitive_index] : nullptr;
+    auto source_attribute = [src](const char* attr) {
+      if (!src) return -1;
+      const auto it = src->attributes.find(attr);
+      return it == src->attributes.end() ? -1 : it->second;
+    };
     json& attrs = jprim["attributes"];
     const Split split = split_vertices(mesh);
     const bool identity = split.source_vertex.size() == mesh.num_vertices() && !mesh.has_corner_normals() &&
                           !mesh.has_face_normals() && !mesh.has_face_colors();
     const std::size_t out_vertices = split.source_vertex.size();
-    const bool same_vertices = model && mesh.num_vertices() == read.num_vertices();
+    const bool same_vertices = model && mesh.num_vertices() == gp.read_vertices;
     const bool keep_all = identity && same_vertices;  // accessors as read stay valid
     if (!identity && out_vertices > mesh.num_vertices()) result.split_vertices += out_vertices - mesh.num_vertices();
 
     // POSITION
-    if (!keep_all || !same_vertex_data(mesh.positions, read.positions))
+    if (!keep_all || !io::gltf::accessor_equals(*model, source_attribute("POSITION"), mesh.positions, name))
       attrs["POSITION"] = add_float_accessor(out, gather(mesh.positions, 3, split.source_vertex), 3, true, true);
 
     // NORMAL: per vertex, per corner (pool) or per face, all as vertex normals of the output.
     if (mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals()) {
-      const bool unchanged = keep_all && read.has_vertex_normals() && same_vertex_data(mesh.vertex_normals, read.vertex_normals);
+      const bool unchanged = keep_all && mesh.has_vertex_normals() && source_attribute("NORMAL") >= 0 &&
+                             io::gltf::accessor_equals(*model, source_attribute("NORMAL"), mesh.vertex_normals, name);
       if (!unchanged) {
         std::vector<double> n(3 * out_vertices, 0.0);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
@@ -275,8 +299,10 @@ struct PrimitiveWriter {
     // COLOR_0: per vertex or per face (then per split vertex).
     const int channels = mesh.color_channels;
     if (mesh.has_vertex_colors() || mesh.has_face_colors()) {
-      const bool unchanged = keep_all && read.has_vertex_colors() && mesh.vertex_colors == read.vertex_colors &&
-                             mesh.color_channels == read.color_channels;
+      const int color = source_attribute("COLOR_0");
+      const bool unchanged = keep_all && mesh.has_vertex_colors() && color >= 0 &&
+                             io::gltf::type_components(model->accessors[std::size_t(color)].type) == mesh.color_channels &&
+                             io::gltf::accessor_equals(*model, color, mesh.vertex_colors, name);
       if (!unchanged) {
         std::vector<float> col(std::size_t(channels) * out_vertices, 1.0f);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
@@ -324,7 +350,9 @@ struct PrimitiveWriter {
     }
 
     // Indices: as read while the faces and vertices are; else a new TRIANGLES list.
-    const bool faces_same = keep_all && mesh.corner_vertex == read.corner_vertex && mesh.face_start == read.face_start;
+    const bool faces_same = keep_all && mesh.all_triangles() &&
+                            io::gltf::primitive_corners_equal(*model, src->indices, src->mode, gp.read_vertices,
+                                                              mesh.corner_vertex, gp.json_path, name);
     if (!faces_same) {
       std::vector<std::uint32_t> idx;
       idx.reserve(mesh.num_corners());
@@ -411,9 +439,12 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
   // Every input buffer, concatenated (8-byte aligned, so every accessor keeps its alignment).
   if (model) {
     std::vector<std::size_t> base(model->buffers.size());
-    std::size_t total = 0;
+    std::size_t total = 28 + (std::size_t(1) << 20);  // GLB headers and room for the JSON in front
     for (const auto& b : model->buffers) total += b.data.size() + 8;
-    out.bytes.reserve(total);
+    for (const auto& im : model->images) total += im.image.size() + 4;
+    for (const GltfPrimitive& p : doc.primitives)  // room for what a command adds (position, normal, colour, indices)
+      total += p.mesh.num_vertices() * 40 + p.mesh.num_corners() * 4 + 64;
+    reserve_output(out.bytes, total);
     for (std::size_t b = 0; b < model->buffers.size(); ++b) {
       out.align(8);
       base[b] = out.bytes.size();
@@ -467,21 +498,21 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
   while (text.size() % 4) text += ' ';
   const std::uint32_t total = std::uint32_t(12 + 8 + text.size() + (out.bytes.empty() ? 0 : 8 + out.bytes.size()));
   if (12 + 8 + text.size() + 8 + out.bytes.size() > 0xFFFFFFF0ull) fail(name, 0, "the output exceeds GLB's 4 GiB limit: write .gltf");
-  std::string glb;
-  glb.reserve(total);
-  auto put32 = [&glb](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
-  glb += "glTF";
+  std::string head;
+  auto put32 = [&head](std::uint32_t v) { head.append(reinterpret_cast<const char*>(&v), 4); };
+  head += "glTF";
   put32(2);
   put32(total);
   put32(std::uint32_t(text.size()));
   put32(0x4E4F534Au);  // JSON
-  glb += text;
-  if (!out.bytes.empty()) {
-    put32(std::uint32_t(out.bytes.size()));
-    put32(0x004E4942u);  // BIN
-    glb += out.bytes;
-  }
-  return glb;
+  head += text;
+  if (out.bytes.empty()) return head;
+  put32(std::uint32_t(out.bytes.size()));
+  put32(0x004E4942u);  // BIN
+  // The headers and JSON go in front of the binary chunk in place (a move within the reserved
+  // block, not a second copy of the data into fresh memory).
+  out.bytes.insert(0, head);
+  return std::move(out.bytes);
 }
 
 }  // namespace shadetool

@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 
 namespace shadetool::io::gltf {
@@ -117,7 +118,40 @@ std::vector<unsigned char> accessor_bytes(const tinygltf::Model& model, int inde
   return out;
 }
 
+namespace {
+
+// Plain FLOAT data (no sparse values) in a buffer view: its first element and stride, after every
+// check accessor_bytes makes; nullptr when the accessor is not of that kind.
+const unsigned char* plain_float(const tinygltf::Model& model, int index, const std::string& name, std::size_t& stride) {
+  if (index < 0 || std::size_t(index) >= model.accessors.size()) return nullptr;
+  const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
+  if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.sparse.isSparse || a.bufferView < 0 || a.count == 0) return nullptr;
+  const int comps = type_components(a.type);
+  if (comps == 0 || std::size_t(a.bufferView) >= model.bufferViews.size()) return nullptr;
+  const std::size_t elem = 4 * std::size_t(comps);
+  const tinygltf::BufferView& bv = model.bufferViews[std::size_t(a.bufferView)];
+  stride = bv.byteStride ? bv.byteStride : elem;
+  if (stride < elem || a.byteOffset % 4 != 0) return nullptr;  // accessor_bytes reports these
+  return view_span(model, a.bufferView, a.byteOffset, (a.count - 1) * stride + elem, name, at(index), nullptr);
+}
+
+}  // namespace
+
 std::vector<double> accessor_doubles(const tinygltf::Model& model, int index, const std::string& name) {
+  std::size_t stride = 0;
+  if (const unsigned char* src = plain_float(model, index, name, stride)) {  // no intermediate copy
+    const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
+    const std::size_t comps = std::size_t(type_components(a.type));
+    std::vector<double> out;
+    reserve_bulk(out, a.count * comps);  // huge pages for big arrays: most of the cost is first touch
+    out.resize(a.count * comps);
+    for (std::size_t i = 0; i < a.count; ++i) {
+      float f[16];
+      std::memcpy(f, src + i * stride, 4 * comps);
+      for (std::size_t k = 0; k < comps; ++k) out[i * comps + k] = f[k];
+    }
+    return out;
+  }
   const std::vector<unsigned char> raw = accessor_bytes(model, index, name);
   const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
   const std::size_t n = a.count * std::size_t(type_components(a.type));
@@ -170,6 +204,19 @@ std::vector<std::uint32_t> accessor_indices(const tinygltf::Model& model, int in
         ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
     fail(name, 0, at(index) + ".componentType: " + std::to_string(ct) +
                       " is not an index type (UNSIGNED_BYTE 5121, UNSIGNED_SHORT 5123 or UNSIGNED_INT 5125)");
+  if (!a.sparse.isSparse && a.bufferView >= 0 && a.count > 0 && std::size_t(a.bufferView) < model.bufferViews.size() &&
+      model.bufferViews[std::size_t(a.bufferView)].byteStride == 0 && a.byteOffset % std::size_t(component_bytes(ct)) == 0) {
+    // Packed indices read straight from the buffer (no intermediate copy).
+    const std::size_t cb = std::size_t(component_bytes(ct));
+    const unsigned char* src = view_span(model, a.bufferView, a.byteOffset, a.count * cb, name, at(index), nullptr);
+    std::vector<std::uint32_t> out;
+    reserve_bulk(out, a.count);
+    out.resize(a.count);
+    if (cb == 4) std::memcpy(out.data(), src, a.count * 4);
+    else if (cb == 2) for (std::size_t i = 0; i < a.count; ++i) { std::uint16_t v; std::memcpy(&v, src + 2 * i, 2); out[i] = v; }
+    else for (std::size_t i = 0; i < a.count; ++i) out[i] = src[i];
+    return out;
+  }
   const std::vector<unsigned char> raw = accessor_bytes(model, index, name);
   std::vector<std::uint32_t> out(a.count);
   if (ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
@@ -180,6 +227,86 @@ std::vector<std::uint32_t> accessor_indices(const tinygltf::Model& model, int in
     std::memcpy(out.data(), raw.data(), raw.size());
   }
   return out;
+}
+
+bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<double>& values, const std::string& name) {
+  if (index < 0 || std::size_t(index) >= model.accessors.size()) return false;
+  const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
+  const std::size_t comps = std::size_t(type_components(a.type));
+  if (values.size() != a.count * comps) return false;
+  std::size_t stride = 0;
+  if (const unsigned char* src = plain_float(model, index, name, stride)) {
+    for (std::size_t i = 0; i < a.count; ++i) {
+      float f[16];
+      std::memcpy(f, src + i * stride, 4 * comps);
+      for (std::size_t k = 0; k < comps; ++k)
+        if (!(double(f[k]) == values[i * comps + k])) return false;
+    }
+    return true;
+  }
+  const std::vector<double> d = accessor_doubles(model, index, name);
+  return d == values;
+}
+
+bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<float>& values, const std::string& name) {
+  if (index < 0 || std::size_t(index) >= model.accessors.size()) return false;
+  const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
+  if (values.size() != a.count * std::size_t(type_components(a.type))) return false;
+  const std::vector<double> d = accessor_doubles(model, index, name);
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (!(float(d[i]) == values[i])) return false;
+  return true;
+}
+
+std::vector<std::uint32_t> primitive_corners(const tinygltf::Model& model, int indices, int mode, std::size_t vertices,
+                                             const std::string& path, const std::string& name) {
+  std::vector<std::uint32_t> idx;
+  if (indices >= 0) {
+    idx = accessor_indices(model, indices, name);
+    for (std::size_t i = 0; i < idx.size(); ++i)
+      if (idx[i] >= vertices)
+        fail(name, 0, path + ".indices: index " + std::to_string(idx[i]) + " (element " + std::to_string(i) +
+                          " of accessors[" + std::to_string(indices) + "]) is out of range: POSITION has " +
+                          std::to_string(vertices) + " vertices");
+  } else {
+    idx.resize(vertices);
+    for (std::size_t i = 0; i < vertices; ++i) idx[i] = std::uint32_t(i);
+  }
+  if (mode < 0 || mode == TINYGLTF_MODE_TRIANGLES) {
+    if (idx.size() % 3 != 0)
+      fail(name, 0, path + (indices >= 0 ? ".indices" : ".attributes.POSITION") + ": " + std::to_string(idx.size()) +
+                        " vertices do not make whole triangles (TRIANGLES needs a multiple of 3)");
+    return idx;
+  }
+  std::vector<std::uint32_t> cv;
+  cv.reserve(idx.size() > 2 ? 3 * (idx.size() - 2) : 0);
+  for (std::size_t i = 0; i + 2 < idx.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      cv.push_back(idx[i]);
+      cv.push_back(idx[i + 1 + i % 2]);
+      cv.push_back(idx[i + 2 - i % 2]);
+    } else {  // TRIANGLE_FAN
+      cv.push_back(idx[i + 1]);
+      cv.push_back(idx[i + 2]);
+      cv.push_back(idx[0]);
+    }
+  }
+  return cv;
+}
+
+bool primitive_corners_equal(const tinygltf::Model& model, int indices, int mode, std::size_t vertices,
+                             const std::vector<std::uint32_t>& corners, const std::string& path, const std::string& name) {
+  if ((mode < 0 || mode == TINYGLTF_MODE_TRIANGLES) && indices >= 0 && std::size_t(indices) < model.accessors.size()) {
+    const tinygltf::Accessor& a = model.accessors[std::size_t(indices)];
+    const int ct = a.componentType;
+    if (a.count != corners.size()) return false;
+    if (ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && !a.sparse.isSparse && a.bufferView >= 0 && a.count > 0 &&
+        std::size_t(a.bufferView) < model.bufferViews.size() && model.bufferViews[std::size_t(a.bufferView)].byteStride == 0) {
+      const unsigned char* src = view_span(model, a.bufferView, a.byteOffset, a.count * 4, name, at(indices), nullptr);
+      return std::memcmp(src, corners.data(), a.count * 4) == 0;
+    }
+  }
+  return primitive_corners(model, indices, mode, vertices, path, name) == corners;
 }
 
 }  // namespace shadetool::io::gltf

@@ -38,4 +38,21 @@ std::vector<double> accessor_doubles(const tinygltf::Model& model, int index, co
 // Accessor `index` as unsigned indices (SCALAR of UNSIGNED_BYTE/SHORT/INT; Error otherwise).
 std::vector<std::uint32_t> accessor_indices(const tinygltf::Model& model, int index, const std::string& name);
 
+// True when accessor `index` decodes (as accessor_doubles would) to exactly `values`; compares
+// in place, without a copy, for tightly or stride-packed FLOAT data without sparse values.
+bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<double>& values, const std::string& name);
+// The same for colours held as float: each decoded value rounded to float equals values[i].
+bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<float>& values, const std::string& name);
+
+// The triangle corners of a TRIANGLES / TRIANGLE_STRIP / TRIANGLE_FAN primitive: its indices (or
+// 0..count-1), strips and fans unrolled (glTF 2.0, 3.7.2.1: strip i -> {i, i+1+i%2, i+2-i%2},
+// fan i -> {i+1, i+2, 0}). `vertices` is POSITION's count (indices are checked against it);
+// `path` names the primitive in messages.
+std::vector<std::uint32_t> primitive_corners(const tinygltf::Model& model, int indices, int mode, std::size_t vertices,
+                                             const std::string& path, const std::string& name);
+// True when primitive_corners(...) would equal `corners` (TRIANGLES with plain indices: compared
+// in place).
+bool primitive_corners_equal(const tinygltf::Model& model, int indices, int mode, std::size_t vertices,
+                             const std::vector<std::uint32_t>& corners, const std::string& path, const std::string& name);
+
 }  // namespace shadetool::io::gltf
