@@ -46,6 +46,17 @@ std::string upper_format_names() {
   return s;
 }
 
+// What --format and --input-format accept: every format's name and extensions (gltf, glb, ...).
+std::vector<std::string> format_names_and_extensions() {
+  std::vector<std::string> names;
+  for (const shadetool::FormatEntry& e : shadetool::mesh_formats()) {
+    names.emplace_back(e.name);
+    for (const char* ext : e.extensions)
+      if (std::find(names.begin(), names.end(), ext) == names.end()) names.emplace_back(ext);
+  }
+  return names;
+}
+
 std::string image_format_list() {
   std::string s;
   const auto names = shadetool::image_format_names();
@@ -58,13 +69,13 @@ std::string image_format_list() {
 void add_io_options(CLI::App& sub, IoOptions& io, OutputKind kind) {
   sub.add_option("inputs", io.inputs, "Input mesh files (" + upper_format_names() + "); - reads stdin")->required();
   sub.add_option("--input-format", io.input_format, "Format of the input when it has no extension (stdin)")
-      ->check(CLI::IsMember(shadetool::format_names(), CLI::ignore_case));
+      ->check(CLI::IsMember(format_names_and_extensions(), CLI::ignore_case));
   if (kind == OutputKind::Mesh) {
     sub.add_option("-o,--output", io.output, "Output file; - writes stdout (then --format is needed)");
     sub.add_option("--output-dir", io.output_dir, "Write one output per input into DIR, named after the input");
     sub.add_option("--format", io.format,
-                   "Output format: " + shadetool::format_list(false) + " (default: from -o's extension)")
-        ->check(CLI::IsMember(shadetool::format_names(), CLI::ignore_case));
+                   "Output format: " + shadetool::format_list(false) + " (glTF: glb or gltf; default: from -o's extension)")
+        ->check(CLI::IsMember(format_names_and_extensions(), CLI::ignore_case));
     auto* a = sub.add_flag("--ascii", io.ascii, "Write PLY/STL as text (glTF: JSON .gltf instead of .glb)");
     auto* b = sub.add_flag("--binary", io.binary, "Write PLY/STL as binary (the default)");
     a->excludes(b);

@@ -171,5 +171,25 @@ check "obj -> glb valid" valid "$tmp/from_obj.glb"
 "$bin" normals "$fx/rich.glb" -o "$tmp/to.obj" 2> "$tmp/note.txt"
 check "glb -> obj: a note says the primitives became one mesh" grep -q "written as one mesh" "$tmp/note.txt"
 
+# --format glb / gltf, stdout and stdin, --output-dir.
+"$bin" normals "$fx/rich.glb" -o - --format glb -q > "$tmp/stdout.glb"
+check "-o - --format glb writes a GLB" test "$(head -c 4 "$tmp/stdout.glb")" = glTF
+check "stdout GLB valid" valid "$tmp/stdout.glb"
+"$bin" normals "$fx/rich.glb" -o - --format gltf -q > "$tmp/stdout.gltf"
+check "-o - --format gltf writes JSON" "$py" -c 'import json,sys; json.load(open(sys.argv[1]))' "$tmp/stdout.gltf"
+mkdir -p "$tmp/od"
+"$bin" normals "$fx/rich.gltf" --output-dir "$tmp/od" --format glb -q
+check "--output-dir --format glb names the output .glb" test -s "$tmp/od/rich.glb"
+"$bin" info - --input-format glb < "$fx/rich.glb" > "$tmp/stdin.txt" 2> /dev/null
+check "stdin with --input-format glb" grep -q "GLB" "$tmp/stdin.txt"
+"$bin" normals "$fx/rich.glb" -o "$tmp/j.glb" --json -q > "$tmp/j.json"
+check "--json: one line, counts summed over primitives, per-primitive stats" "$py" -c '
+import json,sys
+rows=[json.loads(l) for l in open(sys.argv[1])]
+assert len(rows)==1 and rows[0]["status"]=="ok"
+st=rows[0]["stats"]
+assert st["primitives"]==4 and st["faces"]==12+4+6+4, st
+assert len(st["per_primitive"])==4, st' "$tmp/j.json"
+
 echo "gltf_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
