@@ -165,6 +165,38 @@ else
   echo "skipped: second writer (no assimp: install assimp-utils)"
 fi
 
+# A third writer: Blender's glTF exporter (default scene: a cube with TANGENT, a point light as
+# KHR_lights_punctual, a camera). bake-lighting without --scene must light exactly the vertices
+# whose normal faces the light (no ambient or emission in the glTF mapping).
+if command -v blender > /dev/null; then
+  blender -b --factory-startup --python-exit-code 1 --python-expr "
+import bpy
+bpy.ops.export_scene.gltf(filepath='$tmp/blender.glb', export_format='GLB', export_tangents=True, export_lights=True, export_cameras=True)
+" > "$tmp/blender.log" 2>&1
+  check "blender export" test -s "$tmp/blender.glb"
+  "$bin" bake-lighting "$tmp/blender.glb" -o "$tmp/blender_lit.glb" -q
+  check "blender: bake-lighting with the file's own light: kept" gcheck keep "$tmp/blender.glb" "$tmp/blender_lit.glb" --changed COLOR_0
+  check "blender: bake-lighting valid" valid "$tmp/blender_lit.glb"
+  check "blender: lit exactly where the normal faces the point light" "$py" -c '
+import sys
+sys.path.insert(0,sys.argv[2])
+import gltf_check as g
+doc,bufs=g.load(sys.argv[4])
+light=[n for n in doc["nodes"] if "KHR_lights_punctual" in n.get("extensions",{})][0]["translation"]
+cube=[n for n in doc["nodes"] if n.get("mesh")==0][0]
+assert "matrix" not in cube and cube.get("translation",[0,0,0])==[0,0,0] and "scale" not in cube, cube
+prim=doc["meshes"][0]["primitives"][0]
+P,N,C=(g.accessor(doc,bufs,prim["attributes"][a]) for a in ("POSITION","NORMAL","COLOR_0"))
+for p,n,c in zip(P,N,C):
+  facing=sum(n[k]*(light[k]-p[k]) for k in range(3))>0
+  assert (max(c[:3])>0)==facing, (p,n,c,light)' "$py" "$src/tests/gltf" "$tmp/blender.glb" "$tmp/blender_lit.glb"
+  "$bin" transform "$tmp/blender.glb" --scale -1,1,1 -o "$tmp/blender_mirror.glb" -q
+  check "blender: mirror keeps the rest" gcheck keep "$tmp/blender.glb" "$tmp/blender_mirror.glb" --changed POSITION,NORMAL,TANGENT
+  check "blender: mirror valid" valid "$tmp/blender_mirror.glb"
+else
+  echo "skipped: third writer (no blender)"
+fi
+
 # Other formats in and out: OBJ -> glb (a fresh document) and glb -> OBJ (one mesh, with a note).
 "$bin" normals "$src/data/torus.obj" -o "$tmp/from_obj.glb" -q
 check "obj -> glb valid" valid "$tmp/from_obj.glb"
