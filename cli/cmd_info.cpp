@@ -114,6 +114,15 @@ RegisterCommand reg(10, [](CLI::App& app) -> std::function<int()> {
           const MeshInfo m = shadetool::info::mesh_info(mesh);
           r.stats = info_json(m, format);
           r.text = info_text(m, input, format);
+          if (r.gltf) {  // what the primitive holds beyond the mesh (passed through by every command)
+            std::string attrs;
+            for (const auto& a : r.gltf->attributes) attrs += (attrs.empty() ? "" : " ") + a;
+            const char* mode = r.gltf->mode == 5 ? "TRIANGLE_STRIP" : r.gltf->mode == 6 ? "TRIANGLE_FAN" : "TRIANGLES";
+            r.text += fmt::format("  glTF                   {}; {}; {} morph targets\n", mode, attrs, r.gltf->targets.size());
+            r.stats["gltf_attributes"] = r.gltf->attributes;
+            r.stats["gltf_mode"] = mode;
+            r.stats["gltf_morph_targets"] = r.gltf->targets.size();
+          }
         },
         false);
   };

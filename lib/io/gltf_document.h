@@ -53,6 +53,8 @@ struct GltfPrimitive {
   std::vector<double> tangents;       // #V by 4 (xyz, w = handedness +-1), or empty
   std::vector<GltfMorphTarget> targets;
   int color_component_type = 0;       // COLOR_0 as read (5126 float, 5121, 5123); 0: none
+  std::vector<std::string> attributes;  // every attribute name as read (POSITION, TEXCOORD_0, ...)
+  int mode = 4;                       // as read: 4 TRIANGLES, 5 TRIANGLE_STRIP, 6 TRIANGLE_FAN
   // As read, to write only what changed (positions, normals, colours and corners are compared
   // with their accessors in the source, without a copy).
   std::size_t read_vertices = 0;

@@ -203,7 +203,9 @@ void decode_primitive(const tinygltf::Model& model, bool quantized, GltfPrimitiv
     gp.color_component_type = a.componentType;
     mesh.vertex_colors.assign(c.begin(), c.end());
   }
+  gp.mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
   for (auto& [attr, index] : prim.attributes) {  // every other attribute: its count must agree too
+    gp.attributes.push_back(attr);
     if (index < 0 || std::size_t(index) >= model.accessors.size())
       fail(name, 0, path + ".attributes." + attr + ": " + std::to_string(index) + " is not an accessor index");
     if (model.accessors[std::size_t(index)].count != V)
