@@ -95,6 +95,11 @@ check "info: names the primitive" grep -q 'rich.glb: meshes\[1\].primitives\[0\]
 check "repair: kept" gcheck keep "$fx/rich.glb" "$tmp/r.glb" --changed NORMAL
 check "repair: valid" valid "$tmp/r.glb"
 
+"$bin" repair "$fx/rich.glb" -o "$tmp/rw.glb" --weld 1e-6 2> "$tmp/err.txt"
+check "repair --weld on a primitive with texcoords/skin/targets: exit 1" test $? -eq 1
+check "repair --weld: names what cannot follow" grep -q "TEXCOORD_0.*cannot follow" "$tmp/err.txt"
+check "repair --weld: no output" test ! -e "$tmp/rw.glb"
+
 # transform: a mirror with a non-uniform scale.
 "$bin" transform "$fx/rich.glb" --scale -1,2,1 -o "$tmp/t.glb" -q
 check "transform: kept" gcheck keep "$fx/rich.glb" "$tmp/t.glb" --changed POSITION,NORMAL,TANGENT

@@ -20,7 +20,9 @@
 // what changed: POSITION (min/max recomputed), NORMAL, COLOR_0, TANGENT, target deltas, indices.
 // When a command splits vertices (corner or face normals, face colours), every other vertex
 // attribute is gathered through the split; when it changes the vertex count otherwise (repair's
-// welding), attributes that cannot follow are dropped and named in a note.
+// welding) and the primitive has attributes or morph targets that cannot follow, nothing is
+// written (Error naming them: dropping them would break the materials, skins and weights that
+// refer to them).
 //
 // Bad input (Error `FILE: JSON.PATH: what`): a missing buffer file, a view or accessor beyond its
 // buffer, an index out of range, component types the spec forbids for an attribute, NaN/Inf in

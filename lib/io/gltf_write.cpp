@@ -344,9 +344,13 @@ struct PrimitiveWriter {
       write_targets(gp, jprim, prim, split, keep_all, same_vertices, dropped);
     }
     if (!dropped.empty()) {
+      // Dropping them would break what refers to them (a material's texture needs its TEXCOORD, a
+      // skin its JOINTS, the mesh's weights its targets): refused, nothing written.
       std::string list;
       for (const auto& d : dropped) list += (list.empty() ? "" : ", ") + d;
-      result.notes.push_back(gp.json_path + ": the command changed the vertex count; attributes that could not follow were removed: " + list);
+      fail(name, 0, gp.json_path + ": the command changed the vertex count (" + std::to_string(gp.read_vertices) + " -> " +
+                        std::to_string(mesh.num_vertices()) + "); " + list +
+                        " cannot follow (nothing written; without --weld the vertices are kept)");
     }
 
     // Indices: as read while the faces and vertices are; else a new TRIANGLES list.
