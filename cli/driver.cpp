@@ -348,10 +348,14 @@ void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, 
       else it->second.push_back(p.json_path);
     }
     for (auto it = r.stats.begin(); it != r.stats.end(); ++it) {
+      // Integers are counts: summed. Other values are kept when every primitive agrees; a
+      // non-integer that differs (a mean, a time) has no one value for the file and is left to
+      // per_primitive, as is a string that differs ("mixed").
+      const bool first = !result.stats.contains(it.key());
       auto& dst = result.stats[it.key()];
-      if (it.value().is_number_integer() && dst.is_number_integer()) dst = dst.get<long long>() + it.value().get<long long>();
-      else if (it.value().is_number() && dst.is_number()) dst = dst.get<double>() + it.value().get<double>();
-      else dst = it.value();
+      if (first) dst = it.value();
+      else if (it.value().is_number_integer() && dst.is_number_integer()) dst = dst.get<long long>() + it.value().get<long long>();
+      else if (dst != it.value()) dst = it.value().is_number() ? nlohmann::json() : nlohmann::json("mixed");
     }
     result.text += r.text;  // each primitive's text names it (the step's input is "FILE: JSON.PATH")
     if (several) per_primitive[p.json_path] = r.stats;
@@ -365,6 +369,7 @@ void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, 
       }
     }
   }
+  for (auto it = result.stats.begin(); it != result.stats.end();) it = it.value().is_null() ? result.stats.erase(it) : std::next(it);
   if (several) result.stats["per_primitive"] = per_primitive;
   for (auto& [note, paths] : notes) {
     if (!several) result.notes.push_back(note);
