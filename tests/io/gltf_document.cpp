@@ -3,6 +3,7 @@
 // what is checked is the spec's layout, not our writer's idea of it.
 #include <shadetool/io/gltf_document.h>
 #include <shadetool/io/gltf_lights.h>
+#include <shadetool/io/gltf_morph_normals.h>
 #include <shadetool/io/gltf_transform.h>
 
 #include <cstdint>
@@ -314,4 +315,37 @@ TEST_CASE("glTF bad input: one message naming the JSON path", "[gltf][bad]") {
     CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }),
                Catch::Contains("meshes[0].primitives[0].attributes.POSITION: vertex 1"));
   }
+}
+
+TEST_CASE("glTF morph targets: NORMAL deltas from displaced positions", "[gltf][normals]") {
+  // A unit right triangle in z = 0 (normal +z). Target 0 translates it (normal unchanged: delta
+  // 0); target 1 lifts vertex 1 to z = 1, tilting the plane to normal (-1, 0, 1)/sqrt 2 at every
+  // vertex of the single face.
+  GltfPrimitive p;
+  p.mesh.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  p.mesh.add_face({0, 1, 2});
+  p.mesh.vertex_normals = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  p.targets.resize(2);
+  p.targets[0].position_deltas = {5, 5, 5, 5, 5, 5, 5, 5, 5};
+  p.targets[1].position_deltas = {0, 0, 0, 0, 0, 1, 0, 0, 0};
+  // The "normals computation": the face normal at every vertex (one face; exact).
+  auto face_normal = [](Mesh& m) {
+    const Vec3d a = m.position(0), b = m.position(1), c = m.position(2);
+    const Vec3d n = cross(b - a, c - a);
+    const double l = length(n);
+    m.vertex_normals.clear();
+    for (int v = 0; v < 3; ++v) m.vertex_normals.insert(m.vertex_normals.end(), {n.x / l, n.y / l, n.z / l});
+  };
+  CHECK(recompute_morph_normal_deltas(p, face_normal) == 2);
+  for (double d : p.targets[0].normal_deltas) CHECK(d == Approx(0.0).margin(1e-15));
+  const double h = std::sqrt(0.5);
+  for (int v = 0; v < 3; ++v) {
+    CHECK(p.targets[1].normal_deltas[3 * v] == Approx(-h));
+    CHECK(p.targets[1].normal_deltas[3 * v + 1] == Approx(0.0).margin(1e-15));
+    CHECK(p.targets[1].normal_deltas[3 * v + 2] == Approx(h - 1));
+  }
+  // Corner normals: nothing recomputed (the caller says so).
+  p.mesh.corner_normal_index = {0, 0, 0};
+  p.mesh.corner_normals = {0, 0, 1};
+  CHECK(recompute_morph_normal_deltas(p, face_normal) == 0);
 }
