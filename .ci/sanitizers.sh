@@ -20,7 +20,7 @@ build=${SANITIZE_BUILD:-build-sanitize}
 jobs=${JOBS:-2}
 start=$(date +%s)
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -g1" \
-  -DSHADETOOL_SANITIZE=ON -DSHADETOOL_BUILD_TESTS=ON -DSHADETOOL_BUILD_BENCH=OFF
+  -DSHADETOOL_SANITIZE=ON -DSHADETOOL_BUILD_TESTS=ON -DSHADETOOL_BUILD_BENCH=OFF -DSHADETOOL_PYTHON=OFF
 cmake --build "$build" -j "$jobs"
 built=$(date +%s)
 # Any report stops the program with a non-zero status (the CMake option also passes

@@ -70,23 +70,32 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           shadetool::require_finite_positions(mesh, input);
           // Normals pass through to the output: none may carry NaN or Inf into it.
           shadetool::require_finite_normals(mesh, input, "fix them first (`shadetool normals --recompute` or `shadetool repair`)");
-          const shadetool::VisibilityScene scene(mesh);
           shadetool::AmbientOcclusion ao;
-          if (per_face) {
-            ao = shadetool::ambient_occlusion_per_face(scene, mesh, options);
-          } else if (mesh.has_vertex_normals()) {
-            const std::size_t invalid = shadetool::count_invalid_normals(mesh.vertex_normals);
-            if (invalid > 0)
-              throw shadetool::Error(shadetool::located(
-                  input, 0,
-                  fmt::format("{} of {} vertex normals are invalid (NaN, Inf or zero length); they give the "
-                              "hemisphere's axis: use `shadetool normals --recompute` first",
-                              invalid, mesh.num_vertices())));
-            ao = shadetool::ambient_occlusion_per_vertex(scene, mesh, mesh.vertex_normals, options);
-          } else {
-            // No normals given: the library's angle-weighted vertex normals (not written out).
-            ao = shadetool::ambient_occlusion_per_vertex(scene, mesh, shadetool::vertex_normals(mesh).normals, options);
-            r.stats["normals"] = "computed (angle-weighted)";
+          shadetool::VisibilitySceneStats s;
+          {
+            // The normals (when computed), the BVH and its buffers live in this block only: they are
+            // freed before the outputs are made (peak memory, bench/visibility/results.md).
+            std::vector<double> computed;
+            if (!per_face && mesh.has_vertex_normals()) {
+              const std::size_t invalid = shadetool::count_invalid_normals(mesh.vertex_normals);
+              if (invalid > 0)
+                throw shadetool::Error(shadetool::located(
+                    input, 0,
+                    fmt::format("{} of {} vertex normals are invalid (NaN, Inf or zero length); they give the "
+                                "hemisphere's axis: use `shadetool normals --recompute` first",
+                                invalid, mesh.num_vertices())));
+            } else if (!per_face) {
+              // No normals given: the library's angle-weighted vertex normals (not written out).
+              computed = shadetool::vertex_normals(mesh).normals;
+              r.stats["normals"] = "computed (angle-weighted)";
+            }
+            const shadetool::VisibilityScene scene(mesh);
+            if (per_face)
+              ao = shadetool::ambient_occlusion_per_face(scene, mesh, options);
+            else
+              ao = shadetool::ambient_occlusion_per_vertex(
+                  scene, mesh, mesh.has_vertex_normals() ? mesh.vertex_normals : computed, options);
+            s = scene.stats();
           }
           const char* what = per_face ? "face" : "vertex";
           if (colors) {
@@ -100,7 +109,6 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
               r.notes.push_back(fmt::format("the input's {} quality replaced by occlusion", what));
             (per_face ? mesh.face_quality : mesh.vertex_quality) = ao.open_fraction;
           }
-          const shadetool::VisibilitySceneStats& s = scene.stats();
           if (s.degenerate_faces > 0)
             r.notes.push_back(fmt::format("{} degenerate faces (repeated index or zero area) cast no shadow", s.degenerate_faces));
           if (ao.skipped > 0)
@@ -119,6 +127,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           r.stats["bvh_triangles"] = s.triangles;
           r.stats["bvh_bytes"] = s.bvh_bytes;
           r.stats["bvh_buffer_bytes"] = s.buffer_bytes;
+          r.stats["bvh_indices"] = s.shared_indices ? "shared" : "copied";
           r.stats["bvh_build_ms"] = s.build_ms;
           r.stats["degenerate_faces"] = s.degenerate_faces;
         },

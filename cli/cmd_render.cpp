@@ -32,6 +32,8 @@ struct RenderCliOptions {
   std::string space = "auto";
   bool hdr = false;
   int threads = 0;
+  bool shadows = false;
+  std::uint32_t shadow_samples = 16;
 };
 
 // The rendered picture as the image the driver writes: linear float for PFM, else 8-bit sRGB.
@@ -97,6 +99,17 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
   sub->add_flag("--hdr", opt.hdr, "Write a float image (PFM, linear, unclamped) instead of an 8-bit sRGB PNG");
   sub->add_option("--threads", opt.threads, "Threads for the tiles of one image (default: all cores)")
       ->check(CLI::Range(0, 1024));
+  auto* shadows_flag = sub->add_flag(
+      "--shadows", opt.shadows,
+      "Shadows: multiply each light's diffuse and specular terms by its visibility from the shaded point (one ray "
+      "for directional, point and spot lights; --shadow-samples rays for area and sky lights), as bake-lighting "
+      "--shadows");
+  sub->add_option("--shadow-samples", opt.shadow_samples,
+                  "With --shadows: rays per shaded point per area or sky light (default 16; --samples is taken: "
+                  "samples per pixel)")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->needs(shadows_flag)
+      ->type_name("N");
 
   return [] {
     if (opt.hdr) {
@@ -128,6 +141,8 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
                         : opt.space == "object" ? shadetool::ShadingSpace::Object
                                                 : shadetool::ShadingSpace::Auto;
     ro.threads = opt.threads;
+    ro.lighting.shadows.enabled = opt.shadows;
+    ro.lighting.shadows.samples = opt.shadow_samples;
     if (ro.width < 1 || ro.height < 1 || ro.width > shadetool::kMaxImageSide || ro.height > shadetool::kMaxImageSide)
       throw shadetool::Error("--size " + std::to_string(ro.width) + "," + std::to_string(ro.height) +
                              ": each side must be 1.." + std::to_string(shadetool::kMaxImageSide) + " pixels");
@@ -158,6 +173,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       r.stats["degenerate_faces"] = s.faces_degenerate;
       r.stats["near_clipped_triangles"] = s.triangles_near_clipped;
       r.stats["covered_samples"] = s.samples_covered;
+      if (ro.lighting.shadows.enabled) r.stats["shadows"] = "on";
     }, OutputKind::Image);
   };
 });

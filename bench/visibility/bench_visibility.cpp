@@ -1,7 +1,7 @@
 // bench_visibility.cpp: ambient occlusion time against error on a concave mesh, and the limit set
 // by Embree itself.
 //
-//   bench_visibility MESH.ply [--points K] [--runs R] [--full-n N] [--csv FILE]
+//   bench_visibility MESH.ply [--points K] [--runs R] [--full-n N] [--csv FILE] [--export FILE]
 //
 // 1. Error against time: K vertices spread over the mesh (every V/K-th), open fraction for
 //    N = 4 .. 1024 through ambient_occlusion_at_points (ids = vertex ids, so the same rays as the
@@ -13,6 +13,12 @@
 //    tbb::parallel_for grain. The hit counts must agree (same rays), else the program fails.
 // 3. The whole mesh per vertex at N = full-n, and the BVH's bytes against the mesh's arrays.
 // Times are medians over R runs, the cases taken round-robin.
+// 4. --export FILE: what the other programs' anchors need to meet the same mesh and points
+//    (anchor_open3d.py, anchor_blender.py): little-endian, in this order: uint64 V, T, K; float32
+//    V x 3 vertices in the BVH's frame (visibility_scene.h: centred, power-of-two scaled, the very
+//    floats Embree holds); uint32 T x 3 triangles; uint64 K vertex ids of the points; float64 K x 3
+//    their unit normals (angle-weighted vertex normals); float32 K reference open fractions
+//    (4096 samples, unlimited distance).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,6 +27,8 @@
 #include <cstring>
 #include <string>
 #include <vector>
+
+#include <fstream>
 
 #include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
@@ -104,13 +112,14 @@ int main(int argc, char** argv) {
   std::size_t points = 4000;
   int runs = 5;
   std::uint32_t full_n = 64;
-  std::string csv;
+  std::string csv, export_path;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--points") points = std::size_t(std::atol(argv[i + 1]));
     else if (a == "--runs") runs = std::atoi(argv[i + 1]);
     else if (a == "--full-n") full_n = std::uint32_t(std::atoi(argv[i + 1]));
     else if (a == "--csv") csv = argv[i + 1];
+    else if (a == "--export") export_path = argv[i + 1];
   }
   const Mesh mesh = read_mesh(argv[1]);
   const double arrays = double(mesh.positions.size() * 8 + mesh.corner_vertex.size() * 4 + mesh.face_start.size() * 4);
@@ -140,6 +149,22 @@ int main(int argc, char** argv) {
   std::printf("reference: %zu points x 4096 samples (seed 1) in %.0f ms\n\n", K, now_ms() - t0);
 
   BareScene bare(mesh, scene);
+  if (!export_path.empty()) {
+    std::ofstream f(export_path, std::ios::binary);
+    const std::uint64_t counts[3] = {mesh.num_vertices(), bare.triangles.size() / 3, K};
+    f.write(reinterpret_cast<const char*>(counts), sizeof counts);
+    f.write(reinterpret_cast<const char*>(bare.vertices.data()), std::streamsize(12 * mesh.num_vertices()));
+    f.write(reinterpret_cast<const char*>(bare.triangles.data()), std::streamsize(4 * bare.triangles.size()));
+    f.write(reinterpret_cast<const char*>(ids.data()), std::streamsize(8 * K));
+    std::vector<double> unit(3 * K);
+    for (std::size_t i = 0; i < K; ++i) set3(unit, i, normalized_or(get3(N, i), Vec3d{0, 0, 1}));
+    f.write(reinterpret_cast<const char*>(unit.data()), std::streamsize(8 * unit.size()));
+    f.write(reinterpret_cast<const char*>(reference.open_fraction.data()), std::streamsize(4 * K));
+    if (!f) {
+      std::fprintf(stderr, "bench_visibility: cannot write %s\n", export_path.c_str());
+      return 1;
+    }
+  }
   FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
   if (out) std::fprintf(out, "samples,rms_error,shadetool_ms,embree_ms,ratio,us_per_vertex,mrays_per_s\n");
   std::printf("| N | RMS error | shadetool ms | bare rtcOccluded1 ms | ratio | us / vertex | Mrays/s |\n|---|---|---|---|---|---|---|\n");

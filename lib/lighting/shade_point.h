@@ -39,5 +39,12 @@ PointLighting prepare_point_lighting(const Scene& scene, std::optional<ShadingMo
 Vec3d shade_point(const PointLighting& lighting, const Vec3d& position_world, const Vec3d& normal_world,
                   ShadeCounters* counters = nullptr);
 
+// With shadows: visibility is this point's row of light_visibility.h's output for lighting.plan
+// (2 values per kept light: its visible fraction, then a sky's ground's), multiplying each light's
+// diffuse and specular terms as shade_points' ShadeOptions::visibility does. All ones give
+// shade_point's bits.
+Vec3d shade_point_shadowed(const PointLighting& lighting, const Vec3d& position_world, const Vec3d& normal_world,
+                           const double* visibility, ShadeCounters* counters = nullptr);
+
 }  // namespace shadetool
 #pragma GCC visibility pop

@@ -19,11 +19,11 @@ ShadeOptions shade_options(const RenderLightingOptions& options) {
 }  // namespace
 
 std::vector<double> baked_vertex_colors(const Mesh& mesh, const Scene& scene, const RenderLightingOptions& options) {
-  return bake_lighting(mesh, scene, ShadingFrequency::PerVertex, shade_options(options)).rgb;
+  return bake_lighting(mesh, scene, ShadingFrequency::PerVertex, shade_options(options), options.shadows).rgb;
 }
 
 std::vector<double> baked_face_colors(const Mesh& mesh, const Scene& scene, const RenderLightingOptions& options) {
-  return bake_lighting(mesh, scene, ShadingFrequency::PerFace, shade_options(options)).rgb;
+  return bake_lighting(mesh, scene, ShadingFrequency::PerFace, shade_options(options), options.shadows).rgb;
 }
 
 // The same choice as bake_lighting.cpp's PerVertex branch (kept in step with it by
@@ -55,8 +55,27 @@ std::vector<double> shading_vertex_normals(const Mesh& mesh) {
   return vertex_normals(mesh, Weighting::Angle, Precision::Double).normals;
 }
 
-PointShader::PointShader(const Scene& scene, const RenderLightingOptions& options)
-    : lighting_(prepare_point_lighting(scene, options.model)) {}
+PointShader::PointShader(const Scene& scene, const RenderLightingOptions& options, const Mesh& mesh,
+                         const std::vector<double>& positions_world)
+    : lighting_(prepare_point_lighting(scene, options.model)), scene_(&scene), shadow_samples_(options.shadows.samples) {
+  if (!options.shadows.enabled) return;
+  world_.positions = positions_world;
+  world_.face_start = mesh.face_start;
+  world_.corner_vertex = mesh.corner_vertex;
+  bvh_ = std::make_unique<VisibilityScene>(world_);
+}
+
+PointShader::~PointShader() = default;
+
+std::vector<double> PointShader::visibility(const std::vector<double>& points_world,
+                                            const std::vector<double>& normals_world,
+                                            const std::vector<std::uint64_t>& ids) const {
+  return light_visibility(*bvh_, *scene_, lighting_.plan, points_world, normals_world, ids, shadow_samples_);
+}
+
+std::size_t PointShader::bvh_bytes() const {
+  return bvh_ ? bvh_->stats().bvh_bytes + bvh_->stats().buffer_bytes : 0;
+}
 
 Vec3d scene_eye_world(const Scene& scene) { return eye_world(scene); }
 

@@ -10,7 +10,12 @@
 //                         angle-weighted, double), #V by 3 object space, so that Phong at a vertex
 //                         equals the baked colour there
 //   PointShader           Phong: lighting/shade_point.h (the lighting equation at one world-space
-//                         point with a world-space normal; every light kind lighting supports)
+//                         point with a world-space normal; every light kind lighting supports);
+//                         with shadows, lighting/light_visibility.h over a BVH of the mesh in world
+//                         space (lib/visibility), the visibility multiplying each light's terms
+//   shadows (all three)   RenderLightingOptions::shadows: flat and Gouraud take bake_lighting's own
+//                         shadowed colours (seeds: face or vertex ids), Phong one visibility row
+//                         per sample (seeds: the sample's index in the image)
 //   encode_srgb_8bit      lighting/encode_color.h's sRGB curve and 8-bit quantisation
 //
 // Precision: double, as lib/lighting. PointShader::shade is const and thread-safe (counters are
@@ -18,10 +23,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/lighting/light_visibility.h>
 #include <shadetool/lighting/scene.h>
 #include <shadetool/lighting/shade_point.h>
 #include <shadetool/lighting/shade_points.h>
@@ -33,6 +40,7 @@ namespace shadetool {
 struct RenderLightingOptions {
   std::optional<ShadingModel> model;        // overrides the scene's (--model)
   ShadingSpace space = ShadingSpace::Auto;  // where bake_lighting evaluates (--space); same colours
+  ShadowOptions shadows;                    // --shadows, --shadow-samples (area and sky lights)
 };
 
 std::vector<double> baked_vertex_colors(const Mesh& mesh, const Scene& scene, const RenderLightingOptions& options);
@@ -41,14 +49,33 @@ std::vector<double> shading_vertex_normals(const Mesh& mesh);
 
 class PointShader {
  public:
-  PointShader(const Scene& scene, const RenderLightingOptions& options);
+  // With options.shadows.enabled, mesh's faces at positions_world (#V by 3) go into a BVH.
+  PointShader(const Scene& scene, const RenderLightingOptions& options, const Mesh& mesh,
+              const std::vector<double>& positions_world);
+  ~PointShader();
+
   // The linear colour at p_world with normal n_world (any length; zero: ambient terms only).
   Vec3d shade(const Vec3d& p_world, const Vec3d& n_world, ShadeCounters& count) const {
     return shade_point(lighting_, p_world, n_world, &count);
   }
 
+  // Shadows: whether they are on, the visibility rows of points (world space, #P by 3 each; ids
+  // the seeds), and the colour with one row (row_size() values) multiplying the lights' terms.
+  bool casts_shadows() const { return bvh_ != nullptr; }
+  std::size_t row_size() const { return 2 * lighting_.plan.lights.size(); }
+  std::vector<double> visibility(const std::vector<double>& points_world, const std::vector<double>& normals_world,
+                                 const std::vector<std::uint64_t>& ids) const;
+  Vec3d shade(const Vec3d& p_world, const Vec3d& n_world, const double* visibility_row, ShadeCounters& count) const {
+    return shade_point_shadowed(lighting_, p_world, n_world, visibility_row, &count);
+  }
+  std::size_t bvh_bytes() const;
+
  private:
   PointLighting lighting_;  // world space: lights and eye in world coordinates
+  const Scene* scene_ = nullptr;
+  std::uint32_t shadow_samples_ = 16;
+  Mesh world_;                              // the mesh's faces at world positions (shadows only)
+  std::unique_ptr<VisibilityScene> bvh_;    // built from world_ (shares its corner array)
 };
 
 // The eye in world space (lighting/scene.h eye_world).

@@ -252,7 +252,7 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
       const Mat3d to_world = signed_cofactor(scene.world_from_object.A);
       surface.normals_world.resize(3 * V);
       for (std::size_t v = 0; v < V; ++v) set3(surface.normals_world, v, transform_normal(to_world, Normal3d(get3(normals_object, v))));
-      shader = std::make_unique<PointShader>(scene, options.lighting);
+      shader = std::make_unique<PointShader>(scene, options.lighting, mesh, surface.positions_world);
       surface.shader = shader.get();
       break;
     }

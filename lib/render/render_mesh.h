@@ -29,6 +29,12 @@
 //      so no diagonal seam shows and the image does not depend on the diagonal fanned along;
 //   5. box filter: each pixel is the mean of its N x N samples (strata centres, background where
 //      no triangle is).
+// Shadows (options.lighting.shadows, render/lighting_adapter.h): flat and Gouraud take
+// bake-lighting's shadowed colours; Phong casts, per visible sample, lighting/light_visibility.h's
+// rays from its world point into a BVH of the mesh in world space (one per directional, point or
+// spot light; shadows.samples per area or sky light), seeded by the sample's index in the image;
+// each tile asks for its samples' visibility in one batch. Each light's diffuse and specular terms
+// are multiplied by its visibility; with nothing in the way the image is bitwise the unshadowed one.
 //
 // Determinism: every tile reads the triangles in index order and writes only its own pixels, so
 // the image is bitwise the same for any number of threads.

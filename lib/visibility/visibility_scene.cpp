@@ -69,7 +69,8 @@ VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl
     }
   }
 
-  // 3. Float buffers: every vertex (so vertex ids index them directly), kept faces fanned.
+  // 3. Buffers: float vertices, every vertex (so vertex ids index them directly); the kept faces'
+  // triangles.
   Impl& s = *impl_;
   const std::size_t nv = mesh.num_vertices();
   s.vertices.assign(3 * nv + 1, 0.0f);
@@ -82,16 +83,26 @@ VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl
     s.vertices[3 * v + 1] = l.y;
     s.vertices[3 * v + 2] = l.z;
   }
-  s.triangles.reserve(3 * (corners - 2 * kept.size()));
-  for (const std::uint32_t f : kept) {
-    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-    for (std::uint32_t c = b + 1; c + 1 < e; ++c) {
-      s.triangles.push_back(mesh.corner_vertex[b]);
-      s.triangles.push_back(mesh.corner_vertex[c]);
-      s.triangles.push_back(mesh.corner_vertex[c + 1]);
+  // Index buffer: when every face is a kept triangle, the mesh's corner array already is Embree's
+  // UINT3 layout and is shared (no copy: 12 B per triangle saved); otherwise (a degenerate face
+  // to leave out, a polygon to fan) a filtered, fanned copy owned here.
+  const bool all_triangles = kept.size() == mesh.num_faces() && corners == 3 * kept.size();
+  const std::uint32_t* indices = mesh.corner_vertex.data();
+  stats_.triangles = kept.size();
+  stats_.shared_indices = all_triangles;
+  if (!all_triangles) {
+    s.triangles.reserve(3 * (corners - 2 * kept.size()));
+    for (const std::uint32_t f : kept) {
+      const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
+      for (std::uint32_t c = b + 1; c + 1 < e; ++c) {
+        s.triangles.push_back(mesh.corner_vertex[b]);
+        s.triangles.push_back(mesh.corner_vertex[c]);
+        s.triangles.push_back(mesh.corner_vertex[c + 1]);
+      }
     }
+    indices = s.triangles.data();
+    stats_.triangles = s.triangles.size() / 3;
   }
-  stats_.triangles = s.triangles.size() / 3;
   stats_.buffer_bytes = s.vertices.size() * sizeof(float) + s.triangles.size() * sizeof(std::uint32_t);
 
   // 4. Embree: one device per scene (its memory monitor then counts this scene alone).
@@ -104,7 +115,7 @@ VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl
     RTCGeometry g = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, s.vertices.data(), 0,
                                3 * sizeof(float), nv);
-    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, s.triangles.data(), 0,
+    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices, 0,
                                3 * sizeof(std::uint32_t), stats_.triangles);
     rtcCommitGeometry(g);
     rtcAttachGeometry(s.scene, g);

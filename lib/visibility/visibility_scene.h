@@ -1,7 +1,8 @@
 // visibility_scene.h: one ray-casting BVH per mesh (Intel Embree 3), built once and shared by every
 // thread that asks what a ray from a point can see (ambient_occlusion.h, shadow_visibility.h).
 //
-// Inputs:  mesh  positions #V by 3, faces (triangles or polygons; non-manifold is fine)
+// Inputs:  mesh  positions #V by 3, faces (triangles or polygons; non-manifold is fine); must
+//                outlive the scene with its corner_vertex unchanged (see Memory)
 // Builds:  an Embree triangle scene of the mesh's non-degenerate faces. Degenerate faces by the
 //          library's one rule, geometry/degenerate_face.h (fewer than 3 corners, repeated index,
 //          area vector zero to rounding, non-finite corner) take no part; polygons are fanned (c0, c_i, c_{i+1}) for the BVH only, the mesh is not
@@ -13,8 +14,12 @@
 //          puts the mesh where ray_offset.h's constants are designed to work (extent about 1), so
 //          a 1e-3 mesh and a 1e6 mesh behave alike. Precision of the geometry: 2^-24 of the
 //          mesh's half extent. A vertex's local point is its BVH vertex exactly (same rounding).
-// Memory:  the float vertex and index buffers (owned here, shared with Embree: 12 B per vertex,
-//          12 B per triangle) and Embree's BVH in its compact layout (RTC_SCENE_FLAG_COMPACT, about
+// Memory:  the float vertex buffer (owned here, shared with Embree: 12 B per vertex), the index
+//          buffer and Embree's BVH. When every face is a non-degenerate triangle the index buffer
+//          IS the mesh's corner_vertex array (shared with Embree, not copied: `shared_indices`),
+//          so the mesh must outlive the scene and its corner_vertex must not change while the
+//          scene exists; otherwise the kept faces, fanned, are copied here (12 B per triangle).
+//          Then Embree's BVH in its compact layout (RTC_SCENE_FLAG_COMPACT, about
 //          36 B per triangle; bench/visibility/results.md), built in robust mode
 //          (RTC_SCENE_FLAG_ROBUST: watertight, no ray leaks between triangles sharing an edge);
 //          bvh_bytes counts what Embree allocated through the device's memory monitor.
@@ -38,13 +43,15 @@ struct VisibilitySceneStats {
   std::size_t degenerate_faces = 0;     // left out: too few corners, repeated index or zero area
   std::size_t nonfinite_faces = 0;      // left out: a NaN or Inf corner
   std::size_t bvh_bytes = 0;            // Embree's allocations for the scene (net, after build)
-  std::size_t buffer_bytes = 0;         // float vertices and uint32 triangle indices
+  std::size_t buffer_bytes = 0;         // owned here: float vertices, and indices when copied
+  bool shared_indices = false;          // the mesh's corner_vertex is the index buffer (no copy)
   double build_ms = 0;
 };
 
 class VisibilityScene {
  public:
   explicit VisibilityScene(const Mesh& mesh);
+  explicit VisibilityScene(Mesh&&) = delete;  // the scene may share the mesh's corner array: no temporaries
   ~VisibilityScene();
   VisibilityScene(VisibilityScene&&) noexcept;
   VisibilityScene& operator=(VisibilityScene&&) noexcept;

@@ -1,6 +1,7 @@
 // shadetool render from the command line: outputs, exit codes, no partial files.
 #include <catch2/catch.hpp>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -78,4 +79,32 @@ TEST_CASE("render: bad input is one line, exit 1, and no output file", "[render]
   CHECK(r.code == 2);
   r = run_shadetool("render " + torus + " -o " + out + " --scene " + studio + " --samples 0");
   CHECK(r.code == 2);
+}
+
+TEST_CASE("render --shadows: shadowed pixels, --shadow-samples only with --shadows", "[render][cli][shadows]") {
+  const fs::path d = scratch("shadows");
+  const std::string knot = src + "/data/torus_knot.ply", sun = src + "/data/scenes/sun.json";
+  const auto plain = run_shadetool("render " + knot + " -o " + (d / "a.pfm").string() + " --scene " + sun + " --hdr --size 64,48");
+  const auto shadowed = run_shadetool("render " + knot + " -o " + (d / "b.pfm").string() + " --scene " + sun +
+                                      " --hdr --size 64,48 --shadows --stats");
+  REQUIRE(plain.code == 0);
+  REQUIRE(shadowed.code == 0);
+  CHECK(shadowed.err.find("shadows=on") != std::string::npos);
+  // The knot's strands shade each other under the sun: some pixels darker, none brighter.
+  const std::string a = shadetool_test::read_file((d / "a.pfm").string()), b = shadetool_test::read_file((d / "b.pfm").string());
+  REQUIRE(a.size() == b.size());
+  const std::size_t header = std::string("PF\n64 48\n-1.0\n").size();
+  std::size_t darker = 0, brighter = 0;
+  for (std::size_t i = header; i + 4 <= a.size(); i += 4) {
+    float x, y;
+    std::memcpy(&x, a.data() + i, 4);
+    std::memcpy(&y, b.data() + i, 4);
+    darker += y < x;
+    brighter += y > x;
+  }
+  CHECK(darker > 0);
+  CHECK(brighter == 0);
+  const auto r = run_shadetool("render " + knot + " -o " + (d / "c.png").string() + " --scene " + sun + " --shadow-samples 4");
+  CHECK(r.code == 2);
+  CHECK_FALSE(fs::exists(d / "c.png"));
 }

@@ -279,5 +279,33 @@ TEST_CASE("The BVH's size is reported and bounded by the mesh's arrays", "[visib
   const std::size_t arrays = am.mesh.positions.size() * 8 + am.mesh.corner_vertex.size() * 4;
   REQUIRE(scene.stats().bvh_bytes > 0);
   REQUIRE(scene.stats().bvh_bytes + scene.stats().buffer_bytes < 3 * arrays);
-  REQUIRE(scene.stats().buffer_bytes == (3 * am.mesh.num_vertices() + 1) * 4 + am.mesh.num_faces() * 12);
+  // All triangles, none degenerate: the mesh's corner array is Embree's index buffer, not copied.
+  REQUIRE(scene.stats().shared_indices);
+  REQUIRE(scene.stats().buffer_bytes == (3 * am.mesh.num_vertices() + 1) * 4);
+}
+
+TEST_CASE("A degenerate face makes a filtered index copy that gives the shared buffer's bits", "[visibility][ao]") {
+  const AnalyticMesh am = torus(40, 20);
+  Mesh with_degenerate = am.mesh;
+  // One face with a repeated index, in the middle of the face list: it must take no part.
+  const std::size_t middle = with_degenerate.num_faces() / 2;
+  const std::uint32_t c = with_degenerate.face_start[middle];
+  with_degenerate.corner_vertex[c + 2] = with_degenerate.corner_vertex[c + 1];
+  Mesh without = with_degenerate;  // the same mesh with that face removed: shares its indices
+  without.corner_vertex.erase(without.corner_vertex.begin() + c, without.corner_vertex.begin() + c + 3);
+  without.face_start.pop_back();
+  const VisibilityScene copied(with_degenerate), shared(without);
+  REQUIRE_FALSE(copied.stats().shared_indices);
+  REQUIRE(shared.stats().shared_indices);
+  REQUIRE(copied.stats().degenerate_faces == 1);
+  REQUIRE(copied.stats().triangles == shared.stats().triangles);
+  REQUIRE(copied.stats().buffer_bytes == shared.stats().buffer_bytes + 12 * shared.stats().triangles);
+  AmbientOcclusionOptions o;
+  o.samples = 64;
+  const std::vector<double> n = vertex_normals(without).normals;
+  const AmbientOcclusion a = ambient_occlusion_per_vertex(copied, with_degenerate, n, o);
+  const AmbientOcclusion b = ambient_occlusion_per_vertex(shared, without, n, o);
+  REQUIRE(a.hits > 0);
+  REQUIRE(a.hits == b.hits);
+  REQUIRE(std::memcmp(a.open_fraction.data(), b.open_fraction.data(), 4 * a.open_fraction.size()) == 0);
 }

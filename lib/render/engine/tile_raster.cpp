@@ -87,6 +87,25 @@ VertexWeights sample_weights(const RasterInput& in, const ScreenTriangle& t, con
   return vertex_weights(*in.surface, t, ob, fallbacks);
 }
 
+// Phong's world point and unit normal at a sample. Position and normal from the same weights: on a
+// quad the point of the bilinear patch, so the quad's look does not depend on the diagonal it was
+// fanned along.
+void phong_point(const RasterInput& in, const ScreenTriangle& t, const double lambda[3], std::size_t& fallbacks,
+                 Vec3d& p, Vec3d& n) {
+  const SurfaceInputs& s = *in.surface;
+  const VertexWeights w = sample_weights(in, t, lambda, fallbacks);
+  p = {0, 0, 0}, n = {0, 0, 0};
+  for (int k = 0; k < w.count; ++k) {
+    p += get3(s.positions_world, w.vertex[k]) * w.weight[k];
+    n += get3(s.normals_world, w.vertex[k]) * w.weight[k];
+  }
+  // Renormalised. Vertex normals are finite (checked on input) and usually unit, so the plain
+  // squared length is safe; outside [2^-1000, 2^1000] (opposite normals cancelling, absurd
+  // input lengths) the normal counts as zero and the equation keeps only the ambient terms.
+  const double n2 = dot(n, n);
+  n = n2 > 0x1p-1000 && n2 <= 0x1p1000 ? n * (1.0 / std::sqrt(n2)) : Vec3d{0, 0, 0};  // divisor checked
+}
+
 Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double lambda[3], ShadeCounters& counters,
                    std::size_t& fallbacks) {
   const SurfaceInputs& s = *in.surface;
@@ -100,19 +119,8 @@ Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double 
       return c;
     }
     case RenderShading::Phong: {
-      // Position and normal from the same weights: on a quad the point of the bilinear patch, so
-      // the quad's look does not depend on the diagonal it was fanned along.
-      const VertexWeights w = sample_weights(in, t, lambda, fallbacks);
-      Vec3d p{0, 0, 0}, n{0, 0, 0};
-      for (int k = 0; k < w.count; ++k) {
-        p += get3(s.positions_world, w.vertex[k]) * w.weight[k];
-        n += get3(s.normals_world, w.vertex[k]) * w.weight[k];
-      }
-      // Renormalised. Vertex normals are finite (checked on input) and usually unit, so the plain
-      // squared length is safe; outside [2^-1000, 2^1000] (opposite normals cancelling, absurd
-      // input lengths) the normal counts as zero and the equation keeps only the ambient terms.
-      const double n2 = dot(n, n);
-      n = n2 > 0x1p-1000 && n2 <= 0x1p1000 ? n * (1.0 / std::sqrt(n2)) : Vec3d{0, 0, 0};  // divisor checked
+      Vec3d p, n;
+      phong_point(in, t, lambda, fallbacks, p, n);
       return s.shader->shade(p, n, counters);
     }
   }
@@ -199,9 +207,33 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
     }
   }
 
-  // Shade the visible samples and box-filter them into pixels.
+  // Shade the visible samples and box-filter them into pixels. Phong with shadows first gathers the
+  // tile's visible points and asks for their visibility in one batch (seeds: the sample's index in
+  // the whole image, so the bits do not depend on tiles or threads), then shades them in the same
+  // order.
   TileResult r;
   ShadeCounters counters;
+  const bool shadowed = in.surface->shading == RenderShading::Phong && in.surface->shader->casts_shadows();
+  std::vector<double> points, normals, visibility;
+  std::vector<std::uint64_t> ids;
+  if (shadowed) {
+    for (int py = py0; py < py1; ++py)
+      for (int pxl = px0; pxl < px1; ++pxl)
+        for (int j = 0; j < N; ++j)
+          for (int i = 0; i < N; ++i) {
+            const std::size_t s = std::size_t((py - py0) * N + j) * std::size_t(tw) + std::size_t((pxl - px0) * N + i);
+            if (owner[s] == nullptr) continue;
+            const double lambda[3] = {1.0 - lambda1[s] - lambda2[s], lambda1[s], lambda2[s]};
+            Vec3d p, n;
+            phong_point(in, *owner[s], lambda, r.fallbacks, p, n);
+            points.insert(points.end(), {p.x, p.y, p.z});
+            normals.insert(normals.end(), {n.x, n.y, n.z});
+            ids.push_back(std::uint64_t(py * N + j) * full_width + std::uint64_t(pxl * N + i));
+          }
+    visibility = in.surface->shader->visibility(points, normals, ids);
+  }
+  const std::size_t row = shadowed ? in.surface->shader->row_size() : 0;
+  std::size_t next = 0;  // shadowed: the next gathered point
   const double inv_samples = 1.0 / double(N * N);  // N >= 1
   for (int py = py0; py < py1; ++py) {
     for (int pxl = px0; pxl < px1; ++pxl) {
@@ -214,6 +246,12 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
             continue;
           }
           ++r.covered;
+          if (shadowed) {
+            sum += in.surface->shader->shade(get3(points, next), get3(normals, next), visibility.data() + row * next,
+                                             counters);
+            ++next;
+            continue;
+          }
           const double lambda[3] = {1.0 - lambda1[s] - lambda2[s], lambda1[s], lambda2[s]};
           sum += shade_sample(in, *owner[s], lambda, counters, r.fallbacks);
         }

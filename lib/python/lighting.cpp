@@ -1,0 +1,245 @@
+// lighting.cpp: bake_lighting, occlusion and render on NumPy arrays: the library's
+// lighting/bake_lighting.h, visibility/ambient_occlusion.h and render/render_mesh.h, with the
+// input checks of their subcommands (cli/cmd_bake_lighting.cpp, cmd_occlusion.cpp, cmd_render.cpp)
+// and the GIL released.
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include <shadetool/core/validate.h>
+#include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/lighting/read_scene.h>
+#include <shadetool/normals/invalid_normals.h>
+#include <shadetool/normals/vertex_normals.h>
+#include <shadetool/render/lighting_adapter.h>
+#include <shadetool/render/render_mesh.h>
+#include <shadetool/visibility/ambient_occlusion.h>
+#include <shadetool/visibility/visibility_scene.h>
+
+#include "arrays.h"
+#include "bindings.h"
+
+namespace shadetool_python {
+namespace {
+
+namespace fs = std::filesystem;
+using shadetool::Mesh;
+
+// The mesh to light: shared when no N is given (a shadetool.Mesh's own normals count), else a
+// mesh of its own with N as its vertex normals.
+std::shared_ptr<const Mesh> lit_mesh(py::handle V, py::handle F, py::handle N, const std::string& fn) {
+  if (N.is_none()) return mesh_input(V, F, fn).mesh;
+  if (as_mesh(V)) throw py::value_error(fn + ": N must be None when the first argument is a shadetool.Mesh (set Mesh.vertex_normals)");
+  FaceLayout layout;
+  auto mesh = std::make_shared<Mesh>(owned_mesh(V, F, fn, layout));
+  mesh->vertex_normals = read_double_rows(N, mesh->num_vertices(), 3, fn + ": N");
+  return mesh;
+}
+
+// A scene dict (the JSON schema of man/shadetool-bake-lighting.1) or a path to a JSON file.
+shadetool::Scene scene_of(py::handle scene, const std::string& fn) {
+  if (scene.is_none()) throw py::value_error(fn + ": scene is required (a dict in the scene JSON schema, or a path)");
+  if (py::isinstance<py::dict>(scene)) {
+    const std::string text = py::module_::import("json").attr("dumps")(scene).cast<std::string>();
+    return shadetool::parse_scene(text, "scene");
+  }
+  const std::string path = py::module_::import("os").attr("fspath")(scene).cast<std::string>();
+  if (!fs::exists(path)) throw_file_not_found(path, "no such file");
+  return shadetool::read_scene(path);
+}
+
+shadetool::ShadingSpace parse_space(const std::string& s, const std::string& fn) {
+  if (s == "auto") return shadetool::ShadingSpace::Auto;
+  if (s == "world") return shadetool::ShadingSpace::World;
+  if (s == "camera") return shadetool::ShadingSpace::Camera;
+  if (s == "object") return shadetool::ShadingSpace::Object;
+  throw py::value_error(fn + ": space: '" + s + "' is not one of auto, world, camera, object");
+}
+
+std::optional<shadetool::ShadingModel> parse_model(py::handle model, const std::string& fn) {
+  if (model.is_none()) return std::nullopt;
+  const std::string s = model.cast<std::string>();
+  if (s == "lambert") return shadetool::ShadingModel::Lambert;
+  if (s == "phong") return shadetool::ShadingModel::Phong;
+  if (s == "blinn-phong") return shadetool::ShadingModel::BlinnPhong;
+  throw py::value_error(fn + ": model: '" + s + "' is not one of lambert, phong, blinn-phong");
+}
+
+bool parse_per(const std::string& s, const std::string& fn) {
+  if (s == "vertex") return false;
+  if (s == "face") return true;
+  throw py::value_error(fn + ": per: '" + s + "' is not one of vertex, face");
+}
+
+}  // namespace
+
+void init_lighting(py::module_& m) {
+  m.def(
+      "bake_lighting",
+      [](py::object V, py::object F, py::object N, py::object scene_arg, const std::string& per, py::object model,
+         const std::string& space, bool shadows, std::uint32_t samples) {
+        const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "bake_lighting");
+        const shadetool::Scene scene = scene_of(scene_arg, "bake_lighting");
+        const bool per_face = parse_per(per, "bake_lighting");
+        shadetool::ShadeOptions shade;
+        shade.model = parse_model(model, "bake_lighting");
+        shade.space = parse_space(space, "bake_lighting");
+        if (samples < 1 || samples > (1u << 20)) throw py::value_error("bake_lighting: samples must be in [1, 2^20]");
+        shadetool::ShadowOptions shadow;
+        shadow.enabled = shadows;
+        shadow.samples = samples;
+        const auto frequency = per_face ? shadetool::ShadingFrequency::PerFace : shadetool::ShadingFrequency::PerVertex;
+        shadetool::BakeResult baked;
+        {
+          py::gil_scoped_release nogil;
+          shadetool::require_finite_positions(*mesh, "bake_lighting: V");
+          shadetool::require_finite_normals(*mesh, "bake_lighting: N", "recompute them (vertex_normals) or repair first");
+          if (per_face) shadetool::require_faces(*mesh, "bake_lighting: F");
+          else if (mesh->num_faces() == 0 && !mesh->has_vertex_normals() && mesh->num_vertices() > 0)
+            throw shadetool::Error("bake_lighting: no vertex normals and no faces to compute them from");
+          baked = shadetool::bake_lighting(*mesh, scene, frequency, shade, shadow);
+        }
+        std::size_t nonfinite = 0;
+        for (double c : baked.rgb) nonfinite += !std::isfinite(c);
+        if (nonfinite > 0)
+          throw py::value_error("bake_lighting: " + std::to_string(nonfinite) +
+                                " colour values came out NaN or infinite (light positions, intensities or the world map "
+                                "near the limits of double?)");
+        const py::ssize_t rows = py::ssize_t(baked.rgb.size() / 3);
+        return to_numpy(std::move(baked.rgb), {rows, 3});
+      },
+      py::arg("V"), py::arg("F") = py::none(), py::arg("N") = py::none(), py::arg("scene") = py::none(),
+      py::arg("per") = "vertex", py::arg("model") = py::none(), py::arg("space") = "auto", py::arg("shadows") = false,
+      py::arg("samples") = 16,
+      R"doc(bake_lighting(V, F, N, scene, per="vertex", model=None, space="auto", shadows=False, samples=16) -> (rows, 3) float64
+
+Lit colours per vertex (Gouraud) or per face (flat): OpenGL 2.1 fixed-function lighting with the
+library's lighting/bake_lighting.h, the colours `shadetool bake-lighting --hdr` stores (before
+its float rounding): linear RGB, unclamped, float64, (n, 3) per vertex or (m, 3) per face.
+  V, F    (n, 3) float positions, (m, k) integer faces or (indices, offsets); or a shadetool.Mesh
+          (F None) whose own normals are used
+  N       (n, 3) float vertex normals, or None: the mesh's, else angle-weighted vertex normals
+  scene   a dict in the scene JSON schema (man shadetool-bake-lighting: model, material, lights,
+          camera, world_from_object, ...) or a path to a JSON file (FileNotFoundError if missing)
+  per     "vertex" or "face"; model overrides the scene's ("lambert", "phong", "blinn-phong");
+  space   "auto", "world", "camera" or "object" (same colours); shadows: per-light visibility
+          by ray casting (samples rays per area or sky light)
+ValueError: bad arrays, a bad scene (the library's `scene: $.path: what` message), non-finite
+positions or normals.
+)doc");
+
+  m.def(
+      "occlusion",
+      [](py::object V, py::object F, py::object N, std::uint32_t samples, double distance, const std::string& per,
+         std::uint32_t seed) {
+        const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "occlusion");
+        const bool per_face = parse_per(per, "occlusion");
+        if (samples < 1 || samples > (1u << 20)) throw py::value_error("occlusion: samples must be in [1, 2^20]");
+        if (!(distance > 0)) throw py::value_error("occlusion: distance must be > 0 (default: unlimited)");
+        shadetool::AmbientOcclusionOptions options;
+        options.samples = samples;
+        options.max_distance = distance;
+        options.seed = seed;
+        shadetool::AmbientOcclusion ao;
+        {
+          py::gil_scoped_release nogil;
+          shadetool::require_faces(*mesh, "occlusion: F");
+          shadetool::require_finite_positions(*mesh, "occlusion: V");
+          shadetool::require_finite_normals(*mesh, "occlusion: N", "recompute them (vertex_normals) or repair first");
+          const shadetool::VisibilityScene scene(*mesh);
+          if (per_face) {
+            ao = shadetool::ambient_occlusion_per_face(scene, *mesh, options);
+          } else if (mesh->has_vertex_normals()) {
+            const std::size_t invalid = shadetool::count_invalid_normals(mesh->vertex_normals);
+            if (invalid > 0)
+              throw shadetool::Error("occlusion: N: " + std::to_string(invalid) + " of " +
+                                     std::to_string(mesh->num_vertices()) +
+                                     " vertex normals are invalid (NaN, Inf or zero length); they give the hemisphere's axis");
+            ao = shadetool::ambient_occlusion_per_vertex(scene, *mesh, mesh->vertex_normals, options);
+          } else {
+            ao = shadetool::ambient_occlusion_per_vertex(scene, *mesh, shadetool::vertex_normals(*mesh).normals, options);
+          }
+        }
+        const py::ssize_t rows = py::ssize_t(ao.open_fraction.size());
+        return to_numpy(std::move(ao.open_fraction), {rows});
+      },
+      py::arg("V"), py::arg("F") = py::none(), py::arg("N") = py::none(), py::arg("samples") = 64,
+      py::arg("distance") = std::numeric_limits<double>::infinity(), py::arg("per") = "vertex", py::arg("seed") = 0,
+      R"doc(occlusion(V, F, N=None, samples=64, distance=inf, per="vertex", seed=0) -> (rows,) float32
+
+How open the sky is from each vertex (or face): the cosine-weighted fraction of the hemisphere
+about its normal from which a ray leaves without meeting the mesh within `distance`, in [0, 1]
+(1 - ambient occlusion), estimated with `samples` rays (Embree; the library's
+visibility/ambient_occlusion.h, the values `shadetool occlusion` stores). Bitwise the same for any
+thread count and run; the error falls as samples^-3/4.
+  V, F   (n, 3) float positions, (m, k) integer faces or (indices, offsets); or a shadetool.Mesh
+  N      (n, 3) float vertex normals (the hemispheres' axes) or None: angle-weighted normals
+  per    "vertex" -> (n,), "face" -> (m,) (face normal at the face's centroid)
+Points without a usable normal get 1 (no ray cast).
+)doc");
+
+  m.def(
+      "render",
+      [](py::object V, py::object F, py::object N, py::object scene_arg, int width, int height,
+         const std::string& shading, int samples, py::object background, py::object model, const std::string& space,
+         bool hdr, int threads) -> py::object {
+        const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "render");
+        const shadetool::Scene scene = scene_of(scene_arg, "render");
+        shadetool::RenderOptions ro;
+        if (shading == "flat") ro.shading = shadetool::RenderShading::Flat;
+        else if (shading == "gouraud") ro.shading = shadetool::RenderShading::Gouraud;
+        else if (shading == "phong") ro.shading = shadetool::RenderShading::Phong;
+        else throw py::value_error("render: shading: '" + shading + "' is not one of flat, gouraud, phong");
+        if (width < 1 || height < 1 || width > shadetool::kMaxImageSide || height > shadetool::kMaxImageSide)
+          throw py::value_error("render: width and height must be 1.." + std::to_string(shadetool::kMaxImageSide) + " pixels");
+        if (samples < 1 || samples > shadetool::kMaxSamples)
+          throw py::value_error("render: samples must be 1.." + std::to_string(shadetool::kMaxSamples));
+        if (threads < 0 || threads > 1024) throw py::value_error("render: threads must be 0..1024 (0: all cores)");
+        const std::vector<double> bg = read_double_rows(
+            py::module_::import("numpy").attr("asarray")(background, "float64").attr("reshape")(1, 3), 1, 3,
+            "render: background");
+        for (double c : bg)
+          if (!(c >= 0) || !std::isfinite(c)) throw py::value_error("render: background channels must be finite and >= 0");
+        ro.width = width;
+        ro.height = height;
+        ro.samples = samples;
+        ro.background = {bg[0], bg[1], bg[2]};
+        ro.lighting.model = parse_model(model, "render");
+        ro.lighting.space = parse_space(space, "render");
+        ro.threads = threads;
+        shadetool::RenderResult result;
+        {
+          py::gil_scoped_release nogil;
+          shadetool::require_finite_positions(*mesh, "render: V");
+          shadetool::require_finite_normals(*mesh, "render: N", "recompute them (vertex_normals) or repair first");
+          result = shadetool::render_mesh(*mesh, scene, ro, "render: V");
+        }
+        std::size_t nonfinite = 0;
+        for (float c : result.image.rgb) nonfinite += !std::isfinite(c);
+        if (nonfinite > 0)
+          throw py::value_error("render: " + std::to_string(nonfinite) + " colour values came out NaN or infinite");
+        const py::ssize_t h = result.image.height, w = result.image.width;
+        if (hdr) return to_numpy(std::move(result.image.rgb), {h, w, 3});
+        std::vector<std::uint8_t> pixels(result.image.rgb.size());
+        for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = shadetool::encode_srgb_8bit(result.image.rgb[i]);
+        return to_numpy(std::move(pixels), {h, w, 3});
+      },
+      py::arg("V"), py::arg("F") = py::none(), py::arg("N") = py::none(), py::arg("scene") = py::none(),
+      py::arg("width") = 800, py::arg("height") = 600, py::arg("shading") = "phong", py::arg("samples") = 1,
+      py::arg("background") = py::make_tuple(0.0, 0.0, 0.0), py::arg("model") = py::none(), py::arg("space") = "auto",
+      py::arg("hdr") = false, py::arg("threads") = 0,
+      R"doc(render(V, F, N, scene, width=800, height=600, shading="phong", samples=1, background=(0, 0, 0), model=None, space="auto", hdr=False, threads=0) -> (height, width, 3) array
+
+Renders the mesh with bake_lighting's lighting (the library's render/render_mesh.h, what
+`shadetool render` writes): row 0 at the top.
+  hdr=False: uint8 sRGB-encoded pixels (the PNG's bytes); hdr=True: float32 linear, unclamped
+  (the PFM's values, top row first)
+  shading  "flat" (face normals), "gouraud" (baked vertex colours) or "phong" (per sample)
+  samples  N: N x N samples per pixel, box-filtered (1..16); background linear RGB (3 floats >= 0)
+  V, F, N, scene, model, space as in bake_lighting; scene's camera (fov_y, near, far,
+  orthographic), or one that frames the mesh
+Bitwise the same image for any number of threads.
+)doc");
+}
+
+}  // namespace shadetool_python
