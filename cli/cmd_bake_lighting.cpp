@@ -12,6 +12,8 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include "usage_error.h"
+#include <shadetool/io/gltf_lights.h>
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/read_scene.h>
@@ -58,8 +60,9 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       "directional, point and spot lights; area and sky lights, exact where a closed form exists) per vertex or per "
       "face");
   add_io_options(*sub, io, /*writes_mesh=*/true);
-  sub->add_option("--scene", opt.scene, "Scene file (JSON): material, lights, camera, world_from_object")
-      ->required()
+  sub->add_option("--scene", opt.scene,
+                  "Scene file (JSON): material, lights, camera, world_from_object (required, except for glTF input: "
+                  "then its KHR_lights_punctual lights, first camera and node placement are used)")
       ->type_name("SCENE.json");
   sub->add_option("--model", opt.model, "Shading model, overriding the scene's (default: the scene's, else blinn-phong)")
       ->check(CLI::IsMember({"lambert", "phong", "blinn-phong"}));
@@ -81,7 +84,8 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
 
   return [samples] {
     // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
-    const shadetool::Scene scene = shadetool::read_scene(opt.scene);
+    const bool own_scene = opt.scene.empty();  // glTF input: the file's lights (io/gltf_lights.h)
+    const shadetool::Scene file_scene = own_scene ? shadetool::Scene() : shadetool::read_scene(opt.scene);
     shadetool::ShadeOptions shade;
     if (!opt.model.empty()) shade.model = parse_model(opt.model);
     shade.space = parse_space(opt.space);
@@ -95,6 +99,13 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
     const bool samples_given = samples->count() > 0;
 
     return run_mesh_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+      if (own_scene && !r.gltf)
+        throw UsageError(input + ": --scene is required (only glTF files carry their own lights)");
+      std::vector<std::string> scene_notes;
+      const shadetool::Scene scene = own_scene ? shadetool::gltf_scene(*r.gltf_document, *r.gltf, scene_notes) : file_scene;
+      if (own_scene && scene.lights.empty())
+        throw shadetool::Error(shadetool::located(input, 0, "no --scene given and the file has no KHR_lights_punctual light"));
+      for (auto& n : scene_notes) r.notes.push_back(n);
       shadetool::require_finite_positions(mesh, input);
       // The mesh's normals go to the output unchanged: none may be NaN/Inf (nor light with them).
       shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");

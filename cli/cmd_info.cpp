@@ -107,12 +107,22 @@ RegisterCommand reg(10, [](CLI::App& app) -> std::function<int()> {
         "info", io,
         [](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           std::string format;
-          if (!io.input_format.empty()) format = io.input_format;
+          if (r.gltf_document) format = r.gltf_document->was_binary ? "glb" : "gltf";
+          else if (!io.input_format.empty()) format = io.input_format;
           else format = shadetool::format_extension(shadetool::format_from_extension(input));
           for (auto& c : format) c = char(std::toupper(static_cast<unsigned char>(c)));
           const MeshInfo m = shadetool::info::mesh_info(mesh);
           r.stats = info_json(m, format);
           r.text = info_text(m, input, format);
+          if (r.gltf) {  // what the primitive holds beyond the mesh (passed through by every command)
+            std::string attrs;
+            for (const auto& a : r.gltf->attributes) attrs += (attrs.empty() ? "" : " ") + a;
+            const char* mode = r.gltf->mode == 5 ? "TRIANGLE_STRIP" : r.gltf->mode == 6 ? "TRIANGLE_FAN" : "TRIANGLES";
+            r.text += fmt::format("  glTF                   {}; {}; {} morph targets\n", mode, attrs, r.gltf->targets.size());
+            r.stats["gltf_attributes"] = r.gltf->attributes;
+            r.stats["gltf_mode"] = mode;
+            r.stats["gltf_morph_targets"] = r.gltf->targets.size();
+          }
         },
         false);
   };

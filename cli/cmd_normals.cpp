@@ -12,6 +12,7 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include "number_flags.h"
+#include <shadetool/io/gltf_morph_normals.h>
 #include <shadetool/normals/update_mesh_normals.h>
 #include "usage_error.h"
 
@@ -91,6 +92,17 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
             r.stats["normals"] = "kept";
             r.stats["kept_normals"] = rep.existing;
             return;
+          }
+          if (r.gltf && !r.gltf->targets.empty()) {  // glTF morph targets: their NORMAL deltas follow
+            shadetool::NormalsRequest displaced = request;
+            displaced.recompute = true;
+            const std::size_t redone = shadetool::recompute_morph_normal_deltas(
+                *r.gltf, [displaced](shadetool::Mesh& m) { shadetool::update_mesh_normals(m, displaced); });
+            if (redone > 0)
+              r.notes.push_back(fmt::format("morph targets: NORMAL deltas of {} targets recomputed from their displaced positions", redone));
+            else if (request.kind != shadetool::NormalKind::Vertex)
+              r.notes.push_back("morph targets: NORMAL deltas kept as read (recomputed only with vertex normals)");
+            r.stats["morph_targets_recomputed"] = redone;
           }
           const char* kind = request.kind == shadetool::NormalKind::Face     ? "face"
                              : request.kind == shadetool::NormalKind::Corner ? "corner"

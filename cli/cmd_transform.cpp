@@ -23,6 +23,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include <shadetool/io/gltf_transform.h>
 #include <shadetool/transform/affine_maps.h>
 #include <shadetool/transform/classify_affine.h>
 #include <shadetool/transform/transform_mesh.h>
@@ -201,6 +202,13 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
       // transform_mesh leaves a NaN/Inf normal as read; the command does not write one unasked.
       if (options.normals == shadetool::NormalsPolicy::Transform)
         shadetool::require_finite_normals(mesh, input, "use --normals recompute or --normals drop (or `shadetool repair` first)");
+      if (r.gltf) {  // glTF: tangents and morph-target deltas, before the base normals move
+        const shadetool::GltfTransformReport g =
+            shadetool::transform_gltf_extras(*r.gltf, M, file_options.normals == shadetool::NormalsPolicy::Drop);
+        if (!r.gltf->tangents.empty()) r.stats["tangents"] = g.tangents;
+        if (g.tangents_left > 0) r.notes.push_back(std::to_string(g.tangents_left) + " tangents are zero or not finite: left as read");
+        if (!r.gltf->targets.empty()) r.stats["morph_deltas"] = g.target_deltas;
+      }
       const shadetool::TransformReport rep = shadetool::transform_mesh(mesh, M, file_options, input);
       r.stats["path"] = shadetool::path_name(rep.affine.path);
       r.stats["mirror"] = rep.affine.mirror;

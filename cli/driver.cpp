@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
+#include <memory>
 #include <mutex>
 #include <new>
 #include <thread>
@@ -19,7 +20,10 @@
 #include <fmt/core.h>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
 #include <shadetool/io/atomic_write.h>
+#include <shadetool/io/file_bytes.h>
+#include <shadetool/io/gltf_document.h>
 #include <shadetool/io/format_table.h>
 #include <shadetool/io/image_io.h>
 #include <shadetool/io/mesh_io.h>
@@ -42,6 +46,17 @@ std::string upper_format_names() {
   return s;
 }
 
+// What --format and --input-format accept: every format's name and extensions (gltf, glb, ...).
+std::vector<std::string> format_names_and_extensions() {
+  std::vector<std::string> names;
+  for (const shadetool::FormatEntry& e : shadetool::mesh_formats()) {
+    names.emplace_back(e.name);
+    for (const char* ext : e.extensions)
+      if (std::find(names.begin(), names.end(), ext) == names.end()) names.emplace_back(ext);
+  }
+  return names;
+}
+
 std::string image_format_list() {
   std::string s;
   const auto names = shadetool::image_format_names();
@@ -54,14 +69,14 @@ std::string image_format_list() {
 void add_io_options(CLI::App& sub, IoOptions& io, OutputKind kind) {
   sub.add_option("inputs", io.inputs, "Input mesh files (" + upper_format_names() + "); - reads stdin")->required();
   sub.add_option("--input-format", io.input_format, "Format of the input when it has no extension (stdin)")
-      ->check(CLI::IsMember(shadetool::format_names(), CLI::ignore_case));
+      ->check(CLI::IsMember(format_names_and_extensions(), CLI::ignore_case));
   if (kind == OutputKind::Mesh) {
     sub.add_option("-o,--output", io.output, "Output file; - writes stdout (then --format is needed)");
     sub.add_option("--output-dir", io.output_dir, "Write one output per input into DIR, named after the input");
     sub.add_option("--format", io.format,
-                   "Output format: " + shadetool::format_list(false) + " (default: from -o's extension)")
-        ->check(CLI::IsMember(shadetool::format_names(), CLI::ignore_case));
-    auto* a = sub.add_flag("--ascii", io.ascii, "Write PLY/STL as text");
+                   "Output format: " + shadetool::format_list(false) + " (glTF: glb or gltf; default: from -o's extension)")
+        ->check(CLI::IsMember(format_names_and_extensions(), CLI::ignore_case));
+    auto* a = sub.add_flag("--ascii", io.ascii, "Write PLY/STL as text (glTF: JSON .gltf instead of .glb)");
     auto* b = sub.add_flag("--binary", io.binary, "Write PLY/STL as binary (the default)");
     a->excludes(b);
   } else if (kind == OutputKind::Image) {
@@ -294,6 +309,105 @@ void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& m
   shadetool::io::write_files_atomically(files);
 }
 
+// glTF input: true when --input-format or the input's extension names glTF.
+bool input_is_gltf(const IoOptions& io, const std::string& input) {
+  if (!io.input_format.empty()) return shadetool::parse_format_name(io.input_format, "--input-format") == Format::Gltf;
+  if (input == "-") return false;
+  const fs::path ext = fs::path(input).extension();
+  const shadetool::FormatEntry* f = ext.empty() ? nullptr : shadetool::find_format(ext.string().substr(1));
+  return f && f->format == Format::Gltf;
+}
+
+std::unique_ptr<shadetool::GltfDocument> read_gltf_input(const IoOptions&, const std::string& input) {
+  if (input == "-") {
+    const std::string bytes = read_stdin();
+    if (bytes.empty()) shadetool::fail("stdin", 0, "file is empty");
+    return std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes, "stdin"));
+  }
+  const shadetool::io::FileBytes bytes = shadetool::io::read_file_bytes(input);
+  auto doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes.view(), input));
+  if (doc->primitives.empty())
+    shadetool::fail(input, 0, "no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to read as a mesh");
+  return doc;
+}
+
+// Runs the step on every triangle primitive; notes are merged (one line per distinct note, naming
+// the primitives it concerns), numeric counts summed, other values kept from the last primitive.
+void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, const std::string& input, FileResult& result) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> notes;
+  nlohmann::json per_primitive = nlohmann::json::object();
+  const bool several = doc.primitives.size() > 1;
+  for (shadetool::GltfPrimitive& p : doc.primitives) {
+    FileResult r;
+    r.gltf = &p;
+    r.gltf_document = &doc;
+    step(p.mesh, input + ": " + p.json_path, r);
+    for (auto& n : r.notes) {
+      auto it = std::find_if(notes.begin(), notes.end(), [&](const auto& e) { return e.first == n; });
+      if (it == notes.end()) notes.push_back({n, {p.json_path}});
+      else it->second.push_back(p.json_path);
+    }
+    for (auto it = r.stats.begin(); it != r.stats.end(); ++it) {
+      // Integers are counts: summed. Other values are kept when every primitive agrees; a
+      // non-integer that differs (a mean, a time) has no one value for the file and is left to
+      // per_primitive, as is a string that differs ("mixed").
+      const bool first = !result.stats.contains(it.key());
+      auto& dst = result.stats[it.key()];
+      if (first) dst = it.value();
+      else if (it.value().is_number_integer() && dst.is_number_integer()) dst = dst.get<long long>() + it.value().get<long long>();
+      else if (dst != it.value()) dst = it.value().is_number() ? nlohmann::json() : nlohmann::json("mixed");
+    }
+    result.text += r.text;  // each primitive's text names it (the step's input is "FILE: JSON.PATH")
+    if (several) per_primitive[p.json_path] = r.stats;
+    for (auto& [path, content] : r.other_files) {  // one file per path: several primitives' JSON reports side by side
+      auto same = std::find_if(result.other_files.begin(), result.other_files.end(), [&](const auto& f) { return f.first == path; });
+      if (same == result.other_files.end()) {
+        result.other_files.emplace_back(path, several ? "{\"" + p.json_path + "\": " + content + "}" : content);
+      } else {
+        same->second.erase(same->second.find_last_of('}'));
+        same->second += ", \"" + p.json_path + "\": " + content + "}";
+      }
+    }
+  }
+  for (auto it = result.stats.begin(); it != result.stats.end();) it = it.value().is_null() ? result.stats.erase(it) : std::next(it);
+  if (several) result.stats["per_primitive"] = per_primitive;
+  for (auto& [note, paths] : notes) {
+    if (!several) result.notes.push_back(note);
+    else if (paths.size() == doc.primitives.size()) result.notes.push_back("every primitive: " + note);
+    else if (paths.size() == 1) result.notes.push_back(paths[0] + ": " + note);
+    else result.notes.push_back(std::to_string(paths.size()) + " primitives (first " + paths[0] + "): " + note);
+  }
+  if (doc.passed_through_primitives > 0)
+    result.notes.push_back(std::to_string(doc.passed_through_primitives) + " POINTS/LINES primitives passed through untouched");
+}
+
+// A glTF document out: glTF keeps the document; another format gets the primitives as one mesh.
+void write_gltf_output(const IoOptions& io, OutputKind kind, const shadetool::GltfDocument& doc, const std::string& output,
+                       FileResult& result) {
+  if (kind != OutputKind::Mesh) return write_output(io, kind, shadetool::Mesh(), output, result);
+  Format format = io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format");
+  format = shadetool::output_format(output, format);
+  if (format != Format::Gltf) {
+    if (doc.primitives.size() > 1)
+      result.notes.push_back(std::to_string(doc.primitives.size()) + " glTF primitives written as one mesh, each in its own "
+                             "object space (node transforms not applied); materials, textures and the scene graph not written");
+    return write_output(io, kind, shadetool::gltf_merged_mesh(doc), output, result);
+  }
+  const std::string name = output == "-" ? "stdout" : output;
+  for (const auto& p : doc.primitives) {  // what every writer refuses (io/mesh_io.h)
+    shadetool::require_finite_positions(p.mesh, name + ": " + p.json_path);
+    shadetool::require_finite_normals(p.mesh, name + ": " + p.json_path, "nothing written");
+  }
+  shadetool::GltfWriteResult wr;
+  const bool text = io.ascii || shadetool::gltf_name_is_text(output) || (output == "-" && !io.format.empty() && shadetool::gltf_name_is_text("." + io.format));
+  const std::string bytes = shadetool::write_gltf(doc, !text, name, wr);
+  if (wr.split_vertices > 0) result.stats["split_vertices"] = wr.split_vertices;
+  for (auto& n : wr.notes) result.notes.push_back(n);
+  std::vector<shadetool::io::FileToWrite> files{{output, bytes}};
+  for (const auto& [path, content] : result.other_files) files.push_back({path, content});
+  shadetool::io::write_files_atomically(files);
+}
+
 }  // namespace
 
 int run_command(const std::string& command, const IoOptions& io, const MeshStep& step, OutputKind kind) {
@@ -321,25 +435,38 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
       show_stage(input, "reading");
       auto t0 = std::chrono::steady_clock::now();
       shadetool::ReadInfo read_info;
-      shadetool::Mesh mesh = read_input(io, input, read_info);
+      shadetool::Mesh mesh;
+      std::unique_ptr<shadetool::GltfDocument> document;
+      if (kind != OutputKind::Image && input_is_gltf(io, input)) document = read_gltf_input(io, input);
+      else mesh = read_input(io, input, read_info);
       const double read_ms = ms_since(t0);
       for (auto& n : read_info.notes) result.notes.push_back(n);
       if (read_info.merged_vertices > 0) result.stats["merged_vertices"] = read_info.merged_vertices;
 
       show_stage(input, "computing");
       t0 = std::chrono::steady_clock::now();
-      step(mesh, input, result);
+      if (document) run_step_per_primitive(*document, step, input, result);
+      else step(mesh, input, result);
       const double compute_ms = ms_since(t0);
 
       double write_ms = 0;
       if (writes_file || !result.other_files.empty()) {
         show_stage(input, "writing");
         t0 = std::chrono::steady_clock::now();
-        write_output(io, kind, mesh, output, result);
+        if (document) write_gltf_output(io, kind, *document, output, result);
+        else write_output(io, kind, mesh, output, result);
         write_ms = ms_since(t0);
       }
-      result.stats["vertices"] = mesh.num_vertices();
-      result.stats["faces"] = mesh.num_faces();
+      if (document) {
+        std::size_t vertices = 0, faces = 0;
+        for (const auto& p : document->primitives) vertices += p.mesh.num_vertices(), faces += p.mesh.num_faces();
+        result.stats["vertices"] = vertices;
+        result.stats["faces"] = faces;
+        result.stats["primitives"] = document->primitives.size();
+      } else {
+        result.stats["vertices"] = mesh.num_vertices();
+        result.stats["faces"] = mesh.num_faces();
+      }
       line["status"] = "ok";
       line["time_ms"] = {{"read", read_ms}, {"compute", compute_ms}, {"write", write_ms}};
       line["stats"] = result.stats;

@@ -11,6 +11,9 @@
 //                       INPUT_STEM.EXT with EXT the format's, by default the table's first).
 //   OutputKind::Report  nothing is written to a file: FileResult::text goes to stdout (--json: the
 //                       JSON line's "stats" instead). info is one.
+// glTF input (Mesh and Report kinds): the whole document is kept; the step runs per triangle
+// primitive (each in its own object space) and a glTF output keeps everything else (see
+// io/gltf_document.h); another output format gets the primitives as one mesh (with a note).
 // For every kind the driver handles -j (files in parallel), --json (one JSON line per file),
 // --stats, notes (stderr, one line each, unless --quiet), the per-file error line and the exit
 // code (0 all ok, 1 any file failed, 2 usage: also a step's UsageError, flags that do not suit a
@@ -34,6 +37,7 @@
 #include <nlohmann/json.hpp>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/io/gltf_document.h>
 #include <shadetool/io/image_io.h>
 
 namespace CLI { class App; }
@@ -70,6 +74,11 @@ struct FileResult {
   // temporary written first, then all renamed; if one fails none replaces anything).
   std::vector<std::pair<std::string, std::string>> other_files;
   double compute_ms = 0;                        // filled by the driver
+  // glTF input (OutputKind Mesh and Report): the step runs once per triangle primitive, its mesh
+  // in the primitive's object space; these point at the primitive and its document so that a step
+  // can reach what a Mesh does not hold (tangents, morph targets, lights, cameras). Null otherwise.
+  shadetool::GltfPrimitive* gltf = nullptr;
+  const shadetool::GltfDocument* gltf_document = nullptr;
 };
 
 using MeshStep = std::function<void(shadetool::Mesh& mesh, const std::string& input, FileResult& result)>;

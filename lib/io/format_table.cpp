@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include <shadetool/core/error.h>
+#include <shadetool/io/gltf_document.h>
 #include <shadetool/io/obj_format.h>
 #include <shadetool/io/off_format.h>
 #include <shadetool/io/ply_format.h>
@@ -67,6 +68,30 @@ bool detect_stl(std::string_view bytes) {
   return b != std::string_view::npos && starts_with(bytes.substr(b), "solid");
 }
 
+bool detect_gltf(std::string_view bytes) {
+  if (starts_with(bytes, "glTF")) return true;
+  const std::size_t b = bytes.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+  return b != std::string_view::npos && bytes[b] == '{' && bytes.substr(0, 4096).find("\"asset\"") != std::string_view::npos;
+}
+
+// glTF through the table is one Mesh: every triangle primitive concatenated, in object space
+// (io/gltf_document.h); the CLI keeps the whole document instead (cli/driver.cpp).
+Mesh read_gltf_entry(std::string_view bytes, const std::string& name, ReadInfo& info) {
+  const GltfDocument doc = read_gltf(bytes, name);
+  if (doc.primitives.size() > 1)
+    info.notes.push_back(std::to_string(doc.primitives.size()) +
+                         " triangle primitives read as one mesh, each in its own object space (node transforms not applied)");
+  if (doc.passed_through_primitives > 0)
+    info.notes.push_back(std::to_string(doc.passed_through_primitives) + " POINTS/LINES primitives not read");
+  return gltf_merged_mesh(doc);
+}
+void write_gltf_entry(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info) {
+  GltfWriteResult result;
+  out = write_gltf(gltf_document_from_mesh(mesh), options.binary && !gltf_name_is_text(options.name), options.name, result);
+  info.split_vertices += result.split_vertices;
+  for (auto& n : result.notes) info.notes.push_back(n);
+}
+
 void write_obj_entry(const Mesh& mesh, const WriteOptions&, std::string& out, WriteInfo& info) {
   io::write_obj(mesh, out, info);
 }
@@ -117,6 +142,15 @@ std::vector<FormatEntry> make_table() {
     e.holds.face_normals = Holds::Yes;  // facet normals
     t.push_back(e);
   }
+  {
+    FormatEntry e{Format::Gltf, "gltf", {"glb", "gltf"}, detect_gltf, read_gltf_entry, write_gltf_entry, true, {}};
+    e.holds.vertex_normals = Holds::Yes;        // NORMAL
+    e.holds.corner_normals = Holds::Converted;  // vertices split
+    e.holds.face_normals = Holds::Converted;    // vertices split per face
+    e.holds.vertex_colors = Holds::Yes;         // COLOR_0
+    e.holds.face_colors = Holds::Converted;     // vertices split per face
+    t.push_back(e);
+  }
   return t;
 }
 
@@ -153,8 +187,11 @@ std::string format_list(bool with_dots) {
   std::string s;
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (i > 0) s += i + 1 == t.size() ? " or " : ", ";
-    if (with_dots) s += '.';
-    s += t[i].name;
+    if (!with_dots) {
+      s += t[i].name;
+      continue;
+    }
+    for (std::size_t k = 0; k < t[i].extensions.size(); ++k) s += std::string(k ? "/." : ".") + t[i].extensions[k];
   }
   return s;
 }

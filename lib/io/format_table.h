@@ -13,7 +13,8 @@
 //   find_format(name)         the entry whose name or one of whose extensions equals `name`,
 //                             any case, without a leading dot; nullptr if none
 //   format_names()            {"obj", "ply", ...}: what CLI option checks accept
-//   format_list(dot)          "obj, ply, off or stl" (dot: ".obj, .ply, .off or .stl"): for messages
+//   format_list(dot)          "obj, ply, off, stl or gltf" (dot: every extension, ".obj, ... or
+//                             .glb/.gltf"): for messages
 //   detect_format(bytes)      the format whose detect() recognises the bytes, else Format::Auto.
 //                             Detection is a hint for messages and for callers without a file
 //                             name; reading always uses the extension or the format given.

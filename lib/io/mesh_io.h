@@ -1,4 +1,4 @@
-// mesh_io.h: reading and writing meshes (the formats of io/format_table.h: OBJ, PLY, OFF, STL).
+// mesh_io.h: reading and writing meshes (the formats of io/format_table.h: OBJ, PLY, OFF, STL, glTF).
 // The only way data enters or leaves.
 //
 // Contract used by every subcommand and by library users:
@@ -28,7 +28,7 @@
 namespace shadetool {
 
 // One enumerator per entry of io/format_table.h (Auto: from the file name's extension).
-enum class Format { Auto, Obj, Ply, Off, Stl };
+enum class Format { Auto, Obj, Ply, Off, Stl, Gltf };
 
 // A format name or extension of format_table.h (any case) -> Format; throws Error naming `what`
 // and listing the names otherwise.

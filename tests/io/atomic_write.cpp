@@ -52,7 +52,7 @@ TEST_CASE("write_mesh: a failing write leaves an existing output untouched", "[a
   write_file(dir / "out.xyz", "precious");
   Mesh m = rich_mesh();
   CHECK(error_of([&] { write_mesh(m, dir / "out.xyz", WriteOptions{}); }) ==
-        dir / "out.xyz" + ": unknown mesh format 'xyz' (expected .obj, .ply, .off or .stl)");
+        dir / "out.xyz" + ": unknown mesh format 'xyz' (expected .obj, .ply, .off, .stl or .glb/.gltf)");
   CHECK(read_file(dir / "out.xyz") == "precious");
   CHECK(files_in(dir) == 1);
 }

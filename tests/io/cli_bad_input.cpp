@@ -40,7 +40,7 @@ TEST_CASE("CLI: every kind of bad input gives one FILE:LINE line, exit 1 and no 
   const std::vector<BadCase> cases = {
       {"missing.obj", "", ": cannot open: No such file or directory"},
       {"dir.obj", "", ": is a directory, not a mesh file"},
-      {"mesh.xyz", "v 0 0 0\n", ": unknown mesh format 'xyz' (expected .obj, .ply, .off or .stl)"},
+      {"mesh.xyz", "v 0 0 0\n", ": unknown mesh format 'xyz' (expected .obj, .ply, .off, .stl or .glb/.gltf)"},
       {"empty.obj", "", ": file is empty"},
       {"truncated.ply", binary_truncated, ": file is truncated: it ends in face 0 of 1"},
       {"truncated.stl", std::string(80, 'x') + std::string("\x02\0\0\0", 4) + std::string(60, '\0'),

@@ -10,7 +10,7 @@ using namespace shadetool::iotest;
 
 TEST_CASE("format table: names, extensions and lists come from the entries", "[format_table]") {
   const auto& table = mesh_formats();
-  REQUIRE(table.size() == 4);
+  REQUIRE(table.size() == 5);
   std::vector<std::string> names;
   for (const FormatEntry& e : table) {
     names.emplace_back(e.name);
@@ -24,10 +24,11 @@ TEST_CASE("format table: names, extensions and lists come from the entries", "[f
     CHECK(std::string(format_extension(e.format)) == e.extensions.front());
   }
   CHECK(format_names() == names);
-  CHECK(format_list(false) == "obj, ply, off or stl");
-  CHECK(format_list(true) == ".obj, .ply, .off or .stl");
+  CHECK(format_list(false) == "obj, ply, off, stl or gltf");
+  CHECK(format_list(true) == ".obj, .ply, .off, .stl or .glb/.gltf");
   CHECK(find_format("OBJ") == &format_entry(Format::Obj));
-  CHECK(find_format("gltf") == nullptr);
+  CHECK(find_format("glb") == &format_entry(Format::Gltf));
+  CHECK(find_format("3mf") == nullptr);
   CHECK(find_format("") == nullptr);
 }
 

@@ -17,11 +17,11 @@ TEST_CASE("format names and extensions", "[mesh_io]") {
   CHECK(parse_format_name("PLY", "--format") == Format::Ply);
   CHECK(std::string(format_extension(Format::Off)) == "off");
   CHECK(error_of([] { format_from_extension("mesh.xyz"); }) ==
-        "mesh.xyz: unknown mesh format 'xyz' (expected .obj, .ply, .off or .stl)");
+        "mesh.xyz: unknown mesh format 'xyz' (expected .obj, .ply, .off, .stl or .glb/.gltf)");
   CHECK(error_of([] { format_from_extension("dir.d/mesh"); }) ==
-        "dir.d/mesh: no file extension to tell the mesh format (expected .obj, .ply, .off or .stl)");
-  CHECK(error_of([] { parse_format_name("gltf", "--format"); }) ==
-        "--format: unknown mesh format 'gltf' (expected obj, ply, off or stl)");
+        "dir.d/mesh: no file extension to tell the mesh format (expected .obj, .ply, .off, .stl or .glb/.gltf)");
+  CHECK(error_of([] { parse_format_name("3mf", "--format"); }) ==
+        "--format: unknown mesh format '3mf' (expected obj, ply, off, stl or gltf)");
 }
 
 TEST_CASE("read_mesh: missing file, directory, empty file, unknown extension", "[mesh_io][errors]") {
@@ -32,7 +32,7 @@ TEST_CASE("read_mesh: missing file, directory, empty file, unknown extension", "
   write_file(dir / "empty.ply", "");
   CHECK(error_of([&] { read_mesh(dir / "empty.ply"); }) == dir / "empty.ply" + ": file is empty");
   write_file(dir / "m.txt", "v 0 0 0\n");
-  CHECK(error_of([&] { read_mesh(dir / "m.txt"); }) == dir / "m.txt" + ": unknown mesh format 'txt' (expected .obj, .ply, .off or .stl)");
+  CHECK(error_of([&] { read_mesh(dir / "m.txt"); }) == dir / "m.txt" + ": unknown mesh format 'txt' (expected .obj, .ply, .off, .stl or .glb/.gltf)");
   // an explicit format overrides the extension
   write_file(dir / "m.txt", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   CHECK(read_mesh(dir / "m.txt", Format::Obj).num_faces() == 1);

@@ -1,0 +1,99 @@
+// gltf_document.h: a glTF 2.0 file (.gltf or .glb) in memory, kept whole so that whatever a
+// command does not change leaves unchanged.
+//
+// Reading (read_gltf, through tinygltf, libtinygltf-dev): the JSON is kept as read (nodes,
+// cameras, materials, textures, images, animations, skins, extensions, extras, everything) and
+// so are the buffers. Each mesh primitive of mode TRIANGLES (4), TRIANGLE_STRIP (5) or
+// TRIANGLE_FAN (6) becomes one GltfPrimitive whose `mesh` is in the primitive's own object space:
+//   positions       POSITION (float, or KHR_mesh_quantization's normalised/integer types)
+//   faces           triangles: the indices (any index type) or 0..V-1; strips and fans as their
+//                   triangles (spec 3.7.2.1: strip i -> {i, i+1+i%2, i+2-i%2}, fan i -> {i+1, i+2, 0})
+//   vertex_normals  NORMAL, when present
+//   vertex_colors   COLOR_0, when present (VEC3/VEC4; float or normalised ubyte/ushort)
+// TANGENT and morph-target POSITION/NORMAL/TANGENT deltas are decoded beside it (transform maps
+// them); every other attribute stays in the buffers. POINTS and LINES primitives are not decoded
+// and pass through untouched.
+//
+// Writing (write_gltf): the JSON as read, with one buffer (GLB: the BIN chunk; .gltf: a data URI)
+// holding every input buffer's bytes, every image moved into a bufferView byte for byte (no
+// re-encoding; GLB cannot reference loose files), and, per primitive, new accessors only for
+// what changed: POSITION (min/max recomputed), NORMAL, COLOR_0, TANGENT, target deltas, indices.
+// When a command splits vertices (corner or face normals, face colours), every other vertex
+// attribute is gathered through the split; when it changes the vertex count otherwise (repair's
+// welding) and the primitive has attributes or morph targets that cannot follow, nothing is
+// written (Error naming them: dropping them would break the materials, skins and weights that
+// refer to them).
+//
+// Bad input (Error `FILE: JSON.PATH: what`): a missing buffer file, a view or accessor beyond its
+// buffer, an index out of range, component types the spec forbids for an attribute, NaN/Inf in
+// POSITION, a node graph that is not a forest (recursion), KHR_draco_mesh_compression or
+// EXT_meshopt_compression (refused: not decoded).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <shadetool/core/mesh.h>
+
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
+namespace shadetool {
+
+struct GltfSource;  // the tinygltf model, the JSON and the buffers as read (gltf_read.cpp)
+
+// One morph target's decoded deltas (#V by 3 each; empty when the target has none of that kind).
+struct GltfMorphTarget {
+  std::vector<double> position_deltas, normal_deltas, tangent_deltas;
+};
+
+struct GltfPrimitive {
+  std::size_t mesh_index = 0, primitive_index = 0;
+  std::string json_path;              // "meshes[0].primitives[1]"
+  Mesh mesh;                          // what commands change, in object space
+  std::vector<double> tangents;       // #V by 4 (xyz, w = handedness +-1), or empty
+  std::vector<GltfMorphTarget> targets;
+  int color_component_type = 0;       // COLOR_0 as read (5126 float, 5121, 5123); 0: none
+  std::vector<std::string> attributes;  // every attribute name as read (POSITION, TEXCOORD_0, ...)
+  int mode = 4;                       // as read: 4 TRIANGLES, 5 TRIANGLE_STRIP, 6 TRIANGLE_FAN
+  // As read, to write only what changed (positions, normals, colours and corners are compared
+  // with their accessors in the source, without a copy).
+  std::size_t read_vertices = 0;
+  std::vector<double> read_tangents;
+  std::vector<GltfMorphTarget> read_targets;
+};
+
+struct GltfDocument {
+  std::shared_ptr<const GltfSource> source;  // null for a document made from a plain Mesh
+  std::vector<GltfPrimitive> primitives;     // triangle primitives, in file order
+  std::size_t passed_through_primitives = 0; // POINTS / LINES primitives left as they are
+  bool was_binary = false;                   // read from a .glb
+};
+
+// Parses a .glb or .gltf (told apart by the bytes: "glTF" magic). `name` is the file's path:
+// external buffers and images are resolved relative to its directory; messages name it.
+GltfDocument read_gltf(std::string_view bytes, const std::string& name);
+
+// A one-primitive document holding `mesh` (positions, vertex normals, vertex colours, per-vertex
+// texture coordinates; polygons as triangle fans) for writing a non-glTF mesh as glTF.
+GltfDocument gltf_document_from_mesh(const Mesh& mesh);
+
+// Every triangle primitive in one Mesh (concatenated, each in its own object space: node
+// transforms are not applied): what read_mesh returns for a glTF file.
+Mesh gltf_merged_mesh(const GltfDocument& document);
+
+struct GltfWriteResult {
+  std::vector<std::string> notes;  // what could not be carried (one line each)
+  std::size_t split_vertices = 0;  // vertices added to carry corner/face normals or face colours
+};
+
+// Serialises the document: GLB when `binary`, else .gltf JSON with the buffer as a data URI.
+// `name` is the output's name for messages.
+std::string write_gltf(const GltfDocument& document, bool binary, const std::string& name, GltfWriteResult& result);
+
+// True when `name` ends in .gltf (any case): JSON output; anything else is written as GLB.
+bool gltf_name_is_text(const std::string& name);
+
+}  // namespace shadetool
+#pragma GCC visibility pop

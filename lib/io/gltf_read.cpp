@@ -1,0 +1,330 @@
+// gltf_read.cpp: .gltf / .glb -> GltfDocument (see gltf_document.h).
+#include <shadetool/io/gltf_document.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+
+#include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/error.h>
+#include "engine/gltf_accessor.h"
+#include "engine/gltf_source.h"
+
+namespace shadetool {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using io::gltf::accessor_doubles;
+
+std::uint32_t le32(const char* p) {
+  std::uint32_t v;
+  std::memcpy(&v, p, 4);
+  return v;
+}
+
+// The JSON chunk of a GLB (binary glTF 2.0: 12-byte header, then chunks of length, type, data).
+std::string_view glb_json(std::string_view bytes, const std::string& name) {
+  if (bytes.size() < 20) fail(name, 0, "GLB header truncated (" + std::to_string(bytes.size()) + " bytes)");
+  if (le32(bytes.data() + 4) != 2) fail(name, 0, "GLB version " + std::to_string(le32(bytes.data() + 4)) + ": only glTF 2.0 is read");
+  const std::uint32_t length = le32(bytes.data() + 8);
+  if (length > bytes.size()) fail(name, 0, "GLB header says " + std::to_string(length) + " bytes, the file has " + std::to_string(bytes.size()));
+  const std::uint32_t chunk = le32(bytes.data() + 12);
+  if (le32(bytes.data() + 16) != 0x4E4F534Au) fail(name, 0, "GLB: the first chunk is not JSON");
+  if (chunk > length - 20) fail(name, 0, "GLB: the JSON chunk overruns the file");
+  return bytes.substr(20, chunk);
+}
+
+bool has_extension(const json& j, const char* ext) {
+  for (const char* key : {"extensionsUsed", "extensionsRequired"})
+    if (j.contains(key) && j[key].is_array())
+      for (const auto& e : j[key])
+        if (e.is_string() && e.get<std::string>() == ext) return true;
+  return false;
+}
+
+// Compressed geometry is refused with one line (not decoded: no packaged decoder is linked).
+void refuse_compression(const json& j, const std::string& name) {
+  if (!j.contains("meshes") || !j["meshes"].is_array()) return;
+  for (std::size_t m = 0; m < j["meshes"].size(); ++m) {
+    const json& mesh = j["meshes"][m];
+    if (!mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+    for (std::size_t p = 0; p < mesh["primitives"].size(); ++p) {
+      const json& prim = mesh["primitives"][p];
+      if (prim.contains("extensions") && prim["extensions"].is_object() &&
+          prim["extensions"].contains("KHR_draco_mesh_compression"))
+        fail(name, 0, "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) +
+                          "].extensions.KHR_draco_mesh_compression: Draco-compressed geometry is not supported "
+                          "(decompress it first, e.g. `npx @gltf-transform/cli copy IN OUT`)");
+    }
+  }
+  if (j.contains("bufferViews") && j["bufferViews"].is_array())
+    for (std::size_t v = 0; v < j["bufferViews"].size(); ++v) {
+      const json& bv = j["bufferViews"][v];
+      if (bv.is_object() && bv.contains("extensions") && bv["extensions"].is_object() &&
+          (bv["extensions"].contains("EXT_meshopt_compression") || bv["extensions"].contains("KHR_meshopt_compression")))
+        fail(name, 0, "bufferViews[" + std::to_string(v) +
+                          "].extensions.EXT_meshopt_compression: meshopt-compressed buffers are not supported "
+                          "(decompress them first)");
+    }
+}
+
+// Every external buffer must be there: one line naming it, before tinygltf's own message.
+void require_buffer_files(const json& j, const std::string& name) {
+  if (!j.contains("buffers") || !j["buffers"].is_array()) return;
+  const fs::path base = fs::path(name).parent_path();
+  for (std::size_t b = 0; b < j["buffers"].size(); ++b) {
+    const json& buf = j["buffers"][b];
+    if (!buf.is_object() || !buf.contains("uri") || !buf["uri"].is_string()) continue;
+    const std::string uri = buf["uri"].get<std::string>();
+    if (uri.rfind("data:", 0) == 0) continue;
+    std::error_code ec;
+    if (!fs::is_regular_file(base / uri, ec))
+      fail(name, 0, "buffers[" + std::to_string(b) + "].uri: cannot read '" + uri + "' (no such file beside the .gltf)");
+  }
+}
+
+// The node graph must be a forest (glTF 2.0, 3.5.3): no node is its own ancestor, none has two
+// parents. Iterative walk, so that a deep chain does not exhaust the stack.
+void require_node_forest(const json& j, const std::string& name) {
+  if (!j.contains("nodes") || !j["nodes"].is_array()) return;
+  const std::size_t n = j["nodes"].size();
+  std::vector<long> parent(n, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const json& node = j["nodes"][i];
+    if (!node.is_object() || !node.contains("children")) continue;
+    const json& ch = node["children"];
+    if (!ch.is_array()) continue;
+    for (std::size_t k = 0; k < ch.size(); ++k) {
+      const std::string path = "nodes[" + std::to_string(i) + "].children[" + std::to_string(k) + "]";
+      if (!ch[k].is_number_integer() || ch[k].get<long>() < 0 || std::size_t(ch[k].get<long>()) >= n)
+        fail(name, 0, path + ": not a node index");
+      const std::size_t c = ch[k].get<std::size_t>();
+      if (c == i) fail(name, 0, path + ": node " + std::to_string(i) + " is its own child (the node graph must not be recursive)");
+      if (parent[c] >= 0)
+        fail(name, 0, path + ": node " + std::to_string(c) + " already has parent " + std::to_string(parent[c]) +
+                          " (the node graph must be a forest)");
+      parent[c] = long(i);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {  // a cycle: walking up from i returns to i
+    std::size_t steps = 0;
+    for (long p = parent[i]; p >= 0; p = parent[std::size_t(p)])
+      if (std::size_t(p) == i || ++steps > n)
+        fail(name, 0, "nodes[" + std::to_string(i) + "]: the node is its own ancestor (the node graph must not be recursive)");
+  }
+}
+
+// Keeps an image's bytes exactly as read (no decoding): the writer moves them into a bufferView.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                      int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
+  return true;
+}
+
+struct AttributeRule {
+  const char* what;
+  bool (*allowed)(int type, int component, bool normalized, bool quantized);
+  const char* expected;
+};
+
+bool position_ok(int type, int c, bool, bool q) {
+  return type == TINYGLTF_TYPE_VEC3 &&
+         (c == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+          (q && (c == TINYGLTF_COMPONENT_TYPE_BYTE || c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                 c == TINYGLTF_COMPONENT_TYPE_SHORT || c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)));
+}
+bool normal_ok(int type, int c, bool n, bool q) {
+  return type == TINYGLTF_TYPE_VEC3 &&
+         (c == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+          (q && n && (c == TINYGLTF_COMPONENT_TYPE_BYTE || c == TINYGLTF_COMPONENT_TYPE_SHORT)));
+}
+bool tangent_ok(int type, int c, bool n, bool q) {
+  return type == TINYGLTF_TYPE_VEC4 &&
+         (c == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+          (q && n && (c == TINYGLTF_COMPONENT_TYPE_BYTE || c == TINYGLTF_COMPONENT_TYPE_SHORT)));
+}
+bool color_ok(int type, int c, bool n, bool) {
+  return (type == TINYGLTF_TYPE_VEC3 || type == TINYGLTF_TYPE_VEC4) &&
+         (c == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+          (n && (c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)));
+}
+bool delta_ok(int type, int c, bool, bool q) {
+  return type == TINYGLTF_TYPE_VEC3 &&
+         (c == TINYGLTF_COMPONENT_TYPE_FLOAT || (q && (c == TINYGLTF_COMPONENT_TYPE_BYTE || c == TINYGLTF_COMPONENT_TYPE_SHORT)));
+}
+
+const AttributeRule kPosition{"POSITION", position_ok, "FLOAT VEC3 (or [UNSIGNED_]BYTE/SHORT VEC3 with KHR_mesh_quantization)"};
+const AttributeRule kNormal{"NORMAL", normal_ok, "FLOAT VEC3 (or normalized BYTE/SHORT VEC3 with KHR_mesh_quantization)"};
+const AttributeRule kTangent{"TANGENT", tangent_ok, "FLOAT VEC4 (or normalized BYTE/SHORT VEC4 with KHR_mesh_quantization)"};
+const AttributeRule kColor{"COLOR_0", color_ok, "VEC3/VEC4 of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT"};
+const AttributeRule kDelta{"delta", delta_ok, "FLOAT VEC3 (or BYTE/SHORT VEC3 with KHR_mesh_quantization)"};
+
+// Decodes attribute `index` of a primitive after checking its type against `rule` and its count.
+std::vector<double> decode_attribute(const tinygltf::Model& model, int index, const AttributeRule& rule, bool quantized,
+                                     std::size_t expected_count, const std::string& path, const std::string& name) {
+  if (index < 0 || std::size_t(index) >= model.accessors.size())
+    fail(name, 0, path + ": " + std::to_string(index) + " is not an accessor index");
+  const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
+  if (!rule.allowed(a.type, a.componentType, a.normalized, quantized))
+    fail(name, 0, path + ": accessors[" + std::to_string(index) + "] has componentType " + std::to_string(a.componentType) +
+                      (a.normalized ? " normalized" : "") + ", type " + std::to_string(io::gltf::type_components(a.type)) +
+                      " components; " + rule.what + " must be " + rule.expected);
+  if (expected_count != std::size_t(-1) && a.count != expected_count)
+    fail(name, 0, path + ": accessors[" + std::to_string(index) + "] has " + std::to_string(a.count) +
+                      " elements, POSITION has " + std::to_string(expected_count));
+  return accessor_doubles(model, index, name);
+}
+
+void decode_primitive(const tinygltf::Model& model, bool quantized, GltfPrimitive& gp, const std::string& name) {
+  const tinygltf::Primitive& prim = model.meshes[gp.mesh_index].primitives[gp.primitive_index];
+  const std::string path = gp.json_path;
+  auto pos = prim.attributes.find("POSITION");
+  if (pos == prim.attributes.end()) fail(name, 0, path + ".attributes: no POSITION");
+  Mesh& mesh = gp.mesh;
+  mesh.positions = decode_attribute(model, pos->second, kPosition, quantized, std::size_t(-1), path + ".attributes.POSITION", name);
+  const std::size_t V = mesh.num_vertices();
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    if (!std::isfinite(mesh.positions[i]))
+      fail(name, 0, path + ".attributes.POSITION: vertex " + std::to_string(i / 3) + " has a NaN or infinite coordinate");
+  if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end())
+    mesh.vertex_normals = decode_attribute(model, it->second, kNormal, quantized, V, path + ".attributes.NORMAL", name);
+  if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end())
+    gp.tangents = decode_attribute(model, it->second, kTangent, quantized, V, path + ".attributes.TANGENT", name);
+  if (auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end()) {
+    const std::vector<double> c = decode_attribute(model, it->second, kColor, quantized, V, path + ".attributes.COLOR_0", name);
+    const tinygltf::Accessor& a = model.accessors[std::size_t(it->second)];
+    mesh.color_channels = a.type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
+    mesh.colors_are_float = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    gp.color_component_type = a.componentType;
+    mesh.vertex_colors.assign(c.begin(), c.end());
+  }
+  gp.mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+  for (auto& [attr, index] : prim.attributes) {  // every other attribute: its count must agree too
+    gp.attributes.push_back(attr);
+    if (index < 0 || std::size_t(index) >= model.accessors.size())
+      fail(name, 0, path + ".attributes." + attr + ": " + std::to_string(index) + " is not an accessor index");
+    if (model.accessors[std::size_t(index)].count != V)
+      fail(name, 0, path + ".attributes." + attr + ": accessors[" + std::to_string(index) + "] has " +
+                        std::to_string(model.accessors[std::size_t(index)].count) + " elements, POSITION has " + std::to_string(V));
+  }
+  for (std::size_t t = 0; t < prim.targets.size(); ++t) {
+    GltfMorphTarget target;
+    const std::string tp = path + ".targets[" + std::to_string(t) + "].";
+    for (auto& [attr, index] : prim.targets[t]) {
+      if (attr == "POSITION") target.position_deltas = decode_attribute(model, index, kDelta, quantized, V, tp + attr, name);
+      else if (attr == "NORMAL") target.normal_deltas = decode_attribute(model, index, kDelta, quantized, V, tp + attr, name);
+      else if (attr == "TANGENT") target.tangent_deltas = decode_attribute(model, index, kDelta, quantized, V, tp + attr, name);
+    }
+    gp.targets.push_back(std::move(target));
+  }
+
+  // Corners: the indices (or 0..V-1), strips and fans unrolled (spec 3.7.2.1).
+  mesh.corner_vertex = io::gltf::primitive_corners(model, prim.indices, prim.mode, V, path, name);
+  const std::vector<std::uint32_t>& cv = mesh.corner_vertex;
+  const std::size_t F = cv.size() / 3;
+  reserve_bulk(mesh.face_start, F + 1);
+  mesh.face_start.resize(F + 1);
+  for (std::size_t f = 0; f <= F; ++f) mesh.face_start[f] = std::uint32_t(3 * f);
+  mesh.precision = ValuePrecision::Float;
+  gp.read_vertices = V;
+  gp.read_tangents = gp.tangents;
+  gp.read_targets = gp.targets;
+}
+
+}  // namespace
+
+GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
+  const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
+  const std::string_view json_text = binary ? glb_json(bytes, name) : bytes;
+  auto source = std::make_shared<GltfSource>();
+  source->name = name;
+  try {
+    source->json = json::parse(json_text.begin(), json_text.end());
+  } catch (const json::exception& e) {
+    std::string what = e.what();
+    fail(name, 0, "not valid glTF JSON: " + what.substr(what.find(']') == std::string::npos ? 0 : what.find(']') + 2));
+  }
+  if (!source->json.is_object()) fail(name, 0, "not valid glTF JSON: the document is not an object");
+  refuse_compression(source->json, name);
+  require_buffer_files(source->json, name);
+  require_node_forest(source->json, name);
+
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keep_image_bytes, nullptr);
+  loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
+  std::string err, warn;
+  std::string base = fs::path(name).parent_path().string();
+  if (base.empty()) base = ".";
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&source->model, &err, &warn,
+                                                       reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                       unsigned(bytes.size()), base)
+                         : loader.LoadASCIIFromString(&source->model, &err, &warn, json_text.data(),
+                                                      unsigned(json_text.size()), base);
+  if (!ok) {
+    std::string line = err.empty() ? std::string("tinygltf could not read the file") : err;
+    for (char& c : line)
+      if (c == '\n' || c == '\r') c = ' ';
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    fail(name, 0, line);
+  }
+
+  GltfDocument doc;
+  doc.was_binary = binary;
+  const bool quantized = has_extension(source->json, "KHR_mesh_quantization");
+  const tinygltf::Model& model = source->model;
+  for (std::size_t m = 0; m < model.meshes.size(); ++m)
+    for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
+      const int mode = model.meshes[m].primitives[p].mode;
+      if (!(mode < 0 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+            mode == TINYGLTF_MODE_TRIANGLE_FAN)) {
+        ++doc.passed_through_primitives;
+        continue;
+      }
+      GltfPrimitive gp;
+      gp.mesh_index = m;
+      gp.primitive_index = p;
+      gp.json_path = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
+      decode_primitive(model, quantized, gp, name);
+      doc.primitives.push_back(std::move(gp));
+    }
+  doc.source = std::move(source);
+  return doc;
+}
+
+Mesh gltf_merged_mesh(const GltfDocument& document) {
+  Mesh out;
+  bool normals = !document.primitives.empty(), colors = !document.primitives.empty();
+  for (const GltfPrimitive& p : document.primitives) {
+    normals = normals && p.mesh.has_vertex_normals();
+    colors = colors && p.mesh.has_vertex_colors() && p.mesh.color_channels == document.primitives[0].mesh.color_channels;
+  }
+  for (const GltfPrimitive& p : document.primitives) {
+    const std::uint32_t base = std::uint32_t(out.num_vertices());
+    out.positions.insert(out.positions.end(), p.mesh.positions.begin(), p.mesh.positions.end());
+    if (normals) out.vertex_normals.insert(out.vertex_normals.end(), p.mesh.vertex_normals.begin(), p.mesh.vertex_normals.end());
+    if (colors) {
+      out.vertex_colors.insert(out.vertex_colors.end(), p.mesh.vertex_colors.begin(), p.mesh.vertex_colors.end());
+      out.color_channels = p.mesh.color_channels;
+      out.colors_are_float = p.mesh.colors_are_float;
+    }
+    for (std::size_t f = 0; f < p.mesh.num_faces(); ++f) {
+      for (std::uint32_t c = p.mesh.face_start[f]; c < p.mesh.face_start[f + 1]; ++c) out.corner_vertex.push_back(base + p.mesh.corner_vertex[c]);
+      out.face_start.push_back(std::uint32_t(out.corner_vertex.size()));
+    }
+  }
+  return out;
+}
+
+bool gltf_name_is_text(const std::string& name) {
+  if (name.size() < 5) return false;
+  std::string ext = name.substr(name.size() - 5);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".gltf";
+}
+
+}  // namespace shadetool

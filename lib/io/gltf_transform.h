@@ -1,0 +1,38 @@
+// gltf_transform.h: what transform_mesh (lib/transform) cannot see of a glTF primitive: its
+// TANGENT attribute and its morph targets' deltas, mapped by the same affine map.
+//
+// Inputs:  primitive  a GltfPrimitive (io/gltf_document.h): tangents #V by 4, targets' deltas
+//                     #V by 3; primitive.mesh.vertex_normals #V by 3 = the base normals BEFORE the
+//                     map (call this before transform_mesh)
+//          M          the map p -> A p + t (t does not act on tangents or deltas: they are vectors)
+//          drop_normals  the command drops normals: NORMAL deltas are dropped too
+// Output:  primitive, in place. Formulas (the functions of lib/transform, not copies):
+//   TANGENT xyz   t' = A t (transform_vector), renormalised (length checked; a zero or non-finite
+//                 tangent is left as read); w' = -w when det A < 0 (a mirror swaps handedness:
+//                 with n' = sign(det A) cof(A) n, n' x t' = -A (n x t) for an orthogonal mirror)
+//   POSITION delta d' = A d
+//   TANGENT delta  d' = A d
+//   NORMAL delta   d' = N(n + d) - N(n), N = the normal map of transform_normals.h (sign(det A)
+//                  cof(A), normalised on the general path): the displaced normal maps as a normal.
+// Double precision throughout; the singular map leaves tangents and normal deltas as read (the
+// command refuses it where normals are transformed).
+#pragma once
+
+#include <cstddef>
+
+#include <shadetool/core/affine.h>
+#include <shadetool/io/gltf_document.h>
+
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
+namespace shadetool {
+
+struct GltfTransformReport {
+  std::size_t tangents = 0;        // tangents mapped
+  std::size_t tangents_left = 0;   // zero or non-finite tangents left as read
+  std::size_t target_deltas = 0;   // delta vectors mapped
+};
+
+GltfTransformReport transform_gltf_extras(GltfPrimitive& primitive, const Affine3d& M, bool drop_normals);
+
+}  // namespace shadetool
+#pragma GCC visibility pop

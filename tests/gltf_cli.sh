@@ -1,0 +1,232 @@
+#!/usr/bin/env bash
+# glTF 2.0 through every subcommand (issue 19): files written by hand (tests/gltf/make_fixtures.py)
+# and by a second writer (assimp export), each output checked by an independent reader
+# (tests/gltf/gltf_check.py: everything not changed is kept, images byte for byte) and by the
+# Khronos glTF Validator (npm gltf-validator, installed into the build tree on first use; skipped
+# loudly where Node.js/npm or the registry are missing). Bad inputs: one line naming the file and
+# the JSON path, exit 1, no output.
+set -uo pipefail
+bin=$1 src=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+check() {  # check NAME COMMAND...
+  local name=$1; shift
+  if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $name"; fi
+}
+py=/usr/bin/python3; [ -x "$py" ] || py=python3
+gcheck() { "$py" "$src/tests/gltf/gltf_check.py" "$@"; }
+fx=$tmp/fx
+"$py" "$src/tests/gltf/make_fixtures.py" "$fx" || { echo "FAIL: fixtures"; exit 1; }
+
+# The validator: node + the npm package gltf-validator under the build tree.
+validator_dir=$(dirname "$bin")/gltf-validator-node
+validate=""
+if command -v node > /dev/null; then
+  if [ ! -d "$validator_dir/node_modules/gltf-validator" ] && command -v npm > /dev/null; then
+    npm install --silent --no-audit --no-fund --prefix "$validator_dir" gltf-validator > "$tmp/npm.log" 2>&1 || cat "$tmp/npm.log"
+  fi
+  if [ -d "$validator_dir/node_modules/gltf-validator" ]; then
+    validate="node $src/tests/gltf/validate.js"
+    export NODE_PATH=$validator_dir/node_modules
+  else
+    echo "skipped: Khronos glTF Validator (npm install gltf-validator failed: no registry?)"
+  fi
+else
+  echo "skipped: Khronos glTF Validator (no node: install nodejs and npm)"
+fi
+valid() {  # valid FILE...: no validator error
+  [ -z "$validate" ] && return 0
+  $validate "$@" > "$tmp/validator.txt" || { cat "$tmp/validator.txt"; return 1; }
+}
+check "hand-written fixtures are valid glTF" valid "$fx/rich.gltf" "$fx/rich.glb" "$fx/embedded.gltf"
+
+# normals: NORMAL replaced or added, everything else kept, .gltf -> .glb -> .gltf.
+for in in rich.gltf rich.glb embedded.gltf; do
+  for out in n.glb n.gltf; do
+    rm -f "$tmp/$out"
+    "$bin" normals "$fx/$in" -o "$tmp/$out" --recompute -q
+    check "normals $in -> $out exit 0" test $? -eq 0
+    check "normals $in -> $out keeps everything else" gcheck keep "$fx/$in" "$tmp/$out" --changed NORMAL
+    check "normals $in -> $out valid" valid "$tmp/$out"
+  done
+done
+"$bin" normals "$fx/rich.gltf" -o "$tmp/n.glb" --recompute -q
+check "gltf -> glb: no data URI inside the GLB, image moved into a bufferView" "$py" -c '
+import json,struct,sys
+d=open(sys.argv[1],"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n])
+assert all("uri" not in b for b in j["buffers"]) and len(j["buffers"])==1, j["buffers"]
+assert all("bufferView" in im and "uri" not in im for im in j["images"]), j["images"]
+assert d[:4]==b"glTF" and struct.unpack_from("<I",d,8)[0]==len(d) and n%4==0' "$tmp/n.glb"
+
+# The computed normals: the cube's are its face normals (24 split vertices); the strip lies in z=0.
+check "cube NORMALs are the face normals" "$py" -c '
+import json,subprocess,sys
+pos=json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"0","0","POSITION"]))
+nor=json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"0","0","NORMAL"]))
+for p,n in zip(pos,nor):
+  k=max(range(3),key=lambda i:abs(p[i])) if sorted(abs(x) for x in p)[1]<0.99 else None
+  assert abs(sum(x*x for x in n)-1)<1e-6, n
+  assert max(abs(x) for x in n)>0.999999, n
+' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/n.glb"
+# Strip vertices (i//2, i%2, 0): its first triangle (0,0) (0,1) (1,0) is clockwise seen from +z, and
+# the strip rule keeps every other one the same way: all normals -z.
+check "strip NORMALs are -z (strip unrolled with alternating order)" "$py" -c '
+import json,subprocess,sys
+nor=json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"1","0","NORMAL"]))
+assert len(nor)==6 and all(abs(n[2]+1)<1e-6 for n in nor), nor' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/n.glb"
+check "morph target NORMAL deltas recomputed: zero for the pushed-out face (a translation)" "$py" -c '
+import json,subprocess,sys
+d=json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"0","0","targets.0.NORMAL"]))
+assert len(d)==24 and max(abs(x) for r in d for x in r)<1e-6, d' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/n.glb"
+
+# --crease and --faces split vertices; every other attribute follows the split.
+"$bin" normals "$fx/rich.glb" -o "$tmp/c.glb" --recompute --crease 30 -q
+check "crease: kept and valid" gcheck keep "$fx/rich.glb" "$tmp/c.glb" --changed NORMAL
+check "crease: valid" valid "$tmp/c.glb"
+"$bin" normals "$fx/rich.glb" -o "$tmp/f.glb" --faces -q
+check "faces: kept" gcheck keep "$fx/rich.glb" "$tmp/f.glb" --changed NORMAL
+check "faces: valid" valid "$tmp/f.glb"
+
+# info and repair.
+"$bin" info "$fx/rich.glb" > "$tmp/info.txt" 2> /dev/null
+check "info: one block per triangle primitive (4)" test "$(grep -c '^  vertices' "$tmp/info.txt")" -eq 4
+check "info: names the primitive" grep -q 'rich.glb: meshes\[1\].primitives\[0\]: GLB' "$tmp/info.txt"
+"$bin" repair "$fx/rich.glb" -o "$tmp/r.glb" -q
+check "repair: kept" gcheck keep "$fx/rich.glb" "$tmp/r.glb" --changed NORMAL
+check "repair: valid" valid "$tmp/r.glb"
+
+"$bin" repair "$fx/rich.glb" -o "$tmp/rw.glb" --weld 1e-6 2> "$tmp/err.txt"
+check "repair --weld on a primitive with texcoords/skin/targets: exit 1" test $? -eq 1
+check "repair --weld: names what cannot follow" grep -q "TEXCOORD_0.*cannot follow" "$tmp/err.txt"
+check "repair --weld: no output" test ! -e "$tmp/rw.glb"
+
+# transform: a mirror with a non-uniform scale.
+"$bin" transform "$fx/rich.glb" --scale -1,2,1 -o "$tmp/t.glb" -q
+check "transform: kept" gcheck keep "$fx/rich.glb" "$tmp/t.glb" --changed POSITION,NORMAL,TANGENT
+check "transform: valid (min/max updated)" valid "$tmp/t.glb"
+check "transform: POSITION x negated, y doubled; TANGENT mapped, w flipped; morph deltas mapped" "$py" -c '
+import json,subprocess,sys
+def dump(f,a): return json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",f,"0","0",a]))
+pi,po=dump(sys.argv[3],"POSITION"),dump(sys.argv[4],"POSITION")
+ti,to=dump(sys.argv[3],"TANGENT"),dump(sys.argv[4],"TANGENT")
+ci,co=json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"0","0","corners"])),json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[4],"0","0","corners"]))
+assert len(po)==len(pi)
+for a,b in zip(pi,po): assert b==[-a[0],2*a[1],a[2]], (a,b)
+for a,b in zip(ti,to):
+  m=[-a[0],2*a[1],a[2]]; l=sum(x*x for x in m)**0.5
+  assert all(abs(m[k]/l-b[k])<1e-6 for k in range(3)) and b[3]==-a[3], (a,b)
+assert co==[c for t in range(0,len(ci),3) for c in (ci[t],ci[t+2],ci[t+1])], "mirror re-winds"
+di,do=dump(sys.argv[3],"targets.0.POSITION"),dump(sys.argv[4],"targets.0.POSITION")
+for a,b in zip(di,do): assert b==[-a[0],2*a[1],a[2]], (a,b)
+' "$py" "$src/tests/gltf/gltf_check.py" "$fx/rich.glb" "$tmp/t.glb"
+
+# bake-lighting: the file's own lights and camera; COLOR_0 in the input's type (normalised ubyte).
+"$bin" bake-lighting "$fx/rich.glb" -o "$tmp/b.glb" -q
+check "bake-lighting: kept" gcheck keep "$fx/rich.glb" "$tmp/b.glb" --changed COLOR_0,NORMAL
+check "bake-lighting: valid" valid "$tmp/b.glb"
+check "bake-lighting: COLOR_0 stays normalised UNSIGNED_BYTE where it was, float elsewhere" "$py" -c '
+import json,struct,sys
+d=open(sys.argv[1],"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n])
+acc=lambda m:j["accessors"][j["meshes"][m]["primitives"][0]["attributes"]["COLOR_0"]]
+assert acc(0)["componentType"]==5121 and acc(0)["normalized"], acc(0)
+assert acc(1)["componentType"]==5126, acc(1)' "$tmp/b.glb"
+"$bin" bake-lighting "$fx/rich.glb" -o "$tmp/bh.gltf" --hdr -q
+check "bake-lighting --hdr: valid (COLOR_0 clamped to [0,1])" valid "$tmp/bh.gltf"
+"$bin" bake-lighting "$src/data/torus.obj" -o "$tmp/x.obj" > /dev/null 2>&1
+check "bake-lighting without --scene on OBJ: usage error (exit 2)" test $? -eq 2
+
+# Bad input: one line naming the file and the JSON path, exit 1, no output.
+for case in "missing_bin:buffers[0].uri" "index_out_of_range:meshes[3].primitives[0].indices" \
+            "accessor_overrun:accessors[0]" "wrong_component_type:meshes[0].primitives[0].attributes.POSITION" \
+            "nan_position:meshes[0].primitives[0].attributes.POSITION" "recursive_nodes:nodes[" \
+            "draco:KHR_draco_mesh_compression"; do
+  name=${case%%:*} path=${case#*:}
+  "$bin" normals "$fx/bad_$name.gltf" -o "$tmp/bad.glb" 2> "$tmp/err.txt"
+  code=$?
+  check "bad $name: exit 1" test $code -eq 1
+  check "bad $name: one line" test "$(wc -l < "$tmp/err.txt")" -eq 1
+  check "bad $name: names file and $path" grep -qF "bad_$name.gltf: " "$tmp/err.txt"
+  check "bad $name: JSON path $path" grep -qF "$path" "$tmp/err.txt"
+  check "bad $name: no output" test ! -e "$tmp/bad.glb"
+done
+
+# A second writer: assimp (assimp-utils) exports OBJ -> glb/gltf; we read, compute, validate.
+if command -v assimp > /dev/null; then
+  assimp export "$src/data/torus.obj" "$tmp/torus_assimp.glb" > /dev/null 2>&1
+  assimp export "$src/data/torus.obj" "$tmp/torus_assimp.gltf" > /dev/null 2>&1
+  for f in torus_assimp.glb torus_assimp.gltf; do
+    "$bin" normals "$tmp/$f" -o "$tmp/n_$f" --recompute -q
+    check "assimp $f: normals exit 0" test $? -eq 0
+    check "assimp $f: kept" gcheck keep "$tmp/$f" "$tmp/n_$f" --changed NORMAL
+    check "assimp $f: valid" valid "$tmp/n_$f"
+  done
+  "$bin" info "$tmp/torus_assimp.glb" --json > "$tmp/ai.json"
+  "$bin" info "$src/data/torus.obj" --json > "$tmp/oi.json"
+  check "assimp glb: same face count as the OBJ" "$py" -c '
+import json,sys
+a=json.loads(open(sys.argv[1]).read()); o=json.loads(open(sys.argv[2]).read())
+assert a["stats"]["faces"]==o["stats"]["faces"], (a["stats"]["faces"],o["stats"]["faces"])' "$tmp/ai.json" "$tmp/oi.json"
+else
+  echo "skipped: second writer (no assimp: install assimp-utils)"
+fi
+
+# A third writer: Blender's glTF exporter (default scene: a cube with TANGENT, a point light as
+# KHR_lights_punctual, a camera). bake-lighting without --scene must light exactly the vertices
+# whose normal faces the light (no ambient or emission in the glTF mapping).
+if command -v blender > /dev/null; then
+  blender -b --factory-startup --python-exit-code 1 --python-expr "
+import bpy
+bpy.ops.export_scene.gltf(filepath='$tmp/blender.glb', export_format='GLB', export_tangents=True, export_lights=True, export_cameras=True)
+" > "$tmp/blender.log" 2>&1
+  check "blender export" test -s "$tmp/blender.glb"
+  "$bin" bake-lighting "$tmp/blender.glb" -o "$tmp/blender_lit.glb" -q
+  check "blender: bake-lighting with the file's own light: kept" gcheck keep "$tmp/blender.glb" "$tmp/blender_lit.glb" --changed COLOR_0
+  check "blender: bake-lighting valid" valid "$tmp/blender_lit.glb"
+  check "blender: lit exactly where the normal faces the point light" "$py" -c '
+import sys
+sys.path.insert(0,sys.argv[2])
+import gltf_check as g
+doc,bufs=g.load(sys.argv[4])
+light=[n for n in doc["nodes"] if "KHR_lights_punctual" in n.get("extensions",{})][0]["translation"]
+cube=[n for n in doc["nodes"] if n.get("mesh")==0][0]
+assert "matrix" not in cube and cube.get("translation",[0,0,0])==[0,0,0] and "scale" not in cube, cube
+prim=doc["meshes"][0]["primitives"][0]
+P,N,C=(g.accessor(doc,bufs,prim["attributes"][a]) for a in ("POSITION","NORMAL","COLOR_0"))
+for p,n,c in zip(P,N,C):
+  facing=sum(n[k]*(light[k]-p[k]) for k in range(3))>0
+  assert (max(c[:3])>0)==facing, (p,n,c,light)' "$py" "$src/tests/gltf" "$tmp/blender.glb" "$tmp/blender_lit.glb"
+  "$bin" transform "$tmp/blender.glb" --scale -1,1,1 -o "$tmp/blender_mirror.glb" -q
+  check "blender: mirror keeps the rest" gcheck keep "$tmp/blender.glb" "$tmp/blender_mirror.glb" --changed POSITION,NORMAL,TANGENT
+  check "blender: mirror valid" valid "$tmp/blender_mirror.glb"
+else
+  echo "skipped: third writer (no blender)"
+fi
+
+# Other formats in and out: OBJ -> glb (a fresh document) and glb -> OBJ (one mesh, with a note).
+"$bin" normals "$src/data/torus.obj" -o "$tmp/from_obj.glb" -q
+check "obj -> glb valid" valid "$tmp/from_obj.glb"
+"$bin" normals "$fx/rich.glb" -o "$tmp/to.obj" 2> "$tmp/note.txt"
+check "glb -> obj: a note says the primitives became one mesh" grep -q "written as one mesh" "$tmp/note.txt"
+
+# --format glb / gltf, stdout and stdin, --output-dir.
+"$bin" normals "$fx/rich.glb" -o - --format glb -q > "$tmp/stdout.glb"
+check "-o - --format glb writes a GLB" test "$(head -c 4 "$tmp/stdout.glb")" = glTF
+check "stdout GLB valid" valid "$tmp/stdout.glb"
+"$bin" normals "$fx/rich.glb" -o - --format gltf -q > "$tmp/stdout.gltf"
+check "-o - --format gltf writes JSON" "$py" -c 'import json,sys; json.load(open(sys.argv[1]))' "$tmp/stdout.gltf"
+mkdir -p "$tmp/od"
+"$bin" normals "$fx/rich.gltf" --output-dir "$tmp/od" --format glb -q
+check "--output-dir --format glb names the output .glb" test -s "$tmp/od/rich.glb"
+"$bin" info - --input-format glb < "$fx/rich.glb" > "$tmp/stdin.txt" 2> /dev/null
+check "stdin with --input-format glb" grep -q "GLB" "$tmp/stdin.txt"
+"$bin" normals "$fx/rich.glb" -o "$tmp/j.glb" --json -q > "$tmp/j.json"
+check "--json: one line, counts summed over primitives, per-primitive stats" "$py" -c '
+import json,sys
+rows=[json.loads(l) for l in open(sys.argv[1])]
+assert len(rows)==1 and rows[0]["status"]=="ok"
+st=rows[0]["stats"]
+assert st["primitives"]==4 and st["faces"]==12+4+6+4, st
+assert len(st["per_primitive"])==4, st' "$tmp/j.json"
+
+echo "gltf_cli: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

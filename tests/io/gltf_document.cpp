@@ -1,0 +1,351 @@
+// Tests of io/gltf_document (read_gltf, write_gltf), io/gltf_transform and io/gltf_lights.
+// Every file is built here, byte by byte (a small GLB writer independent of write_gltf), so that
+// what is checked is the spec's layout, not our writer's idea of it.
+#include <shadetool/io/gltf_document.h>
+#include <shadetool/io/gltf_lights.h>
+#include <shadetool/io/gltf_morph_normals.h>
+#include <shadetool/io/gltf_transform.h>
+
+#include <cstdint>
+#include <cstring>
+
+#include <nlohmann/json.hpp>
+
+#include <shadetool/core/math_constants.h>
+#include "io_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::iotest;
+using nlohmann::json;
+
+namespace {
+
+// A GLB assembled by hand: JSON chunk (space-padded) and BIN chunk (zero-padded), glTF 2.0 5.
+std::string make_glb(const json& doc, const std::string& bin) {
+  std::string text = doc.dump();
+  while (text.size() % 4) text += ' ';
+  std::string data = bin;
+  while (data.size() % 4) data += '\0';
+  auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  std::string out = "glTF" + u32(2) + u32(std::uint32_t(12 + 8 + text.size() + 8 + data.size()));
+  out += u32(std::uint32_t(text.size())) + u32(0x4E4F534Au) + text;
+  out += u32(std::uint32_t(data.size())) + u32(0x004E4942u) + data;
+  return out;
+}
+
+template <class T>
+std::string bytes_of(const std::vector<T>& v) {
+  return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+// A document with one primitive: `positions` (float VEC3) and indices of component type `ct`.
+struct Built {
+  json doc;
+  std::string bin;
+  int view(const std::string& bytes, int stride = 0) {
+    while (bin.size() % 4) bin += '\0';
+    json v = {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes.size()}};
+    if (stride) v["byteStride"] = stride;
+    bin += bytes;
+    doc["bufferViews"].push_back(v);
+    return int(doc["bufferViews"].size() - 1);
+  }
+  int accessor(json a) {
+    doc["accessors"].push_back(a);
+    return int(doc["accessors"].size() - 1);
+  }
+  std::string glb() {
+    json d = doc;
+    d["buffers"] = json::array({{{"byteLength", (bin.size() + 3) / 4 * 4}}});
+    return make_glb(d, bin);
+  }
+};
+
+Built base_doc() {
+  Built b;
+  b.doc = {{"asset", {{"version", "2.0"}}}, {"scene", 0}, {"scenes", json::array({{{"nodes", {0}}}})},
+           {"nodes", json::array({{{"mesh", 0}}})}, {"bufferViews", json::array()}, {"accessors", json::array()}};
+  return b;
+}
+
+int float_accessor(Built& b, const std::vector<float>& v, const char* type, int comps, bool minmax = false) {
+  json a = {{"bufferView", b.view(bytes_of(v))}, {"componentType", 5126}, {"count", v.size() / std::size_t(comps)}, {"type", type}};
+  if (minmax) {
+    std::vector<float> lo(std::size_t(comps), 1e30f), hi(std::size_t(comps), -1e30f);
+    for (std::size_t i = 0; i < v.size(); ++i) lo[i % std::size_t(comps)] = std::min(lo[i % std::size_t(comps)], v[i]), hi[i % std::size_t(comps)] = std::max(hi[i % std::size_t(comps)], v[i]);
+    a["min"] = lo;
+    a["max"] = hi;
+  }
+  return b.accessor(a);
+}
+
+// Quad (0,0) (1,0) (1,1) (0,1) in z = 0 as two counter-clockwise triangles.
+const std::vector<float> kQuad = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+
+std::string quad_glb(int index_type, int mode = 4) {
+  Built b = base_doc();
+  const int pos = float_accessor(b, kQuad, "VEC3", 3, true);
+  const std::vector<std::uint32_t> tri = mode == 4 ? std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}
+                                         : mode == 5 ? std::vector<std::uint32_t>{1, 2, 0, 3}  // strip
+                                                     : std::vector<std::uint32_t>{0, 1, 2, 3};  // fan
+  std::string raw;
+  for (std::uint32_t i : tri) {
+    if (index_type == 5121) raw += char(i);
+    else if (index_type == 5123) { const std::uint16_t s = std::uint16_t(i); raw.append(reinterpret_cast<const char*>(&s), 2); }
+    else raw.append(reinterpret_cast<const char*>(&i), 4);
+  }
+  const int idx = b.accessor({{"bufferView", b.view(raw)}, {"componentType", index_type}, {"count", tri.size()}, {"type", "SCALAR"}});
+  b.doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", pos}}}, {"indices", idx}, {"mode", mode}}})}}});
+  return b.glb();
+}
+
+std::uint32_t u32_at(const std::string& s, std::size_t at) {
+  std::uint32_t v;
+  std::memcpy(&v, s.data() + at, 4);
+  return v;
+}
+
+json glb_json(const std::string& glb) { return json::parse(glb.substr(20, u32_at(glb, 12))); }
+
+// Signed area vector (z) of triangle t of a mesh in the plane z = 0.
+double triangle_z(const Mesh& m, std::size_t t) {
+  const Vec3d a = m.position(m.corner_vertex[3 * t]), b = m.position(m.corner_vertex[3 * t + 1]),
+              c = m.position(m.corner_vertex[3 * t + 2]);
+  return cross(b - a, c - a).z;
+}
+
+}  // namespace
+
+TEST_CASE("glTF read: every index type gives the same triangles", "[gltf]") {
+  for (int ct : {5121, 5123, 5125}) {
+    INFO("componentType " << ct);
+    const GltfDocument d = read_gltf(quad_glb(ct), "quad.glb");
+    REQUIRE(d.primitives.size() == 1);
+    const Mesh& m = d.primitives[0].mesh;
+    CHECK(m.num_vertices() == 4);
+    CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
+    CHECK(m.positions[3] == 1.0);
+  }
+}
+
+TEST_CASE("glTF read: strips and fans unroll to counter-clockwise triangles (spec 3.7.2.1)", "[gltf]") {
+  // Strip 1 2 0 3: triangles {1,2,0} and {2,3,0} (odd triangle order swapped); fan 0 1 2 3:
+  // {1,2,0} and {2,3,0}. Both cover the quad, both counter-clockwise seen from +z.
+  for (int mode : {5, 6}) {
+    INFO("mode " << mode);
+    const Mesh m = read_gltf(quad_glb(5123, mode), "q.glb").primitives[0].mesh;
+    REQUIRE(m.num_faces() == 2);
+    CHECK(triangle_z(m, 0) == Approx(1.0));
+    CHECK(triangle_z(m, 1) == Approx(1.0));
+  }
+}
+
+TEST_CASE("glTF read: interleaved, sparse and quantized accessors", "[gltf]") {
+  Built b = base_doc();
+  // Interleaved: x y z + one padding float (stride 16), vertex 2 replaced by a sparse value.
+  std::vector<float> inter;
+  for (std::size_t v = 0; v < 4; ++v) inter.insert(inter.end(), {kQuad[3 * v], kQuad[3 * v + 1], kQuad[3 * v + 2], 99.0f});
+  const int iv = b.view(bytes_of(inter), 16);
+  const int si = b.view(bytes_of(std::vector<std::uint16_t>{2}));
+  const int sv = b.view(bytes_of(std::vector<float>{2, 2, 0.5f}));
+  const int pos = b.accessor({{"bufferView", iv}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
+                              {"min", {0, 0, 0}}, {"max", {2, 2, 0.5}},
+                              {"sparse", {{"count", 1}, {"indices", {{"bufferView", si}, {"componentType", 5123}}},
+                                          {"values", {{"bufferView", sv}}}}}});
+  // Quantized: NORMAL as normalised BYTE (127 -> 1, -128 -> -1 clamped), 4-byte stride.
+  const std::string nb = std::string("\x00\x00\x7f\x00", 4) + std::string("\x00\x00\x80\x00", 4) + std::string("\x00\x40\x00\x00", 4) +
+                         std::string("\x7f\x00\x00\x00", 4);
+  const int nor = b.accessor({{"bufferView", b.view(nb, 4)}, {"componentType", 5120}, {"normalized", true}, {"count", 4}, {"type", "VEC3"}});
+  b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  b.doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", pos}, {"NORMAL", nor}}}}})}}});
+  // Non-indexed TRIANGLES need a multiple of 3 vertices: use mode 6 (fan over 4 vertices).
+  b.doc["meshes"][0]["primitives"][0]["mode"] = 6;
+  const Mesh m = read_gltf(b.glb(), "q.glb").primitives[0].mesh;
+  CHECK(m.position(1).x == 1.0);
+  CHECK(m.position(2).x == 2.0);  // sparse substitution
+  CHECK(m.position(2).z == 0.5);
+  CHECK(m.position(3).y == 1.0);  // stride skipped the padding float
+  CHECK(m.vertex_normals[2] == 1.0);
+  CHECK(m.vertex_normals[5] == -1.0);  // -128 / 127 clamped to -1 (spec)
+  CHECK(m.vertex_normals[7] == Approx(64.0 / 127.0));
+}
+
+TEST_CASE("glTF write: unchanged document writes the same data, a well-formed GLB", "[gltf][write]") {
+  const std::string in = quad_glb(5123);
+  const GltfDocument d = read_gltf(in, "q.glb");
+  GltfWriteResult r;
+  const std::string out = write_gltf(d, true, "out.glb", r);
+  // GLB layout (spec 5): magic, version 2, total length; JSON chunk first, 4-byte aligned and
+  // space-padded; BIN chunk second, 4-byte aligned.
+  REQUIRE(out.size() >= 28);
+  CHECK(out.substr(0, 4) == "glTF");
+  CHECK(u32_at(out, 4) == 2);
+  CHECK(u32_at(out, 8) == out.size());
+  const std::uint32_t jlen = u32_at(out, 12);
+  CHECK(jlen % 4 == 0);
+  CHECK(u32_at(out, 16) == 0x4E4F534Au);
+  CHECK(u32_at(out, 20 + jlen + 4) == 0x004E4942u);
+  CHECK(u32_at(out, 20 + jlen) % 4 == 0);
+  CHECK(20 + jlen + 8 + u32_at(out, 20 + jlen) == out.size());
+  // Nothing changed: no accessor added, the primitive's references as read, same mesh back.
+  const json jo = glb_json(out), ji = glb_json(in);
+  CHECK(jo["accessors"].size() == ji["accessors"].size());
+  CHECK(jo["meshes"] == ji["meshes"]);
+  CHECK(jo["buffers"][0].count("uri") == 0);
+  const GltfDocument back = read_gltf(out, "out.glb");
+  CHECK(back.primitives[0].mesh.positions == d.primitives[0].mesh.positions);
+  CHECK(back.primitives[0].mesh.corner_vertex == d.primitives[0].mesh.corner_vertex);
+}
+
+TEST_CASE("glTF write: new normals are a new float VEC3 accessor; corner normals split vertices", "[gltf][write]") {
+  GltfDocument d = read_gltf(quad_glb(5123), "q.glb");
+  Mesh& m = d.primitives[0].mesh;
+  m.vertex_normals.assign(12, 0.0);
+  for (std::size_t v = 0; v < 4; ++v) m.vertex_normals[3 * v + 2] = 1.0;
+  GltfWriteResult r;
+  json j = glb_json(write_gltf(d, true, "o.glb", r));
+  const json& prim = j["meshes"][0]["primitives"][0];
+  REQUIRE(prim["attributes"].contains("NORMAL"));
+  const json& na = j["accessors"][prim["attributes"]["NORMAL"].get<std::size_t>()];
+  CHECK(na["componentType"] == 5126);
+  CHECK(na["type"] == "VEC3");
+  CHECK(na["count"] == 4);
+  CHECK(prim["indices"] == 1);  // faces unchanged: the indices as read
+
+  // Corner normals, one per face: vertices 0 and 2 are shared by both faces and split.
+  m.vertex_normals.clear();
+  m.corner_normals = {0, 0, 1, 0, 0, -1};
+  m.corner_normal_index = {0, 0, 0, 1, 1, 1};
+  const GltfDocument back = read_gltf(write_gltf(d, true, "o.glb", r), "o.glb");
+  const Mesh& bm = back.primitives[0].mesh;
+  CHECK(bm.num_vertices() == 6);
+  CHECK(r.split_vertices == 2);
+  for (std::size_t c = 0; c < 6; ++c) CHECK(bm.vertex_normals[3 * bm.corner_vertex[c] + 2] == (c < 3 ? 1.0 : -1.0));
+}
+
+TEST_CASE("glTF write: .gltf text output embeds the buffer as a data URI and reads back", "[gltf][write]") {
+  const GltfDocument d = read_gltf(quad_glb(5125), "q.glb");
+  GltfWriteResult r;
+  const std::string text = write_gltf(d, false, "o.gltf", r);
+  const json j = json::parse(text);
+  REQUIRE(j["buffers"].size() == 1);
+  CHECK(j["buffers"][0]["uri"].get<std::string>().rfind("data:application/octet-stream;base64,", 0) == 0);
+  CHECK(read_gltf(text, "o.gltf").primitives[0].mesh.corner_vertex == d.primitives[0].mesh.corner_vertex);
+}
+
+TEST_CASE("glTF transform: TANGENT by A, renormalised, w flipped under a mirror", "[gltf][transform]") {
+  GltfPrimitive p;
+  p.mesh.positions = {0, 0, 0};
+  p.tangents = {1, 0, 0, 1, 0, 1, 0, -1};
+  p.targets.resize(1);
+  p.targets[0].position_deltas = {1, 2, 3, 0, 0, 0};
+  Affine3d M;
+  M.A = Mat3d::diagonal(-2, 3, 1);  // a mirror (det -6)
+  M.t = {5, 5, 5};                  // translation does not act on vectors
+  const GltfTransformReport rep = transform_gltf_extras(p, M, false);
+  CHECK(rep.tangents == 2);
+  CHECK(p.tangents == std::vector<double>{-1, 0, 0, -1, 0, 1, 0, 1});
+  CHECK(p.targets[0].position_deltas == std::vector<double>{-2, 6, 3, 0, 0, 0});
+}
+
+TEST_CASE("glTF lights: KHR_lights_punctual and the first camera in world space", "[gltf][lighting]") {
+  Built b = base_doc();
+  const int pos = float_accessor(b, kQuad, "VEC3", 3, true);
+  b.doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", pos}}}, {"mode", 6}}})}}});
+  // Node 0: the mesh, translated by (1,2,3). Node 1: a sun rotated 90 degrees about +x (its -Z
+  // becomes +Y... R_x(90) (0,0,-1) = (0,1,0)). Node 2: a point lamp at (0,4,0). Node 3: camera at
+  // (0,0,10).
+  const double h = std::sqrt(0.5);
+  b.doc["nodes"] = json::array({{{"mesh", 0}, {"translation", {1, 2, 3}}},
+                                {{"rotation", {h, 0, 0, h}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+                                {{"translation", {0, 4, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}},
+                                {{"camera", 0}, {"translation", {0, 0, 10}}}});
+  b.doc["scenes"] = json::array({{{"nodes", {0, 1, 2, 3}}}});
+  b.doc["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 1}, {"znear", 0.1}}}}});
+  b.doc["extensions"] = {{"KHR_lights_punctual", {{"lights", json::array({{{"type", "directional"}, {"intensity", 3}},
+                                                                          {{"type", "spot"}, {"color", {1, 0.5, 0}},
+                                                                           {"spot", {{"outerConeAngle", kPi / 6}}}}})}}}};
+  b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  const GltfDocument d = read_gltf(b.glb(), "l.glb");
+  std::vector<std::string> notes;
+  const Scene s = gltf_scene(d, d.primitives[0], notes);
+  CHECK(s.world_from_object.t.x == 1.0);
+  CHECK(s.world_from_object.t.z == 3.0);
+  REQUIRE(s.lights.size() == 2);
+  CHECK(s.lights[0].type == LightType::Directional);
+  CHECK(s.lights[0].direction.y == Approx(1.0));
+  CHECK(s.lights[0].direction.z == Approx(0.0).margin(1e-12));
+  CHECK(s.lights[0].diffuse.x == 3.0);
+  CHECK(s.lights[1].type == LightType::Spot);
+  CHECK(s.lights[1].position.y == 4.0);
+  CHECK(s.lights[1].cutoff_degrees == Approx(30.0));
+  CHECK(s.lights[1].attenuation.z == 1.0);  // inverse square
+  CHECK(s.lights[1].attenuation.x == 0.0);
+  CHECK(s.lights[1].diffuse.y == 0.5);
+  REQUIRE(s.has_camera);
+  CHECK(s.camera_from_world.t.z == -10.0);  // the eye at (0,0,10) maps to the origin
+}
+
+TEST_CASE("glTF bad input: one message naming the JSON path", "[gltf][bad]") {
+  std::string glb = quad_glb(5123);
+  json j = glb_json(glb);
+  std::string bin = glb.substr(20 + u32_at(glb, 12) + 8);
+  SECTION("index out of range") {
+    std::vector<std::uint16_t> idx = {0, 1, 2, 0, 2, 9};
+    std::memcpy(&bin[48], idx.data(), 12);
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }),
+               Catch::Contains("x.glb: meshes[0].primitives[0].indices: index 9"));
+  }
+  SECTION("accessor beyond its view") {
+    j["accessors"][0]["count"] = 5;
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }), Catch::Contains("x.glb: accessors[0]"));
+  }
+  SECTION("indices of a float type") {
+    j["accessors"][1]["componentType"] = 5126;
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }), Catch::Contains("accessors[1].componentType"));
+  }
+  SECTION("a node that is its own ancestor") {
+    j["nodes"] = json::array({{{"children", {1}}}, {{"children", {0}}}});
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }), Catch::Contains("x.glb: nodes["));
+  }
+  SECTION("Inf in POSITION") {
+    const float inf = std::numeric_limits<float>::infinity();
+    std::memcpy(&bin[12], &inf, 4);
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }),
+               Catch::Contains("meshes[0].primitives[0].attributes.POSITION: vertex 1"));
+  }
+}
+
+TEST_CASE("glTF morph targets: NORMAL deltas from displaced positions", "[gltf][normals]") {
+  // A unit right triangle in z = 0 (normal +z). Target 0 translates it (normal unchanged: delta
+  // 0); target 1 lifts vertex 1 to z = 1, tilting the plane to normal (-1, 0, 1)/sqrt 2 at every
+  // vertex of the single face.
+  GltfPrimitive p;
+  p.mesh.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  p.mesh.add_face({0, 1, 2});
+  p.mesh.vertex_normals = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  p.targets.resize(2);
+  p.targets[0].position_deltas = {5, 5, 5, 5, 5, 5, 5, 5, 5};
+  p.targets[1].position_deltas = {0, 0, 0, 0, 0, 1, 0, 0, 0};
+  // The "normals computation": the face normal at every vertex (one face; exact).
+  auto face_normal = [](Mesh& m) {
+    const Vec3d a = m.position(0), b = m.position(1), c = m.position(2);
+    const Vec3d n = cross(b - a, c - a);
+    const double l = length(n);
+    m.vertex_normals.clear();
+    for (int v = 0; v < 3; ++v) m.vertex_normals.insert(m.vertex_normals.end(), {n.x / l, n.y / l, n.z / l});
+  };
+  CHECK(recompute_morph_normal_deltas(p, face_normal) == 2);
+  for (double d : p.targets[0].normal_deltas) CHECK(d == Approx(0.0).margin(1e-15));
+  const double h = std::sqrt(0.5);
+  for (int v = 0; v < 3; ++v) {
+    CHECK(p.targets[1].normal_deltas[3 * v] == Approx(-h));
+    CHECK(p.targets[1].normal_deltas[3 * v + 1] == Approx(0.0).margin(1e-15));
+    CHECK(p.targets[1].normal_deltas[3 * v + 2] == Approx(h - 1));
+  }
+  // Corner normals: nothing recomputed (the caller says so).
+  p.mesh.corner_normal_index = {0, 0, 0};
+  p.mesh.corner_normals = {0, 0, 1};
+  CHECK(recompute_morph_normal_deltas(p, face_normal) == 0);
+}
