@@ -293,8 +293,11 @@ computes on the same Mesh (the library reads it without the GIL).
       py::arg("path"), py::arg("format") = "", R"doc(
 read_mesh(path, format="") -> Mesh
 
-Reads an OBJ, PLY, OFF or STL file (format from the extension unless given: "obj", "ply", "off",
-"stl") with the library's readers: nothing read is dropped (polygons, normals, colours, quality).
+Reads an OBJ, PLY, OFF, STL or glTF 2.0 file (format from the extension unless given: "obj",
+"ply", "off", "stl", "gltf"/"glb") with the library's readers: nothing read is dropped (polygons,
+normals, colours, quality). A glTF file's triangle primitives come as one mesh, each in its own
+object space (node transforms not applied); the command line processes them one by one and keeps
+the rest of the document.
 FileNotFoundError when the file does not exist; ValueError with the reader's `FILE:LINE: what`
 message for bad content.
 )doc");
