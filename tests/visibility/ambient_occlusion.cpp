@@ -31,6 +31,11 @@ void require_fully_open(const Mesh& mesh, const std::vector<double>& normals, st
   REQUIRE(ao.rays == std::uint64_t(mesh.num_vertices()) * samples);
   REQUIRE(ao.hits == 0);
   for (float v : ao.open_fraction) REQUIRE(v == 1.0f);
+  // The same normals rounded to float (what the CLI keeps when it computes them): still no hit.
+  const AmbientOcclusion af =
+      ambient_occlusion_per_vertex(scene, mesh, std::vector<float>(normals.begin(), normals.end()), o);
+  REQUIRE(af.skipped == 0);
+  REQUIRE(af.hits == 0);
 }
 
 std::vector<double> flat(const std::vector<Vec3d>& v) {
@@ -152,6 +157,9 @@ TEST_CASE("The inside corner of a cube has open fraction sqrt(3)/4", "[visibilit
     axis[3 * 7 + 2] = 1;  // vertex 7 is unused by the walls: any axis
     const AmbientOcclusion av = ambient_occlusion_per_vertex(scene, m, axis, o);
     REQUIRE(av.open_fraction[0] == Approx(truth).margin(2e-3));
+    // The axis rounded to float (as the CLI keeps computed normals): the same bound holds.
+    const AmbientOcclusion af = ambient_occlusion_per_vertex(scene, m, std::vector<float>(axis.begin(), axis.end()), o);
+    REQUIRE(af.open_fraction[0] == Approx(truth).margin(2e-3));
   }
   SECTION("closed cube: open only within a distance shorter than the walls") {
     const Mesh m = unit_cube(false);
