@@ -178,6 +178,7 @@ TEST_CASE("Ambient occlusion is the same bits for 1 and 2 threads and for repeat
   Mesh m = am.mesh;
   add_polygon(m, disc_polygon(1.2, 0.3, 64));  // an occluder over the torus: real concavities
   const std::vector<double> n = vertex_normals(m).normals;
+  const std::vector<float> n_float(n.begin(), n.end());  // the CLI's computed normals
   AmbientOcclusionOptions o;
   o.samples = 32;
   auto run = [&](int threads) {
@@ -185,8 +186,10 @@ TEST_CASE("Ambient occlusion is the same bits for 1 and 2 threads and for repeat
     const VisibilityScene scene(m);
     AmbientOcclusion a = ambient_occlusion_per_vertex(scene, m, n, o);
     AmbientOcclusion f = ambient_occlusion_per_face(scene, m, o);
+    AmbientOcclusion v = ambient_occlusion_per_vertex(scene, m, n_float, o);
     a.open_fraction.insert(a.open_fraction.end(), f.open_fraction.begin(), f.open_fraction.end());
-    a.hits += f.hits;
+    a.open_fraction.insert(a.open_fraction.end(), v.open_fraction.begin(), v.open_fraction.end());
+    a.hits += f.hits + v.hits;
     return a;
   };
   const AmbientOcclusion one = run(1), two = run(2), again = run(2);
