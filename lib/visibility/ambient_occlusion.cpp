@@ -94,9 +94,11 @@ AmbientOcclusion run(const VisibilityScene& scene, std::size_t count, std::uint3
 
 }  // namespace
 
-AmbientOcclusion ambient_occlusion_per_vertex(const VisibilityScene& scene, const Mesh& mesh,
-                                              const std::vector<double>& vertex_normals,
-                                              const AmbientOcclusionOptions& options) {
+namespace {
+
+template <class Real>
+AmbientOcclusion per_vertex(const VisibilityScene& scene, const Mesh& mesh, const std::vector<Real>& vertex_normals,
+                            const AmbientOcclusionOptions& options) {
   const std::size_t nv = mesh.num_vertices();
   if (vertex_normals.size() != 3 * nv)
     throw Error("ambient occlusion: " + std::to_string(vertex_normals.size() / 3) + " normals for " +
@@ -104,10 +106,25 @@ AmbientOcclusion ambient_occlusion_per_vertex(const VisibilityScene& scene, cons
   const std::vector<float>& local = scene.impl().vertices;
   if (local.size() != 3 * nv + 1) throw Error("ambient occlusion: the scene was built from another mesh");
   return run(scene, nv, kVertexSalt, options, [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
-    if (!is_finite(mesh.position(v)) || !unit_axis(get3(vertex_normals, v), n)) return false;
+    const Vec3d axis{double(vertex_normals[3 * v]), double(vertex_normals[3 * v + 1]), double(vertex_normals[3 * v + 2])};
+    if (!is_finite(mesh.position(v)) || !unit_axis(axis, n)) return false;
     p = {local[3 * v], local[3 * v + 1], local[3 * v + 2]};  // the BVH's own vertex
     return is_finite(Vec3f((mesh.position(v) - scene.centre()) * scene.scale()));  // else: far isolated
   });
+}
+
+}  // namespace
+
+AmbientOcclusion ambient_occlusion_per_vertex(const VisibilityScene& scene, const Mesh& mesh,
+                                              const std::vector<double>& vertex_normals,
+                                              const AmbientOcclusionOptions& options) {
+  return per_vertex(scene, mesh, vertex_normals, options);
+}
+
+AmbientOcclusion ambient_occlusion_per_vertex(const VisibilityScene& scene, const Mesh& mesh,
+                                              const std::vector<float>& vertex_normals,
+                                              const AmbientOcclusionOptions& options) {
+  return per_vertex(scene, mesh, vertex_normals, options);
 }
 
 AmbientOcclusion ambient_occlusion_per_face(const VisibilityScene& scene, const Mesh& mesh,

@@ -15,7 +15,11 @@
 //
 // Inputs:  scene    the mesh's VisibilityScene
 //          mesh     the same mesh (per vertex / per face)
-//          vertex_normals  #V by 3, the hemisphere's axis (need not be unit; normalised here)
+//          vertex_normals  #V by 3, the hemisphere's axis (need not be unit; normalised here in
+//                   double), as doubles or as floats: a caller that computes normals only for this
+//                   keeps them in 12 B per vertex instead of 24 (the CLI: bench/visibility/results.md,
+//                   memory). A float axis is a different axis in its last bits, so some rays' float
+//                   directions, and with them a few hits, differ from the double axis's.
 //          points, normals  #P by 3 each, world space (ambient_occlusion_at_points)
 //          ids      #P seeds' ids (empty: the point's index)
 //          options  samples N >= 1; max_distance D > 0 in world units (default +inf: any hit
@@ -57,6 +61,10 @@ struct AmbientOcclusion {
 
 AmbientOcclusion ambient_occlusion_per_vertex(const VisibilityScene& scene, const Mesh& mesh,
                                               const std::vector<double>& vertex_normals,
+                                              const AmbientOcclusionOptions& options = {});
+
+AmbientOcclusion ambient_occlusion_per_vertex(const VisibilityScene& scene, const Mesh& mesh,
+                                              const std::vector<float>& vertex_normals,
                                               const AmbientOcclusionOptions& options = {});
 
 AmbientOcclusion ambient_occlusion_per_face(const VisibilityScene& scene, const Mesh& mesh,

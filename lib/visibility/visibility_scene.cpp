@@ -104,6 +104,9 @@ VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl
     stats_.triangles = s.triangles.size() / 3;
   }
   stats_.buffer_bytes = s.vertices.size() * sizeof(float) + s.triangles.size() * sizeof(std::uint32_t);
+  // The kept faces' list (4 B per face) is done with: freed before Embree's build, whose end is
+  // the command's peak memory (bench/visibility/results.md).
+  std::vector<std::uint32_t>().swap(kept);
 
   // 4. Embree: one device per scene (its memory monitor then counts this scene alone).
   s.device = rtcNewDevice(nullptr);

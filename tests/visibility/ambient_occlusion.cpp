@@ -31,6 +31,11 @@ void require_fully_open(const Mesh& mesh, const std::vector<double>& normals, st
   REQUIRE(ao.rays == std::uint64_t(mesh.num_vertices()) * samples);
   REQUIRE(ao.hits == 0);
   for (float v : ao.open_fraction) REQUIRE(v == 1.0f);
+  // The same normals rounded to float (what the CLI keeps when it computes them): still no hit.
+  const AmbientOcclusion af =
+      ambient_occlusion_per_vertex(scene, mesh, std::vector<float>(normals.begin(), normals.end()), o);
+  REQUIRE(af.skipped == 0);
+  REQUIRE(af.hits == 0);
 }
 
 std::vector<double> flat(const std::vector<Vec3d>& v) {
@@ -152,6 +157,9 @@ TEST_CASE("The inside corner of a cube has open fraction sqrt(3)/4", "[visibilit
     axis[3 * 7 + 2] = 1;  // vertex 7 is unused by the walls: any axis
     const AmbientOcclusion av = ambient_occlusion_per_vertex(scene, m, axis, o);
     REQUIRE(av.open_fraction[0] == Approx(truth).margin(2e-3));
+    // The axis rounded to float (as the CLI keeps computed normals): the same bound holds.
+    const AmbientOcclusion af = ambient_occlusion_per_vertex(scene, m, std::vector<float>(axis.begin(), axis.end()), o);
+    REQUIRE(af.open_fraction[0] == Approx(truth).margin(2e-3));
   }
   SECTION("closed cube: open only within a distance shorter than the walls") {
     const Mesh m = unit_cube(false);
@@ -170,6 +178,7 @@ TEST_CASE("Ambient occlusion is the same bits for 1 and 2 threads and for repeat
   Mesh m = am.mesh;
   add_polygon(m, disc_polygon(1.2, 0.3, 64));  // an occluder over the torus: real concavities
   const std::vector<double> n = vertex_normals(m).normals;
+  const std::vector<float> n_float(n.begin(), n.end());  // the CLI's computed normals
   AmbientOcclusionOptions o;
   o.samples = 32;
   auto run = [&](int threads) {
@@ -177,8 +186,10 @@ TEST_CASE("Ambient occlusion is the same bits for 1 and 2 threads and for repeat
     const VisibilityScene scene(m);
     AmbientOcclusion a = ambient_occlusion_per_vertex(scene, m, n, o);
     AmbientOcclusion f = ambient_occlusion_per_face(scene, m, o);
+    AmbientOcclusion v = ambient_occlusion_per_vertex(scene, m, n_float, o);
     a.open_fraction.insert(a.open_fraction.end(), f.open_fraction.begin(), f.open_fraction.end());
-    a.hits += f.hits;
+    a.open_fraction.insert(a.open_fraction.end(), v.open_fraction.begin(), v.open_fraction.end());
+    a.hits += f.hits + v.hits;
     return a;
   };
   const AmbientOcclusion one = run(1), two = run(2), again = run(2);
