@@ -13,8 +13,6 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
-#include <shadetool/normals/invalid_normals.h>
-#include <shadetool/normals/vertex_normals.h>
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
 
@@ -70,37 +68,11 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           shadetool::require_finite_positions(mesh, input);
           // Normals pass through to the output: none may carry NaN or Inf into it.
           shadetool::require_finite_normals(mesh, input, "fix them first (`shadetool normals --recompute` or `shadetool repair`)");
-          shadetool::AmbientOcclusion ao;
-          shadetool::VisibilitySceneStats s;
-          {
-            // The normals (when computed), the BVH and its buffers live in this block only: they are
-            // freed before the outputs are made. Computed normals are kept in float (12 B per vertex,
-            // not 24) and the doubles are freed before the BVH is built, so they never coexist with it
-            // (peak memory, bench/visibility/results.md).
-            std::vector<float> computed;
-            if (!per_face && mesh.has_vertex_normals()) {
-              const std::size_t invalid = shadetool::count_invalid_normals(mesh.vertex_normals);
-              if (invalid > 0)
-                throw shadetool::Error(shadetool::located(
-                    input, 0,
-                    fmt::format("{} of {} vertex normals are invalid (NaN, Inf or zero length); they give the "
-                                "hemisphere's axis: use `shadetool normals --recompute` first",
-                                invalid, mesh.num_vertices())));
-            } else if (!per_face) {
-              // No normals given: the library's angle-weighted vertex normals (not written out).
-              const std::vector<double> normals = shadetool::vertex_normals(mesh).normals;
-              computed.assign(normals.begin(), normals.end());  // unit, rounded once to float
-              r.stats["normals"] = "computed (angle-weighted)";
-            }
-            const shadetool::VisibilityScene scene(mesh);
-            if (per_face)
-              ao = shadetool::ambient_occlusion_per_face(scene, mesh, options);
-            else
-              ao = mesh.has_vertex_normals()
-                       ? shadetool::ambient_occlusion_per_vertex(scene, mesh, mesh.vertex_normals, options)
-                       : shadetool::ambient_occlusion_per_vertex(scene, mesh, computed, options);
-            s = scene.stats();
-          }
+          // The normals (when computed) and the BVH are freed inside: the outputs are made after.
+          const shadetool::MeshOcclusion job = shadetool::mesh_occlusion(mesh, per_face, options, input);
+          const shadetool::AmbientOcclusion& ao = job.ao;
+          const shadetool::VisibilitySceneStats& s = job.scene;
+          if (job.normals_computed) r.stats["normals"] = "computed (angle-weighted)";
           const char* what = per_face ? "face" : "vertex";
           if (colors) {
             if (per_face ? mesh.has_face_colors() : mesh.has_vertex_colors())

@@ -146,19 +146,7 @@ positions or normals.
           shadetool::require_faces(*mesh, "occlusion: F");
           shadetool::require_finite_positions(*mesh, "occlusion: V");
           shadetool::require_finite_normals(*mesh, "occlusion: N", "recompute them (vertex_normals) or repair first");
-          const shadetool::VisibilityScene scene(*mesh);
-          if (per_face) {
-            ao = shadetool::ambient_occlusion_per_face(scene, *mesh, options);
-          } else if (mesh->has_vertex_normals()) {
-            const std::size_t invalid = shadetool::count_invalid_normals(mesh->vertex_normals);
-            if (invalid > 0)
-              throw shadetool::Error("occlusion: N: " + std::to_string(invalid) + " of " +
-                                     std::to_string(mesh->num_vertices()) +
-                                     " vertex normals are invalid (NaN, Inf or zero length); they give the hemisphere's axis");
-            ao = shadetool::ambient_occlusion_per_vertex(scene, *mesh, mesh->vertex_normals, options);
-          } else {
-            ao = shadetool::ambient_occlusion_per_vertex(scene, *mesh, shadetool::vertex_normals(*mesh).normals, options);
-          }
+          ao = shadetool::mesh_occlusion(*mesh, per_face, options, "occlusion: N").ao;
         }
         const py::ssize_t rows = py::ssize_t(ao.open_fraction.size());
         return to_numpy(std::move(ao.open_fraction), {rows});

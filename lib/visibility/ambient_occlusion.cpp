@@ -7,6 +7,8 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/invalid_normals.h>
+#include <shadetool/normals/vertex_normals.h>
 #include <shadetool/visibility/engine/embree_scene.h>
 #include <shadetool/visibility/engine/point_ranges.h>
 #include <shadetool/visibility/ray_offset.h>
@@ -156,6 +158,33 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
     p = local[i];
     return unit_axis(get3(normals, i), axis);
   });
+}
+
+MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclusionOptions& options,
+                             const std::string& source) {
+  MeshOcclusion out;
+  std::vector<float> computed;
+  if (!per_face && mesh.has_vertex_normals()) {
+    const std::size_t invalid = count_invalid_normals(mesh.vertex_normals);
+    if (invalid > 0)
+      throw Error(located(source, 0,
+                          std::to_string(invalid) + " of " + std::to_string(mesh.num_vertices()) +
+                              " vertex normals are invalid (NaN, Inf or zero length); they give the hemisphere's "
+                              "axis: recompute them first (`shadetool normals --recompute`, or normals/vertex_normals.h)"));
+  } else if (!per_face) {
+    const std::vector<double> normals = vertex_normals(mesh).normals;
+    computed.assign(normals.begin(), normals.end());  // unit, rounded once to float
+    out.normals_computed = true;
+  }
+  const VisibilityScene scene(mesh);
+  if (per_face)
+    out.ao = ambient_occlusion_per_face(scene, mesh, options);
+  else if (out.normals_computed)
+    out.ao = ambient_occlusion_per_vertex(scene, mesh, computed, options);
+  else
+    out.ao = ambient_occlusion_per_vertex(scene, mesh, mesh.vertex_normals, options);
+  out.scene = scene.stats();
+  return out;
 }
 
 }  // namespace shadetool

@@ -38,6 +38,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
@@ -74,6 +75,21 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
                                              const std::vector<double>& normals,
                                              const std::vector<std::uint64_t>& ids,
                                              const AmbientOcclusionOptions& options = {});
+
+// The whole job of `shadetool occlusion` and Python's `shadetool.occlusion`, in one place. Per face;
+// or per vertex about the mesh's own vertex normals (Error "SOURCE: K of V vertex normals are
+// invalid ..." when any is NaN, Inf or zero: they are the hemispheres' axes) or, when it has none,
+// the library's angle-weighted normals (normals/vertex_normals.h) rounded once to float and their
+// double copy freed before the BVH is built (peak memory: bench/visibility/results.md). The BVH
+// and the computed normals are freed before it returns.
+struct MeshOcclusion {
+  AmbientOcclusion ao;
+  VisibilitySceneStats scene;    // the BVH's size; faces left out of it
+  bool normals_computed = false;  // per vertex, without vertex normals in the mesh
+};
+
+MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclusionOptions& options,
+                             const std::string& source);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

@@ -201,6 +201,38 @@ TEST_CASE("Ambient occlusion is the same bits for 1 and 2 threads and for repeat
   REQUIRE(one.hits == two.hits);
 }
 
+TEST_CASE("mesh_occlusion: the mesh's normals, else computed ones in float; invalid normals name the source",
+          "[visibility][ao]") {
+  AnalyticMesh am = torus(48, 24, 1.0, 0.45);
+  Mesh m = am.mesh;
+  add_polygon(m, disc_polygon(1.2, 0.3, 32));
+  AmbientOcclusionOptions o;
+  o.samples = 16;
+  const std::vector<double> n = vertex_normals(m).normals;
+  const VisibilityScene scene(m);
+  const AmbientOcclusion by_float = ambient_occlusion_per_vertex(scene, m, std::vector<float>(n.begin(), n.end()), o);
+  const AmbientOcclusion by_face = ambient_occlusion_per_face(scene, m, o);
+
+  const MeshOcclusion computed = mesh_occlusion(m, false, o, "knot.ply");  // m has no vertex normals
+  REQUIRE(computed.normals_computed);
+  REQUIRE(computed.ao.hits > 0);
+  REQUIRE(computed.ao.open_fraction == by_float.open_fraction);
+  REQUIRE(computed.scene.faces_used == m.num_faces());
+  const MeshOcclusion faces = mesh_occlusion(m, true, o, "knot.ply");
+  REQUIRE_FALSE(faces.normals_computed);
+  REQUIRE(faces.ao.open_fraction == by_face.open_fraction);
+
+  Mesh given = m;
+  given.vertex_normals = n;
+  const MeshOcclusion own = mesh_occlusion(given, false, o, "knot.ply");
+  REQUIRE_FALSE(own.normals_computed);
+  REQUIRE(own.ao.open_fraction == ambient_occlusion_per_vertex(scene, m, n, o).open_fraction);
+
+  given.vertex_normals[3] = given.vertex_normals[4] = given.vertex_normals[5] = 0;  // vertex 1: zero length
+  REQUIRE_THROWS_WITH(mesh_occlusion(given, false, o, "knot.ply"),
+                      Catch::StartsWith("knot.ply: 1 of " + std::to_string(m.num_vertices()) + " vertex normals are invalid"));
+}
+
 TEST_CASE("Polygons are fanned for the BVH only, degenerate faces take no part, non-manifold edges work",
           "[visibility][ao]") {
   // Three fins on one spine (a non-manifold edge) standing on a floor of quads.
