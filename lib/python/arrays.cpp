@@ -332,9 +332,15 @@ FaceArrays faces_in_place_or_copied(py::handle F, const std::string& what, std::
     if (starts[0] != 0) bad(what + "[1] (offsets)", "must start at 0, got " + std::to_string(starts[0]));
     if (starts[faces] != corners)
       bad(what + "[1] (offsets)", "must end at len(indices) = " + std::to_string(corners) + ", got " + std::to_string(starts[faces]));
-    for (std::size_t f = 0; f < faces; ++f)
+    // Faces of fewer than 3 corners are refused, as the file readers refuse them (and a mix of
+    // them with larger faces could otherwise total 3 corners per face and pass for triangles).
+    for (std::size_t f = 0; f < faces; ++f) {
       if (starts[f + 1] < starts[f])
         bad(what + "[1] (offsets)", "must be non-decreasing (offsets[" + std::to_string(f + 1) + "] < offsets[" + std::to_string(f) + "])");
+      if (starts[f + 1] - starts[f] < 3)
+        bad(what + "[1] (offsets)", "face " + std::to_string(f) + " has " + std::to_string(starts[f + 1] - starts[f]) +
+                                        " corners (a face needs at least 3)");
+    }
     out.corners = indices(index_array, corners, 1, n, storage.corner_vertex, what + "[0] (indices)", bad_count);
     if (bad_count > 0) index_error(index_array, corners, 1, bad_count, "indices");
     out.face_start = starts;
@@ -344,8 +350,8 @@ FaceArrays faces_in_place_or_copied(py::handle F, const std::string& what, std::
     return out;
   }
   py::array a = as_array(F, what);
-  if (a.ndim() != 2 || a.shape(1) < 1)
-    bad(what, "must have shape (m, k) (k corners per face; triangles: (m, 3)) or be a tuple (indices, offsets), got shape " +
+  if (a.ndim() != 2 || a.shape(1) < 3)
+    bad(what, "must have shape (m, k) (k >= 3 corners per face; triangles: (m, 3)) or be a tuple (indices, offsets), got shape " +
                   shape_text(a));
   const std::size_t faces = std::size_t(a.shape(0)), k = std::size_t(a.shape(1));
   if (faces * k > kMaxIndex) bad(what, std::to_string(faces * k) + " corners: more than the library's 2^32 - 1");

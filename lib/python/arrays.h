@@ -7,10 +7,10 @@
 // positions, std::vector<uint32_t> corners and face starts), so V and F are copied ONCE into it,
 // converted on the way:
 //   V  (n, 3) float64 or float32, any strides (float32 widened exactly; no intermediate copy)
-//   F  (m, k) integer array of any integer dtype (int32, int64, uint32, ...): m faces of k >= 1
+//   F  (m, k) integer array of any integer dtype (int32, int64, uint32, ...): m faces of k >= 3
 //      corners each (triangles: k = 3), any strides; or a pair (indices, offsets): C corner indices
-//      and m + 1 non-decreasing offsets from 0 to C, face f using indices[offsets[f]:offsets[f+1]]
-//      (polygons of mixed sizes). Every index is checked: 0 <= i < n, else ValueError naming the
+//      and m + 1 offsets from 0 to C, face f using indices[offsets[f]:offsets[f+1]], at least 3
+//      (polygons of mixed sizes; fewer than 3 corners is refused, as the file readers refuse it). Every index is checked: 0 <= i < n, else ValueError naming the
 //      face and corner. n and C must fit the library's uint32 indices.
 // A Python list or other sequence is first turned into an array by numpy.asarray (a copy).
 // The copy and the index check run with the GIL released: contiguous aligned arrays in one

@@ -107,3 +107,15 @@ def test_results_outlive_the_arrays_they_were_computed_from():
     V[:] = np.nan  # the result is its own memory, not a view of V
     del V, F
     assert same_bits(N, expected)
+
+
+def test_faces_of_fewer_than_3_corners_are_refused_as_the_readers_refuse_them():
+    # A quad and a 2-corner face total 6 corners = 3 per face: taken as two triangles, the second
+    # would get the normal of (3, 0, 4) (it did before this check). The file readers refuse such
+    # faces; so do the arrays.
+    V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64)
+    for fn in (shadetool.face_normals, shadetool.vertex_normals):
+        with pytest.raises(ValueError, match=r"offsets\): face 1 has 2 corners \(a face needs at least 3\)"):
+            fn(V, (np.array([0, 1, 2, 3, 0, 4], dtype=np.int32), np.array([0, 4, 6], dtype=np.int32)))
+        with pytest.raises(ValueError, match=r"must have shape \(m, k\) \(k >= 3"):
+            fn(V, np.array([[0, 1], [1, 2]], dtype=np.int32))
