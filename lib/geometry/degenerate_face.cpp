@@ -43,10 +43,12 @@ DegenerateKind face_degenerate_kind(const Mesh& mesh, std::size_t f, std::vector
 }
 
 DegenerateKind face_area_kind(const Mesh& mesh, std::size_t f) {
-  const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1], n = e - b;
-  const std::uint32_t* cv = mesh.corner_vertex.data() + b;
+  const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
+  return face_area_kind(mesh.positions.data(), mesh.corner_vertex.data() + b, e - b);
+}
+
+DegenerateKind face_area_kind(const double* P, const std::uint32_t* cv, std::uint32_t n) {
   if (n < 3) return DegenerateKind::TooFewCorners;
-  const double* P = mesh.positions.data();
   if (n == 3) return triangle_degenerate_kind(P, cv[0], cv[1], cv[2]);
   // Polygon: Newell's sum about p0 against the bound its rounding scales with.
   const Vec3d p0 = load_position(P, cv[0]);
@@ -59,7 +61,7 @@ DegenerateKind face_area_kind(const Mesh& mesh, std::size_t f) {
     finite = finite && is_finite(prev) && is_finite(cur);
     prev = cur;
   }
-  const double area = length(newell_area_vector(mesh, f));
+  const double area = length(newell_area_vector(P, cv, n));
   if (!finite || !std::isfinite(area) || !std::isfinite(bound)) return DegenerateKind::NonFinite;
   return area <= kDegenerateTolerance * bound ? DegenerateKind::ZeroArea : DegenerateKind::None;
 }

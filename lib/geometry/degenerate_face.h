@@ -95,6 +95,8 @@ DegenerateKind face_degenerate_kind(const Mesh& mesh, std::size_t f);
 // it and repair removes it, but when it still has area its normal is well defined and it
 // contributes to its vertices' normals. A face without area is degenerate for all three.
 DegenerateKind face_area_kind(const Mesh& mesh, std::size_t f);
+// The same for the face whose corner list is corners[0 .. n) (vertex indices into positions).
+DegenerateKind face_area_kind(const double* positions, const std::uint32_t* corners, std::uint32_t n);
 
 // Whether a polygon's corner list uses one vertex twice.
 bool has_repeated_index(const std::uint32_t* corner_vertex, std::uint32_t n, std::vector<std::uint32_t>& scratch);

@@ -84,18 +84,23 @@ SHADETOOL_INLINE TriangleAreaVector triangle_area_vector(const double* positions
 
 // Newell's method about p_0: N = sum_i (p_i - p_0) x (p_{i+1} - p_0) = 2 A n for a planar
 // polygon; for a non-planar one, the normal of the plane that best fits its projected areas.
-inline Vec3d newell_area_vector(const Mesh& mesh, std::size_t f) {
-  const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1];
-  Vec3d n{};
-  if (end - begin < 3) return n;
-  const Vec3d p0 = load_position(mesh.positions.data(), mesh.corner_vertex[begin]);
-  Vec3d prev = load_position(mesh.positions.data(), mesh.corner_vertex[begin + 1]) - p0;
-  for (std::uint32_t c = begin + 2; c < end; ++c) {
-    const Vec3d cur = load_position(mesh.positions.data(), mesh.corner_vertex[c]) - p0;
-    n += cross(prev, cur);
+// The face is the corner list corners[0 .. n) (vertex indices into positions, #V by 3).
+inline Vec3d newell_area_vector(const double* positions, const std::uint32_t* corners, std::uint32_t n) {
+  Vec3d sum{};
+  if (n < 3) return sum;
+  const Vec3d p0 = load_position(positions, corners[0]);
+  Vec3d prev = load_position(positions, corners[1]) - p0;
+  for (std::uint32_t i = 2; i < n; ++i) {
+    const Vec3d cur = load_position(positions, corners[i]) - p0;
+    sum += cross(prev, cur);
     prev = cur;
   }
-  return n;
+  return sum;
+}
+
+inline Vec3d newell_area_vector(const Mesh& mesh, std::size_t f) {
+  const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1];
+  return newell_area_vector(mesh.positions.data(), mesh.corner_vertex.data() + begin, end - begin);
 }
 
 inline Vec3d face_area_vector(const Mesh& mesh, std::size_t f) {

@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <type_traits>
 
 #include <tbb/parallel_invoke.h>
@@ -45,7 +44,7 @@ struct VertexCorners {
   std::vector<std::uint32_t> offset, corners;
 };
 
-VertexCorners vertex_corners(const Mesh& mesh) {
+VertexCorners vertex_corners(const MeshView& mesh) {
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
   VertexCorners vc;
   vc.offset.assign(V + 1, 0);
@@ -60,28 +59,28 @@ VertexCorners vertex_corners(const Mesh& mesh) {
 // Face of each corner and its neighbours in the face; triangles by arithmetic (corner = 3 f + k),
 // polygons through a corner -> face table.
 struct CornerTopology {
-  const Mesh& mesh;
+  MeshView mesh;
   bool triangles;
   std::vector<std::uint32_t> face_of;  // polygons only
 
-  explicit CornerTopology(const Mesh& m) : mesh(m), triangles(m.all_triangles()) {
+  explicit CornerTopology(const MeshView& m) : mesh(m), triangles(m.all_triangles()) {
     if (triangles) return;
     face_of.resize(m.num_corners());
     parallel_ranges(m.num_faces(), [&](std::size_t b, std::size_t e) {
       for (std::size_t f = b; f < e; ++f)
-        for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) face_of[c] = std::uint32_t(f);
+        for (std::uint32_t c = m.face_begin(f), end = m.face_end(f); c < end; ++c) face_of[c] = std::uint32_t(f);
     });
   }
   std::uint32_t face(std::uint32_t c) const { return triangles ? c / 3 : face_of[c]; }
   std::uint32_t next_vertex(std::uint32_t c) const {
     if (triangles) return mesh.corner_vertex[c % 3 == 2 ? c - 2 : c + 1];
     const std::uint32_t f = face_of[c];
-    return mesh.corner_vertex[c + 1 < mesh.face_start[f + 1] ? c + 1 : mesh.face_start[f]];
+    return mesh.corner_vertex[c + 1 < mesh.face_end(f) ? c + 1 : mesh.face_begin(f)];
   }
   std::uint32_t prev_vertex(std::uint32_t c) const {
     if (triangles) return mesh.corner_vertex[c % 3 == 0 ? c + 2 : c - 1];
     const std::uint32_t f = face_of[c];
-    return mesh.corner_vertex[c > mesh.face_start[f] ? c - 1 : mesh.face_start[f + 1] - 1];
+    return mesh.corner_vertex[c > mesh.face_begin(f) ? c - 1 : mesh.face_end(f) - 1];
   }
 };
 
@@ -98,7 +97,7 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
 // are in `normals` (3 rows values) for T = double, else in float_sum. The chunk plan is made
 // beside the (serial) zeroing of the arrays. Returns the number of degenerate faces.
 template <class T, Weighting W>
-std::size_t sum_rows(const Mesh& mesh, const std::uint32_t* target, std::size_t rows, std::vector<double>& normals,
+std::size_t sum_rows(const MeshView& mesh, const std::uint32_t* target, std::size_t rows, std::vector<double>& normals,
                      std::vector<float>& float_sum) {
   ChunkPlan plan;
   tbb::parallel_invoke(
@@ -122,7 +121,7 @@ std::size_t sum_rows(const Mesh& mesh, const std::uint32_t* target, std::size_t 
 }
 
 template <class T, Weighting W>
-GroupNormals group_normals(const Mesh& mesh, const std::vector<std::uint32_t>& corner_group, std::size_t num_groups) {
+GroupNormals group_normals(const MeshView& mesh, const std::vector<std::uint32_t>& corner_group, std::size_t num_groups) {
   GroupNormals out;
   // Corners in no group go to one extra row, dropped afterwards.
   bool any_outside = false;
@@ -153,7 +152,7 @@ GroupNormals group_normals(const Mesh& mesh, const std::vector<std::uint32_t>& c
 }
 
 template <class T, Weighting W>
-CornerNormals compute(const Mesh& mesh, double crease_angle, Precision precision) {
+CornerNormals compute(const MeshView& mesh, double crease_angle, Precision precision) {
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
   // (1) face normals: zero for degenerate faces.
   const std::vector<double> fn = face_normals(mesh, precision);
@@ -301,8 +300,8 @@ GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint3
   if (num_groups >= kNoGroup) throw Error("corner_group_normals: too many groups");
   for (std::uint32_t g : corner_group)
     if (g != kNoGroup && g >= num_groups) throw Error("corner_group_normals: a corner's group is out of range");
-  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
-  const Mesh& in_range = in_kernel_range(mesh, storage);
+  std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const MeshView in_range = in_kernel_range(mesh, storage);
   return dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
@@ -310,14 +309,19 @@ GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint3
   });
 }
 
-CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting, Precision precision) {
-  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
-  const Mesh& in_range = in_kernel_range(mesh, storage);
+CornerNormals corner_normals(const MeshView& mesh, double crease_angle, Weighting weighting, Precision precision) {
+  std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const MeshView in_range = in_kernel_range(mesh, storage);
   return dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
     return compute<T, W>(in_range, crease_angle, precision);
   });
+}
+
+// A Mesh is computed through its view: one code path.
+CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting, Precision precision) {
+  return corner_normals(MeshView(mesh), crease_angle, weighting, precision);
 }
 
 }  // namespace shadetool

@@ -1,6 +1,7 @@
 // corner_normals.h: one normal per face corner, smooth across gentle edges and split at creases.
 //
-// Inputs:  mesh          positions #V by 3, faces (triangles or polygons)
+// Inputs:  mesh          positions #V by 3, faces (triangles or polygons): a Mesh, or a MeshView
+//                        of arrays held elsewhere (core/mesh_view.h; used in place, same bits)
 //          crease_angle  radians; an edge is a crease when the angle between its two faces' unit
 //                        normals exceeds crease_angle (0 = every non-flat edge splits; pi = no
 //                        edge splits by angle). Boundary edges, non-manifold edges (3+ faces),
@@ -31,6 +32,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 #include <shadetool/normals/weighting.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -44,6 +46,8 @@ struct CornerNormals {
 };
 
 CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting weighting = Weighting::Angle,
+                             Precision precision = Precision::Double);
+CornerNormals corner_normals(const MeshView& mesh, double crease_angle, Weighting weighting = Weighting::Angle,
                              Precision precision = Precision::Double);
 
 // corner_group_normals: one normal per group of corners that the caller chose (a file's smoothing

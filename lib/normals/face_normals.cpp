@@ -13,7 +13,6 @@
 // neither overflow nor underflow, and a 2^k-scaled mesh gives bitwise the same normals.
 #include <shadetool/normals/face_normals.h>
 
-#include <optional>
 #include <vector>
 
 #include <shadetool/core/engine/parallel.h>
@@ -26,21 +25,22 @@ namespace shadetool {
 namespace {
 
 template <class T>
-void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, double* out) {
-  const double* P = mesh.positions.data();
-  const std::uint32_t* cv = mesh.corner_vertex.data();
+void face_normals_range(const MeshView& mesh, std::size_t f_begin, std::size_t f_end, double* out) {
+  const double* P = mesh.positions;
+  const std::uint32_t* cv = mesh.corner_vertex;
   const bool triangles = mesh.all_triangles();
   for (std::size_t f = f_begin; f < f_end; ++f) {
     Vec3d N;
     bool degenerate;
     if (triangles || mesh.face_size(f) == 3) {
-      const std::size_t c = triangles ? 3 * f : mesh.face_start[f];
+      const std::size_t c = triangles ? 3 * f : mesh.face_begin(f);
       const TriangleAreaVector t = triangle_area_vector(P, cv[c], cv[c + 1], cv[c + 2]);
       N = t.N;
       degenerate = triangle_is_degenerate(t, P, cv[c], cv[c + 1], cv[c + 2]);
     } else {
-      N = newell_area_vector(mesh, f);
-      degenerate = face_area_kind(mesh, f) != DegenerateKind::None;
+      const std::uint32_t begin = mesh.face_begin(f), n = mesh.face_size(f);
+      N = newell_area_vector(P, cv + begin, n);
+      degenerate = face_area_kind(P, cv + begin, n) != DegenerateKind::None;
     }
     const double l = degenerate ? 0.0 : checked_length(N);
     double* o = out + 3 * f;
@@ -54,9 +54,9 @@ void face_normals_range(const Mesh& mesh, std::size_t f_begin, std::size_t f_end
 
 }  // namespace
 
-std::vector<double> face_normals(const Mesh& mesh, Precision precision) {
-  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
-  const Mesh& in_range = normals_detail::in_kernel_range(mesh, storage);
+std::vector<double> face_normals(const MeshView& mesh, Precision precision) {
+  std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const MeshView in_range = normals_detail::in_kernel_range(mesh, storage);
   const std::size_t F = mesh.num_faces();
   std::vector<double> out(3 * F);
   engine::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
@@ -64,6 +64,10 @@ std::vector<double> face_normals(const Mesh& mesh, Precision precision) {
     else face_normals_range<double>(in_range, b, e, out.data());
   });
   return out;
+}
+
+std::vector<double> face_normals(const Mesh& mesh, Precision precision) {
+  return face_normals(MeshView(mesh), precision);
 }
 
 }  // namespace shadetool

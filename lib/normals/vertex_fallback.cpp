@@ -5,7 +5,7 @@
 
 namespace shadetool {
 
-void apply_vertex_fallback(const Mesh& mesh, const std::vector<std::uint32_t>& vertices, Precision precision,
+void apply_vertex_fallback(const MeshView& mesh, const std::vector<std::uint32_t>& vertices, Precision precision,
                            std::vector<double>& normals) {
   if (vertices.empty()) return;
   const std::size_t V = mesh.num_vertices();
@@ -19,7 +19,7 @@ void apply_vertex_fallback(const Mesh& mesh, const std::vector<std::uint32_t>& v
   for (std::size_t f = 0; f < mesh.num_faces() && left > 0; ++f) {
     const double* n = &fn[3 * f];
     if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) continue;  // degenerate face
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+    for (std::uint32_t c = mesh.face_begin(f), end = mesh.face_end(f); c < end; ++c) {
       const std::uint32_t v = mesh.corner_vertex[c];
       if (!pending[v]) continue;
       pending[v] = 0;

@@ -1,6 +1,6 @@
 // vertex_fallback.h: the normal a vertex gets when its weighted sum cannot be normalised.
 //
-// Inputs:  mesh       positions #V by 3, faces
+// Inputs:  mesh       positions #V by 3, faces (a Mesh or a MeshView, core/mesh_view.h)
 //          vertices   indices of the vertices whose sum was zero or not finite (ascending)
 //          precision  precision of face_normals used for the fallback
 // Output:  normals    #V by 3; rows listed in `vertices` are overwritten with
@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 #include <shadetool/normals/weighting.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -22,7 +22,7 @@ namespace shadetool {
 
 constexpr double kFallbackNormal[3] = {0.0, 0.0, 1.0};
 
-void apply_vertex_fallback(const Mesh& mesh, const std::vector<std::uint32_t>& vertices, Precision precision,
+void apply_vertex_fallback(const MeshView& mesh, const std::vector<std::uint32_t>& vertices, Precision precision,
                            std::vector<double>& normals);
 
 }  // namespace shadetool

@@ -19,7 +19,6 @@
 // counted in fallback_vertices.
 #include <shadetool/normals/vertex_normals.h>
 
-#include <optional>
 #include <vector>
 
 #include <shadetool/core/error.h>
@@ -35,7 +34,7 @@ using namespace normals_detail;
 // n_v = normalise( sum over the corners c of v of contribution_W(c) ) (normals/weighting.h),
 // summed in T; a vertex whose sum is zero or not finite takes the fallback.
 template <class T, Weighting W>
-void compute(const Mesh& mesh, const ChunkPlan* cached_plan, Precision precision, VertexNormals& result) {
+void compute(const MeshView& mesh, const ChunkPlan* cached_plan, Precision precision, VertexNormals& result) {
   std::vector<float> float_sum;  // the sums for T = float (for double: result.normals itself)
   result.degenerate_faces = sum_by_vertex<T, W>(mesh, cached_plan, result.normals, float_sum);
   const T* sum;
@@ -48,9 +47,9 @@ void compute(const Mesh& mesh, const ChunkPlan* cached_plan, Precision precision
 
 }  // namespace
 
-void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out) {
-  std::optional<Mesh> storage;  // an exactly scaled copy for a mesh outside the kernels' range (engine/mesh_scale.h)
-  const Mesh& in_range = in_kernel_range(mesh, storage);
+void vertex_normals(const MeshView& mesh, Weighting weighting, Precision precision, VertexNormals& out) {
+  std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
+  const MeshView in_range = in_kernel_range(mesh, storage);
   dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
@@ -59,12 +58,12 @@ void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, 
   });
 }
 
-void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
+void vertex_normals(const MeshView& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
                     VertexNormals& out) {
   if (!plan.fits(mesh))
     throw Error("vertex_normals: the plan was built for a mesh with other vertex, face or corner counts");
-  std::optional<Mesh> storage;  // as above; the copy has the same connectivity, so the plan fits it
-  const Mesh& in_range = in_kernel_range(mesh, storage);
+  std::vector<double> storage;  // as above; the scaled view has the same faces, so the plan fits it
+  const MeshView in_range = in_kernel_range(mesh, storage);
   dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
@@ -73,10 +72,24 @@ void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting w
   });
 }
 
-VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision) {
+VertexNormals vertex_normals(const MeshView& mesh, Weighting weighting, Precision precision) {
   VertexNormals result;
   vertex_normals(mesh, weighting, precision, result);
   return result;
+}
+
+// A Mesh is computed through its view: one code path.
+VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision) {
+  return vertex_normals(MeshView(mesh), weighting, precision);
+}
+
+void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out) {
+  vertex_normals(MeshView(mesh), weighting, precision, out);
+}
+
+void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
+                    VertexNormals& out) {
+  vertex_normals(MeshView(mesh), plan, weighting, precision, out);
 }
 
 }  // namespace shadetool

@@ -17,7 +17,9 @@
 // saves the planning on repeated calls. The result is bitwise the same either way
 // and for any thread count (accumulate_by_vertex.h).
 //
-// Inputs:  mesh      positions #V by 3, faces (triangles or polygons)
+// Inputs:  mesh      positions #V by 3, faces (triangles or polygons): a Mesh, or a MeshView of
+//                    arrays held elsewhere (core/mesh_view.h: e.g. NumPy arrays, used in place;
+//                    the same code, so the same bits as a Mesh holding the same arrays)
 //          weighting see normals/weighting.h (default Angle)
 //          precision accumulation precision
 // Output:  normals   #V by 3 flat array of unit normals
@@ -34,6 +36,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 #include <shadetool/normals/vertex_normals_plan.h>
 #include <shadetool/normals/weighting.h>
 
@@ -48,17 +51,22 @@ struct VertexNormals {
 
 VertexNormals vertex_normals(const Mesh& mesh, Weighting weighting = Weighting::Angle,
                              Precision precision = Precision::Double);
+VertexNormals vertex_normals(const MeshView& mesh, Weighting weighting = Weighting::Angle,
+                             Precision precision = Precision::Double);
 
 // The same into `out`, reusing the storage of out.normals when its capacity suffices (no
 // allocation and no fresh pages to fault in: for callers that compute normals repeatedly, as
 // OpenMesh's update_normals writes into its preallocated normal property). Every field of `out`
 // is overwritten.
 void vertex_normals(const Mesh& mesh, Weighting weighting, Precision precision, VertexNormals& out);
+void vertex_normals(const MeshView& mesh, Weighting weighting, Precision precision, VertexNormals& out);
 
 // The same with a plan of the mesh's connectivity made once (vertex_normals_plan.h): repeated calls
 // on 2+ threads skip the per-call planning of the parallel sum. Same result bit for bit. Throws
 // Error when the plan was built for other vertex/face/corner counts.
 void vertex_normals(const Mesh& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
+                    VertexNormals& out);
+void vertex_normals(const MeshView& mesh, const VertexNormalsPlan& plan, Weighting weighting, Precision precision,
                     VertexNormals& out);
 
 }  // namespace shadetool

@@ -3,6 +3,7 @@
 // half-edge topology once and update_normals reuses it).
 //
 // Input:   mesh   faces (face_start, corner_vertex) and the vertex count; positions are not read
+//                 (a Mesh or a MeshView, core/mesh_view.h)
 // Holds:   the chunks of faces that threads sum in parallel and which vertices lie on chunk
 //          borders (accumulate_by_vertex.h): 1 bit per vertex, and each chunk's border faces.
 //          Building costs two passes over the corners; without a plan, the angle and Max calls
@@ -22,7 +23,7 @@
 #include <cstddef>
 #include <memory>
 
-#include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
@@ -34,10 +35,10 @@ struct ChunkPlan;
 class VertexNormalsPlan {
  public:
   VertexNormalsPlan() = default;  // empty: fits no mesh with faces
-  explicit VertexNormalsPlan(const Mesh& mesh);
+  explicit VertexNormalsPlan(const MeshView& mesh);
 
   // Whether the plan was built for a mesh with these counts (vertices, faces, corners).
-  bool fits(const Mesh& mesh) const;
+  bool fits(const MeshView& mesh) const;
   const normals_detail::ChunkPlan& chunks() const { return *chunks_; }
 
  private:

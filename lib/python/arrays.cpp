@@ -34,6 +34,13 @@ py::array as_array(py::handle obj, const std::string& what) {
     PyErr_Clear();
     bad(what, "cannot be converted to a NumPy array");
   }
+  // Non-native byte order ('>f8' on x86): converted to native first (a copy), so that every path
+  // below reads the values, not their swapped bytes.
+  // (NumPy reports a native order as '=', an explicit non-native one as '>' or '<'.)
+  const std::uint16_t probe = 1;
+  const bool little = *reinterpret_cast<const unsigned char*>(&probe) == 1;
+  if (a.dtype().byteorder() == (little ? '>' : '<'))
+    a = py::array::ensure(a.attr("astype")(a.dtype().attr("newbyteorder")("=")));
   return a;
 }
 
@@ -192,6 +199,66 @@ std::pair<std::size_t, std::size_t> first_out_of_range(const py::array& a, std::
 
 std::string plural(std::size_t n, const char* one, const char* many) { return std::to_string(n) + (n == 1 ? one : many); }
 
+// Whether `a` (2-D rows x cols, or 1-D) is C-contiguous and aligned to its element size: then a
+// pointer of its element type reads it in place.
+bool contiguous_aligned(const py::array& a, std::size_t cols) {
+  const bool aligned = reinterpret_cast<std::uintptr_t>(a.data()) % std::uintptr_t(a.itemsize()) == 0;
+  if (a.ndim() == 1) return aligned && a.strides(0) == a.itemsize();
+  return aligned && a.ndim() == 2 && a.strides(1) == a.itemsize() && a.strides(0) == py::ssize_t(cols) * a.itemsize();
+}
+
+// The rows x cols indices of `a` in place, as uint32, when the layout allows: int32 or uint32,
+// C-contiguous, aligned, every value in [0, limit) (one min/max pass, GIL released; an int32 in
+// that range has the bits of the same uint32). Null otherwise (also when empty): the caller copies
+// (copy_indices converts any integer type and names a bad index).
+const std::uint32_t* indices_in_place(const py::array& a, std::size_t rows, std::size_t cols, std::uint64_t limit) {
+  const char kind = a.dtype().kind();
+  const std::size_t total = rows * cols;
+  if (total == 0 || a.itemsize() != 4 || (kind != 'i' && kind != 'u') || !contiguous_aligned(a, cols)) return nullptr;
+  bool in_range = false;
+  {
+    py::gil_scoped_release nogil;
+    if (kind == 'i') {
+      const std::int32_t* p = static_cast<const std::int32_t*>(a.data());
+      std::int32_t lo = p[0], hi = p[0];
+      for (std::size_t i = 0; i < total; ++i) {
+        lo = p[i] < lo ? p[i] : lo;
+        hi = p[i] > hi ? p[i] : hi;
+      }
+      in_range = lo >= 0 && std::uint64_t(hi) < limit;
+    } else {
+      const std::uint32_t* p = static_cast<const std::uint32_t*>(a.data());
+      std::uint32_t hi = p[0];
+      for (std::size_t i = 0; i < total; ++i) hi = p[i] > hi ? p[i] : hi;
+      in_range = std::uint64_t(hi) < limit;
+    }
+  }
+  return in_range ? static_cast<const std::uint32_t*>(a.data()) : nullptr;
+}
+
+// face_start = 0, k, 2k, ... (faces + 1 values; faces k < 2^32, checked by the caller).
+void fill_face_starts(std::size_t faces, std::size_t k, std::vector<std::uint32_t>& face_start) {
+  shadetool::reserve_bulk(face_start, faces + 1);
+  face_start.resize(faces + 1);
+  std::uint32_t* starts = face_start.data();
+  const std::uint32_t step = std::uint32_t(k);
+  for (std::size_t f = 0; f <= faces; ++f) starts[f] = std::uint32_t(f) * step;
+}
+
+// Positions as the library reads them: in place in V's array, or in storage.positions.
+struct PositionArray {
+  const double* data;
+  std::size_t vertices;
+};
+// Faces as the library reads them: corners (and polygon offsets) in place in F's arrays, or in
+// storage.corner_vertex (storage.face_start); face_start null for (m, 3) triangles.
+struct FaceArrays {
+  const std::uint32_t* corners = nullptr;
+  const std::uint32_t* face_start = nullptr;
+  std::size_t faces = 0, corner_count = 0;
+  FaceLayout layout;
+};
+
 }  // namespace
 
 shadetool::Weighting parse_weighting(const std::string& value, const std::string& fn) {
@@ -208,16 +275,24 @@ shadetool::Precision parse_precision(const std::string& value, const std::string
   bad(fn + ": precision", "'" + value + "' is not one of double, float");
 }
 
-void read_positions(py::handle V, const std::string& what, Mesh& mesh) {
+namespace {
+
+PositionArray positions_in_place_or_copied(py::handle V, const std::string& what, Mesh& storage,
+                                           std::vector<py::object>& keep) {
   py::array a = float_rows(V, std::size_t(-1), 3, what);
   const std::size_t n = std::size_t(a.shape(0));
   if (n > kMaxIndex) bad(what, plural(n, " vertex", " vertices") + ": more than the library's 2^32 - 1");
-  mesh.precision = a.itemsize() == 8 ? shadetool::ValuePrecision::Double : shadetool::ValuePrecision::Float;
-  copy_float_rows(a, n, 3, mesh.positions);
+  storage.precision = a.itemsize() == 8 ? shadetool::ValuePrecision::Double : shadetool::ValuePrecision::Float;
+  if (n > 0 && a.itemsize() == 8 && contiguous_aligned(a, 3)) {  // float64 (n, 3) C-contiguous: in place
+    keep.push_back(a);
+    return {static_cast<const double*>(a.data()), n};
+  }
+  copy_float_rows(a, n, 3, storage.positions);
+  return {storage.positions.data(), n};
 }
 
-FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
-  const std::uint64_t n = mesh.num_vertices();
+FaceArrays faces_in_place_or_copied(py::handle F, const std::string& what, std::size_t n, Mesh& storage,
+                                    std::vector<py::object>& keep) {
   auto index_error = [&](const py::array& a, std::size_t rows, std::size_t cols, std::size_t count,
                          const std::string& where) {
     std::int64_t value = 0;
@@ -227,47 +302,116 @@ FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
     bad(what, plural(count, " vertex index", " vertex indices") + " out of range [0, " + std::to_string(n) +
                   ") (first: " + first + " is " + std::to_string(value) + ")");
   };
+  // The indices of `a` in place when the layout allows, else copied (and checked) into `into`.
+  auto indices = [&](const py::array& a, std::size_t rows, std::size_t cols, std::uint64_t limit,
+                     std::vector<std::uint32_t>& into, const std::string& arg, std::size_t& bad_count) {
+    bad_count = 0;
+    if (const std::uint32_t* p = indices_in_place(a, rows, cols, limit)) {
+      keep.push_back(a);
+      return p;
+    }
+    bad_count = copy_indices(a, rows, cols, limit, into, arg);
+    return static_cast<const std::uint32_t*>(into.data());
+  };
+  FaceArrays out;
   if (py::isinstance<py::tuple>(F) && py::len(F) == 2) {  // polygons: (indices, offsets)
     py::tuple pair = F.cast<py::tuple>();
-    py::array indices = as_array(pair[0], what + "[0] (indices)");
+    py::array index_array = as_array(pair[0], what + "[0] (indices)");
     py::array offsets = as_array(pair[1], what + "[1] (offsets)");
-    if (indices.ndim() != 1) bad(what + "[0] (indices)", "must be 1-D, got shape " + shape_text(indices));
+    if (index_array.ndim() != 1) bad(what + "[0] (indices)", "must be 1-D, got shape " + shape_text(index_array));
     if (offsets.ndim() != 1 || offsets.shape(0) < 1)
       bad(what + "[1] (offsets)", "must be 1-D with m + 1 >= 1 entries, got shape " + shape_text(offsets));
-    const std::size_t corners = std::size_t(indices.shape(0));
+    const std::size_t corners = std::size_t(index_array.shape(0));
     const std::size_t faces = std::size_t(offsets.shape(0)) - 1;
     if (corners > kMaxIndex) bad(what, std::to_string(corners) + " corners: more than the library's 2^32 - 1");
-    // Offsets within [0, C]: checked by the same copy (limit C + 1), then their order.
-    const std::size_t bad_offsets = copy_indices(offsets, faces + 1, 1, std::uint64_t(corners) + 1, mesh.face_start,
-                                                 what + "[1] (offsets)");
-    if (bad_offsets > 0) bad(what + "[1] (offsets)", plural(bad_offsets, " offset", " offsets") + " outside [0, " + std::to_string(corners) + "]");
-    if (mesh.face_start.front() != 0) bad(what + "[1] (offsets)", "must start at 0, got " + std::to_string(mesh.face_start.front()));
-    if (mesh.face_start.back() != corners)
-      bad(what + "[1] (offsets)", "must end at len(indices) = " + std::to_string(corners) + ", got " + std::to_string(mesh.face_start.back()));
-    for (std::size_t f = 0; f < faces; ++f)
-      if (mesh.face_start[f + 1] < mesh.face_start[f])
+    // Offsets within [0, C]: checked with limit C + 1, then their order.
+    std::size_t bad_count = 0;
+    const std::uint32_t* starts =
+        indices(offsets, faces + 1, 1, std::uint64_t(corners) + 1, storage.face_start, what + "[1] (offsets)", bad_count);
+    if (bad_count > 0) bad(what + "[1] (offsets)", plural(bad_count, " offset", " offsets") + " outside [0, " + std::to_string(corners) + "]");
+    if (starts[0] != 0) bad(what + "[1] (offsets)", "must start at 0, got " + std::to_string(starts[0]));
+    if (starts[faces] != corners)
+      bad(what + "[1] (offsets)", "must end at len(indices) = " + std::to_string(corners) + ", got " + std::to_string(starts[faces]));
+    // Faces of fewer than 3 corners are refused, as the file readers refuse them (and a mix of
+    // them with larger faces could otherwise total 3 corners per face and pass for triangles).
+    for (std::size_t f = 0; f < faces; ++f) {
+      if (starts[f + 1] < starts[f])
         bad(what + "[1] (offsets)", "must be non-decreasing (offsets[" + std::to_string(f + 1) + "] < offsets[" + std::to_string(f) + "])");
-    const std::size_t bad_indices = copy_indices(indices, corners, 1, n, mesh.corner_vertex, what + "[0] (indices)");
-    if (bad_indices > 0) index_error(indices, corners, 1, bad_indices, "indices");
-    return FaceLayout{0};
+      if (starts[f + 1] - starts[f] < 3)
+        bad(what + "[1] (offsets)", "face " + std::to_string(f) + " has " + std::to_string(starts[f + 1] - starts[f]) +
+                                        " corners (a face needs at least 3)");
+    }
+    out.corners = indices(index_array, corners, 1, n, storage.corner_vertex, what + "[0] (indices)", bad_count);
+    if (bad_count > 0) index_error(index_array, corners, 1, bad_count, "indices");
+    out.face_start = starts;
+    out.faces = faces;
+    out.corner_count = corners;
+    out.layout = FaceLayout{0};
+    return out;
   }
   py::array a = as_array(F, what);
-  if (a.ndim() != 2 || a.shape(1) < 1)
-    bad(what, "must have shape (m, k) (k corners per face; triangles: (m, 3)) or be a tuple (indices, offsets), got shape " +
+  if (a.ndim() != 2 || a.shape(1) < 3)
+    bad(what, "must have shape (m, k) (k >= 3 corners per face; triangles: (m, 3)) or be a tuple (indices, offsets), got shape " +
                   shape_text(a));
   const std::size_t faces = std::size_t(a.shape(0)), k = std::size_t(a.shape(1));
   if (faces * k > kMaxIndex) bad(what, std::to_string(faces * k) + " corners: more than the library's 2^32 - 1");
-  const std::size_t bad_indices = copy_indices(a, faces, k, n, mesh.corner_vertex, what);
-  if (bad_indices > 0) index_error(a, faces, k, bad_indices, "");
-  {
+  std::size_t bad_count = 0;
+  out.corners = indices(a, faces, k, n, storage.corner_vertex, what, bad_count);
+  if (bad_count > 0) index_error(a, faces, k, bad_count, "");
+  out.faces = faces;
+  out.corner_count = faces * k;
+  out.layout = FaceLayout{k};
+  if (k != 3) {  // face starts k f (small: F + 1 values); triangles need none (corner = 3 f + j)
     py::gil_scoped_release nogil;
-    shadetool::reserve_bulk(mesh.face_start, faces + 1);
-    mesh.face_start.resize(faces + 1);
-    std::uint32_t* starts = mesh.face_start.data();
-    const std::uint32_t step = std::uint32_t(k);  // faces * k < 2^32: checked above
-    for (std::size_t f = 0; f <= faces; ++f) starts[f] = std::uint32_t(f) * step;
+    fill_face_starts(faces, k, storage.face_start);
+    out.face_start = storage.face_start.data();
   }
-  return FaceLayout{k};
+  return out;
+}
+
+}  // namespace
+
+void read_positions(py::handle V, const std::string& what, Mesh& mesh) {
+  std::vector<py::object> keep;
+  const PositionArray p = positions_in_place_or_copied(V, what, mesh, keep);
+  if (p.data != mesh.positions.data()) {  // read in place: the Mesh needs its own copy
+    py::gil_scoped_release nogil;
+    shadetool::reserve_bulk(mesh.positions, 3 * p.vertices);
+    mesh.positions.assign(p.data, p.data + 3 * p.vertices);
+  }
+}
+
+FaceLayout read_faces(py::handle F, const std::string& what, Mesh& mesh) {
+  std::vector<py::object> keep;
+  const FaceArrays f = faces_in_place_or_copied(F, what, mesh.num_vertices(), mesh, keep);
+  py::gil_scoped_release nogil;
+  if (f.corners != mesh.corner_vertex.data()) {  // read in place: the Mesh needs its own copy
+    shadetool::reserve_bulk(mesh.corner_vertex, f.corner_count);
+    mesh.corner_vertex.assign(f.corners, f.corners + f.corner_count);
+  }
+  if (!f.face_start) fill_face_starts(f.faces, 3, mesh.face_start);
+  else if (f.face_start != mesh.face_start.data()) mesh.face_start.assign(f.face_start, f.face_start + f.faces + 1);
+  return f.layout;
+}
+
+MeshViewInput mesh_view_input(py::handle V, py::handle F, const std::string& fn) {
+  MeshViewInput in;
+  if (std::shared_ptr<Mesh> m = as_mesh(V)) {
+    if (!F.is_none()) bad(fn + ": F", "must be None when the first argument is a shadetool.Mesh");
+    in.view = shadetool::MeshView(*m);
+    in.layout = layout_of(*m);
+    in.storage = m;
+    return in;
+  }
+  if (F.is_none()) bad(fn + ": F", "is required when V is an array (faces: (m, 3) integers, or (indices, offsets))");
+  auto storage = std::make_shared<Mesh>();
+  const PositionArray p = positions_in_place_or_copied(V, fn + ": V", *storage, in.keep);
+  const FaceArrays f = faces_in_place_or_copied(F, fn + ": F", p.vertices, *storage, in.keep);
+  in.view = f.face_start ? shadetool::MeshView::polygons(p.data, p.vertices, f.corners, f.face_start, f.faces)
+                         : shadetool::MeshView::triangles(p.data, p.vertices, f.corners, f.faces);
+  in.layout = f.layout;
+  in.storage = std::move(storage);
+  return in;
 }
 
 std::vector<double> read_double_rows(py::handle A, std::size_t rows, std::size_t cols, const std::string& what) {

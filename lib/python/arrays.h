@@ -1,19 +1,23 @@
 // arrays.h: NumPy arrays in and out of the library's Mesh, for the Python module (not installed).
 //
-// In: the library's Mesh owns its arrays (std::vector<double> positions, std::vector<uint32_t>
-// corners and face starts), so V and F are copied ONCE into it, converted on the way:
+// In, for the normals (mesh_view_input): a view over V and F in place where their layout allows
+// (float64 V, int32/uint32 F, C-contiguous: no copy, one min/max pass over the indices), else
+// over copies converted as below. In, for the calls that change or keep the mesh (repair,
+// transform, lighting, shadetool.Mesh): the library's Mesh owns its arrays (std::vector<double>
+// positions, std::vector<uint32_t> corners and face starts), so V and F are copied ONCE into it,
+// converted on the way:
 //   V  (n, 3) float64 or float32, any strides (float32 widened exactly; no intermediate copy)
-//   F  (m, k) integer array of any integer dtype (int32, int64, uint32, ...): m faces of k >= 1
+//   F  (m, k) integer array of any integer dtype (int32, int64, uint32, ...): m faces of k >= 3
 //      corners each (triangles: k = 3), any strides; or a pair (indices, offsets): C corner indices
-//      and m + 1 non-decreasing offsets from 0 to C, face f using indices[offsets[f]:offsets[f+1]]
-//      (polygons of mixed sizes). Every index is checked: 0 <= i < n, else ValueError naming the
+//      and m + 1 offsets from 0 to C, face f using indices[offsets[f]:offsets[f+1]], at least 3
+//      (polygons of mixed sizes; fewer than 3 corners is refused, as the file readers refuse it). Every index is checked: 0 <= i < n, else ValueError naming the
 //      face and corner. n and C must fit the library's uint32 indices.
 // A Python list or other sequence is first turned into an array by numpy.asarray (a copy).
 // The copy and the index check run with the GIL released: contiguous aligned arrays in one
 // converting pass into capacity reserved by core/bulk_reserve.h (huge pages), after one min/max
 // pass over the indices; strided or unaligned arrays element by element over TBB ranges
-// (core/engine/parallel.h). They are the only cost the Python call adds to the library's: 2.7 ms for
-// 1M triangles (bench/python/results.md).
+// (core/engine/parallel.h). That copy costs 2.7 ms for 1M triangles (bench/python/results.md);
+// the view skips it. Arrays in a non-native byte order are converted to native first (a copy).
 // Out: a result std::vector is moved into a capsule that owns it and viewed as a NumPy array:
 // no copy.
 // Errors: py::value_error with one line `FUNCTION: ARG: what is wrong` (shape, dtype, index).
@@ -30,6 +34,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 #include <shadetool/normals/weighting.h>
 
 namespace shadetool_python {
@@ -56,6 +61,24 @@ struct PyMesh {
 
 // V may be a shadetool.Mesh (then F must be None) or an (n, 3) array; F as above.
 MeshInput mesh_input(py::handle V, py::handle F, const std::string& fn);
+
+// A mesh argument as a view (core/mesh_view.h) for the calls that only read it (the normals):
+// the caller's arrays are used IN PLACE where their layout allows, with no copy:
+//   V  float64 (n, 3), C-contiguous, aligned
+//   F  int32 or uint32 (m, k), C-contiguous, aligned, every index in [0, n) (one min/max pass;
+//      (m, 3): nothing else is made; other k: the F + 1 face starts k f are), or a tuple
+//      (indices, offsets) of such 1-D arrays (offsets checked as above)
+// Everything else (float32, int64 and other integer types, strided or unaligned arrays, lists)
+// is converted into `storage` as mesh_input does. A shadetool.Mesh is viewed, not copied.
+// The view reads the arrays during the call with the GIL released: another Python thread must
+// not write into them meanwhile (as for any NumPy buffer handed to C code that releases the GIL).
+struct MeshViewInput {
+  shadetool::MeshView view;
+  FaceLayout layout;
+  std::shared_ptr<const shadetool::Mesh> storage;  // converted arrays, or the shadetool.Mesh viewed
+  std::vector<py::object> keep;                     // the arrays read in place (alive for the call)
+};
+MeshViewInput mesh_view_input(py::handle V, py::handle F, const std::string& fn);
 
 // A mesh of its own for a call that changes it: built from V and F, or a copy of a shadetool.Mesh's.
 shadetool::Mesh owned_mesh(py::handle V, py::handle F, const std::string& fn, FaceLayout& layout);

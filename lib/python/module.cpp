@@ -38,9 +38,11 @@ occlusion, render, read_mesh, write_mesh, and the Mesh class (arrays of a mesh r
 written to OBJ, PLY, OFF, STL). Any function taking (V, F) also takes a Mesh in place of V (F None),
 computing on the mesh's own arrays without a copy.
 
-Copies: the library's mesh stores float64 positions and uint32 indices in arrays it owns, so V and
-F given as arrays are copied once into it (float32 widened exactly, int64 checked and narrowed, any
-strides; no second copy). Results are returned without a copy (the library's output array becomes
+Copies: face_normals, vertex_normals and corner_normals read a C-contiguous float64 V and a
+C-contiguous int32 or uint32 F in place (every index checked first; do not write into them from
+another thread during the call). Otherwise, and for the other functions, the library's mesh stores
+float64 positions and uint32 indices in arrays it owns, so V and F are copied once into it (float32
+widened exactly, int64 checked and narrowed, any strides; no second copy). Results are returned without a copy (the library's output array becomes
 the NumPy array's memory).
 
 Threads: the library's (TBB); the GIL is released while it computes. Errors: ValueError with the

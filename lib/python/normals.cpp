@@ -18,9 +18,11 @@ constexpr const char* kMeshArgs = R"doc(
   V  (n, 3) float64 or float32 vertex positions, or a shadetool.Mesh (then F is None: no copy)
   F  (m, k) integer faces (triangles: (m, 3); int32, int64, uint32, ...) or a tuple
      (indices, offsets) for polygons: face f is indices[offsets[f]:offsets[f + 1]]
-  Arrays are copied once into the library's mesh (float64 positions, uint32 indices; float32
-  widened exactly, any strides), with every index checked: ValueError for a wrong shape, dtype or
-  an index outside [0, n).)doc";
+  No copy where the layout allows: float64 C-contiguous V and int32/uint32 C-contiguous F are
+  read in place (every index checked first). Other dtypes and layouts (float32, int64, strided)
+  are converted once into the library's arrays (float64, uint32; float32 widened exactly).
+  ValueError for a wrong shape, dtype or an index outside [0, n). Do not write into V or F from
+  another thread during the call (the GIL is released while the library reads them).)doc";
 
 }  // namespace
 
@@ -28,12 +30,12 @@ void init_normals(py::module_& m) {
   m.def(
       "face_normals",
       [](py::object V, py::object F, const std::string& precision) {
-        const MeshInput in = mesh_input(V, F, "face_normals");
+        const MeshViewInput in = mesh_view_input(V, F, "face_normals");
         const shadetool::Precision p = parse_precision(precision, "face_normals");
         std::vector<double> normals;
         {
           py::gil_scoped_release nogil;
-          normals = shadetool::face_normals(*in.mesh, p);
+          normals = shadetool::face_normals(in.view, p);
         }
         const py::ssize_t rows = py::ssize_t(normals.size() / 3);
         return to_numpy(std::move(normals), {rows, 3});
@@ -50,15 +52,15 @@ corners) gets (0, 0, 0), never NaN. The library's normals/face_normals.h.
   m.def(
       "vertex_normals",
       [](py::object V, py::object F, const std::string& weight, const std::string& precision) {
-        const MeshInput in = mesh_input(V, F, "vertex_normals");
+        const MeshViewInput in = mesh_view_input(V, F, "vertex_normals");
         const shadetool::Weighting w = parse_weighting(weight, "vertex_normals");
         const shadetool::Precision p = parse_precision(precision, "vertex_normals");
         shadetool::VertexNormals result;
         {
           py::gil_scoped_release nogil;
-          shadetool::vertex_normals(*in.mesh, w, p, result);
+          shadetool::vertex_normals(in.view, w, p, result);
         }
-        const py::ssize_t rows = py::ssize_t(in.mesh->num_vertices());
+        const py::ssize_t rows = py::ssize_t(in.view.num_vertices());
         return to_numpy(std::move(result.normals), {rows, 3});
       },
       py::arg("V"), py::arg("F") = py::none(), py::arg("weight") = "angle", py::arg("precision") = "double",
@@ -83,13 +85,13 @@ the GIL released; the result is bitwise the same for any thread count.
         const double deg = crease_deg.cast<double>();
         if (!(deg >= 0.0 && deg <= 180.0))
           throw py::value_error("corner_normals: crease_deg must be in [0, 180] degrees, got " + py::repr(crease_deg).cast<std::string>());
-        const MeshInput in = mesh_input(V, F, "corner_normals");
+        const MeshViewInput in = mesh_view_input(V, F, "corner_normals");
         const shadetool::Weighting w = parse_weighting(weight, "corner_normals");
         const shadetool::Precision p = parse_precision(precision, "corner_normals");
         shadetool::CornerNormals result;
         {
           py::gil_scoped_release nogil;
-          result = shadetool::corner_normals(*in.mesh, deg * shadetool::kRadiansPerDegree, w, p);
+          result = shadetool::corner_normals(in.view, deg * shadetool::kRadiansPerDegree, w, p);
         }
         const py::ssize_t rows = py::ssize_t(result.normals.size() / 3);
         py::array normals = to_numpy(std::move(result.normals), {rows, 3});

@@ -1,6 +1,7 @@
 # shadetool.pyi: type stubs of the Python module `shadetool` (lib/python). Shapes and dtypes are in
 # the comments and the docstrings (help(shadetool.NAME)); numpy.typing has no shape types.
-#   V  (n, 3) float64 or float32 vertex positions (copied once into the library's float64 mesh)
+#   V  (n, 3) float64 or float32 vertex positions (the normals read float64 C-contiguous V and
+#      int32/uint32 C-contiguous F in place; other layouts are copied once into float64 / uint32)
 #   F  (m, k) integer faces (triangles (m, 3); any integer dtype) or (indices, offsets) polygons
 #   N  (n, 3) float vertex normals
 import os

@@ -58,7 +58,8 @@ def test_vertex_normals_from_arrays_equal_those_of_the_read_mesh():
     assert same_bits(shadetool.vertex_normals(V, F), expected)
     assert same_bits(shadetool.vertex_normals(V, F.astype(np.int64)), expected)
     assert same_bits(shadetool.vertex_normals(V, F.astype(np.int32)), expected)
-    # Non-contiguous views (every other column of a wider array, reversed rows) are read in place.
+    # Non-contiguous views (every other column of a wider array, reversed rows) are converted
+    # element by element (only C-contiguous float64 V and int32/uint32 F are read in place).
     wide = np.zeros((V.shape[0], 6))
     wide[:, ::2] = V
     assert same_bits(shadetool.vertex_normals(wide[:, ::2], F), expected)

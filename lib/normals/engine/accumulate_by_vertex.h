@@ -2,7 +2,7 @@
 // result that is bitwise the same as the serial loop whatever the number of threads
 // (internal to lib/normals; a template so that each kernel's contribution code is inlined).
 //
-// Inputs:  mesh        faces (corner_vertex, face_start)
+// Inputs:  mesh        faces (corner_vertex, face_start; a view, core/mesh_view.h)
 //          contribute  contribute(f_begin, f_end, sink) calls sink(corner, vertex, Vec3<T>) for the
 //                      corners of faces [f_begin, f_end) in corner order and returns a count
 //                      (of degenerate faces skipped), summed over all faces and returned
@@ -45,7 +45,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 #include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/core/vec3.h>
 #include <shadetool/geometry/face_area_vector.h>  // SHADETOOL_INLINE
@@ -73,7 +73,7 @@ struct ChunkPlan {
 // Rows are target[c] (Target = true; corner normals use it with target = the corner's smooth
 // group) or the corner's vertex (Target = false, target unused).
 template <bool Target>
-ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t num_rows) {
+ChunkPlan plan_chunks(const MeshView& mesh, const std::uint32_t* target, std::size_t num_rows) {
   ChunkPlan plan;
   const std::size_t F = mesh.num_faces(), V = num_rows;
   const std::size_t threads = usable_threads();
@@ -82,8 +82,8 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
   // balancing when another process holds one core.
   const std::size_t K = std::min<std::size_t>({F / 8192, threads, 65535});
   if (F < kSerialBelow || threads < 2 || K < 2) return plan;
-  auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_start[F * k / K]); };  // corner index
-  const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
+  auto chunk_begin = [&](std::size_t k) { return std::size_t(mesh.face_begin(F * k / K)); };  // corner index
+  const std::uint32_t* cv = Target ? target : mesh.corner_vertex;
   const std::size_t words = (V + 63) / 64;
   plan.shared.assign(words, 0);
   std::uint64_t* shared = plan.shared.data();
@@ -153,16 +153,16 @@ ChunkPlan plan_chunks(const Mesh& mesh, const std::uint32_t* target, std::size_t
 
 // Fills plan.border_faces (a third pass over the corners; worth it for a plan that is reused).
 template <bool Target>
-void flag_border_faces(const Mesh& mesh, const std::uint32_t* target, ChunkPlan& plan) {
+void flag_border_faces(const MeshView& mesh, const std::uint32_t* target, ChunkPlan& plan) {
   const std::size_t F = mesh.num_faces(), K = plan.K;
   if (K == 0) return;
-  const std::uint32_t* cv = Target ? target : mesh.corner_vertex.data();
+  const std::uint32_t* cv = Target ? target : mesh.corner_vertex;
   plan.border_faces.assign(K, {});
   tbb::parallel_for(std::size_t(0), K, [&](std::size_t k) {
     auto& list = plan.border_faces[k];
     for (std::size_t f = F * k / K, e = F * (k + 1) / K; f < e; ++f) {
       bool border = false;
-      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+      for (std::uint32_t c = mesh.face_begin(f), c_end = mesh.face_end(f); c < c_end; ++c)
         border = border || plan.is_shared(cv[c]);
       if (border) list.push_back(std::uint32_t(f));
     }
@@ -185,7 +185,7 @@ SHADETOOL_INLINE void add_to_row(T* o, const Vec3<T>& n) {
 // Passes 3 and 4 (sum: #rows by Stride, zero on entry; x, y, z first). Returns the sum of
 // contribute's counts.
 template <bool Target, class T, std::size_t Stride = 3, class Contribute>
-std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const std::uint32_t* target,
+std::size_t accumulate_by_target(const MeshView& mesh, const ChunkPlan& plan, const std::uint32_t* target,
                                  const Contribute& contribute, T* sum) {
   const std::size_t F = mesh.num_faces(), K = plan.K;
   T* s = sum;
@@ -248,7 +248,7 @@ std::size_t accumulate_by_target(const Mesh& mesh, const ChunkPlan& plan, const 
 
 // Convenience: plan and sum into rows = vertices.
 template <class T, class Contribute>
-std::size_t accumulate_by_vertex(const Mesh& mesh, const Contribute& contribute, T* sum) {
+std::size_t accumulate_by_vertex(const MeshView& mesh, const Contribute& contribute, T* sum) {
   const ChunkPlan plan = plan_chunks<false>(mesh, nullptr, mesh.num_vertices());
   return accumulate_by_target<false>(mesh, plan, nullptr, contribute, sum);
 }

@@ -33,7 +33,7 @@
 #include <vector>
 
 #include <shadetool/core/math_constants.h>
-#include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/geometry/face_area_vector.h>
 #include <shadetool/geometry/interior_angle.h>
@@ -180,11 +180,11 @@ inline bool triangle_scalar(const double* P, const std::uint32_t* cv, std::size_
 // (the caller's sums prefetched ahead). Faces the vector pass cannot take go through
 // triangle_scalar.
 template <class T, Weighting W, class Sink>
-inline std::size_t triangle_block_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
+inline std::size_t triangle_block_contributions(const MeshView& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
                                                 double scale, RowHint rows) {
   std::size_t degenerate = 0;
-  const double* P = mesh.positions.data();
-  const std::uint32_t* cv = mesh.corner_vertex.data();
+  const double* P = mesh.positions;
+  const std::uint32_t* cv = mesh.corner_vertex;
   alignas(64) double xyz[9][kTriangleBlock];
   alignas(64) double w[9][kTriangleBlock];
   for (std::size_t b = f_begin; b < f_end; b += kTriangleBlock) {
@@ -216,15 +216,15 @@ inline std::size_t triangle_block_contributions(const Mesh& mesh, std::size_t f_
 }
 
 template <class T, Weighting W, class Sink>
-inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
+inline std::size_t triangle_contributions(const MeshView& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
                                           double scale = 1.0, RowHint rows = {}) {
   if constexpr (W != Weighting::Area) {
     return triangle_block_contributions<T, W>(mesh, f_begin, f_end, sink, scale, rows);
   } else {
     // Area: (p1 - p0) x (p2 - p0) and three additions per face; already memory-bound, no blocks.
     std::size_t degenerate = 0;
-    const double* P = mesh.positions.data();
-    const std::uint32_t* cv = mesh.corner_vertex.data();
+    const double* P = mesh.positions;
+    const std::uint32_t* cv = mesh.corner_vertex;
     for (std::size_t f = f_begin; f < f_end; ++f) {
       const std::size_t c = 3 * f;
       if (f + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, rows);
@@ -255,21 +255,21 @@ inline std::size_t triangle_contributions(const Mesh& mesh, std::size_t f_begin,
 
 // The same for any face sizes (triangles among polygons take the triangle formulas).
 template <class T, Weighting W, class Sink>
-inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
+inline std::size_t polygon_contributions(const MeshView& mesh, std::size_t f_begin, std::size_t f_end, Sink&& sink,
                                          double scale = 1.0) {
   std::size_t degenerate = 0;
-  const double* P = mesh.positions.data();
-  const std::uint32_t* cv = mesh.corner_vertex.data();
+  const double* P = mesh.positions;
+  const std::uint32_t* cv = mesh.corner_vertex;
   for (std::size_t f = f_begin; f < f_end; ++f) {
-    const std::uint32_t begin = mesh.face_start[f], end = mesh.face_start[f + 1], n_corners = end - begin;
-    if (face_area_kind(mesh, f) != DegenerateKind::None) { ++degenerate; continue; }
+    const std::uint32_t begin = mesh.face_begin(f), end = mesh.face_end(f), n_corners = end - begin;
+    if (face_area_kind(P, cv + begin, n_corners) != DegenerateKind::None) { ++degenerate; continue; }
     Vec3d N;
     if (n_corners == 3) {
       const Vec3d p0 = load_position(P, cv[begin]), p1 = load_position(P, cv[begin + 1]), p2 = load_position(P, cv[begin + 2]);
       const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
       N = triangle_area_vector(P, cv[begin], cv[begin + 1], cv[begin + 2], dot(e0, e0), dot(e1, e1), dot(e2, e2));
     } else {
-      N = newell_area_vector(mesh, f);
+      N = newell_area_vector(P, cv + begin, n_corners);
     }
     const double len = checked_length(N);
     if (!(len > 0.0)) { ++degenerate; continue; }  // not reached for a face the rule calls valid
@@ -318,7 +318,7 @@ inline std::size_t polygon_contributions(const Mesh& mesh, std::size_t f_begin, 
 constexpr std::size_t kScaleSample = 1024;
 
 template <class T, Weighting W>
-inline double contribution_scale(const Mesh& mesh, bool sample = true) {
+inline double contribution_scale(const MeshView& mesh, bool sample = true) {
   if constexpr (!kScaledContributions<T, W>) {
     (void)mesh; (void)sample;
     return 1.0;

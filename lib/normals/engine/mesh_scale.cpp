@@ -18,9 +18,9 @@ inline void track(double& peak, const double* p) {
 
 }  // namespace
 
-double sampled_max_coordinate(const Mesh& mesh) {
+double sampled_max_coordinate(const MeshView& mesh) {
   const std::size_t V = mesh.num_vertices();
-  const double* P = mesh.positions.data();
+  const double* P = mesh.positions;
   double peak = 0.0;
   if (V <= kRangeSample) {
     for (std::size_t v = 0; v < V; ++v) track(peak, P + 3 * v);
@@ -36,18 +36,18 @@ double power_of_two_scale(double peak) {
   return std::ldexp(1.0, -e);
 }
 
-const Mesh& in_kernel_range(const Mesh& mesh, std::optional<Mesh>& storage) {
+MeshView in_kernel_range(const MeshView& mesh, std::vector<double>& storage) {
   const double sampled = sampled_max_coordinate(mesh);
   if (!(sampled > 0.0)) return mesh;  // no finite nonzero coordinate: nothing to scale
   const int e = std::ilogb(sampled);
   if (e >= -kKernelRangeExponent && e < kKernelRangeExponent) return mesh;
   const double scale = power_of_two_scale(sampled);  // the trigger's own maximum: one rule, no second pass
-  Mesh& copy = storage.emplace();
-  copy.positions.resize(mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) copy.positions[i] = mesh.positions[i] * scale;  // exact
-  copy.face_start = mesh.face_start;
-  copy.corner_vertex = mesh.corner_vertex;
-  return copy;
+  const std::size_t n = 3 * mesh.num_vertices();
+  storage.resize(n);
+  for (std::size_t i = 0; i < n; ++i) storage[i] = mesh.positions[i] * scale;  // exact
+  MeshView scaled = mesh;
+  scaled.positions = storage.data();
+  return scaled;
 }
 
 }  // namespace shadetool::normals_detail

@@ -2,13 +2,14 @@
 // (squared lengths ~ x^2, area vectors and their squares ~ x^2 .. x^4, Max's l0 l1 l2 ~ x^6 and
 // its weights ~ x^-2) over- or underflows, whatever the size of the mesh (internal to lib/normals).
 //
-// Inputs:  mesh     positions #V by 3, faces
-//          storage  holds the scaled copy when one is needed (left empty otherwise: no allocation)
+// Inputs:  mesh     positions #V by 3, faces (a view: core/mesh_view.h)
+//          storage  holds the scaled positions when they are needed (left empty otherwise: no
+//                   allocation)
 // Output:  in_kernel_range returns `mesh` itself when its sampled largest |coordinate| m lies in
 //          [2^-kKernelRangeExponent, 2^kKernelRangeExponent) (every ordinary mesh: no copy, no
-//          pass over the positions), else `storage`, filled with the mesh's positions times
-//          2^-e, e = ilogb(m) (clamped to [-1000, 1000]), and its faces (so its sampled largest
-//          coordinate lies in [1, 2)); normals, colours and texture coordinates are not copied.
+//          pass over the positions), else a view of the same faces over `storage`, filled with the
+//          mesh's positions times 2^-e, e = ilogb(m) (clamped to [-1000, 1000]), so its sampled
+//          largest coordinate lies in [1, 2). Faces are never copied.
 // Why the result is bitwise scale-invariant: multiplying by a power of two is exact while results
 // stay normal, so a mesh scaled by 2^k gives the same scaled copy bit for bit as the mesh itself,
 // and every later operation is identical. Inside the range the kernels' arithmetic (and their
@@ -31,9 +32,9 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
+#include <vector>
 
-#include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 
 namespace shadetool::normals_detail {
 
@@ -43,14 +44,14 @@ constexpr std::size_t kRangeSample = 1024;
 
 // Largest finite |coordinate| among up to kRangeSample vertices spread evenly (vertex i V / n);
 // 0 when none is finite and nonzero.
-double sampled_max_coordinate(const Mesh& mesh);
+double sampled_max_coordinate(const MeshView& mesh);
 
 // The power of two 2^-e, e = ilogb(peak) clamped to [-1000, 1000], that brings a positive finite
 // peak into [1, 2); 1 for a peak that is zero or not finite. The one rule for choosing a scale, used
 // for positions here and for the float path's contributions (corner_contributions.h).
 double power_of_two_scale(double peak);
 
-// `mesh`, or its positions scaled into the kernels' range in `storage` (see above).
-const Mesh& in_kernel_range(const Mesh& mesh, std::optional<Mesh>& storage);
+// `mesh`, or its faces over its positions scaled into the kernels' range in `storage` (see above).
+MeshView in_kernel_range(const MeshView& mesh, std::vector<double>& storage);
 
 }  // namespace shadetool::normals_detail

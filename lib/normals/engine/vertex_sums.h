@@ -30,7 +30,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/core/engine/usable_threads.h>
-#include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 #include <shadetool/normals/engine/accumulate_by_vertex.h>
 #include <shadetool/normals/engine/corner_contributions.h>
 #include <shadetool/normals/engine/normalise_sums.h>
@@ -44,7 +44,7 @@ constexpr std::size_t kSumStride = std::is_same_v<T, double> ? 3 : 4;
 // The sums: `out` (#V by 3) for double, `float_sum` (#V by 4) for float. cached: the caller's
 // chunk plan, or null.
 template <class T, Weighting W>
-std::size_t sum_by_vertex(const Mesh& mesh, const ChunkPlan* cached, std::vector<double>& out,
+std::size_t sum_by_vertex(const MeshView& mesh, const ChunkPlan* cached, std::vector<double>& out,
                           std::vector<float>& float_sum) {
   constexpr std::size_t S = kSumStride<T>;
   const std::size_t V = mesh.num_vertices();
