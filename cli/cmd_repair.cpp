@@ -15,6 +15,7 @@
 #include "driver.h"
 #include "number_flags.h"
 #include <shadetool/repair/repair_mesh.h>
+#include <shadetool/repair/repair_report_json.h>
 #include "usage_error.h"
 
 namespace shadetool_cli {
@@ -34,45 +35,6 @@ shadetool::Weighting weighting_from_name(const std::string& name) {
   if (name == "area") return shadetool::Weighting::Area;
   if (name == "max") return shadetool::Weighting::Max;
   return shadetool::Weighting::Angle;
-}
-
-nlohmann::json report_json(const RepairReport& r, const RepairCliOptions& opt) {
-  nlohmann::json j;
-  j["faces_in"] = r.faces_in;
-  j["faces_out"] = r.faces_out;
-  j["components"] = r.components;
-  j["closed_components"] = r.closed_components;
-  j["open_components"] = r.open_components;
-  j["faces_flipped"] = r.faces_flipped;
-  j["faces_flipped_for_consistency"] = r.faces_flipped_for_consistency;
-  j["components_inverted"] = r.components_inverted;
-  j["nested_shells"] = r.nested_shells;
-  j["orientation"] = {{"by_volume", r.oriented_by_volume},
-                      {"by_vote", r.oriented_by_vote},
-                      {"by_normals", r.oriented_by_normals},
-                      {"by_majority", r.oriented_by_majority},
-                      {"open_component_method", "generalized winding number"}};
-  j["non_manifold_edges"] = r.non_manifold_edges;
-  j["duplicate_faces"] = r.duplicate_faces;
-  j["non_orientable_components"] = r.non_orientable_components;
-  j["inconsistent_edges"] = r.inconsistent_edges;
-  j["boundary_loops"] = r.boundary_loops;
-  j["degenerate_faces"] = r.degenerate_faces;
-  j["degenerate_by_kind"] = {{"zero_area", r.degenerate_zero_area},
-                             {"repeated_index", r.degenerate_repeated_index},
-                             {"too_few_corners", r.degenerate_too_few_corners},
-                             {"non_finite", r.degenerate_non_finite}};
-  j["degenerate_faces_removed"] = r.degenerate_faces_removed;
-  j["vertices_welded"] = r.vertices_welded;
-  j["seam_vertices_joined"] = r.seam_vertices_joined;
-  j["weld_eps"] = opt.weld >= 0 ? nlohmann::json(opt.weld) : nlohmann::json(nullptr);
-  j["normals_recomputed"] = {{"nan", r.normals.nan},         {"inf", r.normals.inf},
-                             {"zero", r.normals.zero},       {"flipped", r.normals.flipped},
-                             {"missing", r.normals.missing}, {"total", r.normals.total()}};
-  j["normals_recomputed_by_kind"] = {{"vertex", r.normals.vertex}, {"corner", r.normals.corner}, {"face", r.normals.face}};
-  j["weighting"] = opt.weight;
-  j["changes"] = r.changes();
-  return j;
 }
 
 // "1 face", "2 faces".
@@ -176,7 +138,7 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
           if (!opt.report.empty()) {
             nlohmann::json j{{"input", input}};
             if (!io.output.empty()) j["output"] = io.output;
-            j.update(report_json(rep, opt));
+            j.update(nlohmann::json::parse(shadetool::repair_report_json(rep, opt.weld, opt.weight)));
             r.other_files.emplace_back(opt.report, j.dump(2) + "\n");
           }
         },

@@ -2,6 +2,7 @@
 // transform/transform_mesh.h on a mesh of the call's own, with the GIL released.
 #include <shadetool/core/validate.h>
 #include <shadetool/repair/repair_mesh.h>
+#include <shadetool/repair/repair_report_json.h>
 #include <shadetool/transform/affine_maps.h>
 #include <shadetool/transform/transform_mesh.h>
 
@@ -11,57 +12,9 @@
 namespace shadetool_python {
 namespace {
 
-// The report as `shadetool repair --report` writes it (cli/cmd_repair.cpp), key for key.
+// The report as `shadetool repair --report` writes it, key for key (repair/repair_report_json.h).
 py::dict report_dict(const shadetool::RepairReport& r, const std::string& weight) {
-  py::dict d;
-  d["faces_in"] = r.faces_in;
-  d["faces_out"] = r.faces_out;
-  d["components"] = r.components;
-  d["closed_components"] = r.closed_components;
-  d["open_components"] = r.open_components;
-  d["faces_flipped"] = r.faces_flipped;
-  d["faces_flipped_for_consistency"] = r.faces_flipped_for_consistency;
-  d["components_inverted"] = r.components_inverted;
-  d["nested_shells"] = r.nested_shells;
-  py::dict orientation;
-  orientation["by_volume"] = r.oriented_by_volume;
-  orientation["by_vote"] = r.oriented_by_vote;
-  orientation["by_normals"] = r.oriented_by_normals;
-  orientation["by_majority"] = r.oriented_by_majority;
-  orientation["open_component_method"] = "generalized winding number";
-  d["orientation"] = orientation;
-  d["non_manifold_edges"] = r.non_manifold_edges;
-  d["duplicate_faces"] = r.duplicate_faces;
-  d["non_orientable_components"] = r.non_orientable_components;
-  d["inconsistent_edges"] = r.inconsistent_edges;
-  d["boundary_loops"] = r.boundary_loops;
-  d["degenerate_faces"] = r.degenerate_faces;
-  py::dict by_kind;
-  by_kind["zero_area"] = r.degenerate_zero_area;
-  by_kind["repeated_index"] = r.degenerate_repeated_index;
-  by_kind["too_few_corners"] = r.degenerate_too_few_corners;
-  by_kind["non_finite"] = r.degenerate_non_finite;
-  d["degenerate_by_kind"] = by_kind;
-  d["degenerate_faces_removed"] = r.degenerate_faces_removed;
-  d["vertices_welded"] = r.vertices_welded;
-  d["seam_vertices_joined"] = r.seam_vertices_joined;
-  d["weld_eps"] = py::none();
-  py::dict normals;
-  normals["nan"] = r.normals.nan;
-  normals["inf"] = r.normals.inf;
-  normals["zero"] = r.normals.zero;
-  normals["flipped"] = r.normals.flipped;
-  normals["missing"] = r.normals.missing;
-  normals["total"] = r.normals.total();
-  d["normals_recomputed"] = normals;
-  py::dict by_normal_kind;
-  by_normal_kind["vertex"] = r.normals.vertex;
-  by_normal_kind["corner"] = r.normals.corner;
-  by_normal_kind["face"] = r.normals.face;
-  d["normals_recomputed_by_kind"] = by_normal_kind;
-  d["weighting"] = weight;
-  d["changes"] = r.changes();
-  return d;
+  return py::module_::import("json").attr("loads")(shadetool::repair_report_json(r, -1, weight));
 }
 
 shadetool::NormalsPolicy parse_policy(const std::string& s) {
