@@ -328,9 +328,15 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
       P.d[i] = {std::scalbn(P.d[i].x, -e), std::scalbn(P.d[i].y, -e), std::scalbn(P.d[i].z, -e)};
     }
   }
-  bool above = true;  // wholly above p's horizon (the common case): no clipped copy
-  for (int i = 0; i < count && above; ++i) above = dot(n, P.q[i]) >= 0;
-  if (above) {
+  // Wholly above p's horizon (the common case): no clipped copy. Wholly below: what
+  // clip_to_hemisphere would find (no vertex with n.q >= 0: nothing left), without clipping.
+  int n_above = 0;
+  for (int i = 0; i < count; ++i) n_above += dot(n, P.q[i]) >= 0;
+  if (n_above == 0) {
+    t.below_horizon = true;
+    return t;
+  }
+  if (n_above == count) {
     t.P = lambert_polygon_integral(P, n);
     t.S = polygon_specular_integral(P, lobe);
     return t;

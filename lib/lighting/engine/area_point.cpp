@@ -17,10 +17,13 @@ Vec3d unit(const Vec3d& v) { return metric_normalize(IdentityMetric{}, v).unit; 
 }  // namespace
 
 void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess, const Vec3d& p,
-                 const Vec3d& n, bool zero_normal, WorldPoint& w) {
+                 const Vec3d& n, bool zero_normal, WorldPoint& w, double world_unit_scale) {
   w.p = frame.space_is_world ? p : transform_point(frame.world_from_space, p);
   if (zero_normal) return;
-  w.n = unit(frame.space_is_world ? n : Vec3d(transform_normal(frame.normal_to_world, Normal3d(n))));
+  if (world_unit_scale > 0 && frame.space_is_world)
+    w.n = n * world_unit_scale;  // = unit(n), bit for bit (area_point.h)
+  else
+    w.n = unit(frame.space_is_world ? n : Vec3d(transform_normal(frame.normal_to_world, Normal3d(n))));
   if (!specular) return;
   const Vec3d V = unit(frame.eye_world - w.p);  // 0 at the eye
   w.lobe.shininess = shininess;
