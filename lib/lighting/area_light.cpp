@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <shadetool/core/math_constants.h>
+#include <shadetool/lighting/engine/lambert_lanes.h>
 
 namespace shadetool {
 
@@ -310,7 +311,7 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
   double big = 0;
   for (int i = 0; i < count; ++i) {
     P.q[i] = vertices[i] - p;
-    P.d[i] = vertices[(i + 1) % count] - vertices[i];
+    P.d[i] = vertices[i + 1 < count ? i + 1 : 0] - vertices[i];
     const double m = std::fabs(P.q[i].x) > std::fabs(P.q[i].y) ? std::fabs(P.q[i].x) : std::fabs(P.q[i].y);
     const double mz = std::fabs(P.q[i].z) > m ? std::fabs(P.q[i].z) : m;
     big = mz > big ? mz : big;  // inline max: std::fmax is a libm call here
@@ -336,8 +337,9 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
     t.below_horizon = true;
     return t;
   }
+  // P: lambert_polygon_integral's bits, four edges at a time (engine/lambert_lanes.h).
   if (n_above == count) {
-    t.P = lambert_polygon_integral(P, n);
+    t.P = lighting_engine::lambert_polygon_integral_lanes(P, n);
     t.S = polygon_specular_integral(P, lobe);
     return t;
   }
@@ -347,7 +349,7 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
     t.below_horizon = true;
     return t;
   }
-  t.P = lambert_polygon_integral(clipped, n);
+  t.P = lighting_engine::lambert_polygon_integral_lanes(clipped, n);
   t.S = polygon_specular_integral(clipped, lobe);
   return t;
 }
