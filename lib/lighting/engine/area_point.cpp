@@ -4,6 +4,8 @@
 #include <shadetool/lighting/engine/metric.h>
 #include <shadetool/lighting/environment_map.h>
 
+#include <new>
+
 namespace shadetool {
 namespace lighting_engine {
 
@@ -26,6 +28,8 @@ void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, d
     w.n = unit(frame.space_is_world ? n : Vec3d(transform_normal(frame.normal_to_world, Normal3d(n))));
   if (!specular) return;
   const Vec3d V = unit(frame.eye_world - w.p);  // 0 at the eye
+  new (&w.lobe) SpecularLobe();
+  w.has_lobe = true;
   w.lobe.shininess = shininess;
   switch (model) {
     case ShadingModel::Lambert: break;
@@ -43,13 +47,13 @@ void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, d
 
 void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
                     double visibility, double visibility_ground) {
-  const bool with_specular = light.has_specular && point.lobe.kind != LobeKind::None;
+  const bool with_specular = light.has_specular && point.has_lobe && point.lobe.kind != LobeKind::None;
   if (point.n == Vec3d{0, 0, 0}) {  // zero normal: the ambient term only
     if (light.has_ambient) color += light.products.ambient;
     return;
   }
-  SpecularLobe lobe = point.lobe;
-  if (!with_specular) lobe.kind = LobeKind::None;
+  static const SpecularLobe no_lobe;  // kind None: P only (not copied per point)
+  const SpecularLobe& lobe = with_specular ? point.lobe : no_lobe;
   switch (light.type) {
     case LightType::Area: {
       const AreaTerms t =

@@ -12,10 +12,16 @@
 namespace shadetool {
 namespace lighting_engine {
 
+// The lobe is made only for specular scenes (has_lobe): a WorldPoint is declared per point, and
+// zero-filling a SpecularLobe there (rep stos) was a fifth of the per-point loop of a rect light.
 struct WorldPoint {
+  WorldPoint() {}
   Vec3d p{0, 0, 0};
-  Vec3d n{0, 0, 0};  // unit, or zero (then only the ambient term is added)
-  SpecularLobe lobe;
+  Vec3d n{0, 0, 0};       // unit, or zero (then only the ambient term is added)
+  bool has_lobe = false;  // lobe constructed (world_point with specular); else it is not read
+  union {
+    SpecularLobe lobe;
+  };
 };
 
 // p, n in the frame's space S (n any length, already flipped for two-sided); zero_normal when the
