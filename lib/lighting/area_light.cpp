@@ -120,7 +120,7 @@ void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, Spherical
   int m = 0;
   bool horizon[kMaxClippedVertices];  // out vertex m starts an edge along the horizon
   for (int i = 0; i < in.count; ++i) {
-    const int j = (i + 1) % in.count;
+    const int j = i + 1 < in.count ? i + 1 : 0;  // not %: an integer division per edge
     const Vec3d &a = in.q[i], &b = in.q[j];
     const double da = dot(axis, a), db = dot(axis, b);
     const bool a_in = da >= 0, b_in = db >= 0;
@@ -139,7 +139,7 @@ void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, Spherical
     }
   }
   for (int i = 0; i < m; ++i)
-    if (horizon[i]) out.d[i] = out.q[(i + 1) % m] - out.q[i];
+    if (horizon[i]) out.d[i] = out.q[i + 1 < m ? i + 1 : 0] - out.q[i];
   out.count = m;
 }
 
