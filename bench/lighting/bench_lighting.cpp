@@ -4,9 +4,11 @@
 // noisy cores; ratios are what matter), medians of N runs, all configurations in one process.
 //
 // Usage: bench_lighting [REPEATS]   (default 7)
-//        bench_lighting --area [REPEATS] [ratios]   issue 16: area, sky and environment lights
-//                                          against a point light, and (without `ratios`) the
-//                                          quadrature paths' and the environment's time against error
+//        bench_lighting --area [REPEATS] [ratios [WORD]]   issue 16: area, sky and environment
+//                                          lights against a point light (with WORD: only the rows
+//                                          whose name contains it, e.g. "rect, diffuse"), and
+//                                          (without `ratios`) the quadrature paths' and the
+//                                          environment's time against error
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -31,6 +33,7 @@ namespace {
 
 int g_repeats = 7;
 bool g_ratios_only = false;  // --area REPEATS ratios: the table against the point light only
+std::string g_row_filter;    // --area REPEATS ratios WORD: only the rows whose name contains WORD
 double g_sink = 0;  // keeps results alive
 
 struct Points {
@@ -284,6 +287,7 @@ void area_bench(const Points& pts) {
               n_points, g_repeats);
   std::printf("%-40s %10s %12s %10s %8s\n", "light", "ms", "point light", "ns/vertex", "ratio");
   for (const Row& r : rows) {
+    if (std::string(r.name).find(g_row_filter) == std::string::npos) continue;
     const Scene a = scene_with(r.model, r.light), b = scene_with(r.model, pt);
     const auto t = interleaved_medians({shade_job(a, pts, ShadingSpace::Auto, {}), shade_job(b, pts, ShadingSpace::Auto, {})});
     std::printf("%-40s %10.1f %12.1f %10.0f %7.2fx\n", r.name, t[0], t[1], t[0] * 1e6 / n_points, t[0] / t[1]);
@@ -348,6 +352,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--area") {  // issue 16's table only, on a 250 x 250 torus
     if (argc > 2) g_repeats = std::max(1, std::atoi(argv[2]));
     g_ratios_only = argc > 3 && std::string(argv[3]) == "ratios";
+    if (g_ratios_only && argc > 4) g_row_filter = argv[4];
     testing::AnalyticMesh torus = testing::torus(250, 250, 1.0, 0.4);
     Points pts;
     pts.p = torus.mesh.positions;

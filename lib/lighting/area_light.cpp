@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <shadetool/core/math_constants.h>
+#include <shadetool/lighting/engine/lambert_lanes.h>
 
 namespace shadetool {
 
@@ -119,7 +120,7 @@ void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, Spherical
   int m = 0;
   bool horizon[kMaxClippedVertices];  // out vertex m starts an edge along the horizon
   for (int i = 0; i < in.count; ++i) {
-    const int j = (i + 1) % in.count;
+    const int j = i + 1 < in.count ? i + 1 : 0;  // not %: an integer division per edge
     const Vec3d &a = in.q[i], &b = in.q[j];
     const double da = dot(axis, a), db = dot(axis, b);
     const bool a_in = da >= 0, b_in = db >= 0;
@@ -138,7 +139,7 @@ void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, Spherical
     }
   }
   for (int i = 0; i < m; ++i)
-    if (horizon[i]) out.d[i] = out.q[(i + 1) % m] - out.q[i];
+    if (horizon[i]) out.d[i] = out.q[i + 1 < m ? i + 1 : 0] - out.q[i];
   out.count = m;
 }
 
@@ -310,7 +311,7 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
   double big = 0;
   for (int i = 0; i < count; ++i) {
     P.q[i] = vertices[i] - p;
-    P.d[i] = vertices[(i + 1) % count] - vertices[i];
+    P.d[i] = vertices[i + 1 < count ? i + 1 : 0] - vertices[i];
     const double m = std::fabs(P.q[i].x) > std::fabs(P.q[i].y) ? std::fabs(P.q[i].x) : std::fabs(P.q[i].y);
     const double mz = std::fabs(P.q[i].z) > m ? std::fabs(P.q[i].z) : m;
     big = mz > big ? mz : big;  // inline max: std::fmax is a libm call here
@@ -328,10 +329,17 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
       P.d[i] = {std::scalbn(P.d[i].x, -e), std::scalbn(P.d[i].y, -e), std::scalbn(P.d[i].z, -e)};
     }
   }
-  bool above = true;  // wholly above p's horizon (the common case): no clipped copy
-  for (int i = 0; i < count && above; ++i) above = dot(n, P.q[i]) >= 0;
-  if (above) {
-    t.P = lambert_polygon_integral(P, n);
+  // Wholly above p's horizon (the common case): no clipped copy. Wholly below: what
+  // clip_to_hemisphere would find (no vertex with n.q >= 0: nothing left), without clipping.
+  int n_above = 0;
+  for (int i = 0; i < count; ++i) n_above += dot(n, P.q[i]) >= 0;
+  if (n_above == 0) {
+    t.below_horizon = true;
+    return t;
+  }
+  // P: lambert_polygon_integral's bits, four edges at a time (engine/lambert_lanes.h).
+  if (n_above == count) {
+    t.P = lighting_engine::lambert_polygon_integral_lanes(P, n);
     t.S = polygon_specular_integral(P, lobe);
     return t;
   }
@@ -341,7 +349,7 @@ AreaTerms polygon_light_terms(const Vec3d* vertices, int count, const Vec3d& emi
     t.below_horizon = true;
     return t;
   }
-  t.P = lambert_polygon_integral(clipped, n);
+  t.P = lighting_engine::lambert_polygon_integral_lanes(clipped, n);
   t.S = polygon_specular_integral(clipped, lobe);
   return t;
 }

@@ -85,18 +85,19 @@ void clip_to_hemisphere(const SphericalPolygon& in, const Vec3d& axis, Spherical
 // around 0, pi/8 or pi/4 (x = (num - t_k den) / (den + t_k num), t_k = tan(k pi/8)), where the
 // series' first omitted term x^23/23 is below 2e-17 of x. s = c = 0 gives 0.
 // Lambert's formula needs one per edge; glibc's atan2 was a quarter of a rect light's time.
-// Inline and branch-free (selects, an Estrin-ordered polynomial), so that the edges of a polygon
-// overlap in the pipeline.
+// Inline and branch-free (selects only, an Estrin-ordered polynomial), so that the edges of a
+// polygon overlap in the pipeline and a loop over edges vectorises (engine/lambert_lanes.h).
 inline double edge_angle(double s, double c) {
   const double ac = c < 0 ? -c : c;
   const bool swap = s > ac;  // reduce to num / den in [0, 1]: theta' = atan(num / den) in [0, pi/4]
   const double num = swap ? ac : s, den = swap ? s : ac;
-  if (!(den > 0)) return 0;  // s = c = 0: a zero-length vector (NaN: 0 as well)
+  const bool zero = !(den > 0);  // s = c = 0: a zero-length vector (NaN: 0 as well); selected at the end
   // Nearest of 0, pi/8, pi/4 (boundaries tan(pi/16), tan(3 pi/16)): |x| <= tan(pi/16) = 0.1989.
   const bool k1 = num >= 0.19891236737965800 * den, k2 = num >= 0.66817863791929890 * den;
   const double tk = k2 ? 1.0 : k1 ? 0.41421356237309503 : 0.0;              // tan(pi/8) rounded
   const double base = k2 ? 0.78539816339744831 : k1 ? 0.39269908169872414 : 0.0;  // pi/4, pi/8
-  const double x = (num - tk * den) / (den + tk * num);  // den + tk num >= den > 0: divisor checked
+  // den + tk num >= den > 0, or 1 where the result is the 0 selected below: divisor checked
+  const double x = (num - tk * den) / (zero ? 1.0 : den + tk * num);
   const double y = x * x, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
   // atan(x) = x - x y (1/3 - y/5 + y^2/7 - ... + y^9/21): the bracket by Estrin's scheme.
   constexpr double c3 = -1.0 / 3, c5 = 1.0 / 5, c7 = -1.0 / 7, c9 = 1.0 / 9, c11 = -1.0 / 11, c13 = 1.0 / 13,
@@ -105,7 +106,8 @@ inline double edge_angle(double s, double c) {
   const double p = (q0 + q1 * y2) + (q2 + q3 * y2) * y4 + q4 * y8;
   const double a = base + (x + x * (y * p));  // atan(t_k) = theta_k to 2e-17 (t1's rounding)
   const double b = swap ? 1.5707963267948966 - a : a;
-  return c < 0 ? 3.1415926535897931 - b : b;
+  const double theta = c < 0 ? 3.1415926535897931 - b : b;
+  return zero ? 0.0 : theta;
 }
 
 // Lambert's formula: the projected solid angle about n of a convex spherical polygon lying in

@@ -14,6 +14,7 @@
 
 #include <shadetool/core/math_constants.h>
 #include <shadetool/lighting/area_light.h>
+#include <shadetool/lighting/engine/lambert_lanes.h>
 #include <shadetool/lighting/shade_points.h>
 #include "lighting_test_util.h"
 
@@ -374,4 +375,41 @@ TEST_CASE("edge_angle is atan2(s, c) to 1e-15 relative, from 1e-300 radians to p
   CHECK(std::fabs(edge_angle(0, -1) - kPi) <= 4e-16 * kPi);
   CHECK(std::fabs(edge_angle(1, 0) - kPi / 2) <= 2e-16 * kPi);
   CHECK(edge_angle(1e-300, 1) == 1e-300);
+}
+
+TEST_CASE("Lambert's formula with edges in vector lanes gives the scalar formula's bits, clipped or not",
+          "[lighting][area]") {
+  // engine/lambert_lanes.h promises lambert_polygon_integral's bits (same per-edge operations, terms
+  // summed in edge order; no FMA contraction on x86-64). Elsewhere (a compiler that may fuse
+  // multiply-adds in one and not the other) 1e-15 relative.
+#if defined(__x86_64__) && !defined(__FMA__)
+  const double tolerance = 0;
+#else
+  const double tolerance = 1e-15;
+#endif
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int clipped_count = 0, counts_seen[kMaxClippedVertices + 1] = {};
+  for (int trial = 0; trial < 3000; ++trial) {
+    const std::vector<Vec3d> v = random_convex_polygon(rng, Vec3d{u(rng), u(rng), u(rng)} * 3.0, 0.2 + std::fabs(u(rng)));
+    const Vec3d p{u(rng), u(rng), u(rng)};
+    const Vec3d n = random_unit(rng);
+    SphericalPolygon P;
+    P.count = int(v.size());
+    for (int i = 0; i < P.count; ++i) {
+      P.q[i] = v[i] - p;
+      P.d[i] = v[(i + 1) % P.count] - v[i];
+    }
+    if (trial % 7 == 0) P.d[0] = {0, 0, 0}, P.q[1] = P.q[0];  // a zero-length edge: adds nothing
+    SphericalPolygon clipped;
+    clip_to_hemisphere(P, n, clipped);
+    const SphericalPolygon& poly = trial % 2 == 0 ? P : clipped;  // the lanes do not need the hemisphere
+    if (&poly == &clipped) ++clipped_count;
+    ++counts_seen[poly.count];
+    const double want = lambert_polygon_integral(poly, n), got = lighting_engine::lambert_polygon_integral_lanes(poly, n);
+    INFO("trial " << trial << ", " << poly.count << " edges");
+    REQUIRE(std::fabs(got - want) <= tolerance * std::fabs(want));
+  }
+  CHECK(clipped_count == 1500);
+  for (int k = 3; k <= 8; ++k) CHECK(counts_seen[k] > 0);  // one and two blocks of lanes, overlapping or not
 }

@@ -4,6 +4,8 @@
 #include <shadetool/lighting/engine/metric.h>
 #include <shadetool/lighting/environment_map.h>
 
+#include <new>
+
 namespace shadetool {
 namespace lighting_engine {
 
@@ -17,12 +19,17 @@ Vec3d unit(const Vec3d& v) { return metric_normalize(IdentityMetric{}, v).unit; 
 }  // namespace
 
 void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess, const Vec3d& p,
-                 const Vec3d& n, bool zero_normal, WorldPoint& w) {
+                 const Vec3d& n, bool zero_normal, WorldPoint& w, double world_unit_scale) {
   w.p = frame.space_is_world ? p : transform_point(frame.world_from_space, p);
   if (zero_normal) return;
-  w.n = unit(frame.space_is_world ? n : Vec3d(transform_normal(frame.normal_to_world, Normal3d(n))));
+  if (world_unit_scale > 0 && frame.space_is_world)
+    w.n = n * world_unit_scale;  // = unit(n), bit for bit (area_point.h)
+  else
+    w.n = unit(frame.space_is_world ? n : Vec3d(transform_normal(frame.normal_to_world, Normal3d(n))));
   if (!specular) return;
   const Vec3d V = unit(frame.eye_world - w.p);  // 0 at the eye
+  new (&w.lobe) SpecularLobe();
+  w.has_lobe = true;
   w.lobe.shininess = shininess;
   switch (model) {
     case ShadingModel::Lambert: break;
@@ -40,13 +47,13 @@ void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, d
 
 void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
                     double visibility, double visibility_ground) {
-  const bool with_specular = light.has_specular && point.lobe.kind != LobeKind::None;
+  const bool with_specular = light.has_specular && point.has_lobe && point.lobe.kind != LobeKind::None;
   if (point.n == Vec3d{0, 0, 0}) {  // zero normal: the ambient term only
     if (light.has_ambient) color += light.products.ambient;
     return;
   }
-  SpecularLobe lobe = point.lobe;
-  if (!with_specular) lobe.kind = LobeKind::None;
+  static const SpecularLobe no_lobe;  // kind None: P only (not copied per point)
+  const SpecularLobe& lobe = with_specular ? point.lobe : no_lobe;
   switch (light.type) {
     case LightType::Area: {
       const AreaTerms t =

@@ -12,17 +12,27 @@
 namespace shadetool {
 namespace lighting_engine {
 
+// The lobe is made only for specular scenes (has_lobe): a WorldPoint is declared per point, and
+// zero-filling a SpecularLobe there (rep stos) was a fifth of the per-point loop of a rect light.
 struct WorldPoint {
+  WorldPoint() {}
   Vec3d p{0, 0, 0};
-  Vec3d n{0, 0, 0};  // unit, or zero (then only the ambient term is added)
-  SpecularLobe lobe;
+  Vec3d n{0, 0, 0};       // unit, or zero (then only the ambient term is added)
+  bool has_lobe = false;  // lobe constructed (world_point with specular); else it is not read
+  union {
+    SpecularLobe lobe;
+  };
 };
 
 // p, n in the frame's space S (n any length, already flipped for two-sided); zero_normal when the
 // loop found n zero or non-finite. Fills a default-constructed `out` (written in place: a
 // returned WorldPoint was zero-filled twice per point, a third of this function's time).
+// world_unit_scale > 0: S is world and n * world_unit_scale is already the unit normal with the
+// bits unit(n) would give (the loop's 1 / sqrt(n.n) in the identity metric, n.n in
+// [2^-1000, 2^1000]): used as it is, not normalised again (a square root and a division on the
+// path of every area light).
 void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess, const Vec3d& p,
-                 const Vec3d& n, bool zero_normal, WorldPoint& out);
+                 const Vec3d& n, bool zero_normal, WorldPoint& out, double world_unit_scale = 0);
 
 // Adds one area or sky light's terms to color; counts skips. visibility (shadows; 1 without):
 // the light's visible fraction; visibility_ground the sky's ground's (sky lights only).

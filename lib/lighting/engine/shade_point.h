@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include <shadetool/lighting/lighting_equation.h>
 #include <shadetool/lighting/shade_points.h>
@@ -146,7 +147,12 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
       case LightType::Environment:
         if (kShadows && (vis < 1 || vis_ground < 1)) ++count.shadowed;
         if (!world_ready) {
-          world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0, world);
+          // In world space with the identity metric, n * n_scale is unit(n) bit for bit (the same
+          // 1 / sqrt(n.n) as engine/metric.h's rule inside [2^-1000, 2^1000]): not redone.
+          const bool world_unit = std::is_same<Metric, IdentityMetric>::value && frame.space_is_world &&
+                                  n2 >= 0x1p-1000 && n2 <= 0x1p1000;
+          world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0, world,
+                      world_unit ? n_scale : 0.0);
           world_ready = true;
         }
         add_area_light(color, light, world, count, vis, vis_ground);
