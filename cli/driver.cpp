@@ -400,10 +400,10 @@ void write_gltf_output(const IoOptions& io, OutputKind kind, const shadetool::Gl
   }
   shadetool::GltfWriteResult wr;
   const bool text = io.ascii || shadetool::gltf_name_is_text(output) || (output == "-" && !io.format.empty() && shadetool::gltf_name_is_text("." + io.format));
-  const shadetool::GltfBytes bytes = shadetool::write_gltf_bytes(doc, !text, name, wr);
+  const std::string bytes = shadetool::write_gltf(doc, !text, name, wr);
   if (wr.split_vertices > 0) result.stats["split_vertices"] = wr.split_vertices;
   for (auto& n : wr.notes) result.notes.push_back(n);
-  std::vector<shadetool::io::FileToWrite> files{{output, bytes.view()}};
+  std::vector<shadetool::io::FileToWrite> files{{output, bytes}};
   for (const auto& [path, content] : result.other_files) files.push_back({path, content});
   shadetool::io::write_files_atomically(files);
 }

@@ -92,16 +92,6 @@ struct GltfWriteResult {
 // `name` is the output's name for messages.
 std::string write_gltf(const GltfDocument& document, bool binary, const std::string& name, GltfWriteResult& result);
 
-// The same file built in place: a GLB's headers and JSON go into room left in front of its binary
-// chunk, so the file is `view()` and the (possibly large) chunk is never moved; write_gltf returns
-// it as a std::string, which costs one move of the chunk (bench/gltf/results.md).
-struct GltfBytes {
-  std::string storage;
-  std::size_t offset = 0;
-  std::string_view view() const { return std::string_view(storage).substr(offset); }
-};
-GltfBytes write_gltf_bytes(const GltfDocument& document, bool binary, const std::string& name, GltfWriteResult& result);
-
 // True when `name` ends in .gltf (any case): JSON output; anything else is written as GLB.
 bool gltf_name_is_text(const std::string& name);
 

@@ -39,30 +39,25 @@ const char* type_name(int comps) {
   }
 }
 
-// Room left in front of a GLB's binary chunk for its headers and JSON (a multiple of 8).
-constexpr std::size_t kFrontRoom = std::size_t(1) << 20;
-
 // The output's single buffer and the JSON arrays that index into it.
 struct OutBuffer {
-  std::string bytes;  // [0, front): room for a GLB's headers and JSON; the buffer from `front` on
+  std::string bytes;
   json* views;
   json* accessors;
-  std::size_t front = 0;  // a multiple of 8, so offsets in the buffer keep their alignment
 
-  std::size_t size() const { return bytes.size() - front; }
   void align(std::size_t a) {
-    while (size() % a) bytes.push_back('\0');
+    while (bytes.size() % a) bytes.push_back('\0');
   }
   // A new bufferView of `count` elements of `elem` bytes, `stride` apart (stride >= elem; the
   // padding bytes are zero). Returns its index.
   int add_view(const unsigned char* data, std::size_t count, std::size_t elem, std::size_t stride, int target) {
     align(4);
-    const std::size_t offset = size();
+    const std::size_t offset = bytes.size();
     if (stride == elem) {
       bytes.append(reinterpret_cast<const char*>(data), count * elem);
     } else {
-      bytes.resize(front + offset + count * stride, '\0');
-      for (std::size_t i = 0; i < count; ++i) std::memcpy(&bytes[front + offset + i * stride], data + i * elem, elem);
+      bytes.resize(offset + count * stride, '\0');
+      for (std::size_t i = 0; i < count; ++i) std::memcpy(&bytes[offset + i * stride], data + i * elem, elem);
     }
     json v = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", count * stride}};
     if (stride != elem) v["byteStride"] = stride;
@@ -438,27 +433,17 @@ GltfDocument gltf_document_from_mesh(const Mesh& mesh) {
 }
 
 std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& name, GltfWriteResult& result) {
-  GltfBytes b = write_gltf_bytes(doc, binary, name, result);
-  b.storage.erase(0, b.offset);
-  return std::move(b.storage);
-}
-
-GltfBytes write_gltf_bytes(const GltfDocument& doc, bool binary, const std::string& name, GltfWriteResult& result) {
   const GltfSource* src = doc.source.get();
   const tinygltf::Model* model = src ? &src->model : nullptr;
   json j = src ? src->json : fresh_document();
   if (!j.contains("bufferViews") || !j["bufferViews"].is_array()) j["bufferViews"] = json::array();
   if (!j.contains("accessors") || !j["accessors"].is_array()) j["accessors"] = json::array();
   OutBuffer out{std::string(), &j["bufferViews"], &j["accessors"]};
-  if (binary && model) {
-    out.front = kFrontRoom;
-    out.bytes.assign(kFrontRoom, '\0');
-  }
 
   // Every input buffer, concatenated (8-byte aligned, so every accessor keeps its alignment).
   if (model) {
     std::vector<std::size_t> base(model->buffers.size());
-    std::size_t total = kFrontRoom;  // GLB headers and room for the JSON in front
+    std::size_t total = 28 + (std::size_t(1) << 20);  // GLB headers and room for the JSON in front
     for (const auto& b : model->buffers) total += b.data.size() + 8;
     for (const auto& im : model->images) total += im.image.size() + 4;
     for (const GltfPrimitive& p : doc.primitives)  // room for what a command adds (position, normal, colour, indices)
@@ -466,7 +451,7 @@ GltfBytes write_gltf_bytes(const GltfDocument& doc, bool binary, const std::stri
     reserve_output(out.bytes, total);
     for (std::size_t b = 0; b < model->buffers.size(); ++b) {
       out.align(8);
-      base[b] = out.size();
+      base[b] = out.bytes.size();
       out.bytes.append(reinterpret_cast<const char*>(model->buffers[b].data.data()), model->buffers[b].data.size());
     }
     for (json& v : j["bufferViews"]) {
@@ -502,22 +487,21 @@ GltfBytes write_gltf_bytes(const GltfDocument& doc, bool binary, const std::stri
     result.notes.push_back("texture coordinates not written (per-corner texture coordinates have no glTF form here)");
 
   out.align(4);
-  const std::size_t bin = out.size();
-  if (bin == 0) {
+  if (out.bytes.empty()) {
     j.erase("buffers");
     if (j["bufferViews"].empty()) j.erase("bufferViews");
     if (j["accessors"].empty()) j.erase("accessors");
   } else {
-    json buffer = {{"byteLength", bin}};
-    if (!binary) buffer["uri"] = "data:application/octet-stream;base64," + base64(out.bytes);  // front is 0
+    json buffer = {{"byteLength", out.bytes.size()}};
+    if (!binary) buffer["uri"] = "data:application/octet-stream;base64," + base64(out.bytes);
     j["buffers"] = json::array({buffer});
   }
 
   std::string text = j.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (!binary) return GltfBytes{text + "\n", 0};
+  if (!binary) return text + "\n";
   while (text.size() % 4) text += ' ';
-  const std::uint32_t total = std::uint32_t(12 + 8 + text.size() + (bin == 0 ? 0 : 8 + bin));
-  if (12 + 8 + text.size() + 8 + bin > 0xFFFFFFF0ull) fail(name, 0, "the output exceeds GLB's 4 GiB limit: write .gltf");
+  const std::uint32_t total = std::uint32_t(12 + 8 + text.size() + (out.bytes.empty() ? 0 : 8 + out.bytes.size()));
+  if (12 + 8 + text.size() + 8 + out.bytes.size() > 0xFFFFFFF0ull) fail(name, 0, "the output exceeds GLB's 4 GiB limit: write .gltf");
   std::string head;
   auto put32 = [&head](std::uint32_t v) { head.append(reinterpret_cast<const char*>(&v), 4); };
   head += "glTF";
@@ -526,17 +510,13 @@ GltfBytes write_gltf_bytes(const GltfDocument& doc, bool binary, const std::stri
   put32(std::uint32_t(text.size()));
   put32(0x4E4F534Au);  // JSON
   head += text;
-  if (bin == 0) return GltfBytes{std::move(head), 0};
-  put32(std::uint32_t(bin));
+  if (out.bytes.empty()) return head;
+  put32(std::uint32_t(out.bytes.size()));
   put32(0x004E4942u);  // BIN
-  // The headers and JSON go into the room in front of the binary chunk (no move of the chunk);
-  // a JSON larger than the room takes its place by one move.
-  if (head.size() <= out.front) {
-    std::memcpy(&out.bytes[out.front - head.size()], head.data(), head.size());
-    return GltfBytes{std::move(out.bytes), out.front - head.size()};
-  }
-  out.bytes.replace(0, out.front, head);
-  return GltfBytes{std::move(out.bytes), 0};
+  // The headers and JSON go in front of the binary chunk in place (a move within the reserved
+  // block, not a second copy of the data into fresh memory).
+  out.bytes.insert(0, head);
+  return std::move(out.bytes);
 }
 
 }  // namespace shadetool

@@ -198,31 +198,6 @@ TEST_CASE("glTF write: unchanged document writes the same data, a well-formed GL
   CHECK(back.primitives[0].mesh.corner_vertex == d.primitives[0].mesh.corner_vertex);
 }
 
-TEST_CASE("glTF write in place: the headers and JSON in front of the chunk, any JSON size", "[gltf][write]") {
-  // A small JSON fits the room in front of the binary chunk; a JSON of 2 MB (extras) does not and
-  // takes the other path. Both must be the same bytes as write_gltf and a well-formed GLB.
-  for (const std::size_t extras : {std::size_t(0), std::size_t(2) << 20}) {
-    Built b = base_doc();
-    const int pos = float_accessor(b, kQuad, "VEC3", 3, true);
-    const std::vector<std::uint32_t> tri{0, 1, 2, 0, 2, 3};
-    const int idx = b.accessor({{"bufferView", b.view(bytes_of(tri))}, {"componentType", 5125}, {"count", 6}, {"type", "SCALAR"}});
-    b.doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", pos}}}, {"indices", idx}}})}}});
-    if (extras) b.doc["extras"] = {{"note", std::string(extras, 'x')}};
-    const std::string in = b.glb();
-    const GltfDocument d = read_gltf(in, "q.glb");
-    GltfWriteResult r1, r2;
-    const GltfBytes placed = write_gltf_bytes(d, true, "out.glb", r1);
-    const std::string whole = write_gltf(d, true, "out.glb", r2);
-    CHECK((placed.offset > 0) == (extras == 0));
-    REQUIRE(std::string(placed.view()) == whole);
-    CHECK(whole.substr(0, 4) == "glTF");
-    CHECK(u32_at(whole, 8) == whole.size());
-    const json jo = glb_json(whole);
-    CHECK(jo.value("extras", json::object()).value("note", std::string()).size() == extras);
-    CHECK(read_gltf(whole, "out.glb").primitives[0].mesh.positions == d.primitives[0].mesh.positions);
-  }
-}
-
 TEST_CASE("glTF write: new normals are a new float VEC3 accessor; corner normals split vertices", "[gltf][write]") {
   GltfDocument d = read_gltf(quad_glb(5123), "q.glb");
   Mesh& m = d.primitives[0].mesh;
