@@ -29,40 +29,14 @@
 #include <shadetool/io/file_bytes.h>
 #include <shadetool/io/gltf_document.h>
 #include <shadetool/io/mesh_io.h>
+#include "../io/float_torus.h"
 
 using namespace shadetool;
 
 namespace {
 
-Mesh torus(int nu, int nv) {
-  Mesh m;
-  const double pi = 3.14159265358979323846;
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const double u = 2 * pi * i / nu, v = 2 * pi * j / nv;
-      m.add_vertex({double(float((1 + 0.4 * std::cos(v)) * std::cos(u))), double(float((1 + 0.4 * std::cos(v)) * std::sin(u))),
-                    double(float(0.4 * std::sin(v)))});
-    }
-  auto id = [&](int i, int j) { return std::uint32_t((j % nv) * nu + (i % nu)); };
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      m.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.add_face({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  m.precision = ValuePrecision::Float;
-  return m;
-}
-
-double median_ms(int reps, const std::function<void()>& f) {
-  std::vector<double> t;
-  for (int r = 0; r < reps; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
+using bench::float_torus;
+using bench::median_ms;
 
 void write_all(const std::string& path, const char* data, std::size_t n) {
   FILE* f = std::fopen(path.c_str(), "wb");
@@ -79,7 +53,7 @@ int main(int argc, char** argv) {
   const int reps = argc > 3 ? std::atoi(argv[3]) : 7;
   const std::string dir = argc > 4 ? argv[4] : "/tmp";
   const std::string in = dir + "/torus_1m.glb", out_ours = dir + "/torus_1m_ours.glb", out_copy = dir + "/torus_1m_copy.glb";
-  const Mesh m = torus(nu, nv);
+  const Mesh m = float_torus(nu, nv);
   WriteOptions wo;
   wo.format = Format::Gltf;
   write_mesh(m, in, wo);

@@ -31,40 +31,14 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include <shadetool/io/mesh_io.h>
+#include "float_torus.h"
 
 using namespace shadetool;
 
 namespace {
 
-Mesh torus(int nu, int nv) {
-  Mesh m;
-  const double pi = 3.14159265358979323846;
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const double u = 2 * pi * i / nu, v = 2 * pi * j / nv;
-      m.add_vertex({double(float((1 + 0.4 * std::cos(v)) * std::cos(u))), double(float((1 + 0.4 * std::cos(v)) * std::sin(u))),
-                    double(float(0.4 * std::sin(v)))});
-    }
-  auto id = [&](int i, int j) { return std::uint32_t((j % nv) * nu + (i % nu)); };
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      m.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.add_face({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  m.precision = ValuePrecision::Float;
-  return m;
-}
-
-double median_ms(int reps, const std::function<void()>& f) {
-  std::vector<double> t;
-  for (int r = 0; r < reps; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
+using bench::float_torus;
+using bench::median_ms;
 
 std::size_t fread_all(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
@@ -97,7 +71,7 @@ int main(int argc, char** argv) {
 
   const bool warm = std::getenv("BENCH_IO_WARM") != nullptr;
   if (!warm) mallopt(M_MMAP_THRESHOLD, 1 << 20);
-  const Mesh m = torus(nu, nv);
+  const Mesh m = float_torus(nu, nv);
   std::printf("mesh: torus %d x %d: %zu vertices, %zu triangles; %d repetitions, medians; %s memory\n", nu, nv,
               m.num_vertices(), m.num_faces(), reps, warm ? "recycled (warm)" : "fresh (one-shot process)");
   const double write_obj = median_ms(3, [&] { write_mesh(m, obj, WriteOptions{}); });
