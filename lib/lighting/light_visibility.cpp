@@ -158,6 +158,20 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
   auto store_sampled = [&](std::size_t j, std::size_t slot, const std::vector<double>& v) {
     for (std::size_t i = 0; i < P; ++i) vis[row * i + 2 * j + slot] = v[i];
   };
+  // A light's sampler at point i (normal unit_normal(normals, i)) that counts the rays it asks for.
+  auto counting = [&sampled_rays](auto sample) -> LightSampler {
+    return [sample, &sampled_rays](std::size_t i, const Vec3d& p, double u, double v) {
+      const LightSample s = sample(i, p, u, v);
+      if (s.weight > 0) sampled_rays.fetch_add(1, std::memory_order_relaxed);
+      return s;
+    };
+  };
+  // One sampled part per light (area, environment): visibility in slot 0, partly hidden points counted.
+  auto sample_one_part = [&](std::size_t j, const LightSampler& sampler, const ShadowSampleOptions& so) {
+    const std::vector<double> v = shadow_visibility_sampled(scene, points, normals, ids, sampler, so);
+    store_sampled(j, 0, v);
+    for (std::size_t i = 0; i < P; ++i) st.occluded_terms += v[i] < 1;
+  };
   for (std::size_t j = 0; j < L; ++j) {
     const Light& light = lighting.lights[plan.lights[j]];
     ShadowSampleOptions so;
@@ -182,21 +196,15 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
         LightSampler sampler;
         if (light.shape == AreaShape::Polygon) {
           const PolygonSampler polygon(light);
-          sampler = [polygon, &normals, &sampled_rays](std::size_t i, const Vec3d& p, double u, double v) {
-            const LightSample s = polygon(p, unit_normal(normals, i), u, v);
-            if (s.weight > 0) sampled_rays.fetch_add(1, std::memory_order_relaxed);
-            return s;
-          };
+          sampler = counting([polygon, &normals](std::size_t i, const Vec3d& p, double u, double v) {
+            return polygon(p, unit_normal(normals, i), u, v);
+          });
         } else {
-          sampler = [&light, &normals, &sampled_rays](std::size_t i, const Vec3d& p, double u, double v) {
-            const LightSample s = sample_sphere(light, p, unit_normal(normals, i), u, v);
-            if (s.weight > 0) sampled_rays.fetch_add(1, std::memory_order_relaxed);
-            return s;
-          };
+          sampler = counting([&light, &normals](std::size_t i, const Vec3d& p, double u, double v) {
+            return sample_sphere(light, p, unit_normal(normals, i), u, v);
+          });
         }
-        const std::vector<double> v = shadow_visibility_sampled(scene, points, normals, ids, sampler, so);
-        store_sampled(j, 0, v);
-        for (std::size_t i = 0; i < P; ++i) st.occluded_terms += v[i] < 1;
+        sample_one_part(j, sampler, so);
         break;
       }
       case LightType::Sky: {
@@ -205,12 +213,9 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
         for (int slot = 0; slot < 2; ++slot) {
           const bool sky = slot == 0;
           so.seed = std::uint32_t(2 * j + slot);
-          const LightSampler sampler = [&light, &normals, &sampled_rays, sky](std::size_t i, const Vec3d&, double u,
-                                                                             double v) {
-            const LightSample s = sample_sky(light, unit_normal(normals, i), u, v, sky);
-            if (s.weight > 0) sampled_rays.fetch_add(1, std::memory_order_relaxed);
-            return s;
-          };
+          const LightSampler sampler = counting([&light, &normals, sky](std::size_t i, const Vec3d&, double u, double v) {
+            return sample_sky(light, unit_normal(normals, i), u, v, sky);
+          });
           parts[slot] = shadow_visibility_sampled(scene, points, normals, ids, sampler, so);
           store_sampled(j, slot, parts[slot]);
         }
@@ -219,14 +224,10 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
       }
       case LightType::Environment: {
         ++st.sampled_lights;
-        const LightSampler sampler = [&light, &normals, &sampled_rays](std::size_t i, const Vec3d&, double u, double v) {
-          const LightSample s = sample_environment(light, unit_normal(normals, i), u, v);
-          if (s.weight > 0) sampled_rays.fetch_add(1, std::memory_order_relaxed);
-          return s;
-        };
-        const std::vector<double> v = shadow_visibility_sampled(scene, points, normals, ids, sampler, so);
-        store_sampled(j, 0, v);
-        for (std::size_t i = 0; i < P; ++i) st.occluded_terms += v[i] < 1;
+        sample_one_part(j, counting([&light, &normals](std::size_t i, const Vec3d&, double u, double v) {
+                          return sample_environment(light, unit_normal(normals, i), u, v);
+                        }),
+                        so);
         break;
       }
     }
