@@ -98,16 +98,22 @@ LightSample sample_sphere(const Light& light, const Vec3d& p, const Vec3d& n, do
   return out;
 }
 
+// A direction about unit n with density (n.w)/pi: Malley's method on the polar map of the disc
+// (radius sqrt(u), angle 2 pi v), shared by the sky and the environment.
+Vec3d cosine_direction(const Vec3d& n, double u, double v) {
+  Vec3d t1, t2;
+  orthonormal_basis(n, t1, t2);
+  const double r = std::sqrt(u), phi = kTwoPi * v;
+  return t1 * (r * std::cos(phi)) + t2 * (r * std::sin(phi)) + n * std::sqrt(std::fmax(0.0, 1 - u));
+}
+
 // Sky: cosine-weighted directions about n; `sky` picks the sky's (up.w > 0) or the ground's.
 LightSample sample_sky(const Light& light, const Vec3d& n, double u, double v, bool sky) {
   LightSample out;
   out.at_infinity = true;
   out.target = light.up;
   if (n == Vec3d{0, 0, 0}) return out;
-  Vec3d t1, t2;
-  orthonormal_basis(n, t1, t2);
-  const double r = std::sqrt(u), phi = kTwoPi * v;
-  const Vec3d dir = t1 * (r * std::cos(phi)) + t2 * (r * std::sin(phi)) + n * std::sqrt(std::fmax(0.0, 1 - u));
+  const Vec3d dir = cosine_direction(n, u, v);
   out.target = dir;
   const Vec3d up = normalized_or(light.up, Vec3d{0, 0, 1});
   out.weight = (dot(up, dir) > 0) == sky ? 1.0 : 0.0;
@@ -121,10 +127,7 @@ LightSample sample_environment(const Light& light, const Vec3d& n, double u, dou
   out.at_infinity = true;
   out.target = n;
   if (n == Vec3d{0, 0, 0}) return out;
-  Vec3d t1, t2;
-  orthonormal_basis(n, t1, t2);
-  const double r = std::sqrt(u), phi = kTwoPi * v;
-  const Vec3d dir = t1 * (r * std::cos(phi)) + t2 * (r * std::sin(phi)) + n * std::sqrt(std::fmax(0.0, 1 - u));
+  const Vec3d dir = cosine_direction(n, u, v);
   out.target = dir;
   const Vec3d L = environment_radiance(*light.environment, transpose(light.world_from_map) * dir);
   out.weight = 0.2126 * L.x + 0.7152 * L.y + 0.0722 * L.z;
