@@ -39,15 +39,6 @@ Light sphere_light(const Vec3d& c, double r, const Vec3d& radiance) {
   L.ambient = {0, 0, 0};
   return L;
 }
-Light sky_light(const Vec3d& up, const Vec3d& sky, const Vec3d& ground) {
-  Light L;
-  L.type = LightType::Sky;
-  L.up = up;
-  L.diffuse = L.specular = sky;
-  L.ground = ground;
-  L.ambient = {0, 0, 0};
-  return L;
-}
 
 void check_rel(const Vec3d& a, const Vec3d& b, double rel) {
   for (int k = 0; k < 3; ++k) {

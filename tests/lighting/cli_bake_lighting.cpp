@@ -12,6 +12,7 @@
 
 #include <shadetool/io/mesh_io.h>
 #include "support/run_process.h"
+#include "support/temp_dir.h"
 
 namespace fs = std::filesystem;
 using namespace shadetool;
@@ -20,17 +21,7 @@ namespace {
 
 using Run = shadetool_test::ProcessResult;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("shadetool_lighting_cli_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-  void write(const std::string& name, const std::string& text) const { std::ofstream(file(name)) << text; }
-};
+using shadetool::testing::TempDir;
 
 Run run(const std::string& args) { return shadetool_test::run_shadetool("bake-lighting " + args); }
 

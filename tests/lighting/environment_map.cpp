@@ -24,6 +24,7 @@
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/lighting/shade_points.h>
 #include "lighting_test_util.h"
+#include "support/temp_dir.h"
 
 using namespace shadetool;
 using namespace shadetool::testing;
@@ -31,23 +32,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A folder of its own for the files a test writes; removed at the end.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::random_device rd;
-    path = fs::temp_directory_path() / ("shadetool_environment_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string write(const std::string& name, const std::string& bytes) const {
-    std::ofstream(path / name, std::ios::binary) << bytes;
-    return (path / name).string();
-  }
-};
+using shadetool::testing::TempDir;
 
 // RGBE of one texel by truncation (Radiance's and stb_image_write's rule): m = v * 256 / 2^e.
 std::string rgbe(double r, double g, double b) {
@@ -114,15 +99,6 @@ Light environment_light(std::shared_ptr<const EnvironmentMap> map, const Mat3d& 
   return L;
 }
 
-Light sky_light(const Vec3d& up, const Vec3d& sky, const Vec3d& ground) {
-  Light L;
-  L.type = LightType::Sky;
-  L.up = up;
-  L.diffuse = L.specular = sky;
-  L.ground = ground;
-  L.ambient = {0, 0, 0};
-  return L;
-}
 
 Scene material_scene(ShadingModel model, double shininess) {
   Scene s = dark_scene(model);

@@ -57,6 +57,17 @@ inline Light spot_light(const Vec3d& position, const Vec3d& direction, double cu
   return L;
 }
 
+// A sky light: radiance `sky` over the hemisphere about `up`, `ground` below it.
+inline Light sky_light(const Vec3d& up, const Vec3d& sky, const Vec3d& ground) {
+  Light L;
+  L.type = LightType::Sky;
+  L.up = up;
+  L.diffuse = L.specular = sky;
+  L.ground = ground;
+  L.ambient = {0, 0, 0};
+  return L;
+}
+
 inline Affine3d camera_at(const Vec3d& eye) {  // a view whose eye is `eye` (translation only)
   Affine3d V;
   V.t = -eye;

@@ -15,6 +15,7 @@
 
 #include <shadetool/io/mesh_io.h>
 #include "normals_test_util.h"
+#include "support/temp_dir.h"
 
 using namespace shadetool;
 using namespace shadetool::testing;
@@ -34,17 +35,7 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("shadetool_normals_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter()++));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  static int& counter() { static int n = 0; return n; }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-};
+using shadetool::testing::TempDir;
 
 Run shadetool_run(const TempDir& dir, const std::string& args) {
   const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";

@@ -13,21 +13,13 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+#include "support/temp_dir.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::random_device rd;
-    path = fs::temp_directory_path() / ("shadetool_repair_cli_" + std::to_string(rd()) + std::to_string(rd()));
-    fs::create_directories(path);
-  }
-  ~TempDir() { std::error_code ec; fs::remove_all(path, ec); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-};
+using shadetool::testing::TempDir;
 
 std::string slurp(const std::string& file) {
   std::ifstream in(file, std::ios::binary);

@@ -29,6 +29,7 @@
 #include <shadetool/io/mesh_io.h>
 #include "stress/stress_util.h"
 #include "support/run_process.h"
+#include "support/temp_dir.h"
 
 namespace fs = std::filesystem;
 using namespace shadetool;
@@ -39,17 +40,7 @@ namespace {
 
 const std::string kBin = SHADETOOL_BIN;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "shadetool-lost-XXXXXX").string();
-    path = ::mkdtemp(tmpl.data());
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using shadetool::testing::TempDir;
 
 // ---- the meshes (dyadic coordinates: exact in float and double, and after +1, +2, +3)
 
