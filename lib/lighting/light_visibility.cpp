@@ -7,21 +7,16 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/math_constants.h>
 #include <shadetool/lighting/environment_map.h>
+#include <shadetool/visibility/sample_sequence.h>
 #include <shadetool/visibility/shadow_visibility.h>
 
 namespace shadetool {
 
 namespace {
 
-// Two unit vectors completing unit a to a right-handed basis (Duff et al. 2017, "Building an
-// Orthonormal Basis, Revisited": no division by a small number).
-void orthonormal_basis(const Vec3d& a, Vec3d& t1, Vec3d& t2) {
-  const double sign = std::copysign(1.0, a.z);
-  const double k = -1.0 / (sign + a.z);  // |sign + a.z| >= 1
-  const double b = a.x * a.y * k;
-  t1 = {1.0 + sign * a.x * a.x * k, sign * b, -sign * a.x};
-  t2 = {b, sign + a.y * a.y * k, -a.y};
-}
+// Two unit vectors completing unit n to a right-handed basis: the visibility module's (Duff et al.
+// 2017), the one the ambient-occlusion rays use.
+using visibility::orthonormal_basis;
 
 Vec3d unit_normal(const std::vector<double>& normals, std::size_t i) {
   const Vec3d n{normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
