@@ -24,6 +24,7 @@
 #include <shadetool/io/atomic_write.h>
 #include <shadetool/io/file_bytes.h>
 #include <shadetool/io/gltf_document.h>
+#include <shadetool/io/gltf_scene.h>
 #include <shadetool/io/format_table.h>
 #include <shadetool/io/image_io.h>
 #include <shadetool/io/mesh_io.h>
@@ -388,10 +389,9 @@ void write_gltf_output(const IoOptions& io, OutputKind kind, const shadetool::Gl
   Format format = io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format");
   format = shadetool::output_format(output, format);
   if (format != Format::Gltf) {
-    if (doc.primitives.size() > 1)
-      result.notes.push_back(std::to_string(doc.primitives.size()) + " glTF primitives written as one mesh, each in its own "
-                             "object space (node transforms not applied); materials, textures and the scene graph not written");
-    return write_output(io, kind, shadetool::gltf_merged_mesh(doc), output, result);
+    const shadetool::Mesh world = shadetool::gltf_world_mesh(doc, result.notes);
+    result.notes.push_back("glTF materials, textures and the scene graph not written (the mesh is in world space)");
+    return write_output(io, kind, world, output, result);
   }
   const std::string name = output == "-" ? "stdout" : output;
   for (const auto& p : doc.primitives) {  // what every writer refuses (io/mesh_io.h)

@@ -206,7 +206,73 @@ fi
 "$bin" normals "$src/data/torus.obj" -o "$tmp/from_obj.glb" -q
 check "obj -> glb valid" valid "$tmp/from_obj.glb"
 "$bin" normals "$fx/rich.glb" -o "$tmp/to.obj" 2> "$tmp/note.txt"
-check "glb -> obj: a note says the primitives became one mesh" grep -q "written as one mesh" "$tmp/note.txt"
+check "glb -> obj: a note says the primitives were placed in world space" grep -q "placed in world space" "$tmp/note.txt"
+
+# glTF -> OBJ in world space, against assimp's OBJ exporter (it applies node matrices too): a node
+# tree with T*R*S under a parent, a matrix mirror and a mesh shown by two nodes. Compared as
+# multisets of triangles (unordered corners, positions rounded to 1e-5); the winding by the signed
+# volume of each placed tetrahedron (a mirrored node is re-wound: glTF 2.0, 3.7.2.1).
+"$py" - "$tmp/tree.glb" <<'PY'
+import json, math, struct, sys
+pos = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]  # a tetrahedron, outward faces
+idx = [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3]
+pos2 = [2, 0, 0, 3, 0, 0, 2, 1, 0]
+bin = struct.pack("<12f", *pos) + struct.pack("<12H", *idx) + struct.pack("<9f", *pos2)
+h = math.sqrt(0.5)
+doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 2, 3]}],
+  "nodes": [{"translation": [5, 1, -2], "rotation": [0, h, 0, h], "children": [1]},
+            {"scale": [2, 1, 0.5], "mesh": 0},
+            {"matrix": [1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 3, 0, 1], "mesh": 0},
+            {"translation": [0, 0, 7], "rotation": [0.1, 0.2, 0.3, 0.927362], "mesh": 1}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]},
+             {"primitives": [{"attributes": {"POSITION": 2}}]}],
+  "buffers": [{"byteLength": len(bin)}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 24},
+                  {"buffer": 0, "byteOffset": 72, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 1]},
+                {"bufferView": 1, "componentType": 5123, "count": 12, "type": "SCALAR"},
+                {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC3", "min": [2, 0, 0], "max": [3, 1, 0]}]}
+text = json.dumps(doc).encode()
+text += b" " * (-len(text) % 4)
+bin += b"\0" * (-len(bin) % 4)
+out = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(text) + 8 + len(bin)) + struct.pack("<I", len(text)) + b"JSON" + text
+out += struct.pack("<I", len(bin)) + b"BIN\0" + bin
+open(sys.argv[1], "wb").write(out)
+PY
+check "node tree fixture is valid glTF" valid "$tmp/tree.glb"
+"$bin" normals "$tmp/tree.glb" -o "$tmp/tree.obj" -q
+check "glb node tree -> obj exit 0" test $? -eq 0
+objtris='
+import sys
+def tris(path):
+    v, vn, out, vns = [], [], [], []
+    for line in open(path):
+        w = line.split()
+        if not w: continue
+        if w[0] == "v": v.append(tuple(float(x) for x in w[1:4]))
+        if w[0] == "vn": vn.append(tuple(float(x) for x in w[1:4]))
+        if w[0] == "f":
+            c = [x.split("/") for x in w[1:]]
+            out.append([v[int(x[0]) - 1] for x in c])
+            vns.append([vn[int(x[2]) - 1] for x in c] if len(c[0]) > 2 and c[0][2] else None)
+    return out, vns
+'
+if command -v assimp > /dev/null && assimp export "$tmp/tree.glb" "$tmp/tree_assimp.obj" > /dev/null 2>&1; then
+  check "glb node tree -> obj: the triangles assimp export writes (world space)" "$py" -c "$objtris"'
+key = lambda t: tuple(sorted(tuple(round(x, 5) + 0.0 for x in p) for p in t))
+ours, _ = tris(sys.argv[1]); theirs, _ = tris(sys.argv[2])
+assert len(ours) == 4 + 4 + 1, len(ours)
+assert sorted(map(key, ours)) == sorted(map(key, theirs)), (sorted(map(key, ours))[:3], sorted(map(key, theirs))[:3])' \
+    "$tmp/tree.obj" "$tmp/tree_assimp.obj"
+else
+  echo "skipped: glTF node tree against assimp export (no assimp: install assimp-utils)"
+fi
+check "glb node tree -> obj: both placed tetrahedra enclose positive volume (faces out, the mirror re-wound)" "$py" -c "$objtris"'
+ts, _ = tris(sys.argv[1])
+det = lambda a, b, c: a[0]*(b[1]*c[2]-b[2]*c[1]) - a[1]*(b[0]*c[2]-b[2]*c[0]) + a[2]*(b[0]*c[1]-b[1]*c[0])
+for first in (0, 4):
+    vol = sum(det(*t) for t in ts[first:first + 4]) / 6
+    assert vol > 0.05, (first, vol)' "$tmp/tree.obj"
 
 # --format glb / gltf, stdout and stdin, --output-dir.
 "$bin" normals "$fx/rich.glb" -o - --format glb -q > "$tmp/stdout.glb"

@@ -7,6 +7,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/io/gltf_document.h>
+#include <shadetool/io/gltf_scene.h>
 #include <shadetool/io/obj_format.h>
 #include <shadetool/io/off_format.h>
 #include <shadetool/io/ply_format.h>
@@ -74,16 +75,11 @@ bool detect_gltf(std::string_view bytes) {
   return b != std::string_view::npos && bytes[b] == '{' && bytes.substr(0, 4096).find("\"asset\"") != std::string_view::npos;
 }
 
-// glTF through the table is one Mesh: every triangle primitive concatenated, in object space
-// (io/gltf_document.h); the CLI keeps the whole document instead (cli/driver.cpp).
+// glTF through the table is one Mesh: every triangle primitive placed in world space by the
+// scene's nodes (io/gltf_scene.h); the CLI keeps the whole document instead (cli/driver.cpp).
 Mesh read_gltf_entry(std::string_view bytes, const std::string& name, ReadInfo& info) {
   const GltfDocument doc = read_gltf(bytes, name);
-  if (doc.primitives.size() > 1)
-    info.notes.push_back(std::to_string(doc.primitives.size()) +
-                         " triangle primitives read as one mesh, each in its own object space (node transforms not applied)");
-  if (doc.passed_through_primitives > 0)
-    info.notes.push_back(std::to_string(doc.passed_through_primitives) + " POINTS/LINES primitives not read");
-  return gltf_merged_mesh(doc);
+  return gltf_world_mesh(doc, info.notes);
 }
 void write_gltf_entry(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info) {
   GltfWriteResult result;

@@ -79,9 +79,8 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name);
 // texture coordinates; polygons as triangle fans) for writing a non-glTF mesh as glTF.
 GltfDocument gltf_document_from_mesh(const Mesh& mesh);
 
-// Every triangle primitive in one Mesh (concatenated, each in its own object space: node
-// transforms are not applied): what read_mesh returns for a glTF file.
-Mesh gltf_merged_mesh(const GltfDocument& document);
+// Every triangle primitive in one Mesh, placed by the scene's nodes: io/gltf_scene.h's
+// gltf_world_mesh (what read_mesh returns for a glTF file).
 
 struct GltfWriteResult {
   std::vector<std::string> notes;  // what could not be carried (one line each)

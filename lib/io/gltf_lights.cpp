@@ -3,10 +3,10 @@
 #include <shadetool/io/gltf_lights.h>
 
 #include <cmath>
-#include <functional>
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/math_constants.h>
+#include <shadetool/io/gltf_scene.h>
 #include "engine/gltf_source.h"
 
 namespace shadetool {
@@ -20,66 +20,6 @@ Vec3d vec3_or(const json& j, const char* key, Vec3d fallback) {
   return {j[key][0].get<double>(), j[key][1].get<double>(), j[key][2].get<double>()};
 }
 
-// A node's local matrix (glTF 2.0, 3.5.2): `matrix` (column-major 4x4) or T * R * S.
-Affine3d local_matrix(const json& node) {
-  Affine3d M;
-  if (node.contains("matrix") && node["matrix"].is_array() && node["matrix"].size() == 16) {
-    const json& m = node["matrix"];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) M.A.m[r][c] = m[std::size_t(4 * c + r)].get<double>();
-    M.t = {m[12].get<double>(), m[13].get<double>(), m[14].get<double>()};
-    return M;
-  }
-  const Vec3d s = vec3_or(node, "scale", {1, 1, 1});
-  double x = 0, y = 0, z = 0, w = 1;
-  if (node.contains("rotation") && node["rotation"].is_array() && node["rotation"].size() == 4) {
-    x = node["rotation"][0].get<double>(), y = node["rotation"][1].get<double>();
-    z = node["rotation"][2].get<double>(), w = node["rotation"][3].get<double>();
-  }
-  // Unit quaternion (x, y, z, w) -> rotation matrix (glTF stores unit quaternions).
-  const Mat3d R{{{{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
-                  {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
-                  {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}}}};
-  M.A = R * Mat3d::diagonal(s.x, s.y, s.z);
-  M.t = vec3_or(node, "translation", {0, 0, 0});
-  return M;
-}
-
-// Nodes in scene order, depth first, with their world matrices.
-std::vector<std::pair<std::size_t, Affine3d>> world_nodes(const json& j) {
-  std::vector<std::pair<std::size_t, Affine3d>> out;
-  if (!j.contains("nodes") || !j["nodes"].is_array()) return out;
-  const json& nodes = j["nodes"];
-  std::vector<std::size_t> roots;
-  const std::size_t scene = j.value("scene", 0);
-  if (j.contains("scenes") && j["scenes"].is_array() && scene < j["scenes"].size() && j["scenes"][scene].contains("nodes")) {
-    for (const auto& n : j["scenes"][scene]["nodes"]) roots.push_back(n.get<std::size_t>());
-  } else {  // no scene: every node that is nobody's child
-    std::vector<bool> child(nodes.size(), false);
-    for (const auto& n : nodes)
-      if (n.contains("children"))
-        for (const auto& c : n["children"]) child[c.get<std::size_t>()] = true;
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-      if (!child[i]) roots.push_back(i);
-  }
-  // The node graph was checked to be a forest on reading (gltf_read.cpp): this walk ends.
-  std::vector<std::pair<std::size_t, Affine3d>> stack;
-  for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-    if (*it < nodes.size()) stack.push_back({*it, local_matrix(nodes[*it])});
-  while (!stack.empty()) {
-    auto [i, M] = stack.back();
-    stack.pop_back();
-    out.push_back({i, M});
-    if (!nodes[i].contains("children")) continue;
-    const json& ch = nodes[i]["children"];
-    for (std::size_t k = ch.size(); k-- > 0;) {
-      const std::size_t c = ch[k].get<std::size_t>();
-      if (c < nodes.size()) stack.push_back({c, compose(M, local_matrix(nodes[c]))});
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 Scene gltf_scene(const GltfDocument& doc, const GltfPrimitive& prim, std::vector<std::string>& notes) {
@@ -88,7 +28,7 @@ Scene gltf_scene(const GltfDocument& doc, const GltfPrimitive& prim, std::vector
   const std::string& name = doc.source->name;
   Scene scene;
   scene.global_ambient = {0, 0, 0};
-  const auto nodes = world_nodes(j);
+  const std::vector<GltfNodePlacement> nodes = gltf_scene_nodes(doc);  // scene order, depth first
 
   std::size_t instances = 0;
   for (const auto& [i, M] : nodes)

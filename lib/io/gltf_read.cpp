@@ -296,30 +296,6 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
   return doc;
 }
 
-Mesh gltf_merged_mesh(const GltfDocument& document) {
-  Mesh out;
-  bool normals = !document.primitives.empty(), colors = !document.primitives.empty();
-  for (const GltfPrimitive& p : document.primitives) {
-    normals = normals && p.mesh.has_vertex_normals();
-    colors = colors && p.mesh.has_vertex_colors() && p.mesh.color_channels == document.primitives[0].mesh.color_channels;
-  }
-  for (const GltfPrimitive& p : document.primitives) {
-    const std::uint32_t base = std::uint32_t(out.num_vertices());
-    out.positions.insert(out.positions.end(), p.mesh.positions.begin(), p.mesh.positions.end());
-    if (normals) out.vertex_normals.insert(out.vertex_normals.end(), p.mesh.vertex_normals.begin(), p.mesh.vertex_normals.end());
-    if (colors) {
-      out.vertex_colors.insert(out.vertex_colors.end(), p.mesh.vertex_colors.begin(), p.mesh.vertex_colors.end());
-      out.color_channels = p.mesh.color_channels;
-      out.colors_are_float = p.mesh.colors_are_float;
-    }
-    for (std::size_t f = 0; f < p.mesh.num_faces(); ++f) {
-      for (std::uint32_t c = p.mesh.face_start[f]; c < p.mesh.face_start[f + 1]; ++c) out.corner_vertex.push_back(base + p.mesh.corner_vertex[c]);
-      out.face_start.push_back(std::uint32_t(out.corner_vertex.size()));
-    }
-  }
-  return out;
-}
-
 bool gltf_name_is_text(const std::string& name) {
   if (name.size() < 5) return false;
   std::string ext = name.substr(name.size() - 5);

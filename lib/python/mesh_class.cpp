@@ -295,9 +295,10 @@ read_mesh(path, format="") -> Mesh
 
 Reads an OBJ, PLY, OFF, STL or glTF 2.0 file (format from the extension unless given: "obj",
 "ply", "off", "stl", "gltf"/"glb") with the library's readers: nothing read is dropped (polygons,
-normals, colours, quality). A glTF file's triangle primitives come as one mesh, each in its own
-object space (node transforms not applied); the command line processes them one by one and keeps
-the rest of the document.
+normals, colours, quality). A glTF file's triangle primitives come as one mesh in world space,
+placed by the scene's nodes as assimp and Blender place them (a mesh shown by two nodes twice;
+mirrored nodes re-wound; TEXCOORD_0 with v flipped; notes in the C++ header io/gltf_scene.h); the
+command line processes them one by one in object space and keeps the rest of the document.
 FileNotFoundError when the file does not exist; ValueError with the reader's `FILE:LINE: what`
 message for bad content.
 )doc");

@@ -1,0 +1,56 @@
+// gltf_scene.h: a glTF document's scene graph, and its triangle primitives as one mesh in world
+// space (what assimp's and Blender's exporters write when a glTF scene becomes an OBJ or a PLY).
+//
+// gltf_scene_nodes: the nodes of the document's scene (`scene`, else scenes[0]; a document
+// without scenes: every node that is nobody's child), depth first in scene order, each with its
+// world matrix = parent's world * local, local = `matrix` (column-major 4x4) or T * R * S (glTF
+// 2.0, 3.5.2-3.5.3; the rotation quaternion is divided by its length, so a quaternion rounded
+// off unit length stays a rotation). Error `FILE: nodes[i].KEY: what` for a matrix, translation,
+// rotation or scale that is not an array of finite numbers of the right size, or a zero
+// quaternion. The graph was checked to be a forest on reading (gltf_read.cpp).
+//
+// gltf_world_mesh: every triangle primitive of every node that shows its mesh, placed by that
+// node's world matrix through lib/transform's transform_mesh (positions A p + t, normals
+// sign(det A) cof(A) n, the winding reversed where det A < 0: glTF 2.0, 3.7.2.1, a mirrored node
+// draws its triangles clockwise, so the faces keep facing out), then concatenated in scene order:
+//   - a mesh shown by K nodes is written K times; a mesh no node of the scene shows is written
+//     once in its object space; a node with a singular matrix (scale 0: hidden) places nothing;
+//     a skinned node is placed by its node's matrix (the bind pose: joints are not applied);
+//     morph targets are not applied (the base shape). Each of these is named in one note.
+//   - normals: every primitive's vertex normals -> vertex normals; otherwise, when any primitive
+//     has normals, corner normals for all (a primitive's own corner normals, else its vertex
+//     normals, else its face normals, else its faces' normals from the geometry, with a note);
+//     face normals are kept when every primitive has them.
+//   - colours and quality (vertex and face): kept when any primitive has them; the others get
+//     white (alpha 1) or quality 0, with a note. rgb and rgba together: rgba (alpha 1 added).
+//   - TEXCOORD_0 as the mesh's texture coordinates, v flipped (t' = 1 - t: glTF's origin is the
+//     image's top left, OBJ's and the Mesh's its bottom left, as assimp and Blender import them).
+//     A primitive whose vertex count a command changed keeps no texture coordinates (note).
+//   - POINTS / LINES primitives are not in the mesh (note).
+// Precision: double, as the Mesh.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <shadetool/core/affine.h>
+#include <shadetool/core/mesh.h>
+#include <shadetool/io/gltf_document.h>
+
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
+namespace shadetool {
+
+struct GltfNodePlacement {
+  std::size_t node = 0;  // index into the document's "nodes"
+  Affine3d world;        // world_from_node
+};
+
+// Empty for a document not read from a file (gltf_document_from_mesh) or without nodes.
+std::vector<GltfNodePlacement> gltf_scene_nodes(const GltfDocument& document);
+
+// notes: what the flattening did or could not carry, one line each (appended).
+Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& notes);
+
+}  // namespace shadetool
+#pragma GCC visibility pop

@@ -1,0 +1,162 @@
+// Tests of io/gltf_scene: the scene graph's world matrices and the world-space mesh, against
+// positions worked out by hand from glTF 2.0's node rules (3.5.2-3.5.3: world = parent * T R S;
+// 3.7.2.1: a node with det < 0 draws its triangles clockwise).
+#include <shadetool/io/gltf_scene.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <catch2/catch.hpp>
+
+#include <shadetool/core/error.h>
+#include <shadetool/io/mesh_io.h>
+#include "gltf_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::gltftest;
+
+namespace {
+
+// One triangle (0,0,0) (1,0,0) (0,1,0), normal +z, TEXCOORD_0 (0,0) (1,0) (0,1); a second mesh
+// (one triangle at z = 5, no normal). Nodes are set by each test.
+Built two_meshes(bool second_has_normal = false) {
+  Built b = base_doc();
+  const int pos = float_accessor(b, {0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3, true);
+  const int nrm = float_accessor(b, {0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
+  const int uv = float_accessor(b, {0, 0, 1, 0, 0, 1}, "VEC2", 2);
+  const int pos2 = float_accessor(b, {0, 0, 5, 1, 0, 5, 0, 1, 5}, "VEC3", 3, true);
+  json second = {{"POSITION", pos2}};
+  if (second_has_normal) second["NORMAL"] = nrm;
+  b.doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", pos}, {"NORMAL", nrm}, {"TEXCOORD_0", uv}}}}})}},
+                                 {{"primitives", json::array({{{"attributes", second}}})}}});
+  return b;
+}
+
+Mesh world_of(Built& b, std::vector<std::string>& notes) {
+  const std::string glb = b.glb();
+  return gltf_world_mesh(read_gltf(glb, "scene.glb"), notes);
+}
+
+// The geometric normal of face f (unnormalised).
+Vec3d face_cross(const Mesh& m, std::size_t f) {
+  const Vec3d a = m.position(m.corner_vertex[3 * f]), b = m.position(m.corner_vertex[3 * f + 1]), c = m.position(m.corner_vertex[3 * f + 2]);
+  return cross(b - a, c - a);
+}
+
+bool has_note(const std::vector<std::string>& notes, const std::string& part) {
+  return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) { return n.find(part) != std::string::npos; });
+}
+
+void require_near(const Vec3d& a, const Vec3d& b) {
+  CHECK(a.x == Approx(b.x).margin(1e-12));
+  CHECK(a.y == Approx(b.y).margin(1e-12));
+  CHECK(a.z == Approx(b.z).margin(1e-12));
+}
+
+}  // namespace
+
+TEST_CASE("glTF scene: T R S under a parent, a matrix mirror, a hidden node, an unplaced mesh", "[gltf][scene]") {
+  Built b = two_meshes();
+  const double h = std::sqrt(0.5);
+  b.doc["scenes"] = json::array({{{"nodes", {0, 2, 3}}}});
+  b.doc["nodes"] = json::array({
+      {{"translation", {10, 0, 0}}, {"rotation", {0, 0, h, h}}, {"children", {1}}},  // 90 degrees about z
+      {{"scale", {2, 1, 1}}, {"mesh", 0}},
+      {{"matrix", {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}, {"mesh", 0}},  // mirror in x
+      {{"scale", {0, 0, 0}}, {"mesh", 0}},                                           // hidden
+  });
+  std::vector<std::string> notes;
+  const Mesh m = world_of(b, notes);
+  REQUIRE(m.num_faces() == 3);  // two placements of mesh 0, mesh 1 once in object space
+  REQUIRE(m.num_vertices() == 9);
+  // nodes[1]: p -> R_z(90) (2x, y, z) + (10, 0, 0), by hand.
+  require_near(m.position(0), {10, 0, 0});
+  require_near(m.position(1), {10, 2, 0});
+  require_near(m.position(2), {9, 0, 0});
+  // nodes[2]: x -> -x.
+  require_near(m.position(3), {0, 0, 0});
+  require_near(m.position(4), {-1, 0, 0});
+  require_near(m.position(5), {0, 1, 0});
+  // mesh 1 as read.
+  require_near(m.position(6), {0, 0, 5});
+  // Every placed face faces +z, as the normals say: the mirror's winding was reversed.
+  REQUIRE(m.has_corner_normals());  // mesh 1 has no normal: corner normals for all
+  for (std::size_t f = 0; f < 3; ++f) {
+    CHECK(face_cross(m, f).z > 0);
+    for (int k = 0; k < 3; ++k) {
+      const Vec3d n = get3(m.corner_normals, m.corner_normal_index[3 * f + std::size_t(k)]);
+      require_near(n, {0, 0, 1});
+    }
+  }
+  // TEXCOORD_0 with v flipped for both placements; mesh 1's corners have none.
+  REQUIRE(m.has_texcoords());
+  for (std::size_t f = 0; f < 2; ++f) {
+    // The mirror's corners are re-wound: find each corner's vertex's texture coordinate.
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = m.corner_vertex[3 * f + std::size_t(k)] - std::uint32_t(3 * f);
+      const std::uint32_t t = m.corner_texcoord_index[3 * f + std::size_t(k)];
+      const double u_read[3] = {0, 1, 0}, v_read[3] = {0, 0, 1};
+      CHECK(m.texcoords[2 * t] == u_read[v]);
+      CHECK(m.texcoords[2 * t + 1] == 1 - v_read[v]);
+    }
+  }
+  for (int k = 0; k < 3; ++k) CHECK(m.corner_texcoord_index[6 + std::size_t(k)] == kNoTexcoord);
+  CHECK(has_note(notes, "nodes[3]: singular matrix"));
+  CHECK(has_note(notes, "no node of the scene shows meshes[1].primitives[0]"));
+  CHECK(has_note(notes, "1 faces of primitives without normals get their faces' normals"));
+  CHECK(has_note(notes, "1 repeated"));
+}
+
+TEST_CASE("glTF scene: every primitive with vertex normals keeps vertex normals; a non-unit quaternion is a rotation", "[gltf][scene]") {
+  Built b = two_meshes(true);
+  b.doc["scenes"] = json::array({{{"nodes", {0, 1}}}});
+  // 90 degrees about x, the quaternion scaled by 3 (glTF asks for unit length; read as the rotation).
+  b.doc["nodes"] = json::array({{{"rotation", {3 * std::sqrt(0.5), 0, 0, 3 * std::sqrt(0.5)}}, {"mesh", 0}}, {{"mesh", 1}}});
+  std::vector<std::string> notes;
+  const Mesh m = world_of(b, notes);
+  REQUIRE(m.has_vertex_normals());
+  REQUIRE_FALSE(m.has_corner_normals());
+  require_near(m.position(2), {0, 0, 1});  // (0,1,0) turned about x
+  require_near(get3(m.vertex_normals, 0), {0, -1, 0});  // +z turned about x
+  require_near(m.position(3), {0, 0, 5});
+  CHECK(face_cross(m, 0).y < 0);
+}
+
+TEST_CASE("glTF scene: a document without scenes places its root nodes; bad node values are one error naming the path", "[gltf][scene]") {
+  Built b = two_meshes();
+  b.doc.erase("scene");
+  b.doc.erase("scenes");
+  b.doc["nodes"] = json::array({{{"translation", {0, 0, 1}}, {"children", {1}}}, {{"mesh", 0}}, {{"mesh", 1}, {"translation", {1, 1, 1}}}});
+  std::vector<std::string> notes;
+  const Mesh m = world_of(b, notes);
+  REQUIRE(m.num_faces() == 2);
+  require_near(m.position(0), {0, 0, 1});
+  require_near(m.position(3), {1, 1, 6});
+
+  for (const json& bad : {json{{"rotation", {0, 0, 0, 0}}, {"mesh", 0}}, json{{"scale", {1, 1}}, {"mesh", 0}},
+                          json{{"translation", {0, "x", 0}}, {"mesh", 0}}, json{{"matrix", {1, 0, 0}}, {"mesh", 0}}}) {
+    Built c = two_meshes();
+    c.doc["nodes"] = json::array({bad});
+    std::vector<std::string> n;
+    try {
+      world_of(c, n);
+      FAIL("accepted " << bad.dump());
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      CHECK(what.find("scene.glb") != std::string::npos);
+      CHECK(what.find("nodes[0].") != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("glTF scene: read_mesh gives the world-space mesh", "[gltf][scene]") {
+  Built b = two_meshes();
+  b.doc["scenes"] = json::array({{{"nodes", {0}}}});
+  b.doc["nodes"] = json::array({{{"translation", {0, 0, -5}}, {"mesh", 1}}});
+  ReadInfo info;
+  const std::string glb = b.glb();
+  const Mesh m = read_mesh_from_memory(glb, Format::Gltf, "scene.glb", &info);
+  REQUIRE(m.num_faces() == 2);
+  require_near(m.position(0), {0, 0, 0});  // mesh 0 in no node: as read
+  require_near(m.position(3), {0, 0, 0});  // mesh 1 at z = 5 moved by -5
+}
