@@ -145,6 +145,7 @@ std::vector<FormatEntry> make_table() {
     e.holds.face_normals = Holds::Converted;    // vertices split per face
     e.holds.vertex_colors = Holds::Yes;         // COLOR_0
     e.holds.face_colors = Holds::Converted;     // vertices split per face
+    e.holds.texcoords = Holds::Converted;       // TEXCOORD_0, vertices split per texture coordinate, v flipped
     t.push_back(e);
   }
   return t;

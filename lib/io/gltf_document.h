@@ -75,8 +75,10 @@ struct GltfDocument {
 // external buffers and images are resolved relative to its directory; messages name it.
 GltfDocument read_gltf(std::string_view bytes, const std::string& name);
 
-// A one-primitive document holding `mesh` (positions, vertex normals, vertex colours, per-vertex
-// texture coordinates; polygons as triangle fans) for writing a non-glTF mesh as glTF.
+// A one-primitive document holding `mesh` (positions, normals, colours, texture coordinates;
+// polygons as triangle fans) for writing a non-glTF mesh as glTF: corner and face normals, face
+// colours and per-corner texture coordinates split vertices; texture coordinates become
+// TEXCOORD_0 with v flipped (t' = 1 - t: glTF's origin is the image's top left).
 GltfDocument gltf_document_from_mesh(const Mesh& mesh);
 
 // Every triangle primitive in one Mesh, placed by the scene's nodes: io/gltf_scene.h's

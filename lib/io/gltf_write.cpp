@@ -211,30 +211,42 @@ std::string mime_for(const std::string& uri, const std::string& given) {
   return "application/octet-stream";
 }
 
-// Output vertices for a mesh whose normals or colours are per corner or per face: one per
-// distinct (vertex, normal-or-face) pair, in order of first use.
+// Output vertices for a mesh whose normals or colours are per corner or per face, or (a fresh
+// document: `texcoords`) whose texture coordinates are per corner: one per distinct (vertex,
+// normal-or-face, texture coordinate) triple, in order of first use.
 struct Split {
   std::vector<std::uint32_t> source_vertex;  // output vertex -> mesh vertex
   std::vector<std::uint32_t> corner_output;  // corner -> output vertex
 };
 
-Split split_vertices(const Mesh& mesh) {
+struct CornerKey {
+  std::uint64_t vertex_and_second;
+  std::uint32_t texcoord;
+  bool operator==(const CornerKey& o) const { return vertex_and_second == o.vertex_and_second && texcoord == o.texcoord; }
+};
+struct CornerKeyHash {
+  std::size_t operator()(const CornerKey& k) const {
+    return std::hash<std::uint64_t>()(k.vertex_and_second ^ (std::uint64_t(k.texcoord) * 0x9E3779B97F4A7C15ull));
+  }
+};
+
+Split split_vertices(const Mesh& mesh, bool texcoords) {
   Split s;
   const bool per_face = mesh.has_face_normals() || mesh.has_face_colors();
   const bool per_corner = mesh.has_corner_normals();
   s.corner_output.resize(mesh.num_corners());
-  if (!per_face && !per_corner) {
+  if (!per_face && !per_corner && !texcoords) {
     s.source_vertex.resize(mesh.num_vertices());
     for (std::size_t v = 0; v < s.source_vertex.size(); ++v) s.source_vertex[v] = std::uint32_t(v);
     s.corner_output = mesh.corner_vertex;
     return s;
   }
-  std::unordered_map<std::uint64_t, std::uint32_t> seen;
+  std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> seen;
   seen.reserve(mesh.num_corners());
   for (std::size_t f = 0; f < mesh.num_faces(); ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      const std::uint64_t second = per_face ? std::uint64_t(f) : std::uint64_t(mesh.corner_normal_index[c]);
-      const std::uint64_t key = std::uint64_t(mesh.corner_vertex[c]) << 32 | second;
+      const std::uint64_t second = per_face ? std::uint64_t(f) : per_corner ? std::uint64_t(mesh.corner_normal_index[c]) : 0;
+      const CornerKey key{std::uint64_t(mesh.corner_vertex[c]) << 32 | second, texcoords ? mesh.corner_texcoord_index[c] : 0};
       auto [it, fresh] = seen.emplace(key, std::uint32_t(s.source_vertex.size()));
       if (fresh) s.source_vertex.push_back(mesh.corner_vertex[c]);
       s.corner_output[c] = it->second;
@@ -261,9 +273,10 @@ struct PrimitiveWriter {
       return it == src->attributes.end() ? -1 : it->second;
     };
     json& attrs = jprim["attributes"];
-    const Split split = split_vertices(mesh);
+    const bool texcoords = !model && mesh.has_texcoords();  // a fresh document: TEXCOORD_0 from the mesh
+    const Split split = split_vertices(mesh, texcoords);
     const bool identity = split.source_vertex.size() == mesh.num_vertices() && !mesh.has_corner_normals() &&
-                          !mesh.has_face_normals() && !mesh.has_face_colors();
+                          !mesh.has_face_normals() && !mesh.has_face_colors() && !texcoords;
     const std::size_t out_vertices = split.source_vertex.size();
     const bool same_vertices = model && mesh.num_vertices() == gp.read_vertices;
     const bool keep_all = identity && same_vertices;  // accessors as read stay valid
@@ -319,6 +332,30 @@ struct PrimitiveWriter {
         if (clamped > 0)
           result.notes.push_back(gp.json_path + ": " + std::to_string(clamped) + " colour values outside [0, 1] clamped: glTF's COLOR_0 holds [0, 1]");
       }
+    }
+
+    // TEXCOORD_0 (a fresh document) from the mesh's per-corner texture coordinates: v flipped
+    // (t' = 1 - t; the Mesh's origin is the image's bottom left, as OBJ's, glTF's its top left);
+    // a third coordinate (OBJ `vt u v w`) and corners without one are named in a note.
+    if (texcoords) {
+      std::vector<double> uv(2 * out_vertices, 0.0);
+      const std::size_t dims = std::size_t(mesh.texcoord_dims);
+      std::size_t missing = 0, w_dropped = 0;
+      for (std::size_t c = 0; c < mesh.num_corners(); ++c) {
+        const std::uint32_t t = mesh.corner_texcoord_index[c];
+        if (t == kNoTexcoord || dims < 2 || (std::size_t(t) + 1) * dims > mesh.texcoords.size()) {
+          ++missing;
+          continue;
+        }
+        uv[2 * std::size_t(split.corner_output[c])] = mesh.texcoords[dims * t];
+        uv[2 * std::size_t(split.corner_output[c]) + 1] = 1 - mesh.texcoords[dims * t + 1];
+        w_dropped += dims > 2 && mesh.texcoords[dims * t + 2] != 0;
+      }
+      attrs["TEXCOORD_0"] = add_float_accessor(out, uv, 2, false, true);
+      if (missing > 0)
+        result.notes.push_back(gp.json_path + ": " + std::to_string(missing) + " corners without a texture coordinate get (0, 0) in TEXCOORD_0");
+      if (w_dropped > 0)
+        result.notes.push_back(gp.json_path + ": " + std::to_string(w_dropped) + " corners' third texture coordinate (w) not written: TEXCOORD_0 holds u, v");
     }
 
     // TANGENT and every attribute not decoded: kept, gathered through a split, or dropped when the
@@ -483,8 +520,6 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
     json& jprim = j["meshes"][gp.mesh_index]["primitives"][gp.primitive_index];
     writer.write(gp, jprim);
   }
-  if (!model && doc.primitives.size() == 1 && doc.primitives[0].mesh.has_texcoords())
-    result.notes.push_back("texture coordinates not written (per-corner texture coordinates have no glTF form here)");
 
   out.align(4);
   if (out.bytes.empty()) {

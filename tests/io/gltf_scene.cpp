@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <catch2/catch.hpp>
 
@@ -159,4 +160,52 @@ TEST_CASE("glTF scene: read_mesh gives the world-space mesh", "[gltf][scene]") {
   REQUIRE(m.num_faces() == 2);
   require_near(m.position(0), {0, 0, 0});  // mesh 0 in no node: as read
   require_near(m.position(3), {0, 0, 0});  // mesh 1 at z = 5 moved by -5
+}
+
+TEST_CASE("glTF write: per-corner texture coordinates become TEXCOORD_0 (vertices split, v flipped) and read back", "[gltf][write]") {
+  // A quad of two triangles whose shared diagonal has a seam: vertex 0 has (0, 0) in face 0 and
+  // (0.5, 0.25) in face 1. Four vertices, five distinct (vertex, texture coordinate) pairs.
+  Mesh m;
+  for (Vec3d p : {Vec3d{0, 0, 0}, Vec3d{1, 0, 0}, Vec3d{1, 1, 0}, Vec3d{0, 1, 0}}) m.add_vertex(p);
+  m.add_face({0, 1, 2});
+  m.add_face({0, 2, 3});
+  m.texcoords = {0, 0, 1, 0, 1, 1, 0.5, 0.25, 0, 1};
+  m.corner_texcoord_index = {0, 1, 2, 3, 2, 4};
+  WriteOptions o;
+  o.format = Format::Gltf;
+  const std::string glb = write_mesh_to_memory(m, o);
+  // The file read by hand (glTF 2.0, 5): JSON chunk, then the BIN chunk after it.
+  std::uint32_t json_len = 0;
+  std::memcpy(&json_len, glb.data() + 12, 4);
+  const json j = json::parse(glb.substr(20, json_len));
+  const std::string bin = glb.substr(20 + json_len + 8);
+  const json& prim = j["meshes"][0]["primitives"][0];
+  REQUIRE(prim["attributes"].contains("TEXCOORD_0"));
+  const json& acc = j["accessors"][prim["attributes"]["TEXCOORD_0"].get<std::size_t>()];
+  CHECK(acc["type"] == "VEC2");
+  CHECK(acc["componentType"] == 5126);
+  REQUIRE(acc["count"] == 5);
+  const json& view = j["bufferViews"][acc["bufferView"].get<std::size_t>()];
+  const std::size_t at = view.value("byteOffset", std::size_t(0)) + acc.value("byteOffset", std::size_t(0));
+  const std::size_t stride = view.value("byteStride", std::size_t(8));
+  std::vector<std::pair<float, float>> uv;
+  for (std::size_t i = 0; i < 5; ++i) {
+    float u, v;
+    std::memcpy(&u, bin.data() + at + i * stride, 4);
+    std::memcpy(&v, bin.data() + at + i * stride + 4, 4);
+    uv.push_back({u, v});
+  }
+  std::sort(uv.begin(), uv.end());
+  const std::vector<std::pair<float, float>> flipped = {{0, 0}, {0, 1}, {0.5f, 0.75f}, {1, 0}, {1, 1}};  // (u, 1 - v)
+  CHECK(uv == flipped);
+  // Read back: the world mesh (one primitive, no node transform) gives each corner its (u, v).
+  const Mesh back = read_mesh_from_memory(glb, Format::Gltf, "t.glb");
+  REQUIRE(back.has_texcoords());
+  REQUIRE(back.num_corners() == 6);
+  for (std::size_t c = 0; c < 6; ++c) {
+    const std::uint32_t t = back.corner_texcoord_index[c], t0 = m.corner_texcoord_index[c];
+    CHECK(back.position(back.corner_vertex[c]) == m.position(m.corner_vertex[c]));
+    CHECK(back.texcoords[2 * t] == Approx(m.texcoords[2 * t0]).margin(1e-7));
+    CHECK(back.texcoords[2 * t + 1] == Approx(m.texcoords[2 * t0 + 1]).margin(1e-7));
+  }
 }
