@@ -338,10 +338,12 @@ void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, 
   std::vector<std::pair<std::string, std::vector<std::string>>> notes;
   nlohmann::json per_primitive = nlohmann::json::object();
   const bool several = doc.primitives.size() > 1;
+  std::shared_ptr<void> document_state;  // the step's work for the whole document (FileResult::gltf_document_state)
   for (shadetool::GltfPrimitive& p : doc.primitives) {
     FileResult r;
     r.gltf = &p;
     r.gltf_document = &doc;
+    r.gltf_document_state = &document_state;
     step(p.mesh, input + ": " + p.json_path, r);
     for (auto& n : r.notes) {
       auto it = std::find_if(notes.begin(), notes.end(), [&](const auto& e) { return e.first == n; });

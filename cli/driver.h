@@ -30,6 +30,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,9 @@ struct FileResult {
   // can reach what a Mesh does not hold (tangents, morph targets, lights, cameras). Null otherwise.
   shadetool::GltfPrimitive* gltf = nullptr;
   const shadetool::GltfDocument* gltf_document = nullptr;
+  // A slot that lives across the document's primitives: a step that works on the whole document
+  // (occlusion against the whole scene) fills it at the first primitive and reads it after.
+  std::shared_ptr<void>* gltf_document_state = nullptr;
 };
 
 using MeshStep = std::function<void(shadetool::Mesh& mesh, const std::string& input, FileResult& result)>;
