@@ -116,7 +116,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           double mean = 0;
           for (float v : ao.open_fraction) mean += v;
           r.stats["per"] = what;
-          if (scene_stats) r.stats["samples"] = options.samples;  // a setting, not a count: once per file
+          r.setting("samples", options.samples);
           if (std::isfinite(options.max_distance)) r.stats["distance"] = options.max_distance;
           r.stats["rays"] = ao.rays;
           r.stats["hits"] = ao.hits;
