@@ -150,7 +150,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       r.stats["model"] = shadetool::shading_model_name(rep.model);
       r.stats["space"] = shadetool::shading_space_name(rep.space);
       r.stats["skipped"] = join(rep.skipped);
-      r.stats["lights"] = rep.plan.lights.size();
+      r.setting("lights", rep.plan.lights.size());
       r.stats["dark_lights_dropped"] = rep.plan.dark_lights_dropped;
       r.stats["vertex_light_evaluations"] = rep.counters.vertex_light_evaluations;
       r.stats["back_facing_skips"] = rep.counters.back_facing;
@@ -162,7 +162,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       if (shadows.enabled) {
         r.stats["shadow_rays"] = baked.shadows.shadow_rays;
         r.stats["occluded_light_terms"] = rep.counters.shadowed;
-        r.stats["shadow_samples"] = baked.shadows.sampled_lights > 0 ? shadows.samples : 1u;
+        r.setting("shadow_samples", baked.shadows.sampled_lights > 0 ? shadows.samples : 1u);
         r.stats["bvh_bytes"] = baked.shadows.bvh_bytes;
       }
     }, true);

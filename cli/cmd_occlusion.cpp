@@ -4,6 +4,7 @@
 // fraction as grey colours and/or quality, prints notes and counts; exit codes in driver.h.
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -14,6 +15,7 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include <shadetool/visibility/ambient_occlusion.h>
+#include <shadetool/visibility/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
 
 namespace shadetool_cli {
@@ -68,8 +70,28 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           shadetool::require_finite_positions(mesh, input);
           // Normals pass through to the output: none may carry NaN or Inf into it.
           shadetool::require_finite_normals(mesh, input, "fix them first (`shadetool normals --recompute` or `shadetool repair`)");
-          // The normals (when computed) and the BVH are freed inside: the outputs are made after.
-          const shadetool::MeshOcclusion job = shadetool::mesh_occlusion(mesh, per_face, options, input);
+          // glTF: every primitive against the whole scene (visibility/gltf_occlusion.h), computed at
+          // the first primitive for all of them; the BVH statistics then count once, there.
+          shadetool::MeshOcclusion job;
+          bool scene_stats = true;
+          if (r.gltf_document && r.gltf && r.gltf_document_state) {
+            std::shared_ptr<void>& state = *r.gltf_document_state;
+            const std::size_t index = std::size_t(r.gltf - r.gltf_document->primitives.data());
+            if (!state) {
+              state = std::make_shared<shadetool::GltfSceneOcclusion>(shadetool::gltf_scene_occlusion(
+                  *r.gltf_document, per_face, options, input.substr(0, input.size() - r.gltf->json_path.size() - 2)));
+            } else {
+              scene_stats = false;
+            }
+            const auto& scene = *static_cast<const shadetool::GltfSceneOcclusion*>(state.get());
+            for (const auto& n : scene.notes) r.notes.push_back(n);  // the same line from every primitive: said once
+            job.ao = scene.primitives[index];
+            job.normals_computed = scene.normals_computed[index];
+            job.scene = scene.scene;
+          } else {
+            // The normals (when computed) and the BVH are freed inside: the outputs are made after.
+            job = shadetool::mesh_occlusion(mesh, per_face, options, input);
+          }
           const shadetool::AmbientOcclusion& ao = job.ao;
           const shadetool::VisibilitySceneStats& s = job.scene;
           if (job.normals_computed) r.stats["normals"] = "computed (angle-weighted)";
@@ -85,7 +107,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
               r.notes.push_back(fmt::format("the input's {} quality replaced by occlusion", what));
             (per_face ? mesh.face_quality : mesh.vertex_quality) = ao.open_fraction;
           }
-          if (s.degenerate_faces > 0)
+          if (s.degenerate_faces > 0 && scene_stats)
             r.notes.push_back(fmt::format("{} degenerate faces (repeated index or zero area) cast no shadow", s.degenerate_faces));
           if (ao.skipped > 0)
             r.notes.push_back(fmt::format("{} {} without a usable normal (isolated vertices, degenerate faces) given "
@@ -94,12 +116,13 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           double mean = 0;
           for (float v : ao.open_fraction) mean += v;
           r.stats["per"] = what;
-          r.stats["samples"] = options.samples;
+          r.setting("samples", options.samples);
           if (std::isfinite(options.max_distance)) r.stats["distance"] = options.max_distance;
           r.stats["rays"] = ao.rays;
           r.stats["hits"] = ao.hits;
           r.stats["skipped"] = ao.skipped;
           r.stats["mean_open_fraction"] = ao.open_fraction.empty() ? 1.0 : mean / double(ao.open_fraction.size());
+          if (!scene_stats) return;  // a glTF scene's BVH: counted at its first primitive
           r.stats["bvh_triangles"] = s.triangles;
           r.stats["bvh_bytes"] = s.bvh_bytes;
           r.stats["bvh_buffer_bytes"] = s.buffer_bytes;

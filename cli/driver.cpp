@@ -338,10 +338,12 @@ void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, 
   std::vector<std::pair<std::string, std::vector<std::string>>> notes;
   nlohmann::json per_primitive = nlohmann::json::object();
   const bool several = doc.primitives.size() > 1;
+  std::shared_ptr<void> document_state;  // the step's work for the whole document (FileResult::gltf_document_state)
   for (shadetool::GltfPrimitive& p : doc.primitives) {
     FileResult r;
     r.gltf = &p;
     r.gltf_document = &doc;
+    r.gltf_document_state = &document_state;
     step(p.mesh, input + ": " + p.json_path, r);
     for (auto& n : r.notes) {
       auto it = std::find_if(notes.begin(), notes.end(), [&](const auto& e) { return e.first == n; });
@@ -349,13 +351,14 @@ void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, 
       else it->second.push_back(p.json_path);
     }
     for (auto it = r.stats.begin(); it != r.stats.end(); ++it) {
-      // Integers are counts: summed. Other values are kept when every primitive agrees; a
+      // Integers are counts: summed (not settings: FileResult::setting). Other values are kept when every primitive agrees; a
       // non-integer that differs (a mean, a time) has no one value for the file and is left to
       // per_primitive, as is a string that differs ("mixed").
       const bool first = !result.stats.contains(it.key());
+      const bool setting = std::find(r.settings.begin(), r.settings.end(), it.key()) != r.settings.end();
       auto& dst = result.stats[it.key()];
       if (first) dst = it.value();
-      else if (it.value().is_number_integer() && dst.is_number_integer()) dst = dst.get<long long>() + it.value().get<long long>();
+      else if (!setting && it.value().is_number_integer() && dst.is_number_integer()) dst = dst.get<long long>() + it.value().get<long long>();
       else if (dst != it.value()) dst = it.value().is_number() ? nlohmann::json() : nlohmann::json("mixed");
     }
     result.text += r.text;  // each primitive's text names it (the step's input is "FILE: JSON.PATH")

@@ -30,6 +30,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -68,6 +69,13 @@ struct IoOptions {
 struct FileResult {
   std::vector<std::string> notes;               // one line each on stderr, unless --quiet
   nlohmann::json stats = nlohmann::json::object();  // counts for --stats and --json
+  // Keys of `stats` that are settings (a sample count, a number of lights), not counts: over a glTF
+  // file's primitives they are kept when every primitive agrees, never summed. setting() sets both.
+  std::vector<std::string> settings;
+  void setting(const std::string& key, const nlohmann::json& value) {
+    stats[key] = value;
+    settings.push_back(key);
+  }
   std::string text;                             // printed on stdout (info's report)
   shadetool::Image image;                       // OutputKind::Image: the picture to write
   // Files that belong with the main output, as (path, bytes): committed together with it (every
@@ -79,6 +87,9 @@ struct FileResult {
   // can reach what a Mesh does not hold (tangents, morph targets, lights, cameras). Null otherwise.
   shadetool::GltfPrimitive* gltf = nullptr;
   const shadetool::GltfDocument* gltf_document = nullptr;
+  // A slot that lives across the document's primitives: a step that works on the whole document
+  // (occlusion against the whole scene) fills it at the first primitive and reads it after.
+  std::shared_ptr<void>* gltf_document_state = nullptr;
 };
 
 using MeshStep = std::function<void(shadetool::Mesh& mesh, const std::string& input, FileResult& result)>;

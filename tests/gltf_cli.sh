@@ -294,5 +294,22 @@ st=rows[0]["stats"]
 assert st["primitives"]==4 and st["faces"]==12+4+6+4, st
 assert len(st["per_primitive"])==4, st' "$tmp/j.json"
 
+# occlusion and bake-lighting --shadows of a glTF file: COLOR_0 written, the document kept, valid;
+# settings (samples, lights) reported once per file, counts (rays) summed over the primitives.
+"$bin" occlusion "$fx/rich.glb" -o "$tmp/ao.glb" --samples 8 --json -q > "$tmp/ao.json"
+check "occlusion glb exit 0" test $? -eq 0
+check "occlusion glb keeps everything else" gcheck keep "$fx/rich.glb" "$tmp/ao.glb" --changed COLOR_0
+check "occlusion glb valid" valid "$tmp/ao.glb"
+"$bin" bake-lighting "$fx/rich.glb" -o "$tmp/sh.glb" --shadows --json -q > "$tmp/sh.json"
+check "bake-lighting --shadows glb valid" valid "$tmp/sh.glb"
+check "--json over primitives: samples and lights once, rays summed" "$py" -c '
+import json,sys
+a=json.loads(open(sys.argv[1]).read()); b=json.loads(open(sys.argv[2]).read())
+s=a["stats"]; t=b["stats"]
+assert s["samples"]==8, s["samples"]
+assert s["rays"]==sum(p["rays"] for p in s["per_primitive"].values()), s
+assert t["lights"]==next(iter(t["per_primitive"].values()))["lights"], t
+assert t["shadow_samples"]==1, t' "$tmp/ao.json" "$tmp/sh.json"
+
 echo "gltf_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include <shadetool/core/error.h>
 #include <shadetool/normals/face_normals.h>
@@ -229,46 +228,61 @@ std::vector<GltfNodePlacement> gltf_scene_nodes(const GltfDocument& document) {
   return out;
 }
 
+std::vector<GltfPrimitivePlacements> gltf_primitive_placements(const GltfDocument& document) {
+  std::vector<GltfPrimitivePlacements> out(document.primitives.size());
+  const std::vector<GltfNodePlacement> placements = gltf_scene_nodes(document);
+  if (placements.empty()) return out;
+  const json& nodes = document.source->json["nodes"];
+  for (std::size_t i = 0; i < document.primitives.size(); ++i)
+    for (const GltfNodePlacement& n : placements) {
+      const json& node = nodes[n.node];
+      if (!node.contains("mesh") || !node["mesh"].is_number_unsigned() || node["mesh"].get<std::size_t>() != document.primitives[i].mesh_index)
+        continue;
+      out[i].in_scene = true;
+      if (classify_affine(n.world).path == TransformPath::Singular) {
+        out[i].singular_nodes.push_back(n.node);
+        continue;
+      }
+      out[i].nodes.push_back(n);
+      if (node.contains("skin")) out[i].skinned_nodes.push_back(n.node);
+    }
+  return out;
+}
+
+Mesh gltf_placed_mesh(const GltfDocument& document, const GltfPrimitive& primitive, const GltfNodePlacement* placement) {
+  Mesh placed = primitive.mesh;
+  if (placement) {
+    const std::string name = document.source ? document.source->name : "<glTF>";
+    transform_mesh(placed, placement->world, {}, name + ": " + node_path(placement->node) + " (" + primitive.json_path + ")");
+  }
+  return placed;
+}
+
 Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& notes) {
   MergePlan plan = plan_merge(document);
-  const std::vector<GltfNodePlacement> placements = gltf_scene_nodes(document);
-  const json* nodes = document.source && document.source->json.contains("nodes") ? &document.source->json["nodes"] : nullptr;
-  const std::string name = document.source ? document.source->name : "<glTF>";
-
-  // Per mesh index: the nodes that show it, in scene order.
-  std::map<std::size_t, std::vector<const GltfNodePlacement*>> shown_by;
-  for (const GltfNodePlacement& n : placements) {
-    const json& node = (*nodes)[n.node];
-    if (node.contains("mesh") && node["mesh"].is_number_unsigned()) shown_by[node["mesh"].get<std::size_t>()].push_back(&n);
-  }
+  const std::vector<GltfPrimitivePlacements> placements = gltf_primitive_placements(document);
 
   Mesh out;
   std::vector<std::string> unplaced, hidden, skinned, morphed, uv_changed;
   std::size_t instances = 0, repeated = 0;
   bool any_placed = false;
-  for (const GltfPrimitive& p : document.primitives) {
+  for (std::size_t i = 0; i < document.primitives.size(); ++i) {
+    const GltfPrimitive& p = document.primitives[i];
+    const GltfPrimitivePlacements& where = placements[i];
     bool changed = false;
     const std::vector<double> uv = texcoords_of(document, p, changed);
     if (changed) uv_changed.push_back(p.json_path);
     if (!p.targets.empty()) morphed.push_back(p.json_path);
-    const auto it = shown_by.find(p.mesh_index);
-    if (it == shown_by.end()) {  // in no node of the scene: once, in its object space
+    for (std::size_t n : where.singular_nodes) hidden.push_back(node_path(n));
+    for (std::size_t n : where.skinned_nodes) skinned.push_back(node_path(n));
+    if (!where.in_scene) {  // in no node of the scene: once, in its object space
       unplaced.push_back(p.json_path);
       append_part(out, p.mesh, uv, plan);
       ++instances;
       continue;
     }
-    for (std::size_t k = 0; k < it->second.size(); ++k) {
-      const GltfNodePlacement& n = *it->second[k];
-      const std::string path = node_path(n.node);
-      if (classify_affine(n.world).path == TransformPath::Singular) {
-        hidden.push_back(path);
-        continue;
-      }
-      if ((*nodes)[n.node].contains("skin")) skinned.push_back(path);
-      Mesh placed = p.mesh;
-      transform_mesh(placed, n.world, {}, name + ": " + path + " (" + p.json_path + ")");
-      append_part(out, placed, uv, plan);
+    for (std::size_t k = 0; k < where.nodes.size(); ++k) {
+      append_part(out, gltf_placed_mesh(document, p, &where.nodes[k]), uv, plan);
       ++instances;
       repeated += k > 0;
       any_placed = true;

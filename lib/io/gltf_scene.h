@@ -49,6 +49,22 @@ struct GltfNodePlacement {
 // Empty for a document not read from a file (gltf_document_from_mesh) or without nodes.
 std::vector<GltfNodePlacement> gltf_scene_nodes(const GltfDocument& document);
 
+// Per document primitive (document.primitives[i]), the nodes of the scene that place it, in scene
+// order: `nodes` those with an invertible world matrix, `singular_nodes` those with a singular one
+// (scale 0: hidden; they place nothing), `skinned_nodes` those of `nodes` with a skin. in_scene is
+// false when no node of the scene shows the primitive's mesh (gltf_world_mesh then writes it once
+// in its object space).
+struct GltfPrimitivePlacements {
+  bool in_scene = false;
+  std::vector<GltfNodePlacement> nodes;
+  std::vector<std::size_t> singular_nodes, skinned_nodes;
+};
+std::vector<GltfPrimitivePlacements> gltf_primitive_placements(const GltfDocument& document);
+
+// The primitive's mesh placed by `placement` (transform_mesh: the bits gltf_world_mesh writes for
+// that instance); null: as read (object space).
+Mesh gltf_placed_mesh(const GltfDocument& document, const GltfPrimitive& primitive, const GltfNodePlacement* placement);
+
 // notes: what the flattening did or could not carry, one line each (appended).
 Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& notes);
 

@@ -160,31 +160,58 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
   });
 }
 
-MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclusionOptions& options,
-                             const std::string& source) {
-  MeshOcclusion out;
-  std::vector<float> computed;
-  if (!per_face && mesh.has_vertex_normals()) {
+namespace {
+
+// The hemispheres' axes of the occlusion job, per vertex: the mesh's own vertex normals (every one
+// valid, else Error: they are the axes), or when it has none the library's angle-weighted normals
+// rounded once to float (returned; their double copy is freed on return). Empty: use the mesh's.
+std::vector<float> job_axes(const Mesh& mesh, const std::string& source, bool& computed) {
+  computed = false;
+  if (mesh.has_vertex_normals()) {
     const std::size_t invalid = count_invalid_normals(mesh.vertex_normals);
     if (invalid > 0)
       throw Error(located(source, 0,
                           std::to_string(invalid) + " of " + std::to_string(mesh.num_vertices()) +
                               " vertex normals are invalid (NaN, Inf or zero length); they give the hemisphere's "
                               "axis: recompute them first (`shadetool normals --recompute`, or normals/vertex_normals.h)"));
-  } else if (!per_face) {
-    const std::vector<double> normals = vertex_normals(mesh).normals;
-    computed.assign(normals.begin(), normals.end());  // unit, rounded once to float
-    out.normals_computed = true;
+    return {};
   }
+  const std::vector<double> normals = vertex_normals(mesh).normals;
+  computed = true;
+  return std::vector<float>(normals.begin(), normals.end());  // unit, rounded once to float
+}
+
+AmbientOcclusion job_occlusion(const VisibilityScene& scene, const Mesh& mesh, bool per_face, const std::vector<float>& computed,
+                               const AmbientOcclusionOptions& options) {
+  if (per_face) return ambient_occlusion_per_face(scene, mesh, options);
+  if (!computed.empty() || !mesh.has_vertex_normals()) return ambient_occlusion_per_vertex(scene, mesh, computed, options);
+  return ambient_occlusion_per_vertex(scene, mesh, mesh.vertex_normals, options);
+}
+
+}  // namespace
+
+MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclusionOptions& options,
+                             const std::string& source) {
+  MeshOcclusion out;
+  // The axes first, their double copy freed before the BVH is built (peak memory).
+  const std::vector<float> computed = per_face ? std::vector<float>() : job_axes(mesh, source, out.normals_computed);
   const VisibilityScene scene(mesh);
-  if (per_face)
-    out.ao = ambient_occlusion_per_face(scene, mesh, options);
-  else if (out.normals_computed)
-    out.ao = ambient_occlusion_per_vertex(scene, mesh, computed, options);
-  else
-    out.ao = ambient_occlusion_per_vertex(scene, mesh, mesh.vertex_normals, options);
+  out.ao = job_occlusion(scene, mesh, per_face, computed, options);
   out.scene = scene.stats();
   return out;
+}
+
+AmbientOcclusion mesh_occlusion(const VisibilityScene& scene, const Mesh& mesh, bool per_face,
+                                const AmbientOcclusionOptions& options, const std::string& source, bool& normals_computed) {
+  normals_computed = false;
+  if (per_face) return ambient_occlusion_per_face(scene, mesh, options);
+  // The scene's vertices are another mesh's: the vertices as points (to_local rounds them as the
+  // BVH's copy of the same world positions was rounded), each with its index as its id.
+  const std::vector<float> computed = job_axes(mesh, source, normals_computed);
+  const std::vector<double> axes = normals_computed ? std::vector<double>(computed.begin(), computed.end()) : mesh.vertex_normals;
+  std::vector<std::uint64_t> ids(mesh.num_vertices());
+  for (std::size_t v = 0; v < ids.size(); ++v) ids[v] = v;
+  return ambient_occlusion_at_points(scene, mesh.positions, axes, ids, options);
 }
 
 }  // namespace shadetool
