@@ -46,7 +46,7 @@
 #include <shadetool/repair/reverse_faces.h>
 #include <shadetool/repair/signed_volume.h>
 #include "repair/repair_test_meshes.h"
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 #include "normals/parallel_control.h"
 
 using namespace shadetool;
