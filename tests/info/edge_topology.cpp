@@ -58,11 +58,7 @@ TEST_CASE("edge topology: a fin is one non-manifold edge, its two ends non-manif
 }
 
 TEST_CASE("edge topology: a bow-tie is one non-manifold vertex and no non-manifold edge", "[edge_topology]") {
-  Mesh m;
-  for (auto p : {Vec3d{0, 0, 0}, Vec3d{1, 1, 0}, Vec3d{1, -1, 0}, Vec3d{-1, 1, 0}, Vec3d{-1, -1, 0}}) m.add_vertex(p);
-  m.add_face({0, 2, 1});
-  m.add_face({0, 3, 4});
-  const EdgeTopology t = edge_topology(m);
+  const EdgeTopology t = edge_topology(testing::bow_tie());
   CHECK(t.non_manifold_vertices == 1);
   CHECK(t.non_manifold_edges == 0);
   CHECK(t.boundary_edges == 6);

@@ -42,4 +42,14 @@ inline Mesh moebius_three_quads() {
   return m;
 }
 
+// A bow-tie: two triangles (0, 2, 1) and (0, 3, 4) that meet only at vertex 0. Six boundary edges,
+// no shared edge; vertex 0's faces form two fans (a non-manifold vertex).
+inline Mesh bow_tie() {
+  Mesh m;
+  for (auto p : {Vec3d{0, 0, 0}, Vec3d{1, 1, 0}, Vec3d{1, -1, 0}, Vec3d{-1, 1, 0}, Vec3d{-1, -1, 0}}) m.add_vertex(p);
+  m.add_face({0, 2, 1});
+  m.add_face({0, 3, 4});
+  return m;
+}
+
 }  // namespace shadetool::testing
