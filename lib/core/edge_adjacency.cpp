@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/repeated_index.h>
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/edge_buckets.h>
 #include <shadetool/core/engine/parallel.h>
@@ -18,19 +19,13 @@ namespace {
 
 constexpr std::size_t kParallelFaces = engine::kSerialBelow;
 
-// Whether a face of n corners has fewer than 3 corners or repeats a vertex index.
+// Whether a face of n corners has fewer than 3 corners or repeats a vertex index (the rule of
+// core/repeated_index.h; triangles, the bulk, inline).
 bool unwound(const std::uint32_t* v, std::uint32_t n) {
   if (n < 3) return true;
   if (n == 3) return v[0] == v[1] || v[1] == v[2] || v[0] == v[2];
-  if (n <= 16) {
-    for (std::uint32_t i = 0; i < n; ++i)
-      for (std::uint32_t j = i + 1; j < n; ++j)
-        if (v[i] == v[j]) return true;
-    return false;
-  }
-  std::vector<std::uint32_t> s(v, v + n);
-  std::sort(s.begin(), s.end());
-  return std::adjacent_find(s.begin(), s.end()) != s.end();
+  std::vector<std::uint32_t> scratch;  // allocates only beyond 16 corners
+  return has_repeated_index(v, n, scratch);
 }
 
 }  // namespace
@@ -59,7 +54,6 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   auto takes_part = [&](std::size_t f, std::uint32_t b, std::uint32_t e) {
     if (!skip.empty() && skip[f]) return false;
     if (!options.skip_unwound_faces) return true;
-    if (e - b == 3) return cv[b] != cv[b + 1] && cv[b + 1] != cv[b + 2] && cv[b] != cv[b + 2];  // inline for triangles
     return !unwound(cv + b, e - b);
   };
 
