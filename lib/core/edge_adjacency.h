@@ -12,17 +12,17 @@
 // - An edge's valence is its number of half-edges: 1 a boundary edge, 2 a manifold edge, 3 or more
 //   a non-manifold edge. (Two half-edges of one face, e.g. the a -> b and b -> a of face (a, a, b),
 //   make a manifold edge too; callers that propagate across faces check for that.)
-// - Faces with a repeated vertex index (or fewer than 3 corners): by default their sides count
-//   like any other (info counts every side: a user's file, as it is); with skip_unwound_faces they
-//   contribute nothing (repair: such a face has no winding of its own). face_is_unwound is the test.
+// - Faces with a repeated vertex index (core/repeated_index.h) or fewer than 3 corners: by default
+//   their sides count like any other (info counts every side: a user's file, as it is); with
+//   skip_unwound_faces they contribute nothing (repair: such a face has no winding of its own).
+//   face_is_unwound is the test.
 // - A vertex no face refers to (an isolated vertex) is on no edge.
 //
 // Inputs:  mesh     faces (face_start #F+1, corner_vertex #C), polygons of any size; positions unused
 //          options  skip     #F flags or empty: faces whose flag is nonzero contribute no half-edges
-//                   skip_unwound_faces  also leave out faces with fewer than 3 corners or a
-//                            repeated vertex index: they have no winding of their own, and their
-//                            (a, b), (b, a) pair would make a false non-manifold edge out of a
-//                            manifold one (repair sets this; info counts every half-edge)
+//                   skip_unwound_faces  also leave out the faces face_is_unwound names (the
+//                            rules above): their (a, b), (b, a) sides would make a false
+//                            non-manifold edge out of a manifold one (repair sets this; info does not)
 // Outputs: EdgeAdjacency with
 //   corner_mate   #C   for a half-edge on an edge of valence exactly 2: (m << 1) | s, m the corner
 //                      of the other half-edge, s = 1 when both run the edge the same way (a -> b
