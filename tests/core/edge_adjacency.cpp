@@ -238,7 +238,8 @@ TEST_CASE("agrees with a map-based pairing on a random soup of triangles and pol
 }
 
 // ---- Hand-counted truth: the cube, a Moebius strip, non-manifold fans, repeated indices, an
-// isolated vertex. Every count below is from the figure in the comment, not from the code.
+// isolated vertex. Every count below is read off a figure (in the comment, or beside the mesh in
+// support/topology_meshes.h), not from the code.
 
 namespace {
 using Odd = std::array<std::uint32_t, 3>;
