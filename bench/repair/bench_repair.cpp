@@ -32,8 +32,9 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
-#include <shadetool/info/edge_topology.h>
 #include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/edge_adjacency.h>
+#include <shadetool/info/edge_topology.h>
 #include <shadetool/io/mesh_io.h>
 #include <shadetool/repair/component_boundaries.h>
 #include <shadetool/repair/consistent_winding.h>
@@ -46,7 +47,6 @@
 #include <shadetool/repair/reverse_faces.h>
 #include <shadetool/repair/signed_volume.h>
 #include "repair/repair_test_meshes.h"
-#include <shadetool/topology/edge_adjacency.h>
 #include "normals/parallel_control.h"
 
 using namespace shadetool;

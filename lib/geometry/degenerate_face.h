@@ -31,6 +31,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/core/repeated_index.h>  // has_repeated_index: the RepeatedIndex test
 #include <shadetool/geometry/face_area_vector.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -97,9 +98,6 @@ DegenerateKind face_degenerate_kind(const Mesh& mesh, std::size_t f);
 DegenerateKind face_area_kind(const Mesh& mesh, std::size_t f);
 // The same for the face whose corner list is corners[0 .. n) (vertex indices into positions).
 DegenerateKind face_area_kind(const double* positions, const std::uint32_t* corners, std::uint32_t n);
-
-// Whether a polygon's corner list uses one vertex twice.
-bool has_repeated_index(const std::uint32_t* corner_vertex, std::uint32_t n, std::vector<std::uint32_t>& scratch);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

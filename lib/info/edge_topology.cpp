@@ -5,7 +5,7 @@
 #include <vector>
 
 #include <shadetool/geometry/union_find.h>
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 
 namespace shadetool::info {
 

@@ -10,11 +10,11 @@
 //   non_manifold_vertices  referenced vertices whose incident faces do not form one fan, i.e. are
 //                          not connected through the manifold edges around the vertex (a bow-tie,
 //                          or a vertex on a non-manifold edge whose sheets meet only there)
-// Half-edges are the face sides (c, next(c)); sides with a == b (a face repeating a vertex) are
-// not edges and are ignored here (they are reported as degenerate faces).
-// Method: the half-edge pairing of topology/edge_adjacency.h (a counting sort on the lower vertex,
-// flat arrays, no maps), shared with repair; for the fans, a union-find over corners joins the two corners at each end of every manifold edge, and a vertex
-// is non-manifold when its corners fall into more than one set.
+// What an edge, a boundary / manifold / non-manifold edge is, and what a face repeating a vertex
+// gives, are the rules of core/edge_adjacency.h (info counts every face side: the default there).
+// Method: that half-edge pairing (a counting sort on the lower vertex, flat arrays, no maps),
+// shared with repair; for the fans, a union-find over corners joins the two corners at each end of
+// every manifold edge, and a vertex is non-manifold when its corners fall into more than one set.
 #pragma once
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 // component_boundaries.h: which components are closed, and how many boundary loops each has.
 //
 // Inputs:  mesh     faces #F
-//          adj      edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
+//          adj      edge_adjacency(mesh, left_out) (core/edge_adjacency.h)
 //          winding  consistent_winding(mesh, adj, skip): face_component, num_components (K)
 // Outputs: ComponentBoundaries with
 //   component_boundary_edges #K  edges on which the component has an odd number of half-edges
@@ -25,7 +25,7 @@
 
 #include <shadetool/core/mesh.h>
 #include <shadetool/repair/consistent_winding.h>
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {

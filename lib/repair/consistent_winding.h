@@ -2,7 +2,7 @@
 // manifold edge is traversed in opposite directions by its two faces.
 //
 // Inputs:  mesh      faces #F (polygons of any size)
-//          adj       edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
+//          adj       edge_adjacency(mesh, left_out) (core/edge_adjacency.h)
 //          left_out  the same options: faces flagged in skip, and with skip_unwound_faces faces
 //                    of fewer than 3 corners or with a repeated index, take no part (no
 //                    component, never reversed)
@@ -53,7 +53,7 @@
 
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/mesh.h>
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {

@@ -8,7 +8,7 @@
 // later one keeps its input relation to it (same winding stays same, opposite stays opposite).
 //
 // Inputs:  mesh     faces #F
-//          adj      edge_adjacency(mesh, left_out) (topology/edge_adjacency.h)
+//          adj      edge_adjacency(mesh, left_out) (core/edge_adjacency.h)
 //          winding  consistent_winding(mesh, adj, left_out): its components
 // Output:  DuplicateFaces with
 //   original  #F  for a duplicate, the lowest-numbered face with the same vertex set; else kNone
@@ -27,7 +27,7 @@
 
 #include <shadetool/core/mesh.h>
 #include <shadetool/repair/consistent_winding.h>
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {

@@ -14,7 +14,7 @@
 #include <shadetool/repair/seam_join.h>
 #include <shadetool/repair/signed_volume.h>
 #include <shadetool/repair/weld_vertices.h>
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 
 namespace shadetool {
 

@@ -8,7 +8,7 @@
 // Output:  mesh repaired in place, and the RepairReport.
 //   1. Consistent winding (consistent_winding.h) over the faces that have one (degenerate faces
 //      with a repeated index or < 3 corners are left out and left alone), on the half-edge
-//      pairing of topology/edge_adjacency.h. Duplicate faces (duplicate_faces.h) are set aside
+//      pairing of core/edge_adjacency.h. Duplicate faces (duplicate_faces.h) are set aside
 //      and later reversed together with their original.
 //   2. Outward orientation (outward_orientation.h): signed volume for closed components, nesting
 //      parity for shells inside shells, the winding-number vote for open ones, the input's

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {

@@ -3,6 +3,7 @@
 
 #include <shadetool/info/edge_topology.h>
 #include "support/analytic_meshes.h"
+#include "support/topology_meshes.h"
 
 using namespace shadetool;
 using namespace shadetool::info;
@@ -57,11 +58,7 @@ TEST_CASE("edge topology: a fin is one non-manifold edge, its two ends non-manif
 }
 
 TEST_CASE("edge topology: a bow-tie is one non-manifold vertex and no non-manifold edge", "[edge_topology]") {
-  Mesh m;
-  for (auto p : {Vec3d{0, 0, 0}, Vec3d{1, 1, 0}, Vec3d{1, -1, 0}, Vec3d{-1, 1, 0}, Vec3d{-1, -1, 0}}) m.add_vertex(p);
-  m.add_face({0, 2, 1});
-  m.add_face({0, 3, 4});
-  const EdgeTopology t = edge_topology(m);
+  const EdgeTopology t = edge_topology(testing::bow_tie());
   CHECK(t.non_manifold_vertices == 1);
   CHECK(t.non_manifold_edges == 0);
   CHECK(t.boundary_edges == 6);
@@ -86,4 +83,27 @@ TEST_CASE("edge topology: a repeated index makes no self-edge", "[edge_topology]
   m.add_face({0, 1, 1});
   const EdgeTopology t = edge_topology(m);
   CHECK(t.edges == 1);  // 0-1, used by the sides 0->1 and 1->0 of the same face
+}
+
+TEST_CASE("edge topology: a Moebius strip of three quads has one inconsistent edge and a boundary of 6", "[edge_topology]") {
+  // Counted by hand in support/topology_meshes.h: rung {t0, b0} is run the same way by Q0 and Q2.
+  const EdgeTopology t = edge_topology(testing::moebius_three_quads());
+  CHECK(t.edges == 9);
+  CHECK(t.boundary_edges == 6);
+  CHECK(t.non_manifold_edges == 0);
+  CHECK(t.inconsistent_edges == 1);
+  CHECK(t.non_manifold_vertices == 0);  // each vertex's two quads share its rung
+}
+
+TEST_CASE("edge topology: the cube of quads is closed and manifold; an isolated vertex changes nothing", "[edge_topology]") {
+  Mesh m = testing::cube_quads();
+  EdgeTopology t = edge_topology(m);
+  CHECK(t.edges == 12);
+  CHECK(t.boundary_edges == 0);
+  CHECK(t.inconsistent_edges == 0);
+  CHECK(t.non_manifold_vertices == 0);
+  m.add_vertex({5, 5, 5});  // referenced by no face: on no edge, in no fan
+  t = edge_topology(m);
+  CHECK(t.edges == 12);
+  CHECK(t.non_manifold_vertices == 0);
 }

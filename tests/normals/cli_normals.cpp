@@ -1,11 +1,8 @@
 // End-to-end tests of `shadetool normals`: flags, notes, exit codes, files written or not.
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -15,6 +12,7 @@
 
 #include <shadetool/io/mesh_io.h>
 #include "normals_test_util.h"
+#include "support/run_process.h"
 #include "support/temp_dir.h"
 
 using namespace shadetool;
@@ -23,30 +21,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
+using Run = shadetool_test::ProcessResult;
+using shadetool_test::read_file;
+using shadetool_test::run_shadetool;
 using shadetool::testing::TempDir;
 
-Run shadetool_run(const TempDir& dir, const std::string& args) {
-  const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = std::string("'") + SHADETOOL_BIN + "' " + args + " > '" + out + "' 2> '" + err + "'";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
 
 std::string data(const std::string& name) { return std::string(SHADETOOL_SOURCE_DIR) + "/data/" + name; }
 
@@ -62,7 +41,7 @@ void write_double_ply(const Mesh& m, const std::string& path) {
 
 TEST_CASE("cli normals: default computes angle-weighted vertex normals (cube: diagonals)", "[cli]") {
   TempDir d;
-  const Run r = shadetool_run(d, "normals '" + data("cube.obj") + "' -o '" + (d / "out.ply") + "' --stats");
+  const Run r = run_shadetool("normals '" + data("cube.obj") + "' -o '" + (d / "out.ply") + "' --stats");
   INFO(r.err);
   REQUIRE(r.code == 0);
   CHECK(r.err.find("weight=angle") != std::string::npos);
@@ -84,7 +63,7 @@ TEST_CASE("cli normals: existing normals are written back bitwise, with a note",
     m.vertex_normals.push_back(std::nextafter(12345.678, 0.0));
   }
   write_double_ply(m, d / "in.ply");
-  const Run r = shadetool_run(d, "normals '" + (d / "in.ply") + "' -o '" + (d / "out.ply") + "'");
+  const Run r = run_shadetool("normals '" + (d / "in.ply") + "' -o '" + (d / "out.ply") + "'");
   REQUIRE(r.code == 0);
   CHECK(r.err.find("kept unchanged") != std::string::npos);
   CHECK(r.err.find("--recompute") != std::string::npos);
@@ -92,7 +71,7 @@ TEST_CASE("cli normals: existing normals are written back bitwise, with a note",
   const Mesh out = read_mesh(d / "out.ply");
   CHECK(out.vertex_normals == m.vertex_normals);  // bitwise, through a double PLY
   // --recompute replaces them.
-  const Run r2 = shadetool_run(d, "normals '" + (d / "in.ply") + "' -o '" + (d / "out2.ply") + "' --recompute");
+  const Run r2 = run_shadetool("normals '" + (d / "in.ply") + "' -o '" + (d / "out2.ply") + "' --recompute");
   REQUIRE(r2.code == 0);
   const Mesh out2 = read_mesh(d / "out2.ply");
   CHECK(out2.vertex_normals != m.vertex_normals);
@@ -106,19 +85,19 @@ TEST_CASE("cli normals: invalid existing normals: exit 1, count named, --recompu
   m.vertex_normals[0] = std::numeric_limits<double>::quiet_NaN();
   m.vertex_normals[9] = m.vertex_normals[10] = m.vertex_normals[11] = 0.0;
   write_double_ply(m, d / "in.ply");
-  const Run r = shadetool_run(d, "normals '" + (d / "in.ply") + "' -o '" + (d / "out.ply") + "'");
+  const Run r = run_shadetool("normals '" + (d / "in.ply") + "' -o '" + (d / "out.ply") + "'");
   CHECK(r.code == 1);
   CHECK(r.err.find("shadetool: " + (d / "in.ply") + ": 2 of 8 vertex normals are invalid") != std::string::npos);
   CHECK(r.err.find("--recompute") != std::string::npos);
   CHECK_FALSE(fs::exists(d / "out.ply"));
-  const Run ok = shadetool_run(d, "normals '" + (d / "in.ply") + "' -o '" + (d / "out.ply") + "' --recompute");
+  const Run ok = run_shadetool("normals '" + (d / "in.ply") + "' -o '" + (d / "out.ply") + "' --recompute");
   CHECK(ok.code == 0);
   CHECK(fs::exists(d / "out.ply"));
 }
 
 TEST_CASE("cli normals: --crease writes per-corner vn in OBJ and splits vertices in PLY", "[cli]") {
   TempDir d;
-  const Run r = shadetool_run(d, "normals '" + data("cube.obj") + "' -o '" + (d / "out.obj") + "' --crease 30");
+  const Run r = run_shadetool("normals '" + data("cube.obj") + "' -o '" + (d / "out.obj") + "' --crease 30");
   REQUIRE(r.code == 0);
   const Mesh obj = read_mesh(d / "out.obj");
   REQUIRE(obj.has_corner_normals());
@@ -130,24 +109,24 @@ TEST_CASE("cli normals: --crease writes per-corner vn in OBJ and splits vertices
     const Vec3d n = get3(obj.corner_normals, obj.corner_normal_index[c]);
     CHECK(std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z) == 1.0);
   }
-  const Run p = shadetool_run(d, "normals '" + data("cube.obj") + "' -o '" + (d / "out.ply") + "' --crease 30 --stats");
+  const Run p = run_shadetool("normals '" + data("cube.obj") + "' -o '" + (d / "out.ply") + "' --crease 30 --stats");
   REQUIRE(p.code == 0);
   CHECK(p.err.find("split_vertices=16") != std::string::npos);
   CHECK(p.err.find("corner_normals=24") != std::string::npos);
   CHECK(read_mesh(d / "out.ply").num_vertices() == 24);
   // --crease 180: one normal per vertex again.
-  const Run q = shadetool_run(d, "normals '" + data("cube.obj") + "' -o '" + (d / "flat.obj") + "' --crease 180");
+  const Run q = run_shadetool("normals '" + data("cube.obj") + "' -o '" + (d / "flat.obj") + "' --crease 180");
   REQUIRE(q.code == 0);
   CHECK(read_mesh(d / "flat.obj").corner_normals.size() == 3 * 8);
 }
 
 TEST_CASE("cli normals: --faces writes one normal per face", "[cli]") {
   TempDir d;
-  REQUIRE(shadetool_run(d, "normals '" + data("cube.obj") + "' -o '" + (d / "f.ply") + "' --faces").code == 0);
+  REQUIRE(run_shadetool("normals '" + data("cube.obj") + "' -o '" + (d / "f.ply") + "' --faces").code == 0);
   const Mesh ply = read_mesh(d / "f.ply");
   REQUIRE(ply.has_face_normals());
   CHECK_FALSE(ply.has_vertex_normals());
-  REQUIRE(shadetool_run(d, "normals '" + data("cube.obj") + "' -o '" + (d / "f.obj") + "' --faces").code == 0);
+  REQUIRE(run_shadetool("normals '" + data("cube.obj") + "' -o '" + (d / "f.obj") + "' --faces").code == 0);
   const Mesh obj = read_mesh(d / "f.obj");
   REQUIRE(obj.has_corner_normals());
   CHECK(obj.corner_normals.size() == 3 * obj.num_faces());
@@ -164,8 +143,8 @@ TEST_CASE("cli normals: every weighting and precision runs; float is within 1e-3
   TempDir d;
   for (const char* w : {"uniform", "area", "angle", "max"}) {
     const std::string base = std::string("normals '") + data("torus.obj") + "' --weight " + w + " -o '";
-    REQUIRE(shadetool_run(d, base + (d / "dbl.ply") + "'").code == 0);
-    REQUIRE(shadetool_run(d, base + (d / "flt.ply") + "' --precision float").code == 0);
+    REQUIRE(run_shadetool(base + (d / "dbl.ply") + "'").code == 0);
+    REQUIRE(run_shadetool(base + (d / "flt.ply") + "' --precision float").code == 0);
     const Mesh a = read_mesh(d / "dbl.ply"), b = read_mesh(d / "flt.ply");
     double worst = 0;
     for (std::size_t v = 0; v < a.num_vertices(); ++v)
@@ -177,7 +156,7 @@ TEST_CASE("cli normals: every weighting and precision runs; float is within 1e-3
 TEST_CASE("cli normals: isolated vertices and degenerate faces are counted, never NaN", "[cli]") {
   TempDir d;
   std::ofstream(d / "in.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nv 2 0 0\nf 1 2 3\nf 1 2 5\n";
-  const Run r = shadetool_run(d, "normals '" + (d / "in.obj") + "' -o '" + (d / "out.obj") + "' --stats");
+  const Run r = run_shadetool("normals '" + (d / "in.obj") + "' -o '" + (d / "out.obj") + "' --stats");
   REQUIRE(r.code == 0);
   CHECK(r.err.find("fallback_vertices=2") != std::string::npos);  // v4 isolated, v5 only on a degenerate face
   CHECK(r.err.find("degenerate_faces=1") != std::string::npos);
@@ -189,15 +168,15 @@ TEST_CASE("cli normals: isolated vertices and degenerate faces are counted, neve
 TEST_CASE("cli normals: usage errors exit 2, bad input exits 1, with no output", "[cli]") {
   TempDir d;
   const std::string in = "'" + data("cube.obj") + "'", out = " -o '" + (d / "o.ply") + "'";
-  CHECK(shadetool_run(d, "normals " + in + out + " --crease 200").code == 2);
-  CHECK(shadetool_run(d, "normals " + in + out + " --crease -1").code == 2);
-  CHECK(shadetool_run(d, "normals " + in + out + " --faces --crease 30").code == 2);
-  CHECK(shadetool_run(d, "normals " + in + out + " --faces --weight area").code == 2);
-  CHECK(shadetool_run(d, "normals " + in + out + " --weight cotan").code == 2);
-  CHECK(shadetool_run(d, "normals " + in + out + " --precision half").code == 2);
+  CHECK(run_shadetool("normals " + in + out + " --crease 200").code == 2);
+  CHECK(run_shadetool("normals " + in + out + " --crease -1").code == 2);
+  CHECK(run_shadetool("normals " + in + out + " --faces --crease 30").code == 2);
+  CHECK(run_shadetool("normals " + in + out + " --faces --weight area").code == 2);
+  CHECK(run_shadetool("normals " + in + out + " --weight cotan").code == 2);
+  CHECK(run_shadetool("normals " + in + out + " --precision half").code == 2);
   CHECK_FALSE(fs::exists(d / "o.ply"));
   std::ofstream(d / "nan.obj") << "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n";
-  const Run r = shadetool_run(d, "normals '" + (d / "nan.obj") + "'" + out);
+  const Run r = run_shadetool("normals '" + (d / "nan.obj") + "'" + out);
   CHECK(r.code == 1);
   CHECK(r.err.find("NaN or Inf coordinates") != std::string::npos);
   CHECK_FALSE(fs::exists(d / "o.ply"));
@@ -205,7 +184,7 @@ TEST_CASE("cli normals: usage errors exit 2, bad input exits 1, with no output",
 
 TEST_CASE("cli normals: --json reports the stats", "[cli]") {
   TempDir d;
-  const Run r = shadetool_run(d, "normals '" + data("cube.obj") + "' -o '" + (d / "o.obj") + "' --json --crease 45");
+  const Run r = run_shadetool("normals '" + data("cube.obj") + "' -o '" + (d / "o.obj") + "' --json --crease 45");
   REQUIRE(r.code == 0);
   CHECK(r.out.find("\"normals\":\"corner\"") != std::string::npos);
   CHECK(r.out.find("\"fallback_corners\":0") != std::string::npos);
@@ -213,9 +192,9 @@ TEST_CASE("cli normals: --json reports the stats", "[cli]") {
 
 TEST_CASE("cli normals: the man page documents every flag of --help", "[cli][man]") {
   TempDir d;
-  const Run r = shadetool_run(d, "normals --help");
+  const Run r = run_shadetool("normals --help");
   REQUIRE(r.code == 0);
-  const std::string man = slurp(fs::path(SHADETOOL_SOURCE_DIR) / "man" / "shadetool-normals.1");
+  const std::string man = read_file(fs::path(SHADETOOL_SOURCE_DIR) / "man" / "shadetool-normals.1");
   REQUIRE_FALSE(man.empty());
   // Long flags in the help text: "--" followed by lower-case letters and hyphens.
   std::set<std::string> flags;

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <vector>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +12,7 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+#include "support/run_process.h"
 #include "support/temp_dir.h"
 
 namespace fs = std::filesystem;
@@ -21,20 +21,16 @@ namespace {
 
 using shadetool::testing::TempDir;
 
-std::string slurp(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using shadetool_test::read_file;
+using shadetool_test::run_shadetool;
 
 void write_text(const std::string& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
-// Runs `shadetool ARGS`, stderr to `err`; returns the exit code.
-int run(const std::string& args, const std::string& err) {
-  const std::string cmd = std::string("'") + SHADETOOL_BIN + "' " + args + " > /dev/null 2> '" + err + "'";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+// Runs `shadetool ARGS` (tests/support/run_process.h); its stderr into `err`, returns the exit code.
+int run(const std::string& args, std::string& err) {
+  const shadetool_test::ProcessResult r = run_shadetool(args);
+  err = r.err;
+  return r.code;
 }
 
 std::string data(const std::string& name) { return std::string(SHADETOOL_SOURCE_DIR) + "/data/" + name; }
@@ -58,11 +54,12 @@ std::string cube_obj(bool flip_two) {
 
 TEST_CASE("repair: report JSON fields and one stderr line per step that changed something", "[repair][cli]") {
   TempDir tmp;
-  const std::string out = tmp / "fixed.ply", report = tmp / "report.json", err = tmp / "err.txt";
+  const std::string out = tmp / "fixed.ply", report = tmp / "report.json";
+  std::string err;
   // data/inconsistent_winding.obj: an 80-face icosphere with faces 0, 7, ..., 77 (12) reversed.
   REQUIRE(run("repair '" + data("inconsistent_winding.obj") + "' -o '" + out + "' --report '" + report + "'", err) == 0);
   REQUIRE(fs::exists(out));
-  const nlohmann::json j = nlohmann::json::parse(slurp(report));
+  const nlohmann::json j = nlohmann::json::parse(read_file(report));
   CHECK(j["faces_in"] == 80);
   CHECK(j["faces_out"] == 80);
   CHECK(j["components"] == 1);
@@ -81,7 +78,7 @@ TEST_CASE("repair: report JSON fields and one stderr line per step that changed 
   CHECK(j["normals_recomputed"]["zero"] == 0);
   CHECK(j["normals_recomputed"]["flipped"] == 0);
   CHECK(j["orientation"]["open_component_method"] == "generalized winding number");
-  const std::string e = slurp(err);
+  const std::string e = err;  // the first run's
   CHECK(e.find("winding: reversed 12 faces") != std::string::npos);
   CHECK(e.find("normals: computed 42 vertex normals") != std::string::npos);
   CHECK(e.find("orientation:") == std::string::npos);  // nothing was inverted as a whole
@@ -89,19 +86,20 @@ TEST_CASE("repair: report JSON fields and one stderr line per step that changed 
   SECTION("repairing the output again changes nothing and prints nothing") {
     const std::string out2 = tmp / "again.ply", report2 = tmp / "again.json";
     REQUIRE(run("repair '" + out + "' -o '" + out2 + "' --report '" + report2 + "'", err) == 0);
-    const nlohmann::json k = nlohmann::json::parse(slurp(report2));
+    const nlohmann::json k = nlohmann::json::parse(read_file(report2));
     CHECK(k["changes"] == 0);
     CHECK(k["faces_flipped"] == 0);
     CHECK(k["normals_recomputed"]["total"] == 0);
-    CHECK(slurp(err).empty());
+    CHECK(err.empty());
   }
 }
 
 TEST_CASE("repair: data/non_manifold.obj (a fin, a bow-tie, a duplicated triangle) is left as it is", "[repair][cli]") {
   TempDir tmp;
-  const std::string out = tmp / "nm.obj", report = tmp / "nm.json", err = tmp / "err.txt";
+  const std::string out = tmp / "nm.obj", report = tmp / "nm.json";
+  std::string err;
   REQUIRE(run("repair '" + data("non_manifold.obj") + "' -o '" + out + "' --report '" + report + "'", err) == 0);
-  const nlohmann::json j = nlohmann::json::parse(slurp(report));
+  const nlohmann::json j = nlohmann::json::parse(read_file(report));
   CHECK(j["faces_in"] == 7);
   CHECK(j["faces_out"] == 7);
   CHECK(j["non_manifold_edges"] == 1);  // the fin's edge
@@ -115,7 +113,8 @@ TEST_CASE("repair: data/non_manifold.obj (a fin, a bow-tie, a duplicated triangl
 
 TEST_CASE("repair: a wholly inverted cube, --remove-degenerate, --weld", "[repair][cli]") {
   TempDir tmp;
-  const std::string in = tmp / "cube.obj", out = tmp / "cube_fixed.obj", report = tmp / "r.json", err = tmp / "err.txt";
+  const std::string in = tmp / "cube.obj", out = tmp / "cube_fixed.obj", report = tmp / "r.json";
+  std::string err;
   // Inverted cube (every face reversed) plus one zero-area face on collinear points 1, 2, (2,0,0).
   std::string s = cube_obj(false);
   std::string inverted;
@@ -132,7 +131,7 @@ TEST_CASE("repair: a wholly inverted cube, --remove-degenerate, --weld", "[repai
   inverted += "v 2 0 0\nf 1 2 9\n";
   write_text(in, inverted);
   REQUIRE(run("repair '" + in + "' -o '" + out + "' --report '" + report + "'", err) == 0);
-  nlohmann::json j = nlohmann::json::parse(slurp(report));
+  nlohmann::json j = nlohmann::json::parse(read_file(report));
   CHECK(j["faces_flipped"] == 12);
   CHECK(j["components_inverted"] == 1);
   CHECK(j["degenerate_faces"] == 1);
@@ -140,13 +139,13 @@ TEST_CASE("repair: a wholly inverted cube, --remove-degenerate, --weld", "[repai
   CHECK(j["faces_out"] == 13);  // reported, kept
   CHECK(j["components"] == 2);   // the sliver on the cube's edge (1, 2) makes it non-manifold
   CHECK(j["non_manifold_edges"] == 1);
-  CHECK(slurp(err).find("orientation: reversed 1 of 2 components as a whole") != std::string::npos);
+  CHECK(err.find("orientation: reversed 1 of 2 components as a whole") != std::string::npos);
 
   REQUIRE(run("repair '" + in + "' -o '" + out + "' --report '" + report + "' --remove-degenerate", err) == 0);
-  j = nlohmann::json::parse(slurp(report));
+  j = nlohmann::json::parse(read_file(report));
   CHECK(j["degenerate_faces_removed"] == 1);
   CHECK(j["faces_out"] == 12);
-  CHECK(slurp(err).find("degenerate: removed 1 face (") != std::string::npos);
+  CHECK(err.find("degenerate: removed 1 face (") != std::string::npos);
 
   // Split the cube's faces apart (each face its own 3 vertices), then weld them back.
   std::string soup;
@@ -164,51 +163,53 @@ TEST_CASE("repair: a wholly inverted cube, --remove-degenerate, --weld", "[repai
   }
   write_text(in, soup);
   REQUIRE(run("repair '" + in + "' -o '" + out + "' --report '" + report + "' --weld 1e-9", err) == 0);
-  j = nlohmann::json::parse(slurp(report));
+  j = nlohmann::json::parse(read_file(report));
   CHECK(j["vertices_welded"] == 36 - 8);
   CHECK(j["components"] == 1);
   CHECK(j["closed_components"] == 1);
   CHECK(j["faces_flipped"] == 2);
   CHECK(j["weld_eps"] == 1e-9);
-  CHECK(slurp(err).find("weld: merged 28 vertices within") != std::string::npos);
+  CHECK(err.find("weld: merged 28 vertices within") != std::string::npos);
 }
 
 TEST_CASE("repair: bad input exits 1 with a located message and writes nothing", "[repair][cli]") {
   TempDir tmp;
-  const std::string in = tmp / "nan.obj", out = tmp / "out.obj", report = tmp / "r.json", err = tmp / "err.txt";
+  const std::string in = tmp / "nan.obj", out = tmp / "out.obj", report = tmp / "r.json";
+  std::string err;
   write_text(in, "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
   CHECK(run("repair '" + in + "' -o '" + out + "' --report '" + report + "'", err) == 1);
   CHECK(!fs::exists(out));
   CHECK(!fs::exists(report));
-  CHECK(slurp(err).find("shadetool: " + in + ": 1 vertex has NaN or Inf coordinates") != std::string::npos);
+  CHECK(err.find("shadetool: " + in + ": 1 vertex has NaN or Inf coordinates") != std::string::npos);
 
   // An existing output is left untouched by a failed run.
   write_text(out, "previous contents");
   CHECK(run("repair '" + in + "' -o '" + out + "'", err) == 1);
-  CHECK(slurp(out) == "previous contents");
+  CHECK(read_file(out) == "previous contents");
 
   // A mesh without faces.
   write_text(in, "v 0 0 0\n");
   fs::remove(out);
   CHECK(run("repair '" + in + "' -o '" + out + "'", err) == 1);
-  CHECK(slurp(err).find("no faces") != std::string::npos);
+  CHECK(err.find("no faces") != std::string::npos);
   CHECK(!fs::exists(out));
 
   // A report in a directory that does not exist: refused before any output is written.
   write_text(in, cube_obj(true));
   CHECK(run("repair '" + in + "' -o '" + out + "' --report '" + tmp / "missing/r.json" + "'", err) == 1);
   CHECK(!fs::exists(out));
-  CHECK(slurp(err).find("cannot write the report") != std::string::npos);
+  CHECK(err.find("cannot write the report") != std::string::npos);
 }
 
 TEST_CASE("repair: usage errors exit 2 and write nothing", "[repair][cli]") {
   TempDir tmp;
-  const std::string in = tmp / "cube.obj", out = tmp / "out.obj", err = tmp / "err.txt";
+  const std::string in = tmp / "cube.obj", out = tmp / "out.obj";
+  std::string err;
   write_text(in, cube_obj(true));
   CHECK(run("repair '" + in + "' -o '" + out + "' --weld -1", err) == 2);
   CHECK(run("repair '" + in + "' -o '" + out + "' --weight median", err) == 2);
   CHECK(run("repair '" + in + "' '" + in + "' --output-dir '" + tmp.path.string() + "' --report '" + tmp / "r.json" + "'", err) == 2);
-  CHECK(slurp(err).find("--report takes one input") != std::string::npos);
+  CHECK(err.find("--report takes one input") != std::string::npos);
   CHECK(run("repair '" + in + "'", err) == 2);  // no output given
   CHECK(!fs::exists(out));
   CHECK(!fs::exists(tmp / "r.json"));
@@ -216,11 +217,11 @@ TEST_CASE("repair: usage errors exit 2 and write nothing", "[repair][cli]") {
 
 TEST_CASE("repair: --json carries the counts", "[repair][cli]") {
   TempDir tmp;
-  const std::string in = tmp / "cube.obj", out = tmp / "out.obj", lines = tmp / "lines.jsonl", err = tmp / "err.txt";
+  const std::string in = tmp / "cube.obj", out = tmp / "out.obj";
   write_text(in, cube_obj(true));
-  const std::string cmd = std::string("'") + SHADETOOL_BIN + "' repair '" + in + "' -o '" + out + "' --json > '" + lines + "' 2> '" + err + "'";
-  REQUIRE(std::system(cmd.c_str()) == 0);
-  const nlohmann::json j = nlohmann::json::parse(slurp(lines));
+  const shadetool_test::ProcessResult r = run_shadetool("repair '" + in + "' -o '" + out + "' --json");
+  REQUIRE(r.code == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
   CHECK(j["status"] == "ok");
   CHECK(j["stats"]["faces_flipped"] == 2);
   CHECK(j["stats"]["components"] == 1);
@@ -263,14 +264,14 @@ std::string seam_split_cube_ply(const std::vector<int>& inverted) {
 TEST_CASE("repair orients a cube split at its UV seams as one closed surface (issue 21 item 12)", "[repair][cli][seams]") {
   TempDir tmp;
   write_text(tmp / "cube.ply", seam_split_cube_ply({1, 4}));
-  REQUIRE(run("repair '" + tmp / "cube.ply" + "' -o '" + tmp / "out.ply" + "' --ascii --report '" + tmp / "r.json" + "'",
-              tmp / "err") == 0);
-  const nlohmann::json r = nlohmann::json::parse(slurp(tmp / "r.json"));
+  std::string err;
+  REQUIRE(run("repair '" + tmp / "cube.ply" + "' -o '" + tmp / "out.ply" + "' --ascii --report '" + tmp / "r.json" + "'", err) == 0);
+  const nlohmann::json r = nlohmann::json::parse(read_file(tmp / "r.json"));
   CHECK(r["seam_vertices_joined"] == 16);  // 24 vertices at 8 positions
   CHECK(r["closed_components"] == 1);
   CHECK(r["faces_flipped"] == 4);  // the two inverted faces' triangles, nothing else
   // The output keeps its 24 vertices (and their UVs) and every triangle faces outward.
-  std::istringstream out(slurp(tmp / "out.ply"));
+  std::istringstream out(read_file(tmp / "out.ply"));
   std::string line;
   int vertices = 0;
   while (std::getline(out, line) && line != "end_header")

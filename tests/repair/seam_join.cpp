@@ -11,7 +11,7 @@
 #include <shadetool/core/math_constants.h>
 #include <shadetool/repair/repair_mesh.h>
 #include <shadetool/repair/seam_join.h>
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 
 using namespace shadetool;
 

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include <shadetool/core/math_constants.h>
 #include <shadetool/core/mesh.h>
 #include <shadetool/core/vec3.h>
 
@@ -26,7 +27,7 @@ struct AnalyticMesh {
   std::vector<Vec3d> exact_normals;  // one unit normal per vertex
 };
 
-constexpr double kPi = 3.14159265358979323846;
+using shadetool::kPi;  // core/math_constants.h: one pi
 
 // Angle between two vectors in degrees, accurate for tiny angles (atan2 of |a x b| and a.b).
 inline double angle_degrees(const Vec3d& a, const Vec3d& b) {

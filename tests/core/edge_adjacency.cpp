@@ -1,5 +1,6 @@
-// Tests of topology/edge_adjacency: pairs and odd edges counted by hand on small meshes, by
-// Euler's formula on closed ones, and against known flips on a re-wound torus.
+// Tests of core/edge_adjacency: pairs and odd edges counted by hand on small meshes (a cube, a
+// Moebius strip, non-manifold fans, repeated indices, an isolated vertex), by Euler's formula on
+// closed ones, against known flips on a re-wound torus, and against a map-based pairing.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,7 +11,8 @@
 #include <tbb/task_arena.h>
 
 #include "repair/repair_test_meshes.h"
-#include <shadetool/topology/edge_adjacency.h>
+#include "support/topology_meshes.h"
+#include <shadetool/core/edge_adjacency.h>
 
 using namespace shadetool;
 using namespace shadetool::testing;
@@ -29,7 +31,7 @@ std::vector<std::array<std::uint32_t, 3>> odd_edges(const Mesh& m, const EdgeAdj
 }
 }  // namespace
 
-TEST_CASE("two triangles of a square: four boundary edges and one shared diagonal", "[topology][adjacency]") {
+TEST_CASE("two triangles of a square: four boundary edges and one shared diagonal", "[core][adjacency]") {
   Mesh m;
   for (int i = 0; i < 4; ++i) m.add_vertex({double(i & 1), double(i >> 1), 0});
   m.add_face({0, 1, 3});
@@ -48,7 +50,7 @@ TEST_CASE("two triangles of a square: four boundary edges and one shared diagona
         std::vector<std::uint32_t>{kU, kU, (3u << 1) | 0u, (2u << 1) | 0u, kU, kU});
 }
 
-TEST_CASE("two faces running their shared edge the same way are paired with the same-direction bit", "[topology][adjacency]") {
+TEST_CASE("two faces running their shared edge the same way are paired with the same-direction bit", "[core][adjacency]") {
   Mesh m;
   for (int i = 0; i < 4; ++i) m.add_vertex({double(i & 1), double(i >> 1), 0});
   m.add_face({0, 1, 3});  // corner 2: 3 -> 0
@@ -58,7 +60,7 @@ TEST_CASE("two faces running their shared edge the same way are paired with the 
   CHECK(adj.corner_mate[5] == ((2u << 1) | 1u));
 }
 
-TEST_CASE("a closed triangle mesh: every edge is a pair, E = 3F/2, V - E + F = 2", "[topology][adjacency]") {
+TEST_CASE("a closed triangle mesh: every edge is a pair, E = 3F/2, V - E + F = 2", "[core][adjacency]") {
   const Mesh m = icosphere(3).mesh;
   const EdgeAdjacency adj = edge_adjacency(m);
   CHECK(adj.num_edges * 2 == 3 * m.num_faces());
@@ -70,7 +72,7 @@ TEST_CASE("a closed triangle mesh: every edge is a pair, E = 3F/2, V - E + F = 2
   }
 }
 
-TEST_CASE("on a torus with random flips the same-direction bit is exactly where one face of two was flipped", "[topology][adjacency]") {
+TEST_CASE("on a torus with random flips the same-direction bit is exactly where one face of two was flipped", "[core][adjacency]") {
   Mesh m = testing::torus(40, 20).mesh;
   const std::vector<std::size_t> list = flip_random_faces(m, 0.3, 7);
   std::vector<int> flipped(m.num_faces(), 0);
@@ -84,7 +86,7 @@ TEST_CASE("on a torus with random flips the same-direction bit is exactly where 
   }
 }
 
-TEST_CASE("three triangles on one edge: valence 3, nothing paired there", "[topology][adjacency]") {
+TEST_CASE("three triangles on one edge: valence 3, nothing paired there", "[core][adjacency]") {
   const Mesh m = three_triangles_on_one_edge();
   const EdgeAdjacency adj = edge_adjacency(m);
   CHECK(adj.num_edges == 7);  // (0,1) plus two edges to each of vertices 2, 3, 4
@@ -95,7 +97,7 @@ TEST_CASE("three triangles on one edge: valence 3, nothing paired there", "[topo
   for (std::uint32_t a : adj.corner_mate) CHECK(a == kU);
 }
 
-TEST_CASE("repeated indices, unwound and skipped faces", "[topology][adjacency]") {
+TEST_CASE("repeated indices, unwound and skipped faces", "[core][adjacency]") {
   Mesh m;
   for (int i = 0; i < 3; ++i) m.add_vertex({double(i), 0, 0});
   m.add_face({0, 0, 1});
@@ -119,7 +121,7 @@ TEST_CASE("repeated indices, unwound and skipped faces", "[topology][adjacency]"
   CHECK(!face_is_unwound(m, 1));
 }
 
-TEST_CASE("quads: a 2 x 1 strip has one interior edge and six boundary edges", "[topology][adjacency]") {
+TEST_CASE("quads: a 2 x 1 strip has one interior edge and six boundary edges", "[core][adjacency]") {
   Mesh m;
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 3; ++i) m.add_vertex({double(i), double(j), 0});
@@ -135,7 +137,7 @@ TEST_CASE("quads: a 2 x 1 strip has one interior edge and six boundary edges", "
   CHECK(corner_face(m, 3) == 0);
 }
 
-TEST_CASE("a vertex index beyond the vertex count is refused", "[topology][adjacency]") {
+TEST_CASE("a vertex index beyond the vertex count is refused", "[core][adjacency]") {
   Mesh m;
   m.add_vertex({0, 0, 0});
   m.add_vertex({1, 0, 0});
@@ -145,7 +147,7 @@ TEST_CASE("a vertex index beyond the vertex count is refused", "[topology][adjac
   CHECK_THROWS(edge_adjacency(m));
 }
 
-TEST_CASE("counts and odd edges do not depend on the winding", "[topology][adjacency]") {
+TEST_CASE("counts and odd edges do not depend on the winding", "[core][adjacency]") {
   Mesh m = testing::torus(20, 10).mesh;
   m.face_start.resize(m.face_start.size() - 40);  // cut a strip off: a boundary to compare
   m.corner_vertex.resize(m.face_start.back());
@@ -157,7 +159,7 @@ TEST_CASE("counts and odd edges do not depend on the winding", "[topology][adjac
   CHECK(odd_edges(m, a) == odd_edges(flipped, b));
 }
 
-TEST_CASE("a hub vertex of high degree (a fan of 1000 triangles)", "[topology][adjacency]") {
+TEST_CASE("a hub vertex of high degree (a fan of 1000 triangles)", "[core][adjacency]") {
   Mesh m;
   m.add_vertex({0, 0, 0});
   const int n = 1000;
@@ -170,7 +172,7 @@ TEST_CASE("a hub vertex of high degree (a fan of 1000 triangles)", "[topology][a
   for (int i = 0; i < n; ++i) CHECK(adj.corner_mate[3 * i] == std::uint32_t(3 * ((i + n - 1) % n) + 2) << 1);
 }
 
-TEST_CASE("same output for 1 and 2 threads (vertex blocks above 32768 faces)", "[topology][adjacency]") {
+TEST_CASE("same output for 1 and 2 threads (vertex blocks above 32768 faces)", "[core][adjacency]") {
   Mesh m = testing::torus(300, 150).mesh;  // 90000 faces
   flip_random_faces(m, 0.3, 5);
   m.face_start.resize(m.face_start.size() - 600);  // one ring of quads off: two boundary loops of 300
@@ -184,7 +186,7 @@ TEST_CASE("same output for 1 and 2 threads (vertex blocks above 32768 faces)", "
   CHECK(serial.num_edges == two.num_edges);
 }
 
-TEST_CASE("agrees with a map-based pairing on a random soup of triangles and polygons", "[topology][adjacency]") {
+TEST_CASE("agrees with a map-based pairing on a random soup of triangles and polygons", "[core][adjacency]") {
   // Faces of 1 to 6 corners (or triangles only: that path reads the higher vertex from the
   // corner) on 3000 vertices (the same vertex may repeat): boundary, manifold and non-manifold
   // edges in every bucket size, same-direction pairs, edges a face uses twice. 40000 faces, so
@@ -233,4 +235,161 @@ TEST_CASE("agrees with a map-based pairing on a random soup of triangles and pol
   CHECK(boundary > 1000);  // the soup really has every kind
   CHECK(non_manifold > 1000);
   CHECK(std::count_if(mate.begin(), mate.end(), [](std::uint32_t x) { return x != kU; }) > 1000);
+}
+
+// ---- Hand-counted truth: the cube, a Moebius strip, non-manifold fans, repeated indices, an
+// isolated vertex. Every count below is read off a figure (in the comment, or beside the mesh in
+// support/topology_meshes.h), not from the code.
+
+namespace {
+using Odd = std::array<std::uint32_t, 3>;
+using Counts = std::array<std::size_t, 3>;  // edges, boundary edges, non-manifold edges
+
+Counts counts(const EdgeAdjacency& adj) { return {adj.num_edges, adj.boundary_edges, adj.non_manifold_edges}; }
+
+}  // namespace
+
+TEST_CASE("cube of six quads: 12 edges, every side paired, all pairs opposite, V - E + F = 2", "[core][adjacency][truth]") {
+  const Mesh m = cube_quads();
+  const EdgeAdjacency adj = edge_adjacency(m);
+  CHECK(counts(adj) == Counts{12, 0, 0});
+  CHECK(adj.num_odd_edges() == 0);
+  for (std::uint32_t c = 0; c < 24; ++c) {
+    REQUIRE(adj.corner_mate[c] != kU);
+    CHECK((adj.corner_mate[c] & 1u) == 0u);                   // wound outward: opposite ways
+    CHECK(corner_face(m, adj.corner_mate[c] >> 1) != corner_face(m, c));
+  }
+  // Edge {0, 1}: the bottom's side 1 -> 0 (corner 3) and the front's 0 -> 1 (corner 8).
+  CHECK(adj.corner_mate[3] == (8u << 1));
+  CHECK(adj.corner_mate[8] == (3u << 1));
+  // Edge {0, 2}: the bottom's 0 -> 2 (corner 0) and the left side's 2 -> 0 (corner 19).
+  CHECK(adj.corner_mate[0] == (19u << 1));
+  // Turning one face inside out makes its four edges same-direction pairs, nothing else.
+  Mesh flipped = m;
+  std::reverse(flipped.corner_vertex.begin() + 4, flipped.corner_vertex.begin() + 8);  // (6, 7, 5, 4)
+  const EdgeAdjacency f = edge_adjacency(flipped);
+  CHECK(f.num_edges == 12);
+  int same = 0;
+  for (std::uint32_t c = 0; c < 24; ++c) same += int(f.corner_mate[c] & 1u);
+  CHECK(same == 8);  // 4 edges, counted from both sides
+}
+
+TEST_CASE("cube of twelve triangles: 18 edges (12 sides and 6 diagonals), V - E + F = 2", "[core][adjacency][truth]") {
+  const Mesh q = cube_quads();
+  Mesh m;
+  m.positions = q.positions;
+  for (std::size_t f = 0; f < 6; ++f) {
+    const std::uint32_t* v = q.corner_vertex.data() + 4 * f;
+    m.add_face({v[0], v[1], v[2]});
+    m.add_face({v[0], v[2], v[3]});
+  }
+  const EdgeAdjacency adj = edge_adjacency(m);
+  CHECK(adj.num_edges == 18);
+  CHECK(adj.num_odd_edges() == 0);
+  CHECK(long(m.num_vertices()) - long(adj.num_edges) + long(m.num_faces()) == 2);
+  // The bottom's diagonal {0, 3}: triangle 0 = (0, 2, 3) runs 3 -> 0 at corner 2, triangle 1 =
+  // (0, 3, 1) runs 0 -> 3 at corner 3.
+  CHECK(adj.corner_mate[2] == (3u << 1));
+}
+
+TEST_CASE("Moebius strip of three quads: 9 edges, 6 on the boundary, one same-direction rung", "[core][adjacency][truth]") {
+  const Mesh m = moebius_three_quads();
+  const EdgeAdjacency adj = edge_adjacency(m);
+  CHECK(counts(adj) == Counts{9, 6, 0});
+  CHECK(long(m.num_vertices()) - long(adj.num_edges) + long(m.num_faces()) == 0);
+  // The boundary in (lo, hi) order: t0-t1 (0,2), b2-t0 (0,5), b0-b1 (1,3), t2-b0 (1,4), t1-t2 (2,4), b1-b2 (3,5).
+  CHECK(odd_edges(m, adj) == std::vector<Odd>{{0, 2, 1}, {0, 5, 1}, {1, 3, 1}, {1, 4, 1}, {2, 4, 1}, {3, 5, 1}});
+  // Rung {t0, b0} = {0, 1}: corner 0 (Q0, 0 -> 1) and corner 10 (Q2, 0 -> 1), the same way.
+  CHECK(adj.corner_mate[0] == ((10u << 1) | 1u));
+  CHECK(adj.corner_mate[10] == ((0u << 1) | 1u));
+  // Rung {2, 3}: corner 4 (Q1, 2 -> 3) and corner 2 (Q0, 3 -> 2); rung {4, 5}: corners 8 and 6.
+  CHECK(adj.corner_mate[4] == (2u << 1));
+  CHECK(adj.corner_mate[8] == (6u << 1));
+  int same = 0;
+  for (std::uint32_t c = 0; c < m.num_corners(); ++c)
+    if (adj.corner_mate[c] != kU) same += int(adj.corner_mate[c] & 1u);
+  CHECK(same == 2);  // one edge, seen from both sides
+}
+
+TEST_CASE("Moebius strip of 2n triangles: 4n edges, 2n on the boundary, an odd number of same-direction edges", "[core][adjacency][truth]") {
+  for (int n : {3, 8, 33}) {
+    const Mesh m = mobius_strip(n);  // n rungs, n diagonals inside; 2n rail edges on the boundary
+    const EdgeAdjacency adj = edge_adjacency(m);
+    CHECK(counts(adj) == Counts{std::size_t(4 * n), std::size_t(2 * n), 0});
+    std::size_t same = 0;
+    for (std::uint32_t c = 0; c < m.num_corners(); ++c)
+      if (adj.corner_mate[c] != kU && (adj.corner_mate[c] >> 1) > c) same += adj.corner_mate[c] & 1u;
+    CHECK(same % 2 == 1);  // the faces form one ring through 2n interior edges: its parity is odd
+  }
+}
+
+TEST_CASE("non-manifold fans: four faces on one edge are one edge of valence 4, not two pairs", "[core][adjacency][truth]") {
+  // A book of four pages on the spine {0, 1}: triangles (0, 1, a) for a = 2..5.
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  for (int a = 0; a < 4; ++a) m.add_vertex({0.5, std::cos(a * 1.5), std::sin(a * 1.5)});
+  for (std::uint32_t a = 2; a < 6; ++a) m.add_face({0, 1, a});
+  const EdgeAdjacency adj = edge_adjacency(m);
+  CHECK(counts(adj) == Counts{9, 8, 1});  // the spine (valence 4) and two boundary edges per page
+  const std::vector<Odd> odd = odd_edges(m, adj);
+  REQUIRE(odd.size() == 9);
+  CHECK(odd[0] == Odd{0, 1, 4});
+  // The spine's four sides, one per page, in corner order.
+  CHECK(std::vector<std::uint32_t>(adj.odd_edge_corner.begin(), adj.odd_edge_corner.begin() + 4) ==
+        std::vector<std::uint32_t>{0, 3, 6, 9});
+  for (std::uint32_t a : adj.corner_mate) CHECK(a == kU);
+
+  // A bow-tie: two fans meeting only at vertex 0. Six boundary edges; the vertex is no matter of
+  // edges (info/edge_topology counts it as a non-manifold vertex).
+  const EdgeAdjacency b = edge_adjacency(bow_tie());
+  CHECK(counts(b) == Counts{6, 6, 0});
+}
+
+TEST_CASE("repeated indices: a self side is no edge; one face may pair with itself; repair's rule leaves it out", "[core][adjacency][truth]") {
+  // Face (0, 1, 2, 1) goes out to 2 and back: sides 0 -> 1, 1 -> 2, 2 -> 1, 1 -> 0.
+  Mesh m;
+  for (int i = 0; i < 3; ++i) m.add_vertex({double(i), 0, 0});
+  m.add_face({0, 1, 2, 1});
+  EdgeAdjacency adj = edge_adjacency(m);
+  CHECK(adj.num_edges == 2);  // {0, 1} and {1, 2}, each run both ways by the one face
+  CHECK(adj.num_odd_edges() == 0);
+  CHECK(adj.corner_mate[0] == (3u << 1));
+  CHECK(adj.corner_mate[1] == (2u << 1));
+  CHECK(face_is_unwound(m, 0));
+  EdgeAdjacencyOptions unwound;
+  unwound.skip_unwound_faces = true;
+  adj = edge_adjacency(m, unwound);
+  CHECK(adj.num_edges == 0);
+  for (std::uint32_t a : adj.corner_mate) CHECK(a == kU);
+
+  // Face (3, 3, 3): every side is a self side. Face (3, 4): two corners, the sides 3 -> 4, 4 -> 3.
+  Mesh d;
+  for (int i = 0; i < 5; ++i) d.add_vertex({double(i), 0, 0});
+  d.add_face({3, 3, 3});
+  d.add_face({3, 4});
+  adj = edge_adjacency(d);
+  CHECK(adj.num_edges == 1);
+  CHECK(adj.corner_mate[0] == kU);
+  CHECK(adj.corner_mate[3] == (4u << 1));
+  CHECK(face_is_unwound(d, 0));
+  CHECK(face_is_unwound(d, 1));
+  CHECK(edge_adjacency(d, unwound).num_edges == 0);
+}
+
+TEST_CASE("an isolated vertex is on no edge; a mesh without faces has none", "[core][adjacency][truth]") {
+  Mesh m;
+  for (int i = 0; i < 4; ++i) m.add_vertex({double(i & 1), double(i >> 1), 0});
+  m.add_face({0, 2, 3});  // vertex 1 is referenced by no face
+  const EdgeAdjacency adj = edge_adjacency(m);
+  CHECK(adj.num_edges == 3);
+  CHECK(adj.boundary_edges == 3);
+  CHECK(odd_edges(m, adj) == std::vector<Odd>{{0, 2, 1}, {0, 3, 1}, {2, 3, 1}});
+
+  Mesh points;
+  for (int i = 0; i < 3; ++i) points.add_vertex({double(i), 0, 0});
+  const EdgeAdjacency none = edge_adjacency(points);
+  CHECK(none.num_edges == 0);
+  CHECK(none.corner_mate.empty());
+  CHECK(none.odd_edge_start == std::vector<std::uint32_t>{0});
 }

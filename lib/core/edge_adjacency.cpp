@@ -1,18 +1,16 @@
 // edge_adjacency.cpp: half-edges paired by a counting sort on their lower vertex (see the header).
-#include <shadetool/core/engine/parallel.h>
-#include <shadetool/topology/edge_adjacency.h>
+#include <shadetool/core/edge_adjacency.h>
 
 #include <algorithm>
 #include <type_traits>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include <tbb/parallel_for.h>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/repeated_index.h>
 #include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/engine/edge_buckets.h>
+#include <shadetool/core/engine/parallel.h>
 #include <shadetool/core/engine/usable_threads.h>
 
 namespace shadetool {
@@ -21,67 +19,13 @@ namespace {
 
 constexpr std::size_t kParallelFaces = engine::kSerialBelow;
 
-// Whether a face of n corners has fewer than 3 corners or repeats a vertex index.
+// Whether a face of n corners has fewer than 3 corners or repeats a vertex index (the rule of
+// core/repeated_index.h; triangles, the bulk, inline).
 bool unwound(const std::uint32_t* v, std::uint32_t n) {
   if (n < 3) return true;
   if (n == 3) return v[0] == v[1] || v[1] == v[2] || v[0] == v[2];
-  if (n <= 16) {
-    for (std::uint32_t i = 0; i < n; ++i)
-      for (std::uint32_t j = i + 1; j < n; ++j)
-        if (v[i] == v[j]) return true;
-    return false;
-  }
-  std::vector<std::uint32_t> s(v, v + n);
-  std::sort(s.begin(), s.end());
-  return std::adjacent_find(s.begin(), s.end()) != s.end();
-}
-
-// Sorts slot keys (higher vertex << 32 | corner << 1 | direction) ascending.
-void sort_bucket(std::uint64_t* s, std::uint32_t n) {
-  if (n > 32) {
-    std::sort(s, s + n);  // a high-degree vertex (a fan's hub)
-    return;
-  }
-  for (std::uint32_t i = 1; i < n; ++i) {  // buckets hold ~half a vertex degree: insertion sort
-    const std::uint64_t x = s[i];
-    std::uint32_t j = i;
-    for (; j > 0 && s[j - 1] > x; --j) s[j] = s[j - 1];
-    s[j] = x;
-  }
-}
-
-// Pairs a bucket of n <= 8 half-edges (higher vertices hv, readable 8 past the start; corners
-// with direction bits cd) when each higher vertex occurs exactly twice: writes both mates of every
-// pair and returns true. Returns false, writing nothing, when some edge has valence other than 2.
-bool match_small_bucket(const std::uint32_t* hv, const std::uint32_t* cd, std::uint32_t n, std::uint32_t* mate) {
-  if (n % 2 != 0) return false;
-  std::uint32_t partner[8];
-  const unsigned valid = (1u << n) - 1u;
-#if defined(__SSE2__)
-  const __m128i h0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(hv));
-  const __m128i h1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(hv + 4));
-#endif
-  unsigned bad = 0;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    unsigned m;
-#if defined(__SSE2__)
-    const __m128i x = _mm_set1_epi32(int(hv[i]));
-    m = unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(h0, x)))) |
-        (unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(h1, x)))) << 4);
-#else
-    m = 0;
-    for (std::uint32_t j = 0; j < 8; ++j) m |= unsigned(hv[j] == hv[i]) << j;
-#endif
-    m &= valid & ~(1u << i);
-    bad |= unsigned(m == 0 || (m & (m - 1)) != 0);  // no other, or two or more others
-    partner[i] = std::uint32_t(__builtin_ctz(m | 0x100u));
-  }
-  if (bad) return false;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const std::uint32_t x = cd[i], y = cd[partner[i]];
-    mate[x >> 1] = (y & ~1u) | ((x ^ y ^ 1u) & 1u);
-  }
-  return true;
+  std::vector<std::uint32_t> scratch;  // allocates only beyond 16 corners
+  return has_repeated_index(v, n, scratch);
 }
 
 }  // namespace
@@ -110,7 +54,6 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
   auto takes_part = [&](std::size_t f, std::uint32_t b, std::uint32_t e) {
     if (!skip.empty() && skip[f]) return false;
     if (!options.skip_unwound_faces) return true;
-    if (e - b == 3) return cv[b] != cv[b + 1] && cv[b + 1] != cv[b + 2] && cv[b] != cv[b + 2];  // inline for triangles
     return !unwound(cv + b, e - b);
   };
 
@@ -229,7 +172,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
     o.keys.resize(n);
     std::uint64_t* s = o.keys.data();
     for (std::uint32_t i = 0; i < n; ++i) s[i] = (std::uint64_t(his[b + i]) << 32) | cds[b + i];
-    sort_bucket(s, n);
+    engine::sort_bucket(s, n);
     for (std::uint32_t i = 0; i < n;) {
       const std::uint32_t hi = std::uint32_t(s[i] >> 32);
       std::uint32_t j = i + 1;
@@ -256,7 +199,7 @@ EdgeAdjacency edge_adjacency(const Mesh& mesh, const EdgeAdjacencyOptions& optio
     for (std::size_t v = V * blk / blocks; v < V * (blk + 1) / blocks; ++v) {
       const std::uint32_t b = v == 0 ? 0 : end[v - 1], n = end[v] - b;
       if (n == 0) continue;
-      if (n <= 8 && match_small_bucket(his + b, cds + b, n, mate)) {
+      if (n <= 8 && engine::match_small_bucket(his + b, cds + b, n, mate)) {
         o.pairs += n / 2;
         continue;
       }

@@ -1,18 +1,28 @@
-// edge_adjacency.h: the undirected edges of a polygon mesh as pairs of half-edges, in flat arrays.
-// Shared by `info` (edge counts, non-manifold vertices) and `repair` (winding propagation).
+// edge_adjacency.h: the edges of a face list and the half-edges (face sides) around each edge, in
+// flat arrays. The one home of these rules; used by `info` (info/edge_topology.h: edge counts,
+// inconsistent edges, non-manifold vertices) and `repair` (winding, duplicate faces, seams,
+// component boundaries).
 //
-// A half-edge is named by its corner: corner c of face f runs from corner_vertex[c] (its tail) to
-// the vertex of the next corner of f, cyclically (its head). Half-edges whose two ends are the same
-// vertex (a repeated index, e.g. face (a, a, b)) are not edges. An undirected edge {lo, hi} is the
-// set of half-edges between lo and hi in either direction; its valence is their number:
-// 1 a boundary edge, 2 a manifold edge, 3 or more a non-manifold edge.
+// The rules:
+// - A half-edge is named by its corner: corner c of face f runs from corner_vertex[c] (its tail) to
+//   the vertex of the next corner of f, cyclically (its head).
+// - An edge is an unordered vertex pair {lo, hi}, lo < hi: the set of half-edges between lo and hi
+//   in either direction. A half-edge whose two ends are the same vertex (a repeated index next to
+//   itself, e.g. side 0 of face (a, a, b)) is not an edge and belongs to none.
+// - An edge's valence is its number of half-edges: 1 a boundary edge, 2 a manifold edge, 3 or more
+//   a non-manifold edge. (Two half-edges of one face, e.g. the a -> b and b -> a of face (a, a, b),
+//   make a manifold edge too; callers that propagate across faces check for that.)
+// - Faces with a repeated vertex index (core/repeated_index.h) or fewer than 3 corners: by default
+//   their sides count like any other (info counts every side: a user's file, as it is); with
+//   skip_unwound_faces they contribute nothing (repair: such a face has no winding of its own).
+//   face_is_unwound is the test.
+// - A vertex no face refers to (an isolated vertex) is on no edge.
 //
 // Inputs:  mesh     faces (face_start #F+1, corner_vertex #C), polygons of any size; positions unused
 //          options  skip     #F flags or empty: faces whose flag is nonzero contribute no half-edges
-//                   skip_unwound_faces  also leave out faces with fewer than 3 corners or a
-//                            repeated vertex index: they have no winding of their own, and their
-//                            (a, b), (b, a) pair would make a false non-manifold edge out of a
-//                            manifold one (repair sets this; info counts every half-edge)
+//                   skip_unwound_faces  also leave out the faces face_is_unwound names (the
+//                            rules above): their (a, b), (b, a) sides would make a false
+//                            non-manifold edge out of a manifold one (repair sets this; info does not)
 // Outputs: EdgeAdjacency with
 //   corner_mate   #C   for a half-edge on an edge of valence exactly 2: (m << 1) | s, m the corner
 //                      of the other half-edge, s = 1 when both run the edge the same way (a -> b
@@ -38,6 +48,7 @@
 // half-edges, then part 1's, each in corner order: the same buckets for any number of parts), and
 // the matching on blocks of vertices; the output depends on nothing but the faces' vertex
 // indices. Large arrays are allocated unzeroed in huge pages (core/bulk_reserve.h BulkVector).
+// The bucket matching (SSE2 compares, insertion sort) is in core/engine/edge_buckets.h.
 // Measured (bench/repair, 1M triangles): 20 ms -> 13 ms on 2 threads, 18 ms on 1.
 // Throws Error if a face refers to a vertex index >= #V, or with 2^31 - 1 corners or more
 // (a corner and a flag share 32 bits).
