@@ -403,10 +403,23 @@ void write_gltf_output(const IoOptions& io, OutputKind kind, const shadetool::Gl
   }
   shadetool::GltfWriteResult wr;
   const bool text = io.ascii || shadetool::gltf_name_is_text(output) || (output == "-" && !io.format.empty() && shadetool::gltf_name_is_text("." + io.format));
-  const std::string bytes = shadetool::write_gltf(doc, !text, name, wr);
+  // A .gltf file gets its buffer beside it (NAME.bin); to stdout it stays a data URI.
+  const std::string bin_path = text && output != "-" ? shadetool::gltf_buffer_path(output) : std::string();
+  const std::string bytes =
+      shadetool::write_gltf(doc, !text, name, wr, bin_path.empty() ? std::string() : fs::path(bin_path).filename().string());
   if (wr.split_vertices > 0) result.stats["split_vertices"] = wr.split_vertices;
   for (auto& n : wr.notes) result.notes.push_back(n);
   std::vector<shadetool::io::FileToWrite> files{{output, bytes}};
+  if (!wr.buffer.empty()) {
+    const FileIdentity bin(bin_path);
+    std::vector<std::string> read = shadetool::gltf_external_files(doc);
+    read.insert(read.end(), io.inputs.begin(), io.inputs.end());
+    for (const std::string& f : read)
+      if (f != "-" && FileIdentity(f).same_file(bin))
+        throw shadetool::Error(shadetool::located(name, 0, "its buffer file " + bin_path + " would overwrite " + f +
+                                                               ", which the input reads: nothing written (name the output differently)"));
+    files.push_back({bin_path, std::move(wr.buffer)});
+  }
   for (const auto& [path, content] : result.other_files) files.push_back({path, content});
   shadetool::io::write_files_atomically(files);
 }

@@ -50,6 +50,27 @@ for in in rich.gltf rich.glb embedded.gltf; do
     check "normals $in -> $out valid" valid "$tmp/$out"
   done
 done
+# A .gltf output's buffer is a file beside it (NAME.bin, percent-encoded in the URI), never one the
+# input reads; to stdout it is a data URI (checked below).
+"$bin" normals "$fx/rich.gltf" -o "$tmp/sep dir.gltf" --recompute -q
+check "gltf -> gltf: the buffer in 'sep dir.bin' beside it" "$py" -c '
+import json,sys
+j=json.load(open(sys.argv[1])); b=j["buffers"]
+assert len(b)==1 and b[0]["uri"]=="sep%20dir.bin", b
+import os; assert os.path.getsize(sys.argv[2])==b[0]["byteLength"]' "$tmp/sep dir.gltf" "$tmp/sep dir.bin"
+check "gltf -> gltf with a .bin: valid" valid "$tmp/sep dir.gltf"
+check "gltf -> gltf with a .bin: everything else kept" gcheck keep "$fx/rich.gltf" "$tmp/sep dir.gltf" --changed NORMAL
+mkdir -p "$tmp/own"
+cp "$fx/rich.gltf" "$tmp/own/a.gltf"
+for f in $("$py" -c 'import json,sys; j=json.load(open(sys.argv[1])); print(" ".join(x["uri"] for x in j.get("buffers",[])+j.get("images",[]) if "uri" in x and not x["uri"].startswith("data:")))' "$fx/rich.gltf"); do cp "$fx/$f" "$tmp/own/"; done
+binname=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["buffers"][0]["uri"])' "$fx/rich.gltf")
+sum_before=$(md5sum < "$tmp/own/$binname")
+"$bin" normals "$tmp/own/a.gltf" -o "$tmp/own/${binname%.bin}.gltf" -q 2> "$tmp/own.err"
+rc=$?
+check "gltf output whose .bin is the input's buffer: refused (exit 1)" test $rc -eq 1
+check "... one line naming both" grep -q "would overwrite .*$binname, which the input reads" "$tmp/own.err"
+check "... the input's buffer untouched, no output" test "$(md5sum < "$tmp/own/$binname")" = "$sum_before" -a ! -e "$tmp/own/${binname%.bin}.gltf"
+
 "$bin" normals "$fx/rich.gltf" -o "$tmp/n.glb" --recompute -q
 check "gltf -> glb: no data URI inside the GLB, image moved into a bufferView" "$py" -c '
 import json,struct,sys

@@ -87,11 +87,23 @@ GltfDocument gltf_document_from_mesh(const Mesh& mesh);
 struct GltfWriteResult {
   std::vector<std::string> notes;  // what could not be carried (one line each)
   std::size_t split_vertices = 0;  // vertices added to carry corner/face normals or face colours
+  std::string buffer;              // .gltf with a buffer_uri: the buffer's bytes, for the caller to write there
 };
 
-// Serialises the document: GLB when `binary`, else .gltf JSON with the buffer as a data URI.
-// `name` is the output's name for messages.
-std::string write_gltf(const GltfDocument& document, bool binary, const std::string& name, GltfWriteResult& result);
+// Serialises the document: GLB when `binary`, else .gltf JSON whose one buffer is a data URI, or,
+// when `buffer_uri` is given (a relative file name, percent-encoded here: RFC 3986 as glTF 2.0,
+// 2.8 asks), a reference to that file, its bytes left in result.buffer (the caller writes them
+// beside the .gltf, as Blender's "glTF Separate" and gltf-transform do). `name` is the output's
+// name for messages.
+std::string write_gltf(const GltfDocument& document, bool binary, const std::string& name, GltfWriteResult& result,
+                       const std::string& buffer_uri = "");
+
+// buffer_uri for a .gltf written to `path`: the file name with its extension replaced by .bin.
+std::string gltf_buffer_path(const std::string& path);
+
+// The files the document was read with besides itself (external buffers and images), as paths
+// relative to the working directory: a writer must not overwrite them.
+std::vector<std::string> gltf_external_files(const GltfDocument& document);
 
 // True when `name` ends in .gltf (any case): JSON output; anything else is written as GLB.
 bool gltf_name_is_text(const std::string& name);

@@ -1,6 +1,7 @@
 // gltf_read.cpp: .gltf / .glb -> GltfDocument (see gltf_document.h).
 #include <shadetool/io/gltf_document.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -294,6 +295,34 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
     }
   doc.source = std::move(source);
   return doc;
+}
+
+std::vector<std::string> gltf_external_files(const GltfDocument& document) {
+  std::vector<std::string> out;
+  if (!document.source) return out;
+  const json& j = document.source->json;
+  const fs::path base = fs::path(document.source->name).parent_path();
+  for (const char* key : {"buffers", "images"}) {
+    if (!j.contains(key) || !j[key].is_array()) continue;
+    for (const json& item : j[key]) {
+      if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
+      const std::string uri = item["uri"].get<std::string>();
+      if (uri.rfind("data:", 0) == 0) continue;
+      std::string decoded;  // %XX (RFC 3986) decoded, as readers resolve it
+      for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+          decoded += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+          i += 2;
+        } else {
+          decoded += uri[i];
+        }
+      }
+      out.push_back((base / uri).string());
+      if (decoded != uri) out.push_back((base / decoded).string());
+    }
+  }
+  return out;
 }
 
 bool gltf_name_is_text(const std::string& name) {

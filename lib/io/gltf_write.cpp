@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cctype>
 #include <cstring>
 #include <limits>
 #include <unordered_map>
@@ -469,7 +470,31 @@ GltfDocument gltf_document_from_mesh(const Mesh& mesh) {
   return doc;
 }
 
-std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& name, GltfWriteResult& result) {
+namespace {
+
+// A file name as a URI reference (RFC 3986): every byte outside the unreserved set
+// (ALPHA DIGIT - . _ ~) as %XX; '/' kept for a relative path.
+std::string uri_escape(const std::string& s) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : s) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') out += char(c);
+    else out += {'%', hex[c >> 4], hex[c & 15]};
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string gltf_buffer_path(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  const std::string stem = dot != std::string::npos && (slash == std::string::npos || dot > slash) ? path.substr(0, dot) : path;
+  return stem + ".bin";
+}
+
+std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& name, GltfWriteResult& result,
+                       const std::string& buffer_uri) {
   const GltfSource* src = doc.source.get();
   const tinygltf::Model* model = src ? &src->model : nullptr;
   json j = src ? src->json : fresh_document();
@@ -528,7 +553,13 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
     if (j["accessors"].empty()) j.erase("accessors");
   } else {
     json buffer = {{"byteLength", out.bytes.size()}};
-    if (!binary) buffer["uri"] = "data:application/octet-stream;base64," + base64(out.bytes);
+    if (!binary && !buffer_uri.empty()) {
+      buffer["uri"] = uri_escape(buffer_uri);
+      result.buffer = std::move(out.bytes);
+      out.bytes.clear();
+    } else if (!binary) {
+      buffer["uri"] = "data:application/octet-stream;base64," + base64(out.bytes);
+    }
     j["buffers"] = json::array({buffer});
   }
 

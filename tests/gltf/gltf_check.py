@@ -10,6 +10,7 @@ and checks what a shadetool output must keep from its input.
   gltf_check.py dump FILE MESH PRIM ATTR
       prints the decoded attribute as JSON (per vertex), for shell tests.
 """
+import urllib.parse
 import base64
 import json
 import math
@@ -40,7 +41,7 @@ def load(path):
         elif uri.startswith("data:"):
             buffers.append(base64.b64decode(uri.split(",", 1)[1]))
         else:
-            buffers.append(open(os.path.join(os.path.dirname(path), uri), "rb").read())
+            buffers.append(open(os.path.join(os.path.dirname(path), urllib.parse.unquote(uri)), "rb").read())
     return doc, buffers
 
 
@@ -99,7 +100,7 @@ def image_bytes(doc, buffers, path, k):
     uri = im["uri"]
     if uri.startswith("data:"):
         return base64.b64decode(uri.split(",", 1)[1])
-    return open(os.path.join(os.path.dirname(path), uri), "rb").read()
+    return open(os.path.join(os.path.dirname(path), urllib.parse.unquote(uri)), "rb").read()
 
 
 def strip_refs(mesh):
