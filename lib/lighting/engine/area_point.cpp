@@ -1,6 +1,7 @@
 // engine/area_point.cpp: see area_point.h.
 #include <shadetool/lighting/engine/area_point.h>
 
+#include <shadetool/lighting/engine/lambert_lanes.h>
 #include <shadetool/lighting/engine/metric.h>
 #include <shadetool/lighting/environment_map.h>
 
@@ -46,7 +47,7 @@ void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, d
 }
 
 void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
-                    double visibility, double visibility_ground) {
+                    double visibility, double visibility_ground, const AreaTerms* precomputed) {
   const bool with_specular = light.has_specular && point.has_lobe && point.lobe.kind != LobeKind::None;
   if (point.n == Vec3d{0, 0, 0}) {  // zero normal: the ambient term only
     if (light.has_ambient) color += light.products.ambient;
@@ -57,7 +58,8 @@ void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& poi
   switch (light.type) {
     case LightType::Area: {
       const AreaTerms t =
-          light.shape == AreaShape::Polygon
+          precomputed ? *precomputed
+          : light.shape == AreaShape::Polygon
               ? polygon_light_terms(light.vertices.data(), int(light.vertices.size()), light.emit_normal,
                                     light.two_sided, point.p, point.n, lobe)
               : sphere_light_terms(light.center, light.radius, point.p, point.n, lobe);
@@ -98,6 +100,40 @@ void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& poi
     case LightType::Point:
     case LightType::Spot:
       return;  // not area lights: engine/shade_point.h's own branches
+  }
+}
+
+bool batched_polygon_light(const SpaceLight& light, ShadingModel model, bool specular) {
+  // add_area_light's with_specular: light.has_specular, a lobe (specular scenes) of a kind other
+  // than None (not Lambert).
+  const bool with_specular = light.has_specular && specular && model != ShadingModel::Lambert;
+  return light.type == LightType::Area && light.shape == AreaShape::Polygon && !with_specular;
+}
+
+void polygon_terms_batch(const SpaceLight& light, const WorldPoint* points, int count, AreaTerms* terms,
+                         std::size_t stride) {
+  PointLanes lanes;
+  for (int k = 0; k < kPointLanes; ++k) {
+    const WorldPoint& w = points[k < count ? k : 0];  // spare lanes: the first point again (not read)
+    lanes.px[k] = w.p.x, lanes.py[k] = w.p.y, lanes.pz[k] = w.p.z;
+    lanes.nx[k] = w.n.x, lanes.ny[k] = w.n.y, lanes.nz[k] = w.n.z;
+  }
+  PolygonLaneTerms lane_terms;
+  const int n_vertices = int(light.vertices.size());
+  polygon_diffuse_lanes(light.vertices.data(), n_vertices, light.emit_normal, light.two_sided, lanes, lane_terms);
+  static const SpecularLobe no_lobe;  // kind None: P only
+  for (int k = 0; k < count; ++k) {
+    AreaTerms& t = terms[k * stride];
+    t = AreaTerms{};
+    if (points[k].n == Vec3d{0, 0, 0}) continue;  // ambient only (add_area_light)
+    if (lane_terms.scalar[k]) {
+      t = polygon_light_terms(light.vertices.data(), n_vertices, light.emit_normal, light.two_sided, points[k].p,
+                              points[k].n, no_lobe);
+      continue;
+    }
+    t.P = lane_terms.P[k];
+    t.below_horizon = lane_terms.below_horizon[k];
+    t.inside = lane_terms.inside[k];
   }
 }
 

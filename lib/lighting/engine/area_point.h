@@ -36,8 +36,23 @@ void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, d
 
 // Adds one area or sky light's terms to color; counts skips. visibility (shadows; 1 without):
 // the light's visible fraction; visibility_ground the sky's ground's (sky lights only).
+// precomputed (a polygon light with batched_polygon_light true): its terms from
+// polygon_terms_batch, used instead of calling polygon_light_terms.
 void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
-                    double visibility = 1.0, double visibility_ground = 1.0);
+                    double visibility = 1.0, double visibility_ground = 1.0, const AreaTerms* precomputed = nullptr);
+
+// Whether the per-point loop may compute this light's terms for a block of points at once: a
+// polygon light whose S is not needed (a scene without specular, a light without a specular
+// colour, or the Lambert model), so that P and the counters' flags are all there is.
+bool batched_polygon_light(const SpaceLight& light, ShadingModel model, bool specular);
+
+// The terms polygon_light_terms gives (without a lobe) for a batched light at count <=
+// lighting_engine::kPointLanes world points, bit for bit: the points in the lanes of vectors
+// (engine/lambert_lanes.h), the few lanes it leaves by polygon_light_terms itself. Writes
+// terms[i * stride], i < count; points with a zero normal get default terms (add_area_light adds
+// their ambient term only and does not read them).
+void polygon_terms_batch(const SpaceLight& light, const WorldPoint* points, int count, AreaTerms* terms,
+                         std::size_t stride);
 
 }  // namespace lighting_engine
 }  // namespace shadetool
