@@ -15,8 +15,10 @@ namespace lighting_engine {
 // the same bits as the baseline and as area_light.cpp's scalar formula). CMakeLists.txt.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 #define SHADETOOL_LANE_CLONES __attribute__((target_clones("avx2", "default")))
+#define SHADETOOL_POINT_LANE_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define SHADETOOL_LANE_CLONES
+#define SHADETOOL_POINT_LANE_CLONES
 #endif
 
 namespace {
@@ -69,7 +71,7 @@ double lambert_polygon_integral_lanes(const SphericalPolygon& P, const Vec3d& n)
 // polygon_light_terms' and clip_to_hemisphere's, operation for operation, and where they return
 // early the lane's values are selected away instead (they are computed, never added). Flags and
 // counters are 64-bit integers, the width of a double's lane.
-SHADETOOL_LANE_CLONES
+SHADETOOL_POINT_LANE_CLONES
 void polygon_diffuse_lanes(const Vec3d* v, int count, const Vec3d& e, bool two_sided, const PointLanes& pt,
                            PolygonLaneTerms& out) {
   using I64 = std::int64_t;
