@@ -22,7 +22,11 @@ Vec3d unit(const Vec3d& v) { return metric_normalize(IdentityMetric{}, v).unit; 
 void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess, const Vec3d& p,
                  const Vec3d& n, bool zero_normal, WorldPoint& w, double world_unit_scale) {
   w.p = frame.space_is_world ? p : transform_point(frame.world_from_space, p);
-  if (zero_normal) return;
+  w.has_lobe = false;
+  if (zero_normal) {
+    w.n = {0, 0, 0};
+    return;
+  }
   if (world_unit_scale > 0 && frame.space_is_world)
     w.n = n * world_unit_scale;  // = unit(n), bit for bit (area_point.h)
   else

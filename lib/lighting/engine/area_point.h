@@ -25,8 +25,8 @@ struct WorldPoint {
 };
 
 // p, n in the frame's space S (n any length, already flipped for two-sided); zero_normal when the
-// loop found n zero or non-finite. Fills a default-constructed `out` (written in place: a
-// returned WorldPoint was zero-filled twice per point, a third of this function's time).
+// loop found n zero or non-finite. Fills `out` in place, every field it reads (p, n, has_lobe), so a
+// WorldPoint may be reused from point to point (a returned one was zero-filled twice per point).
 // world_unit_scale > 0: S is world and n * world_unit_scale is already the unit normal with the
 // bits unit(n) would give (the loop's 1 / sqrt(n.n) in the identity metric, n.n in
 // [2^-1000, 2^1000]): used as it is, not normalised again (a square root and a division on the
