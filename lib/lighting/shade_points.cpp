@@ -85,8 +85,9 @@ ShadeCounters shade_range_batched(const Metric& g, const ShadingFrame& frame, co
         n = transform_normal(frame.normal_to_space, Normal3d(n));
       }
       prepared[k] = lighting_engine::prepare_point(g, frame, eq, p[k], n, count);
-      lighting_engine::make_world_point<Metric>(frame, eq, p[k], prepared[k], world[k]);
     }
+    // A loop of its own: the points' square roots and divisions above overlap in the pipeline.
+    for (int k = 0; k < m; ++k) lighting_engine::make_world_point<Metric>(frame, eq, p[k], prepared[k], world[k]);
     for (std::size_t j : batch_lights) lighting_engine::polygon_terms_batch(frame.lights[j], world, m, &terms[j], n_lights);
     for (int k = 0; k < m; ++k) {
       const std::size_t i = first + k;

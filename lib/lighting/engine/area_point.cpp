@@ -51,7 +51,7 @@ void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, d
 }
 
 void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
-                    double visibility, double visibility_ground, const AreaTerms* precomputed) {
+                    double visibility, double visibility_ground) {
   const bool with_specular = light.has_specular && point.has_lobe && point.lobe.kind != LobeKind::None;
   if (point.n == Vec3d{0, 0, 0}) {  // zero normal: the ambient term only
     if (light.has_ambient) color += light.products.ambient;
@@ -62,14 +62,11 @@ void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& poi
   switch (light.type) {
     case LightType::Area: {
       const AreaTerms t =
-          precomputed ? *precomputed
-          : light.shape == AreaShape::Polygon
+          light.shape == AreaShape::Polygon
               ? polygon_light_terms(light.vertices.data(), int(light.vertices.size()), light.emit_normal,
                                     light.two_sided, point.p, point.n, lobe)
               : sphere_light_terms(light.center, light.radius, point.p, point.n, lobe);
-      count.below_horizon += t.below_horizon;
-      count.inside_light += t.inside;
-      add_light_term(color, light.products, 1.0, t.P, t.S, light.has_ambient, with_specular, visibility);
+      add_area_terms(color, light, point, t, with_specular, count, visibility);
       return;
     }
     case LightType::Sky: {

@@ -36,17 +36,28 @@ void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, d
 
 // Adds one area or sky light's terms to color; counts skips. visibility (shadows; 1 without):
 // the light's visible fraction; visibility_ground the sky's ground's (sky lights only).
-// precomputed (a polygon light with batched_polygon_light true): its terms from
-// polygon_terms_batch, used instead of calling polygon_light_terms.
 void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
-                    double visibility = 1.0, double visibility_ground = 1.0, const AreaTerms* precomputed = nullptr);
+                    double visibility = 1.0, double visibility_ground = 1.0);
+
+// A polygon or sphere light's terms t at the point: its counters, and ka*a + kd*L*P (+ ks*L*S
+// with_specular). A zero normal: the ambient term only (t is not read).
+inline void add_area_terms(Vec3d& color, const SpaceLight& light, const WorldPoint& point, const AreaTerms& t,
+                              bool with_specular, ShadeCounters& count, double visibility) {
+  if (point.n == Vec3d{0, 0, 0}) {
+    if (light.has_ambient) color += light.products.ambient;
+    return;
+  }
+  count.below_horizon += t.below_horizon;
+  count.inside_light += t.inside;
+  add_light_term(color, light.products, 1.0, t.P, t.S, light.has_ambient, with_specular, visibility);
+}
 
 // Whether the per-point loop may compute this light's terms for a block of points at once: a
 // polygon light whose S is not needed (a scene without specular, a light without a specular
 // colour, or the Lambert model), so that P and the counters' flags are all there is.
 bool batched_polygon_light(const SpaceLight& light, ShadingModel model, bool specular);
 
-// The terms polygon_light_terms gives (without a lobe) for a batched light at count <=
+// The terms polygon_light_terms gives (without a lobe) for a batched light (added by add_area_terms) at count <=
 // lighting_engine::kPointLanes world points, bit for bit: the points in the lanes of vectors
 // (engine/lambert_lanes.h), the few lanes it leaves by polygon_light_terms itself. Writes
 // terms[i * stride], i < count; points with a zero normal get default terms (add_area_light adds

@@ -190,7 +190,7 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_prepared_point(const Metric& g, const Shadin
           world = &local_world;
         }
         if (batch && batch->batched[j])
-          add_area_light(color, light, *world, count, vis, vis_ground, &batch->terms[j]);
+          add_area_terms(color, light, *world, batch->terms[j], false, count, vis);
         else
           add_area_light(color, light, *world, count, vis, vis_ground);
         continue;
