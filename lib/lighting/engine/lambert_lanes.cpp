@@ -93,13 +93,16 @@ void polygon_diffuse_lanes(const Vec3d* v, int count, const Vec3d& e, bool two_s
     inside[k] = !lit[k] && side == 0;
     big[k] = 0;
   }
-  for (int i = 0; i < count; ++i)
+  for (int i = 0; i < count; ++i) {
+    const double vx = v[i].x, vy = v[i].y, vz = v[i].z;
+#pragma GCC unroll 1  // unrolled first, the lanes were not put in a vector
     for (int k = 0; k < W; ++k) {
-      const double qx = std::fabs(v[i].x - px[k]), qy = std::fabs(v[i].y - py[k]), qz = std::fabs(v[i].z - pz[k]);
+      const double qx = std::fabs(vx - px[k]), qy = std::fabs(vy - py[k]), qz = std::fabs(vz - pz[k]);
       const double m = qx > qy ? qx : qy;
       const double mz = qz > m ? qz : m;
       big[k] = mz > big[k] ? mz : big[k];
     }
+  }
   // The power of two 2^-e, big in [2^e, 2^(e+1)), from the exponent field E = e + 1023 of big:
   // 2^-e has the field 2046 - E. Only E in [2, 2045] (e in (-1022, 1023), as polygon_light_terms'
   // fast path); the rest (and big zero or not finite) goes to the scalar function.
