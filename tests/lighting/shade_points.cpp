@@ -34,8 +34,8 @@ TEST_CASE("points and normals must both be #P by 3", "[lighting][shade_points]")
 TEST_CASE("polygon lights computed for blocks of points in vector lanes give the per-point path's bits and counters",
           "[lighting][shade_points][area]") {
   // shade_points batches polygon lights whose specular term is not needed (engine/lambert_lanes.h:
-  // 8 points per call); lighting/shade_point.h's shade_point evaluates one point with the scalar
-  // polygon_light_terms. Points on a torus under a one-sided rect, beside a two-sided pentagon, a
+  // blocks of kPointLanes points); lighting/shade_point.h's shade_point evaluates one point with
+  // the scalar polygon_light_terms. Points on a torus under a one-sided rect, beside a two-sided pentagon, a
   // sphere and a point light: behind, below the horizon, crossing it and wholly above; zero normals;
   // 2501 points (the last block is partial).
   AnalyticMesh t = torus(61, 41);

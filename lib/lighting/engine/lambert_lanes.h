@@ -25,8 +25,10 @@ namespace lighting_engine {
 // leaves them) in the upper hemisphere of the unit normal n. Output: P (steradians, no 1/pi).
 double lambert_polygon_integral_lanes(const SphericalPolygon& poly, const Vec3d& n);
 
-// Points per call of polygon_diffuse_lanes (one AVX-512 vector of doubles, two AVX2 vectors).
-constexpr int kPointLanes = 8;
+// Points per call of polygon_diffuse_lanes: two AVX-512 vectors of doubles (four AVX2 ones), so
+// that two independent chains (sqrt -> division -> polynomial -> division) are in flight per
+// edge; 8 and 32 measured slower (bench/lighting/results.md).
+constexpr int kPointLanes = 16;
 
 // kPointLanes points in world space, as structure of arrays: p, and n unit (a zero n is allowed;
 // its lane's result is meaningless and the caller does not read it).
