@@ -108,7 +108,9 @@ bool batched_polygon_light(const SpaceLight& light, ShadingModel model, bool spe
   // add_area_light's with_specular: light.has_specular, a lobe (specular scenes) of a kind other
   // than None (not Lambert).
   const bool with_specular = light.has_specular && specular && model != ShadingModel::Lambert;
-  return light.type == LightType::Area && light.shape == AreaShape::Polygon && !with_specular;
+  const std::size_t count = light.vertices.size();  // read_scene: [3, kMaxAreaVertices]; else as before
+  return light.type == LightType::Area && light.shape == AreaShape::Polygon && !with_specular && count >= 3 &&
+         count <= std::size_t(kMaxAreaVertices);
 }
 
 void polygon_terms_batch(const SpaceLight& light, const WorldPoint* points, int count, AreaTerms* terms,
