@@ -114,9 +114,9 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_prepared_point(const Metric& g, const Shadin
                                                    const double* visibility = nullptr,
                                                    const PointBatch* batch = nullptr) {
   Vec3d color = eq.base;
-  const Vec3d& n = pp.n;
+  const Vec3d n = pp.n;  // copies, not references: values the compiler keeps in registers
   const double n_scale = pp.n_scale;
-  const Vec3d& V_lowered = pp.V_lowered;
+  const Vec3d V_lowered = pp.V_lowered;
   const double v_unit = pp.v_unit, n_dot_v = pp.n_dot_v;
 
   WorldPoint local_world;  // area and sky lights: p, n and the lobe in world space, made at the first one
