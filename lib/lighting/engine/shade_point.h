@@ -12,6 +12,11 @@
 // Every switch over LightType here is exhaustive (no default): a new kind fails to compile
 // (-Wswitch) until it has its own branch. Ambient lights never reach this loop (plan_lighting
 // folds them into the constant base); area and sky lights go to engine/area_point.h.
+//
+// Two steps per point: prepare_point (the normal's scale, V, the two-sided flip) and
+// shade_prepared_point (the lights); shade_point_in_space is both. shade_points.cpp's batched
+// loop runs them apart, so that polygon lights' terms are computed in between for a block of
+// points at once (PointBatch; engine/lambert_lanes.h).
 #pragma once
 
 #include <cmath>
