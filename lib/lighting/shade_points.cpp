@@ -88,7 +88,8 @@ ShadeCounters shade_range_batched(const Metric& g, const ShadingFrame& frame, co
     }
     // A loop of its own: the points' square roots and divisions above overlap in the pipeline.
     for (int k = 0; k < m; ++k) lighting_engine::make_world_point<Metric>(frame, eq, p[k], prepared[k], world[k]);
-    for (std::size_t j : batch_lights) lighting_engine::polygon_terms_batch(frame.lights[j], world, m, &terms[j], n_lights);
+    for (std::size_t j : batch_lights)
+      lighting_engine::polygon_terms_batch(frame.lights[j], world, m, &terms[j], n_lights);
     for (int k = 0; k < m; ++k) {
       const std::size_t i = first + k;
       const lighting_engine::PointBatch batch{&world[k], batched.get(), &terms[k * n_lights]};
@@ -117,7 +118,8 @@ ShadeCounters shade_all(const Metric& g, const ShadingFrame& frame, const Equati
                         const double* points, const double* normals, const double* visibility, double* out,
                         std::size_t n, bool parallel) {
   bool batch = false;  // any polygon light whose terms the lanes compute for blocks of points
-  for (const SpaceLight& light : frame.lights) batch = batch || lighting_engine::batched_polygon_light(light, eq.model, eq.specular);
+  for (const SpaceLight& light : frame.lights)
+    batch = batch || lighting_engine::batched_polygon_light(light, eq.model, eq.specular);
   if (!parallel || n < 4096)
     return shade_range_any<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, 0, n,
                                                   batch);

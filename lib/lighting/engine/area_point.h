@@ -42,7 +42,7 @@ void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& poi
 // A polygon or sphere light's terms t at the point: its counters, and ka*a + kd*L*P (+ ks*L*S
 // with_specular). A zero normal: the ambient term only (t is not read).
 inline void add_area_terms(Vec3d& color, const SpaceLight& light, const WorldPoint& point, const AreaTerms& t,
-                              bool with_specular, ShadeCounters& count, double visibility) {
+                           bool with_specular, ShadeCounters& count, double visibility) {
   if (point.n == Vec3d{0, 0, 0}) {
     if (light.has_ambient) color += light.products.ambient;
     return;
@@ -57,11 +57,11 @@ inline void add_area_terms(Vec3d& color, const SpaceLight& light, const WorldPoi
 // colour, or the Lambert model), so that P and the counters' flags are all there is.
 bool batched_polygon_light(const SpaceLight& light, ShadingModel model, bool specular);
 
-// The terms polygon_light_terms gives (without a lobe) for a batched light (added by add_area_terms) at count <=
-// lighting_engine::kPointLanes world points, bit for bit: the points in the lanes of vectors
-// (engine/lambert_lanes.h), the few lanes it leaves by polygon_light_terms itself. Writes
-// terms[i * stride], i < count; points with a zero normal get default terms (add_area_light adds
-// their ambient term only and does not read them).
+// The terms polygon_light_terms gives (without a lobe) for a batched light at count <= kPointLanes
+// world points, bit for bit: the points in the lanes of vectors (engine/lambert_lanes.h), the few
+// lanes it leaves by polygon_light_terms itself. Writes terms[i * stride], i < count, for
+// add_area_terms; points with a zero normal get default terms (add_area_terms adds their ambient
+// term only and does not read them).
 void polygon_terms_batch(const SpaceLight& light, const WorldPoint* points, int count, AreaTerms* terms,
                          std::size_t stride);
 
