@@ -1,12 +1,10 @@
 // shade_points.cpp: see shade_points.h.
 #include <shadetool/lighting/shade_points.h>
 
-#include <shadetool/lighting/engine/lambert_lanes.h>
+#include <shadetool/lighting/engine/shade_batched.h>
 #include <shadetool/lighting/engine/shade_point.h>
 
-#include <memory>
 #include <stdexcept>
-#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -52,64 +50,13 @@ ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const Equa
   return count;
 }
 
-// The same with polygon lights batched (engine/area_point.h's batched_polygon_light): per block of
-// kPointLanes points, each point prepared and brought to world space, then each batched light's
-// terms for the whole block in vector lanes (engine/lambert_lanes.h), then each point's equation,
-// which adds them. Other lights, and everything else, as shade_range.
-template <bool kEarlyTests, bool kShadows, class Metric>
-ShadeCounters shade_range_batched(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
-                                  const double* points, const double* normals, const double* visibility, double* out,
-                                  std::size_t begin, std::size_t end) {
-  using lighting_engine::kPointLanes;
-  const std::size_t n_lights = frame.lights.size();
-  const std::size_t row = 2 * n_lights;
-  std::unique_ptr<bool[]> batched(new bool[n_lights]);
-  std::vector<std::size_t> batch_lights;
-  for (std::size_t j = 0; j < n_lights; ++j) {
-    batched[j] = lighting_engine::batched_polygon_light(frame.lights[j], eq.model, eq.specular);
-    if (batched[j]) batch_lights.push_back(j);
-  }
-  std::vector<AreaTerms> terms(kPointLanes * n_lights);  // point k, light j: terms[k * n_lights + j]
-  Vec3d p[kPointLanes];
-  lighting_engine::PreparedPoint prepared[kPointLanes];
-  lighting_engine::WorldPoint world[kPointLanes];
-  ShadeCounters count;
-  for (std::size_t first = begin; first < end; first += kPointLanes) {
-    const int m = int(end - first < std::size_t(kPointLanes) ? end - first : kPointLanes);
-    for (int k = 0; k < m; ++k) {
-      const std::size_t i = first + k;
-      p[k] = {points[3 * i], points[3 * i + 1], points[3 * i + 2]};
-      Vec3d n{normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
-      if (frame.transform) {
-        if (map_points) p[k] = transform_point(frame.space_from_object, p[k]);
-        n = transform_normal(frame.normal_to_space, Normal3d(n));
-      }
-      prepared[k] = lighting_engine::prepare_point(g, frame, eq, p[k], n, count);
-    }
-    // A loop of its own: the points' square roots and divisions above overlap in the pipeline.
-    for (int k = 0; k < m; ++k) lighting_engine::make_world_point<Metric>(frame, eq, p[k], prepared[k], world[k]);
-    for (std::size_t j : batch_lights)
-      lighting_engine::polygon_terms_batch(frame.lights[j], world, m, &terms[j], n_lights);
-    for (int k = 0; k < m; ++k) {
-      const std::size_t i = first + k;
-      const lighting_engine::PointBatch batch{&world[k], batched.get(), &terms[k * n_lights]};
-      const Vec3d c = lighting_engine::shade_prepared_point<kEarlyTests, kShadows>(
-          g, frame, eq, p[k], prepared[k], count, kShadows ? visibility + row * i : nullptr, &batch);
-      out[3 * i] = c.x;
-      out[3 * i + 1] = c.y;
-      out[3 * i + 2] = c.z;
-    }
-  }
-  return count;
-}
-
 template <bool kEarlyTests, bool kShadows, class Metric>
 ShadeCounters shade_range_any(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
                               const double* points, const double* normals, const double* visibility, double* out,
                               std::size_t begin, std::size_t end, bool batch) {
   if (batch)
-    return shade_range_batched<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, begin,
-                                                      end);
+    return lighting_engine::shade_range_batched<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals,
+                                                                       visibility, out, begin, end);
   return shade_range<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, begin, end);
 }
 

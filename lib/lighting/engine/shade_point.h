@@ -13,10 +13,9 @@
 // (-Wswitch) until it has its own branch. Ambient lights never reach this loop (plan_lighting
 // folds them into the constant base); area and sky lights go to engine/area_point.h.
 //
-// Two steps per point: prepare_point (the normal's scale, V, the two-sided flip) and
-// shade_prepared_point (the lights); shade_point_in_space is both. shade_points.cpp's batched
-// loop runs them apart, so that polygon lights' terms are computed in between for a block of
-// points at once (PointBatch; engine/lambert_lanes.h).
+// engine/shade_batched.h calls the equation in two halves (kPrepareOnly, then with a PointBatch)
+// so that polygon lights' terms are computed in between for a block of points at once
+// (engine/lambert_lanes.h); the plain loop's instance has neither and is the code it always was.
 #pragma once
 
 #include <cmath>
@@ -47,85 +46,93 @@ struct EquationSetup {
 #define SHADETOOL_ALWAYS_INLINE inline
 #endif
 
-// What the light loop reads of a point besides p: its normal (flipped for two-sided lighting),
-// the normal's scale and the view vector, all in the frame's space S.
+// What the equation's first steps make of a point (the normal's scale, V, the two-sided flip): kept
+// by the batched loop (engine/shade_batched.h) between its two calls of shade_point_in_space.
 struct PreparedPoint {
-  Vec3d n{0, 0, 0};          // zero for a zero or non-finite normal
-  double n2 = 0;             // |n|^2_{G^-1} as given
-  double n_scale = 0;        // 1 / |n|_{G^-1}; 0 leaves only the ambient terms
-  Vec3d V_lowered{0, 0, 0};  // G V, V unit toward the eye (zero at the eye or without plan.view)
-  double v_unit = 0;         // |V|^2: 1, or 0 at the eye
-  double n_dot_v = 0;
+  Vec3d n{0, 0, 0};  // zero for a zero or non-finite normal, flipped for two-sided lighting
+  double n2 = 0, n_scale = 0;
+  Vec3d V_lowered{0, 0, 0};
+  double v_unit = 0, n_dot_v = 0;
 };
 
-// p (in S) and n (in S, any length): counts the point (and a zero normal).
-template <class Metric>
-SHADETOOL_ALWAYS_INLINE PreparedPoint prepare_point(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq,
-                                                    const Vec3d& p, const Vec3d& n, ShadeCounters& count) {
-  ++count.points;
-  PreparedPoint r;
-  r.n = n;
-  r.n2 = g.conorm2(n);
-  if (r.n2 > 0 && std::isfinite(r.n2)) {
-    r.n_scale = 1.0 / std::sqrt(r.n2);
-  } else {
-    r.n = {0, 0, 0};
-    ++count.zero_normals;
-  }
-  if (eq.view) {
-    const UnitAndLength eye_dir = metric_normalize(g, frame.eye - p);
-    if (eye_dir.length > 0) {
-      r.V_lowered = g.lower(eye_dir.unit);
-      r.v_unit = 1;
-      r.n_dot_v = dot(r.n, eye_dir.unit) * r.n_scale;
-    }
-    if (eq.two_sided && r.n_dot_v < 0) {
-      r.n = -r.n;
-      r.n_dot_v = -r.n_dot_v;
-    }
-  }
-  return r;
-}
-
-// The point in world space for area and sky lights (engine/area_point.h's world_point).
-template <class Metric>
-SHADETOOL_ALWAYS_INLINE void make_world_point(const ShadingFrame& frame, const EquationSetup& eq, const Vec3d& p,
-                                              const PreparedPoint& pp, WorldPoint& world) {
-  // In world space with the identity metric, n * n_scale is unit(n) bit for bit (the same
-  // 1 / sqrt(n.n) as engine/metric.h's rule inside [2^-1000, 2^1000]): not redone.
-  const bool world_unit = std::is_same<Metric, IdentityMetric>::value && frame.space_is_world && pp.n2 >= 0x1p-1000 &&
-                          pp.n2 <= 0x1p1000;
-  world_point(frame, eq.model, eq.specular, eq.shininess, p, pp.n, pp.n_scale == 0, world,
-              world_unit ? pp.n_scale : 0.0);
-}
-
-// A batch of points made by the per-point loop (shade_points.cpp) for some polygon lights: the
-// point's world point, made already, and for each light j with batched[j] its terms[j].
+// A batch of points made by engine/shade_batched.h for some polygon lights: the point prepared
+// and in world space, and for each light j with batched[j] its terms[j].
 struct PointBatch {
+  const PreparedPoint* prepared = nullptr;
   const WorldPoint* world = nullptr;
   const bool* batched = nullptr;
   const AreaTerms* terms = nullptr;
 };
 
-// The colour at p (in the frame's space) prepared by prepare_point.
+// The point in world space for area and sky lights (engine/area_point.h's world_point), from the
+// normal n as the loop below leaves it (zero, or flipped for two-sided lighting), n2 = |n|^2_G^-1
+// before that and n_scale = 1 / |n|.
+template <class Metric>
+SHADETOOL_ALWAYS_INLINE void make_world_point(const ShadingFrame& frame, const EquationSetup& eq, const Vec3d& p,
+                                              const Vec3d& n, double n2, double n_scale, WorldPoint& world) {
+  // In world space with the identity metric, n * n_scale is unit(n) bit for bit (the same
+  // 1 / sqrt(n.n) as engine/metric.h's rule inside [2^-1000, 2^1000]): not redone.
+  const bool world_unit =
+      std::is_same<Metric, IdentityMetric>::value && frame.space_is_world && n2 >= 0x1p-1000 && n2 <= 0x1p1000;
+  world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0, world, world_unit ? n_scale : 0.0);
+}
+
+// The colour at p (in the frame's space) with normal n (in the frame's space, any length).
 // Always inlined into the per-point loop (see bench/lighting/results.md for why).
 // kShadows: visibility points at this point's row of ShadeOptions::visibility (2 values per
 // frame light: the light's visible fraction, and for a sky its ground's); without shadows it is
 // unused and every light's visibility is the constant 1 (the same code and bits as before).
-// batch (optional): polygon lights' terms computed for a block of points at once.
-template <bool kEarlyTests, bool kShadows, class Metric>
-SHADETOOL_ALWAYS_INLINE Vec3d shade_prepared_point(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq,
-                                                   const Vec3d& p, const PreparedPoint& pp, ShadeCounters& count,
-                                                   const double* visibility = nullptr,
-                                                   const PointBatch* batch = nullptr) {
+// The batched loop (engine/shade_batched.h) calls it twice per point: kPrepareOnly, the first steps
+// only (counted here), into *prepared_out and *world_out; then with batch, the lights only, the
+// first steps taken from batch->prepared. Without either, the code is the plain loop's.
+template <bool kEarlyTests, bool kShadows, class Metric, bool kPrepareOnly = false>
+SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame,
+                                                   const EquationSetup& eq, const Vec3d& p, Vec3d n,
+                                                   ShadeCounters& count, const double* visibility = nullptr,
+                                                   const PointBatch* batch = nullptr,
+                                                   PreparedPoint* prepared_out = nullptr,
+                                                   WorldPoint* world_out = nullptr) {
   Vec3d color = eq.base;
-  const Vec3d n = pp.n;  // copies, not references: values the compiler keeps in registers
-  const double n_scale = pp.n_scale;
-  const Vec3d V_lowered = pp.V_lowered;
-  const double v_unit = pp.v_unit, n_dot_v = pp.n_dot_v;
+  double n2 = 0;
+  double n_scale = 0;  // 1 / |n|_{G^-1}; 0 leaves only the ambient terms
+  Vec3d V_lowered{0, 0, 0};
+  double v_unit = 0;  // |V|^2: 1, or 0 at the eye
+  double n_dot_v = 0;
+  if (batch) {
+    const PreparedPoint& pp = *batch->prepared;
+    n = pp.n, n2 = pp.n2, n_scale = pp.n_scale;
+    V_lowered = pp.V_lowered, v_unit = pp.v_unit, n_dot_v = pp.n_dot_v;
+  } else {
+    ++count.points;
+    n2 = g.conorm2(n);
+    if (n2 > 0 && std::isfinite(n2)) {
+      n_scale = 1.0 / std::sqrt(n2);
+    } else {
+      n = {0, 0, 0};
+      ++count.zero_normals;
+    }
+    if (eq.view) {
+      const UnitAndLength eye_dir = metric_normalize(g, frame.eye - p);
+      if (eye_dir.length > 0) {
+        const Vec3d V = eye_dir.unit;
+        V_lowered = g.lower(V);
+        v_unit = 1;
+        n_dot_v = dot(n, V) * n_scale;
+      }
+      if (eq.two_sided && n_dot_v < 0) {
+        n = -n;
+        n_dot_v = -n_dot_v;
+      }
+    }
+  }
+  if (kPrepareOnly) {
+    *prepared_out = {n, n2, n_scale, V_lowered, v_unit, n_dot_v};
+    make_world_point<Metric>(frame, eq, p, n, n2, n_scale, *world_out);
+    return color;
+  }
 
-  WorldPoint local_world;  // area and sky lights: p, n and the lobe in world space, made at the first one
-  const WorldPoint* world = batch ? batch->world : nullptr;
+  WorldPoint world;  // area and sky lights: p, n and the lobe in world space, made at the first one
+  bool world_ready = false;
   for (std::size_t j = 0; j < frame.lights.size(); ++j) {
     const SpaceLight& light = frame.lights[j];
     const double vis = kShadows ? visibility[2 * j] : 1.0;
@@ -190,14 +197,18 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_prepared_point(const Metric& g, const Shadin
       case LightType::Area:  // P and S in world space (area_light.h, environment_map.h)
       case LightType::Environment:
         if (kShadows && (vis < 1 || vis_ground < 1)) ++count.shadowed;
-        if (!world) {
-          make_world_point<Metric>(frame, eq, p, pp, local_world);
-          world = &local_world;
+        if (batch) {
+          if (batch->batched[j])
+            add_area_terms(color, light, *batch->world, batch->terms[j], false, count, vis);
+          else
+            add_area_light(color, light, *batch->world, count, vis, vis_ground);
+          continue;
         }
-        if (batch && batch->batched[j])
-          add_area_terms(color, light, *world, batch->terms[j], false, count, vis);
-        else
-          add_area_light(color, light, *world, count, vis, vis_ground);
+        if (!world_ready) {
+          make_world_point<Metric>(frame, eq, p, n, n2, n_scale, world);
+          world_ready = true;
+        }
+        add_area_light(color, light, world, count, vis, vis_ground);
         continue;
     }
 
@@ -212,15 +223,6 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_prepared_point(const Metric& g, const Shadin
     add_light_term(color, light.products, att_spot, n_dot_l, spec, with_ambient, with_specular, vis);
   }
   return color;
-}
-
-// The colour at p (in the frame's space) with normal n (in the frame's space, any length).
-template <bool kEarlyTests, bool kShadows, class Metric>
-SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame,
-                                                   const EquationSetup& eq, const Vec3d& p, const Vec3d& n,
-                                                   ShadeCounters& count, const double* visibility = nullptr) {
-  const PreparedPoint pp = prepare_point(g, frame, eq, p, n, count);
-  return shade_prepared_point<kEarlyTests, kShadows>(g, frame, eq, p, pp, count, visibility);
 }
 
 }  // namespace lighting_engine
