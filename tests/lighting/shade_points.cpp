@@ -92,5 +92,27 @@ TEST_CASE("polygon lights computed for blocks of points in vector lanes give the
       CHECK(c.inside_light == want_counters.inside_light);
       CHECK(c.below_horizon > 300);  // the cases are there
       CHECK(c.zero_normals == 26);
+
+      // Shadows: each light's visible fraction per point (0, 1 or between), batched or not.
+      std::vector<double> visibility(2 * lighting.frame.lights.size() * (got.size() / 3));
+      for (std::size_t i = 0; i < visibility.size(); ++i)
+        visibility[i] = i % 5 == 0 ? 0.0 : i % 5 == 1 ? 1.0 : 0.125 * (i % 7);
+      o.visibility = &visibility;
+      ShadeReport shadowed_report;
+      const std::vector<double> got_shadowed = shade_points(s, t.mesh.positions, N, o, &shadowed_report);
+      ShadeCounters want_shadowed;
+      const std::size_t row = 2 * lighting.frame.lights.size();
+      for (std::size_t i = 0; i < got.size() / 3; ++i) {
+        const Vec3d p{t.mesh.positions[3 * i], t.mesh.positions[3 * i + 1], t.mesh.positions[3 * i + 2]};
+        const Vec3d want = shade_point_shadowed(lighting, p, Vec3d{N[3 * i], N[3 * i + 1], N[3 * i + 2]},
+                                                visibility.data() + row * i, &want_shadowed);
+        INFO("shadowed point " << i);
+        REQUIRE(got_shadowed[3 * i] == want.x);
+        REQUIRE(got_shadowed[3 * i + 1] == want.y);
+        REQUIRE(got_shadowed[3 * i + 2] == want.z);
+      }
+      CHECK(shadowed_report.counters.shadowed == want_shadowed.shadowed);
+      CHECK(shadowed_report.counters.shadowed > 0);
+      CHECK(shadowed_report.counters.below_horizon == want_shadowed.below_horizon);
     }
 }
