@@ -1,6 +1,7 @@
 // shade_points.cpp: see shade_points.h.
 #include <shadetool/lighting/shade_points.h>
 
+#include <shadetool/lighting/engine/shade_batched.h>
 #include <shadetool/lighting/engine/shade_point.h>
 
 #include <stdexcept>
@@ -50,16 +51,30 @@ ShadeCounters shade_range(const Metric& g, const ShadingFrame& frame, const Equa
 }
 
 template <bool kEarlyTests, bool kShadows, class Metric>
+ShadeCounters shade_range_any(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
+                              const double* points, const double* normals, const double* visibility, double* out,
+                              std::size_t begin, std::size_t end, bool batch) {
+  if (batch)
+    return lighting_engine::shade_range_batched<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals,
+                                                                       visibility, out, begin, end);
+  return shade_range<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, begin, end);
+}
+
+template <bool kEarlyTests, bool kShadows, class Metric>
 ShadeCounters shade_all(const Metric& g, const ShadingFrame& frame, const EquationSetup& eq, bool map_points,
                         const double* points, const double* normals, const double* visibility, double* out,
                         std::size_t n, bool parallel) {
+  bool batch = false;  // any polygon light whose terms the lanes compute for blocks of points
+  for (const SpaceLight& light : frame.lights)
+    batch = batch || lighting_engine::batched_polygon_light(light, eq.model, eq.specular);
   if (!parallel || n < 4096)
-    return shade_range<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, 0, n);
+    return shade_range_any<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, 0, n,
+                                                  batch);
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, n, 2048), ShadeCounters{},
       [&](const tbb::blocked_range<std::size_t>& r, ShadeCounters acc) {
-        acc += shade_range<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out, r.begin(),
-                                                  r.end());
+        acc += shade_range_any<kEarlyTests, kShadows>(g, frame, eq, map_points, points, normals, visibility, out,
+                                                      r.begin(), r.end(), batch);
         return acc;
       },
       [](ShadeCounters a, const ShadeCounters& b) { return a += b; });

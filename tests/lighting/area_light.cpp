@@ -413,3 +413,71 @@ TEST_CASE("Lambert's formula with edges in vector lanes gives the scalar formula
   CHECK(clipped_count == 1500);
   for (int k = 3; k <= 8; ++k) CHECK(counts_seen[k] > 0);  // one and two blocks of lanes, overlapping or not
 }
+
+TEST_CASE("polygon lights' terms with points in vector lanes are polygon_light_terms' bits, clipped or not",
+          "[lighting][area]") {
+  // engine/lambert_lanes.h's polygon_diffuse_lanes promises polygon_light_terms' P, below_horizon and
+  // inside (lobe None) bit for bit for every lane it does not hand back (`scalar`); the lanes mix
+  // points behind, below the horizon, wholly above and crossing it, two-sided lights, points on the
+  // light's plane, and scales where the power-of-two factor leaves double's normal range.
+#if defined(__x86_64__) && !defined(__FMA__)
+  const double tolerance = 0;
+#else
+  const double tolerance = 1e-15;
+#endif
+  using lighting_engine::kPointLanes;
+  std::mt19937_64 rng(1616);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int seen_behind = 0, seen_inside = 0, seen_below = 0, seen_whole = 0, seen_crossing = 0, seen_scalar = 0;
+  const SpecularLobe none;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const double scale = trial % 50 == 0 ? 1e-308 : trial % 50 == 1 ? 1e300 : trial % 50 == 2 ? 1e-200 : 1.0;
+    std::vector<Vec3d> v = random_convex_polygon(rng, Vec3d{u(rng), u(rng), u(rng)} * 2.0, 0.2 + std::fabs(u(rng)));
+    if (trial % 97 == 0) {  // the largest polygon a scene may hold
+      v.clear();
+      for (int i = 0; i < kMaxAreaVertices; ++i)
+        v.push_back(Vec3d{std::cos(kTwoPi * i / kMaxAreaVertices), 1.5, std::sin(kTwoPi * i / kMaxAreaVertices)});
+    }
+    Vec3d normal{0, 0, 0};  // before scaling (the cross products would underflow or overflow)
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) normal += cross(v[i] - v[0], v[i + 1] - v[0]);
+    normal = normalized_or(normal, Vec3d{0, 0, 0});
+    for (Vec3d& x : v) x = x * scale;
+    const bool two_sided = trial % 3 == 0;
+    lighting_engine::PointLanes lanes;
+    Vec3d p[kPointLanes], n[kPointLanes];
+    for (int k = 0; k < kPointLanes; ++k) {
+      p[k] = Vec3d{u(rng), u(rng), u(rng)} * scale;
+      n[k] = random_unit(rng);
+      if (k == 3 && trial % 5 == 0) p[k] = v[0] * 0.5 + v[1] * 0.5;  // on the light's plane (to rounding)
+      if (k == 4 && trial % 5 == 0) n[k] = normalized_or(p[k] - v[0], Vec3d{0, 0, 1});  // lights mostly crossing
+      lanes.px[k] = p[k].x, lanes.py[k] = p[k].y, lanes.pz[k] = p[k].z;
+      lanes.nx[k] = n[k].x, lanes.ny[k] = n[k].y, lanes.nz[k] = n[k].z;
+    }
+    lighting_engine::PolygonLaneTerms got;
+    lighting_engine::polygon_diffuse_lanes(v.data(), int(v.size()), normal, two_sided, lanes, got);
+    for (int k = 0; k < kPointLanes; ++k) {
+      if (got.scalar[k]) {
+        ++seen_scalar;
+        continue;
+      }
+      const AreaTerms want = polygon_light_terms(v.data(), int(v.size()), normal, two_sided, p[k], n[k], none);
+      INFO("trial " << trial << ", lane " << k << ", " << v.size() << " vertices, scale " << scale);
+      REQUIRE(std::fabs(got.P[k] - want.P) <= tolerance * std::fabs(want.P));
+      REQUIRE(got.below_horizon[k] == want.below_horizon);
+      REQUIRE(got.inside[k] == want.inside);
+      int above = 0;
+      for (const Vec3d& x : v) above += dot(n[k], x - p[k]) >= 0;
+      seen_inside += want.inside;
+      seen_behind += !want.inside && want.P == 0 && !want.below_horizon;
+      seen_below += want.below_horizon;
+      seen_whole += want.P > 0 && above == int(v.size());
+      seen_crossing += want.P > 0 && above < int(v.size());
+    }
+  }
+  CHECK(seen_behind > 1000);
+  CHECK(seen_below > 1000);
+  CHECK(seen_whole > 1000);
+  CHECK(seen_crossing > 1000);
+  CHECK(seen_inside > 0);
+  CHECK(seen_scalar > 0);  // 1e-308 and 1e300: 2^-e outside double's normal range
+}

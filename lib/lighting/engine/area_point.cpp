@@ -1,6 +1,7 @@
 // engine/area_point.cpp: see area_point.h.
 #include <shadetool/lighting/engine/area_point.h>
 
+#include <shadetool/lighting/engine/lambert_lanes.h>
 #include <shadetool/lighting/engine/metric.h>
 #include <shadetool/lighting/environment_map.h>
 
@@ -21,7 +22,11 @@ Vec3d unit(const Vec3d& v) { return metric_normalize(IdentityMetric{}, v).unit; 
 void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, double shininess, const Vec3d& p,
                  const Vec3d& n, bool zero_normal, WorldPoint& w, double world_unit_scale) {
   w.p = frame.space_is_world ? p : transform_point(frame.world_from_space, p);
-  if (zero_normal) return;
+  w.has_lobe = false;
+  if (zero_normal) {
+    w.n = {0, 0, 0};
+    return;
+  }
   if (world_unit_scale > 0 && frame.space_is_world)
     w.n = n * world_unit_scale;  // = unit(n), bit for bit (area_point.h)
   else
@@ -61,9 +66,7 @@ void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& poi
               ? polygon_light_terms(light.vertices.data(), int(light.vertices.size()), light.emit_normal,
                                     light.two_sided, point.p, point.n, lobe)
               : sphere_light_terms(light.center, light.radius, point.p, point.n, lobe);
-      count.below_horizon += t.below_horizon;
-      count.inside_light += t.inside;
-      add_light_term(color, light.products, 1.0, t.P, t.S, light.has_ambient, with_specular, visibility);
+      add_area_terms(color, light, point, t, with_specular, count, visibility);
       return;
     }
     case LightType::Sky: {
@@ -98,6 +101,42 @@ void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& poi
     case LightType::Point:
     case LightType::Spot:
       return;  // not area lights: engine/shade_point.h's own branches
+  }
+}
+
+bool batched_polygon_light(const SpaceLight& light, ShadingModel model, bool specular) {
+  // add_area_light's with_specular: light.has_specular, a lobe (specular scenes) of a kind other
+  // than None (not Lambert).
+  const bool with_specular = light.has_specular && specular && model != ShadingModel::Lambert;
+  const std::size_t count = light.vertices.size();  // read_scene: [3, kMaxAreaVertices]; else as before
+  return light.type == LightType::Area && light.shape == AreaShape::Polygon && !with_specular && count >= 3 &&
+         count <= std::size_t(kMaxAreaVertices);
+}
+
+void polygon_terms_batch(const SpaceLight& light, const WorldPoint* points, int count, AreaTerms* terms,
+                         std::size_t stride) {
+  PointLanes lanes;
+  for (int k = 0; k < kPointLanes; ++k) {
+    const WorldPoint& w = points[k < count ? k : 0];  // spare lanes: the first point again (not read)
+    lanes.px[k] = w.p.x, lanes.py[k] = w.p.y, lanes.pz[k] = w.p.z;
+    lanes.nx[k] = w.n.x, lanes.ny[k] = w.n.y, lanes.nz[k] = w.n.z;
+  }
+  PolygonLaneTerms lane_terms;
+  const int n_vertices = int(light.vertices.size());
+  polygon_diffuse_lanes(light.vertices.data(), n_vertices, light.emit_normal, light.two_sided, lanes, lane_terms);
+  static const SpecularLobe no_lobe;  // kind None: P only
+  for (int k = 0; k < count; ++k) {
+    AreaTerms& t = terms[k * stride];
+    t = AreaTerms{};
+    if (points[k].n == Vec3d{0, 0, 0}) continue;  // ambient only (add_area_light)
+    if (lane_terms.scalar[k]) {
+      t = polygon_light_terms(light.vertices.data(), n_vertices, light.emit_normal, light.two_sided, points[k].p,
+                              points[k].n, no_lobe);
+      continue;
+    }
+    t.P = lane_terms.P[k];
+    t.below_horizon = lane_terms.below_horizon[k];
+    t.inside = lane_terms.inside[k];
   }
 }
 

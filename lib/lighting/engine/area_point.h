@@ -25,8 +25,8 @@ struct WorldPoint {
 };
 
 // p, n in the frame's space S (n any length, already flipped for two-sided); zero_normal when the
-// loop found n zero or non-finite. Fills a default-constructed `out` (written in place: a
-// returned WorldPoint was zero-filled twice per point, a third of this function's time).
+// loop found n zero or non-finite. Fills `out` in place, every field it reads (p, n, has_lobe), so a
+// WorldPoint may be reused from point to point (a returned one was zero-filled twice per point).
 // world_unit_scale > 0: S is world and n * world_unit_scale is already the unit normal with the
 // bits unit(n) would give (the loop's 1 / sqrt(n.n) in the identity metric, n.n in
 // [2^-1000, 2^1000]): used as it is, not normalised again (a square root and a division on the
@@ -38,6 +38,32 @@ void world_point(const ShadingFrame& frame, ShadingModel model, bool specular, d
 // the light's visible fraction; visibility_ground the sky's ground's (sky lights only).
 void add_area_light(Vec3d& color, const SpaceLight& light, const WorldPoint& point, ShadeCounters& count,
                     double visibility = 1.0, double visibility_ground = 1.0);
+
+// A polygon or sphere light's terms t at the point: its counters, and ka*a + kd*L*P (+ ks*L*S
+// with_specular). A zero normal: the ambient term only (t is not read).
+inline void add_area_terms(Vec3d& color, const SpaceLight& light, const WorldPoint& point, const AreaTerms& t,
+                           bool with_specular, ShadeCounters& count, double visibility) {
+  if (point.n == Vec3d{0, 0, 0}) {
+    if (light.has_ambient) color += light.products.ambient;
+    return;
+  }
+  count.below_horizon += t.below_horizon;
+  count.inside_light += t.inside;
+  add_light_term(color, light.products, 1.0, t.P, t.S, light.has_ambient, with_specular, visibility);
+}
+
+// Whether the per-point loop may compute this light's terms for a block of points at once: a
+// polygon light whose S is not needed (a scene without specular, a light without a specular
+// colour, or the Lambert model), so that P and the counters' flags are all there is.
+bool batched_polygon_light(const SpaceLight& light, ShadingModel model, bool specular);
+
+// The terms polygon_light_terms gives (without a lobe) for a batched light at count <= kPointLanes
+// world points, bit for bit: the points in the lanes of vectors (engine/lambert_lanes.h), the few
+// lanes it leaves by polygon_light_terms itself. Writes terms[i * stride], i < count, for
+// add_area_terms; points with a zero normal get default terms (add_area_terms adds their ambient
+// term only and does not read them).
+void polygon_terms_batch(const SpaceLight& light, const WorldPoint* points, int count, AreaTerms* terms,
+                         std::size_t stride);
 
 }  // namespace lighting_engine
 }  // namespace shadetool

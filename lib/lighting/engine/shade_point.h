@@ -12,6 +12,10 @@
 // Every switch over LightType here is exhaustive (no default): a new kind fails to compile
 // (-Wswitch) until it has its own branch. Ambient lights never reach this loop (plan_lighting
 // folds them into the constant base); area and sky lights go to engine/area_point.h.
+//
+// engine/shade_batched.h calls the equation in two halves (kPrepareOnly, then with a PointBatch)
+// so that polygon lights' terms are computed in between for a block of points at once
+// (engine/lambert_lanes.h); the plain loop's instance has neither and is the code it always was.
 #pragma once
 
 #include <cmath>
@@ -42,42 +46,89 @@ struct EquationSetup {
 #define SHADETOOL_ALWAYS_INLINE inline
 #endif
 
+// What the equation's first steps make of a point (the normal's scale, V, the two-sided flip): kept
+// by the batched loop (engine/shade_batched.h) between its two calls of shade_point_in_space.
+struct PreparedPoint {
+  Vec3d n{0, 0, 0};  // zero for a zero or non-finite normal, flipped for two-sided lighting
+  double n2 = 0, n_scale = 0;
+  Vec3d V_lowered{0, 0, 0};
+  double v_unit = 0, n_dot_v = 0;
+};
+
+// A batch of points made by engine/shade_batched.h for some polygon lights: the point prepared
+// and in world space, and for each light j with batched[j] its terms[j].
+struct PointBatch {
+  const PreparedPoint* prepared = nullptr;
+  const WorldPoint* world = nullptr;
+  const bool* batched = nullptr;
+  const AreaTerms* terms = nullptr;
+};
+
+// The point in world space for area and sky lights (engine/area_point.h's world_point), from the
+// normal n as the loop below leaves it (zero, or flipped for two-sided lighting), n2 = |n|^2_G^-1
+// before that and n_scale = 1 / |n|.
+template <class Metric>
+SHADETOOL_ALWAYS_INLINE void make_world_point(const ShadingFrame& frame, const EquationSetup& eq, const Vec3d& p,
+                                              const Vec3d& n, double n2, double n_scale, WorldPoint& world) {
+  // In world space with the identity metric, n * n_scale is unit(n) bit for bit (the same
+  // 1 / sqrt(n.n) as engine/metric.h's rule inside [2^-1000, 2^1000]): not redone.
+  const bool world_unit =
+      std::is_same<Metric, IdentityMetric>::value && frame.space_is_world && n2 >= 0x1p-1000 && n2 <= 0x1p1000;
+  world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0, world, world_unit ? n_scale : 0.0);
+}
+
 // The colour at p (in the frame's space) with normal n (in the frame's space, any length).
 // Always inlined into the per-point loop (see bench/lighting/results.md for why).
 // kShadows: visibility points at this point's row of ShadeOptions::visibility (2 values per
 // frame light: the light's visible fraction, and for a sky its ground's); without shadows it is
 // unused and every light's visibility is the constant 1 (the same code and bits as before).
-template <bool kEarlyTests, bool kShadows, class Metric>
+// The batched loop (engine/shade_batched.h) calls it twice per point: kPrepareOnly, the first steps
+// only (counted here), into *prepared_out and *world_out; then with batch, the lights only, the
+// first steps taken from batch->prepared. Without either, the code is the plain loop's.
+template <bool kEarlyTests, bool kShadows, class Metric, bool kPrepareOnly = false>
 SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const ShadingFrame& frame,
                                                    const EquationSetup& eq, const Vec3d& p, Vec3d n,
-                                                   ShadeCounters& count, const double* visibility = nullptr) {
-  ++count.points;
+                                                   ShadeCounters& count, const double* visibility = nullptr,
+                                                   const PointBatch* batch = nullptr,
+                                                   PreparedPoint* prepared_out = nullptr,
+                                                   WorldPoint* world_out = nullptr) {
   Vec3d color = eq.base;
-
-  const double n2 = g.conorm2(n);
+  double n2 = 0;
   double n_scale = 0;  // 1 / |n|_{G^-1}; 0 leaves only the ambient terms
-  if (n2 > 0 && std::isfinite(n2)) {
-    n_scale = 1.0 / std::sqrt(n2);
-  } else {
-    n = {0, 0, 0};
-    ++count.zero_normals;
-  }
-
-  Vec3d V{0, 0, 0}, V_lowered{0, 0, 0};
+  Vec3d V_lowered{0, 0, 0};
   double v_unit = 0;  // |V|^2: 1, or 0 at the eye
   double n_dot_v = 0;
-  if (eq.view) {
-    const UnitAndLength eye_dir = metric_normalize(g, frame.eye - p);
-    if (eye_dir.length > 0) {
-      V = eye_dir.unit;
-      V_lowered = g.lower(V);
-      v_unit = 1;
-      n_dot_v = dot(n, V) * n_scale;
+  if (batch) {
+    const PreparedPoint& pp = *batch->prepared;
+    n = pp.n, n2 = pp.n2, n_scale = pp.n_scale;
+    V_lowered = pp.V_lowered, v_unit = pp.v_unit, n_dot_v = pp.n_dot_v;
+  } else {
+    ++count.points;
+    n2 = g.conorm2(n);
+    if (n2 > 0 && std::isfinite(n2)) {
+      n_scale = 1.0 / std::sqrt(n2);
+    } else {
+      n = {0, 0, 0};
+      ++count.zero_normals;
     }
-    if (eq.two_sided && n_dot_v < 0) {
-      n = -n;
-      n_dot_v = -n_dot_v;
+    if (eq.view) {
+      const UnitAndLength eye_dir = metric_normalize(g, frame.eye - p);
+      if (eye_dir.length > 0) {
+        const Vec3d V = eye_dir.unit;
+        V_lowered = g.lower(V);
+        v_unit = 1;
+        n_dot_v = dot(n, V) * n_scale;
+      }
+      if (eq.two_sided && n_dot_v < 0) {
+        n = -n;
+        n_dot_v = -n_dot_v;
+      }
     }
+  }
+  if (kPrepareOnly) {
+    *prepared_out = {n, n2, n_scale, V_lowered, v_unit, n_dot_v};
+    make_world_point<Metric>(frame, eq, p, n, n2, n_scale, *world_out);
+    return color;
   }
 
   WorldPoint world;  // area and sky lights: p, n and the lobe in world space, made at the first one
@@ -146,13 +197,15 @@ SHADETOOL_ALWAYS_INLINE Vec3d shade_point_in_space(const Metric& g, const Shadin
       case LightType::Area:  // P and S in world space (area_light.h, environment_map.h)
       case LightType::Environment:
         if (kShadows && (vis < 1 || vis_ground < 1)) ++count.shadowed;
+        if (batch) {
+          if (batch->batched[j])
+            add_area_terms(color, light, *batch->world, batch->terms[j], false, count, vis);
+          else
+            add_area_light(color, light, *batch->world, count, vis, vis_ground);
+          continue;
+        }
         if (!world_ready) {
-          // In world space with the identity metric, n * n_scale is unit(n) bit for bit (the same
-          // 1 / sqrt(n.n) as engine/metric.h's rule inside [2^-1000, 2^1000]): not redone.
-          const bool world_unit = std::is_same<Metric, IdentityMetric>::value && frame.space_is_world &&
-                                  n2 >= 0x1p-1000 && n2 <= 0x1p1000;
-          world_point(frame, eq.model, eq.specular, eq.shininess, p, n, n_scale == 0, world,
-                      world_unit ? n_scale : 0.0);
+          make_world_point<Metric>(frame, eq, p, n, n2, n_scale, world);
           world_ready = true;
         }
         add_area_light(color, light, world, count, vis, vis_ground);
