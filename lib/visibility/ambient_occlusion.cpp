@@ -11,6 +11,7 @@
 #include <shadetool/normals/vertex_normals.h>
 #include <shadetool/visibility/engine/embree_scene.h>
 #include <shadetool/visibility/engine/point_ranges.h>
+#include <shadetool/visibility/engine/vertex_normal_blocks.h>
 #include <shadetool/visibility/ray_offset.h>
 #include <shadetool/visibility/sample_sequence.h>
 
@@ -55,25 +56,30 @@ bool unit_axis(const Vec3d& raw, Vec3d& n) {
   return true;
 }
 
-// Runs count_hits over P points: point(i, p_local, n, id) fills point i's query or returns false
-// (skipped).
-template <class PointFn>
-AmbientOcclusion run(const VisibilityScene& scene, std::size_t count, std::uint32_t salt,
-                     const AmbientOcclusionOptions& options, const PointFn& point) {
-  check_options(options);
-  AmbientOcclusion out;
-  out.open_fraction.assign(count, 1.0f);
-  // Totals summed per range, then added atomically: integer sums, the same for any split (no
-  // per-point arrays: at 1M triangles they were 2.5 MB of the command's peak).
+// The estimate open = (N - hits) / N, in double, rounded once to float (exactly 1 with no hit).
+float open_fraction(std::uint32_t hits, std::uint32_t samples) {
+  return float(double(samples - hits) / double(samples));  // divisor: samples >= 1 (check_options)
+}
+
+struct Totals {
+  std::uint64_t hits = 0, skipped = 0;
+};
+
+// Runs count_hits over points [begin, end): point(i, p_local, n, id) fills point i's query or
+// returns false (skipped: nothing stored), store(i, hits) keeps a traced point's hits. Totals are
+// summed per range, then added atomically: integer sums, the same for any split.
+template <class PointFn, class StoreFn>
+Totals trace(const VisibilityScene& scene, std::size_t begin, std::size_t end, std::uint32_t salt,
+             const AmbientOcclusionOptions& options, const PointFn& point, const StoreFn& store) {
   std::uint64_t total_hits = 0, total_skipped = 0;
   const float tfar = std::isinf(options.max_distance)
                          ? std::numeric_limits<float>::infinity()
                          : float(options.max_distance * scene.scale());
   const std::uint32_t salt_seed = visibility::hash_combine(salt, options.seed);
   RTCScene rtc = scene.impl().scene;
-  visibility_engine::parallel_point_ranges(count, options.samples, [&](std::size_t begin, std::size_t end) {
+  visibility_engine::parallel_point_ranges(end - begin, options.samples, [&](std::size_t b, std::size_t e) {
     std::uint64_t range_hits = 0, range_skipped = 0;
-    for (std::size_t i = begin; i < end; ++i) {
+    for (std::size_t i = begin + b; i < begin + e; ++i) {
       Vec3f p;
       Vec3d n;
       std::uint64_t id = i;
@@ -83,15 +89,49 @@ AmbientOcclusion run(const VisibilityScene& scene, std::size_t count, std::uint3
       }
       const std::uint32_t hits = count_hits(rtc, p, n, visibility::point_seed(id, salt_seed), options.samples, tfar);
       range_hits += hits;
-      out.open_fraction[i] = float(double(options.samples - hits) / double(options.samples));  // divisor >= 1
+      store(i, hits);
     }
     __atomic_add_fetch(&total_hits, range_hits, __ATOMIC_RELAXED);
     __atomic_add_fetch(&total_skipped, range_skipped, __ATOMIC_RELAXED);
   });
-  out.hits = total_hits;
-  out.skipped = std::size_t(total_skipped);
-  out.rays = std::uint64_t(count - out.skipped) * options.samples;
+  return {total_hits, total_skipped};
+}
+
+AmbientOcclusion totals(Totals t, std::size_t count, std::uint32_t samples) {
+  AmbientOcclusion out;
+  out.hits = t.hits;
+  out.skipped = std::size_t(t.skipped);
+  out.rays = std::uint64_t(count - out.skipped) * samples;
   return out;
+}
+
+// All P points at once, each open fraction stored as it is made (float, 4 B per point).
+template <class PointFn>
+AmbientOcclusion run(const VisibilityScene& scene, std::size_t count, std::uint32_t salt,
+                     const AmbientOcclusionOptions& options, const PointFn& point) {
+  check_options(options);
+  std::vector<float> open(count, 1.0f);
+  AmbientOcclusion out = totals(trace(scene, 0, count, salt, options, point,
+                                      [&](std::size_t i, std::uint32_t hits) { open[i] = open_fraction(hits, options.samples); }),
+                                count, options.samples);
+  out.open_fraction = std::move(open);
+  return out;
+}
+
+// Row i of a #V by 3 array, widened to double.
+template <class Real>
+Vec3d row(const std::vector<Real>& a, std::size_t i) {
+  return {double(a[3 * i]), double(a[3 * i + 1]), double(a[3 * i + 2])};
+}
+
+// Vertex v's query: its BVH vertex and its unit axis; false when the axis is zero or not finite,
+// or the vertex is not finite or lies too far to be a float in the scene's frame (isolated).
+bool vertex_query(const VisibilityScene& scene, const Mesh& mesh, std::size_t v, const Vec3d& axis, Vec3f& p,
+                  Vec3d& n) {
+  const std::vector<float>& local = scene.impl().vertices;
+  if (!is_finite(mesh.position(v)) || !unit_axis(axis, n)) return false;
+  p = {local[3 * v], local[3 * v + 1], local[3 * v + 2]};  // the BVH's own vertex
+  return is_finite(Vec3f((mesh.position(v) - scene.centre()) * scene.scale()));  // else: far isolated
 }
 
 }  // namespace
@@ -105,13 +145,9 @@ AmbientOcclusion per_vertex(const VisibilityScene& scene, const Mesh& mesh, cons
   if (vertex_normals.size() != 3 * nv)
     throw Error("ambient occlusion: " + std::to_string(vertex_normals.size() / 3) + " normals for " +
                 std::to_string(nv) + " vertices");
-  const std::vector<float>& local = scene.impl().vertices;
-  if (local.size() != 3 * nv + 1) throw Error("ambient occlusion: the scene was built from another mesh");
+  if (scene.impl().vertices.size() != 3 * nv + 1) throw Error("ambient occlusion: the scene was built from another mesh");
   return run(scene, nv, kVertexSalt, options, [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
-    const Vec3d axis{double(vertex_normals[3 * v]), double(vertex_normals[3 * v + 1]), double(vertex_normals[3 * v + 2])};
-    if (!is_finite(mesh.position(v)) || !unit_axis(axis, n)) return false;
-    p = {local[3 * v], local[3 * v + 1], local[3 * v + 2]};  // the BVH's own vertex
-    return is_finite(Vec3f((mesh.position(v) - scene.centre()) * scene.scale()));  // else: far isolated
+    return vertex_query(scene, mesh, v, row(vertex_normals, v), p, n);
   });
 }
 
@@ -160,30 +196,79 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
   });
 }
 
+namespace {
+
+// Computed normals are made 2^13 = 8192 vertices at a time (engine/vertex_normal_blocks.h: about
+// 0.9 MB while a block is alive, against 12 MB for all of them at 1M triangles).
+constexpr unsigned kNormalBlockLog2 = 13;
+
+// Per vertex for mesh_occlusion: the axes are the mesh's normals, or (computed) the library's
+// normals made block by block just before their rays; each vertex's hits are kept as a Count
+// (1, 2 or 4 B, wide enough for N), and the float open fractions are made from them once the BVH
+// is freed, so the rays' peak holds neither #V normals nor #V floats. The same bits as
+// ambient_occlusion_per_vertex with the same normals (in double).
+template <class Count>
+AmbientOcclusion mesh_vertices(const Mesh& mesh, bool computed, const AmbientOcclusionOptions& options,
+                               VisibilitySceneStats& stats) {
+  check_options(options);
+  const std::size_t nv = mesh.num_vertices();
+  std::vector<Count> hits(nv, 0);  // a skipped vertex keeps 0: open fraction 1
+  const auto store = [&](std::size_t v, std::uint32_t h) { hits[v] = Count(h); };  // h <= N fits Count
+  Totals sum;
+  {
+    const VisibilityScene scene(mesh);
+    if (!computed) {
+      sum = trace(scene, 0, nv, kVertexSalt, options, [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
+        return vertex_query(scene, mesh, v, get3(mesh.vertex_normals, v), p, n);
+      }, store);
+    } else {
+      visibility_engine::VertexNormalBlocks blocks(mesh, kNormalBlockLog2);
+      VertexNormals normals;
+      for (std::size_t k = 0; k < blocks.blocks(); ++k) {
+        blocks.compute(k, normals);
+        const std::size_t first = blocks.begin(k);
+        const Totals block = trace(scene, first, blocks.end(k), kVertexSalt, options,
+                                   [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
+                                     return vertex_query(scene, mesh, v, get3(normals.normals, v - first), p, n);
+                                   }, store);
+        sum.hits += block.hits;
+        sum.skipped += block.skipped;
+      }
+    }
+    stats = scene.stats();
+  }  // the BVH and the block's normals are freed here
+  AmbientOcclusion out = totals(sum, nv, options.samples);
+  out.open_fraction.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) out.open_fraction[v] = open_fraction(hits[v], options.samples);
+  return out;
+}
+
+}  // namespace
+
 MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclusionOptions& options,
                              const std::string& source) {
   MeshOcclusion out;
-  std::vector<float> computed;
-  if (!per_face && mesh.has_vertex_normals()) {
+  if (per_face) {
+    const VisibilityScene scene(mesh);
+    out.ao = ambient_occlusion_per_face(scene, mesh, options);
+    out.scene = scene.stats();
+    return out;
+  }
+  if (mesh.has_vertex_normals()) {
     const std::size_t invalid = count_invalid_normals(mesh.vertex_normals);
     if (invalid > 0)
       throw Error(located(source, 0,
                           std::to_string(invalid) + " of " + std::to_string(mesh.num_vertices()) +
                               " vertex normals are invalid (NaN, Inf or zero length); they give the hemisphere's "
                               "axis: recompute them first (`shadetool normals --recompute`, or normals/vertex_normals.h)"));
-  } else if (!per_face) {
-    const std::vector<double> normals = vertex_normals(mesh).normals;
-    computed.assign(normals.begin(), normals.end());  // unit, rounded once to float
-    out.normals_computed = true;
   }
-  const VisibilityScene scene(mesh);
-  if (per_face)
-    out.ao = ambient_occlusion_per_face(scene, mesh, options);
-  else if (out.normals_computed)
-    out.ao = ambient_occlusion_per_vertex(scene, mesh, computed, options);
+  out.normals_computed = !mesh.has_vertex_normals();
+  if (options.samples <= 0xffu)
+    out.ao = mesh_vertices<std::uint8_t>(mesh, out.normals_computed, options, out.scene);
+  else if (options.samples <= 0xffffu)
+    out.ao = mesh_vertices<std::uint16_t>(mesh, out.normals_computed, options, out.scene);
   else
-    out.ao = ambient_occlusion_per_vertex(scene, mesh, mesh.vertex_normals, options);
-  out.scene = scene.stats();
+    out.ao = mesh_vertices<std::uint32_t>(mesh, out.normals_computed, options, out.scene);
   return out;
 }
 
