@@ -198,9 +198,10 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
 
 namespace {
 
-// Computed normals are made 2^13 = 8192 vertices at a time (engine/vertex_normal_blocks.h: about
-// 0.9 MB while a block is alive, against 12 MB for all of them at 1M triangles).
-constexpr unsigned kNormalBlockLog2 = 13;
+// Computed normals are made 2^12 = 4096 vertices at a time (engine/vertex_normal_blocks.h: about
+// 0.45 MB while a block is alive, against 12 MB in double or 6 MB in float for all of them at 1M
+// triangles).
+constexpr unsigned kNormalBlockLog2 = 12;
 
 // Per vertex for mesh_occlusion: the axes are the mesh's normals, or (computed) the library's
 // normals made block by block just before their rays; each vertex's hits are kept as a Count

@@ -238,7 +238,7 @@ TEST_CASE("mesh_occlusion: the mesh's normals, else the library's computed block
 
 TEST_CASE("mesh_occlusion over several blocks of computed normals, and with hits kept in 1, 2 or 4 bytes, "
           "gives the double overload's bits", "[visibility][ao]") {
-  const Mesh big = torus(128, 72, 1.0, 0.45).mesh;  // 9216 vertices: two blocks of 8192
+  const Mesh big = torus(128, 72, 1.0, 0.45).mesh;  // 9216 vertices: three blocks of 4096
   AmbientOcclusionOptions o;
   o.samples = 4;
   const VisibilityScene scene(big);
