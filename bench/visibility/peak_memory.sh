@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# bench/visibility/peak_memory.sh OLD_BIN NEW_BIN MESH.ply [RUNS] [SAMPLES]: peak memory of
-# `shadetool occlusion MESH -o OUT --samples SAMPLES --stats` (default 5 runs, N = 16), the two
-# binaries alternated run by run. Per run: peak RSS by /usr/bin/time (%M, what results.md's ratio
-# uses) and the peak of RssAnon (anonymous pages: heap, Embree's BVH, thread stacks; not the
-# shared code pages) sampled from /proc/PID/status every 10 ms, and the command's compute time.
-# Prints one line per run and the medians; the outputs of the two binaries are compared with cmp.
+# bench/visibility/peak_memory.sh MESH.ply RUNS SAMPLES BIN [BIN ...]: peak memory of
+# `BIN occlusion MESH -o OUT --samples SAMPLES --stats` for each binary, the binaries alternated
+# run by run (RUNS rounds). Per run: peak RSS by /usr/bin/time (%M: what results.md's ratio to the
+# mesh arrays uses), the peak of RssAnon (anonymous pages: heap, Embree's BVH, thread stacks; not
+# the shared code pages nor a mapped input file) sampled from /proc/PID/status every 10 ms, and
+# the command's compute time (--stats). Prints one line per run, then each binary's medians, and
+# whether every binary wrote the same bytes as the first.
 set -euo pipefail
-old=$1 new=$2 mesh=$3 runs=${4:-5} samples=${5:-16}
+mesh=$1 runs=$2 samples=$3
+shift 3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -16,10 +18,10 @@ measure() {  # BIN TAG RUN -> "TAG RUN peak_rss_kib peak_anon_kib compute_ms"
     2> "$tmp/stats" &
   pid=$!
   while kill -0 "$pid" 2> /dev/null; do
-    child=$(cat "/proc/$pid/task/$pid/children" 2> /dev/null | cut -d' ' -f1 || true)
+    child=$(cut -d' ' -f1 "/proc/$pid/task/$pid/children" 2> /dev/null || true)
     if [ -n "$child" ]; then
       a=$(awk '/^RssAnon:/ {print $2}' "/proc/$child/status" 2> /dev/null || true)
-      [ -n "$a" ] && [ "$a" -gt "$anon" ] && anon=$a
+      if [ -n "$a" ] && [ "$a" -gt "$anon" ]; then anon=$a; fi
     fi
     sleep 0.01
   done
@@ -28,13 +30,21 @@ measure() {  # BIN TAG RUN -> "TAG RUN peak_rss_kib peak_anon_kib compute_ms"
 }
 
 for run in $(seq 1 "$runs"); do
-  measure "$old" old "$run"
-  measure "$new" new "$run"
+  i=0
+  for bin in "$@"; do
+    i=$((i + 1))
+    measure "$bin" "bin$i" "$run"
+  done
 done | tee "$tmp/runs"
 median() { sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
-for tag in old new; do
-  echo "$tag median: peak RSS $(awk -v t=$tag '$1==t {print $3}' "$tmp/runs" | median) KiB," \
-    "peak RssAnon $(awk -v t=$tag '$1==t {print $4}' "$tmp/runs" | median) KiB," \
-    "compute $(awk -v t=$tag '$1==t {print $5}' "$tmp/runs" | median) ms"
+range() { sort -n | awk 'NR==1 {lo=$1} {hi=$1} END {print lo "-" hi}'; }
+i=0
+for bin in "$@"; do
+  i=$((i + 1))
+  col() { awk -v t="bin$i" -v c="$1" '$1==t {print $c}' "$tmp/runs"; }
+  echo "bin$i $bin: peak RSS $(col 3 | median) KiB ($(col 3 | range)), peak RssAnon $(col 4 | median) KiB" \
+    "($(col 4 | range)), compute $(col 5 | median) ms ($(col 5 | range))"
+  if [ "$i" -gt 1 ]; then
+    if cmp -s "$tmp/bin1.ply" "$tmp/bin$i.ply"; then echo "  output: the same bytes as bin1"; else echo "  output: differs from bin1"; fi
+  fi
 done
-if cmp -s "$tmp/old.ply" "$tmp/new.ply"; then echo "output: the same bytes"; else echo "output: differs"; fi
