@@ -6,10 +6,10 @@
 #include <string>
 
 #include <shadetool/core/error.h>
-#include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/invalid_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 #include <shadetool/visibility/engine/embree_scene.h>
+#include <shadetool/visibility/engine/face_normal_blocks.h>
 #include <shadetool/visibility/engine/point_ranges.h>
 #include <shadetool/visibility/engine/vertex_normal_blocks.h>
 #include <shadetool/visibility/ray_offset.h>
@@ -138,6 +138,40 @@ bool vertex_query(const VisibilityScene& scene, const Mesh& mesh, std::size_t v,
 
 namespace {
 
+// Faces are traced a block at a time, each block's normals made just before its rays
+// (engine/face_normal_blocks.h: face_normals' bits without its #F rows; 2^13 faces = 192 KB).
+constexpr std::size_t kFaceBlock = std::size_t(1) << 13;
+
+// Face f's query: the mean of its corners (scene frame) and its unit normal; false for a face
+// without area (normal (0, 0, 0)).
+bool face_query(const VisibilityScene& scene, const Mesh& mesh, std::size_t f, const Vec3d& normal, Vec3f& p,
+                Vec3d& n) {
+  if (!unit_axis(normal, n)) return false;
+  const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
+  Vec3d sum{};
+  for (std::uint32_t c = b; c < e; ++c) sum += mesh.position(mesh.corner_vertex[c]) - scene.centre();
+  p = Vec3f(sum * (scene.scale() / double(e - b)));  // divisor: a face with area has >= 3 corners
+  return true;
+}
+
+template <class StoreFn>
+Totals trace_faces(const VisibilityScene& scene, const Mesh& mesh, const AmbientOcclusionOptions& options,
+                   const StoreFn& store) {
+  Totals sum;
+  std::vector<std::uint32_t> starts;
+  for (std::size_t first = 0; first < mesh.num_faces(); first += kFaceBlock) {
+    const std::size_t last = std::min(mesh.num_faces(), first + kFaceBlock);
+    const std::vector<double> normals = visibility_engine::face_normal_block(mesh, first, last, starts);
+    const Totals block = trace(scene, first, last, kFaceSalt, options,
+                               [&](std::size_t f, Vec3f& p, Vec3d& n, std::uint64_t&) {
+                                 return face_query(scene, mesh, f, get3(normals, f - first), p, n);
+                               }, store);
+    sum.hits += block.hits;
+    sum.skipped += block.skipped;
+  }
+  return sum;
+}
+
 template <class Real>
 AmbientOcclusion per_vertex(const VisibilityScene& scene, const Mesh& mesh, const std::vector<Real>& vertex_normals,
                             const AmbientOcclusionOptions& options) {
@@ -167,15 +201,15 @@ AmbientOcclusion ambient_occlusion_per_vertex(const VisibilityScene& scene, cons
 
 AmbientOcclusion ambient_occlusion_per_face(const VisibilityScene& scene, const Mesh& mesh,
                                             const AmbientOcclusionOptions& options) {
-  const std::vector<double> normals = face_normals(mesh);
-  return run(scene, mesh.num_faces(), kFaceSalt, options, [&](std::size_t f, Vec3f& p, Vec3d& n, std::uint64_t&) {
-    if (!unit_axis(get3(normals, f), n)) return false;  // degenerate face: normal (0,0,0)
-    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-    Vec3d sum{};
-    for (std::uint32_t c = b; c < e; ++c) sum += mesh.position(mesh.corner_vertex[c]) - scene.centre();
-    p = Vec3f(sum * (scene.scale() / double(e - b)));  // divisor: a non-degenerate face has >= 3 corners
-    return true;
-  });
+  check_options(options);
+  const std::size_t nf = mesh.num_faces();
+  std::vector<float> open(nf, 1.0f);
+  AmbientOcclusion out = totals(trace_faces(scene, mesh, options, [&](std::size_t f, std::uint32_t hits) {
+                                  open[f] = open_fraction(hits, options.samples);
+                                }),
+                                nf, options.samples);
+  out.open_fraction = std::move(open);
+  return out;
 }
 
 AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const std::vector<double>& points,
@@ -203,23 +237,26 @@ namespace {
 // triangles).
 constexpr unsigned kNormalBlockLog2 = 12;
 
-// Per vertex for mesh_occlusion: the axes are the mesh's normals, or (computed) the library's
-// normals made block by block just before their rays; each vertex's hits are kept as a Count
-// (1, 2 or 4 B, wide enough for N), and the float open fractions are made from them once the BVH
-// is freed, so the rays' peak holds neither #V normals nor #V floats. The same bits as
-// ambient_occlusion_per_vertex with the same normals (in double).
+// mesh_occlusion's rays: per face (normals made a block at a time, as ambient_occlusion_per_face),
+// or per vertex about the mesh's normals or (computed) the library's, made block by block just
+// before their rays. Each point's hits are kept as a Count (1, 2 or 4 B, wide enough for N) and
+// turned into the float open fractions once the BVH is freed, so the rays' peak holds neither #V
+// normals nor #V floats. The same bits as ambient_occlusion_per_face / _per_vertex (normals in
+// double).
 template <class Count>
-AmbientOcclusion mesh_vertices(const Mesh& mesh, bool computed, const AmbientOcclusionOptions& options,
-                               VisibilitySceneStats& stats) {
+AmbientOcclusion mesh_counts(const Mesh& mesh, bool per_face, bool computed, const AmbientOcclusionOptions& options,
+                             VisibilitySceneStats& stats) {
   check_options(options);
-  const std::size_t nv = mesh.num_vertices();
-  std::vector<Count> hits(nv, 0);  // a skipped vertex keeps 0: open fraction 1
-  const auto store = [&](std::size_t v, std::uint32_t h) { hits[v] = Count(h); };  // h <= N fits Count
+  const std::size_t count = per_face ? mesh.num_faces() : mesh.num_vertices();
+  std::vector<Count> hits(count, 0);  // a skipped point keeps 0: open fraction 1
+  const auto store = [&](std::size_t i, std::uint32_t h) { hits[i] = Count(h); };  // h <= N fits Count
   Totals sum;
   {
     const VisibilityScene scene(mesh);
-    if (!computed) {
-      sum = trace(scene, 0, nv, kVertexSalt, options, [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
+    if (per_face) {
+      sum = trace_faces(scene, mesh, options, store);
+    } else if (!computed) {
+      sum = trace(scene, 0, count, kVertexSalt, options, [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
         return vertex_query(scene, mesh, v, get3(mesh.vertex_normals, v), p, n);
       }, store);
     } else {
@@ -237,10 +274,10 @@ AmbientOcclusion mesh_vertices(const Mesh& mesh, bool computed, const AmbientOcc
       }
     }
     stats = scene.stats();
-  }  // the BVH and the block's normals are freed here
-  AmbientOcclusion out = totals(sum, nv, options.samples);
-  out.open_fraction.resize(nv);
-  for (std::size_t v = 0; v < nv; ++v) out.open_fraction[v] = open_fraction(hits[v], options.samples);
+  }  // the BVH and the last block's normals are freed here
+  AmbientOcclusion out = totals(sum, count, options.samples);
+  out.open_fraction.resize(count);
+  for (std::size_t i = 0; i < count; ++i) out.open_fraction[i] = open_fraction(hits[i], options.samples);
   return out;
 }
 
@@ -249,13 +286,7 @@ AmbientOcclusion mesh_vertices(const Mesh& mesh, bool computed, const AmbientOcc
 MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclusionOptions& options,
                              const std::string& source) {
   MeshOcclusion out;
-  if (per_face) {
-    const VisibilityScene scene(mesh);
-    out.ao = ambient_occlusion_per_face(scene, mesh, options);
-    out.scene = scene.stats();
-    return out;
-  }
-  if (mesh.has_vertex_normals()) {
+  if (!per_face && mesh.has_vertex_normals()) {
     const std::size_t invalid = count_invalid_normals(mesh.vertex_normals);
     if (invalid > 0)
       throw Error(located(source, 0,
@@ -263,13 +294,13 @@ MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclu
                               " vertex normals are invalid (NaN, Inf or zero length); they give the hemisphere's "
                               "axis: recompute them first (`shadetool normals --recompute`, or normals/vertex_normals.h)"));
   }
-  out.normals_computed = !mesh.has_vertex_normals();
+  out.normals_computed = !per_face && !mesh.has_vertex_normals();
   if (options.samples <= 0xffu)
-    out.ao = mesh_vertices<std::uint8_t>(mesh, out.normals_computed, options, out.scene);
+    out.ao = mesh_counts<std::uint8_t>(mesh, per_face, out.normals_computed, options, out.scene);
   else if (options.samples <= 0xffffu)
-    out.ao = mesh_vertices<std::uint16_t>(mesh, out.normals_computed, options, out.scene);
+    out.ao = mesh_counts<std::uint16_t>(mesh, per_face, out.normals_computed, options, out.scene);
   else
-    out.ao = mesh_vertices<std::uint32_t>(mesh, out.normals_computed, options, out.scene);
+    out.ao = mesh_counts<std::uint32_t>(mesh, per_face, out.normals_computed, options, out.scene);
   return out;
 }
 

@@ -1,6 +1,7 @@
-// vertex_normal_blocks.cpp: normals made block by block are the library's normals of the whole mesh,
-// bit for bit (lib/visibility/engine/vertex_normal_blocks.h), whatever the block size, the face
-// order, polygons, isolated vertices, degenerate faces or cancelling sums.
+// normal_blocks.cpp: vertex and face normals made block by block are the library's normals of the
+// whole mesh, bit for bit (lib/visibility/engine/vertex_normal_blocks.h, face_normal_blocks.h),
+// whatever the block size, the face order, polygons, isolated vertices, degenerate faces or
+// cancelling sums.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -8,7 +9,9 @@
 #include <numeric>
 #include <random>
 
+#include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
+#include <shadetool/visibility/engine/face_normal_blocks.h>
 #include <shadetool/visibility/engine/vertex_normal_blocks.h>
 #include "support/analytic_meshes.h"
 #include "visibility_test_util.h"
@@ -35,6 +38,20 @@ void require_blocks_equal_whole(const Mesh& m, unsigned block_log2) {
   REQUIRE(std::memcmp(gathered.data(), whole.data(), 8 * whole.size()) == 0);
 }
 
+// The rows of every face block, gathered, must equal face_normals(mesh) bit for bit.
+void require_face_blocks_equal_whole(const Mesh& m, std::size_t block) {
+  const std::vector<double> whole = face_normals(m);
+  std::vector<double> gathered;
+  std::vector<std::uint32_t> starts;
+  for (std::size_t first = 0; first < m.num_faces(); first += block) {
+    const std::vector<double> rows = visibility_engine::face_normal_block(m, first, std::min(m.num_faces(), first + block), starts);
+    REQUIRE(rows.size() == 3 * (std::min(m.num_faces(), first + block) - first));
+    gathered.insert(gathered.end(), rows.begin(), rows.end());
+  }
+  REQUIRE(gathered.size() == whole.size());
+  REQUIRE(std::memcmp(gathered.data(), whole.data(), 8 * whole.size()) == 0);
+}
+
 // The same faces in a shuffled order (no locality: every block scans all faces).
 Mesh shuffled_faces(const Mesh& m, std::uint32_t seed) {
   std::vector<std::size_t> order(m.num_faces());
@@ -51,12 +68,13 @@ Mesh shuffled_faces(const Mesh& m, std::uint32_t seed) {
 
 }  // namespace
 
-TEST_CASE("Vertex normals made block by block are the whole mesh's, bit for bit", "[visibility][normals]") {
+TEST_CASE("Vertex and face normals made block by block are the whole mesh's, bit for bit", "[visibility][normals]") {
   const Mesh torus_mesh = irregular(torus(40, 24, 1.0, 0.4, 0.2, 3)).mesh;
   for (unsigned log2 : {0u, 3u, 6u, 9u, 14u}) {
     INFO("block 2^" << log2);
     require_blocks_equal_whole(torus_mesh, log2);
     require_blocks_equal_whole(shuffled_faces(torus_mesh, 5 + log2), log2);
+    require_face_blocks_equal_whole(torus_mesh, std::size_t(1) << log2);
   }
 }
 
@@ -75,13 +93,18 @@ TEST_CASE("Blocks keep polygons, isolated vertices, degenerate faces and cancell
     INFO("block 2^" << log2);
     require_blocks_equal_whole(m, log2);
     require_blocks_equal_whole(shuffled_faces(m, 11 + log2), log2);
+    require_face_blocks_equal_whole(m, std::size_t(1) << log2);
+    require_face_blocks_equal_whole(shuffled_faces(m, 11 + log2), std::size_t(1) << log2);
   }
 }
 
-TEST_CASE("Blocks of a mesh at 1e-3 and 1e8 give the whole mesh's normals", "[visibility][normals]") {
-  for (double s : {1e-3, 1e8}) {
+TEST_CASE("Blocks of a mesh at 1e-15, 1e-3, 1e8 and 1e15 give the whole mesh's normals (the outer two are "
+          "scaled into the kernels' range, per block)", "[visibility][normals]") {
+  for (double s : {1e-15, 1e-3, 1e8, 1e15}) {
+    INFO("scale " << s);
     Mesh m = torus(24, 12, 1.0, 0.4, 0.1, 9).mesh;
     for (double& x : m.positions) x = x * s + (s > 1 ? s : 0);
     require_blocks_equal_whole(m, 5);
+    require_face_blocks_equal_whole(m, 32);
   }
 }
