@@ -28,8 +28,9 @@
 //          whose normal is zero or not finite (an isolated vertex, a degenerate face): open = 1,
 //          no ray cast.
 // Per vertex: the point is the vertex itself (its float copy in the BVH, exactly). Per face: the
-// point is the mean of the face's corners and the axis the face normal (normals/face_normals.h);
-// degenerate faces are skipped.
+// point is the mean of the face's corners and the axis the face normal (normals/face_normals.h,
+// made 8192 faces at a time just before their rays: the same bits without holding 24 B per face;
+// engine/face_normal_blocks.h); degenerate faces are skipped.
 // Precision: directions in double, rounded to float for Embree; counts in integers; the fraction
 // (N - hits)/N in double, rounded once to float.
 // Errors: throws Error for samples = 0, D <= 0 or NaN, mismatched sizes, non-finite points.
@@ -84,8 +85,8 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
 // made 4096 vertices at a time just before those vertices' rays (engine/vertex_normal_blocks.h:
 // the same bits as computing them all at once), and per vertex the rays' hits are kept as 1, 2 or
 // 4-byte counts (N <= 255, <= 65535, more) and turned into the float open fractions only after the
-// BVH is freed. So the result is bit for bit ambient_occlusion_per_vertex's with the same normals
-// in double. The BVH is freed before it returns.
+// BVH is freed (per face too). So the result is bit for bit ambient_occlusion_per_vertex's with
+// the same normals in double, or ambient_occlusion_per_face's. The BVH is freed before it returns.
 struct MeshOcclusion {
   AmbientOcclusion ao;
   VisibilitySceneStats scene;    // the BVH's size; faces left out of it
