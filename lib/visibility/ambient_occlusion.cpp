@@ -134,10 +134,6 @@ bool vertex_query(const VisibilityScene& scene, const Mesh& mesh, std::size_t v,
   return is_finite(Vec3f((mesh.position(v) - scene.centre()) * scene.scale()));  // else: far isolated
 }
 
-}  // namespace
-
-namespace {
-
 // Faces are traced a block at a time, each block's normals made just before its rays
 // (engine/face_normal_blocks.h: face_normals' bits without its #F rows; 2^13 faces = 192 KB).
 constexpr std::size_t kFaceBlock = std::size_t(1) << 13;
@@ -287,6 +283,9 @@ MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclu
                              const std::string& source) {
   MeshOcclusion out;
   if (!per_face && mesh.has_vertex_normals()) {
+    if (mesh.vertex_normals.size() != 3 * mesh.num_vertices())
+      throw Error("ambient occlusion: " + std::to_string(mesh.vertex_normals.size() / 3) + " normals for " +
+                  std::to_string(mesh.num_vertices()) + " vertices");
     const std::size_t invalid = count_invalid_normals(mesh.vertex_normals);
     if (invalid > 0)
       throw Error(located(source, 0,

@@ -231,6 +231,9 @@ TEST_CASE("mesh_occlusion: the mesh's normals, else the library's computed block
   REQUIRE_FALSE(own.normals_computed);
   REQUIRE(own.ao.open_fraction == ambient_occlusion_per_vertex(scene, m, n, o).open_fraction);
 
+  Mesh short_normals = given;
+  short_normals.vertex_normals.resize(3 * (m.num_vertices() - 1));  // one row missing: refused, not read past
+  REQUIRE_THROWS_AS(mesh_occlusion(short_normals, false, o, "knot.ply"), Error);
   given.vertex_normals[3] = given.vertex_normals[4] = given.vertex_normals[5] = 0;  // vertex 1: zero length
   REQUIRE_THROWS_WITH(mesh_occlusion(given, false, o, "knot.ply"),
                       Catch::StartsWith("knot.ply: 1 of " + std::to_string(m.num_vertices()) + " vertex normals are invalid"));
