@@ -1,7 +1,7 @@
 // bench_visibility.cpp: ambient occlusion time against error on a concave mesh, and the limit set
 // by Embree itself.
 //
-//   bench_visibility MESH.ply [--points K] [--runs R] [--full-n N] [--csv FILE] [--export FILE]
+//   bench_visibility MESH.ply [--points K] [--runs R] [--full-n N] [--csv FILE] [--export FILE] [--whole-only]
 //
 // 1. Error against time: K vertices spread over the mesh (every V/K-th), open fraction for
 //    N = 4 .. 1024 through ambient_occlusion_at_points (ids = vertex ids, so the same rays as the
@@ -11,7 +11,12 @@
 //    beforehand, outside the timing), on an Embree scene built with the same flags from the same
 //    float buffers: the cost of the traversal alone. Both run on all threads with the same
 //    tbb::parallel_for grain. The hit counts must agree (same rays), else the program fails.
-// 3. The whole mesh per vertex at N = full-n, and the BVH's bytes against the mesh's arrays.
+// 3. The whole mesh per vertex at N = full-n, two ways round-robin: the steps written out (the
+//    angle-weighted normals of the whole mesh, a BVH, ambient_occlusion_per_vertex) against
+//    mesh_occlusion, the CLI's job (the same BVH and rays, but the normals made 4096 vertices at a
+//    time just before their rays and the hits kept as counts: its memory, results.md). The open
+//    fractions must be the same bits, else the program fails; the ratio is what the blocks cost.
+//    Also the BVH's bytes against the mesh's arrays. --whole-only runs this part alone.
 // Times are medians over R runs, the cases taken round-robin.
 // 4. --export FILE: what the other programs' anchors need to meet the same mesh and points
 //    (anchor_open3d.py, anchor_blender.py): little-endian, in this order: uint64 V, T, K; float32
@@ -102,19 +107,59 @@ void make_rays(const Vec3f& p_local, const Vec3d& n, std::uint64_t id, std::uint
   }
 }
 
+// Part 3: the whole mesh per vertex, the steps written out against mesh_occlusion, round-robin.
+int whole_mesh(const Mesh& mesh, std::uint32_t samples, int runs) {
+  if (mesh.has_vertex_normals()) std::printf("(the mesh's own normals: mesh_occlusion computes none)\n");
+  AmbientOcclusionOptions full;
+  full.samples = samples;
+  std::vector<double> steps_ms, job_ms;
+  AmbientOcclusion steps;
+  MeshOcclusion job;
+  for (int r = 0; r < runs; ++r) {
+    double t0 = now_ms();
+    {
+      const std::vector<double> normals = mesh.has_vertex_normals() ? mesh.vertex_normals : vertex_normals(mesh).normals;
+      const VisibilityScene scene(mesh);
+      steps = ambient_occlusion_per_vertex(scene, mesh, normals, full);
+    }
+    steps_ms.push_back(now_ms() - t0);
+    t0 = now_ms();
+    job = mesh_occlusion(mesh, false, full, "bench");
+    job_ms.push_back(now_ms() - t0);
+  }
+  if (job.ao.open_fraction != steps.open_fraction || job.ao.hits != steps.hits) {
+    std::fprintf(stderr, "bench_visibility: mesh_occlusion and the written-out steps differ\n");
+    return 1;
+  }
+  double mean = 0;
+  for (float v : steps.open_fraction) mean += v;
+  const double a = median(steps_ms), b = median(job_ms);
+  std::printf("\nwhole mesh per vertex, N = %u (normals, BVH, rays; medians of %d runs): written-out steps %.0f ms "
+              "(%.2f Mrays/s), mesh_occlusion %.0f ms: ratio %.3f; the same bits; mean open fraction %.4f\n",
+              samples, runs, a, double(steps.rays) / (a * 1000), b, b / a, mean / double(steps.open_fraction.size()));
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_visibility MESH.ply [--points K] [--runs R] [--full-n N] [--csv FILE]\n");
+    std::fprintf(stderr, "usage: bench_visibility MESH.ply [--points K] [--runs R] [--full-n N] [--csv FILE] [--export FILE] [--whole-only]\n");
     return 2;
   }
   std::size_t points = 4000;
   int runs = 5;
   std::uint32_t full_n = 64;
   std::string csv, export_path;
-  for (int i = 2; i + 1 < argc; i += 2) {
+  bool whole_only = false;
+  for (int i = 2; i < argc; i += 2) {
     const std::string a = argv[i];
+    if (a == "--whole-only") {
+      whole_only = true;
+      --i;  // a flag without a value
+      continue;
+    }
+    if (i + 1 >= argc) break;
     if (a == "--points") points = std::size_t(std::atol(argv[i + 1]));
     else if (a == "--runs") runs = std::atoi(argv[i + 1]);
     else if (a == "--full-n") full_n = std::uint32_t(std::atoi(argv[i + 1]));
@@ -131,6 +176,7 @@ int main(int argc, char** argv) {
   std::printf("mesh %s: %zu vertices, %zu triangles; mesh arrays %.1f MB\n", argv[1], mesh.num_vertices(), mesh.num_faces(), arrays / 1e6);
   std::printf("BVH: %.1f MB (Embree) + %.1f MB (float buffers) = %.2fx the mesh arrays; build %.0f ms\n\n",
               st.bvh_bytes / 1e6, st.buffer_bytes / 1e6, (st.bvh_bytes + st.buffer_bytes) / arrays, build_ms);
+  if (whole_only) return whole_mesh(mesh, full_n, runs);
 
   // The K points: every (V/K)-th vertex.
   const std::size_t stride = std::max<std::size_t>(1, mesh.num_vertices() / points);
@@ -212,14 +258,5 @@ int main(int argc, char** argv) {
     if (out) std::fprintf(out, "%u,%.6g,%.4f,%.4f,%.4f,%.4f,%.4f\n", n, rms, ms, ems, ms / ems, us_vertex, mrays);
   }
   if (out) std::fclose(out);
-  AmbientOcclusionOptions full;
-  full.samples = full_n;
-  t0 = now_ms();
-  const AmbientOcclusion all = ambient_occlusion_per_vertex(scene, mesh, normals, full);
-  const double full_ms = now_ms() - t0;
-  double mean = 0;
-  for (float v : all.open_fraction) mean += v;
-  std::printf("\nwhole mesh per vertex, N = %u: %.0f ms (%.2f Mrays/s), mean open fraction %.4f\n", full_n, full_ms,
-              double(all.rays) / (full_ms * 1000), mean / double(all.open_fraction.size()));
-  return 0;
+  return whole_mesh(mesh, full_n, runs);
 }

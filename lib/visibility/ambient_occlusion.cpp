@@ -6,11 +6,12 @@
 #include <string>
 
 #include <shadetool/core/error.h>
-#include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/invalid_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 #include <shadetool/visibility/engine/embree_scene.h>
+#include <shadetool/visibility/engine/face_normal_blocks.h>
 #include <shadetool/visibility/engine/point_ranges.h>
+#include <shadetool/visibility/engine/vertex_normal_blocks.h>
 #include <shadetool/visibility/ray_offset.h>
 #include <shadetool/visibility/sample_sequence.h>
 
@@ -55,25 +56,30 @@ bool unit_axis(const Vec3d& raw, Vec3d& n) {
   return true;
 }
 
-// Runs count_hits over P points: point(i, p_local, n, id) fills point i's query or returns false
-// (skipped).
-template <class PointFn>
-AmbientOcclusion run(const VisibilityScene& scene, std::size_t count, std::uint32_t salt,
-                     const AmbientOcclusionOptions& options, const PointFn& point) {
-  check_options(options);
-  AmbientOcclusion out;
-  out.open_fraction.assign(count, 1.0f);
-  // Totals summed per range, then added atomically: integer sums, the same for any split (no
-  // per-point arrays: at 1M triangles they were 2.5 MB of the command's peak).
+// The estimate open = (N - hits) / N, in double, rounded once to float (exactly 1 with no hit).
+float open_fraction(std::uint32_t hits, std::uint32_t samples) {
+  return float(double(samples - hits) / double(samples));  // divisor: samples >= 1 (check_options)
+}
+
+struct Totals {
+  std::uint64_t hits = 0, skipped = 0;
+};
+
+// Runs count_hits over points [begin, end): point(i, p_local, n, id) fills point i's query or
+// returns false (skipped: nothing stored), store(i, hits) keeps a traced point's hits. Totals are
+// summed per range, then added atomically: integer sums, the same for any split.
+template <class PointFn, class StoreFn>
+Totals trace(const VisibilityScene& scene, std::size_t begin, std::size_t end, std::uint32_t salt,
+             const AmbientOcclusionOptions& options, const PointFn& point, const StoreFn& store) {
   std::uint64_t total_hits = 0, total_skipped = 0;
   const float tfar = std::isinf(options.max_distance)
                          ? std::numeric_limits<float>::infinity()
                          : float(options.max_distance * scene.scale());
   const std::uint32_t salt_seed = visibility::hash_combine(salt, options.seed);
   RTCScene rtc = scene.impl().scene;
-  visibility_engine::parallel_point_ranges(count, options.samples, [&](std::size_t begin, std::size_t end) {
+  visibility_engine::parallel_point_ranges(end - begin, options.samples, [&](std::size_t b, std::size_t e) {
     std::uint64_t range_hits = 0, range_skipped = 0;
-    for (std::size_t i = begin; i < end; ++i) {
+    for (std::size_t i = begin + b; i < begin + e; ++i) {
       Vec3f p;
       Vec3d n;
       std::uint64_t id = i;
@@ -83,20 +89,84 @@ AmbientOcclusion run(const VisibilityScene& scene, std::size_t count, std::uint3
       }
       const std::uint32_t hits = count_hits(rtc, p, n, visibility::point_seed(id, salt_seed), options.samples, tfar);
       range_hits += hits;
-      out.open_fraction[i] = float(double(options.samples - hits) / double(options.samples));  // divisor >= 1
+      store(i, hits);
     }
     __atomic_add_fetch(&total_hits, range_hits, __ATOMIC_RELAXED);
     __atomic_add_fetch(&total_skipped, range_skipped, __ATOMIC_RELAXED);
   });
-  out.hits = total_hits;
-  out.skipped = std::size_t(total_skipped);
-  out.rays = std::uint64_t(count - out.skipped) * options.samples;
+  return {total_hits, total_skipped};
+}
+
+AmbientOcclusion totals(Totals t, std::size_t count, std::uint32_t samples) {
+  AmbientOcclusion out;
+  out.hits = t.hits;
+  out.skipped = std::size_t(t.skipped);
+  out.rays = std::uint64_t(count - out.skipped) * samples;
   return out;
 }
 
-}  // namespace
+// All P points at once, each open fraction stored as it is made (float, 4 B per point).
+template <class PointFn>
+AmbientOcclusion run(const VisibilityScene& scene, std::size_t count, std::uint32_t salt,
+                     const AmbientOcclusionOptions& options, const PointFn& point) {
+  check_options(options);
+  std::vector<float> open(count, 1.0f);
+  AmbientOcclusion out = totals(trace(scene, 0, count, salt, options, point,
+                                      [&](std::size_t i, std::uint32_t hits) { open[i] = open_fraction(hits, options.samples); }),
+                                count, options.samples);
+  out.open_fraction = std::move(open);
+  return out;
+}
 
-namespace {
+// Row i of a #V by 3 array, widened to double.
+template <class Real>
+Vec3d row(const std::vector<Real>& a, std::size_t i) {
+  return {double(a[3 * i]), double(a[3 * i + 1]), double(a[3 * i + 2])};
+}
+
+// Vertex v's query: its BVH vertex and its unit axis; false when the axis is zero or not finite,
+// or the vertex is not finite or lies too far to be a float in the scene's frame (isolated).
+bool vertex_query(const VisibilityScene& scene, const Mesh& mesh, std::size_t v, const Vec3d& axis, Vec3f& p,
+                  Vec3d& n) {
+  const std::vector<float>& local = scene.impl().vertices;
+  if (!is_finite(mesh.position(v)) || !unit_axis(axis, n)) return false;
+  p = {local[3 * v], local[3 * v + 1], local[3 * v + 2]};  // the BVH's own vertex
+  return is_finite(Vec3f((mesh.position(v) - scene.centre()) * scene.scale()));  // else: far isolated
+}
+
+// Faces are traced a block at a time, each block's normals made just before its rays
+// (engine/face_normal_blocks.h: face_normals' bits without its #F rows; 2^13 faces = 192 KB).
+constexpr std::size_t kFaceBlock = std::size_t(1) << 13;
+
+// Face f's query: the mean of its corners (scene frame) and its unit normal; false for a face
+// without area (normal (0, 0, 0)).
+bool face_query(const VisibilityScene& scene, const Mesh& mesh, std::size_t f, const Vec3d& normal, Vec3f& p,
+                Vec3d& n) {
+  if (!unit_axis(normal, n)) return false;
+  const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
+  Vec3d sum{};
+  for (std::uint32_t c = b; c < e; ++c) sum += mesh.position(mesh.corner_vertex[c]) - scene.centre();
+  p = Vec3f(sum * (scene.scale() / double(e - b)));  // divisor: a face with area has >= 3 corners
+  return true;
+}
+
+template <class StoreFn>
+Totals trace_faces(const VisibilityScene& scene, const Mesh& mesh, const AmbientOcclusionOptions& options,
+                   const StoreFn& store) {
+  Totals sum;
+  std::vector<std::uint32_t> starts;
+  for (std::size_t first = 0; first < mesh.num_faces(); first += kFaceBlock) {
+    const std::size_t last = std::min(mesh.num_faces(), first + kFaceBlock);
+    const std::vector<double> normals = visibility_engine::face_normal_block(mesh, first, last, starts);
+    const Totals block = trace(scene, first, last, kFaceSalt, options,
+                               [&](std::size_t f, Vec3f& p, Vec3d& n, std::uint64_t&) {
+                                 return face_query(scene, mesh, f, get3(normals, f - first), p, n);
+                               }, store);
+    sum.hits += block.hits;
+    sum.skipped += block.skipped;
+  }
+  return sum;
+}
 
 template <class Real>
 AmbientOcclusion per_vertex(const VisibilityScene& scene, const Mesh& mesh, const std::vector<Real>& vertex_normals,
@@ -105,13 +175,9 @@ AmbientOcclusion per_vertex(const VisibilityScene& scene, const Mesh& mesh, cons
   if (vertex_normals.size() != 3 * nv)
     throw Error("ambient occlusion: " + std::to_string(vertex_normals.size() / 3) + " normals for " +
                 std::to_string(nv) + " vertices");
-  const std::vector<float>& local = scene.impl().vertices;
-  if (local.size() != 3 * nv + 1) throw Error("ambient occlusion: the scene was built from another mesh");
+  if (scene.impl().vertices.size() != 3 * nv + 1) throw Error("ambient occlusion: the scene was built from another mesh");
   return run(scene, nv, kVertexSalt, options, [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
-    const Vec3d axis{double(vertex_normals[3 * v]), double(vertex_normals[3 * v + 1]), double(vertex_normals[3 * v + 2])};
-    if (!is_finite(mesh.position(v)) || !unit_axis(axis, n)) return false;
-    p = {local[3 * v], local[3 * v + 1], local[3 * v + 2]};  // the BVH's own vertex
-    return is_finite(Vec3f((mesh.position(v) - scene.centre()) * scene.scale()));  // else: far isolated
+    return vertex_query(scene, mesh, v, row(vertex_normals, v), p, n);
   });
 }
 
@@ -131,15 +197,15 @@ AmbientOcclusion ambient_occlusion_per_vertex(const VisibilityScene& scene, cons
 
 AmbientOcclusion ambient_occlusion_per_face(const VisibilityScene& scene, const Mesh& mesh,
                                             const AmbientOcclusionOptions& options) {
-  const std::vector<double> normals = face_normals(mesh);
-  return run(scene, mesh.num_faces(), kFaceSalt, options, [&](std::size_t f, Vec3f& p, Vec3d& n, std::uint64_t&) {
-    if (!unit_axis(get3(normals, f), n)) return false;  // degenerate face: normal (0,0,0)
-    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-    Vec3d sum{};
-    for (std::uint32_t c = b; c < e; ++c) sum += mesh.position(mesh.corner_vertex[c]) - scene.centre();
-    p = Vec3f(sum * (scene.scale() / double(e - b)));  // divisor: a non-degenerate face has >= 3 corners
-    return true;
-  });
+  check_options(options);
+  const std::size_t nf = mesh.num_faces();
+  std::vector<float> open(nf, 1.0f);
+  AmbientOcclusion out = totals(trace_faces(scene, mesh, options, [&](std::size_t f, std::uint32_t hits) {
+                                  open[f] = open_fraction(hits, options.samples);
+                                }),
+                                nf, options.samples);
+  out.open_fraction = std::move(open);
+  return out;
 }
 
 AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const std::vector<double>& points,
@@ -162,30 +228,71 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
 
 namespace {
 
-// The hemispheres' axes of the occlusion job, per vertex: the mesh's own vertex normals (every one
-// valid, else Error: they are the axes), or when it has none the library's angle-weighted normals
-// rounded once to float (returned; their double copy is freed on return). Empty: use the mesh's.
-std::vector<float> job_axes(const Mesh& mesh, const std::string& source, bool& computed) {
-  computed = false;
-  if (mesh.has_vertex_normals()) {
-    const std::size_t invalid = count_invalid_normals(mesh.vertex_normals);
-    if (invalid > 0)
-      throw Error(located(source, 0,
-                          std::to_string(invalid) + " of " + std::to_string(mesh.num_vertices()) +
-                              " vertex normals are invalid (NaN, Inf or zero length); they give the hemisphere's "
-                              "axis: recompute them first (`shadetool normals --recompute`, or normals/vertex_normals.h)"));
-    return {};
-  }
-  const std::vector<double> normals = vertex_normals(mesh).normals;
-  computed = true;
-  return std::vector<float>(normals.begin(), normals.end());  // unit, rounded once to float
+// Computed normals are made 2^12 = 4096 vertices at a time (engine/vertex_normal_blocks.h: about
+// 0.45 MB while a block is alive, against 12 MB in double or 6 MB in float for all of them at 1M
+// triangles).
+constexpr unsigned kNormalBlockLog2 = 12;
+
+// mesh_occlusion's rays: per face (normals made a block at a time, as ambient_occlusion_per_face),
+// or per vertex about the mesh's normals or (computed) the library's, made block by block just
+// before their rays. Each point's hits are kept as a Count (1, 2 or 4 B, wide enough for N) and
+// turned into the float open fractions once the BVH is freed, so the rays' peak holds neither #V
+// normals nor #V floats. The same bits as ambient_occlusion_per_face / _per_vertex (normals in
+// double).
+template <class Count>
+AmbientOcclusion mesh_counts(const Mesh& mesh, bool per_face, bool computed, const AmbientOcclusionOptions& options,
+                             VisibilitySceneStats& stats) {
+  check_options(options);
+  const std::size_t count = per_face ? mesh.num_faces() : mesh.num_vertices();
+  std::vector<Count> hits(count, 0);  // a skipped point keeps 0: open fraction 1
+  const auto store = [&](std::size_t i, std::uint32_t h) { hits[i] = Count(h); };  // h <= N fits Count
+  Totals sum;
+  {
+    const VisibilityScene scene(mesh);
+    if (per_face) {
+      sum = trace_faces(scene, mesh, options, store);
+    } else if (!computed) {
+      sum = trace(scene, 0, count, kVertexSalt, options, [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
+        return vertex_query(scene, mesh, v, get3(mesh.vertex_normals, v), p, n);
+      }, store);
+    } else {
+      visibility_engine::VertexNormalBlocks blocks(mesh, kNormalBlockLog2);
+      VertexNormals normals;
+      for (std::size_t k = 0; k < blocks.blocks(); ++k) {
+        blocks.compute(k, normals);
+        const std::size_t first = blocks.begin(k);
+        const Totals block = trace(scene, first, blocks.end(k), kVertexSalt, options,
+                                   [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
+                                     return vertex_query(scene, mesh, v, get3(normals.normals, v - first), p, n);
+                                   }, store);
+        sum.hits += block.hits;
+        sum.skipped += block.skipped;
+      }
+    }
+    stats = scene.stats();
+  }  // the BVH and the last block's normals are freed here
+  AmbientOcclusion out = totals(sum, count, options.samples);
+  out.open_fraction.resize(count);
+  for (std::size_t i = 0; i < count; ++i) out.open_fraction[i] = open_fraction(hits[i], options.samples);
+  return out;
 }
 
-AmbientOcclusion job_occlusion(const VisibilityScene& scene, const Mesh& mesh, bool per_face, const std::vector<float>& computed,
-                               const AmbientOcclusionOptions& options) {
-  if (per_face) return ambient_occlusion_per_face(scene, mesh, options);
-  if (!computed.empty() || !mesh.has_vertex_normals()) return ambient_occlusion_per_vertex(scene, mesh, computed, options);
-  return ambient_occlusion_per_vertex(scene, mesh, mesh.vertex_normals, options);
+}  // namespace
+
+namespace {
+
+// The hemispheres' axes are the mesh's own vertex normals when it has them: one per vertex, every
+// one usable (else Error: an axis cannot be made up).
+void require_axis_normals(const Mesh& mesh, const std::string& source) {
+  if (mesh.vertex_normals.size() != 3 * mesh.num_vertices())
+    throw Error("ambient occlusion: " + std::to_string(mesh.vertex_normals.size() / 3) + " normals for " +
+                std::to_string(mesh.num_vertices()) + " vertices");
+  const std::size_t invalid = count_invalid_normals(mesh.vertex_normals);
+  if (invalid > 0)
+    throw Error(located(source, 0,
+                        std::to_string(invalid) + " of " + std::to_string(mesh.num_vertices()) +
+                            " vertex normals are invalid (NaN, Inf or zero length); they give the hemisphere's "
+                            "axis: recompute them first (`shadetool normals --recompute`, or normals/vertex_normals.h)"));
 }
 
 }  // namespace
@@ -193,11 +300,14 @@ AmbientOcclusion job_occlusion(const VisibilityScene& scene, const Mesh& mesh, b
 MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclusionOptions& options,
                              const std::string& source) {
   MeshOcclusion out;
-  // The axes first, their double copy freed before the BVH is built (peak memory).
-  const std::vector<float> computed = per_face ? std::vector<float>() : job_axes(mesh, source, out.normals_computed);
-  const VisibilityScene scene(mesh);
-  out.ao = job_occlusion(scene, mesh, per_face, computed, options);
-  out.scene = scene.stats();
+  if (!per_face && mesh.has_vertex_normals()) require_axis_normals(mesh, source);
+  out.normals_computed = !per_face && !mesh.has_vertex_normals();
+  if (options.samples <= 0xffu)
+    out.ao = mesh_counts<std::uint8_t>(mesh, per_face, out.normals_computed, options, out.scene);
+  else if (options.samples <= 0xffffu)
+    out.ao = mesh_counts<std::uint16_t>(mesh, per_face, out.normals_computed, options, out.scene);
+  else
+    out.ao = mesh_counts<std::uint32_t>(mesh, per_face, out.normals_computed, options, out.scene);
   return out;
 }
 
@@ -205,10 +315,13 @@ AmbientOcclusion mesh_occlusion(const VisibilityScene& scene, const Mesh& mesh, 
                                 const AmbientOcclusionOptions& options, const std::string& source, bool& normals_computed) {
   normals_computed = false;
   if (per_face) return ambient_occlusion_per_face(scene, mesh, options);
-  // The scene's vertices are another mesh's: the vertices as points (to_local rounds them as the
-  // BVH's copy of the same world positions was rounded), each with its index as its id.
-  const std::vector<float> computed = job_axes(mesh, source, normals_computed);
-  const std::vector<double> axes = normals_computed ? std::vector<double>(computed.begin(), computed.end()) : mesh.vertex_normals;
+  // The axes: the mesh's normals, or the library's angle-weighted ones in double (the bits
+  // mesh_occlusion's blocks give). The scene's vertices are another mesh's: the vertices go in as
+  // points (to_local rounds them as the BVH's copy of the same world positions was rounded), each
+  // with its index as its id.
+  if (mesh.has_vertex_normals()) require_axis_normals(mesh, source);
+  normals_computed = !mesh.has_vertex_normals();
+  const std::vector<double> axes = normals_computed ? vertex_normals(mesh).normals : mesh.vertex_normals;
   std::vector<std::uint64_t> ids(mesh.num_vertices());
   for (std::size_t v = 0; v < ids.size(); ++v) ids[v] = v;
   return ambient_occlusion_at_points(scene, mesh.positions, axes, ids, options);

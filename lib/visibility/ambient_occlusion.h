@@ -16,10 +16,10 @@
 // Inputs:  scene    the mesh's VisibilityScene
 //          mesh     the same mesh (per vertex / per face)
 //          vertex_normals  #V by 3, the hemisphere's axis (need not be unit; normalised here in
-//                   double), as doubles or as floats: a caller that computes normals only for this
-//                   keeps them in 12 B per vertex instead of 24 (the CLI: bench/visibility/results.md,
-//                   memory). A float axis is a different axis in its last bits, so some rays' float
-//                   directions, and with them a few hits, differ from the double axis's.
+//                   double), as doubles or as floats (12 B per vertex instead of 24 for a caller that
+//                   holds them only for this). A float axis is a different axis in its last bits, so
+//                   some rays' float directions, and with them a few hits, differ from the double
+//                   axis's.
 //          points, normals  #P by 3 each, world space (ambient_occlusion_at_points)
 //          ids      #P seeds' ids (empty: the point's index)
 //          options  samples N >= 1; max_distance D > 0 in world units (default +inf: any hit
@@ -28,8 +28,9 @@
 //          whose normal is zero or not finite (an isolated vertex, a degenerate face): open = 1,
 //          no ray cast.
 // Per vertex: the point is the vertex itself (its float copy in the BVH, exactly). Per face: the
-// point is the mean of the face's corners and the axis the face normal (normals/face_normals.h);
-// degenerate faces are skipped.
+// point is the mean of the face's corners and the axis the face normal (normals/face_normals.h,
+// made 8192 faces at a time just before their rays: the same bits without holding 24 B per face;
+// engine/face_normal_blocks.h); degenerate faces are skipped.
 // Precision: directions in double, rounded to float for Embree; counts in integers; the fraction
 // (N - hits)/N in double, rounded once to float.
 // Errors: throws Error for samples = 0, D <= 0 or NaN, mismatched sizes, non-finite points.
@@ -79,9 +80,13 @@ AmbientOcclusion ambient_occlusion_at_points(const VisibilityScene& scene, const
 // The whole job of `shadetool occlusion` and Python's `shadetool.occlusion`, in one place. Per face;
 // or per vertex about the mesh's own vertex normals (Error "SOURCE: K of V vertex normals are
 // invalid ..." when any is NaN, Inf or zero: they are the hemispheres' axes) or, when it has none,
-// the library's angle-weighted normals (normals/vertex_normals.h) rounded once to float and their
-// double copy freed before the BVH is built (peak memory: bench/visibility/results.md). The BVH
-// and the computed normals are freed before it returns.
+// the library's angle-weighted normals (normals/vertex_normals.h, in double). Peak memory
+// (bench/visibility/results.md, Memory): computed normals are never held for the whole mesh but
+// made 4096 vertices at a time just before those vertices' rays (engine/vertex_normal_blocks.h:
+// the same bits as computing them all at once), and per vertex the rays' hits are kept as 1, 2 or
+// 4-byte counts (N <= 255, <= 65535, more) and turned into the float open fractions only after the
+// BVH is freed (per face too). So the result is bit for bit ambient_occlusion_per_vertex's with
+// the same normals in double, or ambient_occlusion_per_face's. The BVH is freed before it returns.
 struct MeshOcclusion {
   AmbientOcclusion ao;
   VisibilitySceneStats scene;    // the BVH's size; faces left out of it

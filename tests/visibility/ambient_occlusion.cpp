@@ -201,7 +201,8 @@ TEST_CASE("Ambient occlusion is the same bits for 1 and 2 threads and for repeat
   REQUIRE(one.hits == two.hits);
 }
 
-TEST_CASE("mesh_occlusion: the mesh's normals, else computed ones in float; invalid normals name the source",
+TEST_CASE("mesh_occlusion: the mesh's normals, else the library's computed block by block (same bits as all at once); "
+          "invalid normals name the source",
           "[visibility][ao]") {
   AnalyticMesh am = torus(48, 24, 1.0, 0.45);
   Mesh m = am.mesh;
@@ -210,13 +211,15 @@ TEST_CASE("mesh_occlusion: the mesh's normals, else computed ones in float; inva
   o.samples = 16;
   const std::vector<double> n = vertex_normals(m).normals;
   const VisibilityScene scene(m);
-  const AmbientOcclusion by_float = ambient_occlusion_per_vertex(scene, m, std::vector<float>(n.begin(), n.end()), o);
+  const AmbientOcclusion by_double = ambient_occlusion_per_vertex(scene, m, n, o);
   const AmbientOcclusion by_face = ambient_occlusion_per_face(scene, m, o);
 
   const MeshOcclusion computed = mesh_occlusion(m, false, o, "knot.ply");  // m has no vertex normals
   REQUIRE(computed.normals_computed);
   REQUIRE(computed.ao.hits > 0);
-  REQUIRE(computed.ao.open_fraction == by_float.open_fraction);
+  REQUIRE(computed.ao.open_fraction == by_double.open_fraction);
+  REQUIRE(computed.ao.hits == by_double.hits);
+  REQUIRE(computed.ao.rays == by_double.rays);
   REQUIRE(computed.scene.faces_used == m.num_faces());
   const MeshOcclusion faces = mesh_occlusion(m, true, o, "knot.ply");
   REQUIRE_FALSE(faces.normals_computed);
@@ -228,9 +231,39 @@ TEST_CASE("mesh_occlusion: the mesh's normals, else computed ones in float; inva
   REQUIRE_FALSE(own.normals_computed);
   REQUIRE(own.ao.open_fraction == ambient_occlusion_per_vertex(scene, m, n, o).open_fraction);
 
+  Mesh short_normals = given;
+  short_normals.vertex_normals.resize(3 * (m.num_vertices() - 1));  // one row missing: refused, not read past
+  REQUIRE_THROWS_AS(mesh_occlusion(short_normals, false, o, "knot.ply"), Error);
   given.vertex_normals[3] = given.vertex_normals[4] = given.vertex_normals[5] = 0;  // vertex 1: zero length
   REQUIRE_THROWS_WITH(mesh_occlusion(given, false, o, "knot.ply"),
                       Catch::StartsWith("knot.ply: 1 of " + std::to_string(m.num_vertices()) + " vertex normals are invalid"));
+}
+
+TEST_CASE("mesh_occlusion over several blocks of computed normals, and with hits kept in 1, 2 or 4 bytes, "
+          "gives the double overload's bits", "[visibility][ao]") {
+  const Mesh big = torus(128, 72, 1.0, 0.45).mesh;  // 9216 vertices: three blocks of 4096
+  AmbientOcclusionOptions o;
+  o.samples = 4;
+  const VisibilityScene scene(big);
+  const AmbientOcclusion whole = ambient_occlusion_per_vertex(scene, big, vertex_normals(big).normals, o);
+  const MeshOcclusion blocked = mesh_occlusion(big, false, o, "big.ply");
+  REQUIRE(whole.hits > 0);
+  REQUIRE(blocked.ao.hits == whole.hits);
+  REQUIRE(blocked.ao.open_fraction == whole.open_fraction);
+
+  Mesh small = torus(8, 6, 1.0, 0.45).mesh;
+  add_polygon(small, disc_polygon(1.2, 0.3, 16));
+  const VisibilityScene small_scene(small);
+  const std::vector<double> n = vertex_normals(small).normals;
+  for (std::uint32_t samples : {255u, 256u, 65535u, 65536u}) {  // the edges of uint8, uint16 and uint32
+    INFO("N = " << samples);
+    o.samples = samples;
+    const AmbientOcclusion direct = ambient_occlusion_per_vertex(small_scene, small, n, o);
+    const MeshOcclusion counted = mesh_occlusion(small, false, o, "small.ply");
+    REQUIRE(direct.hits > 0);
+    REQUIRE(counted.ao.hits == direct.hits);
+    REQUIRE(counted.ao.open_fraction == direct.open_fraction);
+  }
 }
 
 TEST_CASE("Polygons are fanned for the BVH only, degenerate faces take no part, non-manifold edges work",
