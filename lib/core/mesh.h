@@ -25,6 +25,9 @@
 //                                           Steps that remove faces keep it per face, like face_colors.
 //   vertex_quality     0 or V floats           a scalar per vertex (PLY `quality`, MeshLab's name)
 //   face_quality       0 or F floats           a scalar per face (PLY face `quality`)
+//   comments           a file's comment lines that say something about it (PLY header `comment` and
+//                      `obj_info` lines as read, keyword included: MeshLab's `comment TextureFile
+//                      tex.png`, a scanner's settings); written back by PLY, as `#` lines by OBJ
 //   vertex_properties  scalars per vertex no array above holds, by name (a scanner's `confidence`
 //   face_properties    or `intensity`, CloudCompare's `scalar_*`, a face's `flags`): V (F) values
 //                      each, in double (exact for every PLY scalar type), with the declared type
@@ -88,6 +91,7 @@ struct Mesh {
   std::vector<float> face_quality;
   std::vector<MeshProperty> vertex_properties;
   std::vector<MeshProperty> face_properties;
+  std::vector<std::string> comments;
 
   ValuePrecision precision = ValuePrecision::Float;
 
