@@ -37,7 +37,9 @@ nlohmann::json info_json(const MeshInfo& m, const std::string& format) {
   j["attributes"] = {{"vertex_normals", m.vertex_normals}, {"corner_normals", m.corner_normals},
                      {"face_normals", m.face_normals},     {"vertex_colors", m.vertex_colors},
                      {"face_colors", m.face_colors},       {"texcoords", m.texcoords},
-                     {"color_channels", m.color_channels}};
+                     {"color_channels", m.color_channels},  {"vertex_quality", m.vertex_quality},
+                     {"face_quality", m.face_quality},      {"vertex_properties", m.vertex_properties},
+                     {"face_properties", m.face_properties}};
   j["edges"] = m.topology.edges;
   j["boundary_edges"] = m.topology.boundary_edges;
   j["non_manifold_edges"] = m.topology.non_manifold_edges;
@@ -82,6 +84,15 @@ std::string info_text(const MeshInfo& m, const std::string& input, const std::st
   add(m.vertex_colors, fmt::format("vertex colours ({})", m.color_channels == 4 ? "rgba" : "rgb"));
   add(m.face_colors, fmt::format("face colours ({})", m.color_channels == 4 ? "rgba" : "rgb"));
   add(m.texcoords, fmt::format("texcoords ({} distinct)", m.texcoord_pool));
+  add(m.vertex_quality, "vertex quality");
+  add(m.face_quality, "face quality");
+  auto names = [](const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& n : v) s += (s.empty() ? "" : " ") + n;
+    return s;
+  };
+  add(!m.vertex_properties.empty(), "vertex properties (" + names(m.vertex_properties) + ")");
+  add(!m.face_properties.empty(), "face properties (" + names(m.face_properties) + ")");
   s += fmt::format("  attributes             {}\n", attrs.empty() ? "none" : attrs);
   s += fmt::format("  edges                  {}\n", m.topology.edges);
   s += fmt::format("  boundary edges         {}\n", m.topology.boundary_edges);

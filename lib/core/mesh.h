@@ -25,6 +25,17 @@
 //                                           Steps that remove faces keep it per face, like face_colors.
 //   vertex_quality     0 or V floats           a scalar per vertex (PLY `quality`, MeshLab's name)
 //   face_quality       0 or F floats           a scalar per face (PLY face `quality`)
+//   comments           a file's comment lines that say something about it (PLY header `comment` and
+//                      `obj_info` lines as read, keyword included: MeshLab's `comment TextureFile
+//                      tex.png`, a scanner's settings); written back by PLY, as `#` lines by OBJ
+//   vertex_properties  scalars per vertex no array above holds, by name (a scanner's `confidence`
+//   face_properties    or `intensity`, CloudCompare's `scalar_*`, a face's `flags`): V (F) values
+//                      each, in double (exact for every PLY scalar type), with the declared type
+//                      so a PLY writer gives them back as read.
+//
+// Every per-vertex array (normals, colours, quality, properties) is visited by
+// for_each_vertex_array, every per-face one by for_each_face_array: a step that removes, reorders
+// or duplicates vertices or faces moves them all through these, so none is forgotten.
 //
 // Values are stored in double so that analytic test meshes lie on their surface and float input
 // (binary PLY, STL) round-trips bitwise: a float widened to double and narrowed back is unchanged.
@@ -46,6 +57,14 @@ enum class ValuePrecision { Float, Double };
 
 // corner_texcoord_index of a corner without a texture coordinate.
 constexpr std::uint32_t kNoTexcoord = 0xFFFFFFFFu;
+
+// A named scalar per vertex or per face; `type` is PLY's name for the declared type (char, uchar,
+// short, ushort, int, uint, float, double).
+struct MeshProperty {
+  std::string name;
+  std::string type = "float";
+  std::vector<double> values;
+};
 
 struct Mesh {
   std::vector<double> positions;
@@ -70,8 +89,28 @@ struct Mesh {
   std::vector<std::uint32_t> face_group_run;
   std::vector<float> vertex_quality;
   std::vector<float> face_quality;
+  std::vector<MeshProperty> vertex_properties;
+  std::vector<MeshProperty> face_properties;
+  std::vector<std::string> comments;
 
   ValuePrecision precision = ValuePrecision::Float;
+
+  // f(array, width) for every per-vertex / per-face array that is not empty (width = values per
+  // element). face_group_run is per face too but not a value: steps handle it themselves.
+  template <class F>
+  void for_each_vertex_array(F&& f) {
+    if (!vertex_normals.empty()) f(vertex_normals, std::size_t(3));
+    if (!vertex_colors.empty()) f(vertex_colors, std::size_t(color_channels));
+    if (!vertex_quality.empty()) f(vertex_quality, std::size_t(1));
+    for (MeshProperty& p : vertex_properties) f(p.values, std::size_t(1));
+  }
+  template <class F>
+  void for_each_face_array(F&& f) {
+    if (!face_normals.empty()) f(face_normals, std::size_t(3));
+    if (!face_colors.empty()) f(face_colors, std::size_t(color_channels));
+    if (!face_quality.empty()) f(face_quality, std::size_t(1));
+    for (MeshProperty& p : face_properties) f(p.values, std::size_t(1));
+  }
 
   std::size_t num_vertices() const { return positions.size() / 3; }
   std::size_t num_faces() const { return face_start.size() - 1; }

@@ -62,6 +62,10 @@ MeshInfo mesh_info(const Mesh& mesh) {
   m.vertex_colors = mesh.has_vertex_colors();
   m.face_colors = mesh.has_face_colors();
   m.texcoords = mesh.has_texcoords();
+  m.vertex_quality = mesh.has_vertex_quality();
+  m.face_quality = mesh.has_face_quality();
+  for (const MeshProperty& p : mesh.vertex_properties) m.vertex_properties.push_back(p.name);
+  for (const MeshProperty& p : mesh.face_properties) m.face_properties.push_back(p.name);
   m.corner_normal_pool = mesh.corner_normals.size() / 3;
   m.texcoord_pool = mesh.texcoord_dims > 0 ? mesh.texcoords.size() / std::size_t(mesh.texcoord_dims) : 0;
   m.color_channels = (m.vertex_colors || m.face_colors) ? mesh.color_channels : 0;

@@ -36,6 +36,8 @@ struct MeshInfo {
   bool vertex_normals = false, corner_normals = false, face_normals = false;
   bool vertex_colors = false, face_colors = false, texcoords = false;
   std::size_t corner_normal_pool = 0, texcoord_pool = 0;
+  bool vertex_quality = false, face_quality = false;
+  std::vector<std::string> vertex_properties, face_properties;  // names of Mesh's extra scalars
   int color_channels = 0;  // 0 when no colours
   bool double_precision = false;
 

@@ -112,6 +112,7 @@ std::vector<FormatEntry> make_table() {
     e.holds.vertex_colors = Holds::Yes;    // v x y z r g b
     e.holds.face_colors = Holds::Converted;  // vertices split (io/split_face_colors.h)
     e.holds.groups = Holds::Yes;
+    e.holds.comments = Holds::Converted;   // `#` lines after the first
     t.push_back(e);
   }
   {
@@ -123,6 +124,8 @@ std::vector<FormatEntry> make_table() {
     e.holds.vertex_colors = Holds::Yes;
     e.holds.face_colors = Holds::Yes;
     e.holds.quality = Holds::Yes;               // float `quality` of vertex and face
+    e.holds.properties = Holds::Yes;            // every other scalar, by name and declared type
+    e.holds.comments = Holds::Yes;              // comment / obj_info header lines
     t.push_back(e);
   }
   {

@@ -48,6 +48,8 @@ struct FormatAttributes {
   Holds face_colors = Holds::No;
   Holds groups = Holds::No;  // materials and groups (OBJ mtllib, usemtl, g, o, s)
   Holds quality = Holds::No;  // vertex_quality / face_quality (PLY `quality`)
+  Holds properties = Holds::No;  // vertex_properties / face_properties (PLY's other scalars)
+  Holds comments = Holds::No;    // Mesh::comments (PLY header lines; OBJ writes them as `#` lines)
 };
 
 struct FormatEntry {

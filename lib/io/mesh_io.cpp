@@ -143,6 +143,16 @@ std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, 
   }
   if (format.holds.quality == Holds::No && (mesh.has_vertex_quality() || mesh.has_face_quality()))
     wi.notes.push_back("quality (per-vertex / per-face scalar) not written: only PLY holds it");
+  if (format.holds.properties == Holds::No && (!mesh.vertex_properties.empty() || !mesh.face_properties.empty())) {
+    std::string names;
+    for (const auto* list : {&mesh.vertex_properties, &mesh.face_properties})
+      for (const MeshProperty& p : *list) names += (names.empty() ? "" : ", ") + p.name;
+    wi.notes.push_back("vertex/face properties not written (" + names + "): only PLY holds them");
+  }
+  if (format.holds.comments == Holds::No && !mesh.comments.empty())
+    wi.notes.push_back(std::to_string(mesh.comments.size()) + " comment line" + (mesh.comments.size() == 1 ? "" : "s") +
+                       " not written (first: '" + mesh.comments[0].substr(0, 60) + "'): " + format_upper_name(format) +
+                       " holds none");
   return out;
 }
 

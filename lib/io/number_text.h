@@ -50,6 +50,12 @@ inline void append_uint(std::string& out, std::uint64_t v) {
   out.append(buf, r.ptr);
 }
 
+inline void append_int(std::string& out, std::int64_t v) {
+  char buf[24];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+}
+
 // A colour channel stored as float in [0,1] to the uchar a PLY/OFF file holds: round(c * 255),
 // clamped; NaN becomes 0.
 inline std::uint8_t color_to_uchar(float c) {

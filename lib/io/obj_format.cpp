@@ -299,6 +299,9 @@ void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
   const Mesh& mesh = must_split ? split : input;
   out.reserve(out.size() + mesh.num_vertices() * 40 + mesh.num_corners() * 10);
   out += "# written by shadetool\n";
+  for (const std::string& c : mesh.comments)  // another format's comment lines (PLY header comments) as `#` lines
+    if (c != "comment written by shadetool" && c.find('\n') == std::string::npos && c.find('\r') == std::string::npos)
+      out += "# " + c + "\n";
   const std::size_t nv = mesh.num_vertices();
   const bool colors = mesh.has_vertex_colors() && mesh.vertex_colors.size() == nv * std::size_t(mesh.color_channels);
   // `v x y z r g b`: readers (Blender, MeshLab, assimp) take 7 numbers as x y z w r g b or

@@ -3,6 +3,7 @@
 #include <shadetool/io/ply_format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -21,7 +22,9 @@ namespace shadetool::io {
 Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
   ply::PlyHeader header = ply::parse_ply_header(bytes, name, info);             // elements, types
   const ply::PlyLayout layout = ply::map_ply_properties(header.elements, name);  // which array each goes to
-  return ply::read_ply_body(bytes, header, layout, name, info);                  // the values
+  Mesh mesh = ply::read_ply_body(bytes, header, layout, name, info);            // the values
+  mesh.comments = std::move(header.comments);
+  return mesh;
 }
 
 // ---- writer
@@ -34,6 +37,55 @@ void put(std::string& out, T v) {
   std::memcpy(b, &v, sizeof v);
   if (!ply::host_is_little()) std::reverse(b, b + sizeof(T));
   out.append(b, sizeof(T));
+}
+
+// An extra property (Mesh::vertex_properties / face_properties) the writer gives back: its index,
+// and its declared type (parsed; an unknown name is written as double).
+struct ExtraOut {
+  std::size_t index;
+  ply::Type type;
+};
+
+// Which extra properties are written: one value per element, and a name that none of the
+// properties the writer already declares uses (else a note names it).
+std::vector<ExtraOut> extras_to_write(const std::vector<MeshProperty>& props, std::size_t count, const char* element,
+                                      const std::vector<std::string>& taken, WriteInfo& info) {
+  std::vector<ExtraOut> out;
+  for (std::size_t k = 0; k < props.size(); ++k) {
+    const MeshProperty& p = props[k];
+    if (p.values.size() != count) {
+      info.notes.push_back(std::string(element) + " property '" + p.name + "' not written: " + std::to_string(p.values.size()) +
+                           " values for " + std::to_string(count) + " " + element + (count == 1 ? "" : "s"));
+      continue;
+    }
+    bool clash = std::find(taken.begin(), taken.end(), p.name) != taken.end();
+    for (const ExtraOut& e : out) clash = clash || props[e.index].name == p.name;
+    if (clash) {
+      info.notes.push_back(std::string(element) + " property '" + p.name + "' not written: the output already has a property of that name");
+      continue;
+    }
+    ply::Type t = ply::Type::Float64;
+    ply::parse_type(p.type, t);
+    out.push_back({k, t});
+  }
+  return out;
+}
+
+// One value of an extra property in its declared type: integers as integers (the values were read
+// from that type, so they are in range; anything else is rounded and clamped to it).
+void put_extra(std::string& out, double v, ply::Type t, bool binary) {
+  auto integer = [&](double lo, double hi) { return std::isfinite(v) ? std::fmin(hi, std::fmax(lo, std::nearbyint(v))) : 0.0; };
+  if (!binary) out += ' ';
+  switch (t) {
+    case ply::Type::Int8: { const auto x = std::int8_t(integer(-128, 127)); if (binary) put(out, x); else append_int(out, x); return; }
+    case ply::Type::UInt8: { const auto x = std::uint8_t(integer(0, 255)); if (binary) put(out, x); else append_uint(out, x); return; }
+    case ply::Type::Int16: { const auto x = std::int16_t(integer(-32768, 32767)); if (binary) put(out, x); else append_int(out, x); return; }
+    case ply::Type::UInt16: { const auto x = std::uint16_t(integer(0, 65535)); if (binary) put(out, x); else append_uint(out, x); return; }
+    case ply::Type::Int32: { const auto x = std::int32_t(integer(-2147483648.0, 2147483647.0)); if (binary) put(out, x); else append_int(out, x); return; }
+    case ply::Type::UInt32: { const auto x = std::uint32_t(integer(0, 4294967295.0)); if (binary) put(out, x); else append_uint(out, x); return; }
+    case ply::Type::Float32: { const float x = float(v); if (binary) put(out, x); else append_shortest_float(out, x); return; }
+    case ply::Type::Float64: if (binary) put(out, v); else append_shortest(out, v); return;
+  }
 }
 
 }  // namespace
@@ -62,6 +114,20 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   if (mesh.has_face_quality() && !fquality)
     info.notes.push_back("face quality not written: " + std::to_string(mesh.face_quality.size()) + " values for " +
                          std::to_string(nf) + " faces");
+  // Extra properties (scanners' confidence, intensity, flags ...) after the known ones, as declared.
+  std::vector<std::string> vtaken = {"x", "y", "z"}, ftaken = {"vertex_indices"};
+  if (vnormals) vtaken.insert(vtaken.end(), {"nx", "ny", "nz"});
+  if (vcolors) vtaken.insert(vtaken.end(), {"red", "green", "blue", "alpha"});
+  if (vquality) vtaken.push_back("quality");
+  if (wedge) ftaken.push_back("texcoord");
+  if (fnormals) ftaken.insert(ftaken.end(), {"nx", "ny", "nz"});
+  if (fcolors) ftaken.insert(ftaken.end(), {"red", "green", "blue", "alpha"});
+  if (fquality) ftaken.push_back("quality");
+  const std::vector<ExtraOut> vextras = extras_to_write(mesh.vertex_properties, nv, "vertex", vtaken, info);
+  const std::vector<ExtraOut> fextras = extras_to_write(mesh.face_properties, nf, "face", ftaken, info);
+  std::size_t vextra_bytes = 0, fextra_bytes = 0;
+  for (const ExtraOut& e : vextras) vextra_bytes += ply::type_size(e.type);
+  for (const ExtraOut& e : fextras) fextra_bytes += ply::type_size(e.type);
   std::uint32_t max_size = 0;
   for (std::size_t f = 0; f < nf; ++f) max_size = std::max<std::uint32_t>(max_size, std::uint32_t(mesh.face_size(f)));
   const bool uchar_count = max_size <= 255;
@@ -77,11 +143,16 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   // Every byte counted, so the string never doubles and copies (a doubling held old and new
   // blocks at once: the peak of `occlusion` on 1M triangles, bench/visibility/results.md).
   const std::size_t real_bytes = dbl ? 8 : 4, color_bytes = std::size_t(ch) * (cfloat ? 4 : 1);
-  out.reserve(out.size() + 300 + nv * (real_bytes * (vnormals ? 6 : 3) + (vcolors ? color_bytes : 0) + (vquality ? 4 : 0)) +
-              mesh.num_corners() * 4 + nf * (1 + (fnormals ? 3 * real_bytes : 0) + (fcolors ? color_bytes : 0) + (fquality ? 4 : 0)));
+  out.reserve(out.size() + 300 + 40 * (vextras.size() + fextras.size()) +
+              nv * (real_bytes * (vnormals ? 6 : 3) + (vcolors ? color_bytes : 0) + (vquality ? 4 : 0) + vextra_bytes) +
+              mesh.num_corners() * 4 +
+              nf * (1 + (fnormals ? 3 * real_bytes : 0) + (fcolors ? color_bytes : 0) + (fquality ? 4 : 0) + fextra_bytes));
   out += "ply\nformat ";
   out += binary ? "binary_little_endian" : "ascii";
-  out += " 1.0\ncomment written by shadetool\nelement vertex ";
+  out += " 1.0\ncomment written by shadetool\n";
+  for (const std::string& c : mesh.comments)  // the input's comment and obj_info lines (MeshLab's TextureFile ...)
+    if (c != "comment written by shadetool" && c.find('\n') == std::string::npos && c.find('\r') == std::string::npos) out += c + "\n";
+  out += "element vertex ";
   append_uint(out, nv);
   out += '\n';
   for (const char* n : {"x", "y", "z"}) out += std::string("property ") + real + " " + n + "\n";
@@ -92,6 +163,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   if (vcolors)
     for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
   if (vquality) out += "property float quality\n";
+  for (const ExtraOut& e : vextras) out += std::string("property ") + ply::type_name(e.type) + " " + mesh.vertex_properties[e.index].name + "\n";
   out += "element face ";
   append_uint(out, nf);
   out += "\nproperty list ";
@@ -104,6 +176,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   if (fcolors)
     for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
   if (fquality) out += "property float quality\n";
+  for (const ExtraOut& e : fextras) out += std::string("property ") + ply::type_name(e.type) + " " + mesh.face_properties[e.index].name + "\n";
   out += "end_header\n";
 
   auto real_value = [&](double v, bool first) {
@@ -151,6 +224,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
     if (vcolors)
       for (int k = 0; k < ch; ++k) color_value(mesh.vertex_colors[std::size_t(ch) * v + std::size_t(k)]);
     if (vquality) quality_value(mesh.vertex_quality[v]);
+    for (const ExtraOut& e : vextras) put_extra(out, mesh.vertex_properties[e.index].values[v], e.type, binary);
     if (!binary) out += '\n';
   }
   const std::size_t td = std::size_t(mesh.texcoord_dims);
@@ -185,6 +259,7 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
     if (fcolors)
       for (int k = 0; k < ch; ++k) color_value(mesh.face_colors[std::size_t(ch) * f + std::size_t(k)]);
     if (fquality) quality_value(mesh.face_quality[f]);
+    for (const ExtraOut& e : fextras) put_extra(out, mesh.face_properties[e.index].values[f], e.type, binary);
     if (!binary) out += '\n';
   }
 }

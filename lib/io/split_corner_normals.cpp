@@ -22,9 +22,6 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
 
   out.vertex_normals.assign(3 * nv, 0.0);
   if (mesh.has_vertex_normals()) out.vertex_normals = mesh.vertex_normals;
-  const int ch = mesh.color_channels;
-  const bool colors = mesh.has_vertex_colors();
-  const bool quality = mesh.vertex_quality.size() == nv;
   // For each normal index, the vertex that last used it (owner) and the output vertex made for
   // that use (copy_of): a lookup is O(1), so a vertex shared by k corners with k distinct normals
   // costs O(k), not O(k^2) (a hostile OBJ can give one vertex millions of distinct normals).
@@ -42,10 +39,12 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
         } else {
           target = static_cast<std::uint32_t>(out.num_vertices());
           out.positions.insert(out.positions.end(), &mesh.positions[3 * v], &mesh.positions[3 * v] + 3);
-          out.vertex_normals.insert(out.vertex_normals.end(), {0.0, 0.0, 0.0});
-          if (colors)
-            for (int j = 0; j < ch; ++j) out.vertex_colors.push_back(mesh.vertex_colors[v * std::size_t(ch) + std::size_t(j)]);
-          if (quality) out.vertex_quality.push_back(mesh.vertex_quality[v]);
+          // The copy takes v's values in every per-vertex array (Mesh::for_each_vertex_array; its
+          // normal is set just below) that has one value per vertex so far.
+          out.for_each_vertex_array([&](auto& a, std::size_t width) {
+            if (a.size() != width * target) return;
+            for (std::size_t j = 0; j < width; ++j) a.push_back(a[width * v + j]);
+          });
           ++added;
         }
         for (int j = 0; j < 3; ++j) out.vertex_normals[3 * std::size_t(target) + std::size_t(j)] = mesh.corner_normals[3 * std::size_t(n) + std::size_t(j)];

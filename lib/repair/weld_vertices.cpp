@@ -102,18 +102,20 @@ WeldResult weld_vertices(Mesh& mesh, double eps) {
 
   out.removed = V - kept;
   if (out.removed == 0) return out;
-  const std::size_t ch = std::size_t(mesh.color_channels);
-  const bool vn = mesh.has_vertex_normals(), vc = mesh.has_vertex_colors();
-  for (std::size_t v = 0; v < V; ++v) {
-    if (rep[v] != v) continue;
-    const std::size_t n = out.old_to_new[v];
-    for (int i = 0; i < 3; ++i) mesh.positions[3 * n + i] = mesh.positions[3 * v + i];
-    if (vn) for (int i = 0; i < 3; ++i) mesh.vertex_normals[3 * n + i] = mesh.vertex_normals[3 * v + i];
-    if (vc) for (std::size_t i = 0; i < ch; ++i) mesh.vertex_colors[ch * n + i] = mesh.vertex_colors[ch * v + i];
-  }
-  mesh.positions.resize(3 * kept);
-  if (vn) mesh.vertex_normals.resize(3 * kept);
-  if (vc) mesh.vertex_colors.resize(ch * kept);
+  // Positions and every per-vertex array (normals, colours, quality, properties: Mesh's
+  // for_each_vertex_array): a merged vertex keeps its representative's values. An array of the
+  // wrong length (a caller's) is left as it is, for the writer's note.
+  auto compact = [&](auto& a, std::size_t width) {
+    if (a.size() != width * V) return;
+    for (std::size_t v = 0; v < V; ++v) {
+      if (rep[v] != v) continue;
+      const std::size_t n = out.old_to_new[v];
+      for (std::size_t i = 0; i < width; ++i) a[width * n + i] = a[width * v + i];
+    }
+    a.resize(width * kept);
+  };
+  compact(mesh.positions, 3);
+  mesh.for_each_vertex_array(compact);
   for (auto& v : mesh.corner_vertex) v = v < V ? out.old_to_new[v] : v;
   return out;
 }

@@ -85,8 +85,10 @@ TEST_CASE("PLY ascii: positions, normals, uchar colours with alpha, face colours
   REQUIRE(m.face_colors.size() == 8);
   CHECK(m.face_colors[0] == 10.0f / 255.0f);
   CHECK(m.face_colors[3] == 1.0f);  // no face alpha: opaque
-  REQUIRE(info.notes.size() == 1);
-  CHECK(info.notes[0] == "skipped 2 'material' elements");
+  REQUIRE(info.notes.size() == 2);  // the vertex list property and the unknown element, each named
+  CHECK(info.notes[0] == "vertex list property 'extra' not kept (only scalar properties are)");
+  CHECK(info.notes[1] == "skipped 2 'material' elements");
+  CHECK(m.comments == std::vector<std::string>{"comment made by hand", "obj_info nothing"});
 }
 
 TEST_CASE("PLY binary: little- and big-endian with mixed count and index types", "[ply]") {

@@ -181,8 +181,24 @@ std::size_t read_binary_triangles_fast(const Element& e, BodyReader& in, std::ui
 
 // The vertex element: positions (fast path for binary scalar records), normals, colours, and
 // per-vertex texcoords into `vtexcoords` (u v per vertex; they become per-corner at the end).
+// Mesh properties for the element's extra scalars (PlyLayout: Target::Extra), n values each; and
+// one note per list property no array takes (skipped).
+void start_extras(const Element& e, std::vector<MeshProperty>& out, std::size_t count, std::size_t n, ReadInfo& info) {
+  out.resize(count);
+  for (const auto& prop : e.props) {
+    if (prop.target == Target::Extra) {
+      MeshProperty& p = out[std::size_t(prop.extra)];
+      p.name = prop.name;
+      p.type = type_name(prop.type);
+      p.values.assign(n, 0.0);
+    } else if (prop.is_list && prop.target == Target::Skip) {
+      info.notes.push_back(e.name + " list property '" + prop.name + "' not kept (only scalar properties are)");
+    }
+  }
+}
+
 void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& in, Mesh& mesh,
-                         std::vector<double>& vtexcoords, const std::string& name) {
+                         std::vector<double>& vtexcoords, const std::string& name, ReadInfo& info) {
   if (layout.num_vertices() > std::numeric_limits<std::uint32_t>::max()) fail(name, e.line, "too many vertices (more than 2^32)");
   const std::size_t n = std::size_t(e.count);
   std::size_t i = in.ascii() ? 0 : read_binary_vertices_fast(e, in, mesh);
@@ -194,6 +210,7 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
   if (layout.has_vcolors()) mesh.vertex_colors.assign(std::size_t(layout.channels()) * n, 1.0f);
   if (layout.has_vtex()) vtexcoords.assign(2 * n, 0.0);
   if (layout.vquality) mesh.vertex_quality.assign(n, 0.0f);
+  start_extras(e, mesh.vertex_properties, layout.vertex_extras, n, info);
   for (; i < n; ++i) {
     for (const auto& prop : e.props) {
       if (prop.is_list) {
@@ -218,6 +235,7 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
         case Target::U: if (layout.has_vtex()) vtexcoords[2 * i] = v; break;
         case Target::V: if (layout.has_vtex()) vtexcoords[2 * i + 1] = v; break;
         case Target::Quality: mesh.vertex_quality[i] = float(v); break;
+        case Target::Extra: mesh.vertex_properties[std::size_t(prop.extra)].values[i] = v; break;
         default: break;
       }
     }
@@ -226,13 +244,15 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
 
 // The face element: index lists (fast path for binary triangles), face normals and colours, and
 // MeshLab's per-corner `texcoord` lists.
-void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in, Mesh& mesh, const std::string& name) {
+void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in, Mesh& mesh, const std::string& name,
+                       ReadInfo& info) {
   const std::size_t n = std::size_t(e.count);
   reserve_bulk(mesh.face_start, n + 1);
   reserve_bulk(mesh.corner_vertex, std::min<std::size_t>(3 * n, in.remaining()));
   if (layout.has_fnormals()) mesh.face_normals.assign(3 * n, 0.0);
   if (layout.has_fcolors()) mesh.face_colors.assign(std::size_t(layout.channels()) * n, 1.0f);
   if (layout.fquality) mesh.face_quality.assign(n, 0.0f);
+  start_extras(e, mesh.face_properties, layout.face_extras, n, info);
   std::vector<double> wedge;  // texcoord list of the current face
   std::vector<double> corner_tex;
   std::size_t i = 0;
@@ -281,6 +301,7 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
                 float(v / color_divisor(prop.type));
           break;
         case Target::Quality: mesh.face_quality[i] = float(v); break;
+        case Target::Extra: mesh.face_properties[std::size_t(prop.extra)].values[i] = v; break;
         default: break;
       }
     }
@@ -359,8 +380,8 @@ Mesh read_ply_body(std::string_view bytes, const PlyHeader& header, const PlyLay
     if (min_bytes > 0 && e.count > in.remaining() / min_bytes + (enc == Encoding::Ascii ? 1 : 0))
       fail(name, e.line, "header claims " + std::to_string(e.count) + " " + e.name + " elements but only " +
                              std::to_string(in.remaining()) + " bytes of data follow");
-    if (&e == layout.vertex) read_vertex_element(e, layout, in, mesh, vtexcoords, name);
-    else if (&e == layout.face) read_face_element(e, layout, in, mesh, name);
+    if (&e == layout.vertex) read_vertex_element(e, layout, in, mesh, vtexcoords, name, info);
+    else if (&e == layout.face) read_face_element(e, layout, in, mesh, name, info);
     else skip_element(e, in, info);
   }
   refuse_trailing_data(in, name);

@@ -50,7 +50,10 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, Read
   while (next_line(l)) {
     const auto w = split(l);
     if (w.empty()) continue;
-    if (w[0] == "comment" || w[0] == "obj_info") continue;
+    if (w[0] == "comment" || w[0] == "obj_info") {
+      header.comments.emplace_back(l);
+      continue;
+    }
     if (w[0] == "format") {
       if (w.size() < 3) fail(name, line, "malformed format line");
       if (w[1] == "ascii") enc = Encoding::Ascii;
@@ -92,6 +95,7 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, Read
       // A line without a PLY keyword (Blender 2.4x wrote `Created by Blender3D ...` there): read
       // as a comment, as other readers do, and counted in a note.
       if (unknown_lines++ == 0) first_unknown = quoted_excerpt(l, 40);
+      header.comments.push_back("comment " + std::string(l));
     }
   }
   if (unknown_lines > 0)

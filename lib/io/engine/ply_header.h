@@ -23,6 +23,7 @@ struct PlyHeader {
   std::vector<Element> elements;
   std::size_t body_offset = 0;  // bytes before the body
   std::size_t lines = 0;        // header lines, end_header included
+  std::vector<std::string> comments;  // `comment` and `obj_info` lines as read (a line without a keyword: "comment LINE")
 };
 
 PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, ReadInfo& info);

@@ -85,6 +85,26 @@ void map_face_properties(Element& face, PlyLayout& layout, const std::string& na
   if (!layout.vertex && face.count > 0) fail(name, face.line, "faces but no vertex element");
 }
 
+// Every scalar property of `e` that no Mesh array took (an unknown name, a second `quality`, the
+// components of an attribute declared incompletely, e.g. nx ny without nz) becomes an extra
+// property, kept by name and type (Mesh::vertex_properties / face_properties).
+std::vector<std::string> mark_extras(Element& e, bool is_vertex, const PlyLayout& layout) {
+  std::vector<std::string> names;
+  for (auto& prop : e.props) {
+    if (prop.is_list) continue;
+    const Target t = prop.target;
+    bool kept = t == Target::Quality || t == Target::X || t == Target::Y || t == Target::Z;
+    if (t >= Target::NX && t <= Target::NZ) kept = is_vertex ? layout.has_vnormals() : layout.has_fnormals();
+    if (t >= Target::R && t <= Target::A) kept = is_vertex ? layout.has_vcolors() : layout.has_fcolors();
+    if (t == Target::U || t == Target::V) kept = layout.has_vtex();
+    if (kept) continue;
+    prop.target = Target::Extra;
+    prop.extra = int(names.size());
+    names.push_back(prop.name);
+  }
+  return names;
+}
+
 }  // namespace
 
 PlyLayout map_ply_properties(std::vector<Element>& elements, const std::string& name) {
@@ -95,6 +115,8 @@ PlyLayout map_ply_properties(std::vector<Element>& elements, const std::string& 
   }
   if (layout.vertex) map_vertex_properties(*layout.vertex, layout, name);
   if (layout.face) map_face_properties(*layout.face, layout, name);
+  if (layout.vertex) layout.vertex_extras = mark_extras(*layout.vertex, true, layout).size();
+  if (layout.face) layout.face_extras = mark_extras(*layout.face, false, layout).size();
   return layout;
 }
 

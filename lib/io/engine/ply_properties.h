@@ -9,8 +9,12 @@
 //   vertex:  x y z; nx ny nz; red green blue alpha (also diffuse_*, r g b a); s t / u v /
 //            texture_u texture_v / texture_s texture_t
 //            quality (MeshLab's per-vertex scalar; the first such property)
+//            every other scalar (and the parts of an incompletely declared attribute): an extra
+//            property by name and type
 //   face:    list vertex_indices or vertex_index (integer items; the first one), list texcoord
-//            (float items: per-corner u v), nx ny nz, red green blue alpha (also diffuse_*), quality
+//            (float items: per-corner u v), nx ny nz, red green blue alpha (also diffuse_*), quality;
+//            every other scalar: an extra property. Other lists of either element are skipped
+//            (the body reader names them in a note).
 // Errors:  a vertex element without x, y and z; a face element without an index list; faces but
 //          no vertex element.
 #pragma once
@@ -33,6 +37,9 @@ struct PlyLayout {
   bool face_texcoords = false;
   bool any_double = false;
   bool vquality = false, fquality = false;  // `quality`: MeshLab's per-vertex / per-face scalar (float)
+  // Scalars no array above takes (Target::Extra; Property::extra numbers them in declaration
+  // order): kept as Mesh::vertex_properties / face_properties.
+  std::size_t vertex_extras = 0, face_extras = 0;
 
   bool has_vnormals() const { return vnormal[0] && vnormal[1] && vnormal[2]; }
   bool has_fnormals() const { return fnormal[0] && fnormal[1] && fnormal[2]; }

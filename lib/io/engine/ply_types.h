@@ -39,6 +39,21 @@ inline bool parse_type(std::string_view s, Type& t) {
   return false;
 }
 
+// PLY's own name of a type (the spelling of the original 1994 format, which every reader knows).
+inline const char* type_name(Type t) {
+  switch (t) {
+    case Type::Int8: return "char";
+    case Type::UInt8: return "uchar";
+    case Type::Int16: return "short";
+    case Type::UInt16: return "ushort";
+    case Type::Int32: return "int";
+    case Type::UInt32: return "uint";
+    case Type::Float32: return "float";
+    case Type::Float64: return "double";
+  }
+  return "double";
+}
+
 inline bool is_float_type(Type t) { return t == Type::Float32 || t == Type::Float64; }
 
 // What an integer colour channel of this type is divided by to land in [0,1] (uchar: 255).
@@ -51,7 +66,7 @@ inline double color_divisor(Type t) {
   }
 }
 
-enum class Target { Skip, X, Y, Z, NX, NY, NZ, R, G, B, A, U, V, Quality, Indices, TexcoordList };
+enum class Target { Skip, X, Y, Z, NX, NY, NZ, R, G, B, A, U, V, Quality, Indices, TexcoordList, Extra };
 
 struct Property {
   std::string name;
@@ -59,6 +74,7 @@ struct Property {
   Type type = Type::Float32;        // item type for lists
   Type count_type = Type::UInt8;    // lists only
   Target target = Target::Skip;
+  int extra = -1;                   // Target::Extra: index into Mesh::vertex_properties / face_properties
 };
 
 struct Element {
