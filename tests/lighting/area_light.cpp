@@ -377,16 +377,20 @@ TEST_CASE("edge_angle is atan2(s, c) to 1e-15 relative, from 1e-300 radians to p
   CHECK(edge_angle(1e-300, 1) == 1e-300);
 }
 
+// The lanes' promise (engine/lambert_lanes.h): the scalar formulas' bits where no multiply-add can
+// be fused (x86-64 without FMA in the baseline); elsewhere 1e-15 relative.
+#if defined(__x86_64__) && !defined(__FMA__)
+constexpr double kLaneTolerance = 0;
+#else
+constexpr double kLaneTolerance = 1e-15;
+#endif
+
 TEST_CASE("Lambert's formula with edges in vector lanes gives the scalar formula's bits, clipped or not",
           "[lighting][area]") {
   // engine/lambert_lanes.h promises lambert_polygon_integral's bits (same per-edge operations, terms
   // summed in edge order; no FMA contraction on x86-64). Elsewhere (a compiler that may fuse
   // multiply-adds in one and not the other) 1e-15 relative.
-#if defined(__x86_64__) && !defined(__FMA__)
-  const double tolerance = 0;
-#else
-  const double tolerance = 1e-15;
-#endif
+  const double tolerance = kLaneTolerance;
   std::mt19937_64 rng(16);
   std::uniform_real_distribution<double> u(-1, 1);
   int clipped_count = 0, counts_seen[kMaxClippedVertices + 1] = {};
@@ -420,11 +424,7 @@ TEST_CASE("polygon lights' terms with points in vector lanes are polygon_light_t
   // inside (lobe None) bit for bit for every lane it does not hand back (`scalar`); the lanes mix
   // points behind, below the horizon, wholly above and crossing it, two-sided lights, points on the
   // light's plane, and scales where the power-of-two factor leaves double's normal range.
-#if defined(__x86_64__) && !defined(__FMA__)
-  const double tolerance = 0;
-#else
-  const double tolerance = 1e-15;
-#endif
+  const double tolerance = kLaneTolerance;
   using lighting_engine::kPointLanes;
   std::mt19937_64 rng(1616);
   std::uniform_real_distribution<double> u(-1, 1);
