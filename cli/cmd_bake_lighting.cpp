@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,12 +15,19 @@
 #include "driver.h"
 #include "usage_error.h"
 #include <shadetool/io/gltf_lights.h>
+#include <shadetool/io/gltf_scene.h>
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/read_scene.h>
 
 namespace shadetool_cli {
 namespace {
+
+// A glTF document's whole scene in world space and its BVH (the BVH reads the mesh's arrays).
+struct SceneOccluders {
+  shadetool::Mesh world;
+  std::unique_ptr<shadetool::VisibilityScene> bvh;
+};
 
 struct BakeLightingOptions {
   std::string scene;
@@ -114,7 +122,23 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       } else if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0) {
         throw shadetool::Error(shadetool::located(input, 0, "no vertex normals and no faces to compute them from"));
       }
-      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade, shadows);
+      // A glTF file lit by its own lights: shadows from its whole scene (every primitive placed by its
+      // nodes, io/gltf_scene.h), one BVH per document built at its first primitive; with --scene the
+      // scene file places the mesh and only the primitive itself casts shadows.
+      shadetool::ShadowOptions cast = shadows;
+      if (shadows.enabled && own_scene && r.gltf_document_state) {
+        std::shared_ptr<void>& state = *r.gltf_document_state;
+        if (!state) {
+          auto occluders = std::make_shared<SceneOccluders>();
+          std::vector<std::string> unused;  // the world mesh's notes concern writing it, not its shadows
+          occluders->world = shadetool::gltf_world_mesh(*r.gltf_document, unused);
+          occluders->bvh = std::make_unique<shadetool::VisibilityScene>(occluders->world);
+          state = occluders;
+        }
+        cast.occluders = static_cast<const SceneOccluders*>(state.get())->bvh.get();
+        r.notes.push_back("shadows cast by the whole scene (every primitive placed by its nodes), one BVH");
+      }
+      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade, cast);
       const shadetool::ShadeReport& rep = baked.report;
 
       if (frequency == shadetool::ShadingFrequency::PerVertex && baked.normals_source.rfind("computed", 0) == 0)
@@ -163,7 +187,8 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
         r.stats["shadow_rays"] = baked.shadows.shadow_rays;
         r.stats["occluded_light_terms"] = rep.counters.shadowed;
         r.setting("shadow_samples", baked.shadows.sampled_lights > 0 ? shadows.samples : 1u);
-        r.stats["bvh_bytes"] = baked.shadows.bvh_bytes;
+        if (cast.occluders) r.setting("bvh_bytes", baked.shadows.bvh_bytes);  // one BVH for the document
+        else r.stats["bvh_bytes"] = baked.shadows.bvh_bytes;
       }
     }, true);
   };

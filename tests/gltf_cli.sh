@@ -332,5 +332,47 @@ assert s["rays"]==sum(p["rays"] for p in s["per_primitive"].values()), s
 assert t["lights"]==next(iter(t["per_primitive"].values()))["lights"], t
 assert t["shadow_samples"]==1, t' "$tmp/ao.json" "$tmp/sh.json"
 
+# bake-lighting --shadows of a glTF file with its own light: the whole scene casts shadows. A floor
+# (3 x 3 grid, node scale 4) under a roof on another node (scale 1.5, 2 above), a directional
+# KHR light straight down: the floor's centre is in the roof's shadow (0), its corners are lit.
+"$py" - "$tmp/roof.glb" <<'PY'
+import json, math, struct, sys
+grid = [c for k in range(3) for i in range(3) for c in (i - 1.0, 0.0, k - 1.0)]
+tri = []
+for k in range(2):
+    for i in range(2):
+        a = 3 * k + i; tri += [a, a + 3, a + 1, a + 1, a + 3, a + 4]
+bin = struct.pack("<27f", *grid) + struct.pack("<24H", *tri)
+h = math.sqrt(0.5)
+doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
+  "extensionsUsed": ["KHR_lights_punctual"],
+  "extensions": {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 1.0}]}},
+  "nodes": [{"scale": [4, 1, 4], "mesh": 0}, {"translation": [0, 2, 0], "scale": [1.5, 1, 1.5], "mesh": 1},
+            {"rotation": [-h, 0, 0, h], "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]},
+             {"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "buffers": [{"byteLength": len(bin)}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 108}, {"buffer": 0, "byteOffset": 108, "byteLength": 48}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 9, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 0, 1]},
+                {"bufferView": 1, "componentType": 5123, "count": 24, "type": "SCALAR"}]}
+text = json.dumps(doc).encode(); text += b" " * (-len(text) % 4)
+out = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(text) + 8 + len(bin)) + struct.pack("<I", len(text)) + b"JSON" + text
+out += struct.pack("<I", len(bin)) + b"BIN\0" + bin
+open(sys.argv[1], "wb").write(out)
+PY
+"$bin" bake-lighting "$tmp/roof.glb" -o "$tmp/roof_lit.glb" --shadows -q
+check "bake-lighting --shadows of a glTF scene: exit 0" test $? -eq 0
+check "... valid" valid "$tmp/roof_lit.glb"
+check "... the roof on another node shadows the floor's centre, not its corners" "$py" -c '
+import json,struct,sys
+d=open(sys.argv[1],"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n]); b=d[20+n+8:]
+a=j["accessors"][j["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"]]; v=j["bufferViews"][a["bufferView"]]
+size={5126:4,5121:1,5123:2}[a["componentType"]]; comps={"VEC3":3,"VEC4":4}[a["type"]]; stride=v.get("byteStride",size*comps)
+fmt={5126:"f",5121:"B",5123:"H"}[a["componentType"]]; scale={5126:1.0,5121:255.0,5123:65535.0}[a["componentType"]]
+at=v.get("byteOffset",0)+a.get("byteOffset",0)
+red=[struct.unpack_from("<"+fmt,b,at+i*stride)[0]/scale for i in range(a["count"])]
+assert red[4]==0, red
+assert all(red[i]>0.5 for i in (0,2,6,8)), red' "$tmp/roof_lit.glb"
+
 echo "gltf_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -1,6 +1,8 @@
 // bake_lighting.cpp: see bake_lighting.h.
 #include <shadetool/lighting/bake_lighting.h>
 
+#include <memory>
+
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 
@@ -37,12 +39,16 @@ std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, con
   if (!shadows.enabled) return shade_points(scene, points, normals, options, &result.report);
   const Affine3d& M = scene.world_from_object;
   const Mat3d cof = signed_cofactor(M.A);
-  Mesh world;
-  world.positions.resize(mesh.positions.size());
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) set3(world.positions, v, transform_point(M, mesh.position(v)));
-  world.face_start = mesh.face_start;
-  world.corner_vertex = mesh.corner_vertex;
-  const VisibilityScene bvh(world);
+  Mesh world;  // the mesh's own occluders, unless the caller built the scene's
+  std::unique_ptr<VisibilityScene> own;
+  if (!shadows.occluders) {
+    world.positions.resize(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.num_vertices(); ++v) set3(world.positions, v, transform_point(M, mesh.position(v)));
+    world.face_start = mesh.face_start;
+    world.corner_vertex = mesh.corner_vertex;
+    own = std::make_unique<VisibilityScene>(world);
+  }
+  const VisibilityScene& bvh = shadows.occluders ? *shadows.occluders : *own;
 
   const std::size_t P = points.size() / 3;
   std::vector<double> wp(3 * P), wn(3 * P);

@@ -16,7 +16,8 @@
 // gets only the emission and ambient terms, and is counted (report.counters.zero_normals).
 //
 // Shadows (shadows.enabled, lighting/light_visibility.h): the mesh's non-degenerate faces, placed in
-// the world by world_from_object, go into one VisibilityScene; each point's visibility of each
+// the world by world_from_object, go into one VisibilityScene (or shadows.occluders, a scene the
+// caller built: a glTF document's whole scene); each point's visibility of each
 // kept light (rays from its world position, offset along its world normal) multiplies that
 // light's diffuse and specular terms. Seeds: the vertex id (PerVertex) or face id (PerFace).
 // report.shadows counts the rays; with shadows off nothing of this runs.
