@@ -243,6 +243,31 @@ computes on the same Mesh (the library reads it without the GIL).
             return view(s.mesh, s.mesh->face_quality, {py::ssize_t(s.mesh->face_quality.size())});
           },
           "(m,) float32 view of a scalar per face (PLY face `quality`) or None")
+      .def_property_readonly(
+          "vertex_properties",
+          [](PyMesh& s) {
+            py::dict d;
+            for (auto& p : s.mesh->vertex_properties) d[py::str(p.name)] = view(s.mesh, p.values, {py::ssize_t(p.values.size())});
+            return d;
+          },
+          "{name: (n,) float64 view}: the PLY file's other scalar vertex properties (a scanner's confidence, "
+          "intensity, ...), kept and written back to PLY in their declared types")
+      .def_property_readonly(
+          "face_properties",
+          [](PyMesh& s) {
+            py::dict d;
+            for (auto& p : s.mesh->face_properties) d[py::str(p.name)] = view(s.mesh, p.values, {py::ssize_t(p.values.size())});
+            return d;
+          },
+          "{name: (m,) float64 view}: the PLY file's other scalar face properties (flags, ...)")
+      .def_property_readonly(
+          "comments",
+          [](const PyMesh& s) {
+            py::list l;
+            for (const auto& c : s.mesh->comments) l.append(py::str(c));
+            return l;
+          },
+          "The file's comment lines (PLY header `comment` / `obj_info` lines, keyword included)")
       .def("clear_normals",
            [](PyMesh& s) {
              change(s, [](Mesh& m) {

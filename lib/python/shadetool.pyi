@@ -5,7 +5,7 @@
 #   F  (m, k) integer faces (triangles (m, 3); any integer dtype) or (indices, offsets) polygons
 #   N  (n, 3) float vertex normals
 import os
-from typing import Any, Dict, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Dict, List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -54,6 +54,12 @@ class Mesh:
     def vertex_quality(self) -> Optional[npt.NDArray[np.float32]]: ...  # (n,)
     @property
     def face_quality(self) -> Optional[npt.NDArray[np.float32]]: ...  # (m,)
+    @property
+    def vertex_properties(self) -> Dict[str, npt.NDArray[np.float64]]: ...  # name -> (n,)
+    @property
+    def face_properties(self) -> Dict[str, npt.NDArray[np.float64]]: ...  # name -> (m,)
+    @property
+    def comments(self) -> List[str]: ...
     precision: Literal["float", "double"]
     def clear_normals(self) -> None: ...
     def copy(self) -> "Mesh": ...
