@@ -24,6 +24,13 @@ py::object view(const std::shared_ptr<Mesh>& mesh, std::vector<T>& v, std::vecto
   return py::array_t<T>(std::move(shape), v.data(), base);
 }
 
+// {name: (n,) float64 view} of a mesh's extra properties (Mesh::vertex_properties / face_properties).
+py::dict property_views(const std::shared_ptr<Mesh>& mesh, std::vector<shadetool::MeshProperty>& props) {
+  py::dict d;
+  for (auto& p : props) d[py::str(p.name)] = view(mesh, p.values, {py::ssize_t(p.values.size())});
+  return d;
+}
+
 py::ssize_t rows(const std::vector<double>& v) { return py::ssize_t(v.size() / 3); }
 
 // Copy on write: views handed out keep the old mesh; the wrapper takes a changed copy.
@@ -245,20 +252,12 @@ computes on the same Mesh (the library reads it without the GIL).
           "(m,) float32 view of a scalar per face (PLY face `quality`) or None")
       .def_property_readonly(
           "vertex_properties",
-          [](PyMesh& s) {
-            py::dict d;
-            for (auto& p : s.mesh->vertex_properties) d[py::str(p.name)] = view(s.mesh, p.values, {py::ssize_t(p.values.size())});
-            return d;
-          },
+          [](PyMesh& s) { return property_views(s.mesh, s.mesh->vertex_properties); },
           "{name: (n,) float64 view}: the PLY file's other scalar vertex properties (a scanner's confidence, "
           "intensity, ...), kept and written back to PLY in their declared types")
       .def_property_readonly(
           "face_properties",
-          [](PyMesh& s) {
-            py::dict d;
-            for (auto& p : s.mesh->face_properties) d[py::str(p.name)] = view(s.mesh, p.values, {py::ssize_t(p.values.size())});
-            return d;
-          },
+          [](PyMesh& s) { return property_views(s.mesh, s.mesh->face_properties); },
           "{name: (m,) float64 view}: the PLY file's other scalar face properties (flags, ...)")
       .def_property_readonly(
           "comments",
