@@ -206,7 +206,8 @@ std::vector<GltfNodePlacement> gltf_scene_nodes(const GltfDocument& document) {
     std::vector<bool> child(nodes.size(), false);
     for (const auto& n : nodes)
       if (n.is_object() && n.contains("children"))
-        for (const auto& c : n["children"]) child[c.get<std::size_t>()] = true;  // checked on reading
+        for (const auto& c : n["children"])
+          if (c.is_number_unsigned() && c.get<std::size_t>() < child.size()) child[c.get<std::size_t>()] = true;
     for (std::size_t i = 0; i < nodes.size(); ++i)
       if (!child[i]) roots.push_back(i);
   }
