@@ -117,11 +117,12 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   // Extra properties (scanners' confidence, intensity, flags ...) after the known ones, as declared.
   std::vector<std::string> vtaken = {"x", "y", "z"}, ftaken = {"vertex_indices"};
   if (vnormals) vtaken.insert(vtaken.end(), {"nx", "ny", "nz"});
-  if (vcolors) vtaken.insert(vtaken.end(), {"red", "green", "blue", "alpha"});
+  static const char* cnames[] = {"red", "green", "blue", "alpha"};  // the colour properties written below
+  if (vcolors) vtaken.insert(vtaken.end(), cnames, cnames + ch);
   if (vquality) vtaken.push_back("quality");
   if (wedge) ftaken.push_back("texcoord");
   if (fnormals) ftaken.insert(ftaken.end(), {"nx", "ny", "nz"});
-  if (fcolors) ftaken.insert(ftaken.end(), {"red", "green", "blue", "alpha"});
+  if (fcolors) ftaken.insert(ftaken.end(), cnames, cnames + ch);
   if (fquality) ftaken.push_back("quality");
   const std::vector<ExtraOut> vextras = extras_to_write(mesh.vertex_properties, nv, "vertex", vtaken, info);
   const std::vector<ExtraOut> fextras = extras_to_write(mesh.face_properties, nf, "face", ftaken, info);
@@ -159,7 +160,6 @@ void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info
   if (vnormals)
     for (const char* n : {"nx", "ny", "nz"}) out += std::string("property ") + real + " " + n + "\n";
   const char* ctype = cfloat ? "float" : "uchar";
-  static const char* cnames[] = {"red", "green", "blue", "alpha"};
   if (vcolors)
     for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
   if (vquality) out += "property float quality\n";
