@@ -79,7 +79,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
             const std::size_t index = std::size_t(r.gltf - r.gltf_document->primitives.data());
             if (!state) {
               state = std::make_shared<shadetool::GltfSceneOcclusion>(shadetool::gltf_scene_occlusion(
-                  *r.gltf_document, per_face, options, input.substr(0, input.size() - r.gltf->json_path.size() - 2)));
+                  *r.gltf_document, per_face, options, shadetool::gltf_source_name(*r.gltf_document)));
             } else {
               scene_stats = false;
             }

@@ -101,6 +101,9 @@ std::string write_gltf(const GltfDocument& document, bool binary, const std::str
 // buffer_uri for a .gltf written to `path`: the file name with its extension replaced by .bin.
 std::string gltf_buffer_path(const std::string& path);
 
+// The name the document was read under (its path, or "stdin"); "<glTF>" for one made from a Mesh.
+std::string gltf_source_name(const GltfDocument& document);
+
 // The files the document was read with besides itself (external buffers and images), as paths
 // relative to the working directory: a writer must not overwrite them.
 std::vector<std::string> gltf_external_files(const GltfDocument& document);

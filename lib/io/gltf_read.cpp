@@ -297,6 +297,10 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
   return doc;
 }
 
+std::string gltf_source_name(const GltfDocument& document) {
+  return document.source ? document.source->name : std::string("<glTF>");
+}
+
 std::vector<std::string> gltf_external_files(const GltfDocument& document) {
   std::vector<std::string> out;
   if (!document.source) return out;

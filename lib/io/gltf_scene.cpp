@@ -253,7 +253,7 @@ std::vector<GltfPrimitivePlacements> gltf_primitive_placements(const GltfDocumen
 Mesh gltf_placed_mesh(const GltfDocument& document, const GltfPrimitive& primitive, const GltfNodePlacement* placement) {
   Mesh placed = primitive.mesh;
   if (placement) {
-    const std::string name = document.source ? document.source->name : "<glTF>";
+    const std::string name = gltf_source_name(document);
     transform_mesh(placed, placement->world, {}, name + ": " + node_path(placement->node) + " (" + primitive.json_path + ")");
   }
   return placed;
