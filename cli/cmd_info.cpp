@@ -1,5 +1,5 @@
 // cmd_info.cpp: `shadetool info MESH... [--json]`: what a mesh holds and what is wrong with it.
-// Read-only: the statistics come from lib/info/mesh_info.h; this file only formats them.
+// Read-only: the statistics come from lib/shadetool/info/mesh_info.h; this file only formats them.
 #include <string>
 
 #include <CLI/CLI.hpp>

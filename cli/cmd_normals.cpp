@@ -1,6 +1,6 @@
 // cmd_normals.cpp: `shadetool normals IN -o OUT [--weight uniform|area|angle|max] [--crease DEG]
 // [--recompute] [--faces] [--precision double|float] [--stats]`.
-// Parses, calls lib/normals/update_mesh_normals.h, prints notes and counts; exit codes in driver.h.
+// Parses, calls lib/shadetool/normals/update_mesh_normals.h, prints notes and counts; exit codes in driver.h.
 #include <string>
 
 #include <CLI/CLI.hpp>

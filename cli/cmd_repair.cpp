@@ -1,6 +1,6 @@
 // cmd_repair.cpp: `shadetool repair IN -o OUT [--report FILE.json] [--weight W]
 // [--remove-degenerate] [--weld EPS]`. Parses, prints one line per step that changed something,
-// writes the JSON report; the repair itself is lib/repair/repair_mesh.h.
+// writes the JSON report; the repair itself is lib/shadetool/repair/repair_mesh.h.
 #include <filesystem>
 #include <limits>
 #include <string>

@@ -88,7 +88,7 @@ struct BareScene {
 };
 
 // The rays ambient_occlusion_at_points casts for point i (same salt and seed rule as
-// lib/visibility/ambient_occlusion.cpp: vertex salt 0, options.seed 0).
+// lib/shadetool/visibility/ambient_occlusion.cpp: vertex salt 0, options.seed 0).
 void make_rays(const Vec3f& p_local, const Vec3d& n, std::uint64_t id, std::uint32_t samples, std::vector<RTCRay>& rays) {
   const std::uint32_t seed = visibility::point_seed(id, visibility::hash_combine(0, 0));
   Vec3d t, b;

@@ -4,5 +4,5 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-g++ -std=c++17 -O2 -I"$root/lib" -I"$root/tests" "$root/data/generate/make_data.cpp" "$root"/lib/io/*.cpp -o "$tmp/make_data"
+g++ -std=c++17 -O2 -I"$root/lib" -I"$root/tests" "$root/data/generate/make_data.cpp" "$root"/lib/shadetool/io/*.cpp -o "$tmp/make_data"
 "$tmp/make_data" "$root/data"

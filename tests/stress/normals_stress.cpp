@@ -244,7 +244,7 @@ TEST_CASE("stress: meshes scaled to 1e-30 and 1e30 keep their normals", "[stress
 // Float accumulation at the same scales. The edges (~1e30 or ~1e-31) fit in float, but their cross
 // product (~1e60 / ~1e-62) does not (float spans 1.4e-45 .. 3.4e38): the kernels form every
 // contribution in double and, for the scale-dependent weightings (area ~ s^2, max ~ s^-2), multiply
-// it by one power of two per mesh before rounding to float (lib/normals/engine/corner_contributions.h).
+// it by one power of two per mesh before rounding to float (lib/shadetool/normals/engine/corner_contributions.h).
 // Expected (the issue's "no overflow or underflow in lengths, normals unchanged"): float face
 // normals at scale s equal those at scale 1 within 16 u_f and none is lost; float vertex normals
 // of every weighting equal those at scale 1 within 64 u_f (one float rounding per term, at most 6
@@ -286,7 +286,7 @@ TEST_CASE("stress: meshes scaled to 1e-30 and 1e30 with float accumulation", "[s
 
 TEST_CASE("stress: faces beyond the vector pass's range (1e-70, 1e70) take the scalar path, interleaved with others",
           "[stress][normals]") {
-  // The triangle kernels' vector pass (lib/normals/engine/triangle_blocks.h) takes faces whose N . N lies
+  // The triangle kernels' vector pass (lib/shadetool/normals/engine/triangle_blocks.h) takes faces whose N . N lies
   // in [1e-250, 1e250]; at scale 1e-70 (N . N ~ 1e-283) and 1e70 (~1e277) every face falls to the
   // per-face scalar path, which scales lengths instead of squaring. Faces of a unit copy and a
   // scaled copy alternate, so every block of faces mixes both paths. Expected: each copy's vertex

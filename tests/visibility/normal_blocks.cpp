@@ -1,5 +1,5 @@
 // normal_blocks.cpp: vertex and face normals made block by block are the library's normals of the
-// whole mesh, bit for bit (lib/visibility/engine/vertex_normal_blocks.h, face_normal_blocks.h),
+// whole mesh, bit for bit (lib/shadetool/visibility/engine/vertex_normal_blocks.h, face_normal_blocks.h),
 // whatever the block size, the face order, polygons, isolated vertices, degenerate faces or
 // cancelling sums.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Tests of the PLY `quality` property the occlusion command writes (lib/io/ply_format.cpp): a file
+// Tests of the PLY `quality` property the occlusion command writes (lib/shadetool/io/ply_format.cpp): a file
 // laid out as MeshLab exports per-vertex and per-face quality is read into vertex_quality /
 // face_quality, written back in both encodings unchanged, and a quality array that no longer
 // matches the element count is left out with a note rather than misattributed.

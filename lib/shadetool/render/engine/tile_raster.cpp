@@ -1,5 +1,5 @@
 // tile_raster.cpp (engine): binning, the tile loop on TBB threads, per-sample visibility and
-// shading, and the box filter. The formulas it calls live in lib/render/*.h by name:
+// shading, and the box filter. The formulas it calls live in lib/shadetool/render/*.h by name:
 // fill_rule.h (coverage), perspective_barycentrics.h, inverse_bilinear.h, lighting_adapter.h.
 #include <shadetool/render/engine/screen_triangle.h>
 

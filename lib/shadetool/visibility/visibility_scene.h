@@ -65,7 +65,7 @@ class VisibilityScene {
   double scale() const { return scale_; }
   Vec3f to_local(const Vec3d& world) const;
 
-  struct Impl;  // lib/visibility/engine/embree_scene.h
+  struct Impl;  // lib/shadetool/visibility/engine/embree_scene.h
   const Impl& impl() const { return *impl_; }
 
  private:

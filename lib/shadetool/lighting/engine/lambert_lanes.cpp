@@ -9,7 +9,7 @@ namespace shadetool {
 namespace lighting_engine {
 
 // GCC: an AVX2 clone and the baseline, picked at load time (ifunc), as
-// lib/normals/engine/triangle_blocks.cpp. This file is built with -fno-math-errno
+// lib/shadetool/normals/engine/triangle_blocks.cpp. This file is built with -fno-math-errno
 // -fno-trapping-math (a sqrt that may set errno, or a comparison feeding a select, would stop the
 // vectoriser; values unchanged) and -ffp-contract=off (no fused multiply-add in the AVX2 clone:
 // the same bits as the baseline and as area_light.cpp's scalar formula). CMakeLists.txt.

@@ -2,7 +2,7 @@
 //
 // Storage in shadetool is flat arrays of double (#V by 3); Vec3<T> is the value type the kernels
 // compute with for points and directions; normals have their own type, Normal3 (below), because
-// they transform differently: lib/core/affine.h's transform_normal takes only a Normal3, and
+// they transform differently: lib/shadetool/core/affine.h's transform_normal takes only a Normal3, and
 // transform_point / transform_vector refuse one, so neither mistake compiles.
 #pragma once
 
