@@ -14,8 +14,8 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include "usage_error.h"
-#include <shadetool/io/gltf_lights.h>
-#include <shadetool/io/gltf_scene.h>
+#include <shadetool/gltf/gltf_lights.h>
+#include <shadetool/gltf/gltf_scene.h>
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/read_scene.h>
@@ -92,7 +92,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
 
   return [samples] {
     // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
-    const bool own_scene = opt.scene.empty();  // glTF input: the file's lights (io/gltf_lights.h)
+    const bool own_scene = opt.scene.empty();  // glTF input: the file's lights (gltf/gltf_lights.h)
     const shadetool::Scene file_scene = own_scene ? shadetool::Scene() : shadetool::read_scene(opt.scene);
     shadetool::ShadeOptions shade;
     if (!opt.model.empty()) shade.model = parse_model(opt.model);
@@ -123,7 +123,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
         throw shadetool::Error(shadetool::located(input, 0, "no vertex normals and no faces to compute them from"));
       }
       // A glTF file lit by its own lights: shadows from its whole scene (every primitive placed by its
-      // nodes, io/gltf_scene.h), one BVH per document built at its first primitive; with --scene the
+      // nodes, gltf/gltf_scene.h), one BVH per document built at its first primitive; with --scene the
       // scene file places the mesh and only the primitive itself casts shadows.
       shadetool::ShadowOptions cast = shadows;
       if (shadows.enabled && own_scene && r.gltf_document_state) {

@@ -9,7 +9,7 @@
 #include "command_registry.h"
 #include "driver.h"
 #include <shadetool/info/mesh_info.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 
 namespace shadetool_cli {
 namespace {

@@ -12,7 +12,7 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include "number_flags.h"
-#include <shadetool/io/gltf_morph_normals.h>
+#include <shadetool/gltf/gltf_morph_normals.h>
 #include <shadetool/normals/update_mesh_normals.h>
 #include "usage_error.h"
 

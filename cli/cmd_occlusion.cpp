@@ -15,7 +15,7 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include <shadetool/visibility/ambient_occlusion.h>
-#include <shadetool/visibility/gltf_occlusion.h>
+#include <shadetool/gltf/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
 
 namespace shadetool_cli {
@@ -70,7 +70,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           shadetool::require_finite_positions(mesh, input);
           // Normals pass through to the output: none may carry NaN or Inf into it.
           shadetool::require_finite_normals(mesh, input, "fix them first (`shadetool normals --recompute` or `shadetool repair`)");
-          // glTF: every primitive against the whole scene (visibility/gltf_occlusion.h), computed at
+          // glTF: every primitive against the whole scene (gltf/gltf_occlusion.h), computed at
           // the first primitive for all of them; the BVH statistics then count once, there.
           shadetool::MeshOcclusion job;
           bool scene_stats = true;

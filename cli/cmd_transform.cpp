@@ -23,7 +23,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
-#include <shadetool/io/gltf_transform.h>
+#include <shadetool/gltf/gltf_transform.h>
 #include <shadetool/transform/affine_maps.h>
 #include <shadetool/transform/classify_affine.h>
 #include <shadetool/transform/transform_mesh.h>

@@ -23,11 +23,11 @@
 #include <shadetool/core/validate.h>
 #include <shadetool/io/atomic_write.h>
 #include <shadetool/io/file_bytes.h>
-#include <shadetool/io/gltf_document.h>
-#include <shadetool/io/gltf_scene.h>
-#include <shadetool/io/format_table.h>
+#include <shadetool/gltf/gltf_document.h>
+#include <shadetool/gltf/gltf_scene.h>
+#include <shadetool/files/format_table.h>
 #include <shadetool/io/image_io.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "usage_error.h"
 
 namespace shadetool_cli {
@@ -37,7 +37,7 @@ using shadetool::Format;
 
 namespace {
 
-// "OBJ, PLY, OFF, STL": the mesh formats of io/format_table.h, for help texts.
+// "OBJ, PLY, OFF, STL": the mesh formats of files/format_table.h, for help texts.
 std::string upper_format_names() {
   std::string s;
   for (const std::string& n : shadetool::format_names()) {

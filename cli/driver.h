@@ -3,7 +3,7 @@
 // (MeshStep: it gets the mesh read from the file) and says what the step produces (OutputKind):
 //
 //   OutputKind::Mesh    the step changes the mesh in place; the driver writes it with a mesh format
-//                       (io/format_table.h): -o FILE, -o - (stdout, needs --format), --output-dir
+//                       (files/format_table.h): -o FILE, -o - (stdout, needs --format), --output-dir
 //                       DIR (named after the input, extension from --format or the input's),
 //                       --format, --ascii/--binary.
 //   OutputKind::Image   the step fills FileResult::image; the driver writes it with an image format
@@ -13,7 +13,7 @@
 //                       JSON line's "stats" instead). info is one.
 // glTF input (Mesh and Report kinds): the whole document is kept; the step runs per triangle
 // primitive (each in its own object space) and a glTF output keeps everything else (see
-// io/gltf_document.h); another output format gets the primitives as one mesh (with a note).
+// gltf/gltf_document.h); another output format gets the primitives as one mesh (with a note).
 // For every kind the driver handles -j (files in parallel), --json (one JSON line per file),
 // --stats, notes (stderr, one line each, unless --quiet), the per-file error line and the exit
 // code (0 all ok, 1 any file failed, 2 usage: also a step's UsageError, flags that do not suit a
@@ -38,7 +38,7 @@
 #include <nlohmann/json.hpp>
 
 #include <shadetool/core/mesh.h>
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 #include <shadetool/io/image_io.h>
 
 namespace CLI { class App; }

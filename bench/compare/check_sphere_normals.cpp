@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

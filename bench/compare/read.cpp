@@ -18,7 +18,7 @@
 #include <tbb/task_arena.h>
 
 #include "harness.h"
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "write_bench_files.h"
 
 using namespace shadetool;

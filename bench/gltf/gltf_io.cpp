@@ -27,8 +27,8 @@
 #include <vector>
 
 #include <shadetool/io/file_bytes.h>
-#include <shadetool/io/gltf_document.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/gltf/gltf_document.h>
+#include <shadetool/files/mesh_files.h>
 #include "../io/float_torus.h"
 
 using namespace shadetool;

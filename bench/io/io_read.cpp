@@ -30,7 +30,7 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "float_torus.h"
 
 using namespace shadetool;

@@ -35,7 +35,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/edge_adjacency.h>
 #include <shadetool/info/edge_topology.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include <shadetool/repair/component_boundaries.h>
 #include <shadetool/repair/consistent_winding.h>
 #include <shadetool/repair/degenerate_faces.h>

@@ -38,7 +38,7 @@
 #include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
 
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/vertex_normals.h>
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/visibility/ray_offset.h>

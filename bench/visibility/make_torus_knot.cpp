@@ -11,7 +11,7 @@
 #include <cstdlib>
 
 #include <shadetool/core/mesh.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 
 using shadetool::Vec3d;
 

@@ -4,7 +4,7 @@
 
 #include <pybind11/stl/filesystem.h>
 
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 
 #include "arrays.h"
 #include "bindings.h"
@@ -321,7 +321,7 @@ Reads an OBJ, PLY, OFF, STL or glTF 2.0 file (format from the extension unless g
 "ply", "off", "stl", "gltf"/"glb") with the library's readers: nothing read is dropped (polygons,
 normals, colours, quality). A glTF file's triangle primitives come as one mesh in world space,
 placed by the scene's nodes as assimp and Blender place them (a mesh shown by two nodes twice;
-mirrored nodes re-wound; TEXCOORD_0 with v flipped; notes in the C++ header io/gltf_scene.h); the
+mirrored nodes re-wound; TEXCOORD_0 with v flipped; notes in the C++ header gltf/gltf_scene.h); the
 command line processes them one by one in object space and keeps the rest of the document.
 FileNotFoundError when the file does not exist; ValueError with the reader's `FILE:LINE: what`
 message for bad content.

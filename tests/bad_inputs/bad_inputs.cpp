@@ -22,7 +22,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 
 #include "support/run_process.h"
 #include "support/temp_dir.h"

@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <shadetool/info/mesh_info.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

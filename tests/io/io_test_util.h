@@ -19,7 +19,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/mesh.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 
 namespace shadetool::iotest {
 

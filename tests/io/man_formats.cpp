@@ -2,7 +2,7 @@
 // which format") is the format table's: each "written" cell equals FormatEntry::holds, and each
 // "read from" format is one of the table (format_table.cpp's test checks that holds matches what
 // the writers and readers actually carry, format by format).
-#include <shadetool/io/format_table.h>
+#include <shadetool/files/format_table.h>
 
 #include "io_test_util.h"
 

@@ -2,7 +2,7 @@
 // declared type (core/mesh.h: vertex_properties, face_properties), follow their vertices and faces
 // through the steps that remove or duplicate them, and are written back as read. The files are
 // written here by hand, with values at the ends of each type's range.
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include <shadetool/repair/degenerate_faces.h>
 #include <shadetool/repair/weld_vertices.h>
 

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "normals_test_util.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"

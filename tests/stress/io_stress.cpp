@@ -10,7 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <shadetool/core/mesh.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "stress/stress_util.h"
 
 using namespace shadetool;

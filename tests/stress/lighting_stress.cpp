@@ -20,7 +20,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/mesh.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/lighting/shade_points.h>

@@ -16,7 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include <shadetool/core/mesh.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 #include "stress/stress_util.h"

@@ -26,7 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include <shadetool/core/mesh.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "stress/stress_util.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"

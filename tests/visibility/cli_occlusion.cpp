@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/vertex_normals.h>
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>

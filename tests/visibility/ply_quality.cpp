@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 
 using namespace shadetool;
 

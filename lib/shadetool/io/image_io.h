@@ -1,5 +1,5 @@
 // image_io.h: images out of a subcommand (a renderer's frame, a baked map), and the image formats
-// that write them, one table entry each (as io/format_table.h does for meshes).
+// that write them, one table entry each (as files/format_table.h does for meshes).
 //
 // Image: width x height pixels, rows top to bottom, `channels` interleaved values per pixel
 // (3 = RGB, 4 = RGBA), either 8-bit (u8, display-encoded as the producer chose) or 32-bit float

@@ -42,7 +42,7 @@ struct ShadowOptions {
   bool enabled = false;
   std::uint32_t samples = 16;  // per point per area or sky light (twice for a sky: sky and ground)
   // What casts the shadows: null, the mesh itself placed by world_from_object; else a world-space
-  // scene built by the caller (a glTF document's whole scene, io/gltf_scene.h's world mesh, in
+  // scene built by the caller (a glTF document's whole scene, gltf/gltf_scene.h's world mesh, in
   // which this mesh is placed by world_from_object too), shared by every mesh of that scene.
   const VisibilityScene* occluders = nullptr;
 };

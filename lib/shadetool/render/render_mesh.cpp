@@ -14,7 +14,7 @@
 #include <shadetool/render/clip_polygon.h>
 #include <shadetool/render/engine/screen_triangle.h>
 #include <shadetool/render/fill_rule.h>
-#include <shadetool/repair/winding_number.h>
+#include <shadetool/geometry/winding_number.h>
 
 namespace shadetool {
 

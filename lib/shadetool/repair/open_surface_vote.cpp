@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <shadetool/repair/winding_number.h>
+#include <shadetool/geometry/winding_number.h>
 
 namespace shadetool {
 

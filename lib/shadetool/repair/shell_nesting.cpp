@@ -5,7 +5,7 @@
 #include <cmath>
 #include <memory>
 
-#include <shadetool/repair/winding_number.h>
+#include <shadetool/geometry/winding_number.h>
 
 namespace shadetool {
 

@@ -97,7 +97,7 @@ MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclu
                              const std::string& source);
 
 // The same job for `mesh` against a scene built from another mesh (a glTF document's whole scene,
-// visibility/gltf_occlusion.h): the same axes and errors; normals_computed as MeshOcclusion's.
+// gltf/gltf_occlusion.h): the same axes and errors; normals_computed as MeshOcclusion's.
 AmbientOcclusion mesh_occlusion(const VisibilityScene& scene, const Mesh& mesh, bool per_face,
                                 const AmbientOcclusionOptions& options, const std::string& source, bool& normals_computed);
 

@@ -1,10 +1,10 @@
-// Tests of io/gltf_document (read_gltf, write_gltf), io/gltf_transform and io/gltf_lights.
+// Tests of gltf/gltf_document (read_gltf, write_gltf), gltf/gltf_transform and gltf/gltf_lights.
 // Every file is built here, byte by byte (a small GLB writer independent of write_gltf), so that
 // what is checked is the spec's layout, not our writer's idea of it.
-#include <shadetool/io/gltf_document.h>
-#include <shadetool/io/gltf_lights.h>
-#include <shadetool/io/gltf_morph_normals.h>
-#include <shadetool/io/gltf_transform.h>
+#include <shadetool/gltf/gltf_document.h>
+#include <shadetool/gltf/gltf_lights.h>
+#include <shadetool/gltf/gltf_morph_normals.h>
+#include <shadetool/gltf/gltf_transform.h>
 
 #include <cstdint>
 #include <cstring>
@@ -13,7 +13,7 @@
 
 #include <shadetool/core/math_constants.h>
 #include "gltf_test_util.h"
-#include "io_test_util.h"
+#include "io/io_test_util.h"
 
 using namespace shadetool;
 using namespace shadetool::iotest;

@@ -1,5 +1,5 @@
 // gltf_scene.cpp: see gltf_scene.h.
-#include <shadetool/io/gltf_scene.h>
+#include <shadetool/gltf/gltf_scene.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,12 @@
 // gltf_lights.cpp: KHR_lights_punctual, the first camera and a primitive's node -> Scene (see the
 // header for the unit mapping).
-#include <shadetool/io/gltf_lights.h>
+#include <shadetool/gltf/gltf_lights.h>
 
 #include <cmath>
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/math_constants.h>
-#include <shadetool/io/gltf_scene.h>
+#include <shadetool/gltf/gltf_scene.h>
 #include "engine/gltf_source.h"
 
 namespace shadetool {

@@ -5,7 +5,7 @@
 // and a text form, and which attributes of a Mesh it can hold. Format names in messages, the CLI's
 // option checks (--format, --input-format), --output-dir's extension and the notes about what an
 // output format leaves out are all derived from this table, so adding a format is one entry here
-// (plus its enumerator in mesh_io.h's Format).
+// (plus its enumerator in io/mesh_io.h's Format).
 //
 // Inputs/outputs of the functions below:
 //   mesh_formats()            the table, in the order formats are listed to users

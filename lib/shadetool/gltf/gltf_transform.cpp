@@ -1,5 +1,5 @@
 // gltf_transform.cpp: tangents and morph deltas under an affine map (see gltf_transform.h).
-#include <shadetool/io/gltf_transform.h>
+#include <shadetool/gltf/gltf_transform.h>
 
 #include <cmath>
 

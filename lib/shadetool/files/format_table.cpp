@@ -1,13 +1,13 @@
 // format_table.cpp: the table of mesh formats (see format_table.h). One entry per format.
-#include <shadetool/io/format_table.h>
+#include <shadetool/files/format_table.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 
 #include <shadetool/core/error.h>
-#include <shadetool/io/gltf_document.h>
-#include <shadetool/io/gltf_scene.h>
+#include <shadetool/gltf/gltf_document.h>
+#include <shadetool/gltf/gltf_scene.h>
 #include <shadetool/io/obj_format.h>
 #include <shadetool/io/off_format.h>
 #include <shadetool/io/ply_format.h>
@@ -76,7 +76,7 @@ bool detect_gltf(std::string_view bytes) {
 }
 
 // glTF through the table is one Mesh: every triangle primitive placed in world space by the
-// scene's nodes (io/gltf_scene.h); the CLI keeps the whole document instead (cli/driver.cpp).
+// scene's nodes (gltf/gltf_scene.h); the CLI keeps the whole document instead (cli/driver.cpp).
 Mesh read_gltf_entry(std::string_view bytes, const std::string& name, ReadInfo& info) {
   const GltfDocument doc = read_gltf(bytes, name);
   return gltf_world_mesh(doc, info.notes);

@@ -36,7 +36,7 @@
 
 #include <shadetool/core/affine.h>
 #include <shadetool/core/mesh.h>
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {

@@ -1,9 +1,9 @@
-// Tests of io/mesh_io: format names and extensions, file-level errors, and the round trip of a
+// Tests of files/mesh_files: format names and extensions, file-level errors, and the round trip of a
 // mesh with polygons, normals and colours through every format (read, write, read back).
 #include <algorithm>
 #include <cstring>
 
-#include "io_test_util.h"
+#include "io/io_test_util.h"
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;

@@ -1,15 +1,15 @@
-// Tests of visibility/gltf_occlusion: a glTF scene's primitives occlude each other, in world space.
+// Tests of gltf/gltf_occlusion: a glTF scene's primitives occlude each other, in world space.
 // Truth: the projected solid angle of a square above a point, parallel to its plane (the
 // point-to-parallel-rectangle form factor, summed over the four quadrants around the foot point;
 // e.g. Howell's catalogue of view factors, B-3), computed here, not by the library.
-#include <shadetool/visibility/gltf_occlusion.h>
+#include <shadetool/gltf/gltf_occlusion.h>
 
 #include <cmath>
 
 #include <catch2/catch.hpp>
 
 #include <shadetool/core/math_constants.h>
-#include "io/gltf_test_util.h"
+#include "gltf/gltf_test_util.h"
 
 using namespace shadetool;
 using namespace shadetool::gltftest;

@@ -81,7 +81,7 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name);
 // TEXCOORD_0 with v flipped (t' = 1 - t: glTF's origin is the image's top left).
 GltfDocument gltf_document_from_mesh(const Mesh& mesh);
 
-// Every triangle primitive in one Mesh, placed by the scene's nodes: io/gltf_scene.h's
+// Every triangle primitive in one Mesh, placed by the scene's nodes: gltf/gltf_scene.h's
 // gltf_world_mesh (what read_mesh returns for a glTF file).
 
 struct GltfWriteResult {

@@ -1,7 +1,7 @@
 // gltf_occlusion.cpp: see gltf_occlusion.h.
-#include <shadetool/visibility/gltf_occlusion.h>
+#include <shadetool/gltf/gltf_occlusion.h>
 
-#include <shadetool/io/gltf_scene.h>
+#include <shadetool/gltf/gltf_scene.h>
 #include <shadetool/visibility/visibility_scene.h>
 
 namespace shadetool {

@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <functional>
 
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {

@@ -1,7 +1,7 @@
 // gltf_write.cpp: GltfDocument -> .glb / .gltf bytes (see gltf_document.h). The JSON as read is
 // passed through; only buffers, bufferViews, accessors, images' sources and the changed
 // primitives' attribute/index references are edited.
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 
 #include <algorithm>
 #include <cmath>

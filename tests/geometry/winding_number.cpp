@@ -7,8 +7,8 @@
 #include <numeric>
 #include <random>
 
-#include <shadetool/repair/winding_number.h>
-#include "repair_test_meshes.h"
+#include <shadetool/geometry/winding_number.h>
+#include "repair/repair_test_meshes.h"
 
 using namespace shadetool;
 using namespace shadetool::testing;

@@ -2,11 +2,11 @@
 // scene: what `shadetool occlusion` does with a .glb/.gltf, so that a cup on a table darkens the
 // table (each primitive alone would see only itself).
 //
-// Inputs:  document  a GltfDocument (io/gltf_document.h) read from a file
+// Inputs:  document  a GltfDocument (gltf/gltf_document.h) read from a file
 //          per_face, options, source  as mesh_occlusion (ambient_occlusion.h)
 // Output:  per document primitive, its open fractions (per vertex or face of the primitive as it
 //          is in the document: object space), and the scene's BVH statistics.
-// Method:  one BVH (visibility_scene.h) of io/gltf_scene.h's world mesh: every primitive placed by
+// Method:  one BVH (visibility_scene.h) of gltf/gltf_scene.h's world mesh: every primitive placed by
 //          every node that shows it, in world space. Each primitive's values are those of its
 //          FIRST placement (scene order, depth first; glTF vertex data belongs to the mesh, not to
 //          the node, so a mesh shown twice can hold one placement's occlusion): the primitive
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 #include <shadetool/visibility/ambient_occlusion.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so

@@ -1,7 +1,7 @@
 // gltf_transform.h: what transform_mesh (lib/transform) cannot see of a glTF primitive: its
 // TANGENT attribute and its morph targets' deltas, mapped by the same affine map.
 //
-// Inputs:  primitive  a GltfPrimitive (io/gltf_document.h): tangents #V by 4, targets' deltas
+// Inputs:  primitive  a GltfPrimitive (gltf/gltf_document.h): tangents #V by 4, targets' deltas
 //                     #V by 3; primitive.mesh.vertex_normals #V by 3 = the base normals BEFORE the
 //                     map (call this before transform_mesh)
 //          M          the map p -> A p + t (t does not act on tangents or deltas: they are vectors)
@@ -21,7 +21,7 @@
 #include <cstddef>
 
 #include <shadetool/core/affine.h>
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {

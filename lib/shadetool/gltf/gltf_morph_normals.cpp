@@ -1,5 +1,5 @@
 // gltf_morph_normals.cpp: morph-target NORMAL deltas from displaced positions (see the header).
-#include <shadetool/io/gltf_morph_normals.h>
+#include <shadetool/gltf/gltf_morph_normals.h>
 
 namespace shadetool {
 

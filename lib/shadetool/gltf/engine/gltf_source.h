@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 
 namespace shadetool {
 

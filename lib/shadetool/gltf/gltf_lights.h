@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 #include <shadetool/lighting/scene.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so

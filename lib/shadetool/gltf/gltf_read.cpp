@@ -1,5 +1,5 @@
 // gltf_read.cpp: .gltf / .glb -> GltfDocument (see gltf_document.h).
-#include <shadetool/io/gltf_document.h>
+#include <shadetool/gltf/gltf_document.h>
 
 #include <cctype>
 #include <cmath>

@@ -1,7 +1,7 @@
-// Tests of io/gltf_scene: the scene graph's world matrices and the world-space mesh, against
+// Tests of gltf/gltf_scene: the scene graph's world matrices and the world-space mesh, against
 // positions worked out by hand from glTF 2.0's node rules (3.5.2-3.5.3: world = parent * T R S;
 // 3.7.2.1: a node with det < 0 draws its triangles clockwise).
-#include <shadetool/io/gltf_scene.h>
+#include <shadetool/gltf/gltf_scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <shadetool/core/error.h>
-#include <shadetool/io/mesh_io.h>
+#include <shadetool/files/mesh_files.h>
 #include "gltf_test_util.h"
 
 using namespace shadetool;

@@ -1,5 +1,5 @@
 // winding_number.cpp: solid angles and the fast winding-number hierarchy (see the header).
-#include <shadetool/repair/winding_number.h>
+#include <shadetool/geometry/winding_number.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-// mesh_io.cpp: format names and dispatch through the format table (format_table.h), atomic output.
-#include <shadetool/io/mesh_io.h>
+// mesh_files.cpp: format names and dispatch through the format table (format_table.h), atomic output.
+#include <shadetool/files/mesh_files.h>
 
 #include <algorithm>
 #include <cctype>
@@ -9,7 +9,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/io/atomic_write.h>
 #include <shadetool/io/file_bytes.h>
-#include <shadetool/io/format_table.h>
+#include <shadetool/files/format_table.h>
 
 namespace shadetool {
 
@@ -80,7 +80,7 @@ std::size_t unusable_normals(const std::vector<double>& a) {
 
 bool beyond_float(double x) { return std::fabs(x) > double(std::numeric_limits<float>::max()); }
 
-// What no writer writes (see mesh_io.h). Returns true when a float-typed binary output must widen
+// What no writer writes (see mesh_files.h). Returns true when a float-typed binary output must widen
 // to double to hold the values (binary PLY), after refusing what cannot be written at all.
 bool check_writable(const Mesh& mesh, const FormatEntry& format, const WriteOptions& options, const std::string& name) {
   std::size_t bad_positions = 0;

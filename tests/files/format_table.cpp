@@ -1,9 +1,9 @@
-// Tests of io/format_table: one entry per format, names and messages derived from it, detection
+// Tests of files/format_table: one entry per format, names and messages derived from it, detection
 // of every writer's output, and the attribute table checked against what the writers and readers
 // actually carry (a format that "holds" an attribute gives it back; one that does not, does not).
-#include <shadetool/io/format_table.h>
+#include <shadetool/files/format_table.h>
 
-#include "io_test_util.h"
+#include "io/io_test_util.h"
 
 using namespace shadetool;
 using namespace shadetool::iotest;
