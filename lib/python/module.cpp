@@ -21,7 +21,7 @@ void throw_file_not_found(const std::string& path, const std::string& what) {
 
 namespace py = pybind11;
 
-PYBIND11_MODULE(shadetool, m) {
+PYBIND11_MODULE(_shadetool, m) {  // the package shadetool re-exports it (package/__init__.py)
   namespace sp = shadetool_python;
   m.doc() = R"doc(shadetool: mesh normals, repair, transforms, lighting, occlusion and rendering on NumPy arrays.
 

@@ -2,6 +2,7 @@
 // (normals/face_normals.h, vertex_normals.h, corner_normals.h), with the GIL released.
 #include <cmath>
 
+#include <shadetool/core/validate.h>
 #include <shadetool/core/math_constants.h>
 #include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
@@ -31,6 +32,7 @@ void init_normals(py::module_& m) {
       "face_normals",
       [](py::object V, py::object F, const std::string& precision) {
         const MeshViewInput in = mesh_view_input(V, F, "face_normals");
+        shadetool::require_finite_positions(in.view, "face_normals: V");  // the CLI's rule: refused, not (0, 0, 1)
         const shadetool::Precision p = parse_precision(precision, "face_normals");
         std::vector<double> normals;
         {
@@ -44,8 +46,8 @@ void init_normals(py::module_& m) {
       (std::string(R"doc(face_normals(V, F=None, precision="double") -> (m, 3) float64
 
 One unit normal per face: triangles by the cross product of their two shortest edges, polygons by
-Newell's method; a face without area (zero area to 64 eps, a non-finite position, fewer than 3
-corners) gets (0, 0, 0), never NaN. The library's normals/face_normals.h.
+Newell's method; a face without area (zero area to 64 eps, fewer than 3 corners) gets (0, 0, 0),
+never NaN. A NaN or infinite position raises ValueError naming the first such vertex (as the CLI). The library's normals/face_normals.h.
 )doc") + kMeshArgs + "\n  precision  \"double\" or \"float\": the accumulation precision (output float64 either way)\n")
           .c_str());
 
@@ -53,6 +55,7 @@ corners) gets (0, 0, 0), never NaN. The library's normals/face_normals.h.
       "vertex_normals",
       [](py::object V, py::object F, const std::string& weight, const std::string& precision) {
         const MeshViewInput in = mesh_view_input(V, F, "vertex_normals");
+        shadetool::require_finite_positions(in.view, "vertex_normals: V");  // the CLI's rule: refused, not (0, 0, 1)
         const shadetool::Weighting w = parse_weighting(weight, "vertex_normals");
         const shadetool::Precision p = parse_precision(precision, "vertex_normals");
         shadetool::VertexNormals result;
@@ -73,7 +76,8 @@ normals/vertex_normals.h, bitwise what `shadetool normals --weight W` writes):
           (Max 1999: exact on a sphere)
   precision  "double" or "float": the accumulation precision (output float64 either way)
 A vertex with no valid face (isolated, only degenerate faces) gets the documented fallback
-((0, 0, 1), or its first face's normal when its contributions cancel), never NaN. Threads: TBB,
+((0, 0, 1), or its first face's normal when its contributions cancel), never NaN. A NaN or
+infinite position raises ValueError naming the first such vertex (as the CLI refuses it). Threads: TBB,
 the GIL released; the result is bitwise the same for any thread count.
 )doc") + kMeshArgs + "\n")
           .c_str());
@@ -86,6 +90,7 @@ the GIL released; the result is bitwise the same for any thread count.
         if (!(deg >= 0.0 && deg <= 180.0))
           throw py::value_error("corner_normals: crease_deg must be in [0, 180] degrees, got " + py::repr(crease_deg).cast<std::string>());
         const MeshViewInput in = mesh_view_input(V, F, "corner_normals");
+        shadetool::require_finite_positions(in.view, "corner_normals: V");  // the CLI's rule: refused, not (0, 0, 1)
         const shadetool::Weighting w = parse_weighting(weight, "corner_normals");
         const shadetool::Precision p = parse_precision(precision, "corner_normals");
         shadetool::CornerNormals result;

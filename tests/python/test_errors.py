@@ -97,8 +97,16 @@ def test_non_finite_positions_are_refused_where_the_cli_refuses_them(tetra):
             call()
     with pytest.raises(ValueError, match="NaN"):
         shadetool.write_mesh("/tmp/never-written.ply", V, F)
-    # The normals functions treat such a face as degenerate, as the library does (never NaN out).
-    assert np.all(np.isfinite(shadetool.vertex_normals(V, F)))
+    # The normals functions follow the CLI's rule too (`shadetool normals` refuses the same mesh):
+    # ValueError naming the first bad vertex, not a made-up (0, 0, 1) (issue 28, item 8).
+    V[3, 0] = np.inf
+    for fn in (shadetool.vertex_normals, shadetool.face_normals):
+        with pytest.raises(ValueError, match=r"2 vertices have NaN or Inf coordinates \(first: vertex 2\)"):
+            fn(V, F)
+    with pytest.raises(ValueError, match=r"first: vertex 2"):
+        shadetool.corner_normals(V, F, crease_deg=30)
+    with pytest.raises(ValueError, match=r"first: vertex 2"):
+        shadetool.vertex_normals(shadetool.Mesh(V, F))
 
 
 def test_missing_files_raise_file_not_found(tmp_path, tetra):

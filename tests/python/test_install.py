@@ -1,5 +1,5 @@
-# `cmake --install --component python` puts the module and its stub under the prefix, in the
-# interpreter's platform site-packages layout, importable from there.
+# `cmake --install --component python` puts the package (module, __init__.py, stubs, py.typed) under
+# the prefix, in the interpreter's platform site-packages layout, importable from there.
 import os
 import subprocess
 import sys
@@ -17,8 +17,10 @@ def test_install_component_python_is_importable_from_the_prefix(tmp_path):
     assert r.returncode == 0, r.stderr
     installed = sorted(p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("*") if p.is_file())
     suffix = sysconfig.get_config_var("EXT_SUFFIX")
-    assert len(installed) == 2 and installed[0].endswith("shadetool" + suffix) and installed[1].endswith("shadetool.pyi")
-    site = (tmp_path / installed[0]).parent
+    names = sorted(p.rsplit("/", 1)[1] for p in installed)
+    assert names == sorted(["__init__.py", "__init__.pyi", "py.typed", "_shadetool" + suffix]), installed
+    assert all(p.rsplit("/", 2)[1] == "shadetool" for p in installed), installed
+    site = (tmp_path / installed[0]).parent.parent
     assert site.name in ("dist-packages", "site-packages")
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     env["PYTHONPATH"] = str(site)

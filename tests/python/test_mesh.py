@@ -69,7 +69,7 @@ def test_help_documents_shapes_and_dtypes():
     doc = shadetool.vertex_normals.__doc__
     assert "(n, 3) float64" in doc and "weight" in doc and "int32" in doc
     r = subprocess.run([sys.executable, "-c", "import shadetool; help(shadetool)"], capture_output=True, text=True,
-                       env={"PYTHONPATH": shadetool.__file__.rsplit("/", 1)[0], "PAGER": "cat"})
+                       env={"PYTHONPATH": shadetool.__file__.rsplit("/", 2)[0], "PAGER": "cat"})
     assert r.returncode == 0 and "vertex_normals" in r.stdout and "FileNotFoundError" in r.stdout
 
 

@@ -11,15 +11,17 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/mesh.h>
+#include <shadetool/core/mesh_view.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
-// Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any.
-inline void require_finite_positions(const Mesh& mesh, const std::string& name) {
+// Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any. The one rule
+// for the command line and for Python (which holds a MeshView of the caller's arrays).
+inline void require_finite_positions(const MeshView& mesh, const std::string& name) {
   std::size_t bad = 0, first = 0;
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    const double* p = &mesh.positions[3 * v];
+    const double* p = mesh.positions + 3 * v;
     if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
       if (bad++ == 0) first = v;
     }
@@ -27,6 +29,9 @@ inline void require_finite_positions(const Mesh& mesh, const std::string& name) 
   if (bad > 0)
     fail(name, 0, std::to_string(bad) + (bad == 1 ? " vertex has" : " vertices have") +
                       " NaN or Inf coordinates (first: vertex " + std::to_string(first) + ")");
+}
+inline void require_finite_positions(const Mesh& mesh, const std::string& name) {
+  require_finite_positions(MeshView(mesh), name);
 }
 
 // Throws Error `NAME: K normals have NaN or Inf components (first: KIND normal I); HINT` if any

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstring>
 
-#include <tiny_gltf.h>
+#include <shadetool/gltf/engine/tinygltf.h>
 
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>

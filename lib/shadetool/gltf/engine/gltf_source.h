@@ -5,7 +5,7 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
-#include <tiny_gltf.h>
+#include <shadetool/gltf/engine/tinygltf.h>
 
 #include <shadetool/gltf/gltf_document.h>
 
