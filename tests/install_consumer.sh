@@ -6,6 +6,10 @@
 #     libshadetool.so exports the public API and nothing else (no engine:: or *_detail:: symbol),
 #     and the same consumer builds and runs against it through CMake and through pkg-config.
 #  Consumers include <shadetool/...> only; <core/...>, <io/...> and engine/ headers are not installed.
+#  3. (issue 28, item 10) A C++20 consumer that writes a PNG through the library (libpng is the
+#     library's private dependency) builds static and shared through pkg-config and CMake; no
+#     installed header includes a package the consumer was not told about (fast_float, fmt, tinygltf,
+#     embree, TBB: the .pc file and the CMake config list exactly what a consumer links).
 set -euo pipefail
 bin=$1 src=$2
 build_dir=$(dirname "$bin")
@@ -28,6 +32,33 @@ CM
 sed -n '/^\/\/ my_app.cpp/,/^```$/p' "$src/README.md" | sed '$d' > "$tmp/consumer/main.cpp"
 grep -q 'int main' "$tmp/consumer/main.cpp" || fail "README has no my_app.cpp example"
 printf '#include <shadetool/shadetool.h>\nint umbrella_compiles = 1;\n' > "$tmp/consumer/umbrella.cpp"
+mkdir "$tmp/consumer20"
+cat > "$tmp/consumer20/CMakeLists.txt" <<'CM'
+cmake_minimum_required(VERSION 3.18)
+project(consumer20 CXX)
+set(CMAKE_CXX_STANDARD 20)
+set(CMAKE_CXX_STANDARD_REQUIRED ON)
+find_package(shadetool REQUIRED)
+add_executable(picture picture.cpp)
+target_link_libraries(picture PRIVATE shadetool::shadetool)
+CM
+cat > "$tmp/consumer20/picture.cpp" <<'CPP'
+// A C++20 program (std::span) that writes a 4x2 PNG gradient through the library.
+#include <cstdio>
+#include <span>
+#include <shadetool/shadetool.h>
+int main(int argc, char** argv) {
+  if (argc != 2) return 2;
+  shadetool::Image image;
+  image.width = 4;
+  image.height = 2;
+  image.u8.resize(4 * 2 * 3);
+  std::span<std::uint8_t> pixels(image.u8);
+  for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = std::uint8_t(i * 10);
+  shadetool::write_image(image, argv[1], "");
+  std::printf("%zu bytes of pixels\n", pixels.size());
+}
+CPP
 
 expected="1152 vertices, 2304 faces"
 check_prefix() {  # kind prefix
@@ -50,6 +81,21 @@ check_prefix() {  # kind prefix
   out=$(LD_LIBRARY_PATH="$(dirname "$pc")" "$tmp/pc-$kind" "$src/data/torus.obj" "$tmp/pc-$kind.ply")
   [ "$out" = "$expected" ] || fail "$kind pkg-config consumer printed: $out"
   ok "$kind library through pkg-config ($flags)"
+  # a C++20 consumer writing a PNG, through pkg-config (no -std from the .pc file) and CMake
+  # shellcheck disable=SC2086
+  g++ -std=c++20 "$tmp/consumer20/picture.cpp" -o "$tmp/pic-$kind" $flags || fail "$kind: C++20 consumer does not build through pkg-config ($flags)"
+  LD_LIBRARY_PATH="$(dirname "$pc")" "$tmp/pic-$kind" "$tmp/pic-$kind.png" > /dev/null
+  [ "$(head -c 8 "$tmp/pic-$kind.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "$kind: C++20 consumer wrote no PNG"
+  cmake -S "$tmp/consumer20" -B "$tmp/b20-$kind" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+  cmake --build "$tmp/b20-$kind" > /dev/null || fail "$kind: C++20 consumer does not build through find_package"
+  LD_LIBRARY_PATH="$prefix/lib" "$tmp/b20-$kind/picture" "$tmp/pic20-$kind.png" > /dev/null
+  ok "$kind library: a C++20 consumer writes a PNG through pkg-config and through find_package"
+  # installed headers include only the standard library and shadetool's own headers
+  local foreign
+  # (the OpenMesh adapter is for OpenMesh users and says so; sys/ is the C library's)
+  foreign=$(grep -rhoE '^\s*#\s*include\s*<[^>]+>' "$prefix/include/shadetool" --exclude=openmesh_adapter.h | sed -E 's/.*<([^>]+)>.*/\1/' | grep '/' | grep -Ev '^(shadetool|sys)/' | sort -u || true)
+  [ -z "$foreign" ] || fail "$kind: installed headers include other packages' headers: $(echo $foreign)"
+  ok "$kind: installed headers include no other package's header"
 }
 
 # 1. this build (static)

@@ -52,7 +52,7 @@ inline std::string read_file(const std::string& path) {
   return s.str();
 }
 
-// The round-trip contract of the text writers (io/number_text.h), checked value by value: a value
+// The round-trip contract of the text writers (io/engine/number_text.h), checked value by value: a value
 // that is exactly a float (double(float(x)) == x, e.g. read from binary PLY) is printed as the
 // float's shortest text, which reads back as the double nearest to that decimal: it comes back as
 // the same float. Any other value comes back bitwise. NaN comes back as NaN.

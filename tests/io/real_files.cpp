@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <array>
 
-#include <shadetool/io/text_parse.h>
+#include <shadetool/io/engine/text_parse.h>
 
 #include "io_test_util.h"
 

@@ -1,6 +1,6 @@
-// Tests of io/number_text.h and io/text_parse.h: shortest output, strict tokens, the digit rule.
-#include <shadetool/io/number_text.h>
-#include <shadetool/io/text_parse.h>
+// Tests of io/engine/number_text.h and io/engine/text_parse.h: shortest output, strict tokens, the digit rule.
+#include <shadetool/io/engine/number_text.h>
+#include <shadetool/io/engine/text_parse.h>
 #include "io_test_util.h"
 
 using namespace shadetool;

@@ -10,7 +10,7 @@
 // significant digits than a float carries (9), else Double; it is only the hint for the value type
 // binary writers use (PLY float or double properties).
 //
-// Writing: each value in the shortest text that reads back to it (io/number_text.h: a value that
+// Writing: each value in the shortest text that reads back to it (io/engine/number_text.h: a value that
 // is exactly a float prints as the shortest float, 0.1f as "0.1"; any other as the shortest
 // double, at most 17 significant digits). v [rgb(a)], vt, vn and f v/t/n. Normals: corner normals
 // as a pool, else vertex normals (one vn per vertex), else face normals (one vn per face).

@@ -9,10 +9,10 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
-#include <shadetool/io/number_text.h>
+#include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/split_corner_normals.h>
-#include <shadetool/io/text_encoding.h>
-#include <shadetool/io/text_parse.h>
+#include <shadetool/io/engine/text_encoding.h>
+#include <shadetool/io/engine/text_parse.h>
 
 namespace shadetool::io {
 

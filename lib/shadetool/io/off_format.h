@@ -12,7 +12,7 @@
 // Precision: as OBJ (obj_format.h): values stored as parsed, never rounded; Mesh::precision is
 // Double when a number has more than 9 significant digits (the binary writers' value-type hint).
 //
-// Writing: values in the shortest text that reads back to them (io/number_text.h); `[C][N]OFF`
+// Writing: values in the shortest text that reads back to them (io/engine/number_text.h); `[C][N]OFF`
 // (C with vertex colours, N with vertex normals; per-corner normals are split into vertices,
 // WriteInfo::split_vertices); face colours after the indices (native in any OFF: no split).
 // Colours as floats when Mesh::colors_are_float, always with a decimal point ("1.0") so that they

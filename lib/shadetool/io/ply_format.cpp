@@ -14,7 +14,7 @@
 #include <shadetool/io/engine/ply_header.h>
 #include <shadetool/io/engine/ply_properties.h>
 #include <shadetool/io/engine/ply_types.h>
-#include <shadetool/io/number_text.h>
+#include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/split_corner_normals.h>
 
 namespace shadetool::io {

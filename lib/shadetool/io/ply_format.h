@@ -14,7 +14,7 @@
 //
 // Writing: binary little-endian (default) or ascii; x y z and normals as float or double after
 // Mesh::precision (binary float narrows each value to float; ascii prints the shortest text that
-// reads back to the stored value, io/number_text.h), colours as uchar or float after Mesh::colors_are_float; per-corner normals are
+// reads back to the stored value, io/engine/number_text.h), colours as uchar or float after Mesh::colors_are_float; per-corner normals are
 // split into vertices (WriteInfo::split_vertices); face normals and face colours as face
 // properties; per-corner texcoords as a face list `texcoord` (as MeshLab writes them).
 #pragma once

@@ -9,7 +9,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
-#include <shadetool/io/text_parse.h>
+#include <shadetool/io/engine/text_parse.h>
 
 namespace shadetool::io::ply {
 

@@ -5,8 +5,8 @@
 #include <cstring>
 
 #include <shadetool/core/error.h>
-#include <shadetool/io/text_encoding.h>
-#include <shadetool/io/text_parse.h>
+#include <shadetool/io/engine/text_encoding.h>
+#include <shadetool/io/engine/text_parse.h>
 
 namespace shadetool::io::ply {
 
