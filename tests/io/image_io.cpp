@@ -1,6 +1,10 @@
 // Tests of io/image_io: the image format table and the PFM writer, checked against the PFM
-// layout written out by hand (header, little-endian floats, rows bottom to top).
+// layout written out by hand (header, little-endian floats, rows bottom to top); the PNG encoder
+// against libpng's reader.
 #include <shadetool/io/image_io.h>
+#include <shadetool/io/image_png.h>
+
+#include <png.h>
 
 #include <cstring>
 
@@ -78,4 +82,38 @@ TEST_CASE("image writing refuses malformed images and NaN/Inf pixels; nothing is
   CHECK(error_of([&] { write_image(img, dir / "a.xyz", ""); }).find("unknown image format 'xyz'") != std::string::npos);
   write_image(img, dir / "a.pfm", "");
   CHECK(fs::file_size(dir / "a.pfm") == std::string("PF\n1 1\n-1.0\n").size() + 12);
+}
+
+// The PNG encoder's compression levels change the file's size and time, never its pixels: every
+// level decodes (with libpng's own reader, the reference decoder) to the bytes that went in, on an
+// image with flat runs, gradients and noise; a level outside 0..9 is refused.
+TEST_CASE("Every PNG compression level decodes to the same pixels", "[io][png]") {
+  const int w = 67, h = 41;
+  std::vector<std::uint8_t> px(std::size_t(w) * h * 3);
+  std::uint32_t state = 12345;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        state = state * 1664525u + 1013904223u;
+        const std::size_t i = (std::size_t(y) * w + std::size_t(x)) * 3 + std::size_t(c);
+        px[i] = y < 10 ? 40 : y < 25 ? std::uint8_t(x * 3 + c) : std::uint8_t(state >> 24);
+      }
+  std::size_t stored = 0, fast = 0;
+  for (int level = 0; level <= 9; ++level) {
+    const std::string png = shadetool::io::encode_png_srgb8(w, h, px, "t.png", level);
+    png_image im{};
+    im.version = PNG_IMAGE_VERSION;
+    REQUIRE(png_image_begin_read_from_memory(&im, png.data(), png.size()));
+    im.format = PNG_FORMAT_RGB;
+    REQUIRE(im.width == unsigned(w));
+    REQUIRE(im.height == unsigned(h));
+    std::vector<std::uint8_t> back(PNG_IMAGE_SIZE(im));
+    REQUIRE(png_image_finish_read(&im, nullptr, back.data(), 0, nullptr));
+    CHECK(back == px);
+    if (level == 0) stored = png.size();
+    if (level == 1) fast = png.size();
+  }
+  CHECK(fast < stored);  // level 1 compresses; level 0 stores
+  CHECK_THROWS_WITH(shadetool::io::encode_png_srgb8(w, h, px, "t.png", 10),
+                    Catch::Contains("t.png: cannot encode PNG: compression level 10 is not in 0..9"));
 }

@@ -4,6 +4,7 @@
 #include <csetjmp>
 
 #include <png.h>
+#include <zlib.h>
 
 #include <shadetool/core/error.h>
 
@@ -30,7 +31,9 @@ void on_warning(png_structp, png_const_charp) {}
 
 }  // namespace
 
-std::string encode_png_srgb8(int width, int height, const std::vector<std::uint8_t>& srgb8, const std::string& name) {
+std::string encode_png_srgb8(int width, int height, const std::vector<std::uint8_t>& srgb8, const std::string& name,
+                             int level) {
+  if (level < 0 || level > 9) fail(name, 0, "cannot encode PNG: compression level " + std::to_string(level) + " is not in 0..9");
   if (width <= 0 || height <= 0 || srgb8.size() != std::size_t(width) * std::size_t(height) * 3)
     fail(name, 0, "cannot encode PNG: the pixel buffer does not match " + std::to_string(width) + "x" +
                       std::to_string(height) + " RGB");
@@ -48,6 +51,11 @@ std::string encode_png_srgb8(int width, int height, const std::vector<std::uint8
     fail(name, 0, "cannot encode PNG: " + sink.error);
   }
   png_set_write_fn(png, &sink, append_bytes, flush_nothing);
+  png_set_compression_level(png, level);
+  if (level <= 1) {  // stored, or the fast default (see image_png.h): Up on every row, run-length coding
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, level == 0 ? PNG_FILTER_NONE : PNG_FILTER_UP);
+    if (level == 1) png_set_compression_strategy(png, Z_RLE);
+  }
   png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
