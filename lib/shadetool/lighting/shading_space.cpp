@@ -102,7 +102,8 @@ SpaceMaps maps_for(const Scene& scene, ShadingSpace space) {
       m.world_from_space = M;
       invert_affine(M, m.space_from_world);
       break;  // space_from_object = identity
-    default:  // World
+    case ShadingSpace::Auto:  // never reaches here: make_frame resolves Auto to World first
+    case ShadingSpace::World:
       m.space_from_object = M;
       break;
   }
