@@ -1,7 +1,7 @@
 // image.h: what the renderer produces: a linear float RGB image, row 0 at the top.
 //
 // Shape:  rgb  height * width * 3 floats, linear (not sRGB-encoded), unclamped; pixel (x, y) at
-//              3 * (y * width + x). The writers (io/image_png.h, io/image_pfm.h) encode it.
+//              3 * (y * width + x). The writers (io/image_io.h: PNG, PFM) encode it.
 #pragma once
 
 #include <cstddef>
