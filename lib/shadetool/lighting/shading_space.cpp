@@ -8,6 +8,7 @@
 
 #include <shadetool/core/affine.h>
 #include <shadetool/lighting/engine/metric.h>
+#include <shadetool/lighting/engine/skip_options.h>
 
 namespace shadetool {
 
@@ -112,6 +113,10 @@ SpaceMaps maps_for(const Scene& scene, ShadingSpace space) {
 
 }  // namespace
 
+ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpace space) {
+  return make_frame(scene, plan, space, SkipOptions{});
+}
+
 ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpace space, const SkipOptions& skips) {
   ShadingFrame frame;
   frame.space = space == ShadingSpace::Auto ? ShadingSpace::World : space;
@@ -183,6 +188,8 @@ ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpa
   }
   return frame;
 }
+
+SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan) { return choose_space(scene, plan, SkipOptions{}); }
 
 SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan, const SkipOptions& skips) {
   const ShadingSpace order[3] = {ShadingSpace::Object, ShadingSpace::World, ShadingSpace::Camera};
