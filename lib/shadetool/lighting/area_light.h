@@ -58,8 +58,8 @@ constexpr int kMaxClippedVertices = kMaxAreaVertices + 2;
 // q_i x d_i and angle are then accurate to an ulp, and Lambert's sum cancels only as the true
 // value does).
 // Fixed storage of N vectors left uninitialised (Vec3d's members have initialisers, so a plain
-// array would be zero-filled on every call: 3 KB per polygon per point, measured as the larger
-// part of a rect light's cost).
+// array would be zero-filled on every call, per polygon per point: the larger part of a rect
+// light's cost; bench/lighting/results.md).
 template <int N>
 struct Vec3Buffer {
   Vec3Buffer() {}

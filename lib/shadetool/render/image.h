@@ -14,7 +14,7 @@ namespace shadetool {
 
 // An allocator whose resize() leaves new floats uninitialised: the renderer writes every pixel
 // exactly once, so zero-filling a 1920x1080 image first (25 MB) would only double the memory
-// traffic (measured: 17% of a 10k-triangle Gouraud render).
+// traffic (bench/render/results.md).
 template <class T>
 struct DefaultInitAllocator : std::allocator<T> {
   template <class U>
