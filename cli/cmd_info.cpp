@@ -113,14 +113,16 @@ std::string info_text(const MeshInfo& m, const std::string& input, const std::st
   return s;
 }
 
-RegisterCommand reg(10, [](CLI::App& app) -> std::function<int()> {
-  static IoOptions io;
+RegisterCommand reg("info", HelpSection::Inspect, [](CLI::App& app) -> std::function<int()> {
+  auto options = std::make_shared<IoOptions>();  // bound to the flags, read by the run function
+  IoOptions& io = *options;
   auto* sub = app.add_subcommand("info", "Print counts, bounding box, attributes and defects of meshes");
-  add_io_options(*sub, io, /*writes_mesh=*/false);
-  return [] {
-    return run_mesh_command(
+  add_io_options(*sub, io, OutputKind::Report);
+  return [options] {
+    const IoOptions& io = *options;
+    return run_command(
         "info", io,
-        [](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [&io](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           std::string format;
           if (r.gltf_document) format = r.gltf_document->was_binary ? "glb" : "gltf";
           else if (!io.input_format.empty()) format = io.input_format;
@@ -139,7 +141,7 @@ RegisterCommand reg(10, [](CLI::App& app) -> std::function<int()> {
             r.stats["gltf_morph_targets"] = r.gltf->targets.size();
           }
         },
-        false);
+        OutputKind::Report);
   };
 });
 
