@@ -59,15 +59,16 @@ std::string join(const std::vector<std::string>& items) {
   return s.empty() ? "none" : s;
 }
 
-RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
-  static IoOptions io;
-  static BakeLightingOptions opt;
+RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> std::function<int()> {
+  auto options = std::make_shared<CommandOptions<BakeLightingOptions>>();  // bound to the flags, read by the run function
+  IoOptions& io = options->io;
+  BakeLightingOptions& opt = options->opt;
   auto* sub = app.add_subcommand(
       "bake-lighting",
       "Bake lit colours into a mesh: OpenGL 2.1 fixed-function lighting (lambert, phong, blinn-phong; ambient, "
       "directional, point and spot lights; area and sky lights, exact where a closed form exists) per vertex or per "
       "face");
-  add_io_options(*sub, io, /*writes_mesh=*/true);
+  add_io_options(*sub, io, OutputKind::Mesh);
   sub->add_option("--scene", opt.scene,
                   "Scene file (JSON): material, lights, camera, world_from_object (required, except for glTF input: "
                   "then its KHR_lights_punctual lights, first camera and node placement are used)")
@@ -90,7 +91,9 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
                       ->check(CLI::Range(1u, 1u << 20))
                       ->needs(shadows_flag);
 
-  return [samples] {
+  return [options, samples] {
+    const IoOptions& io = options->io;
+    const BakeLightingOptions& opt = options->opt;
     // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
     const bool own_scene = opt.scene.empty();  // glTF input: the file's lights (gltf/gltf_lights.h)
     const shadetool::Scene file_scene = own_scene ? shadetool::Scene() : shadetool::read_scene(opt.scene);
@@ -106,7 +109,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
     shadows.samples = opt.samples;
     const bool samples_given = samples->count() > 0;
 
-    return run_mesh_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+    return run_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       if (own_scene && !r.gltf)
         throw UsageError(input + ": --scene is required (only glTF files carry their own lights)");
       std::vector<std::string> scene_notes;
@@ -127,15 +130,12 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
       // scene file places the mesh and only the primitive itself casts shadows.
       shadetool::ShadowOptions cast = shadows;
       if (shadows.enabled && own_scene && r.gltf_document_state) {
-        std::shared_ptr<void>& state = *r.gltf_document_state;
-        if (!state) {
-          auto occluders = std::make_shared<SceneOccluders>();
+        const SceneOccluders& occluders = r.gltf_document_state->get_or_make<SceneOccluders>([&](SceneOccluders& made) {
           std::vector<std::string> unused;  // the world mesh's notes concern writing it, not its shadows
-          occluders->world = shadetool::gltf_world_mesh(*r.gltf_document, unused);
-          occluders->bvh = std::make_unique<shadetool::VisibilityScene>(occluders->world);
-          state = occluders;
-        }
-        cast.occluders = static_cast<const SceneOccluders*>(state.get())->bvh.get();
+          made.world = shadetool::gltf_world_mesh(*r.gltf_document, unused);
+          made.bvh = std::make_unique<shadetool::VisibilityScene>(made.world);
+        });
+        cast.occluders = occluders.bvh.get();
         r.notes.push_back("shadows cast by the whole scene (every primitive placed by its nodes), one BVH");
       }
       const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade, cast);
@@ -190,7 +190,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
         if (cast.occluders) r.setting("bvh_bytes", baked.shadows.bvh_bytes);  // one BVH for the document
         else r.stats["bvh_bytes"] = baked.shadows.bvh_bytes;
       }
-    }, true);
+    }, OutputKind::Mesh);
   };
 });
 

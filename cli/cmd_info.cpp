@@ -46,9 +46,10 @@ nlohmann::json info_json(const MeshInfo& m, const std::string& format) {
   j["inconsistent_edges"] = m.topology.inconsistent_edges;
   j["non_manifold_vertices"] = m.topology.non_manifold_vertices;
   j["components"] = m.components;
-  j["degenerate_faces"] = m.degenerate.total;
+  j["degenerate_faces"] = m.degenerate.count();
   j["repeated_index_faces"] = m.degenerate.repeated_index;
-  j["zero_area_faces"] = m.degenerate.zero_area;
+  j["zero_area_faces"] = m.degenerate.zero_area + m.degenerate.too_few_corners;  // < 3 corners: no area at all
+  j["nonfinite_faces"] = m.degenerate.non_finite;
   j["unreferenced_vertices"] = m.unreferenced_vertices;
   j["nonfinite_vertices"] = m.nonfinite_vertices;
   j["nonfinite_values"] = m.nonfinite_values;
@@ -100,8 +101,11 @@ std::string info_text(const MeshInfo& m, const std::string& input, const std::st
   s += fmt::format("  non-manifold vertices  {}\n", m.topology.non_manifold_vertices);
   s += fmt::format("  inconsistent winding   {} edges\n", m.topology.inconsistent_edges);
   s += fmt::format("  components             {}\n", m.components);
-  s += fmt::format("  degenerate faces       {} ({} repeated index, {} zero area)\n", m.degenerate.total,
-                   m.degenerate.repeated_index, m.degenerate.zero_area);
+  // NaN/Inf faces named only when there are some, so the parts always sum to the total.
+  const std::string nonfinite_faces =
+      m.degenerate.non_finite > 0 ? fmt::format(", {} NaN/Inf", m.degenerate.non_finite) : std::string();
+  s += fmt::format("  degenerate faces       {} ({} repeated index, {} zero area{})\n", m.degenerate.count(),
+                   m.degenerate.repeated_index, m.degenerate.zero_area + m.degenerate.too_few_corners, nonfinite_faces);
   s += fmt::format("  unreferenced vertices  {}\n", m.unreferenced_vertices);
   s += fmt::format("  NaN/Inf                {} vertices, {} attribute values\n", m.nonfinite_vertices,
                    m.nonfinite_values);
@@ -109,14 +113,16 @@ std::string info_text(const MeshInfo& m, const std::string& input, const std::st
   return s;
 }
 
-RegisterCommand reg(10, [](CLI::App& app) -> std::function<int()> {
-  static IoOptions io;
+RegisterCommand reg("info", HelpSection::Inspect, [](CLI::App& app) -> std::function<int()> {
+  auto options = std::make_shared<IoOptions>();  // bound to the flags, read by the run function
+  IoOptions& io = *options;
   auto* sub = app.add_subcommand("info", "Print counts, bounding box, attributes and defects of meshes");
-  add_io_options(*sub, io, /*writes_mesh=*/false);
-  return [] {
-    return run_mesh_command(
+  add_io_options(*sub, io, OutputKind::Report);
+  return [options] {
+    const IoOptions& io = *options;
+    return run_command(
         "info", io,
-        [](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [&io](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           std::string format;
           if (r.gltf_document) format = r.gltf_document->was_binary ? "glb" : "gltf";
           else if (!io.input_format.empty()) format = io.input_format;
@@ -135,7 +141,7 @@ RegisterCommand reg(10, [](CLI::App& app) -> std::function<int()> {
             r.stats["gltf_morph_targets"] = r.gltf->targets.size();
           }
         },
-        false);
+        OutputKind::Report);
   };
 });
 

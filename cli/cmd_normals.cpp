@@ -41,11 +41,12 @@ bool has_normals_for(const shadetool::Mesh& mesh, shadetool::NormalKind kind) {
                                              : mesh.has_vertex_normals() || mesh.has_corner_normals();
 }
 
-RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
-  static IoOptions io;
-  static NormalsOptions opt;
+RegisterCommand reg("normals", HelpSection::Edit, [](CLI::App& app) -> std::function<int()> {
+  auto options = std::make_shared<CommandOptions<NormalsOptions>>();  // bound to the flags, read by the run function
+  IoOptions& io = options->io;
+  NormalsOptions& opt = options->opt;
   auto* sub = app.add_subcommand("normals", "Compute vertex normals (default), corner normals split at creases, or face normals");
-  add_io_options(*sub, io, /*writes_mesh=*/true);
+  add_io_options(*sub, io, OutputKind::Mesh);
   auto* weight = sub->add_option("--weight", opt.weight,
                                  "How face normals are weighted into vertex normals: uniform (Gouraud), area, "
                                  "angle (Thuermer-Wuethrich, default), max (Max 1999)")
@@ -60,7 +61,9 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
   sub->add_option("--precision", opt.precision, "Accumulate in double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
   faces->excludes(crease);
-  return [weight, faces] {
+  return [options, weight, faces] {
+    const IoOptions& io = options->io;
+    const NormalsOptions& opt = options->opt;
     if (faces->count() > 0 && weight->count() > 0)
       throw UsageError("--weight applies to vertex and corner normals, not to --faces");
     shadetool::NormalsRequest request;
@@ -71,9 +74,9 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
     request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * shadetool::kPi / 180.0 : 0.0;
     request.precision = opt.precision == "float" ? shadetool::Precision::Float : shadetool::Precision::Double;
     request.recompute = opt.recompute;
-    return run_mesh_command(
+    return run_command(
         "normals", io,
-        [request](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [request, &opt](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_faces(mesh, input);
           if (request.recompute || !has_normals_for(mesh, request.kind)) shadetool::require_finite_positions(mesh, input);
           const shadetool::NormalsReport rep = shadetool::update_mesh_normals(mesh, request);
@@ -129,7 +132,7 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
                                                         : request.kind == shadetool::NormalKind::Corner ? "corners"
                                                                                                         : "vertices"));
         },
-        true);
+        OutputKind::Mesh);
   };
 });
 

@@ -38,14 +38,15 @@ void store_grey(shadetool::Mesh& mesh, const std::vector<float>& open, std::vect
     for (std::size_t k = 0; k < 3; ++k) colors[ch * i + k] = open[i];
 }
 
-RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
-  static IoOptions io;
-  static OcclusionOptions opt;
+RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::function<int()> {
+  auto options = std::make_shared<CommandOptions<OcclusionOptions>>();  // bound to the flags, read by the run function
+  IoOptions& io = options->io;
+  OcclusionOptions& opt = options->opt;
   auto* sub = app.add_subcommand(
       "occlusion",
       "Ambient occlusion by ray casting (Embree): per vertex or face, the cosine-weighted fraction of the sky "
       "open to distance D, as grey colours and/or a PLY quality property");
-  add_io_options(*sub, io, /*writes_mesh=*/true);
+  add_io_options(*sub, io, OutputKind::Mesh);
   sub->add_option("--samples", opt.samples, "Rays per vertex or face (default 64; error falls as N^-3/4)")
       ->check(CLI::Range(1u, 1u << 20))
       ->type_name("N");
@@ -57,13 +58,15 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       ->check(CLI::IsMember({"color", "quality", "both"}));
   sub->add_option("--per", opt.per, "One value per vertex (default) or per face")
       ->check(CLI::IsMember({"vertex", "face"}));
-  return [] {
+  return [command_options = options] {
+    const IoOptions& io = command_options->io;
+    const OcclusionOptions& opt = command_options->opt;
     shadetool::AmbientOcclusionOptions options;
     options.samples = opt.samples;
     options.max_distance = opt.distance;
     const bool per_face = opt.per == "face";
     const bool colors = opt.as != "quality", quality = opt.as != "color";
-    return run_mesh_command(
+    return run_command(
         "occlusion", io,
         [options, per_face, colors, quality](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_faces(mesh, input);
@@ -75,15 +78,13 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           shadetool::MeshOcclusion job;
           bool scene_stats = true;
           if (r.gltf_document && r.gltf && r.gltf_document_state) {
-            std::shared_ptr<void>& state = *r.gltf_document_state;
             const std::size_t index = std::size_t(r.gltf - r.gltf_document->primitives.data());
-            if (!state) {
-              state = std::make_shared<shadetool::GltfSceneOcclusion>(shadetool::gltf_scene_occlusion(
-                  *r.gltf_document, per_face, options, shadetool::gltf_source_name(*r.gltf_document)));
-            } else {
-              scene_stats = false;
-            }
-            const auto& scene = *static_cast<const shadetool::GltfSceneOcclusion*>(state.get());
+            const auto& scene = r.gltf_document_state->get_or_make<shadetool::GltfSceneOcclusion>(
+                [&](shadetool::GltfSceneOcclusion& made) {
+                  made = shadetool::gltf_scene_occlusion(*r.gltf_document, per_face, options,
+                                                         shadetool::gltf_source_name(*r.gltf_document));
+                },
+                &scene_stats);
             for (const auto& n : scene.notes) r.notes.push_back(n);  // the same line from every primitive: said once
             job.ao = scene.primitives[index];
             job.normals_computed = scene.normals_computed[index];
@@ -130,7 +131,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           r.stats["bvh_build_ms"] = s.build_ms;
           r.stats["degenerate_faces"] = s.degenerate_faces;
         },
-        true);
+        OutputKind::Mesh);
   };
 });
 

@@ -76,9 +76,10 @@ shadetool::RenderShading parse_shading(const std::string& s) {
   return shadetool::RenderShading::Phong;
 }
 
-RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
-  static IoOptions io;
-  static RenderCliOptions opt;
+RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::function<int()> {
+  auto options = std::make_shared<CommandOptions<RenderCliOptions>>();  // bound to the flags, read by the run function
+  IoOptions& io = options->io;
+  RenderCliOptions& opt = options->opt;
   auto* sub = app.add_subcommand(
       "render", "Render a mesh to a PNG (or PFM): flat, Gouraud or Phong shading with bake-lighting's lighting");
   add_io_options(*sub, io, OutputKind::Image);
@@ -111,7 +112,9 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       ->needs(shadows_flag)
       ->type_name("N");
 
-  return [] {
+  return [options] {
+    IoOptions& io = options->io;
+    const RenderCliOptions& opt = options->opt;
     if (opt.hdr) {
       if (!io.format.empty() && !is_pfm(shadetool::find_image_format(io.format)))
         throw UsageError("--hdr writes a float image (PFM), not --format " + io.format);

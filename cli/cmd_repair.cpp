@@ -100,11 +100,12 @@ void add_stats(const RepairReport& r, FileResult& out) {
   s["normals_recomputed"] = r.normals.total();
 }
 
-RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
-  static IoOptions io;  // static: must outlive parsing
-  static RepairCliOptions opt;
+RegisterCommand reg("repair", HelpSection::Edit, [](CLI::App& app) -> std::function<int()> {
+  auto options = std::make_shared<CommandOptions<RepairCliOptions>>();  // bound to the flags, read by the run function
+  IoOptions& io = options->io;
+  RepairCliOptions& opt = options->opt;
   auto* sub = app.add_subcommand("repair", "Make winding consistent, orient outward, fix broken normals, report");
-  add_io_options(*sub, io, /*writes_mesh=*/true);
+  add_io_options(*sub, io, OutputKind::Mesh);
   sub->add_option("--report", opt.report, "Write what was found and changed as a JSON object to FILE (one input only)");
   sub->add_option("--weight", opt.weight, "Weighting of recomputed normals: uniform, area, angle (default) or max")
       ->check(CLI::IsMember({"uniform", "area", "angle", "max"}));
@@ -112,7 +113,9 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
                 "Remove degenerate faces (zero area, repeated index, < 3 corners); default: report only");
   sub->add_option("--weld", opt.weld, "Merge vertices within distance EPS (>= 0) of each other before orienting")
       ->check(finite_number(0.0, std::numeric_limits<double>::infinity()));
-  return [] {
+  return [options] {
+    IoOptions& io = options->io;
+    const RepairCliOptions& opt = options->opt;
     if (!opt.report.empty() && io.inputs.size() != 1) throw UsageError("--report takes one input");
     if (opt.report == "-" && (io.output == "-" || io.json)) throw UsageError("--report - and -o - or --json all write stdout; choose one");
     if (!opt.report.empty() && opt.report != "-") {
@@ -123,9 +126,9 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
     }
     if (!opt.report.empty()) io.other_outputs = {{"--report", opt.report}};
     // The report is committed together with the mesh (driver.h: both or neither).
-    return run_mesh_command(
+    return run_command(
         "repair", io,
-        [](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [&io, &opt](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_finite_positions(mesh, input);
           shadetool::require_faces(mesh, input);
           shadetool::RepairOptions o;
@@ -142,7 +145,7 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
             r.other_files.emplace_back(opt.report, j.dump(2) + "\n");
           }
         },
-        true);
+        OutputKind::Mesh);
   };
 });
 

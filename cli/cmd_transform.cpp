@@ -139,14 +139,15 @@ shadetool::NormalsPolicy policy_from(const std::string& name) {
   return shadetool::NormalsPolicy::Transform;
 }
 
-RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
-  static IoOptions io;
-  static TransformCliOptions opt;
+RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::function<int()> {
+  auto command_options = std::make_shared<CommandOptions<TransformCliOptions>>();  // bound to the flags, read by the run function
+  IoOptions& io = command_options->io;
+  TransformCliOptions& opt = command_options->opt;
   auto* sub = app.add_subcommand(
       "transform",
       "Apply an affine map: positions by p' = A p + t, normals by the cofactor of A, mirrors re-wound. "
       "Flags repeat and act in command-line order (the first given acts first).");
-  add_io_options(*sub, io, /*writes_mesh=*/true);
+  add_io_options(*sub, io, OutputKind::Mesh);
   auto* scale = sub->add_option("--scale", opt.scale, "Scale about the origin: S (uniform) or SX,SY,SZ")->allow_extra_args(false);
   auto* rotate = sub->add_option("--rotate", opt.rotate,
                                  "Rotate DEG degrees about the axis (AX,AY,AZ) through the origin, "
@@ -163,7 +164,9 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
                   "or drop")
       ->check(CLI::IsMember({"transform", "recompute", "drop"}));
 
-  return [sub, scale, rotate, translate, matrix] {
+  return [command_options, sub, scale, rotate, translate, matrix] {
+    const IoOptions& io = command_options->io;
+    TransformCliOptions& opt = command_options->opt;
     // The maps in the order the flags were given: parse_order() lists every occurrence.
     const std::map<const CLI::Option*, const std::vector<std::string>*> values = {
         {scale, &opt.scale}, {rotate, &opt.rotate}, {translate, &opt.translate}, {matrix, &opt.matrix}};
@@ -190,7 +193,7 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
     const bool singular = cls.path == shadetool::TransformPath::Singular;
     const bool no_map = maps.empty();
 
-    return run_mesh_command("transform", io, [M, options, no_map, singular](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+    return run_command("transform", io, [M, options, no_map, singular](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       const bool had_normals = mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals();
       shadetool::TransformOptions file_options = options;
       if (singular && had_normals && options.normals == shadetool::NormalsPolicy::Transform)
@@ -228,7 +231,7 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
       }
       if (options.normals == shadetool::NormalsPolicy::Recompute && !had_normals)
         r.notes.push_back("the input has no normals: nothing to recompute");
-    }, true);
+    }, OutputKind::Mesh);
   };
 });
 

@@ -95,10 +95,6 @@ void add_io_options(CLI::App& sub, IoOptions& io, OutputKind kind) {
   sub.add_flag("--stats", io.stats, "Print counts and time per stage (read, compute, write) on stderr");
 }
 
-void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh) {
-  add_io_options(sub, io, writes_mesh ? OutputKind::Mesh : OutputKind::Report);
-}
-
 namespace {
 
 // A message or note as one printable line: bytes of the input quoted in it (a garbage token, a
@@ -338,7 +334,7 @@ void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, 
   std::vector<std::pair<std::string, std::vector<std::string>>> notes;
   nlohmann::json per_primitive = nlohmann::json::object();
   const bool several = doc.primitives.size() > 1;
-  std::shared_ptr<void> document_state;  // the step's work for the whole document (FileResult::gltf_document_state)
+  DocumentState document_state;  // the step's work for the whole document (FileResult::gltf_document_state)
   for (shadetool::GltfPrimitive& p : doc.primitives) {
     FileResult r;
     r.gltf = &p;
@@ -548,10 +544,6 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
     fmt::print(stderr, "shadetool: {} of {} files failed: {}\n", failures.load(), n, list);
   }
   return usage_failures > 0 ? kExitUsage : failures > 0 ? kExitFailure : kExitOk;
-}
-
-int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh) {
-  return run_command(command, io, step, writes_mesh ? OutputKind::Mesh : OutputKind::Report);
 }
 
 }  // namespace shadetool_cli

@@ -24,13 +24,14 @@
 // --report), naming them.
 //
 // A new subcommand: add_io_options(sub, io, OutputKind::Image) when it adds its flags, then
-// `return run_command("render", io, step, OutputKind::Image);` from its run function.
-// add_io_options(sub, io, bool) and run_mesh_command(...) are the older spelling of the same
-// (true = OutputKind::Mesh, false = OutputKind::Report).
+// `return run_command("render", io, step, OutputKind::Image);` from its run function (see
+// command_registry.h for the registration and where the options live).
 #pragma once
 
+#include <any>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,6 +66,32 @@ struct IoOptions {
   std::vector<std::pair<std::string, std::string>> other_outputs;
 };
 
+// A step's work for a whole glTF document (occlusion against the whole scene, one shadow BVH):
+// made at the document's first primitive, read at the others, dropped after the last. Typed: the
+// step names T, and a slot made with another type is a programming error (std::logic_error), not
+// a cast.
+class DocumentState {
+ public:
+  // The document's T: default-constructed and filled in place by fill(T&) at the first call (it
+  // does not move: a BVH may point into it), the same object after. `made` (optional) says
+  // whether this call made it.
+  template <class T, class Fill>
+  T& get_or_make(Fill&& fill, bool* made = nullptr) {
+    if (made) *made = !value_.has_value();
+    if (!value_.has_value()) {
+      auto fresh = std::make_shared<T>();
+      fill(*fresh);
+      value_ = std::move(fresh);
+    }
+    auto* held = std::any_cast<std::shared_ptr<T>>(&value_);
+    if (!held) throw std::logic_error("DocumentState: the document's state was made with another type");
+    return **held;
+  }
+
+ private:
+  std::any value_;  // std::shared_ptr<T>
+};
+
 // What one file's step reports back to the driver.
 struct FileResult {
   std::vector<std::string> notes;               // one line each on stderr, unless --quiet
@@ -87,9 +114,8 @@ struct FileResult {
   // can reach what a Mesh does not hold (tangents, morph targets, lights, cameras). Null otherwise.
   shadetool::GltfPrimitive* gltf = nullptr;
   const shadetool::GltfDocument* gltf_document = nullptr;
-  // A slot that lives across the document's primitives: a step that works on the whole document
-  // (occlusion against the whole scene) fills it at the first primitive and reads it after.
-  std::shared_ptr<void>* gltf_document_state = nullptr;
+  // A slot that lives across the document's primitives (DocumentState); null for other input.
+  DocumentState* gltf_document_state = nullptr;
 };
 
 using MeshStep = std::function<void(shadetool::Mesh& mesh, const std::string& input, FileResult& result)>;
@@ -100,10 +126,6 @@ void add_io_options(CLI::App& sub, IoOptions& io, OutputKind kind);
 // Runs `step` over every input and writes what it produced; returns the exit code (0, or 1 if any
 // file failed). Usage errors throw UsageError (exit 2, from main).
 int run_command(const std::string& command, const IoOptions& io, const MeshStep& step, OutputKind kind);
-
-// The same for commands that write meshes (`writes_mesh`) or only report (false: info).
-void add_io_options(CLI::App& sub, IoOptions& io, bool writes_mesh);
-int run_mesh_command(const std::string& command, const IoOptions& io, const MeshStep& step, bool writes_mesh);
 
 // Exit codes shared by every subcommand.
 constexpr int kExitOk = 0;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
+#include <tuple>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -27,19 +29,23 @@ int main(int argc, char** argv) {
   app.failure_message(CLI::FailureMessage::simple);
 
   auto& registry = command_registry();
-  std::sort(registry.begin(), registry.end(), [](auto& a, auto& b) { return a.order < b.order; });
+  std::sort(registry.begin(), registry.end(),
+            [](auto& a, auto& b) { return std::tie(a.section, a.name) < std::tie(b.section, b.name); });
   std::vector<std::pair<CLI::App*, std::function<int()>>> runners;
   for (auto& reg : registry) {
     const std::size_t before = app.get_subcommands({}).size();
     auto run = reg.add(app);
     auto subs = app.get_subcommands({});
-    if (subs.size() > before) runners.emplace_back(subs.back(), std::move(run));
+    if (subs.size() != before + 1 || subs.back()->get_name() != reg.name)
+      throw std::logic_error("command registration \"" + reg.name + "\" did not add that one subcommand");
+    runners.emplace_back(subs.back(), std::move(run));
   }
 
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e) == 0 ? kExitOk : kExitOk;
+  } catch (const CLI::CallForHelp& e) {  // --help: the help on stdout, exit 0
+    app.exit(e);
+    return kExitOk;
   } catch (const CLI::CallForAllHelp& e) {
     app.exit(e);
     return kExitOk;

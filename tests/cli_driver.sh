@@ -111,5 +111,21 @@ check "zero normal never written: one line" test "$(wc -l < "$tmp/err.txt")" -eq
 check "STL zero facet normals replaced on read, counted" grep -q "2 zero, 2 against the winding" "$tmp/err.txt"
 check "no zero normal in the PLY" test -z "$(awk '/end_header/{b=1;next} b && NF>=6 && $4==0 && $5==0 && $6==0' "$tmp/part.ply")"
 
+# Help and CLI11's parse errors (man/shadetool.1, EXIT STATUS): --help and --version exit 0 with
+# their text on stdout; every parse error (unknown subcommand or option, missing argument, a value
+# outside a flag's list) exits 2 with the error on stderr and nothing on stdout.
+for args in "--help" "normals --help" "render --help" "--version"; do
+  "$bin" $args > "$tmp/help.txt" 2> "$tmp/err.txt"
+  check "shadetool $args: exit 0, text on stdout only" test $? -eq 0 -a -s "$tmp/help.txt" -a ! -s "$tmp/err.txt"
+done
+for args in "" "no-such-command" "normals" "normals $tmp/a.obj --crease" "normals $tmp/a.obj --weight heaviest" \
+            "normals $tmp/a.obj --recompute=maybe" "info $tmp/a.obj --json extra-positional-is-an-input --no-such"; do
+  "$bin" $args > "$tmp/out.txt" 2> "$tmp/err.txt"
+  check "shadetool $args: parse error exits 2" test $? -eq 2 -a ! -s "$tmp/out.txt" -a -s "$tmp/err.txt"
+done
+# Subcommands in --help by section (inspect, edit, shade), then by name (cli/command_registry.h).
+order=$("$bin" --help | awk '/^Subcommands:/{s=1; next} s && /^  [a-z]/{printf "%s ", $1}')
+check "--help lists the subcommands in section order" test "$order" = "info normals repair transform bake-lighting occlusion render "
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include <shadetool/lighting/area_light.h>
+#include <shadetool/lighting/engine/skip_options.h>
 #include <shadetool/lighting/environment_map.h>
 #include <shadetool/lighting/look_at.h>
 #include <shadetool/lighting/shade_points.h>
@@ -71,9 +72,8 @@ std::function<void()> shade_job(const Scene& s, const Points& pts, ShadingSpace 
   return [&s, &pts, space, skips, report] {
     ShadeOptions o;
     o.space = space;
-    o.skips = skips;
     o.parallel = false;
-    const auto c = shade_points(s, pts.p, pts.n, o, report);
+    const auto c = shade_points(s, pts.p, pts.n, o, skips, report);
     g_sink += c[c.size() / 2];
   };
 }

@@ -16,8 +16,7 @@
 // The copy and the index check run with the GIL released: contiguous aligned arrays in one
 // converting pass into capacity reserved by core/bulk_reserve.h (huge pages), after one min/max
 // pass over the indices; strided or unaligned arrays element by element over TBB ranges
-// (core/engine/parallel.h). That copy costs 2.7 ms for 1M triangles (bench/python/results.md);
-// the view skips it. Arrays in a non-native byte order are converted to native first (a copy).
+// (core/engine/parallel.h). The view skips that copy (its cost: bench/python/results.md). Arrays in a non-native byte order are converted to native first (a copy).
 // Out: a result std::vector is moved into a capsule that owns it and viewed as a NumPy array:
 // no copy.
 // Errors: py::value_error with one line `FUNCTION: ARG: what is wrong` (shape, dtype, index).

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include <shadetool/geometry/degenerate_face.h>
-#include <shadetool/info/degenerate_faces.h>
+#include <shadetool/info/mesh_info.h>
 #include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
@@ -111,7 +111,7 @@ TEST_CASE("degenerate rule: info, repair and normals agree face for face on sliv
     CHECK(rule > 50);
     CHECK(rule < m.num_faces() / 2 - 50);
 
-    CHECK(info::degenerate_faces(m).total == rule);
+    CHECK(info::mesh_info(m).degenerate.count() == rule);
     const DegenerateFaces repaired = degenerate_faces(m);
     CHECK(repaired.count() == rule);
     for (std::size_t f = 0; f < m.num_faces(); ++f) CHECK((repaired.kind[f] != DegenerateKind::None) == bool(degenerate[f]));

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/run_process.h"
+#include "support/temp_dir.h"
 
 namespace {
 
@@ -73,4 +74,24 @@ TEST_CASE("info CLI: stdin with --input-format", "[cli][info]") {
   const Run r = run("info - --input-format off < " + data("dodecahedron.off"));
   CHECK(r.code == 0);
   CHECK(r.out.find("-: OFF (double)") == 0);
+}
+
+TEST_CASE("info CLI: a face with a NaN corner is a degenerate face, counted as repair's library counts it", "[cli][info]") {
+  // One count (geometry/degenerate_faces.h) for info and repair; info's own count used to leave a
+  // NaN face out of its total: this file was "1 (0 repeated index, 1 zero area)".
+  shadetool::testing::TempDir dir;
+  const std::string mesh = dir.write("nan.obj",
+                                     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nv 2 0 0\n"
+                                     "f 1 2 3\nf 1 2 4\nf 1 2 5\n");  // fine, NaN corner, collinear
+  const Run text = run("info " + mesh);
+  CHECK(text.code == 0);
+  CHECK(text.out.find("  degenerate faces       2 (0 repeated index, 1 zero area, 1 NaN/Inf)\n") != std::string::npos);
+  const Run json = run("info --json " + mesh);
+  const auto s = nlohmann::json::parse(json.out)["stats"];
+  CHECK(s["degenerate_faces"] == 2);
+  CHECK(s["zero_area_faces"] == 1);
+  CHECK(s["nonfinite_faces"] == 1);
+  // Without NaN faces the line is as it was (no NaN/Inf part).
+  const Run cube = run("info " + data("cube.obj"));
+  CHECK(cube.out.find("  degenerate faces       0 (0 repeated index, 0 zero area)\n") != std::string::npos);
 }

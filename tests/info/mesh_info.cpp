@@ -95,7 +95,7 @@ TEST_CASE("info: NaN and Inf are counted and kept out of the bounding box", "[me
   CHECK(m.bbox_min == Vec3d{0, 0, 0});
   CHECK(m.bbox_max == Vec3d{1, 2, 3});
   CHECK(m.unreferenced_vertices == 1);
-  CHECK(m.degenerate.nonfinite == 1);
+  CHECK(m.degenerate.non_finite == 1);
   Mesh all_nan;
   all_nan.add_vertex({NAN, NAN, NAN});
   CHECK(!mesh_info(all_nan).has_bbox);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include <shadetool/lighting/engine/skip_options.h>
 #include <shadetool/lighting/lighting_plan.h>
 #include <shadetool/lighting/shade_points.h>
 #include "lighting_test_util.h"
@@ -115,12 +116,11 @@ TEST_CASE("turning every skip off changes no bit of the result", "[lighting][pla
       s.world_from_object.t = {0.2, -0.3, 0.1};
     }
     for (ShadingSpace space : {ShadingSpace::World, ShadingSpace::Camera, ShadingSpace::Object}) {
-      ShadeOptions on, off;
-      on.space = off.space = space;
-      off.skips = SkipOptions::none();
+      ShadeOptions options;
+      options.space = space;
       ShadeReport r_on, r_off;
-      const auto a = shade_points(s, e.mesh.positions, N, on, &r_on);
-      const auto b = shade_points(s, e.mesh.positions, N, off, &r_off);
+      const auto a = shade_points(s, e.mesh.positions, N, options, &r_on);
+      const auto b = shade_points(s, e.mesh.positions, N, options, SkipOptions::none(), &r_off);
       INFO("trial " << trial << " space " << shading_space_name(space));
       CHECK(a == b);
       CHECK(r_on.counters.vertex_light_evaluations < r_off.counters.vertex_light_evaluations);  // the dark light

@@ -6,7 +6,6 @@
 #include <png.h>
 
 #include <shadetool/core/error.h>
-#include <shadetool/io/image_pfm.h>
 #include <shadetool/io/image_png.h>
 #include <shadetool/lighting/read_scene.h>
 #include "render_test_util.h"
@@ -69,17 +68,6 @@ TEST_CASE("the PNG is 8-bit RGB with an sRGB chunk and decodes to the bytes writ
   CHECK(image.height == 3);
   CHECK(back == px);
   CHECK_THROWS_AS(io::encode_png_srgb8(w, h, std::vector<std::uint8_t>(7), "t.png"), Error);
-}
-
-TEST_CASE("the PFM stores rows bottom to top as little-endian floats", "[render][pfm]") {
-  const std::vector<float> rgb = {1, 2, 3, 4, 5, 6};  // 1 x 2: top pixel (1,2,3), bottom (4,5,6)
-  const std::string bytes = io::encode_pfm(1, 2, rgb.data(), rgb.size(), "t.pfm");
-  const std::string header = "PF\n1 2\n-1.0\n";
-  REQUIRE(bytes.size() == header.size() + 24);
-  CHECK(bytes.compare(0, header.size(), header) == 0);
-  float first;
-  std::memcpy(&first, bytes.data() + header.size(), 4);  // this machine is little-endian (x86)
-  CHECK(first == 4.0f);
 }
 
 TEST_CASE("scene cameras: fov_y, near, far and orthographic are read and checked", "[render][camera]") {

@@ -1,8 +1,9 @@
 // affine.h: 3x3 matrices and affine maps x -> A x + t, composed and applied in double.
 //
 // Normals transform by the cofactor matrix cof(A) = det(A) A^-T (the inverse transpose up to the
-// positive or negative scale det(A)); see the lecture notes in shared/seeds ("Transforming
-// normals": t.n = 0 must survive the map, so n' = A^-T n). The cofactor needs no division, so it
+// positive or negative scale det(A)): t.n = 0 must survive the map, so n' = A^-T n (Turkowski,
+// "Properties of Surface-Normal Transformations", Graphics Gems, 1990; Physically Based Rendering,
+// 3rd ed., section 2.8.3 "Normals"). The cofactor needs no division, so it
 // stays defined and accurate when A is badly conditioned. When det(A) < 0 (a mirror) cof(A) n
 // points to the other side of the mapped surface: outward normals are sign(det A) cof(A) n, and a
 // mesh's winding must be reversed to keep faces oriented (transform/ does that).

@@ -6,8 +6,7 @@
 // Reserves n elements and, for blocks of 4 MiB or more on Linux, asks the kernel to back them
 // with transparent huge pages (madvise MADV_HUGEPAGE) before anything is written. Filling fresh
 // memory is most of the cost of reading a binary mesh: with 4 KiB pages every 4 KiB written
-// is one page fault (measured on the development VM: 24 MB of new arrays took 16 ms in 4 KiB
-// pages, 3-8 ms in huge pages; bench/io). Where huge pages are off or unavailable the advice is
+// is one page fault (bench/io/results.md). Where huge pages are off or unavailable the advice is
 // ignored and nothing changes. Only the 2 MiB-aligned interior of the block is advised.
 #pragma once
 
@@ -44,11 +43,11 @@ void reserve_bulk(std::vector<T, Allocator>& v, std::size_t n) {
 
 // An allocator for large scratch and output arrays: value-initialisation is default-initialisation
 // (resize(n) on a vector of a trivial type leaves the new elements unwritten: no serial memset of
-// memory that the next pass overwrites in full, ~1 ms per 12 MB here on top of the page faults),
+// memory that the next pass overwrites in full, a cost on top of the page faults),
 // and blocks of 1 MiB or more are 2 MiB-aligned and advised as huge pages as a whole (one fault
 // and one kernel-zeroed page per 2 MiB instead of 512 faults; reserve_bulk can only advise the
-// aligned interior of a block malloc placed). Measured on the development VM (bench/repair):
-// the pairing of 1M triangles spent a quarter of its time in the kernel faulting in 4 KiB pages.
+// aligned interior of a block malloc placed); without it the pairing of bench/repair spent much of
+// its time in the kernel faulting in 4 KiB pages (bench/repair/results.md).
 // Copies, comparisons and data() are as for std::vector (same element type; only the allocator
 // differs).
 template <class T>

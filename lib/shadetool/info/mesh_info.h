@@ -7,7 +7,7 @@
 //   attributes     which optional arrays are present
 //   topology       edges, boundary / non-manifold / inconsistently wound edges, non-manifold
 //                  vertices (see edge_topology.h), connected components (connected_components.h)
-//   defects        degenerate faces (degenerate_faces.h), unreferenced vertices, vertices with NaN
+//   defects        degenerate faces (geometry/degenerate_faces.h, the count repair reports), unreferenced vertices, vertices with NaN
 //                  or Inf coordinates, NaN/Inf values among normals, texcoords and colours
 // Nothing is modified; the mesh may be invalid in every way listed above, but its indices must be
 // in range (readers guarantee that).
@@ -19,7 +19,7 @@
 
 #include <shadetool/core/mesh.h>
 #include <shadetool/core/vec3.h>
-#include <shadetool/info/degenerate_faces.h>
+#include <shadetool/geometry/degenerate_faces.h>
 #include <shadetool/info/edge_topology.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so

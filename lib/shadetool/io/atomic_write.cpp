@@ -64,8 +64,8 @@ std::string write_temporary(const std::string& path, std::string_view bytes) {
   // Keep the mode of a file being replaced; a new file gets 0666 & ~umask like fopen would.
   const mode_t mode = ::stat(path.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~current_umask());
   // fsync only when SHADETOOL_FSYNC=1: rename already makes the replacement atomic for every
-  // reader and for a failing or killed process; fsync adds durability across a power loss at
-  // ~8 ms per file here, which dominated pipelines of many small meshes (bench/pipeline).
+  // reader and for a failing or killed process; fsync adds durability across a power loss at a
+  // cost per file that dominated pipelines of many small meshes (bench/pipeline/results.md).
   static const bool want_fsync = [] {
     const char* e = std::getenv("SHADETOOL_FSYNC");
     return e != nullptr && std::string_view(e) == "1";

@@ -101,7 +101,8 @@ struct EdgeMoment {
   double pow_a, pow_b;                   // A^(k-1), hb^(k-1) for the next step (k+2 needs ^(k+1))
 };
 
-// ilogb and ldexp for the normal range, from the bits (glibc's are calls: 7% of a rect light).
+// ilogb and ldexp for the normal range, from the bits (glibc's are calls, a visible part of a rect
+// light's time: bench/lighting/results.md).
 int binary_exponent(double x) {  // x > 0 finite; subnormals give -1023 (the caller's slow path)
   std::uint64_t bits;
   std::memcpy(&bits, &x, sizeof bits);

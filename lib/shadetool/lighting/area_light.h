@@ -41,6 +41,7 @@
 
 #include <cstddef>
 
+#include <shadetool/core/math_constants.h>
 #include <shadetool/core/vec3.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -57,8 +58,8 @@ constexpr int kMaxClippedVertices = kMaxAreaVertices + 2;
 // q_i x d_i and angle are then accurate to an ulp, and Lambert's sum cancels only as the true
 // value does).
 // Fixed storage of N vectors left uninitialised (Vec3d's members have initialisers, so a plain
-// array would be zero-filled on every call: 3 KB per polygon per point, measured as the larger
-// part of a rect light's cost).
+// array would be zero-filled on every call, per polygon per point: the larger part of a rect
+// light's cost; bench/lighting/results.md).
 template <int N>
 struct Vec3Buffer {
   Vec3Buffer() {}
@@ -95,7 +96,7 @@ inline double edge_angle(double s, double c) {
   // Nearest of 0, pi/8, pi/4 (boundaries tan(pi/16), tan(3 pi/16)): |x| <= tan(pi/16) = 0.1989.
   const bool k1 = num >= 0.19891236737965800 * den, k2 = num >= 0.66817863791929890 * den;
   const double tk = k2 ? 1.0 : k1 ? 0.41421356237309503 : 0.0;              // tan(pi/8) rounded
-  const double base = k2 ? 0.78539816339744831 : k1 ? 0.39269908169872414 : 0.0;  // pi/4, pi/8
+  const double base = k2 ? kQuarterPi : k1 ? kPi / 8 : 0.0;  // pi/8 exact: pi scaled by 2^-3
   // den + tk num >= den > 0, or 1 where the result is the 0 selected below: divisor checked
   const double x = (num - tk * den) / (zero ? 1.0 : den + tk * num);
   const double y = x * x, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
@@ -105,8 +106,8 @@ inline double edge_angle(double s, double c) {
   const double q0 = c3 + c5 * y, q1 = c7 + c9 * y, q2 = c11 + c13 * y, q3 = c15 + c17 * y, q4 = c19 + c21 * y;
   const double p = (q0 + q1 * y2) + (q2 + q3 * y2) * y4 + q4 * y8;
   const double a = base + (x + x * (y * p));  // atan(t_k) = theta_k to 2e-17 (t1's rounding)
-  const double b = swap ? 1.5707963267948966 - a : a;
-  const double theta = c < 0 ? 3.1415926535897931 - b : b;
+  const double b = swap ? kHalfPi - a : a;
+  const double theta = c < 0 ? kPi - b : b;
   return zero ? 0.0 : theta;
 }
 

@@ -57,7 +57,7 @@ std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, con
     set3(wn, i, Vec3d(transform_normal(cof, Normal3d(get3(normals, i)))));
   }
   const ShadingModel model = options.model ? *options.model : scene.model;
-  const LightingPlan plan = plan_lighting(scene, model, options.skips);
+  const LightingPlan plan = plan_lighting(scene, model);
   const std::vector<double> visibility = light_visibility(bvh, scene, plan, wp, wn, {}, shadows.samples, &result.shadows);
   ShadeOptions with = options;
   with.visibility = &visibility;

@@ -1,7 +1,10 @@
 // lighting_plan.cpp: see lighting_plan.h.
 #include <shadetool/lighting/lighting_plan.h>
+#include <shadetool/lighting/engine/skip_options.h>
 
 namespace shadetool {
+
+LightingPlan plan_lighting(const Scene& scene, ShadingModel model) { return plan_lighting(scene, model, SkipOptions{}); }
 
 LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOptions& skips) {
   const Material& m = scene.material;

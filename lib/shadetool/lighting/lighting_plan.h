@@ -1,6 +1,6 @@
 // lighting_plan.h: which terms of the lighting equation a scene needs, decided once per mesh.
 //
-// Inputs:  scene  (lighting/scene.h), model (the scene's, or the CLI's --model), skip options
+// Inputs:  scene  (lighting/scene.h), model (the scene's, or the CLI's --model)
 // Output:  LightingPlan: the lights worth evaluating per point, the constant part of the colour,
 //          and whether the specular term, the view vector V and the point positions are needed.
 //
@@ -14,8 +14,9 @@
 // Ambient lights and the global ambient are folded into `base` (emission + ka * ambient), which
 // does not depend on the point.
 //
-// SkipOptions turn each skip off (everything computed, zeros added) so that bench/lighting can
-// time what each saves and tests can check that skipping changes no bit of the result.
+// Every skip is always on here; engine/skip_options.h (internal) turns each off (everything
+// computed, zeros added) so that bench/lighting can time what each saves and tests can check that
+// skipping changes no bit of the result.
 #pragma once
 
 #include <cstddef>
@@ -26,17 +27,6 @@
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
-
-struct SkipOptions {
-  bool dark_lights = true;     // drop lights with a zero product with the material
-  bool specular = true;        // no specular work when it is zero
-  bool view_vector = true;     // no V when nothing reads it
-  bool early_tests = true;     // back-facing and spot-cone tests before attenuation, pow, specular
-  bool identity_transform = true;  // an exactly-identity object-to-space map is not applied
-  bool unused_positions = true;    // points are not transformed when nothing reads them
-
-  static SkipOptions none() { return {false, false, false, false, false, false}; }
-};
 
 struct LightingPlan {
   ShadingModel model = ShadingModel::BlinnPhong;
@@ -51,7 +41,7 @@ struct LightingPlan {
   std::size_t area_lights = 0;        // area and sky lights among `lights` (evaluated in world space)
 };
 
-LightingPlan plan_lighting(const Scene& scene, ShadingModel model, const SkipOptions& skips = {});
+LightingPlan plan_lighting(const Scene& scene, ShadingModel model);
 
 // Component-wise product (colour times colour).
 inline Vec3d mul(const Vec3d& a, const Vec3d& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }

@@ -43,8 +43,10 @@ std::string describe(const json& j) {
     case json::value_t::string: return "a string";
     case json::value_t::array: return "an array of " + std::to_string(j.size());
     case json::value_t::object: return "an object";
-    default: return "a number";
+    case json::value_t::number_integer: case json::value_t::number_unsigned: case json::value_t::number_float:
+    case json::value_t::binary: case json::value_t::discarded: break;
   }
+  return "a number";
 }
 
 std::string number_text(double x) {

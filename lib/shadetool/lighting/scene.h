@@ -36,7 +36,8 @@ enum class LightType {
   Environment,  // radiance from an equirectangular HDR image around the scene (issue 16)
 };
 // Every switch over LightType is exhaustive with no default: a new kind does not compile
-// (-Wswitch) until each place that reads lights has said what the kind does there.
+// (-Werror=switch and -Werror=switch-enum in CMakeLists.txt) until each place that reads lights
+// has said what the kind does there.
 
 enum class AreaShape {
   Polygon,  // planar convex polygon; rect is stored as one (corners center -u -v, +u -v, +u +v, -u +v)

@@ -3,6 +3,7 @@
 
 #include <shadetool/lighting/engine/shade_batched.h>
 #include <shadetool/lighting/engine/shade_point.h>
+#include <shadetool/lighting/engine/skip_options.h>
 
 #include <stdexcept>
 
@@ -98,21 +99,27 @@ ShadeCounters shade_all_points(const Metric& g, const ShadingFrame& frame, const
 std::vector<double> shade_points(const Scene& scene, const std::vector<double>& points_object,
                                  const std::vector<double>& normals_object, const ShadeOptions& options,
                                  ShadeReport* report) {
+  return shade_points(scene, points_object, normals_object, options, SkipOptions{}, report);
+}
+
+std::vector<double> shade_points(const Scene& scene, const std::vector<double>& points_object,
+                                 const std::vector<double>& normals_object, const ShadeOptions& options,
+                                 const SkipOptions& skips, ShadeReport* report) {
   if (points_object.size() % 3 != 0 || normals_object.size() != points_object.size())
     throw std::invalid_argument("shade_points: points and normals must both be #P by 3");
   const std::size_t n = points_object.size() / 3;
   ShadeReport r;
   r.model = options.model ? *options.model : scene.model;
-  r.plan = plan_lighting(scene, r.model, options.skips);
+  r.plan = plan_lighting(scene, r.model, skips);
   if (options.space == ShadingSpace::Auto) {
-    const SpaceChoice choice = choose_space(scene, r.plan, options.skips);
+    const SpaceChoice choice = choose_space(scene, r.plan, skips);
     r.space = choice.space;
     r.space_reason = choice.reason;
   } else {
     r.space = options.space;
     r.space_reason = std::string(shading_space_name(r.space)) + " (requested)";
   }
-  const ShadingFrame frame = make_frame(scene, r.plan, r.space, options.skips);
+  const ShadingFrame frame = make_frame(scene, r.plan, r.space, skips);
   const bool map_points = r.plan.positions;
 
   EquationSetup eq;
@@ -120,7 +127,7 @@ std::vector<double> shade_points(const Scene& scene, const std::vector<double>& 
   eq.specular = r.plan.specular;
   eq.view = r.plan.view;
   eq.two_sided = scene.two_sided;
-  const bool early = options.skips.early_tests;
+  const bool early = skips.early_tests;
   eq.shininess = scene.material.shininess;
   eq.base = r.plan.base;
 

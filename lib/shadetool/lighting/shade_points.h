@@ -4,7 +4,7 @@
 //          points_object   #P by 3 flat doubles, object space
 //          normals_object  #P by 3 flat doubles, object space, any length (outward); a zero or
 //                          non-finite normal leaves only the emission and ambient terms
-//          options         model (default: the scene's), space (default auto), skips, threads
+//          options         model (default: the scene's), space (default auto), threads
 // Output:  #P by 3 flat doubles, linear RGB, unclamped (the equation of lighting_equation.h)
 //          report (optional): model and space used, what was skipped, counters
 //
@@ -58,7 +58,6 @@ struct ShadeCounters {
 struct ShadeOptions {
   std::optional<ShadingModel> model;  // overrides scene.model
   ShadingSpace space = ShadingSpace::Auto;
-  SkipOptions skips;                  // all on by default; off only to measure or test them
   bool parallel = true;
   // Shadows (lighting/light_visibility.h computes it): null = no shadows. Otherwise #P rows of
   // 2 * plan.lights.size() values in [0, 1]: per kept light (plan order) its visible fraction,

@@ -8,6 +8,7 @@
 
 #include <shadetool/core/affine.h>
 #include <shadetool/lighting/engine/metric.h>
+#include <shadetool/lighting/engine/skip_options.h>
 
 namespace shadetool {
 
@@ -102,7 +103,8 @@ SpaceMaps maps_for(const Scene& scene, ShadingSpace space) {
       m.world_from_space = M;
       invert_affine(M, m.space_from_world);
       break;  // space_from_object = identity
-    default:  // World
+    case ShadingSpace::Auto:  // never reaches here: make_frame resolves Auto to World first
+    case ShadingSpace::World:
       m.space_from_object = M;
       break;
   }
@@ -110,6 +112,10 @@ SpaceMaps maps_for(const Scene& scene, ShadingSpace space) {
 }
 
 }  // namespace
+
+ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpace space) {
+  return make_frame(scene, plan, space, SkipOptions{});
+}
 
 ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpace space, const SkipOptions& skips) {
   ShadingFrame frame;
@@ -182,6 +188,8 @@ ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpa
   }
   return frame;
 }
+
+SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan) { return choose_space(scene, plan, SkipOptions{}); }
 
 SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan, const SkipOptions& skips) {
   const ShadingSpace order[3] = {ShadingSpace::Object, ShadingSpace::World, ShadingSpace::Camera};

@@ -103,8 +103,7 @@ struct ShadingFrame {
 };
 
 // Brings the plan's lights and the eye into `space` (not Auto) and sets the per-point maps.
-ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpace space,
-                        const SkipOptions& skips = {});
+ShadingFrame make_frame(const Scene& scene, const LightingPlan& plan, ShadingSpace space);
 
 struct SpaceChoice {
   ShadingSpace space = ShadingSpace::Object;
@@ -113,7 +112,7 @@ struct SpaceChoice {
 };
 
 // The cheapest space that is exact for this scene and plan (all three are exact; see above).
-SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan, const SkipOptions& skips = {});
+SpaceChoice choose_space(const Scene& scene, const LightingPlan& plan);
 
 // cos of an angle in degrees, exact at 0, 90 and 180 (the values that decide cone membership at
 // the cone's edge for the common cutoffs).

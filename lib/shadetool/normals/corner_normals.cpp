@@ -24,6 +24,7 @@
 #include <shadetool/core/error.h>
 
 #include <shadetool/geometry/interior_angle.h>
+#include <shadetool/geometry/union_find.h>
 #include <shadetool/normals/engine/accumulate_by_vertex.h>
 #include <shadetool/normals/engine/corner_contributions.h>
 #include <shadetool/normals/face_normals.h>
@@ -83,14 +84,6 @@ struct CornerTopology {
     return mesh.corner_vertex[c > mesh.face_begin(f) ? c - 1 : mesh.face_end(f) - 1];
   }
 };
-
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];  // path halving
-    i = parent[i];
-  }
-  return i;
-}
 
 // Sums of the corners' contributions into rows: row target[c] < rows for every corner, added in
 // ascending corner order by the deterministic parallel scatter (accumulate_by_vertex.h). The sums
@@ -204,8 +197,7 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
             const Vec3d na = get3(fn, fa), nb = get3(fn, fb), x = cross(na, nb);
             // unit vectors: |na x nb| <= 1, no scaling needed before squaring
             if (interior_angle(std::sqrt(dot(x, x)), dot(na, nb)) <= crease_angle) {
-              const std::uint32_t ra = find_root(parent, la), rb = find_root(parent, lb);
-              if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);  // root = smallest local index
+              union_find_unite(parent.data(), la, lb);  // root = smallest local index
             }
           }
         }
@@ -219,7 +211,7 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
       for (std::uint32_t i = 0; i < d; ++i) {
         const std::uint32_t c = vc.corners[begin + i];
         if (!face_valid(topo.face(c))) { any_degenerate = true; continue; }
-        const std::uint32_t r = find_root(parent, i);
+        const std::uint32_t r = union_find_root(parent.data(), i);
         if (number[r] == ~0u) number[r] = g++;
         out.corner_index[c] = number[r];
       }

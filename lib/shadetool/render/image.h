@@ -1,7 +1,7 @@
 // image.h: what the renderer produces: a linear float RGB image, row 0 at the top.
 //
 // Shape:  rgb  height * width * 3 floats, linear (not sRGB-encoded), unclamped; pixel (x, y) at
-//              3 * (y * width + x). The writers (io/image_png.h, io/image_pfm.h) encode it.
+//              3 * (y * width + x). The writers (io/image_io.h: PNG, PFM) encode it.
 #pragma once
 
 #include <cstddef>
@@ -14,7 +14,7 @@ namespace shadetool {
 
 // An allocator whose resize() leaves new floats uninitialised: the renderer writes every pixel
 // exactly once, so zero-filling a 1920x1080 image first (25 MB) would only double the memory
-// traffic (measured: 17% of a 10k-triangle Gouraud render).
+// traffic (bench/render/results.md).
 template <class T>
 struct DefaultInitAllocator : std::allocator<T> {
   template <class U>

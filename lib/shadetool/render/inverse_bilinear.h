@@ -1,6 +1,8 @@
-// inverse_bilinear.h: (u, v) of a point in a quadrilateral, the inverse of the bilinear map of the
-// lecture notes (shared/seeds/003, "Point sample quadrilateral: inverse bilinear map, then use
-// u, v to interpolate"):
+// inverse_bilinear.h: (u, v) of a point in a quadrilateral, the inverse of the bilinear map, so a
+// point sample of a quad interpolates its corners' attributes by (u, v) (Heckbert, "Fundamentals of
+// Texture Mapping and Image Warping", M.S. thesis, UC Berkeley, 1989: bilinear mappings, whose
+// inverse is a quadratic; the cancellation-free roots as in Press et al., Numerical Recipes, 3rd
+// ed., section 5.6 "Quadratic and Cubic Equations"):
 //
 //   P(u, v) = (1-v)((1-u) P00 + u P10) + v((1-u) P01 + u P11)
 //           = P00 + u e + v f + u v g,   e = P10 - P00, f = P01 - P00, g = P00 - P10 + P11 - P01

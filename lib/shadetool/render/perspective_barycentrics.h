@@ -2,7 +2,7 @@
 //
 // Screen-space barycentrics lambda_i (affine in the image) do not interpolate attributes of a
 // perspective projection; 1/w and attr/w do (Heckbert and Moreton 1991, "Interpolation for
-// polygon texture mapping and shading"; the step lecture notes skip). So
+// polygon texture mapping and shading", Technical Report, 1991). So
 //
 //   b_i = (lambda_i / w_i) / sum_j (lambda_j / w_j),   given inv_w_i = 1 / w_i > 0
 //

@@ -197,8 +197,8 @@ void check_options(const RenderOptions& o, const std::string& name) {
 }
 
 // The camera's eye inside a closed mesh sees only the inside: refuse (|w| > 1/2, winding number).
-// Only an eye inside the mesh's bounding box can be inside the mesh: the winding-number tree (about
-// 1 s for 1M triangles) is built only then.
+// Only an eye inside the mesh's bounding box can be inside the mesh: the winding-number tree (costly
+// on large meshes: bench/render/results.md) is built only then.
 void check_eye_outside(const Mesh& mesh, const Scene& scene, const RenderCamera& cam, const Bounds3d& bounds,
                        const std::string& name) {
   if (cam.orthographic || mesh.num_faces() == 0 || bounds.empty) return;

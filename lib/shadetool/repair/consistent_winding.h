@@ -41,8 +41,7 @@
 // Edges a face uses twice and non-manifold edges neither propagate nor count as inconsistent.
 // Why union-find: it reads corner_mate in order and touches the face array near the faces being
 // joined (with the vertex order coherent, as exporters write it), where a graph search jumps
-// along its front; measured in bench/repair (union-find ~11 ms, sorted DFS ~17 ms, BFS ~31 ms,
-// 1M triangles; now 7.4 ms on 1 thread and 4.6 ms with the halves on 2).
+// along its front; the fastest of the three in bench/repair (figures: bench/repair/results.md).
 // Cost: O(C alpha(F)); the labelling pass is serial. At most 2^31 - 1 faces (a face index and a parity share 32 bits).
 #pragma once
 

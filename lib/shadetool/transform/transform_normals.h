@@ -3,9 +3,9 @@
 //
 // Formula: a tangent t of the surface maps to A t; a normal n must stay orthogonal to every
 // mapped tangent: (A t) . n' = t . (A^T n') = 0 for all t with t . n = 0, so A^T n' is parallel
-// to n and n' is parallel to A^-T n (the "inverse transpose" rule; shared/seeds lecture notes,
-// "Transforming normals": t^T M^T (M^T)^-1 n = 0; Turkowski, "Properties of Surface-Normal
-// Transformations", Graphics Gems 1990). We use the cofactor matrix cof(A) = det(A) A^-T instead:
+// to n and n' is parallel to A^-T n (the "inverse transpose" rule: t^T A^T (A^T)^-1 n = 0;
+// Turkowski, "Properties of Surface-Normal Transformations", Graphics Gems, 1990; Pharr, Jakob
+// and Humphreys, Physically Based Rendering, 3rd ed., section 2.8.3 "Normals"). We use the cofactor matrix cof(A) = det(A) A^-T instead:
 // the same direction up to the factor det(A), computed from 2x2 minors with no division, so it is
 // defined and accurate however badly A is conditioned. The factor's sign flips the normal when
 // det(A) < 0; outward normals are sign(det A) cof(A) n, and transform_mesh re-winds the faces of

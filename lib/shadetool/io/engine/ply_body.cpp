@@ -236,7 +236,7 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
         case Target::V: if (layout.has_vtex()) vtexcoords[2 * i + 1] = v; break;
         case Target::Quality: mesh.vertex_quality[i] = float(v); break;
         case Target::Extra: mesh.vertex_properties[std::size_t(prop.extra)].values[i] = v; break;
-        default: break;
+        case Target::Skip: case Target::Indices: case Target::TexcoordList: break;  // not a vertex's scalar
       }
     }
   }
@@ -302,7 +302,8 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
           break;
         case Target::Quality: mesh.face_quality[i] = float(v); break;
         case Target::Extra: mesh.face_properties[std::size_t(prop.extra)].values[i] = v; break;
-        default: break;
+        case Target::Skip: case Target::X: case Target::Y: case Target::Z: case Target::U: case Target::V:
+        case Target::Indices: case Target::TexcoordList: break;  // not a face's scalar
       }
     }
     if (layout.face_texcoords) {

@@ -62,8 +62,9 @@ inline double color_divisor(Type t) {
     case Type::UInt16: case Type::Int16: return 65535.0;
     case Type::UInt32: case Type::Int32: return 4294967295.0;
     case Type::Float32: case Type::Float64: return 1.0;
-    default: return 255.0;
+    case Type::UInt8: case Type::Int8: return 255.0;
   }
+  return 255.0;
 }
 
 enum class Target { Skip, X, Y, Z, NX, NY, NZ, R, G, B, A, U, V, Quality, Indices, TexcoordList, Extra };
@@ -124,8 +125,9 @@ inline std::int64_t load_as_int(const char* p, Type t, bool swap) {
     case Type::UInt16: return load<std::uint16_t>(p, swap);
     case Type::Int32: return load<std::int32_t>(p, swap);
     case Type::UInt32: return load<std::uint32_t>(p, swap);
-    default: return 0;
+    case Type::Float32: case Type::Float64: return 0;  // refused at header time
   }
+  return 0;
 }
 
 

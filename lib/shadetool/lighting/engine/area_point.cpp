@@ -13,8 +13,8 @@ namespace lighting_engine {
 namespace {
 
 // Unit vector by engine/metric.h's rule (a power-of-two pre-scale only outside [2^-500, 2^500],
-// one division): core's normalized_or divides six times and calls fmax twice, measured as a fifth
-// of a rect light's per-point time. Zero (or unrepresentable) gives zero.
+// one division): core's normalized_or divides six times and calls fmax twice, a visible part of a
+// rect light's per-point time (bench/lighting/results.md). Zero (or unrepresentable) gives zero.
 Vec3d unit(const Vec3d& v) { return metric_normalize(IdentityMetric{}, v).unit; }
 
 }  // namespace

@@ -19,8 +19,8 @@
 // computation gives the bits the scaled one would.
 // The trigger and the scale both come from m = sampled_max_coordinate: max |coordinate| over
 // kRangeSample vertices spread evenly over the mesh (all vertices when #V <= kRangeSample): ~1000
-// loads instead of a pass over 3 #V doubles (1M triangles: 0.05 ms cold, against 0.84 ms for the
-// full scan and ~10-20 ms for the kernels; bench/normals/results/notes.md). m scales exactly with
+// loads instead of a pass over 3 #V doubles, which is not negligible beside the kernels (figures:
+// bench/normals/results/notes.md). m scales exactly with
 // the mesh (its ilogb moves by k), so a 2^k-scaled mesh is copied to the same bits as the mesh
 // itself, whatever its unsampled vertices hold. A mesh whose unsampled vertices lie far (2^32 and
 // more) beyond its sampled ones is computed as far as the kernels' range allows (out-of-range faces
