@@ -14,6 +14,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include <shadetool/lighting/bake_lighting.h>  // ShadingFrequency's vocabulary (--per)
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/gltf/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
@@ -56,12 +57,13 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
   sub->add_option("--as", opt.as, "Store the open fraction as grey colours, the PLY quality property, or both (default)")
       ->check(CLI::IsMember({"color", "quality", "both"}));
   sub->add_option("--per", opt.per, "One value per vertex (default) or per face")
-      ->check(CLI::IsMember({"vertex", "face"}));
+      ->check(CLI::IsMember(shadetool::shading_frequency_names()));
   return [] {
     shadetool::AmbientOcclusionOptions options;
     options.samples = opt.samples;
     options.max_distance = opt.distance;
-    const bool per_face = opt.per == "face";
+    const bool per_face =
+        shadetool::parse_shading_frequency(opt.per, "--per") == shadetool::ShadingFrequency::PerFace;
     const bool colors = opt.as != "quality", quality = opt.as != "color";
     return run_mesh_command(
         "occlusion", io,

@@ -34,7 +34,7 @@ namespace {
 
 struct TransformCliOptions {
   std::vector<std::string> scale, rotate, translate, matrix;
-  std::string normals = "transform";
+  std::string normals = shadetool::normals_policy_name(shadetool::NormalsPolicy::Transform);
 };
 
 std::string trim(std::string_view s) {
@@ -133,12 +133,6 @@ shadetool::Affine3d map_for(const std::string& flag, const std::string& value) {
   }
 }
 
-shadetool::NormalsPolicy policy_from(const std::string& name) {
-  if (name == "recompute") return shadetool::NormalsPolicy::Recompute;
-  if (name == "drop") return shadetool::NormalsPolicy::Drop;
-  return shadetool::NormalsPolicy::Transform;
-}
-
 RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
   static IoOptions io;
   static TransformCliOptions opt;
@@ -161,7 +155,7 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
   sub->add_option("--normals", opt.normals,
                   "Normals: transform (default; by the cofactor of A), recompute (from the transformed faces), "
                   "or drop")
-      ->check(CLI::IsMember({"transform", "recompute", "drop"}));
+      ->check(CLI::IsMember(shadetool::normals_policy_names()));
 
   return [sub, scale, rotate, translate, matrix] {
     // The maps in the order the flags were given: parse_order() lists every occurrence.
@@ -184,7 +178,7 @@ RegisterCommand reg(40, [](CLI::App& app) -> std::function<int()> {
       throw UsageError("the composed transform has an entry that overflows double (|entry| > 1.8e308)");
     }
     shadetool::TransformOptions options;
-    options.normals = policy_from(opt.normals);
+    options.normals = shadetool::parse_normals_policy(opt.normals, "--normals");
     // A singular map is fine for a mesh with no normals (it is flattened, and a note says so); a
     // mesh with normals to transform is refused, file by file (exit 1), with the reason.
     const bool singular = cls.path == shadetool::TransformPath::Singular;
