@@ -67,15 +67,7 @@ shadetool::Scene gltf_own_scene(const std::string& input, FileResult& r) {
 void check_bakeable(const shadetool::Mesh& mesh, const std::string& input, shadetool::ShadingFrequency frequency) {
   shadetool::require_finite_positions(mesh, input);
   shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
-  switch (frequency) {
-    case shadetool::ShadingFrequency::PerFace:
-      shadetool::require_faces(mesh, input);
-      break;
-    case shadetool::ShadingFrequency::PerVertex:
-      if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0)
-        throw shadetool::Error(shadetool::located(input, 0, "no vertex normals and no faces to compute them from"));
-      break;
-  }
+  shadetool::require_bakeable(mesh, frequency, input);
 }
 
 // A glTF file lit by its own lights: shadows from its whole scene (every primitive placed by its

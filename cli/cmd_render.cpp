@@ -97,8 +97,6 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
         throw UsageError("--hdr writes a float image (PFM): name the output .pfm");
       if (io.format.empty()) io.format = "pfm";
     }
-    for (double c : opt.background)
-      if (!(c >= 0) || !std::isfinite(c)) throw UsageError("--background channels must be finite and >= 0");
 
     shadetool::RenderOptions ro;
     ro.shading = shadetool::parse_render_shading(opt.shading, "--shading");

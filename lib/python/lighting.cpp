@@ -75,16 +75,14 @@ void init_lighting(py::module_& m) {
         shadetool::ShadowOptions shadow;
         shadow.enabled = shadows;
         shadow.samples = samples;
-        shadetool::check_shadow_options(shadow, "bake_lighting");  // the library's limit
+        shadetool::check_shadow_options(shadow, "bake_lighting: samples");  // the library's limit
         const auto frequency = per_face ? shadetool::ShadingFrequency::PerFace : shadetool::ShadingFrequency::PerVertex;
         shadetool::BakeResult baked;
         {
           py::gil_scoped_release nogil;
           shadetool::require_finite_positions(*mesh, "bake_lighting: V");
           shadetool::require_finite_normals(*mesh, "bake_lighting: N", "recompute them (vertex_normals) or repair first");
-          if (per_face) shadetool::require_faces(*mesh, "bake_lighting: F");
-          else if (mesh->num_faces() == 0 && !mesh->has_vertex_normals() && mesh->num_vertices() > 0)
-            throw shadetool::Error("bake_lighting: no vertex normals and no faces to compute them from");
+          shadetool::require_bakeable(*mesh, frequency, per_face ? "bake_lighting: F" : "bake_lighting");
           baked = shadetool::bake_lighting(*mesh, scene, frequency, shade, shadow);
         }
         std::size_t nonfinite = 0;
@@ -123,12 +121,11 @@ positions or normals.
          std::uint32_t seed) {
         const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "occlusion");
         const bool per_face = parse_per(per, "occlusion");
-        if (samples < 1 || samples > (1u << 20)) throw py::value_error("occlusion: samples must be in [1, 2^20]");
-        if (!(distance > 0)) throw py::value_error("occlusion: distance must be > 0 (default: unlimited)");
         shadetool::AmbientOcclusionOptions options;
         options.samples = samples;
         options.max_distance = distance;
         options.seed = seed;
+        shadetool::check_occlusion_options(options, "occlusion");  // the library's limits
         shadetool::AmbientOcclusion ao;
         {
           py::gil_scoped_release nogil;
@@ -167,8 +164,6 @@ Points without a usable normal get 1 (no ray cast).
         const std::vector<double> bg = read_double_rows(
             py::module_::import("numpy").attr("asarray")(background, "float64").attr("reshape")(1, 3), 1, 3,
             "render: background");
-        for (double c : bg)
-          if (!(c >= 0) || !std::isfinite(c)) throw py::value_error("render: background channels must be finite and >= 0");
         ro.width = width;
         ro.height = height;
         ro.samples = samples;

@@ -146,7 +146,11 @@ TEST_CASE("bad input: zero size, samples out of range, the eye inside a closed m
   o.threads = 0;
   o.lighting.shadows.enabled = true;
   o.lighting.shadows.samples = 0;
-  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: shadow: samples must be 1..1048576, got 0"));
+  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: shadow samples must be 1..1048576, got 0"));
+  o.lighting.shadows = {};
+  o.background = {0, -1, 0};
+  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: background channels must be finite and >= 0"));
+  o.background = {0, 0, 0};
   o.lighting.shadows = {};
   // Phong evaluates per sample in world space: a space asked of it is refused, not ignored.
   o.lighting.space = ShadingSpace::Object;

@@ -3,6 +3,8 @@
 
 #include <memory>
 
+#include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
 #include <shadetool/core/vocabulary.h>
 #include <shadetool/lighting/lit_normals.h>
 #include <shadetool/lighting/world_occluders.h>
@@ -53,9 +55,21 @@ std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, con
 
 }  // namespace
 
+void require_bakeable(const Mesh& mesh, ShadingFrequency frequency, const std::string& name) {
+  switch (frequency) {
+    case ShadingFrequency::PerFace:
+      require_faces(mesh, name);
+      break;
+    case ShadingFrequency::PerVertex:
+      if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0)
+        fail(name, 0, "no vertex normals and no faces to compute them from");
+      break;
+  }
+}
+
 BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency, const ShadeOptions& options,
                          const ShadowOptions& shadows) {
-  check_shadow_options(shadows, "bake_lighting");
+  check_shadow_options(shadows, "bake_lighting: shadow samples");
   BakeResult result;
   if (frequency == ShadingFrequency::PerVertex) {
     LitVertexNormals lit = lit_vertex_normals(mesh);

@@ -53,6 +53,11 @@ struct BakeResult {
   ShadowStats shadows;                 // zero unless shadows.enabled
 };
 
+// What a mesh must carry to be baked at `frequency` (Error "NAME: what"): per face, faces
+// (core/validate.h require_faces); per vertex, vertex normals or faces to compute them from (a
+// mesh of bare vertices has no normal to light). The CLI and Python call it before baking.
+void require_bakeable(const Mesh& mesh, ShadingFrequency frequency, const std::string& name);
+
 BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency,
                          const ShadeOptions& options = {}, const ShadowOptions& shadows = {});
 

@@ -49,7 +49,8 @@ struct ShadowOptions {
 };
 
 // The limit of ShadowOptions::samples, and its check at every entry point that casts shadows
-// (bake_lighting, render_mesh): Error "WHAT: samples must be 1..1048576, got N" when
+// (bake_lighting, render_mesh): Error "WHAT must be 1..1048576, got N" (WHAT: "--samples",
+// "bake_lighting: samples", ...) when
 // shadows.enabled and samples is outside 1..kMaxShadowSamples. The CLI and Python relay it.
 constexpr std::uint32_t kMaxShadowSamples = 1u << 20;
 void check_shadow_options(const ShadowOptions& shadows, const std::string& what);

@@ -348,7 +348,10 @@ void check_render_options(const RenderOptions& o, const std::string& name) {
                       std::to_string(o.samples));
   if (o.threads < 0 || o.threads > kMaxThreads)
     fail(name, 0, "threads must be 0.." + std::to_string(kMaxThreads) + " (0: all cores), got " + std::to_string(o.threads));
-  check_shadow_options(o.lighting.shadows, located(name, 0, "shadow"));
+  check_shadow_options(o.lighting.shadows, located(name, 0, "shadow samples"));
+  for (int i = 0; i < 3; ++i)
+    if (!(o.background[i] >= 0) || !std::isfinite(o.background[i]))
+      fail(name, 0, "background channels must be finite and >= 0, got " + std::to_string(o.background[i]));
   switch (o.shading) {
     case RenderShading::Flat:
     case RenderShading::Gouraud:

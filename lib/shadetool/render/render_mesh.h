@@ -104,7 +104,8 @@ RenderResult render_mesh(const Mesh& mesh, const Scene& scene, const RenderOptio
 // The limits of RenderOptions, checked once here (render_mesh calls it first; the CLI and Python
 // call it before reading anything and relay the message): Error "NAME: what" when a side is
 // outside 1..kMaxImageSide, samples outside 1..kMaxSamples, threads outside 0..kMaxThreads,
-// shadow samples outside light_visibility.h's range, or a shading space is asked of Phong (it
+// shadow samples outside light_visibility.h's range, a background channel negative or not
+// finite, or a shading space is asked of Phong (it
 // evaluates the equation per sample in world space: options.lighting.space must be Auto).
 void check_render_options(const RenderOptions& options, const std::string& name);
 
