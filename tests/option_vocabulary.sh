@@ -5,7 +5,8 @@
 # lib/python/) parses one of those names itself: compares text with a vocabulary name (== "name",
 # "name" ==, != ...), lists names for CLI11 (IsMember({..."name"...})), or maps a name to an enum
 # value ({"name", Enum::Value}). Defaults and help text may still spell a name; comments and
-# Python docstrings are not read.
+# Python docstrings are not read. The Python stub's Literal[...] types must each list one enum's
+# names exactly (a name added to a table and not to the stub fails here).
 # The detector checks itself first on planted lines (it must flag each second parser and pass the
 # spellings that are not parsers), so a pattern that silently stops matching fails the test.
 set -uo pipefail
@@ -86,10 +87,31 @@ for folder in (src / "cli", src / "lib" / "python"):
             continue
         for line, name, how in second_parsers(path.read_text(errors="replace")):
             found.append(f"{path.relative_to(src)}:{line}: '{name}' ({'/'.join(sorted(vocab[name]))}) {how}")
+# 4. The Python stub (lib/python/shadetool.pyi) spells the vocabularies as Literal[...] types: each
+# that names a vocabulary name must list exactly one enum's names (in step with the table).
+by_enum = {}
+for name, owners in vocab.items():
+    for e in owners:
+        by_enum.setdefault(e, set()).add(name)
+
+def stale_literals(text):
+    bad = []
+    for m in re.finditer(r'Literal\[([^\]]*)\]', text):
+        names = re.findall(r'"([^"]+)"', m.group(1))
+        if any(n in vocab for n in names) and not any(set(names) == v for v in by_enum.values()):
+            bad.append((text.count("\n", 0, m.start()) + 1, ", ".join(names)))
+    return bad
+
+if not stale_literals('x: Literal["flat", "phong"]') or stale_literals('x: Literal["flat", "gouraud", "phong"]'):
+    print("FAIL: the stub check misjudges a planted Literal"); sys.exit(1)
+stub = src / "lib" / "python" / "shadetool.pyi"
+for line, names in stale_literals(stub.read_text()):
+    found.append(f"{stub.relative_to(src)}:{line}: Literal[{names}] is not the full vocabulary of one enum")
+
 for f in found:
     print("FAIL: " + f)
-print(f"{len(vocab)} names of {len(enums)} enums; {len(found)} second parsers outside lib/shadetool")
+print(f"{len(vocab)} names of {len(enums)} enums; {len(found)} second parsers or stale stub types outside lib/shadetool")
 if found:
-    print("parse with the library's parse_X(text, what) and list with X_names() (lib/shadetool/core/vocabulary.h)")
+    print("parse with the library's parse_X(text, what), list with X_names() (lib/shadetool/core/vocabulary.h), and keep shadetool.pyi's Literal types in step")
     sys.exit(1)
 PY
