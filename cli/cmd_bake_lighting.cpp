@@ -19,44 +19,134 @@
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/read_scene.h>
+#include <shadetool/lighting/world_occluders.h>
 
 namespace shadetool_cli {
 namespace {
 
-// A glTF document's whole scene in world space and its BVH (the BVH reads the mesh's arrays).
-struct SceneOccluders {
-  shadetool::Mesh world;
-  std::unique_ptr<shadetool::VisibilityScene> bvh;
-};
-
 struct BakeLightingOptions {
   std::string scene;
   std::string model;  // "" = the scene's
-  std::string space = "auto";
-  std::string per = "vertex";
+  std::string space = shadetool::shading_space_name(shadetool::ShadingSpace::Auto);
+  std::string per = shadetool::shading_frequency_name(shadetool::ShadingFrequency::PerVertex);
   bool hdr = false;
   bool srgb = false;
   bool shadows = false;
   std::uint32_t samples = 16;
 };
 
-shadetool::ShadingModel parse_model(const std::string& s) {
-  if (s == "lambert") return shadetool::ShadingModel::Lambert;
-  if (s == "phong") return shadetool::ShadingModel::Phong;
-  return shadetool::ShadingModel::BlinnPhong;
-}
-
-shadetool::ShadingSpace parse_space(const std::string& s) {
-  if (s == "world") return shadetool::ShadingSpace::World;
-  if (s == "camera") return shadetool::ShadingSpace::Camera;
-  if (s == "object") return shadetool::ShadingSpace::Object;
-  return shadetool::ShadingSpace::Auto;
-}
-
 std::string join(const std::vector<std::string>& items) {
   std::string s;
   for (const auto& x : items) s += (s.empty() ? "" : ",") + x;
   return s.empty() ? "none" : s;
+}
+
+// The options every file of one call is baked with, parsed once.
+struct BakeSettings {
+  shadetool::ShadeOptions shade;
+  shadetool::ShadingFrequency frequency = shadetool::ShadingFrequency::PerVertex;
+  shadetool::ColorEncoding encoding;
+  shadetool::ShadowOptions shadows;
+  bool samples_given = false;
+};
+
+// No --scene: a glTF primitive is lit by its own file's KHR_lights_punctual lights, camera and
+// placement (gltf/gltf_lights.h); any other input needs --scene (exit 2).
+shadetool::Scene gltf_own_scene(const std::string& input, FileResult& r) {
+  if (!r.gltf) throw UsageError(input + ": --scene is required (only glTF files carry their own lights)");
+  std::vector<std::string> scene_notes;
+  shadetool::Scene scene = shadetool::gltf_scene(*r.gltf_document, *r.gltf, scene_notes);
+  if (scene.lights.empty())
+    throw shadetool::Error(shadetool::located(input, 0, "no --scene given and the file has no KHR_lights_punctual light"));
+  for (auto& n : scene_notes) r.notes.push_back(n);
+  return scene;
+}
+
+// What the mesh must carry to be lit: finite positions and normals (they go to the output
+// unchanged: none may be NaN/Inf, nor light with them), faces per face, normals per vertex.
+void check_bakeable(const shadetool::Mesh& mesh, const std::string& input, shadetool::ShadingFrequency frequency) {
+  shadetool::require_finite_positions(mesh, input);
+  shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
+  shadetool::require_bakeable(mesh, frequency, input);
+}
+
+// A glTF file lit by its own lights: shadows from its whole scene (every primitive placed by its
+// nodes, gltf/gltf_scene.h), one BVH per document (lighting/world_occluders.h) built at its first
+// primitive; with --scene the scene file places the mesh and only the primitive itself casts
+// shadows (null: bake_lighting builds that one).
+const shadetool::VisibilityScene* document_occluders(FileResult& r) {
+  if (!r.gltf_document_state) return nullptr;
+  const shadetool::WorldOccluders& occluders =
+      r.gltf_document_state->get_or_make<shadetool::WorldOccluders>([&](shadetool::WorldOccluders& made) {
+        std::vector<std::string> unused;  // the world mesh's notes concern writing it, not its shadows
+        const shadetool::Mesh world = shadetool::gltf_world_mesh(*r.gltf_document, unused);
+        std::unique_ptr<shadetool::WorldOccluders> built = shadetool::world_occluders(world.positions, world);
+        made.world = std::move(built->world);  // a moved vector keeps its buffer: the BVH's view stays valid
+        made.bvh = std::move(built->bvh);
+      });
+  r.notes.push_back("shadows cast by the whole scene (every primitive placed by its nodes), one BVH");
+  return occluders.bvh.get();
+}
+
+void add_bake_notes(const shadetool::BakeResult& baked, const shadetool::Scene& scene, const BakeSettings& set,
+                    FileResult& r) {
+  const shadetool::ShadeReport& rep = baked.report;
+  const bool per_face = set.frequency == shadetool::ShadingFrequency::PerFace;
+  if (!per_face && baked.normals_source.rfind("computed", 0) == 0)
+    r.notes.push_back("vertex normals " + baked.normals_source);
+  if (baked.normal_fallback_vertices > 0)
+    r.notes.push_back(std::to_string(baked.normal_fallback_vertices) +
+                      " vertices have no valid face: their normal is the normals module's fallback");
+  if (rep.counters.zero_normals > 0)
+    r.notes.push_back(std::to_string(rep.counters.zero_normals) + (per_face ? " faces" : " vertices") +
+                      " have a zero or non-finite normal: lit by the emission and ambient terms only");
+  if (rep.counters.at_light > 0)
+    r.notes.push_back(std::to_string(rep.counters.at_light) +
+                      " vertex-light pairs have the point at the light's position: that light adds nothing there");
+  if (set.shadows.enabled && set.samples_given && baked.shadows.sampled_lights == 0)
+    r.notes.push_back("--samples ignored: the scene has no area, sky or environment light (directional, point and spot "
+                      "lights cast one shadow ray each)");
+  if (rep.plan.view && !scene.has_camera)
+    r.notes.push_back("the scene has no camera: the eye is at the world origin (OpenGL's default)");
+}
+
+// The colours as stored. No NaN or Inf colour is ever written (8-bit encoding would turn NaN into
+// a silent black): lights, intensities or positions near the limits of double can produce them;
+// refuse.
+std::vector<float> encoded_colors(const shadetool::BakeResult& baked, const shadetool::ColorEncoding& encoding,
+                                  const std::string& input) {
+  std::vector<float> colors = shadetool::encode_colors(baked.rgb, encoding);
+  std::size_t nonfinite = 0;
+  for (std::size_t i = 0; i < baked.rgb.size(); ++i)
+    nonfinite += !(std::isfinite(baked.rgb[i]) && std::isfinite(colors[i]));
+  if (nonfinite > 0)
+    throw shadetool::Error(shadetool::located(
+        input, 0, std::to_string(nonfinite) + " colour values came out NaN or infinite (light positions, " +
+                      "intensities or the world map near the limits of double?); nothing written"));
+  return colors;
+}
+
+void add_bake_stats(const shadetool::BakeResult& baked, const BakeSettings& set, bool document_bvh, FileResult& r) {
+  const shadetool::ShadeReport& rep = baked.report;
+  r.stats["model"] = shadetool::shading_model_name(rep.model);
+  r.stats["space"] = shadetool::shading_space_name(rep.space);
+  r.stats["skipped"] = join(rep.skipped);
+  r.setting("lights", rep.plan.lights.size());
+  r.stats["dark_lights_dropped"] = rep.plan.dark_lights_dropped;
+  r.stats["vertex_light_evaluations"] = rep.counters.vertex_light_evaluations;
+  r.stats["back_facing_skips"] = rep.counters.back_facing;
+  r.stats["outside_cone_skips"] = rep.counters.outside_cone;
+  if (rep.plan.area_lights > 0) {  // only then, so that other scenes' reports stay as they were
+    r.stats["below_horizon_skips"] = rep.counters.below_horizon;
+    r.stats["inside_light"] = rep.counters.inside_light;
+  }
+  if (set.shadows.enabled) {
+    r.stats["shadow_rays"] = baked.shadows.shadow_rays;
+    r.stats["occluded_light_terms"] = rep.counters.shadowed;
+    r.setting("shadow_samples", baked.shadows.sampled_lights > 0 ? set.shadows.samples : 1u);
+    if (document_bvh) r.setting("bvh_bytes", baked.shadows.bvh_bytes);  // one BVH for the document
+    else r.stats["bvh_bytes"] = baked.shadows.bvh_bytes;
+  }
 }
 
 RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> std::function<int()> {
@@ -74,12 +164,12 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
                   "then its KHR_lights_punctual lights, first camera and node placement are used)")
       ->type_name("SCENE.json");
   sub->add_option("--model", opt.model, "Shading model, overriding the scene's (default: the scene's, else blinn-phong)")
-      ->check(CLI::IsMember({"lambert", "phong", "blinn-phong"}));
+      ->check(CLI::IsMember(shadetool::shading_model_names()));
   sub->add_option("--space", opt.space,
                   "Space the equation is evaluated in; all give the same colours (default auto: the cheapest)")
-      ->check(CLI::IsMember({"world", "camera", "object", "auto"}));
+      ->check(CLI::IsMember(shadetool::shading_space_names()));
   sub->add_option("--per", opt.per, "vertex: one colour per vertex (Gouraud); face: one per face (flat) (default vertex)")
-      ->check(CLI::IsMember({"vertex", "face"}));
+      ->check(CLI::IsMember(shadetool::shading_frequency_names()));
   sub->add_flag("--hdr", opt.hdr, "Write float colours, unclamped (default: 8-bit, round(255 * clamp(c, 0, 1)))");
   sub->add_flag("--srgb", opt.srgb, "Encode colours with the sRGB curve (default: linear)");
   auto* shadows_flag = sub->add_flag("--shadows", opt.shadows,
@@ -88,7 +178,6 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
   auto* samples = sub->add_option("--samples", opt.samples,
                                   "With --shadows: rays per point per area or sky light (default 16; a sky casts them "
                                   "for the sky and again for the ground)")
-                      ->check(CLI::Range(1u, 1u << 20))
                       ->needs(shadows_flag);
 
   return [options, samples] {
@@ -96,100 +185,31 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
     const BakeLightingOptions& opt = options->opt;
     // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
     const bool own_scene = opt.scene.empty();  // glTF input: the file's lights (gltf/gltf_lights.h)
+    BakeSettings set;
+    if (!opt.model.empty()) set.shade.model = shadetool::parse_shading_model(opt.model, "--model");
+    set.shade.space = shadetool::parse_shading_space(opt.space, "--space");
+    set.frequency = shadetool::parse_shading_frequency(opt.per, "--per");
+    set.encoding.hdr = opt.hdr;
+    set.encoding.srgb = opt.srgb;
+    set.shadows.enabled = opt.shadows;
+    set.shadows.samples = opt.samples;
+    set.samples_given = samples->count() > 0;
+    try {  // the library's limit (lighting/light_visibility.h), relayed as a usage error
+      shadetool::check_shadow_options(set.shadows, "--samples");
+    } catch (const shadetool::Error& e) {
+      throw UsageError(e.what());
+    }
     const shadetool::Scene file_scene = own_scene ? shadetool::Scene() : shadetool::read_scene(opt.scene);
-    shadetool::ShadeOptions shade;
-    if (!opt.model.empty()) shade.model = parse_model(opt.model);
-    shade.space = parse_space(opt.space);
-    const auto frequency = opt.per == "face" ? shadetool::ShadingFrequency::PerFace : shadetool::ShadingFrequency::PerVertex;
-    shadetool::ColorEncoding encoding;
-    encoding.hdr = opt.hdr;
-    encoding.srgb = opt.srgb;
-    shadetool::ShadowOptions shadows;
-    shadows.enabled = opt.shadows;
-    shadows.samples = opt.samples;
-    const bool samples_given = samples->count() > 0;
 
     return run_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
-      if (own_scene && !r.gltf)
-        throw UsageError(input + ": --scene is required (only glTF files carry their own lights)");
-      std::vector<std::string> scene_notes;
-      const shadetool::Scene scene = own_scene ? shadetool::gltf_scene(*r.gltf_document, *r.gltf, scene_notes) : file_scene;
-      if (own_scene && scene.lights.empty())
-        throw shadetool::Error(shadetool::located(input, 0, "no --scene given and the file has no KHR_lights_punctual light"));
-      for (auto& n : scene_notes) r.notes.push_back(n);
-      shadetool::require_finite_positions(mesh, input);
-      // The mesh's normals go to the output unchanged: none may be NaN/Inf (nor light with them).
-      shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
-      if (frequency == shadetool::ShadingFrequency::PerFace) {
-        shadetool::require_faces(mesh, input);
-      } else if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0) {
-        throw shadetool::Error(shadetool::located(input, 0, "no vertex normals and no faces to compute them from"));
-      }
-      // A glTF file lit by its own lights: shadows from its whole scene (every primitive placed by its
-      // nodes, gltf/gltf_scene.h), one BVH per document built at its first primitive; with --scene the
-      // scene file places the mesh and only the primitive itself casts shadows.
-      shadetool::ShadowOptions cast = shadows;
-      if (shadows.enabled && own_scene && r.gltf_document_state) {
-        const SceneOccluders& occluders = r.gltf_document_state->get_or_make<SceneOccluders>([&](SceneOccluders& made) {
-          std::vector<std::string> unused;  // the world mesh's notes concern writing it, not its shadows
-          made.world = shadetool::gltf_world_mesh(*r.gltf_document, unused);
-          made.bvh = std::make_unique<shadetool::VisibilityScene>(made.world);
-        });
-        cast.occluders = occluders.bvh.get();
-        r.notes.push_back("shadows cast by the whole scene (every primitive placed by its nodes), one BVH");
-      }
-      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade, cast);
-      const shadetool::ShadeReport& rep = baked.report;
-
-      if (frequency == shadetool::ShadingFrequency::PerVertex && baked.normals_source.rfind("computed", 0) == 0)
-        r.notes.push_back("vertex normals " + baked.normals_source);
-      if (baked.normal_fallback_vertices > 0)
-        r.notes.push_back(std::to_string(baked.normal_fallback_vertices) +
-                          " vertices have no valid face: their normal is the normals module's fallback");
-      if (rep.counters.zero_normals > 0)
-        r.notes.push_back(std::to_string(rep.counters.zero_normals) +
-                          (frequency == shadetool::ShadingFrequency::PerFace ? " faces" : " vertices") +
-                          " have a zero or non-finite normal: lit by the emission and ambient terms only");
-      if (rep.counters.at_light > 0)
-        r.notes.push_back(std::to_string(rep.counters.at_light) +
-                          " vertex-light pairs have the point at the light's position: that light adds nothing there");
-      if (shadows.enabled && samples_given && baked.shadows.sampled_lights == 0)
-        r.notes.push_back("--samples ignored: the scene has no area, sky or environment light (directional, point and spot "
-                          "lights cast one shadow ray each)");
-      if (rep.plan.view && !scene.has_camera)
-        r.notes.push_back("the scene has no camera: the eye is at the world origin (OpenGL's default)");
-
-      // No NaN or Inf colour is ever written (8-bit encoding would turn NaN into a silent black):
-      // lights, intensities or positions near the limits of double can produce them; refuse.
-      std::vector<float> colors = shadetool::encode_colors(baked.rgb, encoding);
-      std::size_t nonfinite = 0;
-      for (std::size_t i = 0; i < baked.rgb.size(); ++i)
-        nonfinite += !(std::isfinite(baked.rgb[i]) && std::isfinite(colors[i]));
-      if (nonfinite > 0)
-        throw shadetool::Error(shadetool::located(
-            input, 0, std::to_string(nonfinite) + " colour values came out NaN or infinite (light positions, " +
-                          "intensities or the world map near the limits of double?); nothing written"));
-      shadetool::store_baked_colors(mesh, std::move(colors), frequency, encoding.hdr);
-
-      r.stats["model"] = shadetool::shading_model_name(rep.model);
-      r.stats["space"] = shadetool::shading_space_name(rep.space);
-      r.stats["skipped"] = join(rep.skipped);
-      r.setting("lights", rep.plan.lights.size());
-      r.stats["dark_lights_dropped"] = rep.plan.dark_lights_dropped;
-      r.stats["vertex_light_evaluations"] = rep.counters.vertex_light_evaluations;
-      r.stats["back_facing_skips"] = rep.counters.back_facing;
-      r.stats["outside_cone_skips"] = rep.counters.outside_cone;
-      if (rep.plan.area_lights > 0) {  // only then, so that other scenes' reports stay as they were
-        r.stats["below_horizon_skips"] = rep.counters.below_horizon;
-        r.stats["inside_light"] = rep.counters.inside_light;
-      }
-      if (shadows.enabled) {
-        r.stats["shadow_rays"] = baked.shadows.shadow_rays;
-        r.stats["occluded_light_terms"] = rep.counters.shadowed;
-        r.setting("shadow_samples", baked.shadows.sampled_lights > 0 ? shadows.samples : 1u);
-        if (cast.occluders) r.setting("bvh_bytes", baked.shadows.bvh_bytes);  // one BVH for the document
-        else r.stats["bvh_bytes"] = baked.shadows.bvh_bytes;
-      }
+      const shadetool::Scene scene = own_scene ? gltf_own_scene(input, r) : file_scene;
+      check_bakeable(mesh, input, set.frequency);
+      shadetool::ShadowOptions cast = set.shadows;
+      if (set.shadows.enabled && own_scene) cast.occluders = document_occluders(r);
+      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
+      add_bake_notes(baked, scene, set, r);
+      shadetool::store_baked_colors(mesh, encoded_colors(baked, set.encoding, input), set.frequency, set.encoding.hdr);
+      add_bake_stats(baked, set, cast.occluders != nullptr, r);
     }, OutputKind::Mesh);
   };
 });

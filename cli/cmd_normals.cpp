@@ -21,19 +21,12 @@ namespace {
 
 
 struct NormalsOptions {
-  std::string weight = "angle";
+  std::string weight = shadetool::weighting_name(shadetool::Weighting::Angle);
   double crease_degrees = -1;  // < 0: not given (vertex normals)
   bool recompute = false;
   bool faces = false;
-  std::string precision = "double";
+  std::string precision = shadetool::precision_name(shadetool::Precision::Double);
 };
-
-shadetool::Weighting parse_weight(const std::string& w) {
-  if (w == "uniform") return shadetool::Weighting::Uniform;
-  if (w == "area") return shadetool::Weighting::Area;
-  if (w == "max") return shadetool::Weighting::Max;
-  return shadetool::Weighting::Angle;
-}
 
 // True when update_mesh_normals would keep the mesh's normals (no computation, positions unused).
 bool has_normals_for(const shadetool::Mesh& mesh, shadetool::NormalKind kind) {
@@ -50,7 +43,7 @@ RegisterCommand reg("normals", HelpSection::Edit, [](CLI::App& app) -> std::func
   auto* weight = sub->add_option("--weight", opt.weight,
                                  "How face normals are weighted into vertex normals: uniform (Gouraud), area, "
                                  "angle (Thuermer-Wuethrich, default), max (Max 1999)")
-                     ->check(CLI::IsMember({"uniform", "area", "angle", "max"}));
+                     ->check(CLI::IsMember(shadetool::weighting_names()));
   auto* crease = sub->add_option("--crease", opt.crease_degrees,
                                  "Per-corner normals: split where the angle between two faces' normals exceeds DEG "
                                  "degrees (0..180); boundary and non-manifold edges always split")
@@ -59,7 +52,7 @@ RegisterCommand reg("normals", HelpSection::Edit, [](CLI::App& app) -> std::func
   sub->add_flag("--recompute", opt.recompute, "Discard normals read from the input and compute new ones");
   auto* faces = sub->add_flag("--faces", opt.faces, "Write one normal per face instead of vertex normals");
   sub->add_option("--precision", opt.precision, "Accumulate in double (default) or float")
-      ->check(CLI::IsMember({"double", "float"}));
+      ->check(CLI::IsMember(shadetool::precision_names()));
   faces->excludes(crease);
   return [options, weight, faces] {
     const IoOptions& io = options->io;
@@ -70,9 +63,9 @@ RegisterCommand reg("normals", HelpSection::Edit, [](CLI::App& app) -> std::func
     request.kind = opt.faces ? shadetool::NormalKind::Face
                    : opt.crease_degrees >= 0 ? shadetool::NormalKind::Corner
                                              : shadetool::NormalKind::Vertex;
-    request.weighting = parse_weight(opt.weight);
+    request.weighting = shadetool::parse_weighting(opt.weight, "--weight");
     request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * shadetool::kPi / 180.0 : 0.0;
-    request.precision = opt.precision == "float" ? shadetool::Precision::Float : shadetool::Precision::Double;
+    request.precision = shadetool::parse_precision(opt.precision, "--precision");
     request.recompute = opt.recompute;
     return run_command(
         "normals", io,

@@ -14,6 +14,8 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include "usage_error.h"
+#include <shadetool/lighting/bake_lighting.h>  // ShadingFrequency's vocabulary (--per)
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/gltf/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
@@ -47,24 +49,28 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
       "Ambient occlusion by ray casting (Embree): per vertex or face, the cosine-weighted fraction of the sky "
       "open to distance D, as grey colours and/or a PLY quality property");
   add_io_options(*sub, io, OutputKind::Mesh);
-  sub->add_option("--samples", opt.samples, "Rays per vertex or face (default 64; error falls as N^-3/4)")
-      ->check(CLI::Range(1u, 1u << 20))
+  sub->add_option("--samples", opt.samples, "Rays per vertex or face (default 64, at most 1048576; error falls as N^-3/4)")
       ->type_name("N");
   sub->add_option("--distance", opt.distance,
-                  "Only occluders nearer than D (mesh units) count (default: unlimited)")
-      ->check(CLI::PositiveNumber)
+                  "Only occluders nearer than D > 0 (mesh units) count (default: unlimited)")
       ->type_name("D");
   sub->add_option("--as", opt.as, "Store the open fraction as grey colours, the PLY quality property, or both (default)")
       ->check(CLI::IsMember({"color", "quality", "both"}));
   sub->add_option("--per", opt.per, "One value per vertex (default) or per face")
-      ->check(CLI::IsMember({"vertex", "face"}));
+      ->check(CLI::IsMember(shadetool::shading_frequency_names()));
   return [command_options = options] {
     const IoOptions& io = command_options->io;
     const OcclusionOptions& opt = command_options->opt;
     shadetool::AmbientOcclusionOptions options;
     options.samples = opt.samples;
     options.max_distance = opt.distance;
-    const bool per_face = opt.per == "face";
+    try {  // the library's limits (visibility/ambient_occlusion.h), relayed as usage errors
+      shadetool::check_occlusion_options(options, "occlusion");
+    } catch (const shadetool::Error& e) {
+      throw UsageError(e.what());
+    }
+    const bool per_face =
+        shadetool::parse_shading_frequency(opt.per, "--per") == shadetool::ShadingFrequency::PerFace;
     const bool colors = opt.as != "quality", quality = opt.as != "color";
     return run_command(
         "occlusion", io,

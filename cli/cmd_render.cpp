@@ -15,6 +15,7 @@
 #include <shadetool/core/validate.h>
 #include <shadetool/io/image_io.h>
 #include <shadetool/lighting/read_scene.h>
+#include <shadetool/render/output_image.h>
 #include <shadetool/render/render_mesh.h>
 
 namespace shadetool_cli {
@@ -24,34 +25,17 @@ namespace fs = std::filesystem;
 
 struct RenderCliOptions {
   std::string scene;
-  std::string shading = "phong";
+  std::string shading = shadetool::render_shading_name(shadetool::RenderShading::Phong);
   std::vector<int> size{800, 600};
   int samples = 1;
   std::vector<double> background{0, 0, 0};
   std::string model;
-  std::string space = "auto";
+  std::string space = shadetool::shading_space_name(shadetool::ShadingSpace::Auto);
   bool hdr = false;
   int threads = 0;
   bool shadows = false;
   std::uint32_t shadow_samples = 16;
 };
-
-// The rendered picture as the image the driver writes: linear float for PFM, else 8-bit sRGB.
-shadetool::Image to_output_image(const shadetool::ImageRGB& rendered, bool linear_float) {
-  shadetool::Image out;
-  out.width = std::size_t(rendered.width);
-  out.height = std::size_t(rendered.height);
-  out.channels = 3;
-  if (linear_float) {
-    out.pixel = shadetool::Image::Pixel::F32;
-    out.f32.assign(rendered.rgb.begin(), rendered.rgb.end());
-  } else {
-    out.pixel = shadetool::Image::Pixel::U8;
-    out.u8.resize(rendered.rgb.size());
-    for (std::size_t i = 0; i < rendered.rgb.size(); ++i) out.u8[i] = shadetool::encode_srgb_8bit(rendered.rgb[i]);
-  }
-  return out;
-}
 
 // A path's extension without its dot ("" when none).
 std::string extension_of(const std::string& path) {
@@ -70,12 +54,6 @@ const shadetool::ImageFormatEntry* output_image_format(const IoOptions& io) {
 
 bool is_pfm(const shadetool::ImageFormatEntry* f) { return f != nullptr && std::string(f->name) == "pfm"; }
 
-shadetool::RenderShading parse_shading(const std::string& s) {
-  if (s == "flat") return shadetool::RenderShading::Flat;
-  if (s == "gouraud") return shadetool::RenderShading::Gouraud;
-  return shadetool::RenderShading::Phong;
-}
-
 RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::function<int()> {
   auto options = std::make_shared<CommandOptions<RenderCliOptions>>();  // bound to the flags, read by the run function
   IoOptions& io = options->io;
@@ -87,19 +65,20 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
       ->required()
       ->type_name("SCENE.json");
   sub->add_option("--shading", opt.shading, "flat (face normal), gouraud (baked vertex colours) or phong (per sample; default)")
-      ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+      ->check(CLI::IsMember(shadetool::render_shading_names()));
   sub->add_option("--size", opt.size, "Image size W,H in pixels (default 800,600)")->delimiter(',')->expected(2);
   sub->add_option("--samples", opt.samples, "N: N x N samples per pixel, box-filtered (default 1; 1..16)");
   sub->add_option("--background", opt.background, "Background colour R,G,B, linear (default 0,0,0)")
       ->delimiter(',')
       ->expected(3);
   sub->add_option("--model", opt.model, "Shading model, overriding the scene's")
-      ->check(CLI::IsMember({"lambert", "phong", "blinn-phong"}));
-  sub->add_option("--space", opt.space, "Space bake-lighting evaluates in (flat, gouraud); same colours (default auto)")
-      ->check(CLI::IsMember({"world", "camera", "object", "auto"}));
+      ->check(CLI::IsMember(shadetool::shading_model_names()));
+  sub->add_option("--space", opt.space,
+                  "Space bake-lighting evaluates in, for flat and gouraud shading only (phong refuses any but auto: "
+                  "it evaluates per sample in world space); same colours (default auto)")
+      ->check(CLI::IsMember(shadetool::shading_space_names()));
   sub->add_flag("--hdr", opt.hdr, "Write a float image (PFM, linear, unclamped) instead of an 8-bit sRGB PNG");
-  sub->add_option("--threads", opt.threads, "Threads for the tiles of one image (default: all cores)")
-      ->check(CLI::Range(0, 1024));
+  sub->add_option("--threads", opt.threads, "Threads for the tiles of one image (default: all cores)");
   auto* shadows_flag = sub->add_flag(
       "--shadows", opt.shadows,
       "Shadows: multiply each light's diffuse and specular terms by its visibility from the shaded point (one ray "
@@ -108,7 +87,6 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
   sub->add_option("--shadow-samples", opt.shadow_samples,
                   "With --shadows: rays per shaded point per area or sky light (default 16; --samples is taken: "
                   "samples per pixel)")
-      ->check(CLI::Range(1u, 1u << 20))
       ->needs(shadows_flag)
       ->type_name("N");
 
@@ -122,33 +100,25 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
         throw UsageError("--hdr writes a float image (PFM): name the output .pfm");
       if (io.format.empty()) io.format = "pfm";
     }
-    if (opt.samples < 1 || opt.samples > shadetool::kMaxSamples)
-      throw UsageError("--samples must be 1.." + std::to_string(shadetool::kMaxSamples));
-    for (double c : opt.background)
-      if (!(c >= 0) || !std::isfinite(c)) throw UsageError("--background channels must be finite and >= 0");
 
-    // A zero size is bad input (exit 1), found before any file is read.
-    const shadetool::Scene scene = shadetool::read_scene(opt.scene);
     shadetool::RenderOptions ro;
-    ro.shading = parse_shading(opt.shading);
+    ro.shading = shadetool::parse_render_shading(opt.shading, "--shading");
     ro.width = opt.size[0];
     ro.height = opt.size[1];
     ro.samples = opt.samples;
     ro.background = {opt.background[0], opt.background[1], opt.background[2]};
-    if (!opt.model.empty())
-      ro.lighting.model = opt.model == "lambert" ? shadetool::ShadingModel::Lambert
-                          : opt.model == "phong" ? shadetool::ShadingModel::Phong
-                                                 : shadetool::ShadingModel::BlinnPhong;
-    ro.lighting.space = opt.space == "world"    ? shadetool::ShadingSpace::World
-                        : opt.space == "camera" ? shadetool::ShadingSpace::Camera
-                        : opt.space == "object" ? shadetool::ShadingSpace::Object
-                                                : shadetool::ShadingSpace::Auto;
+    if (!opt.model.empty()) ro.lighting.model = shadetool::parse_shading_model(opt.model, "--model");
+    ro.lighting.space = shadetool::parse_shading_space(opt.space, "--space");
     ro.threads = opt.threads;
     ro.lighting.shadows.enabled = opt.shadows;
     ro.lighting.shadows.samples = opt.shadow_samples;
-    if (ro.width < 1 || ro.height < 1 || ro.width > shadetool::kMaxImageSide || ro.height > shadetool::kMaxImageSide)
-      throw shadetool::Error("--size " + std::to_string(ro.width) + "," + std::to_string(ro.height) +
-                             ": each side must be 1.." + std::to_string(shadetool::kMaxImageSide) + " pixels");
+    // The library's limits (render_mesh.h), relayed as usage errors (exit 2) before any file is read.
+    try {
+      shadetool::check_render_options(ro, "render");
+    } catch (const shadetool::Error& e) {
+      throw UsageError(e.what());
+    }
+    const shadetool::Scene scene = shadetool::read_scene(opt.scene);
 
     const bool pfm = is_pfm(output_image_format(io));  // --hdr has set io.format to pfm
     return run_command("render", io, [ro, &scene, pfm](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
@@ -160,7 +130,7 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
       if (nonfinite > 0)
         throw shadetool::Error(shadetool::located(input, 0, std::to_string(nonfinite) +
                                                                 " colour values came out NaN or infinite; nothing written"));
-      r.image = to_output_image(result.image, pfm);
+      r.image = shadetool::render_output_image(result.image, pfm);
 
       const shadetool::RenderStats& s = result.stats;
       if (result.camera.framed) r.notes.push_back("the scene has no camera: using one that frames the mesh");

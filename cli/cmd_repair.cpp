@@ -25,17 +25,10 @@ using shadetool::RepairReport;
 
 struct RepairCliOptions {
   std::string report;
-  std::string weight = "angle";
+  std::string weight = shadetool::weighting_name(shadetool::Weighting::Angle);
   bool remove_degenerate = false;
   double weld = -1;  // < 0: not given
 };
-
-shadetool::Weighting weighting_from_name(const std::string& name) {
-  if (name == "uniform") return shadetool::Weighting::Uniform;
-  if (name == "area") return shadetool::Weighting::Area;
-  if (name == "max") return shadetool::Weighting::Max;
-  return shadetool::Weighting::Angle;
-}
 
 // "1 face", "2 faces".
 std::string count(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
@@ -108,7 +101,7 @@ RegisterCommand reg("repair", HelpSection::Edit, [](CLI::App& app) -> std::funct
   add_io_options(*sub, io, OutputKind::Mesh);
   sub->add_option("--report", opt.report, "Write what was found and changed as a JSON object to FILE (one input only)");
   sub->add_option("--weight", opt.weight, "Weighting of recomputed normals: uniform, area, angle (default) or max")
-      ->check(CLI::IsMember({"uniform", "area", "angle", "max"}));
+      ->check(CLI::IsMember(shadetool::weighting_names()));
   sub->add_flag("--remove-degenerate", opt.remove_degenerate,
                 "Remove degenerate faces (zero area, repeated index, < 3 corners); default: report only");
   sub->add_option("--weld", opt.weld, "Merge vertices within distance EPS (>= 0) of each other before orienting")
@@ -132,7 +125,7 @@ RegisterCommand reg("repair", HelpSection::Edit, [](CLI::App& app) -> std::funct
           shadetool::require_finite_positions(mesh, input);
           shadetool::require_faces(mesh, input);
           shadetool::RepairOptions o;
-          o.weighting = weighting_from_name(opt.weight);
+          o.weighting = shadetool::parse_weighting(opt.weight, "--weight");
           o.remove_degenerate = opt.remove_degenerate;
           o.weld_eps = opt.weld;
           const RepairReport rep = shadetool::repair_mesh(mesh, o);

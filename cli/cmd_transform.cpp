@@ -34,7 +34,7 @@ namespace {
 
 struct TransformCliOptions {
   std::vector<std::string> scale, rotate, translate, matrix;
-  std::string normals = "transform";
+  std::string normals = shadetool::normals_policy_name(shadetool::NormalsPolicy::Transform);
 };
 
 std::string trim(std::string_view s) {
@@ -133,12 +133,6 @@ shadetool::Affine3d map_for(const std::string& flag, const std::string& value) {
   }
 }
 
-shadetool::NormalsPolicy policy_from(const std::string& name) {
-  if (name == "recompute") return shadetool::NormalsPolicy::Recompute;
-  if (name == "drop") return shadetool::NormalsPolicy::Drop;
-  return shadetool::NormalsPolicy::Transform;
-}
-
 RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::function<int()> {
   auto command_options = std::make_shared<CommandOptions<TransformCliOptions>>();  // bound to the flags, read by the run function
   IoOptions& io = command_options->io;
@@ -162,7 +156,7 @@ RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::fu
   sub->add_option("--normals", opt.normals,
                   "Normals: transform (default; by the cofactor of A), recompute (from the transformed faces), "
                   "or drop")
-      ->check(CLI::IsMember({"transform", "recompute", "drop"}));
+      ->check(CLI::IsMember(shadetool::normals_policy_names()));
 
   return [command_options, sub, scale, rotate, translate, matrix] {
     const IoOptions& io = command_options->io;
@@ -187,7 +181,7 @@ RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::fu
       throw UsageError("the composed transform has an entry that overflows double (|entry| > 1.8e308)");
     }
     shadetool::TransformOptions options;
-    options.normals = policy_from(opt.normals);
+    options.normals = shadetool::parse_normals_policy(opt.normals, "--normals");
     // A singular map is fine for a mesh with no normals (it is flattened, and a note says so); a
     // mesh with normals to transform is refused, file by file (exit 1), with the reason.
     const bool singular = cls.path == shadetool::TransformPath::Singular;

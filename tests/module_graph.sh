@@ -26,7 +26,7 @@ declare -A allowed=(
   [repair]="core geometry normals"
   [visibility]="core geometry normals"
   [lighting]="core geometry normals visibility"
-  [render]="core geometry normals lighting visibility"
+  [render]="core geometry io normals lighting visibility"
   [gltf]="core geometry io normals transform lighting visibility"
   [files]="core geometry io gltf"
 )

@@ -262,17 +262,11 @@ struct FaceArrays {
 }  // namespace
 
 shadetool::Weighting parse_weighting(const std::string& value, const std::string& fn) {
-  if (value == "uniform") return shadetool::Weighting::Uniform;
-  if (value == "area") return shadetool::Weighting::Area;
-  if (value == "angle") return shadetool::Weighting::Angle;
-  if (value == "max") return shadetool::Weighting::Max;
-  bad(fn + ": weight", "'" + value + "' is not one of uniform, area, angle, max");
+  return shadetool::parse_weighting(value, fn + ": weight");  // normals/weighting.h's vocabulary
 }
 
 shadetool::Precision parse_precision(const std::string& value, const std::string& fn) {
-  if (value == "double") return shadetool::Precision::Double;
-  if (value == "float") return shadetool::Precision::Float;
-  bad(fn + ": precision", "'" + value + "' is not one of double, float");
+  return shadetool::parse_precision(value, fn + ": precision");
 }
 
 namespace {

@@ -12,6 +12,7 @@
 #include <shadetool/normals/invalid_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 #include <shadetool/render/lighting_adapter.h>
+#include <shadetool/render/output_image.h>
 #include <shadetool/render/render_mesh.h>
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
@@ -48,27 +49,14 @@ shadetool::Scene scene_of(py::handle scene, const std::string& fn) {
   return shadetool::read_scene(path);
 }
 
-shadetool::ShadingSpace parse_space(const std::string& s, const std::string& fn) {
-  if (s == "auto") return shadetool::ShadingSpace::Auto;
-  if (s == "world") return shadetool::ShadingSpace::World;
-  if (s == "camera") return shadetool::ShadingSpace::Camera;
-  if (s == "object") return shadetool::ShadingSpace::Object;
-  throw py::value_error(fn + ": space: '" + s + "' is not one of auto, world, camera, object");
-}
-
+// The options' vocabularies are the library's (core/vocabulary.h): its Error names FN: ARG.
 std::optional<shadetool::ShadingModel> parse_model(py::handle model, const std::string& fn) {
   if (model.is_none()) return std::nullopt;
-  const std::string s = model.cast<std::string>();
-  if (s == "lambert") return shadetool::ShadingModel::Lambert;
-  if (s == "phong") return shadetool::ShadingModel::Phong;
-  if (s == "blinn-phong") return shadetool::ShadingModel::BlinnPhong;
-  throw py::value_error(fn + ": model: '" + s + "' is not one of lambert, phong, blinn-phong");
+  return shadetool::parse_shading_model(model.cast<std::string>(), fn + ": model");
 }
 
 bool parse_per(const std::string& s, const std::string& fn) {
-  if (s == "vertex") return false;
-  if (s == "face") return true;
-  throw py::value_error(fn + ": per: '" + s + "' is not one of vertex, face");
+  return shadetool::parse_shading_frequency(s, fn + ": per") == shadetool::ShadingFrequency::PerFace;
 }
 
 }  // namespace
@@ -83,20 +71,18 @@ void init_lighting(py::module_& m) {
         const bool per_face = parse_per(per, "bake_lighting");
         shadetool::ShadeOptions shade;
         shade.model = parse_model(model, "bake_lighting");
-        shade.space = parse_space(space, "bake_lighting");
-        if (samples < 1 || samples > (1u << 20)) throw py::value_error("bake_lighting: samples must be in [1, 2^20]");
+        shade.space = shadetool::parse_shading_space(space, "bake_lighting: space");
         shadetool::ShadowOptions shadow;
         shadow.enabled = shadows;
         shadow.samples = samples;
+        shadetool::check_shadow_options(shadow, "bake_lighting: samples");  // the library's limit
         const auto frequency = per_face ? shadetool::ShadingFrequency::PerFace : shadetool::ShadingFrequency::PerVertex;
         shadetool::BakeResult baked;
         {
           py::gil_scoped_release nogil;
           shadetool::require_finite_positions(*mesh, "bake_lighting: V");
           shadetool::require_finite_normals(*mesh, "bake_lighting: N", "recompute them (vertex_normals) or repair first");
-          if (per_face) shadetool::require_faces(*mesh, "bake_lighting: F");
-          else if (mesh->num_faces() == 0 && !mesh->has_vertex_normals() && mesh->num_vertices() > 0)
-            throw shadetool::Error("bake_lighting: no vertex normals and no faces to compute them from");
+          shadetool::require_bakeable(*mesh, frequency, per_face ? "bake_lighting: F" : "bake_lighting");
           baked = shadetool::bake_lighting(*mesh, scene, frequency, shade, shadow);
         }
         std::size_t nonfinite = 0;
@@ -122,7 +108,8 @@ its float rounding): linear RGB, unclamped, float64, (n, 3) per vertex or (m, 3)
   scene   a dict in the scene JSON schema (man shadetool-bake-lighting: model, material, lights,
           camera, world_from_object, ...) or a path to a JSON file (FileNotFoundError if missing)
   per     "vertex" or "face"; model overrides the scene's ("lambert", "phong", "blinn-phong");
-  space   "auto", "world", "camera" or "object" (same colours); shadows: per-light visibility
+  space   "auto", "world", "camera" or "object" (same colours; render: flat and gouraud only,
+          phong refuses any but "auto"); shadows: per-light visibility
           by ray casting (samples rays per area or sky light)
 ValueError: bad arrays, a bad scene (the library's `scene: $.path: what` message), non-finite
 positions or normals.
@@ -134,12 +121,11 @@ positions or normals.
          std::uint32_t seed) {
         const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "occlusion");
         const bool per_face = parse_per(per, "occlusion");
-        if (samples < 1 || samples > (1u << 20)) throw py::value_error("occlusion: samples must be in [1, 2^20]");
-        if (!(distance > 0)) throw py::value_error("occlusion: distance must be > 0 (default: unlimited)");
         shadetool::AmbientOcclusionOptions options;
         options.samples = samples;
         options.max_distance = distance;
         options.seed = seed;
+        shadetool::check_occlusion_options(options, "occlusion");  // the library's limits
         shadetool::AmbientOcclusion ao;
         {
           py::gil_scoped_release nogil;
@@ -174,27 +160,18 @@ Points without a usable normal get 1 (no ray cast).
         const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "render");
         const shadetool::Scene scene = scene_of(scene_arg, "render");
         shadetool::RenderOptions ro;
-        if (shading == "flat") ro.shading = shadetool::RenderShading::Flat;
-        else if (shading == "gouraud") ro.shading = shadetool::RenderShading::Gouraud;
-        else if (shading == "phong") ro.shading = shadetool::RenderShading::Phong;
-        else throw py::value_error("render: shading: '" + shading + "' is not one of flat, gouraud, phong");
-        if (width < 1 || height < 1 || width > shadetool::kMaxImageSide || height > shadetool::kMaxImageSide)
-          throw py::value_error("render: width and height must be 1.." + std::to_string(shadetool::kMaxImageSide) + " pixels");
-        if (samples < 1 || samples > shadetool::kMaxSamples)
-          throw py::value_error("render: samples must be 1.." + std::to_string(shadetool::kMaxSamples));
-        if (threads < 0 || threads > 1024) throw py::value_error("render: threads must be 0..1024 (0: all cores)");
+        ro.shading = shadetool::parse_render_shading(shading, "render: shading");
         const std::vector<double> bg = read_double_rows(
             py::module_::import("numpy").attr("asarray")(background, "float64").attr("reshape")(1, 3), 1, 3,
             "render: background");
-        for (double c : bg)
-          if (!(c >= 0) || !std::isfinite(c)) throw py::value_error("render: background channels must be finite and >= 0");
         ro.width = width;
         ro.height = height;
         ro.samples = samples;
         ro.background = {bg[0], bg[1], bg[2]};
         ro.lighting.model = parse_model(model, "render");
-        ro.lighting.space = parse_space(space, "render");
+        ro.lighting.space = shadetool::parse_shading_space(space, "render: space");
         ro.threads = threads;
+        shadetool::check_render_options(ro, "render");  // the library's limits (render_mesh.h)
         shadetool::RenderResult result;
         {
           py::gil_scoped_release nogil;
@@ -208,9 +185,7 @@ Points without a usable normal get 1 (no ray cast).
           throw py::value_error("render: " + std::to_string(nonfinite) + " colour values came out NaN or infinite");
         const py::ssize_t h = result.image.height, w = result.image.width;
         if (hdr) return to_numpy(std::move(result.image.rgb), {h, w, 3});
-        std::vector<std::uint8_t> pixels(result.image.rgb.size());
-        for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = shadetool::encode_srgb_8bit(result.image.rgb[i]);
-        return to_numpy(std::move(pixels), {h, w, 3});
+        return to_numpy(shadetool::render_output_image(result.image, false).u8, {h, w, 3});
       },
       py::arg("V"), py::arg("F") = py::none(), py::arg("N") = py::none(), py::arg("scene") = py::none(),
       py::arg("width") = 800, py::arg("height") = 600, py::arg("shading") = "phong", py::arg("samples") = 1,

@@ -279,12 +279,10 @@ computes on the same Mesh (the library reads it without the GIL).
            "Removes every normal (vertex, corner, face), as `shadetool normals --recompute` does first.")
       .def_property(
           "precision",
-          [](const PyMesh& s) { return s.mesh->precision == shadetool::ValuePrecision::Double ? "double" : "float"; },
+          [](const PyMesh& s) { return shadetool::value_precision_name(s.mesh->precision); },
           [](PyMesh& s, const std::string& p) {
-            if (p != "double" && p != "float") throw py::value_error("Mesh.precision: '" + p + "' is not one of double, float");
-            change(s, [&](Mesh& m) {
-              m.precision = p == "double" ? shadetool::ValuePrecision::Double : shadetool::ValuePrecision::Float;
-            });
+            const shadetool::ValuePrecision precision = shadetool::parse_value_precision(p, "Mesh.precision");
+            change(s, [&](Mesh& m) { m.precision = precision; });
           },
           "'float' or 'double': the number type a writer uses (as read, or as the vertices' dtype)")
       .def("copy", [](const PyMesh& s) { PyMesh c; c.mesh = std::make_shared<Mesh>(*s.mesh); return c; },

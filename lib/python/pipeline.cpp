@@ -18,10 +18,7 @@ py::dict report_dict(const shadetool::RepairReport& r, const std::string& weight
 }
 
 shadetool::NormalsPolicy parse_policy(const std::string& s) {
-  if (s == "transform") return shadetool::NormalsPolicy::Transform;
-  if (s == "recompute") return shadetool::NormalsPolicy::Recompute;
-  if (s == "drop") return shadetool::NormalsPolicy::Drop;
-  throw py::value_error("transform: normals: '" + s + "' is not one of transform, recompute, drop");
+  return shadetool::parse_normals_policy(s, "transform: normals");  // transform_mesh.h's vocabulary
 }
 
 }  // namespace

@@ -79,10 +79,40 @@ def test_bad_options_raise_value_error(tetra):
         shadetool.bake_lighting(V, F, None, {"lights": [{"type": "laser"}]})
     with pytest.raises(ValueError, match="samples must be 1..16"):
         shadetool.render(V, F, None, SCENE, samples=17)
-    with pytest.raises(ValueError, match="width and height must be"):
+    with pytest.raises(ValueError, match="each side must be 1..16384 pixels"):
         shadetool.render(V, F, None, SCENE, width=0)
     with pytest.raises(ValueError, match="distance must be > 0"):
         shadetool.occlusion(V, F, distance=0.0)
+    # Every enumerated option is parsed by the library's vocabulary: its message, the same names.
+    with pytest.raises(ValueError, match="bake_lighting: model: 'toon' is not one of lambert, phong, blinn-phong"):
+        shadetool.bake_lighting(V, F, None, SCENE, model="toon")
+    with pytest.raises(ValueError, match="bake_lighting: space: 'screen' is not one of auto, world, camera, object"):
+        shadetool.bake_lighting(V, F, None, SCENE, space="screen")
+    with pytest.raises(ValueError, match="render: shading: 'toon' is not one of flat, gouraud, phong"):
+        shadetool.render(V, F, None, SCENE, shading="toon")
+    with pytest.raises(ValueError, match="Mesh.precision: 'half' is not one of double, float"):
+        shadetool.Mesh(V, F).precision = "half"
+    # The library's limits, relayed: shadow samples, threads, and a space asked of Phong (refused,
+    # as `shadetool render --shading phong --space world` is; flat and gouraud take it).
+    with pytest.raises(ValueError, match="bake_lighting: samples must be 1..1048576, got 0"):
+        shadetool.bake_lighting(V, F, None, SCENE, shadows=True, samples=0)
+    with pytest.raises(ValueError, match="render: threads must be 0..1024"):
+        shadetool.render(V, F, None, SCENE, width=8, height=8, threads=2000)
+    with pytest.raises(ValueError, match="render: space 'world' applies to flat and gouraud shading"):
+        shadetool.render(V, F, None, SCENE, width=8, height=8, space="world")
+    assert shadetool.render(V, F, None, SCENE, width=8, height=8, space="world", shading="flat").shape == (8, 8, 3)
+
+
+def test_scene_dicts_pass_the_one_scene_check(tetra):
+    """The Python door into a Scene is the JSON reader's, then validate_scene: messages name the path."""
+    V, F = tetra
+    with pytest.raises(ValueError, match=r"scene: \$\.lights\[0\]\.intensity: must be >= 0, got -1"):
+        shadetool.bake_lighting(V, F, None, {"lights": [{"type": "directional", "direction": [0, 0, 1], "intensity": -1}]})
+    with pytest.raises(ValueError, match=r"scene: \$\.lights\[0\]\.intensity: color x intensity overflows"):
+        shadetool.bake_lighting(
+            V, F, None, {"lights": [{"type": "point", "position": [0, 0, 3], "color": [10, 1, 1], "intensity": 1e308}]})
+    with pytest.raises(ValueError, match=r"scene: \$\.lights\[0\]\.intensity: must be a number, got a string"):
+        shadetool.render(V, F, None, {"lights": [{"type": "directional", "direction": [0, 0, 1], "intensity": "x"}]})
     with pytest.raises(ValueError, match="F: must be None when the first argument is a shadetool.Mesh"):
         shadetool.vertex_normals(shadetool.Mesh(V, F), F)
 

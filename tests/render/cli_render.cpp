@@ -46,10 +46,20 @@ TEST_CASE("render writes an sRGB PNG, or a PFM with --hdr", "[render][cli]") {
 TEST_CASE("render: bad input is one line, exit 1, and no output file", "[render][cli]") {
   const fs::path d = scratch("bad");
   const std::string out = (d / "o.png").string();
+  // A flag value outside the library's limit is a usage error (exit 2), as every other (issue 26).
   auto r = run_shadetool("render " + torus + " -o " + out + " --scene " + studio + " --size 0,10");
-  CHECK(r.code == 1);
+  CHECK(r.code == 2);
   CHECK(r.err.find("each side must be 1..16384") != std::string::npos);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(out));
+  // --space under phong is refused (exit 2), not accepted and ignored; flat and gouraud take it.
+  r = run_shadetool("render " + torus + " -o " + out + " --scene " + studio + " --size 8,8 --space object");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("space 'object' applies to flat and gouraud shading") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  r = run_shadetool("render " + torus + " -o " + out + " --scene " + studio + " --size 8,8 --space object --shading flat");
+  CHECK(r.code == 0);
+  fs::remove(out);
   CHECK_FALSE(fs::exists(out));
 
   r = run_shadetool("render " + torus + " -o " + (d / "missing" / "o.png").string() + " --scene " + studio + " --size 8,8");

@@ -124,11 +124,29 @@ TEST_CASE("bad input: zero size, samples out of range, the eye inside a closed m
   Scene s = lit_scene({0, 0, 5});
   RenderOptions o;
   o.width = 0;
-  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: image size 0x600 must be 1..16384"));
+  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: image size 0x600: each side must be 1..16384"));
   o.width = 10;
   o.samples = 0;
   CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: samples must be 1..16"));
   o.samples = 1;
+  o.threads = 1025;
+  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: threads must be 0..1024"));
+  o.threads = 0;
+  o.lighting.shadows.enabled = true;
+  o.lighting.shadows.samples = 0;
+  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: shadow samples must be 1..1048576, got 0"));
+  o.lighting.shadows = {};
+  o.background = {0, -1, 0};
+  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: background channels must be finite and >= 0"));
+  o.background = {0, 0, 0};
+  o.lighting.shadows = {};
+  // Phong evaluates per sample in world space: a space asked of it is refused, not ignored.
+  o.lighting.space = ShadingSpace::Object;
+  CHECK_THROWS_WITH(render_mesh(m, s, o, "m.obj"), Catch::Contains("m.obj: space 'object' applies to flat and gouraud"));
+  o.shading = RenderShading::Gouraud;
+  CHECK_NOTHROW(check_render_options(o, "m.obj"));
+  o = RenderOptions();
+  o.width = 10;
   Scene inside = lit_scene({0.1, 0.2, 0.3}, {1, 0, 0});
   CHECK_THROWS_WITH(render_mesh(m, inside, o, "m.obj"), Catch::Contains("m.obj: the camera's eye") &&
                                                             Catch::Contains("is inside the mesh"));

@@ -324,8 +324,14 @@ TEST_CASE("Bad inputs are refused with an Error", "[visibility][ao]") {
   AmbientOcclusionOptions o;
   o.samples = 0;
   REQUIRE_THROWS_AS(ambient_occlusion_per_vertex(scene, m, n, o), Error);
+  o.samples = kMaxOcclusionSamples + 1;  // the one limit, which the CLI and Python relay
+  REQUIRE_THROWS_WITH(ambient_occlusion_per_vertex(scene, m, n, o),
+                      "ambient occlusion: samples must be 1..1048576, got 1048577");
+  o.samples = kMaxOcclusionSamples;
+  CHECK_NOTHROW(check_occlusion_options(o, "x"));
   o.samples = 4;
   o.max_distance = 0;
+  REQUIRE_THROWS_WITH(check_occlusion_options(o, "occlusion"), "occlusion: distance must be > 0 (default: unlimited)");
   REQUIRE_THROWS_AS(ambient_occlusion_per_vertex(scene, m, n, o), Error);
   o.max_distance = std::nan("");
   REQUIRE_THROWS_AS(ambient_occlusion_per_vertex(scene, m, n, o), Error);

@@ -46,6 +46,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <shadetool/core/vec3.h>
@@ -54,6 +55,10 @@
 namespace shadetool {
 
 enum class ValuePrecision { Float, Double };
+// Its vocabulary (core/vocabulary.h, mesh.cpp): "double", "float" (Python's Mesh.precision).
+ValuePrecision parse_value_precision(std::string_view text, const std::string& what);
+const char* value_precision_name(ValuePrecision precision);
+std::vector<std::string> value_precision_names();
 
 // corner_texcoord_index of a corner without a texture coordinate.
 constexpr std::uint32_t kNoTexcoord = 0xFFFFFFFFu;

@@ -22,7 +22,11 @@
 //   material           kd = baseColorFactor rgb (default 1), ka = 0 (glTF has no ambient term),
 //                      ks = 0, emission = emissiveFactor; global_ambient = 0.
 //   notes              what the mapping approximated (one line each)
-// Error (`FILE: JSON.PATH: what`) for a light of unknown type or a light index out of range.
+// Error (`FILE: JSON.PATH: what`) for a light of unknown type, a light index out of range, a value
+// of the wrong JSON type (a string intensity), a negative colour or intensity, and whatever
+// lighting/validate_scene.h refuses in the Scene built (an intensity whose product with the colour
+// overflows, a negative base colour), named by its glTF path
+// (extensions.KHR_lights_punctual.lights[2].intensity, materials[0].emissiveFactor, nodes[3]).
 #pragma once
 
 #include <string>

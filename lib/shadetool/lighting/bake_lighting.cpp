@@ -3,33 +3,29 @@
 
 #include <memory>
 
+#include <shadetool/core/error.h>
+#include <shadetool/core/validate.h>
+#include <shadetool/core/vocabulary.h>
+#include <shadetool/lighting/lit_normals.h>
+#include <shadetool/lighting/world_occluders.h>
 #include <shadetool/normals/face_normals.h>
-#include <shadetool/normals/vertex_normals.h>
 
 namespace shadetool {
 
 namespace {
+const NamedValue<ShadingFrequency> kShadingFrequencies[] = {
+    {ShadingFrequency::PerVertex, "vertex"},
+    {ShadingFrequency::PerFace, "face"},
+};
+}  // namespace
 
-// True when every corner of each vertex references the same normal value; fills `normals`.
-bool corner_normals_per_vertex(const Mesh& mesh, std::vector<double>& normals) {
-  const std::size_t V = mesh.num_vertices();
-  std::vector<double> out(3 * V, 0.0);
-  std::vector<char> seen(V, 0);
-  for (std::size_t c = 0; c < mesh.num_corners(); ++c) {
-    const std::size_t v = mesh.corner_vertex[c];
-    const std::size_t k = mesh.corner_normal_index[c];
-    if (v >= V || 3 * k + 2 >= mesh.corner_normals.size()) return false;
-    const Vec3d n = get3(mesh.corner_normals, k);
-    if (!seen[v]) {
-      set3(out, v, n);
-      seen[v] = 1;
-    } else if (get3(out, v) != n) {
-      return false;  // a crease: this vertex has several normals
-    }
-  }
-  normals = std::move(out);
-  return true;
+ShadingFrequency parse_shading_frequency(std::string_view text, const std::string& what) {
+  return parse_named(kShadingFrequencies, text, what);
 }
+const char* shading_frequency_name(ShadingFrequency frequency) { return name_of(kShadingFrequencies, frequency); }
+std::vector<std::string> shading_frequency_names() { return names_of(kShadingFrequencies); }
+
+namespace {
 
 // Shades object-space points and normals, with shadows when asked: the visibility is computed
 // from world-space copies (the lights' space) and handed to shade_points.
@@ -39,16 +35,9 @@ std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, con
   if (!shadows.enabled) return shade_points(scene, points, normals, options, &result.report);
   const Affine3d& M = scene.world_from_object;
   const Mat3d cof = signed_cofactor(M.A);
-  Mesh world;  // the mesh's own occluders, unless the caller built the scene's
-  std::unique_ptr<VisibilityScene> own;
-  if (!shadows.occluders) {
-    world.positions.resize(mesh.positions.size());
-    for (std::size_t v = 0; v < mesh.num_vertices(); ++v) set3(world.positions, v, transform_point(M, mesh.position(v)));
-    world.face_start = mesh.face_start;
-    world.corner_vertex = mesh.corner_vertex;
-    own = std::make_unique<VisibilityScene>(world);
-  }
-  const VisibilityScene& bvh = shadows.occluders ? *shadows.occluders : *own;
+  std::unique_ptr<const WorldOccluders> own;  // the mesh's own occluders, unless the caller built the scene's
+  if (!shadows.occluders) own = world_occluders(world_positions(mesh, M), mesh);
+  const VisibilityScene& bvh = shadows.occluders ? *shadows.occluders : *own->bvh;
 
   const std::size_t P = points.size() / 3;
   std::vector<double> wp(3 * P), wn(3 * P);
@@ -66,25 +55,27 @@ std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, con
 
 }  // namespace
 
+void require_bakeable(const Mesh& mesh, ShadingFrequency frequency, const std::string& name) {
+  switch (frequency) {
+    case ShadingFrequency::PerFace:
+      require_faces(mesh, name);
+      break;
+    case ShadingFrequency::PerVertex:
+      if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0)
+        fail(name, 0, "no vertex normals and no faces to compute them from");
+      break;
+  }
+}
+
 BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency, const ShadeOptions& options,
                          const ShadowOptions& shadows) {
+  check_shadow_options(shadows, "bake_lighting: shadow samples");
   BakeResult result;
   if (frequency == ShadingFrequency::PerVertex) {
-    std::vector<double> normals;
-    if (mesh.has_vertex_normals() && mesh.vertex_normals.size() == mesh.positions.size()) {
-      result.normals_source = "input vertex normals";
-      normals = mesh.vertex_normals;
-    } else if (mesh.has_corner_normals() && corner_normals_per_vertex(mesh, normals)) {
-      result.normals_source = "input corner normals (one per vertex)";
-    } else {
-      VertexNormals computed = vertex_normals(mesh, Weighting::Angle, Precision::Double);
-      result.normals_source = mesh.has_corner_normals()
-                                  ? "computed (angle-weighted): the input's corner normals differ at some vertices"
-                                  : "computed (angle-weighted)";
-      result.normal_fallback_vertices = computed.fallback_vertices;
-      normals = std::move(computed.normals);
-    }
-    result.rgb = shade_with_shadows(mesh, scene, mesh.positions, normals, options, shadows, result);
+    LitVertexNormals lit = lit_vertex_normals(mesh);
+    result.normals_source = std::move(lit.source);
+    result.normal_fallback_vertices = lit.fallback_vertices;
+    result.rgb = shade_with_shadows(mesh, scene, mesh.positions, lit.normals, options, shadows, result);
     return result;
   }
 

@@ -9,14 +9,14 @@
 // Output:  rgb        #V by 3 (PerVertex) or #F by 3 (PerFace) linear doubles, unclamped
 //          report     what shade_points did, and where the normals came from
 //
-// Normals, PerVertex: the mesh's vertex normals; else its corner normals when every corner of a
-// vertex carries the same normal; else computed with normals/vertex_normals.h (angle-weighted,
-// double), and `normals_source` says why. PerFace: the mesh's face normals, else
+// Normals, PerVertex: lighting/lit_normals.h (the mesh's vertex normals; else its corner normals
+// when every corner of a vertex carries the same normal; else computed with normals/
+// vertex_normals.h, angle-weighted, double), and `normals_source` says which. PerFace: the mesh's face normals, else
 // normals/face_normals.h. A vertex or face whose normal is zero (isolated vertex, degenerate face)
 // gets only the emission and ambient terms, and is counted (report.counters.zero_normals).
 //
 // Shadows (shadows.enabled, lighting/light_visibility.h): the mesh's non-degenerate faces, placed in
-// the world by world_from_object, go into one VisibilityScene (or shadows.occluders, a scene the
+// the world by world_from_object, go into one VisibilityScene (lighting/world_occluders.h; or shadows.occluders, a scene the
 // caller built: a glTF document's whole scene); each point's visibility of each
 // kept light (rays from its world position, offset along its world normal) multiplies that
 // light's diffuse and specular terms. Seeds: the vertex id (PerVertex) or face id (PerFace).
@@ -29,6 +29,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
@@ -39,6 +40,10 @@
 namespace shadetool {
 
 enum class ShadingFrequency { PerVertex, PerFace };
+// Its vocabulary (core/vocabulary.h): "vertex", "face" (bake-lighting's and occlusion's --per).
+ShadingFrequency parse_shading_frequency(std::string_view text, const std::string& what);
+const char* shading_frequency_name(ShadingFrequency frequency);
+std::vector<std::string> shading_frequency_names();
 
 struct BakeResult {
   std::vector<double> rgb;
@@ -47,6 +52,11 @@ struct BakeResult {
   std::size_t normal_fallback_vertices = 0;  // computed normals that needed the fallback
   ShadowStats shadows;                 // zero unless shadows.enabled
 };
+
+// What a mesh must carry to be baked at `frequency` (Error "NAME: what"): per face, faces
+// (core/validate.h require_faces); per vertex, vertex normals or faces to compute them from (a
+// mesh of bare vertices has no normal to light). The CLI and Python call it before baking.
+void require_bakeable(const Mesh& mesh, ShadingFrequency frequency, const std::string& name);
 
 BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency,
                          const ShadeOptions& options = {}, const ShadowOptions& shadows = {});

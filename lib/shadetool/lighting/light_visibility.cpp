@@ -131,6 +131,11 @@ LightSample sample_environment(const Light& light, const Vec3d& n, double u, dou
 
 }  // namespace
 
+void check_shadow_options(const ShadowOptions& shadows, const std::string& what) {
+  if (shadows.enabled && (shadows.samples < 1 || shadows.samples > kMaxShadowSamples))
+    throw Error(what + " must be 1.." + std::to_string(kMaxShadowSamples) + ", got " + std::to_string(shadows.samples));
+}
+
 std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& lighting, const LightingPlan& plan,
                                      const std::vector<double>& points, const std::vector<double>& normals,
                                      const std::vector<std::uint64_t>& ids, std::uint32_t samples,

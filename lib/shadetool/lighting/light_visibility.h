@@ -29,6 +29,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <shadetool/lighting/lighting_plan.h>
@@ -46,6 +47,13 @@ struct ShadowOptions {
   // which this mesh is placed by world_from_object too), shared by every mesh of that scene.
   const VisibilityScene* occluders = nullptr;
 };
+
+// The limit of ShadowOptions::samples, and its check at every entry point that casts shadows
+// (bake_lighting, render_mesh): Error "WHAT must be 1..1048576, got N" (WHAT: "--samples",
+// "bake_lighting: samples", ...) when
+// shadows.enabled and samples is outside 1..kMaxShadowSamples. The CLI and Python relay it.
+constexpr std::uint32_t kMaxShadowSamples = 1u << 20;
+void check_shadow_options(const ShadowOptions& shadows, const std::string& what);
 
 struct ShadowStats {
   std::size_t hard_lights = 0;      // directional, point and spot lights: one ray each

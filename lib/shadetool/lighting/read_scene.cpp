@@ -21,6 +21,7 @@
 #include <shadetool/lighting/area_light.h>
 #include <shadetool/lighting/environment_map.h>
 #include <shadetool/lighting/look_at.h>
+#include <shadetool/lighting/validate_scene.h>
 
 namespace shadetool {
 
@@ -162,11 +163,7 @@ class SceneReader {
   }
 
   ShadingModel model(const json& j, const std::string& path) const {
-    const std::string s = string(j, path);
-    if (s == "lambert") return ShadingModel::Lambert;
-    if (s == "phong") return ShadingModel::Phong;
-    if (s == "blinn-phong") return ShadingModel::BlinnPhong;
-    bad(path, "must be \"lambert\", \"phong\" or \"blinn-phong\", got \"" + s + "\"");
+    return parse_shading_model(string(j, path), located(file_, 0, path));  // scene.h's vocabulary
   }
 
   void camera(const json& j, const std::string& path, Scene& scene) const {
@@ -568,7 +565,9 @@ Scene parse_scene(std::string_view json_text, const std::string& name) {
     fail_json(name, e);
   }
   if (!duplicates.first_duplicate.empty()) fail(name, 0, duplicates.first_duplicate);
-  return SceneReader(name, std::filesystem::path(name).parent_path().string()).scene(root);
+  const Scene scene = SceneReader(name, std::filesystem::path(name).parent_path().string()).scene(root);
+  validate_scene(scene, name);  // the reader checked each field on the way; this is every door's check
+  return scene;
 }
 
 Scene read_scene(const std::string& path) {

@@ -3,13 +3,16 @@
 // The quantities of OpenGL 2.1's fixed-function lighting (The OpenGL Graphics System 2.1,
 // section 2.14.1, "Lighting"), with the same defaults where OpenGL has one. Every position and
 // direction here is in WORLD space; the mesh is in OBJECT space and world_from_object places it.
-// A scene is read from JSON by lighting/read_scene.h, which validates every field; code that
-// builds a Scene by hand must respect the same ranges (listed per field below).
+// A scene is read from JSON by lighting/read_scene.h, which validates every field; every way of
+// building a Scene (JSON, glTF lights, code) passes it through lighting/validate_scene.h, the one
+// check of the ranges listed per field below.
 //
 // Colours are linear RGB, each channel >= 0 (no upper bound: HDR light intensities are allowed).
 #pragma once
 
 #include <memory>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <shadetool/core/affine.h>
@@ -25,6 +28,11 @@ enum class ShadingModel {
   Phong,       // specular max(R.V, 0)^shininess, R = 2 (n.L) n - L          (Phong 1975)
   BlinnPhong,  // specular max(n.H, 0)^shininess, H = normalize(L + V)       (Blinn 1977; OpenGL)
 };
+// Its vocabulary (core/vocabulary.h): "lambert", "phong", "blinn-phong". parse_shading_model
+// throws Error "WHAT: 'x' is not one of lambert, phong, blinn-phong".
+ShadingModel parse_shading_model(std::string_view text, const std::string& what);
+const char* shading_model_name(ShadingModel model);
+std::vector<std::string> shading_model_names();
 
 enum class LightType {
   Ambient,      // adds material.ambient * ambient everywhere (no position, no attenuation)

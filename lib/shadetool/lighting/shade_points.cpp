@@ -12,15 +12,6 @@
 
 namespace shadetool {
 
-const char* shading_model_name(ShadingModel model) {
-  switch (model) {
-    case ShadingModel::Lambert: return "lambert";
-    case ShadingModel::Phong: return "phong";
-    case ShadingModel::BlinnPhong: return "blinn-phong";
-  }
-  return "?";
-}
-
 namespace {
 
 using lighting_engine::EquationSetup;

@@ -76,8 +76,6 @@ struct ShadeReport {
   std::vector<std::string> skipped;    // names: dark_lights, specular, view_vector, positions, transforms
 };
 
-const char* shading_model_name(ShadingModel model);  // "lambert", "phong", "blinn-phong"
-
 std::vector<double> shade_points(const Scene& scene, const std::vector<double>& points_object,
                                  const std::vector<double>& normals_object, const ShadeOptions& options = {},
                                  ShadeReport* report = nullptr);

@@ -7,20 +7,26 @@
 #include <cstdio>
 
 #include <shadetool/core/affine.h>
+#include <shadetool/core/vocabulary.h>
 #include <shadetool/lighting/engine/metric.h>
 #include <shadetool/lighting/engine/skip_options.h>
 
 namespace shadetool {
 
-const char* shading_space_name(ShadingSpace space) {
-  switch (space) {
-    case ShadingSpace::Auto: return "auto";
-    case ShadingSpace::World: return "world";
-    case ShadingSpace::Camera: return "camera";
-    case ShadingSpace::Object: return "object";
-  }
-  return "?";
+namespace {
+const NamedValue<ShadingSpace> kShadingSpaces[] = {
+    {ShadingSpace::Auto, "auto"},
+    {ShadingSpace::World, "world"},
+    {ShadingSpace::Camera, "camera"},
+    {ShadingSpace::Object, "object"},
+};
+}  // namespace
+
+ShadingSpace parse_shading_space(std::string_view text, const std::string& what) {
+  return parse_named(kShadingSpaces, text, what);
 }
+const char* shading_space_name(ShadingSpace space) { return name_of(kShadingSpaces, space); }
+std::vector<std::string> shading_space_names() { return names_of(kShadingSpaces); }
 
 double cos_degrees(double degrees) {
   if (degrees == 0) return 1;

@@ -45,7 +45,10 @@
 namespace shadetool {
 
 enum class ShadingSpace { Auto, World, Camera, Object };
-const char* shading_space_name(ShadingSpace space);  // "auto", "world", "camera", "object"
+// Its vocabulary (core/vocabulary.h): "auto", "world", "camera", "object".
+ShadingSpace parse_shading_space(std::string_view text, const std::string& what);
+const char* shading_space_name(ShadingSpace space);
+std::vector<std::string> shading_space_names();
 
 enum class MetricKind { Identity, Scaled, General };
 

@@ -23,6 +23,9 @@
 #pragma once
 
 #include <cmath>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include <shadetool/core/vec3.h>
 #include <shadetool/geometry/face_area_vector.h>  // SHADETOOL_INLINE
@@ -39,6 +42,15 @@ enum class Weighting {
 
 // Precision the kernels accumulate in (inputs and outputs are double arrays either way).
 enum class Precision { Double, Float };
+
+// Their vocabularies (core/vocabulary.h, weighting.cpp): "uniform", "area", "angle", "max"
+// (--weight) and "double", "float" (--precision).
+Weighting parse_weighting(std::string_view text, const std::string& what);
+const char* weighting_name(Weighting weighting);
+std::vector<std::string> weighting_names();
+Precision parse_precision(std::string_view text, const std::string& what);
+const char* precision_name(Precision precision);
+std::vector<std::string> precision_names();
 
 
 SHADETOOL_INLINE Vec3d unit_normal(const Vec3d& N, double len) { return N * (1.0 / len); }  // len > 0: checked by the caller

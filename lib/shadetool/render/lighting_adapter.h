@@ -5,14 +5,13 @@
 //                         lighting/bake_lighting.h), #V by 3 linear doubles
 //   baked_face_colors     flat: `bake-lighting --per face` (face normal at the face's centroid),
 //                         #F by 3 linear doubles
-//   shading_vertex_normals Phong: the vertex normals bake_lighting lights each vertex with (input
-//                         vertex normals; else input corner normals that agree per vertex; else
-//                         angle-weighted, double), #V by 3 object space, so that Phong at a vertex
-//                         equals the baked colour there
+//   shading_vertex_normals Phong: the vertex normals bake_lighting lights each vertex with
+//                         (lighting/lit_normals.h, the one home of that choice), #V by 3 object
+//                         space, so that Phong at a vertex equals the baked colour there
 //   PointShader           Phong: lighting/shade_point.h (the lighting equation at one world-space
 //                         point with a world-space normal; every light kind lighting supports);
-//                         with shadows, lighting/light_visibility.h over a BVH of the mesh in world
-//                         space (lib/visibility), the visibility multiplying each light's terms
+//                         with shadows, lighting/light_visibility.h over the mesh in world space
+//                         (lighting/world_occluders.h), the visibility multiplying each light's terms
 //   shadows (all three)   RenderLightingOptions::shadows: flat and Gouraud take bake_lighting's own
 //                         shadowed colours (seeds: face or vertex ids), Phong one visibility row
 //                         per sample (seeds: the sample's index in the image)
@@ -33,6 +32,7 @@
 #include <shadetool/lighting/shade_point.h>
 #include <shadetool/lighting/shade_points.h>
 #include <shadetool/lighting/shading_space.h>
+#include <shadetool/lighting/world_occluders.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
@@ -61,7 +61,7 @@ class PointShader {
 
   // Shadows: whether they are on, the visibility rows of points (world space, #P by 3 each; ids
   // the seeds), and the colour with one row (row_size() values) multiplying the lights' terms.
-  bool casts_shadows() const { return bvh_ != nullptr; }
+  bool casts_shadows() const { return occluders_ != nullptr; }
   std::size_t row_size() const { return 2 * lighting_.plan.lights.size(); }
   std::vector<double> visibility(const std::vector<double>& points_world, const std::vector<double>& normals_world,
                                  const std::vector<std::uint64_t>& ids) const;
@@ -74,8 +74,7 @@ class PointShader {
   PointLighting lighting_;  // world space: lights and eye in world coordinates
   const Scene* scene_ = nullptr;
   std::uint32_t shadow_samples_ = 16;
-  Mesh world_;                              // the mesh's faces at world positions (shadows only)
-  std::unique_ptr<VisibilityScene> bvh_;    // built from world_ (shares its corner array)
+  std::unique_ptr<const WorldOccluders> occluders_;  // the mesh's faces at world positions (shadows only)
 };
 
 // The eye in world space (lighting/scene.h eye_world).

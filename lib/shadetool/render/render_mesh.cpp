@@ -14,6 +14,7 @@
 #include <shadetool/render/clip_polygon.h>
 #include <shadetool/render/engine/screen_triangle.h>
 #include <shadetool/render/fill_rule.h>
+#include <shadetool/core/vocabulary.h>
 #include <shadetool/geometry/winding_number.h>
 
 namespace shadetool {
@@ -21,14 +22,19 @@ namespace shadetool {
 using render_engine::kSubUnits;
 using render_engine::ScreenTriangle;
 
-const char* render_shading_name(RenderShading shading) {
-  switch (shading) {
-    case RenderShading::Flat: return "flat";
-    case RenderShading::Gouraud: return "gouraud";
-    case RenderShading::Phong: return "phong";
-  }
-  return "?";
+namespace {
+const NamedValue<RenderShading> kRenderShadings[] = {
+    {RenderShading::Flat, "flat"},
+    {RenderShading::Gouraud, "gouraud"},
+    {RenderShading::Phong, "phong"},
+};
+}  // namespace
+
+RenderShading parse_render_shading(std::string_view text, const std::string& what) {
+  return parse_named(kRenderShadings, text, what);
 }
+const char* render_shading_name(RenderShading shading) { return name_of(kRenderShadings, shading); }
+std::vector<std::string> render_shading_names() { return names_of(kRenderShadings); }
 
 namespace {
 
@@ -187,15 +193,6 @@ TriangleFate setup_triangle(const SetupContext& ctx, std::uint32_t face, const s
   return any ? TriangleFate::Drawn : TriangleFate::Degenerate;
 }
 
-void check_options(const RenderOptions& o, const std::string& name) {
-  if (o.width < 1 || o.height < 1 || o.width > kMaxImageSide || o.height > kMaxImageSide)
-    fail(name, 0, "image size " + std::to_string(o.width) + "x" + std::to_string(o.height) + " must be 1.." +
-                      std::to_string(kMaxImageSide) + " pixels on each side");
-  if (o.samples < 1 || o.samples > kMaxSamples)
-    fail(name, 0, "samples must be 1.." + std::to_string(kMaxSamples) + " (N x N per pixel), got " +
-                      std::to_string(o.samples));
-}
-
 // The camera's eye inside a closed mesh sees only the inside: refuse (|w| > 1/2, winding number).
 // Only an eye inside the mesh's bounding box can be inside the mesh: the winding-number tree (costly
 // on large meshes: bench/render/results.md) is built only then.
@@ -342,8 +339,34 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
 
 }  // namespace
 
+void check_render_options(const RenderOptions& o, const std::string& name) {
+  if (o.width < 1 || o.height < 1 || o.width > kMaxImageSide || o.height > kMaxImageSide)
+    fail(name, 0, "image size " + std::to_string(o.width) + "x" + std::to_string(o.height) + ": each side must be 1.." +
+                      std::to_string(kMaxImageSide) + " pixels");
+  if (o.samples < 1 || o.samples > kMaxSamples)
+    fail(name, 0, "samples must be 1.." + std::to_string(kMaxSamples) + " (N x N per pixel), got " +
+                      std::to_string(o.samples));
+  if (o.threads < 0 || o.threads > kMaxThreads)
+    fail(name, 0, "threads must be 0.." + std::to_string(kMaxThreads) + " (0: all cores), got " + std::to_string(o.threads));
+  check_shadow_options(o.lighting.shadows, located(name, 0, "shadow samples"));
+  for (int i = 0; i < 3; ++i)
+    if (!(o.background[i] >= 0) || !std::isfinite(o.background[i]))
+      fail(name, 0, "background channels must be finite and >= 0, got " + std::to_string(o.background[i]));
+  switch (o.shading) {
+    case RenderShading::Flat:
+    case RenderShading::Gouraud:
+      break;
+    case RenderShading::Phong:
+      if (o.lighting.space != ShadingSpace::Auto)
+        fail(name, 0, std::string("space '") + shading_space_name(o.lighting.space) +
+                          "' applies to flat and gouraud shading (bake-lighting's evaluation); phong evaluates per "
+                          "sample in world space");
+      break;
+  }
+}
+
 RenderResult render_mesh(const Mesh& mesh, const Scene& scene, const RenderOptions& options, const std::string& name) {
-  check_options(options, name);
+  check_render_options(options, name);
   if (options.threads <= 0) return render_in_arena(mesh, scene, options, name);
   tbb::task_arena arena(options.threads);  // every parallel step (setup and tiles) on these threads
   RenderResult result;

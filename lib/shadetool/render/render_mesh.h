@@ -40,7 +40,7 @@
 // the image is bitwise the same for any number of threads.
 // Precision: geometry and shading in double (the lighting's), fixed-point coverage (exact), the
 // image stored as float.
-// Errors (shadetool::Error, one line naming `name`): size or samples out of range, a perspective
+// Errors (shadetool::Error, one line naming `name`): check_render_options below, a perspective
 // camera whose eye is inside the mesh (|generalised winding number| above 1/2, repair/
 // winding_number.h; tested only when the eye is inside the mesh's bounding box).
 #pragma once
@@ -60,17 +60,21 @@
 namespace shadetool {
 
 enum class RenderShading { Flat, Gouraud, Phong };
-const char* render_shading_name(RenderShading shading);  // "flat", "gouraud", "phong"
+// Its vocabulary (core/vocabulary.h): "flat", "gouraud", "phong".
+RenderShading parse_render_shading(std::string_view text, const std::string& what);
+const char* render_shading_name(RenderShading shading);
+std::vector<std::string> render_shading_names();
 
 constexpr int kMaxImageSide = 16384;
 constexpr int kMaxSamples = 16;
+constexpr int kMaxThreads = 1024;
 
 struct RenderOptions {
   RenderShading shading = RenderShading::Phong;
   int width = 800, height = 600;
   int samples = 1;                    // N: N x N samples per pixel, 1..16
   Vec3d background{0, 0, 0};          // linear RGB
-  RenderLightingOptions lighting;     // --model, --space
+  RenderLightingOptions lighting;     // --model, --space (flat and Gouraud only), shadows
   int threads = 0;                    // 0: TBB's default
   bool count_coverage = false;        // fill RenderResult::coverage (tests)
   bool check_eye_inside = true;       // refuse a camera inside the mesh
@@ -96,6 +100,14 @@ struct RenderResult {
 
 RenderResult render_mesh(const Mesh& mesh, const Scene& scene, const RenderOptions& options,
                          const std::string& name = "<mesh>");
+
+// The limits of RenderOptions, checked once here (render_mesh calls it first; the CLI and Python
+// call it before reading anything and relay the message): Error "NAME: what" when a side is
+// outside 1..kMaxImageSide, samples outside 1..kMaxSamples, threads outside 0..kMaxThreads,
+// shadow samples outside light_visibility.h's range, a background channel negative or not
+// finite, or a shading space is asked of Phong (it
+// evaluates the equation per sample in world space: options.lighting.space must be Auto).
+void check_render_options(const RenderOptions& options, const std::string& name);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

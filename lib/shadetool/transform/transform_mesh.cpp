@@ -7,12 +7,27 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
+#include <shadetool/core/vocabulary.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/transform/recompute_normals.h>
 #include <shadetool/transform/reverse_winding.h>
 #include <shadetool/transform/transform_normals.h>
 
 namespace shadetool {
+
+namespace {
+const NamedValue<NormalsPolicy> kNormalsPolicies[] = {
+    {NormalsPolicy::Transform, "transform"},
+    {NormalsPolicy::Recompute, "recompute"},
+    {NormalsPolicy::Drop, "drop"},
+};
+}  // namespace
+
+NormalsPolicy parse_normals_policy(std::string_view text, const std::string& what) {
+  return parse_named(kNormalsPolicies, text, what);
+}
+const char* normals_policy_name(NormalsPolicy policy) { return name_of(kNormalsPolicies, policy); }
+std::vector<std::string> normals_policy_names() { return names_of(kNormalsPolicies); }
 
 namespace {
 

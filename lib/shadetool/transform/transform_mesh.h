@@ -29,6 +29,8 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <shadetool/core/affine.h>
 #include <shadetool/core/mesh.h>
@@ -38,6 +40,10 @@
 namespace shadetool {
 
 enum class NormalsPolicy { Transform, Recompute, Drop };
+// Its vocabulary (core/vocabulary.h): "transform", "recompute", "drop" (--normals).
+NormalsPolicy parse_normals_policy(std::string_view text, const std::string& what);
+const char* normals_policy_name(NormalsPolicy policy);
+std::vector<std::string> normals_policy_names();
 
 struct TransformOptions {
   NormalsPolicy normals = NormalsPolicy::Transform;

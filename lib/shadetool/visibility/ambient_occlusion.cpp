@@ -17,6 +17,12 @@
 
 namespace shadetool {
 
+void check_occlusion_options(const AmbientOcclusionOptions& o, const std::string& what) {
+  if (o.samples < 1 || o.samples > kMaxOcclusionSamples)
+    throw Error(what + ": samples must be 1.." + std::to_string(kMaxOcclusionSamples) + ", got " + std::to_string(o.samples));
+  if (!(o.max_distance > 0)) throw Error(what + ": distance must be > 0 (default: unlimited)");
+}
+
 namespace {
 
 constexpr std::uint32_t kVertexSalt = 0, kFaceSalt = 1;
@@ -43,10 +49,7 @@ std::uint32_t count_hits(RTCScene scene, const Vec3f& p_local, const Vec3d& n, s
   return hits;
 }
 
-void check_options(const AmbientOcclusionOptions& o) {
-  if (o.samples == 0) throw Error("ambient occlusion: samples must be at least 1");
-  if (!(o.max_distance > 0)) throw Error("ambient occlusion: max_distance must be positive");
-}
+void check_options(const AmbientOcclusionOptions& o) { check_occlusion_options(o, "ambient occlusion"); }
 
 // Unit n from a stored normal, or false when it has zero or non-finite length.
 bool unit_axis(const Vec3d& raw, Vec3d& n) {

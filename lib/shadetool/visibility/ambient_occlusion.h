@@ -33,7 +33,8 @@
 // engine/face_normal_blocks.h); degenerate faces are skipped.
 // Precision: directions in double, rounded to float for Embree; counts in integers; the fraction
 // (N - hits)/N in double, rounded once to float.
-// Errors: throws Error for samples = 0, D <= 0 or NaN, mismatched sizes, non-finite points.
+// Errors: throws Error for samples outside 1..kMaxOcclusionSamples, D <= 0 or NaN
+// (check_occlusion_options), mismatched sizes, non-finite points.
 #pragma once
 
 #include <cstddef>
@@ -53,6 +54,12 @@ struct AmbientOcclusionOptions {
   double max_distance = std::numeric_limits<double>::infinity();  // world units
   std::uint32_t seed = 0;
 };
+
+// The limits of AmbientOcclusionOptions, checked once here (every entry point below calls it; the
+// CLI and Python call it before reading anything and relay the message): Error "WHAT: samples
+// must be 1..1048576, got N" or "WHAT: distance must be > 0 (default: unlimited)" (NaN included).
+constexpr std::uint32_t kMaxOcclusionSamples = 1u << 20;
+void check_occlusion_options(const AmbientOcclusionOptions& options, const std::string& what);
 
 struct AmbientOcclusion {
   std::vector<float> open_fraction;
