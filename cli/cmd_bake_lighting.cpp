@@ -17,6 +17,7 @@
 #include <shadetool/gltf/gltf_lights.h>
 #include <shadetool/gltf/gltf_scene.h>
 #include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/io/split_corner_normals.h>
 #include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/read_scene.h>
 
@@ -105,6 +106,10 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
     shadows.enabled = opt.shadows;
     shadows.samples = opt.samples;
     const bool samples_given = samples->count() > 0;
+    // The result is colours: an output format without them is refused before any work.
+    const bool per_face = frequency == shadetool::ShadingFrequency::PerFace;
+    io.result_attributes = {per_face ? &shadetool::FormatAttributes::face_colors : &shadetool::FormatAttributes::vertex_colors};
+    io.result_name = per_face ? "face colours" : "vertex colours";
 
     return run_mesh_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       if (own_scene && !r.gltf)
@@ -138,6 +143,14 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
         cast.occluders = static_cast<const SceneOccluders*>(state.get())->bvh.get();
         r.notes.push_back("shadows cast by the whole scene (every primitive placed by its nodes), one BVH");
       }
+      if (frequency == shadetool::ShadingFrequency::PerVertex && shadetool::io::corner_normals_disagree(mesh)) {
+        // Corner normals that differ at a vertex (creases, OBJ vn): one vertex per (vertex, normal)
+        // pair, each lit with its own normal, as the same normals read from a PLY file are.
+        std::size_t added = 0;
+        mesh = shadetool::io::split_corner_normals(mesh, added);
+        r.notes.push_back(std::to_string(added) + " vertices added so that each corner is lit with its own normal (corner "
+                          "normals differ there); the output's vertex normals are those corner normals");
+      }
       const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade, cast);
       const shadetool::ShadeReport& rep = baked.report;
 
@@ -169,7 +182,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
         throw shadetool::Error(shadetool::located(
             input, 0, std::to_string(nonfinite) + " colour values came out NaN or infinite (light positions, " +
                           "intensities or the world map near the limits of double?); nothing written"));
-      shadetool::store_baked_colors(mesh, std::move(colors), frequency, encoding.hdr);
+      for (auto& n : shadetool::store_baked_colors(mesh, std::move(colors), frequency, encoding.hdr)) r.notes.push_back(n);
 
       r.stats["model"] = shadetool::shading_model_name(rep.model);
       r.stats["space"] = shadetool::shading_space_name(rep.space);

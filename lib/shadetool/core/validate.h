@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,9 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
-// Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any.
+// Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any, followed by
+// `; no face uses them: `shadetool repair --remove-unreferenced` removes them` when no face uses
+// any of them, else ` (U used by faces)`.
 inline void require_finite_positions(const Mesh& mesh, const std::string& name) {
   std::size_t bad = 0, first = 0;
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
@@ -24,9 +27,22 @@ inline void require_finite_positions(const Mesh& mesh, const std::string& name) 
       if (bad++ == 0) first = v;
     }
   }
-  if (bad > 0)
-    fail(name, 0, std::to_string(bad) + (bad == 1 ? " vertex has" : " vertices have") +
-                      " NaN or Inf coordinates (first: vertex " + std::to_string(first) + ")");
+  if (bad == 0) return;
+  // Which of them a face uses: when none does (Open3D writes NaN into the vertices its subdivision
+  // left unused), the way out is to remove them, and the message says how.
+  std::vector<char> used(mesh.num_vertices(), 0);
+  for (std::uint32_t v : mesh.corner_vertex)
+    if (v < used.size()) used[v] = 1;
+  std::size_t bad_used = 0;
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+    const double* p = &mesh.positions[3 * v];
+    bad_used += used[v] && !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+  }
+  const std::string fix = bad_used == 0 ? std::string("; no face uses ") + (bad == 1 ? "it" : "them") +
+                                              ": `shadetool repair --remove-unreferenced` removes them"
+                                        : " (" + std::to_string(bad_used) + " used by faces)";
+  fail(name, 0, std::to_string(bad) + (bad == 1 ? " vertex has" : " vertices have") +
+                    " NaN or Inf coordinates (first: vertex " + std::to_string(first) + ")" + fix);
 }
 
 // Throws Error `NAME: K normals have NaN or Inf components (first: KIND normal I); HINT` if any
