@@ -18,7 +18,7 @@ namespace shadetool {
 
 // Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any, followed by
 // `; no face uses them: `shadetool repair --remove-unreferenced` removes them` when no face uses
-// any of them, else ` (U used by faces)`.
+// any of them, `; K of them used by no face (...)` when some face uses some.
 inline void require_finite_positions(const Mesh& mesh, const std::string& name) {
   std::size_t bad = 0, first = 0;
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
@@ -40,7 +40,9 @@ inline void require_finite_positions(const Mesh& mesh, const std::string& name) 
   }
   const std::string fix = bad_used == 0 ? std::string("; no face uses ") + (bad == 1 ? "it" : "them") +
                                               ": `shadetool repair --remove-unreferenced` removes them"
-                                        : " (" + std::to_string(bad_used) + " used by faces)";
+                          : bad_used < bad ? "; " + std::to_string(bad - bad_used) + " of them used by no face" +
+                                                 " (`shadetool repair --remove-unreferenced` removes those)"
+                                           : std::string();
   fail(name, 0, std::to_string(bad) + (bad == 1 ? " vertex has" : " vertices have") +
                     " NaN or Inf coordinates (first: vertex " + std::to_string(first) + ")" + fix);
 }
