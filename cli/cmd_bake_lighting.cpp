@@ -17,6 +17,7 @@
 #include <shadetool/gltf/gltf_lights.h>
 #include <shadetool/gltf/gltf_scene.h>
 #include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/io/split_corner_normals.h>
 #include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/lighting/world_occluders.h>
@@ -181,7 +182,7 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
                       ->needs(shadows_flag);
 
   return [options, samples] {
-    const IoOptions& io = options->io;
+    IoOptions& io = options->io;
     const BakeLightingOptions& opt = options->opt;
     // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
     const bool own_scene = opt.scene.empty();  // glTF input: the file's lights (gltf/gltf_lights.h)
@@ -200,15 +201,29 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       throw UsageError(e.what());
     }
     const shadetool::Scene file_scene = own_scene ? shadetool::Scene() : shadetool::read_scene(opt.scene);
+    // The result is colours: an output format without them is refused before any work.
+    const bool per_face = set.frequency == shadetool::ShadingFrequency::PerFace;
+    io.result_attributes = {per_face ? &shadetool::FormatAttributes::face_colors : &shadetool::FormatAttributes::vertex_colors};
+    io.result_name = per_face ? "face colours" : "vertex colours";
 
     return run_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       const shadetool::Scene scene = own_scene ? gltf_own_scene(input, r) : file_scene;
       check_bakeable(mesh, input, set.frequency);
       shadetool::ShadowOptions cast = set.shadows;
       if (set.shadows.enabled && own_scene) cast.occluders = document_occluders(r);
+      if (set.frequency == shadetool::ShadingFrequency::PerVertex && shadetool::io::corner_normals_disagree(mesh)) {
+        // Corner normals that differ at a vertex (creases, OBJ vn): one vertex per (vertex, normal)
+        // pair, each lit with its own normal, as the same normals read from a PLY file are.
+        std::size_t added = 0;
+        mesh = shadetool::io::split_corner_normals(mesh, added);
+        r.notes.push_back(std::to_string(added) + " vertices added so that each corner is lit with its own normal (corner "
+                          "normals differ there); the output's vertex normals are those corner normals");
+      }
       const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
       add_bake_notes(baked, scene, set, r);
-      shadetool::store_baked_colors(mesh, encoded_colors(baked, set.encoding, input), set.frequency, set.encoding.hdr);
+      for (auto& n : shadetool::store_baked_colors(mesh, encoded_colors(baked, set.encoding, input), set.frequency,
+                                                   set.encoding.hdr))
+        r.notes.push_back(n);
       add_bake_stats(baked, set, cast.occluders != nullptr, r);
     }, OutputKind::Mesh);
   };

@@ -53,11 +53,26 @@ nlohmann::json info_json(const MeshInfo& m, const std::string& format) {
   j["unreferenced_vertices"] = m.unreferenced_vertices;
   j["nonfinite_vertices"] = m.nonfinite_vertices;
   j["nonfinite_values"] = m.nonfinite_values;
+  if (m.nonfinite_vertices > 0) j["nonfinite_unreferenced_vertices"] = m.nonfinite_unreferenced_vertices;
   j["closed_manifold"] = m.closed_manifold();
   return j;
 }
 
-std::string info_text(const MeshInfo& m, const std::string& input, const std::string& format) {
+// A coordinate that is exactly a float (float data: binary PLY and STL, glTF) as the shortest text
+// of that float (the widened double would print 17 digits of binary noise), else the shortest
+// text that reads back to the double.
+bool is_float(double x) { return double(float(x)) == x; }
+std::string coordinate_text(double x) { return is_float(x) ? fmt::format("{}", float(x)) : fmt::format("{}", x); }
+// A size, hi - lo: between floats to a float's digits, else to 15 significant digits (the
+// subtraction's last bits are rounding: 0.072612, not 0.07261200000000001).
+std::string size_text(double lo, double hi) {
+  return is_float(lo) && is_float(hi) ? fmt::format("{}", float(hi - lo)) : fmt::format("{:.15g}", hi - lo);
+}
+
+// texcoord_sets: a glTF primitive's TEXCOORD_n attributes ("TEXCOORD_0"), which its mesh does not
+// hold (they pass through); empty otherwise.
+std::string info_text(const MeshInfo& m, const std::string& input, const std::string& format,
+                      const std::string& texcoord_sets) {
   std::string s = fmt::format("{}: {} ({})\n", input, format, m.double_precision ? "double" : "float");
   s += fmt::format("  vertices               {}\n", m.vertices);
   std::string sizes;
@@ -68,10 +83,11 @@ std::string info_text(const MeshInfo& m, const std::string& input, const std::st
   s += fmt::format("  faces                  {}{}\n", m.faces, sizes.empty() ? "" : " (" + sizes + ")");
   s += fmt::format("  corners                {}\n", m.corners);
   if (m.has_bbox) {
-    s += fmt::format("  bounding box           min ({}, {}, {})  max ({}, {}, {})\n", m.bbox_min.x, m.bbox_min.y,
-                     m.bbox_min.z, m.bbox_max.x, m.bbox_max.y, m.bbox_max.z);
-    s += fmt::format("  size                   {} x {} x {}\n", m.bbox_max.x - m.bbox_min.x,
-                     m.bbox_max.y - m.bbox_min.y, m.bbox_max.z - m.bbox_min.z);
+    s += fmt::format("  bounding box           min ({}, {}, {})  max ({}, {}, {})\n", coordinate_text(m.bbox_min.x),
+                     coordinate_text(m.bbox_min.y), coordinate_text(m.bbox_min.z), coordinate_text(m.bbox_max.x),
+                     coordinate_text(m.bbox_max.y), coordinate_text(m.bbox_max.z));
+    s += fmt::format("  size                   {} x {} x {}\n", size_text(m.bbox_min.x, m.bbox_max.x),
+                     size_text(m.bbox_min.y, m.bbox_max.y), size_text(m.bbox_min.z, m.bbox_max.z));
   } else {
     s += "  bounding box           none (no finite vertex)\n";
   }
@@ -84,7 +100,8 @@ std::string info_text(const MeshInfo& m, const std::string& input, const std::st
   add(m.face_normals, "face normals");
   add(m.vertex_colors, fmt::format("vertex colours ({})", m.color_channels == 4 ? "rgba" : "rgb"));
   add(m.face_colors, fmt::format("face colours ({})", m.color_channels == 4 ? "rgba" : "rgb"));
-  add(m.texcoords, fmt::format("texcoords ({} distinct)", m.texcoord_pool));
+  if (!texcoord_sets.empty()) add(true, "texcoords (" + texcoord_sets + ")");
+  else add(m.texcoords, fmt::format("texcoords ({} distinct)", m.texcoord_pool));
   add(m.vertex_quality, "vertex quality");
   add(m.face_quality, "face quality");
   auto names = [](const std::vector<std::string>& v) {
@@ -107,7 +124,11 @@ std::string info_text(const MeshInfo& m, const std::string& input, const std::st
   s += fmt::format("  degenerate faces       {} ({} repeated index, {} zero area{})\n", m.degenerate.count(),
                    m.degenerate.repeated_index, m.degenerate.zero_area + m.degenerate.too_few_corners, nonfinite_faces);
   s += fmt::format("  unreferenced vertices  {}\n", m.unreferenced_vertices);
-  s += fmt::format("  NaN/Inf                {} vertices, {} attribute values\n", m.nonfinite_vertices,
+  s += fmt::format("  NaN/Inf                {} vertices{}, {} attribute values\n", m.nonfinite_vertices,
+                   m.nonfinite_unreferenced_vertices > 0
+                       ? fmt::format(" ({} used by no face: `shadetool repair --remove-unreferenced` removes them)",
+                                     m.nonfinite_unreferenced_vertices)
+                       : std::string(),
                    m.nonfinite_values);
   s += fmt::format("  closed manifold        {}\n", m.closed_manifold() ? "yes" : "no");
   return s;
@@ -128,9 +149,15 @@ RegisterCommand reg("info", HelpSection::Inspect, [](CLI::App& app) -> std::func
           else if (!io.input_format.empty()) format = io.input_format;
           else format = shadetool::format_extension(shadetool::format_from_extension(input));
           for (auto& c : format) c = char(std::toupper(static_cast<unsigned char>(c)));
-          const MeshInfo m = shadetool::info::mesh_info(mesh);
+          MeshInfo m = shadetool::info::mesh_info(mesh);
+          // A glTF primitive's TEXCOORD_n pass through beside its mesh: it has texture coordinates.
+          std::string texcoord_sets;
+          if (r.gltf)
+            for (const auto& a : r.gltf->attributes)
+              if (a.rfind("TEXCOORD_", 0) == 0) texcoord_sets += (texcoord_sets.empty() ? "" : " ") + a;
+          if (!texcoord_sets.empty()) m.texcoords = true;
           r.stats = info_json(m, format);
-          r.text = info_text(m, input, format);
+          r.text = info_text(m, input, format, texcoord_sets);
           if (r.gltf) {  // what the primitive holds beyond the mesh (passed through by every command)
             std::string attrs;
             for (const auto& a : r.gltf->attributes) attrs += (attrs.empty() ? "" : " ") + a;

@@ -19,6 +19,8 @@
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/gltf/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
+#include <shadetool/io/split_corner_normals.h>
+#include <shadetool/normals/invalid_normals.h>
 
 namespace shadetool_cli {
 namespace {
@@ -30,14 +32,29 @@ struct OcclusionOptions {
   std::string per = "vertex";
 };
 
-// The open fraction as grey (r = g = b = value, alpha 1) in `colors`, keeping the channel count the
-// mesh's other colour array uses.
+// The open fraction as grey (r = g = b = value) in `colors`, keeping the channel count the mesh's
+// other colour array uses, or 4 when `colors` itself had alpha: an alpha the input had is kept
+// (transparency is not occlusion), else alpha is 1.
 void store_grey(shadetool::Mesh& mesh, const std::vector<float>& open, std::vector<float>& colors, bool other_has_colors) {
-  if (!other_has_colors) mesh.color_channels = 3;
+  const bool own_alpha = mesh.color_channels == 4 && colors.size() == 4 * open.size();
+  std::vector<float> alpha;
+  if (own_alpha)
+    for (std::size_t i = 0; i < open.size(); ++i) alpha.push_back(colors[4 * i + 3]);
+  if (!other_has_colors && !own_alpha) mesh.color_channels = 3;
   const std::size_t ch = std::size_t(mesh.color_channels);
   colors.assign(ch * open.size(), 1.0f);
-  for (std::size_t i = 0; i < open.size(); ++i)
+  for (std::size_t i = 0; i < open.size(); ++i) {
     for (std::size_t k = 0; k < 3; ++k) colors[ch * i + k] = open[i];
+    if (own_alpha) colors[ch * i + 3] = alpha[i];
+  }
+}
+
+// The mesh's corner normals as vertex normals, one vertex per (vertex, normal) pair, in `split`;
+// false when any of them (or an unused vertex's, which has none) cannot be a hemisphere's axis:
+// the normals are then computed, as for a mesh without any.
+bool usable_split(const shadetool::Mesh& mesh, shadetool::Mesh& split, std::size_t& added) {
+  split = shadetool::io::split_corner_normals(mesh, added);
+  return shadetool::count_invalid_normals(split.vertex_normals) == 0;
 }
 
 RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::function<int()> {
@@ -59,7 +76,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
   sub->add_option("--per", opt.per, "One value per vertex (default) or per face")
       ->check(CLI::IsMember(shadetool::shading_frequency_names()));
   return [command_options = options] {
-    const IoOptions& io = command_options->io;
+    IoOptions& io = command_options->io;
     const OcclusionOptions& opt = command_options->opt;
     shadetool::AmbientOcclusionOptions options;
     options.samples = opt.samples;
@@ -72,6 +89,11 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
     const bool per_face =
         shadetool::parse_shading_frequency(opt.per, "--per") == shadetool::ShadingFrequency::PerFace;
     const bool colors = opt.as != "quality", quality = opt.as != "color";
+    // The result is grey colours and/or quality: an output format with neither is refused before any work.
+    io.result_attributes.clear();
+    if (colors) io.result_attributes.push_back(per_face ? &shadetool::FormatAttributes::face_colors : &shadetool::FormatAttributes::vertex_colors);
+    if (quality) io.result_attributes.push_back(&shadetool::FormatAttributes::quality);
+    io.result_name = std::string(colors && quality ? "grey colours and quality" : colors ? "grey colours" : "quality") + " per " + opt.per;
     return run_command(
         "occlusion", io,
         [options, per_face, colors, quality](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
@@ -82,6 +104,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
           // glTF: every primitive against the whole scene (gltf/gltf_occlusion.h), computed at
           // the first primitive for all of them; the BVH statistics then count once, there.
           shadetool::MeshOcclusion job;
+          shadetool::Mesh split;
           bool scene_stats = true;
           if (r.gltf_document && r.gltf && r.gltf_document_state) {
             const std::size_t index = std::size_t(r.gltf - r.gltf_document->primitives.data());
@@ -95,6 +118,18 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
             job.ao = scene.primitives[index];
             job.normals_computed = scene.normals_computed[index];
             job.scene = scene.scene;
+          } else if (std::size_t added = 0; !per_face && mesh.has_corner_normals() && !mesh.has_vertex_normals() &&
+                     usable_split(mesh, split, added)) {
+            // Corner normals (OBJ vn) are the file's normals: the rays leave about them, one
+            // vertex per distinct (vertex, normal) pair (io/split_corner_normals.h). When that adds
+            // no vertex the output keeps its corner normals; else it is the split mesh.
+            job = shadetool::mesh_occlusion(split, per_face, options, input);
+            if (added > 0) {
+              mesh = std::move(split);
+              r.notes.push_back(fmt::format("{} vertices added so that each corner's rays leave about its own normal (corner "
+                                            "normals differ there); the output's vertex normals are those corner normals",
+                                            added));
+            }
           } else {
             // The normals (when computed) and the BVH are freed inside: the outputs are made after.
             job = shadetool::mesh_occlusion(mesh, per_face, options, input);

@@ -122,6 +122,8 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
 
     const bool pfm = is_pfm(output_image_format(io));  // --hdr has set io.format to pfm
     return run_command("render", io, [ro, &scene, pfm](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+      // A mesh without faces renders as the background alone: not a picture of it (exit 1).
+      shadetool::require_faces(mesh, input);
       shadetool::require_finite_positions(mesh, input);
       shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
       const shadetool::RenderResult result = shadetool::render_mesh(mesh, scene, ro, input);

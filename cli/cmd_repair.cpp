@@ -1,5 +1,5 @@
 // cmd_repair.cpp: `shadetool repair IN -o OUT [--report FILE.json] [--weight W]
-// [--remove-degenerate] [--weld EPS]`. Parses, prints one line per step that changed something,
+// [--remove-degenerate] [--remove-unreferenced] [--weld EPS]`. Parses, prints one line per step that changed something,
 // writes the JSON report; the repair itself is lib/shadetool/repair/repair_mesh.h.
 #include <filesystem>
 #include <limits>
@@ -14,6 +14,7 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include "number_flags.h"
+#include <shadetool/repair/remove_unreferenced.h>
 #include <shadetool/repair/repair_mesh.h>
 #include <shadetool/repair/repair_report_json.h>
 #include "usage_error.h"
@@ -27,6 +28,7 @@ struct RepairCliOptions {
   std::string report;
   std::string weight = shadetool::weighting_name(shadetool::Weighting::Angle);
   bool remove_degenerate = false;
+  bool remove_unreferenced = false;
   double weld = -1;  // < 0: not given
 };
 
@@ -104,6 +106,8 @@ RegisterCommand reg("repair", HelpSection::Edit, [](CLI::App& app) -> std::funct
       ->check(CLI::IsMember(shadetool::weighting_names()));
   sub->add_flag("--remove-degenerate", opt.remove_degenerate,
                 "Remove degenerate faces (zero area, repeated index, < 3 corners); default: report only");
+  sub->add_flag("--remove-unreferenced", opt.remove_unreferenced,
+                "Remove vertices no face uses (also when their coordinates are NaN or Inf); default: keep them");
   sub->add_option("--weld", opt.weld, "Merge vertices within distance EPS (>= 0) of each other before orienting")
       ->check(finite_number(0.0, std::numeric_limits<double>::infinity()));
   return [options] {
@@ -122,6 +126,8 @@ RegisterCommand reg("repair", HelpSection::Edit, [](CLI::App& app) -> std::funct
     return run_command(
         "repair", io,
         [&io, &opt](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+          // Before the check of the positions: unused vertices' NaN (Open3D's) goes with them.
+          std::size_t unreferenced = opt.remove_unreferenced ? shadetool::remove_unreferenced_vertices(mesh) : 0;
           shadetool::require_finite_positions(mesh, input);
           shadetool::require_faces(mesh, input);
           shadetool::RepairOptions o;
@@ -129,12 +135,19 @@ RegisterCommand reg("repair", HelpSection::Edit, [](CLI::App& app) -> std::funct
           o.remove_degenerate = opt.remove_degenerate;
           o.weld_eps = opt.weld;
           const RepairReport rep = shadetool::repair_mesh(mesh, o);
+          // Faces removed as degenerate may leave vertices unused: removed too.
+          if (opt.remove_unreferenced) unreferenced += shadetool::remove_unreferenced_vertices(mesh);
           add_notes(rep, opt, r);
           add_stats(rep, r);
+          if (opt.remove_unreferenced) {
+            r.stats["unreferenced_vertices_removed"] = unreferenced;
+            if (unreferenced > 0) r.notes.push_back(fmt::format("unreferenced: removed {} no face used", count(unreferenced, "vertex", "vertices")));
+          }
           if (!opt.report.empty()) {
             nlohmann::json j{{"input", input}};
             if (!io.output.empty()) j["output"] = io.output;
             j.update(nlohmann::json::parse(shadetool::repair_report_json(rep, opt.weld, opt.weight)));
+            if (opt.remove_unreferenced) j["unreferenced_vertices_removed"] = unreferenced;
             r.other_files.emplace_back(opt.report, j.dump(2) + "\n");
           }
         },

@@ -146,6 +146,26 @@ std::string output_path_for(const IoOptions& io, const std::string& input, Outpu
 
 void refuse_overlapping_paths(const IoOptions& io, OutputKind kind);
 
+// A result no output format can hold is a usage error before any work (bake-lighting -o x.stl
+// would write a file with nothing it computed). An output whose format is unknown is left to the
+// writer's own message.
+void refuse_unheld_result(const std::string& command, const IoOptions& io, OutputKind kind) {
+  if (kind != OutputKind::Mesh || io.result_attributes.empty()) return;
+  for (const std::string& input : io.inputs) {
+    const std::string output = output_path_for(io, input, kind);
+    Format format = Format::Auto;
+    try {
+      format = shadetool::output_format(output, io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format"));
+    } catch (const shadetool::Error&) {
+      continue;
+    }
+    const shadetool::FormatEntry& e = shadetool::format_entry(format);
+    if (!shadetool::holds_any(e.holds, io.result_attributes))
+      throw UsageError(fmt::format("{}: {} cannot hold {}'s result ({}): write {}", output == "-" ? "stdout" : output,
+                                   e.name, command, io.result_name, shadetool::formats_holding(io.result_attributes)));
+  }
+}
+
 void validate(const IoOptions& io, OutputKind kind) {
   if (io.inputs.empty()) throw UsageError("no input given");
   const auto stdin_inputs = std::count(io.inputs.begin(), io.inputs.end(), std::string("-"));
@@ -424,6 +444,7 @@ void write_gltf_output(const IoOptions& io, OutputKind kind, const shadetool::Gl
 
 int run_command(const std::string& command, const IoOptions& io, const MeshStep& step, OutputKind kind) {
   validate(io, kind);
+  refuse_unheld_result(command, io, kind);
   const bool writes_file = kind != OutputKind::Report;
 
   std::mutex out_mutex;  // one line at a time on stdout and stderr

@@ -39,6 +39,7 @@
 #include <nlohmann/json.hpp>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/files/format_table.h>
 #include <shadetool/gltf/gltf_document.h>
 #include <shadetool/io/image_io.h>
 
@@ -64,6 +65,11 @@ struct IoOptions {
   // driver refuses (exit 2, before any work) any two outputs that are one file, and any output
   // that is an input.
   std::vector<std::pair<std::string, std::string>> other_outputs;
+  // What the command's result is written as (bake-lighting: vertex colours) and its name for the
+  // message: a mesh output whose format holds none of them (files/format_table.h's `holds`) is a
+  // usage error, before any work. Empty: any format.
+  std::vector<shadetool::HeldAttribute> result_attributes;
+  std::string result_name;
 };
 
 // A step's work for a whole glTF document (occlusion against the whole scene, one shadow BVH):

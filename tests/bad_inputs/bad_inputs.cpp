@@ -120,8 +120,11 @@ fs::path write_scene(const fs::path& dir) {
   return p;
 }
 
-std::string output_extension(const std::string& input) {
+// The input's extension, except where the subcommand's result has no place in that format (STL
+// holds no colours or quality: bake-lighting and occlusion to STL are usage errors, not bad input).
+std::string output_extension(const std::string& input, const std::string& subcommand = "") {
   const std::string ext = fs::path(input).extension().string();
+  if (ext == ".stl" && (subcommand == "bake-lighting" || subcommand == "occlusion")) return ".ply";
   return (ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl") ? ext : ".ply";
 }
 
@@ -151,7 +154,7 @@ std::string check_failure(const Subcommand& sub, const fs::path& dir, const fs::
                           const ProcessOptions& options = {}, bool with_existing_output = true) {
   const bool input_exists = fs::is_regular_file(input);
   const std::string before = input_exists ? read_file(input.string()) : "";
-  const fs::path output = dir / ("out" + output_extension(input.filename().string()));
+  const fs::path output = dir / ("out" + output_extension(input.filename().string(), sub.name));
   std::vector<std::string> argv = {kBin, sub.name, input.string()};
   if (sub.writes) argv.insert(argv.end(), {"-o", output.string()});
   argv.insert(argv.end(), sub.args.begin(), sub.args.end());

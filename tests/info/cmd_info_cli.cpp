@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include <fstream>
 #include <sstream>
+#include <algorithm>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -94,4 +95,45 @@ TEST_CASE("info CLI: a face with a NaN corner is a degenerate face, counted as r
   // Without NaN faces the line is as it was (no NaN/Inf part).
   const Run cube = run("info " + data("cube.obj"));
   CHECK(cube.out.find("  degenerate faces       0 (0 repeated index, 0 zero area)\n") != std::string::npos);
+}
+
+TEST_CASE("info CLI: a glTF primitive's TEXCOORD_0 counts as texture coordinates", "[cli][info][issue27]") {
+  // issue 27, item 13: "texcoords": false on the Khronos Duck, whose primitive has TEXCOORD_0
+  // (they pass through beside the mesh). data/scene.gltf's primitives have TEXCOORD_0 too.
+  const Run r = run("info " + data("scene.gltf") + " --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  int with_texcoord0 = 0, without = 0;
+  for (const auto& [path, p] : j["stats"]["per_primitive"].items()) {
+    const auto& attrs = p["gltf_attributes"];
+    const bool has = std::find(attrs.begin(), attrs.end(), "TEXCOORD_0") != attrs.end();
+    (has ? with_texcoord0 : without) += 1;
+    INFO(path);
+    CHECK(p["attributes"]["texcoords"] == has);
+  }
+  CHECK(with_texcoord0 == 2);  // data/scene.gltf: meshes[0] and [1] have TEXCOORD_0, [2] and [3] not
+  CHECK(without == 2);
+  const Run t = run("info " + data("scene.gltf"));
+  CHECK(t.out.find("texcoords (TEXCOORD_0)") != std::string::npos);
+}
+
+TEST_CASE("info CLI: sizes print without the subtraction's rounding digits", "[cli][info][issue27]") {
+  // issue 27, item 13: 0.036306 - (-0.036306) printed as 0.07261200000000001.
+  const std::string dir = std::filesystem::temp_directory_path() / "shadetool_info_sizes";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/d.obj") << "v -0.036306 0 0\nv 0.036306 0.1 0\nv 0 0.3 0.2\nf 1 2 3\n";
+  const Run d = run("info " + dir + "/d.obj");
+  CHECK(d.out.find("  size                   0.072612 x 0.3 x 0.2\n") != std::string::npos);
+  CHECK(d.out.find("0.07261200000000001") == std::string::npos);
+  // Float data (binary STL, PLY float): the float's shortest digits, not the widened double's.
+  const Run f = run("info " + data("torus_knot.ply"));
+  CHECK(f.code == 0);
+  const std::size_t at = f.out.find("  bounding box");
+  REQUIRE(at != std::string::npos);
+  const std::string box = f.out.substr(at, f.out.find('\n', at) - at);
+  for (std::size_t p = 0; (p = box.find_first_of("0123456789", p)) != std::string::npos;) {
+    const std::size_t e = box.find_first_not_of("0123456789.e-", p);
+    CHECK(box.substr(p, e - p).size() <= 14);  // a float needs at most 9 significant digits (and e-XX)
+    p = e;
+  }
 }

@@ -310,7 +310,7 @@ TEST_CASE("OBJ: errors name the file and line", "[obj][errors]") {
   CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n") == "m.obj:4: vertex index 4 out of range (3 vertices defined so far)");
   CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n") == "m.obj:4: vertex index -4 out of range (3 vertices defined so far)");
   CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n") == "m.obj:4: vertex index 0 is invalid (OBJ indices start at 1)");
-  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2 2/1 3/1\n") == "m.obj:4: texcoord index 2 out of range (0 texcoords defined so far)");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/2 2/1 3/1\n") == "m.obj:5: texcoord index 2 out of range (1 texcoord defined so far)");
   CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n") ==
         "m.obj:5: normal index 2 out of range (1 normal defined so far)");
   CHECK(err("v 0 0 0\nv 1 0 0\nf 1 2\n") == "m.obj:3: face has 2 vertices (a face needs at least 3)");
@@ -342,4 +342,27 @@ TEST_CASE("OBJ: partial vn and vt are kept per face (vt absent where absent, vn 
   o.format = Format::Obj;
   const std::string text = write_mesh_to_memory(m, o);
   CHECK(text.find("f 1/1/1 2/2/1 3/1/1\nf 1//2 2//2 3//2\n") != std::string::npos);
+}
+
+TEST_CASE("OBJ: vt and vn indices while the file has no vt or vn line are ignored with one counted note (as assimp)",
+          "[obj][issue27]") {
+  // issue 27, item 7: OpenSubdiv's shapes (tinyobjloader's test data) write `f v/vt/vn` and no vn
+  // line; assimp reads the positions and faces and ignores the indices. This was refused before
+  // ("normal index 1 out of range").
+  ReadInfo info;
+  Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1/1/1 2/2/2 3/3/3\nf 2//4 4//5 3//6\n", Format::Obj, &info, "m.obj");
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2});
+  CHECK(!m.has_corner_normals());
+  CHECK(!m.has_texcoords());
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0] == "face corners name 6 normal (vn) and 3 texture (vt) indices but the file defines no vn or vt "
+                         "line before them: those indices ignored (as assimp does)");
+  // With vt lines present, only the dangling normal indices are ignored; the vt are kept.
+  ReadInfo info2;
+  Mesh t = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1/1 2/2/1 3/3/1\n", Format::Obj, &info2);
+  CHECK(t.corner_texcoord_index == std::vector<std::uint32_t>{0, 1, 2});
+  CHECK(!t.has_corner_normals());
+  REQUIRE(info2.notes.size() == 1);
+  CHECK(info2.notes[0] == "face corners name 3 normal (vn) indices but the file defines no vn line before them: "
+                          "those indices ignored (as assimp does)");
 }

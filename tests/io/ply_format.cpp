@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include <nlohmann/json.hpp>
+
 #include "io_test_util.h"
 
 using namespace shadetool;
@@ -283,4 +285,113 @@ TEST_CASE("PLY binary fast paths: triangles then a quad, both byte orders, error
     CHECK(error_of([&] { read_text(c.s, Format::Ply, nullptr, "m.ply"); }) ==
           "m.ply: face 1 of 4: vertex index 5 out of range (5 vertices)");
   }
+}
+
+TEST_CASE("PLY tristrips: -1 restarts a strip, odd triangles wind like the first, joins are dropped with a note",
+          "[ply][issue27]") {
+  // issue 27, item 9: Stanford's Cyberware-era files (igea.ply) hold `element tristrips`; it was
+  // skipped and the file read as a point cloud. Strip 0 1 2 3 4 is the triangles (0 1 2), (2 1 3),
+  // (2 3 4) (the second reordered: a strip alternates its winding); -1 starts strip 5 6 7. The
+  // truth: on a flat zig-zag every kept triangle's normal points the same way as the first's.
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+      "element tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+      "0 0 0\n0 1 0\n1 0 0\n1 1 0\n2 0 0\n5 0 0\n5 1 0\n6 0 0\n";
+  ReadInfo info;
+  Mesh m = read_text(head + "11 0 1 2 3 4 -1 5 6 7 7 7\n", Format::Ply, &info, "s.ply");
+  CHECK(m.face_start == std::vector<std::uint32_t>{0, 3, 6, 9, 12});
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3, 2, 3, 4, 5, 6, 7});
+  for (std::size_t f = 0; f < m.num_faces(); ++f) {
+    const Vec3d a = m.position(m.corner_vertex[3 * f]), b = m.position(m.corner_vertex[3 * f + 1]),
+                c = m.position(m.corner_vertex[3 * f + 2]);
+    CHECK(cross(b - a, c - a).z < 0);  // (0 1 2) winds clockwise seen from +z; so does every other
+  }
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0] == "triangle strips ('tristrips'): 2 strips read as 4 triangles, winding as the first of each strip "
+                         "(as MeshLab reads them); 2 triangles with a repeated index (strip joins, no area) not kept");
+  // An index beyond the vertices (other than -1) is an error naming the strip.
+  CHECK(error_of([&] { read_text(head + "4 0 1 2 8\n", Format::Ply, nullptr, "s.ply"); }) ==
+        "s.ply:18: tristrips 0 of 1: vertex index 8 out of range (8 vertices; -1 restarts a strip)");
+}
+
+TEST_CASE("PLY: faces in an element the reader does not take are an error, not a point cloud", "[ply][issue27]") {
+  // issue 27, item 9: "no command may exit 0 on an input it could not use".
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element polygon 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  CHECK(error_of([&] { read_text(text, Format::Ply, nullptr, "p.ply"); }) ==
+        "p.ply:7: element 'polygon' holds 1 faces (list vertex_indices) that shadetool does not read (it reads 'face', "
+        "and 'tristrips' when there is no face element): nothing usable");
+}
+
+TEST_CASE("PLY: every element skipped is named in a note, fixed-size binary ones too", "[ply][issue27]") {
+  // issue 27, item 10: Artec's pepper.ply has multi_texture_vertex (fixed-size records, skipped in
+  // one jump) and multi_texture_face (lists); only the second was named.
+  Bytes b;
+  b.s = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\n"
+        "element multi_texture_vertex 2\nproperty uchar tx\nproperty float u\nproperty float v\n"
+        "element multi_texture_face 1\nproperty uchar tx\nproperty list uchar int texture_vertex_indices\nend_header\n";
+  for (float x : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) b.put(x);
+  b.put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+  for (int i = 0; i < 2; ++i) b.put<std::uint8_t>(0).put(0.5f).put(0.25f);
+  b.put<std::uint8_t>(0).put<std::uint8_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(1);
+  ReadInfo info;
+  read_text(b.s, Format::Ply, &info);
+  CHECK(info.notes == std::vector<std::string>{"skipped 2 'multi_texture_vertex' elements", "skipped 1 'multi_texture_face' elements"});
+}
+
+TEST_CASE("PLY: per-vertex texture coordinates stay per vertex under their names when no vertex needs a split",
+          "[ply][issue27]") {
+  // issue 27, item 12: Blender writes `s t`, MeshLab `texture_u texture_v`; both read only per-vertex
+  // coordinates, and a per-face `texcoord` list came out (Blender: no UV layer; MeshLab refused quads).
+  for (const std::string names : {"s t", "texture_u texture_v", "u v"}) {
+    const std::string u = names.substr(0, names.find(' ')), v = names.substr(names.find(' ') + 1);
+    const std::string text = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                             "property float " + u + "\nproperty float " + v + "\nelement face 1\n"
+                             "property list uchar int vertex_indices\nend_header\n"
+                             "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0.25 1\n4 0 1 2 3\n";
+    Mesh m = read_text(text, Format::Ply);
+    WriteOptions o;
+    o.format = Format::Ply;
+    o.binary = false;
+    const std::string out = write_mesh_to_memory(m, o);
+    CHECK(out.find("property float " + u + "\nproperty float " + v + "\n") != std::string::npos);
+    CHECK(out.find("texcoord") == std::string::npos);
+    CHECK(out.find("0 1 0 0.25 1\n") != std::string::npos);
+    // Read back: the same coordinates at the same corners.
+    Mesh back = read_text(out, Format::Ply);
+    CHECK(back.texcoords == m.texcoords);
+    CHECK(back.corner_texcoord_index == m.corner_texcoord_index);
+  }
+  // When a vertex's corners disagree (a seam made by another step), the per-corner list is kept.
+  Mesh m = read_text("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                     "property float s\nproperty float t\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                     "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2\n3 0 2 3\n",
+                     Format::Ply);
+  m.texcoords.insert(m.texcoords.end(), {0.5, 0.5});
+  m.corner_texcoord_index[3] = 4;  // vertex 0 in the second face: another coordinate
+  WriteOptions o;
+  o.format = Format::Ply;
+  o.binary = false;
+  const std::string out = write_mesh_to_memory(m, o);
+  CHECK(out.find("property list uchar float texcoord\n") != std::string::npos);
+  CHECK(out.find("property float s\n") == std::string::npos);
+}
+
+TEST_CASE("PLY tristrips: Stanford's igea.ply (corpus) reads as one closed, consistently wound surface", "[ply][issue27][corpus]") {
+  // The truth is the surface's own: a closed genus-0 triangle mesh has F = 2V - 4 faces, and strips
+  // read with the wrong alternation would leave every second triangle against its neighbours.
+  const std::string path = "/work/shared/corpus/c3d/igea/igea.ply";
+  if (!std::ifstream(path).good()) {
+    WARN("corpus file " << path << " not here: skipped");
+    return;
+  }
+  const Run r = run_cli("info --json " + path);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out)["stats"];
+  CHECK(j["vertices"] == 134345);
+  CHECK(j["faces"] == 2 * 134345 - 4);
+  CHECK(j["inconsistent_edges"] == 0);
+  CHECK(j["closed_manifold"] == true);
 }

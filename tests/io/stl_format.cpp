@@ -138,3 +138,31 @@ TEST_CASE("STL: errors", "[stl][errors]") {
         "m.stl:9: file ends inside a solid (no endsolid)");
   CHECK(err("solid x\nfacet normal 0 0 1\nouter lop\n") == "m.stl:3: expected 'loop', found 'lop'");
 }
+
+TEST_CASE("STL: a facet with no area written with +z reads back without a note (no winding to be against)",
+          "[stl][issue27]") {
+  // issue 27, item 13: the writer gives triangles of zero area the facet normal +z (STL has no
+  // 'none'); the reader took +z as "against the winding" (3 such in one model) and replaced it by
+  // the triangle's own normal, (0,0,0).
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_vertex({2, 0, 0});  // collinear with 0 and 1: the second triangle has no area
+  m.add_face({0, 1, 2});
+  m.add_face({0, 1, 3});
+  for (bool binary : {true, false}) {
+    WriteOptions o;
+    o.format = Format::Stl;
+    o.binary = binary;
+    WriteInfo wi;
+    const std::string bytes = write_mesh_to_memory(m, o, &wi);
+    REQUIRE(wi.notes.size() == 1);  // the writer says it wrote +z
+    ReadInfo ri;
+    Mesh back = read_text(bytes, Format::Stl, &ri);
+    REQUIRE(back.num_faces() == 2);
+    CHECK(get3(back.face_normals, 1) == Vec3d{0, 0, 1});
+    for (const std::string& n : ri.notes) CHECK(n.find("against the winding") == std::string::npos);
+    for (const std::string& n : ri.notes) CHECK(n.find("facet normals replaced") == std::string::npos);
+  }
+}

@@ -137,3 +137,19 @@ TEST_CASE("store_baked_colors fills one colour array and clears the other", "[li
   CHECK(m.positions == flat_quad().positions);
   CHECK(m.corner_vertex == flat_quad().corner_vertex);
 }
+
+TEST_CASE("store_baked_colors names every colour of the input it drops (face colours, alpha)", "[lighting][bake][issue27]") {
+  // issue 27, item 10: cycloidal.ply (VCG) has rgba vertex and face colours; bake-lighting per
+  // vertex dropped the face colours and both alphas without a word.
+  Mesh m = flat_quad();
+  m.vertex_colors.assign(16, 0.5f);
+  m.face_colors = {1, 0, 0, 0.5f};
+  m.color_channels = 4;
+  const auto notes = store_baked_colors(m, std::vector<float>(12, 0.5f), ShadingFrequency::PerVertex, false);
+  REQUIRE(notes.size() == 2);
+  CHECK(notes[0] == "the input's face colours dropped: the lighting is baked per vertex (--per face bakes into them instead)");
+  CHECK(notes[1] == "the input's colour alpha dropped: baked colours are rgb");
+  // Nothing dropped: no note.
+  Mesh plain = flat_quad();
+  CHECK(store_baked_colors(plain, std::vector<float>(12, 0.5f), ShadingFrequency::PerVertex, false).empty());
+}

@@ -193,3 +193,53 @@ TEST_CASE("bake-lighting with an environment light: data/scenes/environment.json
                        "': not a Radiance .hdr (RGBE) image\n");
   CHECK_FALSE(fs::exists(dir.file("out.ply")));
 }
+
+TEST_CASE("bake-lighting and occlusion to a format that cannot hold their result: usage error before any work",
+          "[lighting][cli][issue27]") {
+  // issue 27, item 11: `bake-lighting -o x.stl` exited 0 with nothing it computed in the file. STL
+  // holds no colours (files/format_table.h); OBJ holds no quality.
+  TempDir dir;
+  dir.write("quad.obj", kQuadObj);
+  dir.write("scene.json", kFlatScene);
+  const Run r = run(dir.file("quad.obj") + " -o " + dir.file("lit.stl") + " --scene " + dir.file("scene.json"));
+  CHECK(r.code == 2);
+  CHECK(r.err.find(dir.file("lit.stl") + ": stl cannot hold bake-lighting's result (vertex colours): write obj, ply, off or gltf") !=
+        std::string::npos);
+  CHECK_FALSE(fs::exists(dir.file("lit.stl")));
+  // --per face: face colours; OBJ converts them (split vertices), so it is accepted.
+  CHECK(run(dir.file("quad.obj") + " -o " + dir.file("lit.obj") + " --per face --scene " + dir.file("scene.json")).code == 0);
+  // occlusion: grey colours and quality (both by default); quality alone to OBJ has nowhere to go.
+  auto occ = shadetool_test::run_shadetool("occlusion " + dir.file("quad.obj") + " -o " + dir.file("ao.stl") + " --samples 4");
+  CHECK(occ.code == 2);
+  CHECK(occ.err.find("stl cannot hold occlusion's result (grey colours and quality per vertex)") != std::string::npos);
+  occ = shadetool_test::run_shadetool("occlusion " + dir.file("quad.obj") + " -o " + dir.file("ao.obj") + " --as quality --samples 4");
+  CHECK(occ.code == 2);
+  CHECK(occ.err.find("write ply") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.file("ao.obj")));
+  CHECK(shadetool_test::run_shadetool("occlusion " + dir.file("quad.obj") + " -o " + dir.file("ao.obj") + " --samples 4").code == 0);
+}
+
+TEST_CASE("bake-lighting lights each corner with the OBJ's own corner normal (creases kept)", "[lighting][cli][issue27]") {
+  // issue 27, item 6: corner normals that differ at a vertex (a cube with its edges creased) were
+  // replaced by computed smooth normals. Lambert, light straight down, kd = (0.5, 0.25, 1): a
+  // corner of the top face (normal +z) is kd exactly, every other corner black (n.l <= 0).
+  TempDir dir;
+  dir.write("scene.json", kFlatScene);
+  const std::string cube = std::string(SHADETOOL_SOURCE_DIR) + "/data/cube.obj";
+  REQUIRE(shadetool_test::run_shadetool("normals " + cube + " --crease 30 -o " + dir.file("c.obj")).code == 0);
+  const Run r = run(dir.file("c.obj") + " -o " + dir.file("lit.ply") + " --scene " + dir.file("scene.json"));
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.err.find("16 vertices added so that each corner is lit with its own normal") != std::string::npos);
+  const Mesh m = read_mesh(dir.file("lit.ply"));
+  REQUIRE(m.num_vertices() == 24);  // 8 corners x 3 faces
+  REQUIRE(m.vertex_normals.size() == 72);
+  int top = 0;
+  for (std::size_t v = 0; v < 24; ++v) {
+    const bool up = m.vertex_normals[3 * v + 2] > 0.999;
+    top += up;
+    CHECK(std::lround(255 * m.vertex_colors[3 * v]) == (up ? 128 : 0));
+    CHECK(std::lround(255 * m.vertex_colors[3 * v + 2]) == (up ? 255 : 0));
+  }
+  CHECK(top == 4);
+}

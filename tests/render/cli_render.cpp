@@ -118,3 +118,46 @@ TEST_CASE("render --shadows: shadowed pixels, --shadow-samples only with --shado
   CHECK(r.code == 2);
   CHECK_FALSE(fs::exists(d / "c.png"));
 }
+
+TEST_CASE("render uses an OBJ's corner normals: the same image as the same normals from a PLY", "[render][cli][issue27]") {
+  // issue 27, item 6: `normals --crease 30` writes per-corner vn to OBJ (one vn pool, shared
+  // vertices) and split vertices with vertex normals to PLY. Both files hold the same normals; the
+  // OBJ rendered smooth (computed normals) and the PLY crisp. The ascii PLY keeps every value
+  // exactly (shortest text), so the two meshes are equal after the split and the images must be
+  // equal byte for byte, under Gouraud and Phong alike.
+  const fs::path d = scratch("corner_normals");
+  const std::string cube = src + "/data/cube.obj";
+  const std::string obj = (d / "c.obj").string(), ply = (d / "c.ply").string();
+  REQUIRE(run_shadetool("normals " + cube + " --crease 30 -o " + obj).code == 0);
+  REQUIRE(run_shadetool("normals " + cube + " --crease 30 --ascii -o " + ply).code == 0);
+  REQUIRE(shadetool_test::read_file(obj).find("//") != std::string::npos);  // corner normals: f v//vn
+  for (const char* shading : {"gouraud", "phong"}) {
+    const std::string a = (d / (std::string("obj_") + shading + ".png")).string();
+    const std::string b = (d / (std::string("ply_") + shading + ".png")).string();
+    const std::string flags = std::string(" --scene ") + studio + " --shading " + shading + " --size 48,40";
+    REQUIRE(run_shadetool("render " + obj + " -o " + a + flags).code == 0);
+    REQUIRE(run_shadetool("render " + ply + " -o " + b + flags).code == 0);
+    const std::string pa = shadetool_test::read_file(a), pb = shadetool_test::read_file(b);
+    REQUIRE(pa.size() > 50);
+    CHECK(pa == pb);
+  }
+  // And the crease is visible: a smooth-shaded cube (normals averaged over the corner) differs.
+  const std::string smooth = (d / "smooth.obj").string();
+  REQUIRE(run_shadetool("normals " + cube + " --recompute -o " + smooth).code == 0);
+  const std::string s = (d / "s.png").string(), c = (d / "c.png").string();
+  REQUIRE(run_shadetool("render " + smooth + " -o " + s + " --scene " + studio + " --shading phong --size 48,40").code == 0);
+  REQUIRE(run_shadetool("render " + obj + " -o " + c + " --scene " + studio + " --shading phong --size 48,40").code == 0);
+  CHECK(shadetool_test::read_file(s) != shadetool_test::read_file(c));
+}
+
+TEST_CASE("render of a mesh without faces is an error, not a background-only PNG", "[render][cli][issue27]") {
+  // issue 27, item 9: a faceless input rendered as a black PNG with exit 0.
+  const fs::path d = scratch("faceless");
+  std::ofstream(d / "points.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                      "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  const std::string out = (d / "p.png").string();
+  const auto r = run_shadetool("render " + (d / "points.ply").string() + " -o " + out + " --scene " + studio + " --size 8,8");
+  CHECK(r.code == 1);
+  CHECK(r.err.find("mesh is empty (no faces)") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+}

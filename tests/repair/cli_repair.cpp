@@ -298,3 +298,41 @@ TEST_CASE("repair orients a cube split at its UV seams as one closed surface (is
   }
   CHECK(outward == 12);
 }
+
+TEST_CASE("repair --remove-unreferenced: NaN in vertices no face uses (Open3D) has a way out, named by every refusal",
+          "[repair][cli][issue27]") {
+  // issue 27, item 8: Open3D writes NaN into the vertices its subdivision leaves unused; every
+  // command refused the file and no option removed them.
+  TempDir tmp;
+  const std::string in = tmp / "open3d.ply", out = tmp / "out.ply", moved = tmp / "moved.ply";
+  write_text(in, "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+                 "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                 "0 0 0\nnan nan nan\n1 0 0\n0 1 0\nnan 0 0\n1 1 0\n3 0 2 3\n3 2 5 3\n");
+  std::string err;
+  // A refusal names the fix.
+  CHECK(run("transform '" + in + "' -o '" + moved + "' --translate 1,0,0", err) == 1);
+  CHECK(err.find("2 vertices have NaN or Inf coordinates (first: vertex 1); no face uses them: "
+                 "`shadetool repair --remove-unreferenced` removes them") != std::string::npos);
+  CHECK(run("repair '" + in + "' -o '" + out + "'", err) == 1);
+  CHECK(err.find("--remove-unreferenced") != std::string::npos);
+  // info reports them.
+  const auto info = run_shadetool("info '" + in + "' --json");
+  CHECK(info.code == 0);
+  const auto j = nlohmann::json::parse(info.out);
+  CHECK(j["stats"]["nonfinite_vertices"] == 2);
+  CHECK(j["stats"]["nonfinite_unreferenced_vertices"] == 2);
+  // The way out: both removed, counted; the faces keep their corners' positions.
+  CHECK(run("repair '" + in + "' -o '" + out + "' --remove-unreferenced", err) == 0);
+  CHECK(err.find("unreferenced: removed 2 vertices no face used") != std::string::npos);
+  const auto after = run_shadetool("info '" + out + "' --json");
+  const auto k = nlohmann::json::parse(after.out);
+  CHECK(k["stats"]["vertices"] == 4);
+  CHECK(k["stats"]["faces"] == 2);
+  CHECK(k["stats"]["nonfinite_vertices"] == 0);
+  CHECK(k["stats"]["bbox"]["max"] == nlohmann::json::array({1.0, 1.0, 0.0}));
+  // A NaN that a face uses is not this case: the message says so.
+  const std::string in_obj = tmp / "used.obj";
+  write_text(in_obj, "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
+  CHECK(run("repair '" + in_obj + "' -o '" + out + "' --remove-unreferenced", err) == 1);
+  CHECK(err.find("1 vertex has NaN or Inf coordinates (first: vertex 2)\n") != std::string::npos);
+}

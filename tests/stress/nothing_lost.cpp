@@ -214,6 +214,12 @@ TEST_CASE("nothing lost: every vertex and face, in order, through every subcomma
         argv.insert(argv.end(), sub.args.begin(), sub.args.end());
         const ProcessResult r = run_process(argv);
         INFO("stderr: " << r.err.substr(0, 500));
+        if (stl && (sub.name == "bake-lighting" || sub.name == "occlusion")) {
+          // STL holds no colours and no quality: a usage error before any work (issue 27 item 11).
+          CHECK(r.code == 2);
+          CHECK_FALSE(fs::exists(output));
+          continue;
+        }
         REQUIRE(r.code == 0);
         if (sub.name == "info") {
           const auto j = nlohmann::json::parse(r.out);

@@ -104,3 +104,26 @@ TEST_CASE("occlusion refuses bad input without touching the output", "[visibilit
   std::remove(bad.c_str());
   std::remove(out.c_str());
 }
+
+TEST_CASE("occlusion keeps the input's colour alpha (transparency is not occlusion)", "[visibility][cli][issue27]") {
+  // issue 27, item 10: VCG's cycloidal.ply has rgba colours; the alpha became 1.
+  const std::string in = temp_path("rgba.ply"), out = temp_path("rgba_ao.ply");
+  {
+    std::ofstream f(in);
+    f << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+         "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+         "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+         "0 0 0 10 20 30 51\n1 0 0 10 20 30 102\n0 1 0 10 20 30 255\n3 0 1 2\n";
+  }
+  const ProcessResult r = run_shadetool("occlusion '" + in + "' -o '" + out + "' --samples 4 --ascii");
+  REQUIRE(r.code == 0);
+  const Mesh m = read_mesh(out);
+  REQUIRE(m.color_channels == 4);
+  REQUIRE(m.vertex_colors.size() == 12);
+  CHECK(std::lround(255 * m.vertex_colors[3]) == 51);
+  CHECK(std::lround(255 * m.vertex_colors[7]) == 102);
+  CHECK(std::lround(255 * m.vertex_colors[11]) == 255);
+  CHECK(m.vertex_colors[0] == 1.0f);  // a lone triangle: nothing occludes it
+  std::remove(in.c_str());
+  std::remove(out.c_str());
+}

@@ -15,6 +15,10 @@
 //   texcoords          T*texcoord_dims      pool of texture coordinates (OBJ `vt`), kept through
 //   corner_texcoord_index 0 or C uint32     per-corner index into texcoords; kNoTexcoord where a
 //                                           corner has none (OBJ: `f 1/1 2/2 3/3` beside `f 4 5 6`)
+//   texcoord_names     0 or 2 strings       the names per-vertex texture coordinates were read under
+//                                           (PLY `s t`, `u v`, `texture_u texture_v`): a PLY writer
+//                                           gives them back per vertex under these names whenever
+//                                           every corner of a vertex has the same coordinates
 //   vertex_colors      0 or V*color_channels floats, linear, nominally in [0,1]
 //   face_colors        0 or F*color_channels floats
 //   group_statements   R strings            OBJ grouping lines (mtllib, usemtl, g, o, s) as read, one
@@ -84,6 +88,7 @@ struct Mesh {
   std::vector<double> texcoords;
   int texcoord_dims = 2;
   std::vector<std::uint32_t> corner_texcoord_index;
+  std::vector<std::string> texcoord_names;
 
   std::vector<float> vertex_colors;
   std::vector<float> face_colors;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,8 +17,10 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
-// Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any. The one rule
-// for the command line and for Python (which holds a MeshView of the caller's arrays).
+// Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any, followed by
+// `; no face uses them: `shadetool repair --remove-unreferenced` removes them` when no face uses
+// any of them, `; K of them used by no face (...)` when some face uses some. The one rule for the
+// command line and for Python (which holds a MeshView of the caller's arrays).
 inline void require_finite_positions(const MeshView& mesh, const std::string& name) {
   std::size_t bad = 0, first = 0;
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
@@ -26,9 +29,24 @@ inline void require_finite_positions(const MeshView& mesh, const std::string& na
       if (bad++ == 0) first = v;
     }
   }
-  if (bad > 0)
-    fail(name, 0, std::to_string(bad) + (bad == 1 ? " vertex has" : " vertices have") +
-                      " NaN or Inf coordinates (first: vertex " + std::to_string(first) + ")");
+  if (bad == 0) return;
+  // Which of them a face uses: when none does (Open3D writes NaN into the vertices its subdivision
+  // left unused), the way out is to remove them, and the message says how.
+  std::vector<char> used(mesh.num_vertices(), 0);
+  for (std::size_t c = 0; c < mesh.corner_count; ++c)
+    if (mesh.corner_vertex[c] < used.size()) used[mesh.corner_vertex[c]] = 1;
+  std::size_t bad_used = 0;
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+    const double* p = mesh.positions + 3 * v;
+    bad_used += used[v] && !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+  }
+  const std::string fix = bad_used == 0 ? std::string("; no face uses ") + (bad == 1 ? "it" : "them") +
+                                              ": `shadetool repair --remove-unreferenced` removes them"
+                          : bad_used < bad ? "; " + std::to_string(bad - bad_used) + " of them used by no face" +
+                                                 " (`shadetool repair --remove-unreferenced` removes those)"
+                                           : std::string();
+  fail(name, 0, std::to_string(bad) + (bad == 1 ? " vertex has" : " vertices have") +
+                    " NaN or Inf coordinates (first: vertex " + std::to_string(first) + ")" + fix);
 }
 inline void require_finite_positions(const Mesh& mesh, const std::string& name) {
   require_finite_positions(MeshView(mesh), name);

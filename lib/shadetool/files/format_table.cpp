@@ -196,6 +196,27 @@ std::string format_list(bool with_dots) {
   return s;
 }
 
+bool holds_any(const FormatAttributes& holds, const std::vector<HeldAttribute>& attributes) {
+  for (HeldAttribute a : attributes)
+    switch (holds.*a) {
+      case Holds::Yes:
+      case Holds::Converted:
+        return true;
+      case Holds::No:
+        break;
+    }
+  return false;
+}
+
+std::string formats_holding(const std::vector<HeldAttribute>& attributes) {
+  std::vector<const char*> names;
+  for (const FormatEntry& e : mesh_formats())
+    if (holds_any(e.holds, attributes)) names.push_back(e.name);
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) s += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return s;
+}
+
 Format detect_format(std::string_view bytes) {
   for (const FormatEntry& e : mesh_formats())
     if (e.detect(bytes)) return e.format;

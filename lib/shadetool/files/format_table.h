@@ -15,6 +15,7 @@
 //   format_names()            {"obj", "ply", ...}: what CLI option checks accept
 //   format_list(dot)          "obj, ply, off, stl or gltf" (dot: every extension, ".obj, ... or
 //                             .glb/.gltf"): for messages
+//   holds_any, formats_holding  whether a format can hold a command's result (see below)
 //   detect_format(bytes)      the format whose detect() recognises the bytes, else Format::Auto.
 //                             Detection is a hint for messages and for callers without a file
 //                             name; reading always uses the extension or the format given.
@@ -62,6 +63,17 @@ struct FormatEntry {
   bool has_binary_form;                 // --ascii / --binary choose between two forms
   FormatAttributes holds;
 };
+
+// One attribute of FormatAttributes, to name what a command's result is written as (bake-lighting:
+// &FormatAttributes::vertex_colors).
+using HeldAttribute = Holds FormatAttributes::*;
+
+// True when `holds` holds (as it is, or converted) at least one of `attributes`: a command whose
+// result is in `attributes` can write that format. Commands refuse (usage error, before any
+// work) an output format for which this is false.
+bool holds_any(const FormatAttributes& holds, const std::vector<HeldAttribute>& attributes);
+// "obj, ply or off": the formats of the table that hold at least one of `attributes`, for messages.
+std::string formats_holding(const std::vector<HeldAttribute>& attributes);
 
 const std::vector<FormatEntry>& mesh_formats();
 const FormatEntry& format_entry(Format format);

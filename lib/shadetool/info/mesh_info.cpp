@@ -77,6 +77,10 @@ MeshInfo mesh_info(const Mesh& mesh) {
   std::vector<std::uint8_t> used(m.vertices, 0);
   for (std::uint32_t v : mesh.corner_vertex) used[v] = 1;
   for (std::uint8_t u : used) m.unreferenced_vertices += !u;
+  for (std::size_t v = 0; v < m.vertices; ++v) {
+    const Vec3d p = mesh.position(v);
+    m.nonfinite_unreferenced_vertices += !used[v] && !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+  }
 
   m.topology = edge_topology(mesh);
   m.components = connected_components(mesh);

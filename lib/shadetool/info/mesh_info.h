@@ -47,6 +47,8 @@ struct MeshInfo {
   DegenerateFaces degenerate;
   std::size_t unreferenced_vertices = 0;
   std::size_t nonfinite_vertices = 0;  // vertices with a NaN or Inf coordinate
+  std::size_t nonfinite_unreferenced_vertices = 0;  // of those, the ones no face uses (repair
+                                                   // --remove-unreferenced removes them)
   std::size_t nonfinite_values = 0;    // NaN/Inf values in normals, texcoords and colours
 
   // Closed 2-manifold: every edge has exactly two sides, every vertex one fan, no degenerate face.

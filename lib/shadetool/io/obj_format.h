@@ -5,6 +5,11 @@
 // index), `f` in the forms i, i/j, i//k, i/j/k with negative (relative) indices, polygons of any
 // size, in order. Accepted and skipped: o, g, s, usemtl, mtllib, comments, blank lines, CRLF,
 // trailing whitespace; other keywords (l, p, curves...) are skipped with a note.
+// A `vt` or `vn` index on a face corner while the file has defined no `vt` (`vn`) line before it
+// (OpenSubdiv's shapes write `f v/vt/vn` with neither) is ignored, counted in one note, as assimp
+// does; an index beyond a pool that does have entries is still an error naming the line.
+// Steps: read the lines (read_lines), validate, build the corner normals, texture coordinates and
+// vertex colours from the pools, then note what was skipped.
 // Precision: every value is stored as parsed, the double nearest to the text, never rounded to
 // float: `v 123456.789 0 0` keeps 123456.789. Mesh::precision is Float when no number has more
 // significant digits than a float carries (9), else Double; it is only the hint for the value type

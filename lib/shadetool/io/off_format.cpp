@@ -45,19 +45,50 @@ class Lines {
   std::size_t line_ = 0;
 };
 
-}  // namespace
+// The header: [ST][C][N]OFF (optional) and the counts line.
+struct OffHeader {
+  bool has_st = false, has_c = false, has_n = false;
+  std::uint64_t nv = 0, nf = 0;
+};
 
-Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
-  (void)info;
-  refuse_utf16(file_bytes, name);
-  const LineEndings text(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
-  const std::string_view bytes = text.lf();
-  Mesh mesh;
-  Lines lines(bytes);
+// What the vertex and face lines share: the file's lines, its name for messages, and what the
+// values said about the data (digits beyond float, colours written as floats).
+struct OffBody {
+  Lines& lines;
+  const std::string& name;
+  bool any_double = false;
+  bool colors_float = false;
+
+  // The next number of [p, end) into x; false at the end.
+  bool number(const char*& p, const char* end, double& x) {
+    const char* t = skip_spaces(p, end);
+    if (t == end) return false;
+    p = t;
+    if (!parse_double(p, end, x)) fail(name, lines.line(), "malformed number '" + token_at(t, end) + "'");
+    if (!any_double && (has_more_digits_than_float(t, p) || outside_float_range(x))) any_double = true;
+    return true;
+  }
+  // Up to 5 colour values: a token written as an integer is 0..255; with a point or exponent it is
+  // a float in [0,1].
+  int color_values(const char*& p, const char* end, float* rgba) {
+    int k = 0;
+    bool integer = true;
+    const char* t = skip_spaces(p, end);
+    for (const char* c = t; c < end; ++c) integer = integer && !(*c == '.' || *c == 'e' || *c == 'E');
+    double x;
+    while (k < 5 && number(p, end, x)) rgba[k++] = float(x);
+    if (!integer) colors_float = true;
+    if (integer)
+      for (int i = 0; i < k; ++i) rgba[i] /= 255.0f;
+    return k;
+  }
+};
+
+// Step 1, read the header: the keyword's flags, then the counts, bounded by the bytes that follow.
+OffHeader read_off_header(Lines& lines, const std::string& name) {
+  OffHeader h;
   const char *b, *e;
   if (!lines.next(b, e)) fail(name, lines.line(), "no OFF header (file has only comments or blank lines)");
-
-  bool has_st = false, has_c = false, has_n = false;
   const char* q = b;
   const char* first_end = b;
   while (first_end < e && *first_end >= '0' && *first_end <= '9') ++first_end;
@@ -67,9 +98,9 @@ Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& in
     while (q < e && !is_space(*q)) ++q;
     std::string k(kw, q);
     std::size_t i = 0;
-    if (k.compare(i, 2, "ST") == 0) has_st = true, i += 2;
-    if (i < k.size() && k[i] == 'C') has_c = true, ++i;
-    if (i < k.size() && k[i] == 'N') has_n = true, ++i;
+    if (k.compare(i, 2, "ST") == 0) h.has_st = true, i += 2;
+    if (i < k.size() && k[i] == 'C') h.has_c = true, ++i;
+    if (i < k.size() && k[i] == 'N') h.has_n = true, ++i;
     if (k.compare(i, std::string::npos, "OFF") != 0) {
       if (k.find("OFF") != std::string::npos)
         fail(name, lines.line(), "unsupported OFF variant '" + k + "' (supported: [ST][C][N]OFF)");
@@ -94,90 +125,77 @@ Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& in
   }
   if (ncounts < 2) fail(name, counts_line, "counts line needs #vertices #faces [#edges]");
   if (skip_spaces(q, e) < e) fail(name, counts_line, "unexpected '" + token_at(q, e) + "' after the counts");
-  const std::uint64_t nv = std::uint64_t(counts[0]), nf = std::uint64_t(counts[1]);
+  h.nv = std::uint64_t(counts[0]);
+  h.nf = std::uint64_t(counts[1]);
   // Every vertex line takes at least 6 bytes ("0 0 0\n"), every face line 8 ("3 0 1 2\n").
-  if (nv > lines.remaining() / 6 + 1 || nf > lines.remaining() / 8 + 1 || nv > std::numeric_limits<std::uint32_t>::max())
-    fail(name, counts_line, "header claims " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+  if (h.nv > lines.remaining() / 6 + 1 || h.nf > lines.remaining() / 8 + 1 || h.nv > std::numeric_limits<std::uint32_t>::max())
+    fail(name, counts_line, "header claims " + std::to_string(h.nv) + " vertices and " + std::to_string(h.nf) +
                                 " faces but only " + std::to_string(lines.remaining()) + " bytes follow");
+  return h;
+}
 
-  bool any_double = false;
-  auto number = [&](const char*& p, const char* end, double& x) -> bool {
-    const char* t = skip_spaces(p, end);
-    if (t == end) return false;
-    p = t;
-    if (!parse_double(p, end, x)) fail(name, lines.line(), "malformed number '" + token_at(t, end) + "'");
-    if (!any_double && (has_more_digits_than_float(t, p) || outside_float_range(x))) any_double = true;
-    return true;
-  };
-  // A colour token written as an integer is 0..255; with a point or exponent it is a float in [0,1].
-  bool colors_float = false;
-  auto color_values = [&](const char*& p, const char* end, float* rgba) -> int {
-    int k = 0;
-    bool integer = true;
-    const char* t = skip_spaces(p, end);
-    for (const char* c = t; c < end; ++c) integer = integer && !(*c == '.' || *c == 'e' || *c == 'E');
-    double x;
-    while (k < 5 && number(p, end, x)) rgba[k++] = float(x);
-    if (!integer) colors_float = true;
-    if (integer)
-      for (int i = 0; i < k; ++i) rgba[i] /= 255.0f;
-    return k;
-  };
-
-  const std::size_t per_vertex = 3 + (has_n ? 3 : 0);
-  reserve_bulk(mesh.positions, 3 * nv);
-  mesh.positions.resize(3 * nv);
-  if (has_n) mesh.vertex_normals.resize(3 * nv);
-  std::vector<float> vrgba;
-  std::vector<double> vtex;
-  int channels = 3;
-  if (has_c) vrgba.assign(4 * nv, 1.0f);
-  if (has_st) vtex.assign(2 * nv, 0.0);
-  for (std::uint64_t v = 0; v < nv; ++v) {
+// Step 2, the vertex lines: positions, normals (NOFF) into the mesh; colours (COFF, 4 per vertex)
+// into vrgba and s t (STOFF, 2 per vertex) into vtex. channels becomes 4 when a colour has alpha.
+void read_off_vertices(const OffHeader& h, OffBody& body, Mesh& mesh, std::vector<float>& vrgba,
+                       std::vector<double>& vtex, int& channels) {
+  const std::string& name = body.name;
+  Lines& lines = body.lines;
+  const std::size_t per_vertex = 3 + (h.has_n ? 3 : 0);
+  reserve_bulk(mesh.positions, 3 * h.nv);
+  mesh.positions.resize(3 * h.nv);
+  if (h.has_n) mesh.vertex_normals.resize(3 * h.nv);
+  if (h.has_c) vrgba.assign(4 * h.nv, 1.0f);
+  if (h.has_st) vtex.assign(2 * h.nv, 0.0);
+  const char *b, *e;
+  for (std::uint64_t v = 0; v < h.nv; ++v) {
     if (!lines.next(b, e))
-      fail(name, lines.line(), "file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
+      fail(name, lines.line(), "file ends after " + std::to_string(v) + " of " + std::to_string(h.nv) + " vertices");
     double x[6];
     std::size_t n = 0;
     const char* p = b;
-    while (n < per_vertex && number(p, e, x[n])) ++n;
+    while (n < per_vertex && body.number(p, e, x[n])) ++n;
     if (n < per_vertex)
       fail(name, lines.line(), "vertex line has " + std::to_string(n) + " values, expected " + std::to_string(per_vertex) +
-                                   (has_n ? " (x y z nx ny nz)" : " (x y z)"));
+                                   (h.has_n ? " (x y z nx ny nz)" : " (x y z)"));
     for (int k = 0; k < 3; ++k) mesh.positions[3 * v + std::size_t(k)] = x[k];
-    if (has_n)
+    if (h.has_n)
       for (int k = 0; k < 3; ++k) mesh.vertex_normals[3 * v + std::size_t(k)] = x[3 + k];
-    if (has_c) {
+    if (h.has_c) {
       float c[5];
-      const char* before = p;
-      int k = color_values(p, e, c);
-      if (has_st) {  // the last two values are s t
+      int k = body.color_values(p, e, c);
+      if (h.has_st) {  // the last two values are s t
         if (k < 2) fail(name, lines.line(), "vertex line is missing s t");
         k -= 2;
         vtex[2 * v] = c[k];
         vtex[2 * v + 1] = c[k + 1];
-        (void)before;
       }
       if (k != 3 && k != 4) fail(name, lines.line(), "vertex colour has " + std::to_string(k) + " values, expected r g b [a]");
       if (k == 4) channels = 4;
       for (int i = 0; i < k; ++i) vrgba[4 * v + std::size_t(i)] = c[i];
-    } else if (has_st) {
+    } else if (h.has_st) {
       double s, t;
-      if (!number(p, e, s) || !number(p, e, t)) fail(name, lines.line(), "vertex line is missing s t");
+      if (!body.number(p, e, s) || !body.number(p, e, t)) fail(name, lines.line(), "vertex line is missing s t");
       vtex[2 * v] = s;
       vtex[2 * v + 1] = t;
     }
     if (skip_spaces(p, e) < e)
-      fail(name, lines.line(), "vertex line has more values than the header '" + std::string(has_st ? "ST" : "") +
-                                   (has_c ? "C" : "") + (has_n ? "N" : "") + "OFF' declares");
+      fail(name, lines.line(), "vertex line has more values than the header '" + std::string(h.has_st ? "ST" : "") +
+                                   (h.has_c ? "C" : "") + (h.has_n ? "N" : "") + "OFF' declares");
   }
+}
 
-  reserve_bulk(mesh.face_start, nf + 1);
-  reserve_bulk(mesh.corner_vertex, std::min<std::uint64_t>(3 * nf, lines.remaining()));
-  std::vector<float> frgba;
+// Step 3, the face lines: sizes and indices (validated against the vertex count) into the mesh,
+// optional colours into frgba (4 per face, from the first face that has one; white before it).
+void read_off_faces(const OffHeader& h, OffBody& body, Mesh& mesh, std::vector<float>& frgba, int& channels) {
+  const std::string& name = body.name;
+  Lines& lines = body.lines;
+  reserve_bulk(mesh.face_start, h.nf + 1);
+  reserve_bulk(mesh.corner_vertex, std::min<std::uint64_t>(3 * h.nf, lines.remaining()));
   bool any_face_color = false;
-  for (std::uint64_t f = 0; f < nf; ++f) {
+  const char *b, *e;
+  for (std::uint64_t f = 0; f < h.nf; ++f) {
     if (!lines.next(b, e))
-      fail(name, lines.line(), "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+      fail(name, lines.line(), "file ends after " + std::to_string(f) + " of " + std::to_string(h.nf) + " faces");
     const char* p = b;
     std::int64_t k;
     if (!parse_int64(p, e, k) || (p < e && !is_space(*p)))
@@ -192,15 +210,15 @@ Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& in
       if (t == e) fail(name, lines.line(), "face line has " + std::to_string(i) + " indices, its size says " + std::to_string(k));
       if (!parse_int64(p, e, idx) || (p < e && !is_space(*p)))
         fail(name, lines.line(), "malformed vertex index '" + token_at(t, e) + "'");
-      if (idx < 0 || std::uint64_t(idx) >= nv)
-        fail(name, lines.line(), "vertex index " + std::to_string(idx) + " out of range (" + std::to_string(nv) + " vertices)");
+      if (idx < 0 || std::uint64_t(idx) >= h.nv)
+        fail(name, lines.line(), "vertex index " + std::to_string(idx) + " out of range (" + std::to_string(h.nv) + " vertices)");
       mesh.corner_vertex.push_back(std::uint32_t(idx));
     }
     if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 1)
       fail(name, lines.line(), "too many face corners (more than 2^32)");
     mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
     float c[5] = {1, 1, 1, 1, 1};
-    const int kc = color_values(p, e, c);
+    const int kc = body.color_values(p, e, c);
     if (kc != 0 && kc != 3 && kc != 4)
       fail(name, lines.line(), "face has " + std::to_string(kc) + " values after its indices, expected none or r g b [a]");
     if (kc > 0) {
@@ -212,8 +230,12 @@ Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& in
   }
   if (lines.next(b, e))
     fail(name, lines.line(), "more data than the header declares ('" + token_at(b, e) + "' after the last face)");
+}
 
-  // Four components whose alpha is 1 everywhere (what the writer gives rgb colours) read as rgb.
+// Step 4, build: colours packed to 3 or 4 channels (four whose alpha is 1 everywhere, what the
+// writer gives rgb colours, read as rgb), s t as texture coordinates per corner.
+void build_off_attributes(const OffHeader& h, const OffBody& body, const std::vector<float>& vrgba,
+                          const std::vector<float>& frgba, std::vector<double>& vtex, int channels, Mesh& mesh) {
   if (channels == 4) {
     bool opaque = true;
     for (std::size_t i = 3; i < vrgba.size() && opaque; i += 4) opaque = vrgba[i] == 1.0f;
@@ -226,17 +248,35 @@ Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& in
     for (std::size_t i = 0; i < n; ++i)
       for (int k = 0; k < channels; ++k) out[i * std::size_t(channels) + std::size_t(k)] = rgba[4 * i + std::size_t(k)];
   };
-  if (has_c) pack(vrgba, mesh.vertex_colors);
-  if (any_face_color) pack(frgba, mesh.face_colors);
+  if (h.has_c) pack(vrgba, mesh.vertex_colors);
+  if (!frgba.empty()) pack(frgba, mesh.face_colors);
   mesh.color_channels = channels;
-  mesh.colors_are_float = colors_float;
-  if (has_st) {
+  mesh.colors_are_float = body.colors_float;
+  if (h.has_st) {
     mesh.texcoords = std::move(vtex);
     mesh.texcoord_dims = 2;
     mesh.corner_texcoord_index = mesh.corner_vertex;
   }
   // Values kept as parsed, never rounded; precision is the binary writers' value-type hint.
-  mesh.precision = any_double ? ValuePrecision::Double : ValuePrecision::Float;
+  mesh.precision = body.any_double ? ValuePrecision::Double : ValuePrecision::Float;
+}
+
+}  // namespace
+
+Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
+  (void)info;
+  refuse_utf16(file_bytes, name);
+  const LineEndings text(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
+  Lines lines(text.lf());
+  const OffHeader header = read_off_header(lines, name);
+  OffBody body{lines, name};
+  Mesh mesh;
+  std::vector<float> vrgba, frgba;
+  std::vector<double> vtex;
+  int channels = 3;
+  read_off_vertices(header, body, mesh, vrgba, vtex, channels);
+  read_off_faces(header, body, mesh, frgba, channels);
+  build_off_attributes(header, body, vrgba, frgba, vtex, channels, mesh);
   return mesh;
 }
 

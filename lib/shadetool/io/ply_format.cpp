@@ -88,180 +88,272 @@ void put_extra(std::string& out, double v, ply::Type t, bool binary) {
   }
 }
 
-}  // namespace
+// Per-vertex u v (2 per vertex) when every corner of each vertex has the same coordinates, so
+// that they can be written per vertex without splitting one; false when a vertex's corners
+// disagree or a corner has none. Vertices no face uses keep the value of the pool entry with
+// their index when the pool is one entry per vertex (as the PLY reader builds it), else (0, 0).
+bool per_vertex_texcoords(const Mesh& mesh, std::vector<double>& uv) {
+  const std::size_t nv = mesh.num_vertices(), td = std::size_t(mesh.texcoord_dims);
+  if (td == 0) return false;
+  uv.assign(2 * nv, 0.0);
+  if (mesh.texcoords.size() == nv * td)
+    for (std::size_t v = 0; v < nv; ++v) {
+      uv[2 * v] = mesh.texcoords[v * td];
+      uv[2 * v + 1] = td > 1 ? mesh.texcoords[v * td + 1] : 0.0;
+    }
+  std::vector<char> seen(nv, 0);
+  for (std::size_t c = 0; c < mesh.corner_texcoord_index.size(); ++c) {
+    const std::uint32_t t = mesh.corner_texcoord_index[c], v = mesh.corner_vertex[c];
+    if (t == kNoTexcoord || v >= nv) return false;
+    const double u = mesh.texcoords[std::size_t(t) * td], w = td > 1 ? mesh.texcoords[std::size_t(t) * td + 1] : 0.0;
+    if (!seen[v]) {
+      seen[v] = 1;
+      uv[2 * v] = u;
+      uv[2 * v + 1] = w;
+    } else if (!(uv[2 * v] == u && uv[2 * v + 1] == w) &&
+               !(std::isnan(uv[2 * v]) && std::isnan(u)) && !(std::isnan(uv[2 * v + 1]) && std::isnan(w))) {
+      return false;
+    }
+  }
+  return true;
+}
 
-void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info) {
-  Mesh split;
-  const Mesh& mesh = with_corner_normals_split(input, split, info.split_vertices);
+// What the writer writes: decided once, before any byte (step 1 of write_ply).
+struct PlyPlan {
+  std::size_t nv = 0, nf = 0;
+  bool binary = true, dbl = false;
+  const char* real = "float";
+  bool vnormals = false, vcolors = false, fcolors = false, fnormals = false, cfloat = false;
+  int ch = 3;
+  bool wedge = false;       // per-corner `texcoord` list
+  bool vtex = false;        // per-vertex u v under the input's names (vertex_uv)
+  std::vector<double> vertex_uv;
+  bool vquality = false, fquality = false;
+  std::vector<ExtraOut> vextras, fextras;
+  bool uchar_count = true, int_index = true;
+};
 
-  const std::size_t nv = mesh.num_vertices(), nf = mesh.num_faces();
-  const bool dbl = mesh.precision == ValuePrecision::Double;
-  const char* real = dbl ? "double" : "float";
-  const bool vnormals = mesh.has_vertex_normals();
-  const int ch = mesh.color_channels;
-  const bool vcolors = mesh.has_vertex_colors();
-  const bool fcolors = mesh.has_face_colors();
-  const bool fnormals = mesh.has_face_normals();
-  const bool cfloat = mesh.colors_are_float;
-  const bool wedge = mesh.has_texcoords();
+const char* const kColorNames[] = {"red", "green", "blue", "alpha"};  // the colour properties written
+
+// Step 1, plan and validate: which properties, types and counts; a note for each thing left out.
+PlyPlan plan_ply(const Mesh& mesh, bool binary, WriteInfo& info) {
+  PlyPlan p;
+  p.nv = mesh.num_vertices();
+  p.nf = mesh.num_faces();
+  p.binary = binary;
+  p.dbl = mesh.precision == ValuePrecision::Double;
+  p.real = p.dbl ? "double" : "float";
+  p.vnormals = mesh.has_vertex_normals();
+  p.ch = mesh.color_channels;
+  p.vcolors = mesh.has_vertex_colors();
+  p.fcolors = mesh.has_face_colors();
+  p.fnormals = mesh.has_face_normals();
+  p.cfloat = mesh.colors_are_float;
+  p.wedge = mesh.has_texcoords();
+  // Per-vertex coordinates read per vertex stay per vertex, under their names, when no vertex
+  // would need splitting (Blender and MeshLab read them only in that form).
+  if (p.wedge && mesh.texcoord_names.size() == 2 && per_vertex_texcoords(mesh, p.vertex_uv)) {
+    p.vtex = true;
+    p.wedge = false;
+  }
   // Quality (one float per vertex / face) is written when it has one value per element; a step
   // that changed the element count without carrying it leaves it out, with a note.
-  const bool vquality = mesh.has_vertex_quality() && mesh.vertex_quality.size() == nv;
-  const bool fquality = mesh.has_face_quality() && mesh.face_quality.size() == nf;
-  if (mesh.has_vertex_quality() && !vquality)
+  p.vquality = mesh.has_vertex_quality() && mesh.vertex_quality.size() == p.nv;
+  p.fquality = mesh.has_face_quality() && mesh.face_quality.size() == p.nf;
+  if (mesh.has_vertex_quality() && !p.vquality)
     info.notes.push_back("vertex quality not written: " + std::to_string(mesh.vertex_quality.size()) + " values for " +
-                         std::to_string(nv) + " vertices");
-  if (mesh.has_face_quality() && !fquality)
+                         std::to_string(p.nv) + " vertices");
+  if (mesh.has_face_quality() && !p.fquality)
     info.notes.push_back("face quality not written: " + std::to_string(mesh.face_quality.size()) + " values for " +
-                         std::to_string(nf) + " faces");
+                         std::to_string(p.nf) + " faces");
   // Extra properties (scanners' confidence, intensity, flags ...) after the known ones, as declared.
   std::vector<std::string> vtaken = {"x", "y", "z"}, ftaken = {"vertex_indices"};
-  if (vnormals) vtaken.insert(vtaken.end(), {"nx", "ny", "nz"});
-  static const char* cnames[] = {"red", "green", "blue", "alpha"};  // the colour properties written below
-  if (vcolors) vtaken.insert(vtaken.end(), cnames, cnames + ch);
-  if (vquality) vtaken.push_back("quality");
-  if (wedge) ftaken.push_back("texcoord");
-  if (fnormals) ftaken.insert(ftaken.end(), {"nx", "ny", "nz"});
-  if (fcolors) ftaken.insert(ftaken.end(), cnames, cnames + ch);
-  if (fquality) ftaken.push_back("quality");
-  const std::vector<ExtraOut> vextras = extras_to_write(mesh.vertex_properties, nv, "vertex", vtaken, info);
-  const std::vector<ExtraOut> fextras = extras_to_write(mesh.face_properties, nf, "face", ftaken, info);
-  std::size_t vextra_bytes = 0, fextra_bytes = 0;
-  for (const ExtraOut& e : vextras) vextra_bytes += ply::type_size(e.type);
-  for (const ExtraOut& e : fextras) fextra_bytes += ply::type_size(e.type);
+  if (p.vnormals) vtaken.insert(vtaken.end(), {"nx", "ny", "nz"});
+  if (p.vtex) vtaken.insert(vtaken.end(), mesh.texcoord_names.begin(), mesh.texcoord_names.end());
+  if (p.vcolors) vtaken.insert(vtaken.end(), kColorNames, kColorNames + p.ch);
+  if (p.vquality) vtaken.push_back("quality");
+  if (p.wedge) ftaken.push_back("texcoord");
+  if (p.fnormals) ftaken.insert(ftaken.end(), {"nx", "ny", "nz"});
+  if (p.fcolors) ftaken.insert(ftaken.end(), kColorNames, kColorNames + p.ch);
+  if (p.fquality) ftaken.push_back("quality");
+  p.vextras = extras_to_write(mesh.vertex_properties, p.nv, "vertex", vtaken, info);
+  p.fextras = extras_to_write(mesh.face_properties, p.nf, "face", ftaken, info);
   std::uint32_t max_size = 0;
-  for (std::size_t f = 0; f < nf; ++f) max_size = std::max<std::uint32_t>(max_size, std::uint32_t(mesh.face_size(f)));
-  const bool uchar_count = max_size <= 255;
-  const bool int_index = nv <= std::size_t(std::numeric_limits<std::int32_t>::max());
-  if (wedge && mesh.texcoord_dims != 2) info.notes.push_back("texture coordinates: only u v written to PLY");
+  for (std::size_t f = 0; f < p.nf; ++f) max_size = std::max<std::uint32_t>(max_size, std::uint32_t(mesh.face_size(f)));
+  p.uchar_count = max_size <= 255;
+  p.int_index = p.nv <= std::size_t(std::numeric_limits<std::int32_t>::max());
+  if ((p.wedge || p.vtex) && mesh.texcoord_dims != 2) info.notes.push_back("texture coordinates: only u v written to PLY");
   std::size_t corners_without_tex = 0;
-  if (wedge)
+  if (p.wedge)
     for (std::uint32_t t : mesh.corner_texcoord_index) corners_without_tex += t == kNoTexcoord;
   if (corners_without_tex > 0)
     info.notes.push_back("texture coordinates: " + std::to_string(corners_without_tex) +
                          " face corners had none and are written as (0, 0): PLY's texcoord list holds one per corner");
+  return p;
+}
 
+// Step 2: the header.
+void write_ply_header(const Mesh& mesh, const PlyPlan& p, std::string& out) {
   // Every byte counted, so the string never doubles and copies (a doubling held old and new
   // blocks at once: the peak of `occlusion` on 1M triangles, bench/visibility/results.md).
-  const std::size_t real_bytes = dbl ? 8 : 4, color_bytes = std::size_t(ch) * (cfloat ? 4 : 1);
-  out.reserve(out.size() + 300 + 40 * (vextras.size() + fextras.size()) +
-              nv * (real_bytes * (vnormals ? 6 : 3) + (vcolors ? color_bytes : 0) + (vquality ? 4 : 0) + vextra_bytes) +
+  std::size_t vextra_bytes = 0, fextra_bytes = 0;
+  for (const ExtraOut& e : p.vextras) vextra_bytes += ply::type_size(e.type);
+  for (const ExtraOut& e : p.fextras) fextra_bytes += ply::type_size(e.type);
+  const std::size_t real_bytes = p.dbl ? 8 : 4, color_bytes = std::size_t(p.ch) * (p.cfloat ? 4 : 1);
+  out.reserve(out.size() + 300 + 40 * (p.vextras.size() + p.fextras.size()) +
+              p.nv * (real_bytes * ((p.vnormals ? 6 : 3) + (p.vtex ? 2 : 0)) + (p.vcolors ? color_bytes : 0) +
+                      (p.vquality ? 4 : 0) + vextra_bytes) +
               mesh.num_corners() * 4 +
-              nf * (1 + (fnormals ? 3 * real_bytes : 0) + (fcolors ? color_bytes : 0) + (fquality ? 4 : 0) + fextra_bytes));
+              p.nf * (1 + (p.fnormals ? 3 * real_bytes : 0) + (p.fcolors ? color_bytes : 0) + (p.fquality ? 4 : 0) + fextra_bytes));
+  const std::string real = p.real;
   out += "ply\nformat ";
-  out += binary ? "binary_little_endian" : "ascii";
+  out += p.binary ? "binary_little_endian" : "ascii";
   out += " 1.0\ncomment written by shadetool\n";
   for (const std::string& c : mesh.comments)  // the input's comment and obj_info lines (MeshLab's TextureFile ...)
     if (c != "comment written by shadetool" && c.find('\n') == std::string::npos && c.find('\r') == std::string::npos) out += c + "\n";
   out += "element vertex ";
-  append_uint(out, nv);
+  append_uint(out, p.nv);
   out += '\n';
-  for (const char* n : {"x", "y", "z"}) out += std::string("property ") + real + " " + n + "\n";
-  if (vnormals)
-    for (const char* n : {"nx", "ny", "nz"}) out += std::string("property ") + real + " " + n + "\n";
-  const char* ctype = cfloat ? "float" : "uchar";
-  if (vcolors)
-    for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
-  if (vquality) out += "property float quality\n";
-  for (const ExtraOut& e : vextras) out += std::string("property ") + ply::type_name(e.type) + " " + mesh.vertex_properties[e.index].name + "\n";
+  for (const char* n : {"x", "y", "z"}) out += "property " + real + " " + n + "\n";
+  if (p.vnormals)
+    for (const char* n : {"nx", "ny", "nz"}) out += "property " + real + " " + n + "\n";
+  if (p.vtex)
+    for (const std::string& n : mesh.texcoord_names) out += "property " + real + " " + n + "\n";
+  const std::string ctype = p.cfloat ? "float" : "uchar";
+  if (p.vcolors)
+    for (int k = 0; k < p.ch; ++k) out += "property " + ctype + " " + kColorNames[k] + "\n";
+  if (p.vquality) out += "property float quality\n";
+  for (const ExtraOut& e : p.vextras) out += std::string("property ") + ply::type_name(e.type) + " " + mesh.vertex_properties[e.index].name + "\n";
   out += "element face ";
-  append_uint(out, nf);
+  append_uint(out, p.nf);
   out += "\nproperty list ";
-  out += uchar_count ? "uchar " : "int ";
-  out += int_index ? "int" : "uint";
+  out += p.uchar_count ? "uchar " : "int ";
+  out += p.int_index ? "int" : "uint";
   out += " vertex_indices\n";
-  if (wedge) out += std::string("property list ") + (uchar_count ? "uchar " : "int ") + real + " texcoord\n";
-  if (fnormals)
-    for (const char* n : {"nx", "ny", "nz"}) out += std::string("property ") + real + " " + n + "\n";
-  if (fcolors)
-    for (int k = 0; k < ch; ++k) out += std::string("property ") + ctype + " " + cnames[k] + "\n";
-  if (fquality) out += "property float quality\n";
-  for (const ExtraOut& e : fextras) out += std::string("property ") + ply::type_name(e.type) + " " + mesh.face_properties[e.index].name + "\n";
+  if (p.wedge) out += std::string("property list ") + (p.uchar_count ? "uchar " : "int ") + real + " texcoord\n";
+  if (p.fnormals)
+    for (const char* n : {"nx", "ny", "nz"}) out += "property " + real + " " + n + "\n";
+  if (p.fcolors)
+    for (int k = 0; k < p.ch; ++k) out += "property " + ctype + " " + kColorNames[k] + "\n";
+  if (p.fquality) out += "property float quality\n";
+  for (const ExtraOut& e : p.fextras) out += std::string("property ") + ply::type_name(e.type) + " " + mesh.face_properties[e.index].name + "\n";
   out += "end_header\n";
+}
 
-  auto real_value = [&](double v, bool first) {
-    if (binary) {
-      if (dbl) put<double>(out, v);
+// One value at a time, in the plan's encoding and types.
+struct PlyValues {
+  const PlyPlan& p;
+  std::string& out;
+
+  void real(double v, bool first) {
+    if (p.binary) {
+      if (p.dbl) put<double>(out, v);
       else put<float>(out, float(v));
     } else {
       if (!first) out += ' ';
       append_shortest(out, v);
     }
-  };
-  auto color_value = [&](float c) {
-    if (binary) {
-      if (cfloat) put<float>(out, c);
+  }
+  void color(float c) {
+    if (p.binary) {
+      if (p.cfloat) put<float>(out, c);
       else out += char(color_to_uchar(c));
     } else {
       out += ' ';
-      if (cfloat) append_shortest_float(out, c);
+      if (p.cfloat) append_shortest_float(out, c);
       else append_uint(out, color_to_uchar(c));
     }
-  };
-  auto quality_value = [&](float q) {
-    if (binary) {
+  }
+  void quality(float q) {
+    if (p.binary) {
       put<float>(out, q);
     } else {
       out += ' ';
       append_shortest_float(out, q);
     }
-  };
-  auto count_value = [&](std::uint32_t k) {
-    if (binary) {
-      if (uchar_count) out += char(std::uint8_t(k));
+  }
+  void count(std::uint32_t k) {
+    if (p.binary) {
+      if (p.uchar_count) out += char(std::uint8_t(k));
       else put<std::int32_t>(out, std::int32_t(k));
     } else {
       append_uint(out, k);
     }
-  };
-
-  for (std::size_t v = 0; v < nv; ++v) {
-    real_value(mesh.positions[3 * v], true);
-    real_value(mesh.positions[3 * v + 1], false);
-    real_value(mesh.positions[3 * v + 2], false);
-    if (vnormals)
-      for (int k = 0; k < 3; ++k) real_value(mesh.vertex_normals[3 * v + std::size_t(k)], false);
-    if (vcolors)
-      for (int k = 0; k < ch; ++k) color_value(mesh.vertex_colors[std::size_t(ch) * v + std::size_t(k)]);
-    if (vquality) quality_value(mesh.vertex_quality[v]);
-    for (const ExtraOut& e : vextras) put_extra(out, mesh.vertex_properties[e.index].values[v], e.type, binary);
-    if (!binary) out += '\n';
   }
-  const std::size_t td = std::size_t(mesh.texcoord_dims);
-  for (std::size_t f = 0; f < nf; ++f) {
-    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-    count_value(e - b);
-    for (std::uint32_t c = b; c < e; ++c) {
-      if (binary) {
-        if (int_index) put<std::int32_t>(out, std::int32_t(mesh.corner_vertex[c]));
-        else put<std::uint32_t>(out, mesh.corner_vertex[c]);
-      } else {
-        out += ' ';
-        append_uint(out, mesh.corner_vertex[c]);
-      }
+  void index(std::uint32_t v) {
+    if (p.binary) {
+      if (p.int_index) put<std::int32_t>(out, std::int32_t(v));
+      else put<std::uint32_t>(out, v);
+    } else {
+      out += ' ';
+      append_uint(out, v);
     }
-    if (wedge) {
-      if (!binary) out += ' ';
-      count_value(2 * (e - b));
+  }
+};
+
+// Step 3: the vertex records.
+void write_ply_vertices(const Mesh& mesh, const PlyPlan& p, PlyValues& w) {
+  const std::size_t ch = std::size_t(p.ch);
+  for (std::size_t v = 0; v < p.nv; ++v) {
+    w.real(mesh.positions[3 * v], true);
+    w.real(mesh.positions[3 * v + 1], false);
+    w.real(mesh.positions[3 * v + 2], false);
+    if (p.vnormals)
+      for (std::size_t k = 0; k < 3; ++k) w.real(mesh.vertex_normals[3 * v + k], false);
+    if (p.vtex) {
+      w.real(p.vertex_uv[2 * v], false);
+      w.real(p.vertex_uv[2 * v + 1], false);
+    }
+    if (p.vcolors)
+      for (std::size_t k = 0; k < ch; ++k) w.color(mesh.vertex_colors[ch * v + k]);
+    if (p.vquality) w.quality(mesh.vertex_quality[v]);
+    for (const ExtraOut& e : p.vextras) put_extra(w.out, mesh.vertex_properties[e.index].values[v], e.type, p.binary);
+    if (!p.binary) w.out += '\n';
+  }
+}
+
+// Step 4: the face records.
+void write_ply_faces(const Mesh& mesh, const PlyPlan& p, PlyValues& w) {
+  const std::size_t ch = std::size_t(p.ch);
+  const std::size_t td = std::size_t(mesh.texcoord_dims);
+  for (std::size_t f = 0; f < p.nf; ++f) {
+    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
+    w.count(e - b);
+    for (std::uint32_t c = b; c < e; ++c) w.index(mesh.corner_vertex[c]);
+    if (p.wedge) {
+      if (!p.binary) w.out += ' ';
+      w.count(2 * (e - b));
       for (std::uint32_t c = b; c < e; ++c) {
         if (mesh.corner_texcoord_index[c] == kNoTexcoord) {
-          real_value(0.0, false);
-          real_value(0.0, false);
+          w.real(0.0, false);
+          w.real(0.0, false);
           continue;
         }
         const std::size_t t = std::size_t(mesh.corner_texcoord_index[c]) * td;
-        real_value(mesh.texcoords[t], false);
-        real_value(td > 1 ? mesh.texcoords[t + 1] : 0.0, false);
+        w.real(mesh.texcoords[t], false);
+        w.real(td > 1 ? mesh.texcoords[t + 1] : 0.0, false);
       }
     }
-    if (fnormals)
-      for (int k = 0; k < 3; ++k) real_value(mesh.face_normals[3 * f + std::size_t(k)], false);
-    if (fcolors)
-      for (int k = 0; k < ch; ++k) color_value(mesh.face_colors[std::size_t(ch) * f + std::size_t(k)]);
-    if (fquality) quality_value(mesh.face_quality[f]);
-    for (const ExtraOut& e : fextras) put_extra(out, mesh.face_properties[e.index].values[f], e.type, binary);
-    if (!binary) out += '\n';
+    if (p.fnormals)
+      for (std::size_t k = 0; k < 3; ++k) w.real(mesh.face_normals[3 * f + k], false);
+    if (p.fcolors)
+      for (std::size_t k = 0; k < ch; ++k) w.color(mesh.face_colors[ch * f + k]);
+    if (p.fquality) w.quality(mesh.face_quality[f]);
+    for (const ExtraOut& x : p.fextras) put_extra(w.out, mesh.face_properties[x.index].values[f], x.type, p.binary);
+    if (!p.binary) w.out += '\n';
   }
+}
+
+}  // namespace
+
+void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info) {
+  Mesh split;
+  const Mesh& mesh = with_corner_normals_split(input, split, info.split_vertices);
+  const PlyPlan plan = plan_ply(mesh, binary, info);
+  write_ply_header(mesh, plan, out);
+  PlyValues values{plan, out};
+  write_ply_vertices(mesh, plan, values);
+  write_ply_faces(mesh, plan, values);
 }
 
 }  // namespace shadetool::io

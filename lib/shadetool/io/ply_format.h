@@ -16,7 +16,13 @@
 // Mesh::precision (binary float narrows each value to float; ascii prints the shortest text that
 // reads back to the stored value, io/engine/number_text.h), colours as uchar or float after Mesh::colors_are_float; per-corner normals are
 // split into vertices (WriteInfo::split_vertices); face normals and face colours as face
-// properties; per-corner texcoords as a face list `texcoord` (as MeshLab writes them).
+// properties; per-corner texcoords as a face list `texcoord` (as MeshLab writes them), except
+// that coordinates read per vertex (Mesh::texcoord_names) are written per vertex under the same
+// names whenever every corner of each vertex has the same coordinates (no vertex to split).
+// read_ply also reads a `tristrips` element (list vertex_indices, -1 restarting a strip) when the
+// file has no face element, as MeshLab does: see io/engine/ply_properties.h and ply_body.h.
+// A file whose faces are in an element it cannot read (faceless otherwise) is refused.
+// write_ply's steps: plan (what is written, notes), header, vertex records, face records.
 #pragma once
 
 #include <string>

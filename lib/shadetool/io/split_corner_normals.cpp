@@ -2,6 +2,7 @@
 #include <shadetool/io/split_corner_normals.h>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace shadetool::io {
@@ -63,6 +64,29 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
 const Mesh& with_corner_normals_split(const Mesh& input, Mesh& storage, std::size_t& added) {
   added = 0;
   if (!input.has_corner_normals()) return input;
+  storage = split_corner_normals(input, added);
+  return storage;
+}
+
+bool corner_normals_disagree(const Mesh& mesh) {
+  if (!mesh.has_corner_normals()) return false;
+  const std::size_t V = mesh.num_vertices();
+  std::vector<std::uint32_t> first(V, std::numeric_limits<std::uint32_t>::max());  // a corner normal index per vertex
+  for (std::size_t c = 0; c < mesh.num_corners(); ++c) {
+    const std::uint32_t v = mesh.corner_vertex[c], k = mesh.corner_normal_index[c];
+    if (v >= V || 3 * std::size_t(k) + 2 >= mesh.corner_normals.size()) return false;  // malformed: left to the caller
+    if (first[v] == std::numeric_limits<std::uint32_t>::max()) {
+      first[v] = k;
+    } else if (first[v] != k && get3(mesh.corner_normals, first[v]) != get3(mesh.corner_normals, k)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+const Mesh& with_creases_split(const Mesh& input, Mesh& storage, std::size_t& added) {
+  added = 0;
+  if (!corner_normals_disagree(input)) return input;
   storage = split_corner_normals(input, added);
   return storage;
 }

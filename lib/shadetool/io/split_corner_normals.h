@@ -25,5 +25,15 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added);
 // normals (no copy), else split_corner_normals(input) held in `storage`. `added` as above.
 const Mesh& with_corner_normals_split(const Mesh& input, Mesh& storage, std::size_t& added);
 
+// True when some vertex's corners carry different corner normals (by value: a crease), so that no
+// one normal per vertex stands for them; false without corner normals.
+bool corner_normals_disagree(const Mesh& mesh);
+
+// What a step that shades or casts per vertex uses (render, bake-lighting and occlusion per
+// vertex): `input` itself unless corner_normals_disagree(input), else split_corner_normals(input)
+// in `storage`, so that every corner is shaded with its own normal, exactly as the same normals
+// read back from a PLY file (whose writer splits them the same way) are. `added` as above.
+const Mesh& with_creases_split(const Mesh& input, Mesh& storage, std::size_t& added);
+
 }  // namespace shadetool::io
 #pragma GCC visibility pop

@@ -117,6 +117,8 @@ Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
 // Facet normals as read, checked against the winding: exporters often write (0,0,0) or the
 // opposite normal. A zero normal, or one pointing away from the triangle's own (dot < 0), is
 // replaced by the triangle's unit normal; a zero normal of a triangle with no area becomes +z.
+// A triangle with no area has no winding to be against: its non-zero facet normal is kept as read
+// (the writer gives such triangles +z; reading that back changes nothing).
 // NaN/Inf normals stay as read (info reports them; commands refuse them). All zero: none kept.
 void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merger, ReadInfo& info) {
   bool any = false;
@@ -129,13 +131,14 @@ void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merg
                                       mesh.position(mesh.corner_vertex[c + 2]));
       const Vec3d n = get3(normals, f);
       const bool is_zero = n.x == 0 && n.y == 0 && n.z == 0;
-      if (is_zero && g.x == 0 && g.y == 0 && g.z == 0) {
+      const bool arealess = g.x == 0 && g.y == 0 && g.z == 0;
+      if (is_zero && arealess) {
         set3(normals, f, {0, 0, 1});
         ++no_area;
       } else if (is_zero) {
         set3(normals, f, g);
         ++zero;
-      } else if (std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(dot(n, g) > 0)) {
+      } else if (!arealess && std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(dot(n, g) > 0)) {
         // against the winding, or perpendicular to the face (NaN/Inf stay as read: info reports them)
         set3(normals, f, g);
         ++against;

@@ -104,7 +104,14 @@ BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency 
   return result;
 }
 
-void store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr) {
+std::vector<std::string> store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr) {
+  std::vector<std::string> notes;
+  const bool per_vertex = frequency == ShadingFrequency::PerVertex;
+  if (per_vertex ? mesh.has_face_colors() : mesh.has_vertex_colors())
+    notes.push_back(std::string("the input's ") + (per_vertex ? "face" : "vertex") + " colours dropped: the lighting is baked per " +
+                    (per_vertex ? "vertex" : "face") + " (--per " + (per_vertex ? "face" : "vertex") + " bakes into them instead)");
+  if (mesh.color_channels == 4 && (mesh.has_vertex_colors() || mesh.has_face_colors()))
+    notes.push_back("the input's colour alpha dropped: baked colours are rgb");
   mesh.color_channels = 3;
   mesh.colors_are_float = hdr;
   if (frequency == ShadingFrequency::PerVertex) {
@@ -114,6 +121,7 @@ void store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency 
     mesh.face_colors = std::move(colors);
     mesh.vertex_colors.clear();
   }
+  return notes;
 }
 
 }  // namespace shadetool

@@ -24,7 +24,8 @@
 //
 // store_baked_colors puts encoded colours into the mesh: vertex_colors (PerVertex) or face_colors
 // (PerFace), the other array cleared, 3 channels, colors_are_float = hdr. Positions and faces are
-// not touched.
+// not touched. It returns one note for each thing of the input's that this drops (its colours of the
+// other frequency, its colour alpha), so that nothing vanishes silently.
 #pragma once
 
 #include <cstddef>
@@ -61,7 +62,7 @@ void require_bakeable(const Mesh& mesh, ShadingFrequency frequency, const std::s
 BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency,
                          const ShadeOptions& options = {}, const ShadowOptions& shadows = {});
 
-void store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr);
+std::vector<std::string> store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

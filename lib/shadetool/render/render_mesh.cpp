@@ -16,6 +16,7 @@
 #include <shadetool/render/fill_rule.h>
 #include <shadetool/core/vocabulary.h>
 #include <shadetool/geometry/winding_number.h>
+#include <shadetool/io/split_corner_normals.h>
 
 namespace shadetool {
 
@@ -365,8 +366,13 @@ void check_render_options(const RenderOptions& o, const std::string& name) {
   }
 }
 
-RenderResult render_mesh(const Mesh& mesh, const Scene& scene, const RenderOptions& options, const std::string& name) {
+RenderResult render_mesh(const Mesh& input, const Scene& scene, const RenderOptions& options, const std::string& name) {
   check_render_options(options, name);
+  // Corner normals that differ at a vertex (creases, OBJ vn): each corner shaded with its own, as
+  // the same normals read from a PLY file (split the same way by its writer) are.
+  Mesh split;
+  std::size_t added = 0;
+  const Mesh& mesh = io::with_creases_split(input, split, added);
   if (options.threads <= 0) return render_in_arena(mesh, scene, options, name);
   tbb::task_arena arena(options.threads);  // every parallel step (setup and tiles) on these threads
   RenderResult result;

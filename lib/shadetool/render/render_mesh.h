@@ -2,6 +2,9 @@
 // lighting of lib/lighting (the same equation and code as `bake-lighting`).
 //
 // Inputs:  mesh     positions #V by 3 (object space), faces of any size; normals if it has them
+//                   (corner normals that differ at a vertex: the vertex is split per normal first,
+//                   io/split_corner_normals.h with_creases_split, so each corner is shaded with its
+//                   own normal and an OBJ with `vn` renders as the same normals from a PLY)
 //          scene    lighting/scene.h: lights, material, world_from_object M, camera (render/camera.h
 //                   for the projection fields), two_sided
 //          options  shading, size W x H, N x N samples per pixel, background, model/space, threads

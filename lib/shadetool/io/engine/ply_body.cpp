@@ -322,6 +322,68 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
   }
 }
 
+// Triangles of one strip run s[0..m): triangle j is (s[j], s[j+1], s[j+2]) for even j and
+// (s[j+1], s[j], s[j+2]) for odd j, so that every triangle winds like the first (the strip's own
+// alternation undone, as VCG's importer, MeshLab's, reads them). A triangle with a repeated index
+// joins two strips and has no area: not kept, counted.
+void add_strip_run(const std::vector<std::uint32_t>& s, Mesh& mesh, std::size_t& joins) {
+  for (std::size_t j = 0; j + 2 < s.size(); ++j) {
+    const std::uint32_t a = j % 2 ? s[j + 1] : s[j], b = j % 2 ? s[j] : s[j + 1], c = s[j + 2];
+    if (a == b || b == c || a == c) {
+      ++joins;
+      continue;
+    }
+    mesh.corner_vertex.insert(mesh.corner_vertex.end(), {a, b, c});
+    mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
+  }
+}
+
+// The `tristrips` element (PlyLayout::strips): each item a list of vertex indices where -1 ends a
+// strip and starts the next; read as triangles (add_strip_run), with one note.
+void read_strips_element(const Element& e, const PlyLayout& layout, BodyReader& in, Mesh& mesh, const std::string& name,
+                         ReadInfo& info) {
+  std::vector<std::uint32_t> run;
+  std::size_t joins = 0, strips = 0;
+  for (std::uint64_t i = 0; i < e.count; ++i) {
+    for (const auto& prop : e.props) {
+      if (!prop.is_list) {
+        in.scalar(prop.type, e.name.c_str());
+        continue;
+      }
+      const std::int64_t k = in.integer(prop.count_type, "a list count");
+      if (k < 0) in.error("negative list count in " + element_item(e, i));
+      if (!in.ascii() && std::uint64_t(k) > in.remaining() / type_size(prop.type))
+        in.error("file is truncated: it ends in " + element_item(e, i));
+      if (prop.target != Target::Indices) {
+        for (std::int64_t j = 0; j < k; ++j) in.scalar(prop.type, e.name.c_str());
+        continue;
+      }
+      run.clear();
+      for (std::int64_t j = 0; j < k; ++j) {
+        const std::int64_t idx = in.integer(prop.type, "a strip's vertex indices");
+        if (idx == -1) {  // the end of one strip, the start of the next
+          strips += run.size() >= 3;
+          add_strip_run(run, mesh, joins);
+          run.clear();
+          continue;
+        }
+        if (idx < 0 || std::uint64_t(idx) >= layout.num_vertices())
+          fail(name, in.line(), element_item(e, i) + ": vertex index " + std::to_string(idx) + " out of range (" +
+                                    std::to_string(layout.num_vertices()) + " vertices; -1 restarts a strip)");
+        run.push_back(std::uint32_t(idx));
+      }
+      strips += run.size() >= 3;
+      add_strip_run(run, mesh, joins);
+      if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 3)
+        in.error("too many face corners (more than 2^32)");
+    }
+  }
+  info.notes.push_back("triangle strips ('" + e.name + "'): " + std::to_string(strips) + " strips read as " +
+                       std::to_string(mesh.num_faces()) + " triangles, winding as the first of each strip (as MeshLab reads them)" +
+                       (joins > 0 ? "; " + std::to_string(joins) + " triangles with a repeated index (strip joins, no area) not kept"
+                                  : std::string()));
+}
+
 // An element we do not keep: skipped by its declared types, counted in a note.
 void skip_element(const Element& e, BodyReader& in, ReadInfo& info) {
   // An element we do not keep: skipped by its declared types. One without properties takes no
@@ -335,6 +397,7 @@ void skip_element(const Element& e, BodyReader& in, ReadInfo& info) {
   if (fixed) {
     if (e.count * size > in.remaining()) in.error("file is truncated: it ends in the " + e.name + " elements");
     in.advance(std::size_t(e.count) * size);
+    info.notes.push_back("skipped " + std::to_string(e.count) + " '" + e.name + "' elements");
     return;
   }
   for (std::uint64_t i = 0; i < e.count; ++i)
@@ -383,14 +446,32 @@ Mesh read_ply_body(std::string_view bytes, const PlyHeader& header, const PlyLay
                              std::to_string(in.remaining()) + " bytes of data follow");
     if (&e == layout.vertex) read_vertex_element(e, layout, in, mesh, vtexcoords, name, info);
     else if (&e == layout.face) read_face_element(e, layout, in, mesh, name, info);
+    else if (&e == layout.strips) read_strips_element(e, layout, in, mesh, name, info);
     else skip_element(e, in, info);
   }
   refuse_trailing_data(in, name);
+  // Faces in an element this reader does not take (a second face element, strips beside faces,
+  // another name with a vertex_indices list): a faceless result would be a point cloud the file is
+  // not; refused instead of letting a command make nothing of it with exit 0.
+  if (mesh.num_faces() == 0)
+    for (const Element& e : header.elements) {
+      if (&e == layout.face || &e == layout.strips || e.count == 0) continue;
+      for (const auto& prop : e.props)
+        if (prop.is_list && (prop.name == "vertex_indices" || prop.name == "vertex_index"))
+          fail(name, e.line, "element '" + e.name + "' holds " + std::to_string(e.count) + " faces (list " + prop.name +
+                                 ") that shadetool does not read (it reads 'face', and 'tristrips' when there is no face "
+                                 "element): nothing usable");
+    }
 
   if (layout.has_vtex() && !layout.face_texcoords) {
     mesh.texcoords = std::move(vtexcoords);
     mesh.texcoord_dims = 2;
     mesh.corner_texcoord_index = mesh.corner_vertex;
+    // The names they were read under, for a writer that gives them back per vertex (the last
+    // property of each kind is the one whose value was kept).
+    mesh.texcoord_names.assign(2, std::string());
+    for (const auto& prop : layout.vertex->props)
+      if (prop.target == Target::U || prop.target == Target::V) mesh.texcoord_names[prop.target == Target::V] = prop.name;
   }
   mesh.color_channels = layout.channels();
   mesh.colors_are_float = layout.colors_float;

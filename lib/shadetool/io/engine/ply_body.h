@@ -7,8 +7,13 @@
 //          bytes left before anything is allocated. Binary vertex records of scalars and binary
 //          triangle lists take fast paths (plain loads at fixed offsets) that read the same values.
 //          Mesh::precision, colour channels and float-ness are set from the layout.
+//          A `tristrips` element (PlyLayout::strips) becomes triangles: a -1 restarts a strip; odd
+//          triangles of a strip are reordered to wind like the first (as VCG/MeshLab read them);
+//          a triangle with a repeated index (a join between strips) is not kept; one note counts.
 // Errors:  truncated or malformed data, indices out of range, faces with fewer than 3 corners,
-//          data after the last element (`NAME:LINE: what` in ascii, `NAME: what` in binary).
+//          data after the last element (`NAME:LINE: what` in ascii, `NAME: what` in binary); a
+//          result without faces while another element holds a vertex_indices list (faces this
+//          reader does not take).
 #pragma once
 
 #include <string>

@@ -113,6 +113,16 @@ PlyLayout map_ply_properties(std::vector<Element>& elements, const std::string& 
     if (e.name == "vertex" && !layout.vertex) layout.vertex = &e;
     if (e.name == "face" && !layout.face) layout.face = &e;
   }
+  if (!layout.face)
+    for (auto& e : elements)
+      if (e.name == "tristrips" && !layout.strips)
+        for (auto& prop : e.props)
+          if (prop.is_list && prop.name == "vertex_indices" && !is_float_type(prop.type) && !layout.strips) {
+            prop.target = Target::Indices;
+            layout.strips = &e;
+          }
+  if (layout.strips && !layout.vertex && layout.strips->count > 0)
+    fail(name, layout.strips->line, "triangle strips but no vertex element");
   if (layout.vertex) map_vertex_properties(*layout.vertex, layout, name);
   if (layout.face) map_face_properties(*layout.face, layout, name);
   if (layout.vertex) layout.vertex_extras = mark_extras(*layout.vertex, true, layout).size();

@@ -15,6 +15,8 @@
 //            (float items: per-corner u v), nx ny nz, red green blue alpha (also diffuse_*), quality;
 //            every other scalar: an extra property. Other lists of either element are skipped
 //            (the body reader names them in a note).
+//   tristrips: (Stanford's Cyberware-era files, igea.ply; only when there is no face element)
+//            list vertex_indices: triangle strips, -1 restarts a strip; read as triangles.
 // Errors:  a vertex element without x, y and z; a face element without an index list; faces but
 //          no vertex element.
 #pragma once
@@ -30,6 +32,7 @@ namespace shadetool::io::ply {
 struct PlyLayout {
   Element* vertex = nullptr;  // into the elements passed in
   Element* face = nullptr;
+  Element* strips = nullptr;  // `tristrips` with a vertex_indices list, when there is no face element
   bool vnormal[3] = {false, false, false}, fnormal[3] = {false, false, false};
   bool vcolor[4] = {false, false, false, false}, fcolor[4] = {false, false, false, false};
   bool vtex[2] = {false, false};
