@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command_registry.h"
+#include <shadetool/normals/replace_invalid_normals.h>
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
@@ -115,8 +116,9 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
         throw shadetool::Error(shadetool::located(input, 0, "no --scene given and the file has no KHR_lights_punctual light"));
       for (auto& n : scene_notes) r.notes.push_back(n);
       shadetool::require_finite_positions(mesh, input);
-      // The mesh's normals go to the output unchanged: none may be NaN/Inf (nor light with them).
-      shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
+      // Normals pass through to the output: one without a direction is replaced, with a counted note.
+      if (const std::string note = shadetool::invalid_normals_note(shadetool::replace_invalid_normals(mesh)); !note.empty())
+        r.notes.push_back(note);
       if (frequency == shadetool::ShadingFrequency::PerFace) {
         shadetool::require_faces(mesh, input);
       } else if (mesh.num_faces() == 0 && !mesh.has_vertex_normals() && mesh.num_vertices() > 0) {
