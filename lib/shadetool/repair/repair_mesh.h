@@ -20,8 +20,9 @@
 //        d. the winding-number vote of an open surface;
 //        e. the normals alone where geometry has no evidence (a thin or flat closed sheet);
 //        f. the input's majority.
-//      A face whose winding agreed with its normals is reversed only in case b (counted in
-//      RepairReport::orientation_by.faces_agreeing_reversed). Steps 1 and 2 reverse each face at most once, with
+//      A face whose winding agreed with its normals is reversed only in case b, or in a part whose
+//      normals disagree among themselves (agreeing faces not 2:1): counted in
+//      RepairReport::orientation_by.faces_agreeing_reversed. Steps 1 and 2 reverse each face at most once, with
 //      reverse_faces.h (first corner kept, so a face flipped by swapping two corners is restored
 //      exactly), carrying corner normal and texcoord indices.
 //   3. Normals (fix_normals.h), on the final faces.

@@ -27,6 +27,7 @@ struct OrientationBy {
   std::size_t faces_disagreeing = 0;        // ... disagrees
   std::size_t faces_agreeing_reversed = 0;  // agreeing faces whose winding changed: only in parts
                                             // whose winding was inconsistent (their majority decided)
+                                            // or whose normals disagree among themselves
   std::size_t geometry_overruled = 0;       // components kept by winding and normals that volume,
                                             // nesting parity or the open-surface vote would have reversed
 };
