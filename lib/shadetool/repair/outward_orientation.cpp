@@ -52,6 +52,12 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
       out.faces_disagreeing += authored.disagreeing;
     }
     const bool input_consistent = winding.component_reverse_count[k] == 0;
+    // A closed shell with a volume sign is a container for the nesting test, however it is decided.
+    const bool has_sign = closed && volume_has_sign(volumes.volume[k], volumes.magnitude[k]);
+    if (has_sign) {
+      volume_invert[k] = volumes.volume[k] < 0;
+      shells.push_back(std::uint32_t(k));
+    }
     // 1. The input's winding and its normals agree: kept, whatever the geometry would say.
     // 2. The part's winding is inconsistent: the majority of its agreeing evidence decides.
     const bool agrees = normals && winding_agrees(authored, input_consistent);
@@ -62,12 +68,7 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
     // 3. Geometry (asked for kept components too, to report what it would have done).
     bool geometry_decided = false, geometry_invert = false, thin_volume = false;
     if (closed) {
-      const bool has_sign = volume_has_sign(volumes.volume[k], volumes.magnitude[k]);
       const bool thin = has_sign && normals && thin_closed_component(mesh, component_faces(k), volumes.volume[k]);
-      if (has_sign) {
-        volume_invert[k] = volumes.volume[k] < 0;
-        shells.push_back(std::uint32_t(k));
-      }
       if (has_sign && !thin) { geometry_decided = true; geometry_invert = volume_invert[k]; }
       thin_volume = thin;
     } else if (winding.component_faces[k] >= 2) {  // one face wraps nothing: no geometric evidence
