@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command_registry.h"
+#include <shadetool/normals/replace_invalid_normals.h>
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
@@ -63,11 +64,13 @@ shadetool::Scene gltf_own_scene(const std::string& input, FileResult& r) {
   return scene;
 }
 
-// What the mesh must carry to be lit: finite positions and normals (they go to the output
-// unchanged: none may be NaN/Inf, nor light with them), faces per face, normals per vertex.
-void check_bakeable(const shadetool::Mesh& mesh, const std::string& input, shadetool::ShadingFrequency frequency) {
+// What the mesh must carry to be lit: finite positions, faces per face, normals or faces per vertex.
+// Normals pass through to the output: one without a direction is replaced by the computed one, with
+// a counted note (normals/replace_invalid_normals.h).
+void check_bakeable(shadetool::Mesh& mesh, const std::string& input, shadetool::ShadingFrequency frequency, FileResult& r) {
   shadetool::require_finite_positions(mesh, input);
-  shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
+  if (const std::string note = shadetool::invalid_normals_note(shadetool::replace_invalid_normals(mesh)); !note.empty())
+    r.notes.push_back(note);
   shadetool::require_bakeable(mesh, frequency, input);
 }
 
@@ -208,7 +211,7 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
 
     return run_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       const shadetool::Scene scene = own_scene ? gltf_own_scene(input, r) : file_scene;
-      check_bakeable(mesh, input, set.frequency);
+      check_bakeable(mesh, input, set.frequency, r);
       shadetool::ShadowOptions cast = set.shadows;
       if (set.shadows.enabled && own_scene) cast.occluders = document_occluders(r);
       if (set.frequency == shadetool::ShadingFrequency::PerVertex && shadetool::io::corner_normals_disagree(mesh)) {

@@ -115,6 +115,13 @@ RegisterCommand reg("normals", HelpSection::Edit, [](CLI::App& app) -> std::func
                                      : request.kind == shadetool::NormalKind::Corner ? "fallback_corners"
                                                                                      : "fallback_vertices";
           r.stats[fallback_key] = rep.fallback;
+          if (rep.two_sided_faces > 0) {
+            r.stats["two_sided_faces"] = rep.two_sided_faces;
+            r.notes.push_back(fmt::format(
+                "{} faces are the back of an earlier face on the same vertices (a two-sided surface): normals from the "
+                "front faces only{}",
+                rep.two_sided_faces, request.kind == shadetool::NormalKind::Corner ? ", reversed on the back faces' corners" : ""));
+          }
           if (rep.discarded > 0) r.notes.push_back(fmt::format("--recompute: {} normals from the input discarded", rep.discarded));
           if (rep.dropped > 0)
             r.notes.push_back(fmt::format("{} vertex/corner normals from the input dropped: --faces writes face normals", rep.dropped));

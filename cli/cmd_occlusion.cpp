@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "command_registry.h"
+#include <shadetool/normals/replace_invalid_normals.h>
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
@@ -99,8 +100,9 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
         [options, per_face, colors, quality](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_faces(mesh, input);
           shadetool::require_finite_positions(mesh, input);
-          // Normals pass through to the output: none may carry NaN or Inf into it.
-          shadetool::require_finite_normals(mesh, input, "fix them first (`shadetool normals --recompute` or `shadetool repair`)");
+          // Normals pass through to the output: one without a direction is replaced, with a counted note.
+          if (const std::string note = shadetool::invalid_normals_note(shadetool::replace_invalid_normals(mesh)); !note.empty())
+            r.notes.push_back(note);
           // glTF: every primitive against the whole scene (gltf/gltf_occlusion.h), computed at
           // the first primitive for all of them; the BVH statistics then count once, there.
           shadetool::MeshOcclusion job;

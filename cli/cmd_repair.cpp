@@ -43,8 +43,13 @@ void add_notes(const RepairReport& r, const RepairCliOptions& opt, FileResult& o
     out.notes.push_back(fmt::format("seams: oriented across {} at the exact position of another (joined for the decision only; "
                                     "the output keeps them)", count(r.seam_vertices_joined, "boundary vertex", "boundary vertices")));
   if (r.oriented_by_normals > 0)
-    out.notes.push_back(fmt::format("orientation: {} followed the input's normals (no volume or too thin for its sign)",
+    out.notes.push_back(fmt::format("orientation: {} followed the input's normals (inconsistent winding, or no geometric evidence)",
                                     count(r.oriented_by_normals, "component", "components")));
+  if (r.orientation_by.geometry_overruled > 0)
+    out.notes.push_back(fmt::format("orientation: kept {} as authored: winding and normals agree, though volume, nesting or "
+                                    "the open-surface vote would have reversed {}",
+                                    count(r.orientation_by.geometry_overruled, "component", "components"),
+                                    r.orientation_by.geometry_overruled == 1 ? "it" : "them"));
   if (r.faces_flipped_for_consistency > 0) {
     std::string s = fmt::format("winding: reversed {} to make the winding consistent in {}",
                                 count(r.faces_flipped_for_consistency, "face", "faces"),

@@ -20,6 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command_registry.h"
+#include <shadetool/normals/replace_invalid_normals.h>
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
@@ -197,8 +198,9 @@ RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::fu
         r.notes.push_back("the transform is singular (det A = 0 or nearly): the mesh was flattened; it has no normals to transform");
       }
       // transform_mesh leaves a NaN/Inf normal as read; the command does not write one unasked.
-      if (options.normals == shadetool::NormalsPolicy::Transform)
-        shadetool::require_finite_normals(mesh, input, "use --normals recompute or --normals drop (or `shadetool repair` first)");
+      if (options.normals == shadetool::NormalsPolicy::Transform)  // one without a direction: replaced, counted
+        if (const std::string note = shadetool::invalid_normals_note(shadetool::replace_invalid_normals(mesh)); !note.empty())
+          r.notes.push_back(note);
       if (r.gltf) {  // glTF: tangents and morph-target deltas, before the base normals move
         const shadetool::GltfTransformReport g =
             shadetool::transform_gltf_extras(*r.gltf, M, file_options.normals == shadetool::NormalsPolicy::Drop);

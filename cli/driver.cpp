@@ -291,6 +291,12 @@ shadetool::Mesh read_input(const IoOptions& io, const std::string& input, shadet
                       : shadetool::read_mesh(input, in_format, &read_info);
 }
 
+// Vertices a writer added (counts are kept or named in a note, issue 27).
+std::string split_vertices_note(std::size_t added) {
+  return std::to_string(added) + (added == 1 ? " vertex" : " vertices") +
+         " added: the format holds one normal or colour per vertex, so a vertex with several was split";
+}
+
 // Writes what the step produced (a mesh or an image) to `output`, together with the step's other
 // files (all or none); notes and counts go to `result`.
 void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& mesh, const std::string& output,
@@ -307,7 +313,10 @@ void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& m
       wo.refuse_unusable_normals = true;  // no subcommand writes a zero or non-finite normal
       shadetool::WriteInfo write_info;
       bytes = shadetool::write_mesh_to_memory(mesh, wo, &write_info);
-      if (write_info.split_vertices > 0) result.stats["split_vertices"] = write_info.split_vertices;
+      if (write_info.split_vertices > 0) {
+        result.stats["split_vertices"] = write_info.split_vertices;
+        result.notes.push_back(split_vertices_note(write_info.split_vertices));
+      }
       for (auto& n : write_info.notes) result.notes.push_back(n);  // what the format could not carry
       break;
     }
@@ -423,7 +432,10 @@ void write_gltf_output(const IoOptions& io, OutputKind kind, const shadetool::Gl
   const std::string bin_path = text && output != "-" ? shadetool::gltf_buffer_path(output) : std::string();
   const std::string bytes =
       shadetool::write_gltf(doc, !text, name, wr, bin_path.empty() ? std::string() : fs::path(bin_path).filename().string());
-  if (wr.split_vertices > 0) result.stats["split_vertices"] = wr.split_vertices;
+  if (wr.split_vertices > 0) {
+    result.stats["split_vertices"] = wr.split_vertices;
+    result.notes.push_back(split_vertices_note(wr.split_vertices));
+  }
   for (auto& n : wr.notes) result.notes.push_back(n);
   std::vector<shadetool::io::FileToWrite> files{{output, bytes}};
   if (!wr.buffer.empty()) {

@@ -101,12 +101,14 @@ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n' > "$tmp/withn.o
 "$bin" transform "$tmp/withn.obj" -o "$tmp/flat2.obj" --scale 0,1,1 2> /dev/null
 check "singular map with normals: exit 2, no output" test $? -eq 2 -a ! -e "$tmp/flat2.obj"
 
-# No subcommand writes a zero normal (issue 21, item 11): transform leaves a zero vn as read, so the
-# write refuses it (exit 1, one line, no output); STL facet normals are replaced on read.
+# No subcommand writes a zero normal (issue 21, item 11): transform replaces a zero vn by the
+# computed one with a counted note (issue 27, item 14); the plane's +z is written. STL facet
+# normals are replaced on read.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n' > "$tmp/zero_vn.obj"
-"$bin" transform "$tmp/zero_vn.obj" -o "$tmp/zero_out.ply" --translate 1,0,0 2> "$tmp/err.txt"
-check "zero normal never written: exit 1, no output" test $? -eq 1 -a ! -e "$tmp/zero_out.ply"
-check "zero normal never written: one line" test "$(wc -l < "$tmp/err.txt")" -eq 1
+"$bin" transform "$tmp/zero_vn.obj" -o "$tmp/zero_out.ply" --ascii --translate 1,0,0 2> "$tmp/err.txt"
+check "zero normal never written: exit 0, output" test $? -eq 0 -a -s "$tmp/zero_out.ply"
+check "zero normal never written: one counted note" test "$(grep -c "1 input normal had no direction" "$tmp/err.txt")" -eq 1
+check "zero normal never written: +z written" test "$(sed -n '/end_header/,$p' "$tmp/zero_out.ply" | awk 'NF == 6 {print $4, $5, $6}' | sort -u)" = "0 0 1"
 "$bin" normals "$src/data/part.stl" -o "$tmp/part.ply" --ascii 2> "$tmp/err.txt"
 check "STL zero facet normals replaced on read, counted" grep -q "2 zero, 2 against the winding" "$tmp/err.txt"
 check "no zero normal in the PLY" test -z "$(awk '/end_header/{b=1;next} b && NF>=6 && $4==0 && $5==0 && $6==0' "$tmp/part.ply")"

@@ -38,7 +38,23 @@ TEST_CASE("split: smooth normals (one per vertex) add nothing; unreferenced vert
   const Mesh s = io::split_corner_normals(m, added);
   CHECK(added == 0);
   CHECK(s.num_vertices() == 4);
-  CHECK(s.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, -1, 1, 0, 0, 0, 0, 0});
+  // Vertex 3 is used by no face: the documented fallback (0, 0, 1), never (0, 0, 0) (issue 27 item 4).
+  CHECK(s.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, -1, 1, 0, 0, 0, 0, 1});
+}
+
+TEST_CASE("split: an unreferenced vertex keeps a valid vertex normal it had; an invalid one gets the fallback "
+          "(issue 27 item 4: no written normal is zero)", "[split]") {
+  Mesh m;
+  for (int i = 0; i < 5; ++i) m.add_vertex({double(i), double(i * i), 0});
+  m.add_face({0, 1, 2});
+  m.vertex_normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0.6, 0.8, 0, 0, 0, 0};  // 3: valid, 4: zero
+  m.corner_normals = {0, 0, 1, 0, 0, -1, 1, 0, 0};
+  m.corner_normal_index = {0, 1, 2};
+  std::size_t added = 0;
+  const Mesh s = io::split_corner_normals(m, added);
+  CHECK(added == 0);
+  CHECK(get3(s.vertex_normals, 3) == Vec3d{0.6, 0.8, 0});
+  CHECK(get3(s.vertex_normals, 4) == Vec3d{0, 0, 1});
 }
 
 TEST_CASE("split: a vertex with 50000 distinct normals gets one copy per normal; a normal index shared by other vertices stays theirs",

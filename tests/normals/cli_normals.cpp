@@ -212,3 +212,22 @@ TEST_CASE("cli normals: the man page documents every flag of --help", "[cli][man
     CHECK((man.find(escaped) != std::string::npos || man.find(f) != std::string::npos));
   }
 }
+
+TEST_CASE("normals --recompute --crease 30 gives a vertex no face uses the fallback, never 0 0 0, and its output is "
+          "accepted again (issue 27 item 4: the Stanford bun_zipper.ply case)", "[cli][normals]") {
+  TempDir tmp;
+  const std::string in = tmp / "unref.ply", out = tmp / "out.ply", again = tmp / "again.ply";
+  std::ofstream(in) << "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                       "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                       "0 0 0\n1 0 0\n0 1 0\n5 5 5\n0 0 1\n3 0 1 2\n3 0 4 1\n";
+  for (const std::string& mode : {std::string("--crease 30"), std::string(""), std::string("--crease 180")}) {
+    const Run r = run_shadetool("normals --recompute " + mode + " --ascii '" + in + "' -o '" + out + "'");
+    REQUIRE(r.code == 0);
+    const Mesh m = read_mesh(out);
+    REQUIRE(m.has_vertex_normals());
+    for (std::size_t v = 0; v < m.num_vertices(); ++v) CHECK(length(get3(m.vertex_normals, v)) > 0.5);
+    // Vertex 3 (5, 5, 5) is used by no face: the documented fallback (0, 0, 1).
+    CHECK(get3(m.vertex_normals, 3) == Vec3d{0, 0, 1});
+    CHECK(run_shadetool("normals '" + out + "' -o '" + again + "'").code == 0);  // its own output is not refused
+  }
+}

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 #include <filesystem>
 #include <fstream>
@@ -335,4 +336,66 @@ TEST_CASE("repair --remove-unreferenced: NaN in vertices no face uses (Open3D) h
   write_text(in_obj, "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
   CHECK(run("repair '" + in_obj + "' -o '" + out + "' --remove-unreferenced", err) == 1);
   CHECK(err.find("1 vertex has NaN or Inf coordinates (first: vertex 2)\n") != std::string::npos);
+}
+
+TEST_CASE("repair keeps a valley terrain its vn agree with, and says why in orientation.by (issue 27 items 1-2)",
+          "[repair][cli][authored]") {
+  // A bowl z = x^2 + y^2 on a 12 x 12 grid, wound to face up (into the bowl, as a valley is seen
+  // from above) with vn = the exact upward surface normal: the winding-number vote alone would
+  // turn it over (it wraps the region above it). Written by hand, read back by hand.
+  const int n = 12;
+  std::string obj;
+  auto id = [&](int i, int j) { return j * (n + 1) + i + 1; };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = -1 + 2.0 * i / n, y = -1 + 2.0 * j / n;
+      const double len = std::sqrt(4 * x * x + 4 * y * y + 1);
+      obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(x * x + y * y) + "\n";
+      obj += "vn " + std::to_string(-2 * x / len) + " " + std::to_string(-2 * y / len) + " " + std::to_string(1 / len) + "\n";
+    }
+  auto corner = [&](int k) { return std::to_string(k) + "//" + std::to_string(k); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      obj += "f " + corner(id(i, j)) + " " + corner(id(i + 1, j)) + " " + corner(id(i + 1, j + 1)) + "\n";
+      obj += "f " + corner(id(i, j)) + " " + corner(id(i + 1, j + 1)) + " " + corner(id(i, j + 1)) + "\n";
+    }
+  TempDir tmp;
+  write_text(tmp / "valley.obj", obj);
+  std::string err;
+  REQUIRE(run("repair '" + tmp / "valley.obj" + "' -o '" + tmp / "out.obj" + "' --report '" + tmp / "r.json" + "'", err) == 0);
+  const nlohmann::json r = nlohmann::json::parse(read_file(tmp / "r.json"));
+  CHECK(r["faces_flipped"] == 0);
+  const nlohmann::json& by = r["orientation"]["by"];
+  CHECK(by["winding_and_normals"]["components"] == 1);
+  CHECK(by["winding_and_normals"]["faces"] == 2 * n * n);
+  CHECK(by["winding_and_normals"]["faces_reversed"] == 0);
+  CHECK(by["surface_vote"]["components"] == 0);
+  CHECK(by["evidence"]["faces_agreeing_with_normals"] == 2 * n * n);
+  CHECK(by["evidence"]["faces_agreeing_reversed"] == 0);
+  CHECK(by["evidence"]["components_geometry_overruled"] == 1);  // the vote said: turn it over
+  CHECK(err.find("kept 1 component as authored") != std::string::npos);
+  // The faces as written are the input's (no face reversed): the same `f` lines.
+  std::istringstream in(obj), out(read_file(tmp / "out.obj"));
+  std::vector<std::string> fin, fout;
+  for (std::string line; std::getline(in, line);) if (line.rfind("f ", 0) == 0) fin.push_back(line);
+  for (std::string line; std::getline(out, line);) if (line.rfind("f ", 0) == 0) fout.push_back(line);
+  CHECK(fin == fout);
+  // Without the vn lines the vote decides and turns it over: the difference is the normals.
+  std::string bare;
+  std::istringstream again(obj);
+  for (std::string line; std::getline(again, line);) {
+    if (line.rfind("vn ", 0) == 0) continue;
+    if (line.rfind("f ", 0) == 0) {
+      std::string f = "f";
+      std::istringstream t(line.substr(2));
+      for (std::string c; t >> c;) f += " " + c.substr(0, c.find('/'));
+      line = f;
+    }
+    bare += line + "\n";
+  }
+  write_text(tmp / "bare.obj", bare);
+  REQUIRE(run("repair '" + tmp / "bare.obj" + "' -o '" + tmp / "bare_out.obj" + "' --report '" + tmp / "b.json" + "'", err) == 0);
+  const nlohmann::json b = nlohmann::json::parse(read_file(tmp / "b.json"));
+  CHECK(b["faces_flipped"] == 2 * n * n);
+  CHECK(b["orientation"]["by"]["surface_vote"]["inverted"] == 1);
 }

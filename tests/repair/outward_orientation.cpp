@@ -51,3 +51,85 @@ TEST_CASE("majority: the winding most input faces had wins, a tie keeps the seed
   o = outward_orientation(m, w2, component_boundaries(m, adj2, w2));
   CHECK(o.component_invert[0] == 0);
 }
+
+namespace {
+
+// Unit vertex normals along the position from `centre` (a sphere's outward normals), times `sign`.
+void radial_vertex_normals(Mesh& m, const Vec3d& centre, double sign) {
+  m.vertex_normals.clear();
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    const Vec3d n = normalized_or(m.position(v) - centre, Vec3d{0, 0, 1}) * sign;
+    m.vertex_normals.insert(m.vertex_normals.end(), {n.x, n.y, n.z});
+  }
+}
+
+OutwardOrientation orient(const Mesh& m, ConsistentWinding* out_winding = nullptr) {
+  const EdgeAdjacency adj = edge_adjacency(m);
+  const ConsistentWinding w = consistent_winding(m, adj);
+  if (out_winding) *out_winding = w;
+  return outward_orientation(m, w, component_boundaries(m, adj, w));
+}
+
+}  // namespace
+
+TEST_CASE("a bowl whose winding and normals both face in keeps them: the open-surface vote does not overrule "
+          "agreeing authored normals (issue 27 item 1)", "[repair][outward][authored]") {
+  // The inside of a hemisphere, as a valley terrain or a helmet's liner is authored: wound and
+  // normalled towards the centre. The winding-number vote alone reverses it (checked first).
+  Mesh bowl = hemisphere(24, 12);
+  invert_all(bowl);
+  OutwardOrientation o = orient(bowl);
+  REQUIRE(o.component_basis[0] == OrientationBasis::SurfaceVote);
+  REQUIRE(o.component_invert[0] == 1);
+  radial_vertex_normals(bowl, {0, 0, 0}, -1.0);  // into the bowl, as its faces
+  o = orient(bowl);
+  CHECK(o.component_basis[0] == OrientationBasis::WindingAndNormals);
+  CHECK(o.component_invert[0] == 0);
+  CHECK(o.geometry_overruled == 1);
+  CHECK(o.faces_agreeing == bowl.num_faces());
+  // Normals that contradict the winding are not a statement: the geometry decides again.
+  radial_vertex_normals(bowl, {0, 0, 0}, 1.0);
+  o = orient(bowl);
+  CHECK(o.component_basis[0] == OrientationBasis::SurfaceVote);
+  CHECK(o.component_invert[0] == 1);
+  CHECK(o.faces_disagreeing == bowl.num_faces());
+}
+
+TEST_CASE("a shell buried in another keeps its outward winding when its normals agree; nesting parity decides "
+          "only without them (issue 27 item 2)", "[repair][outward][authored]") {
+  Mesh outer = icosphere(2).mesh, inner = icosphere(1).mesh;
+  transform_positions(inner, 0.3, {0.2, 0, 0});  // a tooth inside the body, both wound outward
+  Mesh m = outer;
+  append(m, inner);
+  OutwardOrientation o = orient(m);
+  REQUIRE(o.component_basis[1] == OrientationBasis::NestedShell);  // no normals: parity turns it in
+  radial_vertex_normals(m, {0, 0, 0}, 1.0);
+  for (std::size_t v = outer.num_vertices(); v < m.num_vertices(); ++v) {  // the inner shell's own centre
+    const Vec3d n = normalized_or(m.position(v) - Vec3d{0.2, 0, 0}, Vec3d{0, 0, 1});
+    set3(m.vertex_normals, v, n);
+  }
+  o = orient(m);
+  CHECK(o.component_basis[0] == OrientationBasis::WindingAndNormals);
+  CHECK(o.component_basis[1] == OrientationBasis::WindingAndNormals);
+  CHECK(o.component_invert[0] == 0);
+  CHECK(o.component_invert[1] == 0);
+  CHECK(o.nested_shells == 0);
+  CHECK(o.geometry_overruled == 1);  // parity would have turned the inner one
+}
+
+TEST_CASE("a part whose winding is inconsistent follows the majority of its normals' evidence",
+          "[repair][outward][authored]") {
+  // Terrain wound +z, normals +z; 20 of its 32 faces reversed: the input majority says -z, the
+  // normals say +z for every face. The normals decide.
+  Mesh m = bumpy_terrain(4);
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) m.vertex_normals.insert(m.vertex_normals.end(), {0.0, 0.0, 1.0});
+  for (std::size_t f = 0; f < 20; ++f) swap_corners_1_2(m, f);
+  ConsistentWinding w;
+  const OutwardOrientation o = orient(m, &w);
+  CHECK(o.component_basis[0] == OrientationBasis::AuthoredNormals);
+  CHECK(o.faces_agreeing == 12);
+  CHECK(o.faces_disagreeing == 20);
+  // Seed (face 0) is reversed in the input: the final winding of face 0 must be flipped back.
+  CHECK((w.face_reverse[0] ^ o.component_invert[0]) == 1);
+  CHECK((w.face_reverse[31] ^ o.component_invert[0]) == 0);  // face 31 was right: kept
+}

@@ -360,16 +360,33 @@ TEST_CASE("stored normals: NaN, Inf, zero and flipped ones are recomputed, valid
   }
 }
 
-TEST_CASE("stored normals of a wholly inverted export are flipped with their faces", "[repair][normals]") {
-  // A mesh exported inside out with normals computed from its (wrong) winding: after repair the
-  // faces face out, so every stored normal points against its faces and is recomputed.
+TEST_CASE("an inside-out shell whose normals agree with its winding is kept as authored; one whose normals say "
+          "outward is turned (issue 27 item 1)", "[repair][normals][authored]") {
+  // Normals that agree with the winding are the author's statement of which side is out (a room, a
+  // sky box): the volume does not overrule them. Normals that contradict the winding are not a
+  // statement: the volume decides, and the normals then agree with the turned faces.
   AnalyticMesh am = icosphere(2);
-  Mesh m = am.mesh;
-  for (const Vec3d& n : am.exact_normals) { m.vertex_normals.push_back(-n.x); m.vertex_normals.push_back(-n.y); m.vertex_normals.push_back(-n.z); }
-  invert_all(m);
-  const RepairReport r = repair_twice(m);
-  CHECK(r.normals.flipped == m.num_vertices());
-  for (std::size_t v = 0; v < m.num_vertices(); ++v) CHECK(dot(get3(m.vertex_normals, v), am.exact_normals[v]) > 0.99);
+  for (double sign : {-1.0, 1.0}) {
+    Mesh m = am.mesh;
+    for (const Vec3d& n : am.exact_normals) { m.vertex_normals.push_back(sign * n.x); m.vertex_normals.push_back(sign * n.y); m.vertex_normals.push_back(sign * n.z); }
+    invert_all(m);
+    const std::vector<double> stored = m.vertex_normals;
+    const RepairReport r = repair_twice(m);
+    CHECK(r.normals.total() == 0);
+    CHECK(m.vertex_normals == stored);
+    CHECK(r.orientation_by.faces_agreeing_reversed == 0);
+    if (sign < 0) {
+      CHECK(r.faces_flipped == 0);
+      CHECK(r.oriented_by_agreement == 1);
+      CHECK(r.orientation_by.geometry_overruled == 1);
+      CHECK(r.orientation_by.faces_agreeing == m.num_faces());
+    } else {
+      CHECK(r.faces_flipped == m.num_faces());
+      CHECK(r.oriented_by_volume == 1);
+      CHECK(r.orientation_by.faces_disagreeing == m.num_faces());
+      CHECK(r.orientation_by.volume.faces_reversed == m.num_faces());
+    }
+  }
 }
 
 TEST_CASE("corner normals: a flat-shaded cube's broken shared normals are rebuilt from their faces", "[repair][normals]") {

@@ -169,7 +169,9 @@ TEST_CASE("A closed sheet of zero volume follows its authored normals", "[repair
     REQUIRE(top_facing(m) == (outward ? 1 : -1));
     const RepairReport r = repair_mesh(m);
     CHECK(r.closed_components == 1);
-    CHECK(r.oriented_by_normals == 1);
+    // Wound as its normals say: kept as authored; wound against them: the normals decide.
+    CHECK(r.oriented_by_agreement == (outward ? 1u : 0u));
+    CHECK(r.oriented_by_normals == (outward ? 0u : 1u));
     CHECK(top_facing(m) == 1);
   }
 }
@@ -181,11 +183,19 @@ TEST_CASE("A closed shell too thin for its volume's sign follows its authored no
   const RepairReport r = repair_mesh(m);
   CHECK(r.oriented_by_normals == 1);
   CHECK(top_facing(m) == 1);
-  // A thick pillow (t = 0.5) is decided by its volume, whatever its normals say.
-  Mesh thick = pillow(6, 0.5, false);
-  for (auto& x : thick.corner_normals) x = -x;  // normals authored inward: ignored, the volume decides
+  // A thick pillow (t = 0.5) wound outward with normals authored inward: the normals contradict
+  // the winding, so they are no statement; the volume decides (and keeps it).
+  Mesh thick = pillow(6, 0.5, true);
+  for (auto& x : thick.corner_normals) x = -x;
   const RepairReport rt = repair_mesh(thick);
   CHECK(rt.oriented_by_volume == 1);
   CHECK(rt.oriented_by_normals == 0);
   CHECK(top_facing(thick) == 1);
+  // Wound inward with normals inward too: winding and normals agree, kept as authored (issue 27).
+  Mesh in = pillow(6, 0.5, false);
+  for (auto& x : in.corner_normals) x = -x;
+  const RepairReport ri = repair_mesh(in);
+  CHECK(ri.oriented_by_agreement == 1);
+  CHECK(ri.faces_flipped == 0);
+  CHECK(top_facing(in) == -1);
 }

@@ -287,3 +287,18 @@ TEST_CASE("cmd transform: every flag in --help is documented in the man page", "
     CHECK(man.find(escaped) != std::string::npos);
   }
 }
+
+TEST_CASE("cmd transform: a zero input normal (assimp's spider.obj) is replaced by the computed one with a counted "
+          "note, not refused (issue 27 item 14)", "[cmd_transform]") {
+  TempDir dir;
+  spit(dir / "in.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nvn 0 0 0\nf 1//1 2//1 3//2\nf 2//1 4//1 3//1\n");
+  const Run r = run("transform --translate 1,0,0 '" + dir / "in.obj" + "' -o '" + dir / "out.obj" + "'");
+  CHECK(r.code == 0);
+  CHECK(r.err.find("1 input normal had no direction (zero, NaN or Inf): replaced by the computed one (1 corner)") != std::string::npos);
+  // Both written normals are the plane's +z (translation leaves them as they are); none is zero.
+  CHECK(lines_starting(slurp(dir / "out.obj"), "vn ") == std::vector<std::string>{"vn 0 0 1", "vn 0 0 1"});
+  // `normals` without --recompute keeps asking, as documented.
+  const Run keep = run("normals '" + dir / "in.obj" + "' -o '" + dir / "kept.obj" + "'");
+  CHECK(keep.code == 1);
+  CHECK(keep.err.find("use --recompute") != std::string::npos);
+}

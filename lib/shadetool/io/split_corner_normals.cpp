@@ -1,9 +1,12 @@
 // split_corner_normals.cpp
 #include <shadetool/io/split_corner_normals.h>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
+
+#include <shadetool/core/fallback_normal.h>
 
 namespace shadetool::io {
 
@@ -23,6 +26,14 @@ Mesh split_corner_normals(const Mesh& mesh, std::size_t& added) {
 
   out.vertex_normals.assign(3 * nv, 0.0);
   if (mesh.has_vertex_normals()) out.vertex_normals = mesh.vertex_normals;
+  // A vertex no corner uses gets no normal below: it keeps a valid one it had, else the fallback.
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (start[v] != start[v + 1]) continue;
+    double* n = &out.vertex_normals[3 * v];
+    const bool valid = std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]) && (n[0] != 0 || n[1] != 0 || n[2] != 0);
+    if (!valid)
+      for (int j = 0; j < 3; ++j) n[j] = kFallbackNormal[j];
+  }
   // For each normal index, the vertex that last used it (owner) and the output vertex made for
   // that use (copy_of): a lookup is O(1), so a vertex shared by k corners with k distinct normals
   // costs O(k), not O(k^2) (a hostile OBJ can give one vertex millions of distinct normals).

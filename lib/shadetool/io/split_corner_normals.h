@@ -6,7 +6,8 @@
 //          used by a corner, one vertex; `added` = V' - V.
 // The first pair met for vertex v keeps index v (so order and unreferenced vertices are kept);
 // further pairs become new vertices appended after the originals, copying position and colour.
-// Unreferenced vertices keep their vertex normal if the mesh had them, else (0,0,0).
+// Unreferenced vertices keep their vertex normal if the mesh had a valid one, else get
+// kFallbackNormal (core/fallback_normal.h): no written normal is ever zero.
 // Corner normals and their index are removed from the result; faces keep their order and size.
 // Flat arrays: corners bucketed by vertex (count, then fill), then one pass over the buckets with
 // an O(1) lookup per corner (the last vertex that used each normal index): O(V + C + N).

@@ -4,6 +4,7 @@
 #include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/invalid_normals.h>
+#include <shadetool/normals/two_sided_faces.h>
 #include <shadetool/normals/vertex_fallback.h>
 #include <shadetool/normals/vertex_normals.h>
 
@@ -32,6 +33,40 @@ std::size_t count_degenerate(const std::vector<double>& face_normals) {
   for (std::size_t f = 0; f < rows(face_normals); ++f)
     if (face_normals[3 * f] == 0.0 && face_normals[3 * f + 1] == 0.0 && face_normals[3 * f + 2] == 0.0) ++n;
   return n;
+}
+
+// Corner normals computed on front_faces(mesh, two) become the whole mesh's: a front face's corners
+// keep theirs; a back face's corner gets the reverse of its front's corner at the same vertex (one
+// reversed pool entry per front entry, appended): each side shades as itself.
+void split_back_corners(const Mesh& mesh, const TwoSidedFaces& two, CornerNormals& cn) {
+  const std::size_t F = mesh.num_faces();
+  std::vector<std::uint32_t> front_start(F, 0);  // first corner of each front face in the front mesh
+  std::uint32_t next = 0;
+  for (std::size_t f = 0; f < F; ++f)
+    if (two.front_of[f] == TwoSidedFaces::kNotBack) {
+      front_start[f] = next;
+      next += std::uint32_t(mesh.face_size(f));
+    }
+  std::vector<std::uint32_t> index(mesh.num_corners());
+  std::vector<std::uint32_t> reversed(rows(cn.normals), TwoSidedFaces::kNotBack);
+  for (std::size_t f = 0; f < F; ++f) {
+    const std::uint32_t t = two.front_of[f];
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      if (t == TwoSidedFaces::kNotBack) {
+        index[c] = cn.corner_index[front_start[f] + (c - mesh.face_start[f])];
+        continue;
+      }
+      std::uint32_t k = 0;  // the front's corner at this vertex (it has the same vertices)
+      while (mesh.corner_vertex[mesh.face_start[t] + k] != mesh.corner_vertex[c]) ++k;
+      const std::uint32_t i = cn.corner_index[front_start[t] + k];
+      if (reversed[i] == TwoSidedFaces::kNotBack) {
+        reversed[i] = std::uint32_t(rows(cn.normals));
+        for (int j = 0; j < 3; ++j) cn.normals.push_back(-cn.normals[3 * std::size_t(i) + j]);
+      }
+      index[c] = reversed[i];
+    }
+  }
+  cn.corner_index = std::move(index);
 }
 
 }  // namespace
@@ -68,7 +103,11 @@ NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
 
   switch (request.kind) {
     case NormalKind::Vertex: {
-      VertexNormals vn = vertex_normals(mesh, request.weighting, request.precision);
+      // A two-sided surface: the vertex normal from the front side only (the earlier face).
+      const TwoSidedFaces two = two_sided_faces(mesh);
+      report.two_sided_faces = two.backs;
+      VertexNormals vn = two.backs > 0 ? vertex_normals(front_faces(mesh, two), request.weighting, request.precision)
+                                       : vertex_normals(mesh, request.weighting, request.precision);
       mesh.vertex_normals = std::move(vn.normals);
       mesh.corner_normals.clear();
       mesh.corner_normal_index.clear();
@@ -78,7 +117,11 @@ NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
       break;
     }
     case NormalKind::Corner: {
-      CornerNormals cn = corner_normals(mesh, request.crease_angle, request.weighting, request.precision);
+      const TwoSidedFaces two = two_sided_faces(mesh);
+      report.two_sided_faces = two.backs;
+      CornerNormals cn = two.backs > 0 ? corner_normals(front_faces(mesh, two), request.crease_angle, request.weighting, request.precision)
+                                       : corner_normals(mesh, request.crease_angle, request.weighting, request.precision);
+      if (two.backs > 0) split_back_corners(mesh, two, cn);
       mesh.corner_normals = std::move(cn.normals);
       mesh.corner_normal_index = std::move(cn.corner_index);
       mesh.vertex_normals.clear();

@@ -20,6 +20,12 @@
 //     (counted in report.fallback), and any shading normals are removed (report.dropped)
 //     because OBJ can carry only one kind and `--faces` asks for face normals.
 //   - With `recompute`, every normal in the input (all kinds) is discarded first.
+//   - A two-sided surface (two_sided_faces.h: a face and its reverse on the same vertices) would
+//     sum to noise: Vertex normals are computed from the front faces only (the earlier face of
+//     each pair), so both sides' corners share the front's normal; Corner normals are computed
+//     from the front faces and each back face's corner gets its front's corner normal reversed
+//     (each side shades as itself; PLY/OFF writers split those vertices). report.two_sided_faces
+//     counts the back faces.
 //   - Normals of the other kind that are not in the way (face normals when shading normals are
 //     computed) are passed through unchanged.
 #pragma once
@@ -53,6 +59,7 @@ struct NormalsReport {
   std::size_t degenerate_faces = 0;   // faces with no normal (zero area, repeated index, NaN)
   std::size_t dropped = 0;            // shading normals removed for kind Face
   std::size_t discarded = 0;          // normals discarded by `recompute` (rows, all kinds)
+  std::size_t two_sided_faces = 0;    // back faces of a two-sided surface (two_sided_faces.h)
 };
 
 NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request);

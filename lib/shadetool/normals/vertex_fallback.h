@@ -14,13 +14,12 @@
 #include <cstdint>
 #include <vector>
 
+#include <shadetool/core/fallback_normal.h>
 #include <shadetool/core/mesh_view.h>
 #include <shadetool/normals/weighting.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
-
-constexpr double kFallbackNormal[3] = {0.0, 0.0, 1.0};
 
 void apply_vertex_fallback(const MeshView& mesh, const std::vector<std::uint32_t>& vertices, Precision precision,
                            std::vector<double>& normals);

@@ -32,15 +32,26 @@ bool has_authored_normals(const Mesh& mesh) {
   return mesh.has_corner_normals() || mesh.has_vertex_normals() || mesh.has_face_normals();
 }
 
+double authored_face_evidence(const Mesh& mesh, std::size_t f) {
+  if (!has_authored_normals(mesh)) return 0;
+  Vec3d m{0, 0, 0};
+  for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) m += input_normal(mesh, f, c);
+  return dot(face_area_vector(mesh, f), m);
+}
+
+bool winding_agrees(const AuthoredNormalsVote& vote, bool input_consistent) {
+  return input_consistent && vote.decided && !vote.invert && vote.agreeing > 0;
+}
+
 AuthoredNormalsVote authored_normals_vote(const Mesh& mesh, const ConsistentWinding& winding,
                                           const std::vector<std::uint32_t>& faces) {
   AuthoredNormalsVote v;
   if (!has_authored_normals(mesh)) return v;
   for (std::uint32_t f : faces) {
-    Vec3d m{0, 0, 0};
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) m += input_normal(mesh, f, c);
-    double e = dot(face_area_vector(mesh, f), m);
+    double e = authored_face_evidence(mesh, f);
     if (!std::isfinite(e)) continue;
+    if (e > 0) { ++v.agreeing; v.agreeing_weight += e; }
+    if (e < 0) { ++v.disagreeing; v.disagreeing_weight -= e; }
     if (winding.face_reverse[f]) e = -e;
     v.vote += e;
     v.magnitude += std::abs(e);

@@ -16,11 +16,21 @@
 //   magnitude  sum of |N_f . m_f|
 //   decided    magnitude > 0 and |vote| >= magnitude / 3 (faces agreeing outweigh the others 2:1)
 //   invert     decided and vote < 0
+//   agreeing, disagreeing   faces whose input winding agrees (e_f > 0) or disagrees (e_f < 0) with
+//              their input normals, e_f = authored_face_evidence(mesh, f) (the input winding, not
+//              the consistent one); faces with e_f = 0 or not finite (no valid normal, zero area)
+//              are neither
+//   agreeing_weight, disagreeing_weight  the sums of |e_f| over those faces
+// winding_agrees(vote, consistent): the input's winding and its normals make the same statement:
+// the component's input winding is already consistent (no face reversed by step 1) and decided
+// with invert = false (agreeing faces outweigh the others 2:1). Repair keeps such a component as
+// it is, before any geometric evidence is asked (repair_mesh.h: what repair trusts, in order).
 // thin_closed_component: |V| <= 1e-3 * A * L (V the signed volume, A the area, L the bounding box
 // diagonal): a shell thinner than about 0.3% of its size (a sphere has |V| / (A L) = 0.096), whose
 // volume sign says less than its authored normals. Precision: double.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -33,7 +43,16 @@ namespace shadetool {
 struct AuthoredNormalsVote {
   double vote = 0, magnitude = 0;
   bool decided = false, invert = false;
+  std::size_t agreeing = 0, disagreeing = 0;
+  double agreeing_weight = 0, disagreeing_weight = 0;
 };
+
+// e_f = N_f . m_f for face f as the input winds it (N_f its area vector, m_f the sum of its
+// corners' unit input normals): > 0 the winding agrees with the authored normals, < 0 it
+// disagrees, 0 (or not finite) no evidence. 0 when the mesh has no normals.
+double authored_face_evidence(const Mesh& mesh, std::size_t f);
+
+bool winding_agrees(const AuthoredNormalsVote& vote, bool input_consistent);
 
 // Whether the mesh carries normals a vote can use.
 bool has_authored_normals(const Mesh& mesh);

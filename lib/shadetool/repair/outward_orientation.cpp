@@ -1,4 +1,4 @@
-// outward_orientation.cpp: volume, containment parity, vote, majority (see the header).
+// outward_orientation.cpp: agreeing normals, volume, containment parity, vote, normals, majority (see the header).
 #include <shadetool/repair/outward_orientation.h>
 
 #include <shadetool/repair/authored_normals_vote.h>
@@ -27,7 +27,10 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
     if (!grouped) { groups = faces_by_component(winding); grouped = true; }
     return groups;
   };
+  // Closed shells with a volume sign take part in the nesting test as containers (evaluated
+  // outward-facing, by `volume_invert`); only those oriented by Volume are reversed by parity.
   std::vector<std::uint32_t> shells;
+  std::vector<std::uint8_t> volume_invert(K, 0);
   std::vector<std::uint32_t> faces;
   const bool normals = has_authored_normals(mesh);
   auto component_faces = [&](std::size_t k) -> const std::vector<std::uint32_t>& {
@@ -35,58 +38,86 @@ OutwardOrientation outward_orientation(const Mesh& mesh, const ConsistentWinding
     faces.assign(g.faces.begin() + g.start[k], g.faces.begin() + g.start[k + 1]);
     return faces;
   };
-  // The input's normals decide where the geometry does not (see the header); `faces` holds k's.
-  auto by_normals = [&](std::size_t k) {
-    const AuthoredNormalsVote vote = authored_normals_vote(mesh, winding, faces);
-    if (!vote.decided) return false;
-    out.component_invert[k] = vote.invert;
-    out.component_basis[k] = OrientationBasis::AuthoredNormals;
-    ++out.normals_components;
-    return true;
+  auto decide = [&](std::size_t k, OrientationBasis basis, bool invert) {
+    out.component_invert[k] = invert;
+    out.component_basis[k] = basis;
   };
   for (std::size_t k = 0; k < K; ++k) {
     if (winding.component_non_orientable[k]) continue;
-    if (boundaries.component_closed[k]) {
-      const bool has_sign = volume_has_sign(volumes.volume[k], volumes.magnitude[k]);
-      if (normals && (!has_sign || thin_closed_component(mesh, component_faces(k), volumes.volume[k]))) {
-        component_faces(k);
-        if (by_normals(k)) continue;
-      }
-      if (!has_sign) continue;
-      out.component_invert[k] = volumes.volume[k] < 0;
-      out.component_basis[k] = OrientationBasis::Volume;
+    const bool closed = boundaries.component_closed[k];
+    AuthoredNormalsVote authored;
+    if (normals) {
+      authored = authored_normals_vote(mesh, winding, component_faces(k));
+      out.faces_agreeing += authored.agreeing;
+      out.faces_disagreeing += authored.disagreeing;
+    }
+    const bool input_consistent = winding.component_reverse_count[k] == 0;
+    // A closed shell with a volume sign is a container for the nesting test, however it is decided.
+    const bool has_sign = closed && volume_has_sign(volumes.volume[k], volumes.magnitude[k]);
+    if (has_sign) {
+      volume_invert[k] = volumes.volume[k] < 0;
       shells.push_back(std::uint32_t(k));
-    } else {
-      if (winding.component_faces[k] < 2) {  // one face wraps nothing: no geometric evidence
-        if (normals) {
-          component_faces(k);
-          by_normals(k);
-        }
-        continue;
-      }
+    }
+    // 1. The input's winding and its normals agree: kept, whatever the geometry would say.
+    // 2. The part's winding is inconsistent: the majority of its agreeing evidence decides.
+    const bool agrees = normals && winding_agrees(authored, input_consistent);
+    if (normals && !agrees && !input_consistent && authored.decided) {
+      decide(k, OrientationBasis::AuthoredNormals, authored.invert);
+      continue;
+    }
+    // 3. Geometry (asked for kept components too, to report what it would have done).
+    bool geometry_decided = false, geometry_invert = false, thin_volume = false;
+    if (closed) {
+      const bool thin = has_sign && normals && thin_closed_component(mesh, component_faces(k), volumes.volume[k]);
+      if (has_sign && !thin) { geometry_decided = true; geometry_invert = volume_invert[k]; }
+      thin_volume = thin;
+    } else if (winding.component_faces[k] >= 2) {  // one face wraps nothing: no geometric evidence
       const OpenSurfaceVote vote = open_surface_vote(mesh, winding, component_faces(k));
-      if (!vote.decided) {
-        if (normals) by_normals(k);
-        continue;
-      }
-      out.component_invert[k] = vote.invert;
-      out.component_basis[k] = OrientationBasis::SurfaceVote;
+      if (vote.decided) { geometry_decided = true; geometry_invert = vote.invert; }
+    }
+    if (agrees) {
+      decide(k, OrientationBasis::WindingAndNormals, false);
+      if (geometry_decided && geometry_invert) ++out.geometry_overruled;
+    } else if (geometry_decided) {
+      decide(k, closed ? OrientationBasis::Volume : OrientationBasis::SurfaceVote, geometry_invert);
+    } else if (normals && authored.decided) {  // 4. the normals alone, where geometry has nothing
+      decide(k, OrientationBasis::AuthoredNormals, authored.invert);
+    } else if (thin_volume) {  // a thin shell whose normals are undecided: its volume's sign, for want of better
+      decide(k, OrientationBasis::Volume, volume_invert[k]);
     }
   }
 
   const std::vector<std::uint32_t> depth =
-      shells.size() < 2 ? std::vector<std::uint32_t>(K, 0) : shell_nesting_depth(mesh, winding, group(), shells, out.component_invert);
-  for (std::uint32_t k : shells)
-    if (depth[k] % 2 == 1) {
-      out.component_invert[k] ^= 1;
-      out.component_basis[k] = OrientationBasis::NestedShell;
-      ++out.nested_shells;
+      shells.size() < 2 ? std::vector<std::uint32_t>(K, 0) : shell_nesting_depth(mesh, winding, group(), shells, volume_invert);
+  for (std::uint32_t k : shells) {
+    if (depth[k] % 2 == 0) continue;
+    // Containment parity is a guess for inputs without evidence: it never turns a shell whose
+    // winding its normals confirm (Grey_Nurse_Shark.stl's teeth, buried in the body).
+    switch (out.component_basis[k]) {
+      case OrientationBasis::Volume:
+        out.component_invert[k] ^= 1;
+        out.component_basis[k] = OrientationBasis::NestedShell;
+        break;
+      case OrientationBasis::WindingAndNormals:
+        if (!volume_invert[k]) ++out.geometry_overruled;  // parity alone would have reversed it
+        break;
+      case OrientationBasis::AuthoredNormals: case OrientationBasis::NestedShell: case OrientationBasis::SurfaceVote:
+      case OrientationBasis::Majority:
+        break;
     }
+  }
 
   for (std::size_t k = 0; k < K; ++k) {
-    if (out.component_basis[k] != OrientationBasis::Majority) continue;
-    ++out.majority_components;
-    out.component_invert[k] = 2 * std::size_t(winding.component_reverse_count[k]) > winding.component_faces[k];
+    switch (out.component_basis[k]) {
+      case OrientationBasis::Majority:
+        ++out.majority_components;
+        out.component_invert[k] = 2 * std::size_t(winding.component_reverse_count[k]) > winding.component_faces[k];
+        break;
+      case OrientationBasis::WindingAndNormals: ++out.agreeing_components; break;
+      case OrientationBasis::AuthoredNormals: ++out.normals_components; break;
+      case OrientationBasis::NestedShell: ++out.nested_shells; break;
+      case OrientationBasis::Volume: case OrientationBasis::SurfaceVote: break;
+    }
   }
   return out;
 }

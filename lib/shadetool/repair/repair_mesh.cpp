@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <shadetool/repair/authored_normals_vote.h>
 #include <shadetool/repair/component_boundaries.h>
 #include <shadetool/repair/consistent_winding.h>
 #include <shadetool/repair/degenerate_faces.h>
@@ -85,6 +86,22 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   report.nested_shells = outward.nested_shells;
   report.oriented_by_majority = outward.majority_components;
   report.oriented_by_normals = outward.normals_components;
+  report.oriented_by_agreement = outward.agreeing_components;
+  OrientationBy& by = report.orientation_by;
+  by.faces_agreeing = outward.faces_agreeing;
+  by.faces_disagreeing = outward.faces_disagreeing;
+  by.geometry_overruled = outward.geometry_overruled;
+  auto tally = [&](OrientationBasis basis) -> OrientationTally& {
+    switch (basis) {
+      case OrientationBasis::WindingAndNormals: return by.winding_and_normals;
+      case OrientationBasis::AuthoredNormals: return by.normals;
+      case OrientationBasis::Volume: return by.volume;
+      case OrientationBasis::NestedShell: return by.nested_shell;
+      case OrientationBasis::SurfaceVote: return by.surface_vote;
+      case OrientationBasis::Majority: return by.majority;
+    }
+    return by.majority;  // not reached: every basis is listed above
+  };
   for (std::size_t k = 0; k < winding.num_components; ++k) {
     const std::size_t reversed = winding.component_reverse_count[k], total = winding.component_faces[k];
     // Faces the component's majority disagreed with: the consistency step's share.
@@ -92,10 +109,15 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     // Inverted as a whole: the final winding reverses most of the component's input faces.
     const std::size_t changed = outward.component_invert[k] ? total - reversed : reversed;
     if (2 * changed > total) ++report.components_inverted;
+    OrientationTally& t = tally(outward.component_basis[k]);
+    ++t.components;
+    t.inverted += 2 * changed > total;
+    t.faces += total;
+    t.faces_reversed += changed;
     switch (outward.component_basis[k]) {
       case OrientationBasis::Volume: case OrientationBasis::NestedShell: ++report.oriented_by_volume; break;
       case OrientationBasis::SurfaceVote: ++report.oriented_by_vote; break;
-      case OrientationBasis::AuthoredNormals: case OrientationBasis::Majority: break;
+      case OrientationBasis::WindingAndNormals: case OrientationBasis::AuthoredNormals: case OrientationBasis::Majority: break;
     }
   }
   // The final reversal of each face, in place of the winding's (relative to each seed; 0 for
@@ -110,6 +132,10 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   if (duplicates.count > 0)
     for (std::size_t f = 0; f < F; ++f)
       if (duplicates.original[f] != DuplicateFaces::kNone) reverse[f] = reverse[duplicates.original[f]];
+  // Item 3 of the rule (repair_mesh.h): agreeing faces reversed, counted on the input winding.
+  if (has_authored_normals(*decide))
+    for (std::size_t f = 0; f < F; ++f)
+      if (reverse[f] && authored_face_evidence(*decide, f) > 0) ++by.faces_agreeing_reversed;
   report.faces_flipped = reverse_faces(mesh, reverse);
 
   // Step 4: degenerate faces removed on request, before the normals are computed, so that a

@@ -10,9 +10,19 @@
 //      with a repeated index or < 3 corners are left out and left alone), on the half-edge
 //      pairing of core/edge_adjacency.h. Duplicate faces (duplicate_faces.h) are set aside
 //      and later reversed together with their original.
-//   2. Outward orientation (outward_orientation.h): signed volume for closed components, nesting
-//      parity for shells inside shells, the winding-number vote for open ones, the input's
-//      majority where there is no evidence. Steps 1 and 2 reverse each face at most once, with
+//   2. Outward orientation (outward_orientation.h), each component by the first evidence that
+//      decides, in this order (what repair trusts):
+//        a. the input's winding, where it is consistent and its authored normals (OBJ vn, PLY and
+//           glTF normals, STL facet normals) agree with it: kept, never overruled by geometry;
+//        b. in a part whose winding is inconsistent, the majority (2:1) of its normals' evidence;
+//        c. the signed volume of a closed shell, then nesting parity (only for shells the volume
+//           decided);
+//        d. the winding-number vote of an open surface;
+//        e. the normals alone where geometry has no evidence (a thin or flat closed sheet);
+//        f. the input's majority.
+//      A face whose winding agreed with its normals is reversed only in case b, or in a part whose
+//      normals disagree among themselves (agreeing faces not 2:1): counted in
+//      RepairReport::orientation_by.faces_agreeing_reversed. Steps 1 and 2 reverse each face at most once, with
 //      reverse_faces.h (first corner kept, so a face flipped by swapping two corners is restored
 //      exactly), carrying corner normal and texcoord indices.
 //   3. Normals (fix_normals.h), on the final faces.

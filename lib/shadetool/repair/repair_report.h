@@ -14,6 +14,24 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
+// One orientation basis's decisions (outward_orientation.h): components it decided, of those the
+// ones reversed as a whole, their faces, and of those the faces whose winding changed (steps 1 + 2).
+struct OrientationTally {
+  std::size_t components = 0, inverted = 0, faces = 0, faces_reversed = 0;
+};
+
+// Each basis in the order repair trusts it, with the evidence from the input's normals.
+struct OrientationBy {
+  OrientationTally winding_and_normals, normals, volume, nested_shell, surface_vote, majority;
+  std::size_t faces_agreeing = 0;           // input winding agrees with its authored normals
+  std::size_t faces_disagreeing = 0;        // ... disagrees
+  std::size_t faces_agreeing_reversed = 0;  // agreeing faces whose winding changed: only in parts
+                                            // whose winding was inconsistent (their majority decided)
+                                            // or whose normals disagree among themselves
+  std::size_t geometry_overruled = 0;       // components kept by winding and normals that volume,
+                                            // nesting parity or the open-surface vote would have reversed
+};
+
 struct RepairReport {
   // Step 0: --weld EPS (off unless weld_eps >= 0).
   std::size_t vertices_welded = 0;
@@ -39,6 +57,8 @@ struct RepairReport {
   std::size_t oriented_by_vote = 0;            // open: winding-number vote decisive
   std::size_t oriented_by_normals = 0;         // the input's normals decided (authored_normals_vote.h)
   std::size_t oriented_by_majority = 0;        // no evidence at all: input majority kept
+  std::size_t oriented_by_agreement = 0;       // winding and normals agreed: kept as authored
+  OrientationBy orientation_by;                // every decision with its evidence
   std::size_t faces_flipped = 0;               // total faces whose winding changed (steps 1 + 2)
 
   // Step 3: normals.

@@ -4,6 +4,30 @@
 
 namespace shadetool {
 
+namespace {
+
+nlohmann::json tally_json(const OrientationTally& t) {
+  return {{"components", t.components}, {"inverted", t.inverted}, {"faces", t.faces}, {"faces_reversed", t.faces_reversed}};
+}
+
+// Each basis in the order repair trusts it (outward_orientation.h), then the normals' evidence.
+nlohmann::json orientation_by_json(const OrientationBy& by) {
+  nlohmann::json j = nlohmann::json::object();
+  j["winding_and_normals"] = tally_json(by.winding_and_normals);
+  j["normals"] = tally_json(by.normals);
+  j["volume"] = tally_json(by.volume);
+  j["nested_shell"] = tally_json(by.nested_shell);
+  j["surface_vote"] = tally_json(by.surface_vote);
+  j["majority"] = tally_json(by.majority);
+  j["evidence"] = {{"faces_agreeing_with_normals", by.faces_agreeing},
+                   {"faces_disagreeing_with_normals", by.faces_disagreeing},
+                   {"faces_agreeing_reversed", by.faces_agreeing_reversed},
+                   {"components_geometry_overruled", by.geometry_overruled}};
+  return j;
+}
+
+}  // namespace
+
 std::string repair_report_json(const RepairReport& r, double weld_eps, const std::string& weighting) {
   nlohmann::json j;
   j["faces_in"] = r.faces_in;
@@ -19,6 +43,8 @@ std::string repair_report_json(const RepairReport& r, double weld_eps, const std
                       {"by_vote", r.oriented_by_vote},
                       {"by_normals", r.oriented_by_normals},
                       {"by_majority", r.oriented_by_majority},
+                      {"by_agreement", r.oriented_by_agreement},
+                      {"by", orientation_by_json(r.orientation_by)},
                       {"open_component_method", "generalized winding number"}};
   j["non_manifold_edges"] = r.non_manifold_edges;
   j["duplicate_faces"] = r.duplicate_faces;
