@@ -319,16 +319,27 @@ bool input_is_gltf(const IoOptions& io, const std::string& input) {
   return f && f->format == Format::Gltf;
 }
 
-std::unique_ptr<shadetool::GltfDocument> read_gltf_input(const IoOptions&, const std::string& input) {
+// A document without a triangle primitive (only POINTS/LINES, or no mesh at all) has nothing for
+// a step to do: written unchanged with a note when the output is glTF, refused otherwise.
+std::unique_ptr<shadetool::GltfDocument> read_gltf_input(const IoOptions& io, const std::string& input, OutputKind kind,
+                                                         const std::string& output, FileResult& result) {
+  std::unique_ptr<shadetool::GltfDocument> doc;
   if (input == "-") {
     const std::string bytes = read_stdin();
     if (bytes.empty()) shadetool::fail("stdin", 0, "file is empty");
-    return std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes, "stdin"));
+    doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes, "stdin"));
+  } else {
+    const shadetool::io::FileBytes bytes = shadetool::io::read_file_bytes(input);
+    doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes.view(), input));
   }
-  const shadetool::io::FileBytes bytes = shadetool::io::read_file_bytes(input);
-  auto doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes.view(), input));
-  if (doc->primitives.empty())
-    shadetool::fail(input, 0, "no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to read as a mesh");
+  if (doc->primitives.empty()) {
+    const bool gltf_out = kind == OutputKind::Mesh &&
+                          shadetool::output_format(output, io.format.empty() ? Format::Auto
+                                                                             : shadetool::parse_format_name(io.format, "--format")) == Format::Gltf;
+    if (!gltf_out)
+      shadetool::fail(input, 0, "no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to read as a mesh");
+    result.notes.push_back("no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to compute, the document written unchanged");
+  }
   return doc;
 }
 
@@ -453,7 +464,7 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
       shadetool::ReadInfo read_info;
       shadetool::Mesh mesh;
       std::unique_ptr<shadetool::GltfDocument> document;
-      if (kind != OutputKind::Image && input_is_gltf(io, input)) document = read_gltf_input(io, input);
+      if (kind != OutputKind::Image && input_is_gltf(io, input)) document = read_gltf_input(io, input, kind, output, result);
       else mesh = read_input(io, input, read_info);
       const double read_ms = ms_since(t0);
       for (auto& n : read_info.notes) result.notes.push_back(n);

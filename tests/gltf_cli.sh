@@ -171,6 +171,56 @@ for case in "missing_bin:buffers[0].uri" "index_out_of_range:meshes[3].primitive
   check "bad $name: no output" test ! -e "$tmp/bad.glb"
 done
 
+# Nothing for a step to do (issue 27, 15): only POINTS/LINES primitives, or a scene without nodes:
+# written unchanged with a note, exit 0 (a batch over a folder goes on); to a format that needs a
+# mesh, still refused.
+for f in points_lines no_nodes; do
+  rm -f "$tmp/nothing.glb"
+  "$bin" normals "$fx/$f.gltf" -o "$tmp/nothing.glb" 2> "$tmp/err.txt"
+  check "$f: normals exit 0" test $? -eq 0
+  check "$f: a note says nothing was computed" grep -q "nothing to compute, the document written unchanged" "$tmp/err.txt"
+  check "$f: kept" gcheck keep "$fx/$f.gltf" "$tmp/nothing.glb"
+  check "$f: valid" valid "$tmp/nothing.glb"
+  "$bin" normals "$fx/$f.gltf" -o "$tmp/nothing.ply" 2> /dev/null
+  check "$f: to PLY refused (exit 1), nothing written" test $? -eq 1 -a ! -e "$tmp/nothing.ply"
+done
+
+# Exact bounds (issue 27, 16): a split that drops an unused vertex, and an input whose NORMAL
+# min/max do not hold; every output's accessors have exact min/max (the validator computes them).
+for args in "--faces" "--recompute --crease 30" ""; do
+  rm -f "$tmp/bounds.glb"
+  "$bin" normals "$fx/bounds.gltf" -o "$tmp/bounds.glb" $args -q
+  check "bounds normals $args: exit 0" test $? -eq 0
+  check "bounds normals $args: valid (no ACCESSOR_MIN/MAX_MISMATCH)" valid "$tmp/bounds.glb"
+  check "bounds normals $args: TEXCOORD_0 max is (0.5, 0.5), the unused vertex's (1, 1) gone" "$py" -c '
+import json,struct,sys
+d=open(sys.argv[1],"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n])
+p=j["meshes"][0]["primitives"][0]; a=j["accessors"][p["attributes"]["TEXCOORD_0"]]
+assert a["max"]==[0.5,0.5] or sys.argv[2]=="", a' "$tmp/bounds.glb" "$args"
+done
+
+# Replaced accessors leave nothing behind (issue 28, 6): repeated normals --recompute keeps the
+# accessor and bufferView counts and the size; the validator finds no more unused objects than in
+# the input (one: a TEXCOORD_0 that no material uses).
+"$bin" normals "$fx/rich.glb" -o "$tmp/p1.glb" --recompute --crease 30 -q
+"$bin" normals "$tmp/p1.glb" -o "$tmp/p2.glb" --recompute -q
+"$bin" normals "$tmp/p2.glb" -o "$tmp/p3.glb" --recompute --crease 30 -q
+"$bin" transform "$tmp/p3.glb" -o "$tmp/p4.glb" --scale 2 -q
+valid "$fx/rich.glb"; unused_in=$(grep -c UNUSED_OBJECT "$tmp/validator.txt")
+for f in p1 p2 p3 p4; do
+  check "prune $f: valid" valid "$tmp/$f.glb"
+  if [ -n "$validate" ]; then
+    check "prune $f: no more UNUSED_OBJECT than the input ($unused_in)" test "$(grep -c UNUSED_OBJECT "$tmp/validator.txt")" -eq "$unused_in"
+  fi
+  check "prune $f: kept" gcheck keep "$fx/rich.glb" "$tmp/$f.glb" --changed NORMAL,POSITION,TANGENT
+done
+check "prune: p1 and p3 have the same counts and size" "$py" -c '
+import json,struct,sys
+def head(f):
+  d=open(f,"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n])
+  return len(j["accessors"]),len(j["bufferViews"]),j["buffers"][0]["byteLength"]
+a,b=head(sys.argv[1]),head(sys.argv[2]); assert a==b, (a,b)' "$tmp/p1.glb" "$tmp/p3.glb"
+
 # A second writer: assimp (assimp-utils) exports OBJ -> glb/gltf; we read, compute, validate.
 if command -v assimp > /dev/null; then
   assimp export "$src/data/torus.obj" "$tmp/torus_assimp.glb" > /dev/null 2>&1

@@ -215,6 +215,37 @@ def write_glb(path, doc, binary_data, png):
         f.write(out)
 
 
+def small_fixtures(out):
+    """Files with nothing for a step to do, and bounds a writer must keep exact (issue 27, 15-16)."""
+    def embedded(b, doc, name):
+        doc["buffers"] = [{"uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(b.bin)).decode(),
+                           "byteLength": len(b.bin)}]
+        doc["bufferViews"], doc["accessors"] = b.views, b.accessors
+        with open(os.path.join(out, name), "w") as f:
+            json.dump(doc, f)
+    # Only POINTS and LINES primitives.
+    b = Builder()
+    p = b.floats([(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0)], "VEC3", minmax=True)
+    embedded(b, {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+                 "meshes": [{"primitives": [{"attributes": {"POSITION": p}, "mode": 0},
+                                            {"attributes": {"POSITION": p}, "mode": 1}]}]}, "points_lines.gltf")
+    # A scene without nodes (and no mesh).
+    with open(os.path.join(out, "no_nodes.gltf"), "w") as f:
+        json.dump({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"name": "empty"}]}, f)
+    # Two triangles and a vertex no face uses, whose TEXCOORD_0 (1, 1) is the only one at the
+    # maximum: min/max as the input states them are exact for the input, not for an output that
+    # drops that vertex. NORMAL with a min/max that does not hold.
+    b = Builder()
+    p = b.floats([(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0), (5, 5, 5)], "VEC3", minmax=True)
+    t = b.floats([(0, 0), (0.5, 0), (0, 0.5), (0.5, 0.5), (1, 1)], "VEC2", minmax=True)
+    n = b.floats([(0, 0, 1)] * 5, "VEC3")
+    b.accessors[n]["min"], b.accessors[n]["max"] = [0, 0, 0.5], [0, 0, 1.5]
+    i = b.accessor(b.view(struct.pack("<6H", 0, 1, 2, 2, 1, 3), target=34963), 5123, 6, "SCALAR")
+    embedded(b, {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+                 "meshes": [{"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t, "NORMAL": n},
+                                             "indices": i}]}]}, "bounds.gltf")
+
+
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
@@ -248,6 +279,8 @@ def main():
     bad("recursive_nodes", lambda d: d["nodes"][8].update(children=[7]))
     bad("draco", lambda d: d["meshes"][0]["primitives"][0].setdefault("extensions", {}).update(
         KHR_draco_mesh_compression={"bufferView": 0, "attributes": {"POSITION": 0}}))
+    small_fixtures(out)
+
     # NaN in POSITION: a copy of the binary with vertex 0's x replaced.
     nan_bin = bytearray(b.bin)
     off = doc["bufferViews"][doc["accessors"][0]["bufferView"]]["byteOffset"]

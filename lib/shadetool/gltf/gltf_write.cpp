@@ -18,6 +18,7 @@
 #endif
 #include "engine/gltf_accessor.h"
 #include "engine/gltf_source.h"
+#include "engine/gltf_tidy.h"
 
 namespace shadetool {
 
@@ -545,6 +546,10 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
     json& jprim = j["meshes"][gp.mesh_index]["primitives"][gp.primitive_index];
     writer.write(gp, jprim);
   }
+
+  // What a command replaced leaves nothing behind; every bound written is exact.
+  io::gltf::prune_unreferenced(j, out.bytes, result.notes);
+  io::gltf::exact_bounds(j, out.bytes, result.notes);
 
   out.align(4);
   if (out.bytes.empty()) {
