@@ -332,6 +332,7 @@ std::unique_ptr<shadetool::GltfDocument> read_gltf_input(const IoOptions& io, co
     const shadetool::io::FileBytes bytes = shadetool::io::read_file_bytes(input);
     doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes.view(), input));
   }
+  for (const std::string& n : doc->notes) result.notes.push_back(n);  // compressed geometry decoded
   if (doc->primitives.empty()) {
     const bool gltf_out = kind == OutputKind::Mesh &&
                           shadetool::output_format(output, io.format.empty() ? Format::Auto

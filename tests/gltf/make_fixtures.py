@@ -277,6 +277,7 @@ def main():
     bad("accessor_overrun", lambda d: d["accessors"][0].update(count=2400))
     bad("wrong_component_type", lambda d: d["accessors"][0].update(componentType=5125))
     bad("recursive_nodes", lambda d: d["nodes"][8].update(children=[7]))
+    # A Draco extension whose bufferView holds no Draco data (the cube's positions): does not decode.
     bad("draco", lambda d: d["meshes"][0]["primitives"][0].setdefault("extensions", {}).update(
         KHR_draco_mesh_compression={"bufferView": 0, "attributes": {"POSITION": 0}}))
     small_fixtures(out)

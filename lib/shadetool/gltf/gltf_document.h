@@ -26,8 +26,9 @@
 //
 // Bad input (Error `FILE: JSON.PATH: what`): a missing buffer file, a view or accessor beyond its
 // buffer, an index out of range, component types the spec forbids for an attribute, NaN/Inf in
-// POSITION, a node graph that is not a forest (recursion), KHR_draco_mesh_compression or
-// EXT_meshopt_compression (refused: not decoded).
+// POSITION, a node graph that is not a forest (recursion), compressed data that does not decode.
+// KHR_draco_mesh_compression and EXT_meshopt_compression are decoded on reading (libdraco,
+// libmeshoptimizer: engine/gltf_decompress.h) and written uncompressed, with a note.
 #pragma once
 
 #include <cstddef>
@@ -69,6 +70,7 @@ struct GltfDocument {
   std::vector<GltfPrimitive> primitives;     // triangle primitives, in file order
   std::size_t passed_through_primitives = 0; // POINTS / LINES primitives left as they are
   bool was_binary = false;                   // read from a .glb
+  std::vector<std::string> notes;            // what reading changed (compressed geometry decoded)
 };
 
 // Parses a .glb or .gltf (told apart by the bytes: "glTF" magic). `name` is the file's path:

@@ -548,7 +548,7 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
   }
 
   // What a command replaced leaves nothing behind; every bound written is exact.
-  io::gltf::prune_unreferenced(j, out.bytes, result.notes);
+  io::gltf::prune_unreferenced(j, out.bytes, result.notes, src && src->compact_buffers);
   io::gltf::exact_bounds(j, out.bytes, result.notes);
 
   out.align(4);

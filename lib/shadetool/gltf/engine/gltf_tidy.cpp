@@ -106,7 +106,7 @@ std::vector<long> remap_of(const std::vector<bool>& used) {
 
 }  // namespace
 
-std::size_t prune_unreferenced(json& j, std::string& bytes, std::vector<std::string>& notes) {
+std::size_t prune_unreferenced(json& j, std::string& bytes, std::vector<std::string>& notes, bool compact) {
   if (!j.contains("accessors") || !j["accessors"].is_array() || !j.contains("bufferViews") || !j["bufferViews"].is_array())
     return 0;
   json& accessors = j["accessors"];
@@ -123,7 +123,7 @@ std::size_t prune_unreferenced(json& j, std::string& bytes, std::vector<std::str
   for_each_other_view_ref(j, mark(view_used));
   const std::size_t dead_accessors = std::size_t(std::count(accessor_used.begin(), accessor_used.end(), false));
   const std::size_t dead_views = std::size_t(std::count(view_used.begin(), view_used.end(), false));
-  if (dead_accessors == 0 && dead_views == 0) return 0;
+  if (dead_accessors == 0 && dead_views == 0 && !compact) return 0;
 
   // An extension this pass does not know may refer to what looks unreferenced: keep everything.
   if (j.contains("extensionsUsed") && j["extensionsUsed"].is_array())
@@ -177,8 +177,9 @@ std::size_t prune_unreferenced(json& j, std::string& bytes, std::vector<std::str
   views = std::move(kept_views);
   const std::size_t saved = bytes.size() - std::min(bytes.size(), packed.size());
   bytes = std::move(packed);
-  notes.push_back(std::to_string(dead_accessors) + " accessors and " + std::to_string(dead_views) +
-                  " bufferViews that nothing refers to any more removed (" + std::to_string(saved) + " bytes)");
+  if (dead_accessors > 0 || dead_views > 0)
+    notes.push_back(std::to_string(dead_accessors) + " accessors and " + std::to_string(dead_views) +
+                    " bufferViews that nothing refers to any more removed (" + std::to_string(saved) + " bytes)");
   return dead_accessors;
 }
 

@@ -9,7 +9,8 @@
 // inverseBindMatrices, animation samplers, accessors' bufferView and sparse views, images'
 // bufferView, EXT_mesh_gpu_instancing's attributes. An extension it does not know (in
 // extensionsUsed) could hold such an index: then nothing is pruned and a note says so. Nothing
-// unreferenced: nothing changes (bytes identical).
+// unreferenced and no `compact`: nothing changes (bytes identical); `compact` rebuilds the buffer
+// from the views all the same (bytes no view holds: a decoded file's compressed data).
 //
 // exact_bounds: every accessor that has `min`/`max` gets the exact bounds of its values (raw
 // component values: integers as stored, also when `normalized`; floats as float32; sparse
@@ -25,7 +26,8 @@
 namespace shadetool::io::gltf {
 
 // Returns the number of accessors removed; notes: one line when something was pruned or could not be.
-std::size_t prune_unreferenced(nlohmann::json& document, std::string& bytes, std::vector<std::string>& notes);
+std::size_t prune_unreferenced(nlohmann::json& document, std::string& bytes, std::vector<std::string>& notes,
+                               bool compact = false);
 
 // Returns the number of accessors whose min/max were corrected (named in one note).
 std::size_t exact_bounds(nlohmann::json& document, const std::string& bytes, std::vector<std::string>& notes);
