@@ -160,7 +160,10 @@ check "bake-lighting without --scene on OBJ: usage error (exit 2)" test $? -eq 2
 for case in "missing_bin:buffers[0].uri" "index_out_of_range:meshes[3].primitives[0].indices" \
             "accessor_overrun:accessors[0]" "wrong_component_type:meshes[0].primitives[0].attributes.POSITION" \
             "nan_position:meshes[0].primitives[0].attributes.POSITION" "recursive_nodes:nodes[" \
-            "draco:KHR_draco_mesh_compression"; do
+            "draco:KHR_draco_mesh_compression" "type_scene_name:scenes[0].name" \
+            "type_texture_index:materials[0].pbrMetallicRoughness.baseColorTexture.index" \
+            "type_not_object:materials[0].pbrMetallicRoughness" "type_count_string:accessors[1].count" \
+            "type_extensions:extensions" "type_node_mesh:nodes[0].mesh"; do
   name=${case%%:*} path=${case#*:}
   "$bin" normals "$fx/bad_$name.gltf" -o "$tmp/bad.glb" 2> "$tmp/err.txt"
   code=$?

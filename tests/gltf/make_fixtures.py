@@ -282,6 +282,15 @@ def main():
         KHR_draco_mesh_compression={"bufferView": 0, "attributes": {"POSITION": 0}}))
     small_fixtures(out)
 
+    # Schema type errors, as in assimp's test/models/glTF2/wrongTypes (written here anew): the
+    # Khronos validator rejects each; so must we, naming the JSON path.
+    bad("type_scene_name", lambda d: d["scenes"][0].update(name=42))
+    bad("type_texture_index", lambda d: d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"].update(index=-1))
+    bad("type_not_object", lambda d: d["materials"][0].update(pbrMetallicRoughness=["not an object"]))
+    bad("type_count_string", lambda d: d["accessors"][1].update(count="24"))
+    bad("type_extensions", lambda d: d.update(extensions=["KHR_lights_punctual"]))
+    bad("type_node_mesh", lambda d: d["nodes"][0].update(mesh=99))
+
     # NaN in POSITION: a copy of the binary with vertex 0's x replaced.
     nan_bin = bytearray(b.bin)
     off = doc["bufferViews"][doc["accessors"][0]["bufferView"]]["byteOffset"]

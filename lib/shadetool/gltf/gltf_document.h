@@ -24,7 +24,8 @@
 // written (Error naming them: dropping them would break the materials, skins and weights that
 // refer to them).
 //
-// Bad input (Error `FILE: JSON.PATH: what`): a missing buffer file, a view or accessor beyond its
+// Bad input (Error `FILE: JSON.PATH: what`): a property whose JSON type is not the schema's (a
+// number for a name, -1 for an index, an array for an object: engine/gltf_schema.h), a missing buffer file, a view or accessor beyond its
 // buffer, an index out of range, component types the spec forbids for an attribute, NaN/Inf in
 // POSITION, a node graph that is not a forest (recursion), compressed data that does not decode.
 // KHR_draco_mesh_compression and EXT_meshopt_compression are decoded on reading (libdraco,

@@ -12,6 +12,7 @@
 #include <shadetool/core/error.h>
 #include "engine/gltf_accessor.h"
 #include "engine/gltf_decompress.h"
+#include "engine/gltf_schema.h"
 #include "engine/gltf_source.h"
 
 namespace shadetool {
@@ -226,6 +227,7 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
     fail(name, 0, "not valid glTF JSON: " + what.substr(what.find(']') == std::string::npos ? 0 : what.find(']') + 2));
   }
   if (!source->json.is_object()) fail(name, 0, "not valid glTF JSON: the document is not an object");
+  io::gltf::require_schema_types(source->json, name);
   io::gltf::CompressedPlan compressed;  // what the loader must not see (engine/gltf_decompress.h)
   std::string edited_json = io::gltf::prepare_compressed(*source, compressed);
   require_buffer_files(source->json, name);
