@@ -134,15 +134,12 @@ struct Checker {
                         std::to_string(n) + " of them)");
   }
   void object(const json& o, const Schema& schema, const std::string& path) const {
-    if (!o.is_object()) bad(path, o, "an object");
-    if (o.contains("name") && !o["name"].is_string()) bad(path + ".name", o["name"], "a string");
-    if (o.contains("extensions") && !o["extensions"].is_object()) bad(path + ".extensions", o["extensions"], "an object");
-    for (const Property& p : schema.properties) {
-      if (!o.contains(p.name)) continue;
-      const json& v = o[p.name];
-      const std::string at = path.empty() ? std::string(p.name) : path + "." + p.name;
-      property(v, p, at);
-    }
+    if (!o.is_object()) bad(path.empty() ? "the document" : path, o, "an object");
+    auto at = [&path](const char* key) { return path.empty() ? std::string(key) : path + "." + key; };
+    if (o.contains("name") && !o["name"].is_string()) bad(at("name"), o["name"], "a string");
+    if (o.contains("extensions") && !o["extensions"].is_object()) bad(at("extensions"), o["extensions"], "an object");
+    for (const Property& p : schema.properties)
+      if (o.contains(p.name)) property(o[p.name], p, at(p.name));
   }
   void property(const json& v, const Property& p, const std::string& at) const {
     switch (p.kind) {
