@@ -14,6 +14,7 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include "usage_error.h"
+#include <shadetool/gltf/gltf_baked.h>
 #include <shadetool/gltf/gltf_lights.h>
 #include <shadetool/gltf/gltf_scene.h>
 #include <shadetool/lighting/bake_lighting.h>
@@ -36,6 +37,7 @@ struct BakeLightingOptions {
   std::string per = "vertex";
   bool hdr = false;
   bool srgb = false;
+  bool unlit = false;
   bool shadows = false;
   std::uint32_t samples = 16;
 };
@@ -80,7 +82,10 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
   sub->add_option("--per", opt.per, "vertex: one colour per vertex (Gouraud); face: one per face (flat) (default vertex)")
       ->check(CLI::IsMember({"vertex", "face"}));
   sub->add_flag("--hdr", opt.hdr, "Write float colours, unclamped (default: 8-bit, round(255 * clamp(c, 0, 1)))");
-  sub->add_flag("--srgb", opt.srgb, "Encode colours with the sRGB curve (default: linear)");
+  sub->add_flag("--srgb", opt.srgb, "Encode colours with the sRGB curve (default: linear; ignored for glTF, whose COLOR_0 is linear)");
+  sub->add_flag("--unlit", opt.unlit,
+                "glTF input to glTF output: give the baked primitives' materials KHR_materials_unlit (a non-glTF input "
+                "written as glTF always gets an unlit material)");
   auto* shadows_flag = sub->add_flag("--shadows", opt.shadows,
                 "Shadows: multiply each light's diffuse and specular terms by its visibility from the point (one ray "
                 "for directional, point and spot lights; --samples rays for area and sky lights)");
@@ -107,6 +112,12 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
     const bool samples_given = samples->count() > 0;
 
     return run_mesh_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+      shadetool::ColorEncoding file_encoding = encoding;
+      if (r.output_gltf && encoding.srgb) {  // glTF 2.0, 3.7.2.1: COLOR_0 is linear in every component type
+        file_encoding.srgb = false;
+        r.notes.push_back("--srgb ignored: glTF's COLOR_0 holds linear values");
+      }
+      if (opt.unlit && !r.output_gltf) r.notes.push_back("--unlit ignored: only a glTF output has materials");
       if (own_scene && !r.gltf)
         throw UsageError(input + ": --scene is required (only glTF files carry their own lights)");
       std::vector<std::string> scene_notes;
@@ -161,7 +172,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
 
       // No NaN or Inf colour is ever written (8-bit encoding would turn NaN into a silent black):
       // lights, intensities or positions near the limits of double can produce them; refuse.
-      std::vector<float> colors = shadetool::encode_colors(baked.rgb, encoding);
+      std::vector<float> colors = shadetool::encode_colors(baked.rgb, file_encoding);
       std::size_t nonfinite = 0;
       for (std::size_t i = 0; i < baked.rgb.size(); ++i)
         nonfinite += !(std::isfinite(baked.rgb[i]) && std::isfinite(colors[i]));
@@ -170,6 +181,12 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
             input, 0, std::to_string(nonfinite) + " colour values came out NaN or infinite (light positions, " +
                           "intensities or the world map near the limits of double?); nothing written"));
       shadetool::store_baked_colors(mesh, std::move(colors), frequency, encoding.hdr);
+      if (r.output_gltf && !r.gltf) {  // a baked glTF from another format: the normals used, an unlit material
+        const std::string added = shadetool::add_baked_normals(mesh, frequency == shadetool::ShadingFrequency::PerFace);
+        if (!added.empty()) r.notes.push_back(added);
+        r.unlit = true;
+      }
+      if (r.output_gltf && r.gltf && opt.unlit) r.unlit = true;
 
       r.stats["model"] = shadetool::shading_model_name(rep.model);
       r.stats["space"] = shadetool::shading_space_name(rep.space);

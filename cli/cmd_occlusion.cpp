@@ -15,6 +15,7 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include <shadetool/visibility/ambient_occlusion.h>
+#include <shadetool/gltf/gltf_baked.h>
 #include <shadetool/gltf/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
 
@@ -26,6 +27,7 @@ struct OcclusionOptions {
   double distance = std::numeric_limits<double>::infinity();
   std::string as = "both";
   std::string per = "vertex";
+  bool unlit = false;
 };
 
 // The open fraction as grey (r = g = b = value, alpha 1) in `colors`, keeping the channel count the
@@ -57,6 +59,9 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       ->check(CLI::IsMember({"color", "quality", "both"}));
   sub->add_option("--per", opt.per, "One value per vertex (default) or per face")
       ->check(CLI::IsMember({"vertex", "face"}));
+  sub->add_flag("--unlit", opt.unlit,
+                "glTF input to glTF output: give the primitives' materials KHR_materials_unlit (a non-glTF input "
+                "written as glTF always gets an unlit material)");
   return [] {
     shadetool::AmbientOcclusionOptions options;
     options.samples = opt.samples;
@@ -102,6 +107,13 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
             if (per_face) store_grey(mesh, ao.open_fraction, mesh.face_colors, mesh.has_vertex_colors());
             else store_grey(mesh, ao.open_fraction, mesh.vertex_colors, mesh.has_face_colors());
           }
+          if (opt.unlit && !r.output_gltf) r.notes.push_back("--unlit ignored: only a glTF output has materials");
+          if (colors && r.output_gltf && !r.gltf) {  // a baked glTF from another format: the normals used, an unlit material
+            const std::string added = shadetool::add_baked_normals(mesh, per_face);
+            if (!added.empty()) r.notes.push_back(added);
+            r.unlit = true;
+          }
+          if (colors && r.output_gltf && r.gltf && opt.unlit) r.unlit = true;
           if (quality) {
             if (per_face ? mesh.has_face_quality() : mesh.has_vertex_quality())
               r.notes.push_back(fmt::format("the input's {} quality replaced by occlusion", what));

@@ -90,6 +90,10 @@ struct FileResult {
   // A slot that lives across the document's primitives: a step that works on the whole document
   // (occlusion against the whole scene) fills it at the first primitive and reads it after.
   std::shared_ptr<void>* gltf_document_state = nullptr;
+  // Set by the driver before the step: the output is glTF (COLOR_0 is linear, materials exist).
+  bool output_gltf = false;
+  // Set by a step that bakes colours: a glTF output's materials get KHR_materials_unlit.
+  bool unlit = false;
 };
 
 using MeshStep = std::function<void(shadetool::Mesh& mesh, const std::string& input, FileResult& result)>;

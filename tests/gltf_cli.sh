@@ -156,6 +156,57 @@ check "bake-lighting --hdr: valid (COLOR_0 clamped to [0,1])" valid "$tmp/bh.glt
 "$bin" bake-lighting "$src/data/torus.obj" -o "$tmp/x.obj" > /dev/null 2>&1
 check "bake-lighting without --scene on OBJ: usage error (exit 2)" test $? -eq 2
 
+# Baked glTF outputs (issue 28, 2-3). COLOR_0 is linear whatever --srgb says (with a note); from
+# OBJ the output carries the normals used (checked against the torus's analytic normals) and an
+# unlit material; a glTF input keeps its materials, and gains KHR_materials_unlit only with --unlit.
+studio=$src/data/scenes/studio.json
+"$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/lin.glb" -q
+"$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/srgb.glb" --srgb 2> "$tmp/err.txt"
+check "bake --srgb to glTF: a note says it is ignored" grep -q -- "--srgb ignored: glTF's COLOR_0 holds linear values" "$tmp/err.txt"
+check "bake --srgb to glTF: COLOR_0 equals the linear bake's" "$py" -c '
+import json,subprocess,sys
+a,b=[json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",f,"0","0","COLOR_0"])) for f in sys.argv[3:5]]
+assert a==b' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/lin.glb" "$tmp/srgb.glb"
+"$bin" occlusion "$src/data/torus.obj" -o "$tmp/ao_obj.glb" --samples 8 -q
+"$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/hdr_obj.glb" --hdr -q
+for f in lin ao_obj hdr_obj; do
+  check "baked $f.glb from OBJ: valid" valid "$tmp/$f.glb"
+  check "baked $f.glb from OBJ: NORMAL within 2 degrees of the torus's analytic normals" "$py" -c '
+import json,math,subprocess,sys
+d=lambda a: json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"0","0",a]))
+P,N=d("POSITION"),d("NORMAL")
+r=[math.hypot(p[0],p[1]) for p in P]; R=(max(r)+min(r))/2   # the ring radius (axis z)
+for p,n,rr in zip(P,N,r):
+  a=[p[0]-R*p[0]/rr,p[1]-R*p[1]/rr,p[2]]; l=math.sqrt(sum(x*x for x in a))
+  assert sum(x*y for x,y in zip(a,n))/l>math.cos(math.radians(2)), (p,n)' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/$f.glb"
+  check "baked $f.glb from OBJ: an unlit material, COLOR_0 normalised ubyte (float with --hdr)" "$py" -c '
+import json,struct,sys
+d=open(sys.argv[1],"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n])
+p=j["meshes"][0]["primitives"][0]; m=j["materials"][p["material"]]
+assert "KHR_materials_unlit" in m["extensions"] and "KHR_materials_unlit" in j["extensionsUsed"], j
+c=j["accessors"][p["attributes"]["COLOR_0"]]
+assert (c["componentType"],c.get("normalized"))==((5126,None) if sys.argv[2]=="hdr_obj" else (5121,True)), c' "$tmp/$f.glb" "$f"
+done
+"$bin" bake-lighting "$fx/rich.glb" -o "$tmp/bu.glb" --unlit -q
+"$bin" occlusion "$fx/rich.glb" -o "$tmp/ou.glb" --unlit --samples 4 -q
+for f in bu ou; do
+  check "$f: glTF input --unlit: valid" valid "$tmp/$f.glb"
+  check "$f: glTF input --unlit: every triangle primitive's material unlit, the material otherwise as read" "$py" -c '
+import json,struct,sys
+def load(f):
+  d=open(f,"rb").read(); n=struct.unpack_from("<I",d,12)[0]; return json.loads(d[20:20+n])
+i,o=load(sys.argv[1]),load(sys.argv[2])
+for m,mesh in enumerate(o["meshes"]):
+  for k,p in enumerate(mesh["primitives"]):
+    if p.get("mode",4) not in (4,5,6): continue
+    mat=o["materials"][p["material"]]
+    assert "KHR_materials_unlit" in mat["extensions"], (m,k,mat)
+    if "material" in i["meshes"][m]["primitives"][k]:
+      was=dict(i["materials"][p["material"]]); now=dict(mat); now["extensions"]=dict(now["extensions"]); del now["extensions"]["KHR_materials_unlit"]
+      if not now["extensions"]: del now["extensions"]
+      assert was==now, (was,now)' "$fx/rich.glb" "$tmp/$f.glb"
+done
+
 # Bad input: one line naming the file and the JSON path, exit 1, no output.
 for case in "missing_bin:buffers[0].uri" "index_out_of_range:meshes[3].primitives[0].indices" \
             "accessor_overrun:accessors[0]" "wrong_component_type:meshes[0].primitives[0].attributes.POSITION" \

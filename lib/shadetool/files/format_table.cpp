@@ -83,7 +83,9 @@ Mesh read_gltf_entry(std::string_view bytes, const std::string& name, ReadInfo& 
 }
 void write_gltf_entry(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info) {
   GltfWriteResult result;
-  out = write_gltf(gltf_document_from_mesh(mesh), options.binary && !gltf_name_is_text(options.name), options.name, result);
+  GltfDocument doc = gltf_document_from_mesh(mesh);
+  doc.unlit_materials = options.gltf_unlit;
+  out = write_gltf(doc, options.binary && !gltf_name_is_text(options.name), options.name, result);
   info.split_vertices += result.split_vertices;
   for (auto& n : result.notes) info.notes.push_back(n);
 }

@@ -72,6 +72,10 @@ struct GltfDocument {
   std::size_t passed_through_primitives = 0; // POINTS / LINES primitives left as they are
   bool was_binary = false;                   // read from a .glb
   std::vector<std::string> notes;            // what reading changed (compressed geometry decoded)
+  // Written with KHR_materials_unlit (baked colours, gltf/gltf_baked.h): a fresh document gets one
+  // unlit material; a document as read gets the extension on its triangle primitives' materials
+  // (one unlit material for those without).
+  bool unlit_materials = false;
 };
 
 // Parses a .glb or .gltf (told apart by the bytes: "glTF" magic). `name` is the file's path:
