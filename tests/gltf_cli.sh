@@ -253,6 +253,12 @@ p=j["meshes"][0]["primitives"][0]; a=j["accessors"][p["attributes"]["TEXCOORD_0"
 assert a["max"]==[0.5,0.5] or sys.argv[2]=="", a' "$tmp/bounds.glb" "$args"
 done
 
+# An accessor that does not start on a multiple of its component size (corpus TestScene.gltf has
+# three): copied to an aligned view, so the output is valid; its values are kept.
+"$bin" normals "$fx/misaligned.gltf" -o "$tmp/aligned.glb" --recompute -q
+check "misaligned accessor: output valid" valid "$tmp/aligned.glb"
+check "misaligned accessor: TEXCOORD_0 kept" gcheck keep "$fx/misaligned.gltf" "$tmp/aligned.glb" --changed NORMAL
+
 # Replaced accessors leave nothing behind (issue 28, 6): repeated normals --recompute keeps the
 # accessor and bufferView counts and the size; the validator finds no more unused objects than in
 # the input (one: a TEXCOORD_0 that no material uses).

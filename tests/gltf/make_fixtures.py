@@ -246,6 +246,21 @@ def small_fixtures(out):
                                              "indices": i}]}]}, "bounds.gltf")
 
 
+def misaligned_fixture(out):
+    """TEXCOORD_0 floats starting 2 bytes into their view (as some exporters write them; the
+    validator's ACCESSOR_TOTAL_OFFSET_ALIGNMENT): a writer must not pass that on."""
+    b = Builder()
+    p = b.floats([(0, 0, 0), (1, 0, 0), (0, 1, 0)], "VEC3", minmax=True)
+    uv = b.view(b"\0\0" + struct.pack("<6f", 0, 0, 1, 0, 0, 1))
+    t = b.accessor(uv, 5126, 3, "VEC2", offset=2)
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+           "meshes": [{"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t}}]}],
+           "buffers": [{"uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(b.bin)).decode(),
+                        "byteLength": len(b.bin)}], "bufferViews": b.views, "accessors": b.accessors}
+    with open(os.path.join(out, "misaligned.gltf"), "w") as f:
+        json.dump(doc, f)
+
+
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
@@ -281,6 +296,7 @@ def main():
     bad("draco", lambda d: d["meshes"][0]["primitives"][0].setdefault("extensions", {}).update(
         KHR_draco_mesh_compression={"bufferView": 0, "attributes": {"POSITION": 0}}))
     small_fixtures(out)
+    misaligned_fixture(out)
 
     # Schema type errors, as in assimp's test/models/glTF2/wrongTypes (written here anew): the
     # Khronos validator rejects each; so must we, naming the JSON path.

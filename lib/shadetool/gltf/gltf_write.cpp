@@ -583,7 +583,8 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
 
   if (doc.unlit_materials) add_unlit_materials(doc, j, result);
 
-  // What a command replaced leaves nothing behind; every bound written is exact.
+  // What a command replaced leaves nothing behind; every accessor aligned, every bound exact.
+  io::gltf::align_accessors(j, out.bytes, result.notes);
   io::gltf::prune_unreferenced(j, out.bytes, result.notes, src && src->compact_buffers);
   io::gltf::exact_bounds(j, out.bytes, result.notes);
 

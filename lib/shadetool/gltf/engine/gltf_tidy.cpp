@@ -24,7 +24,7 @@ const std::set<std::string> kNoAccessorReferences = {
     "KHR_materials_transmission", "KHR_materials_unlit", "KHR_materials_variants", "KHR_materials_volume",
     "KHR_mesh_quantization", "KHR_texture_basisu", "KHR_texture_transform", "KHR_xmp_json_ld", "EXT_texture_webp",
     "EXT_texture_avif", "EXT_lights_image_based", "MSFT_lod", "MSFT_texture_dds",
-    "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression"};
+    "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression", "KHR_materials_common"};
 
 bool is_index(const json& v) { return v.is_number_integer() && v.get<long long>() >= 0; }
 
@@ -281,6 +281,48 @@ bool same_bound(const json& written, double exact, int component_type) {
 }
 
 }  // namespace
+
+std::size_t align_accessors(json& j, std::string& bytes, std::vector<std::string>& notes) {
+  if (!j.contains("accessors") || !j["accessors"].is_array() || !j.contains("bufferViews") || !j["bufferViews"].is_array())
+    return 0;
+  json& views = j["bufferViews"];
+  std::size_t moved = 0;
+  std::string first;
+  for (std::size_t i = 0; i < j["accessors"].size(); ++i) {
+    json& a = j["accessors"][i];
+    if (!a.is_object() || a.contains("sparse") || !a.contains("bufferView") || !is_index(a["bufferView"]) ||
+        a["bufferView"].get<std::size_t>() >= views.size())
+      continue;
+    const json& v = views[a["bufferView"].get<std::size_t>()];
+    const int comps = components_of(a.value("type", std::string()));
+    const int cb = bytes_of(a.value("componentType", 0));
+    if (!v.is_object() || v.value("buffer", 0) != 0 || comps == 0 || cb == 0) continue;
+    const std::size_t view_offset = v.value("byteOffset", std::size_t(0)), view_length = v.value("byteLength", std::size_t(0));
+    const std::size_t start = view_offset + a.value("byteOffset", std::size_t(0));
+    const std::size_t stride = v.value("byteStride", std::size_t(0));
+    if (start % std::size_t(cb) == 0 && stride % std::size_t(cb) == 0) continue;
+    const std::size_t elem = std::size_t(comps) * std::size_t(cb), count = a.value("count", std::size_t(0));
+    const std::size_t step = stride ? stride : elem;
+    if (view_offset + view_length > bytes.size() || (count > 0 && start + (count - 1) * step + elem > view_offset + view_length))
+      continue;  // out of bounds: the reader refused such files already; nothing to copy
+    const std::size_t out_stride = stride ? (elem + 3) / 4 * 4 : elem;
+    while (bytes.size() % 4) bytes.push_back('\0');
+    const std::size_t at = bytes.size();
+    bytes.resize(at + count * out_stride, '\0');
+    for (std::size_t e = 0; e < count; ++e) std::memcpy(&bytes[at + e * out_stride], &bytes[start + e * step], elem);
+    json nv = {{"buffer", 0}, {"byteOffset", at}, {"byteLength", count * out_stride}};
+    if (stride) nv["byteStride"] = out_stride;
+    if (v.contains("target")) nv["target"] = v["target"];
+    views.push_back(std::move(nv));
+    a["bufferView"] = views.size() - 1;
+    a.erase("byteOffset");
+    if (moved++ == 0) first = "accessors[" + std::to_string(i) + "]";
+  }
+  if (moved > 0)
+    notes.push_back(std::to_string(moved) + " accessors whose data did not start on a multiple of its component size " +
+                    "(first " + first + ") copied to aligned bufferViews (glTF 2.0 3.6.2.4)");
+  return moved;
+}
 
 std::size_t exact_bounds(json& j, const std::string& bytes, std::vector<std::string>& notes) {
   if (!j.contains("accessors") || !j["accessors"].is_array()) return 0;
