@@ -4,7 +4,8 @@
 // are checked against (tests/gltf/gltf_compressed.cpp; tests/gltf/fixtures for gltf_cli.sh).
 //
 // The mesh: a 9 x 9 latitude-longitude grid on the unit sphere (81 vertices, 128 triangles), with
-// NORMAL = position and TEXCOORD_0 = (u, v) of the grid.
+// NORMAL = position and TEXCOORD_0 = (u, v) of the grid. fixture_sphere uses its own pi: the
+// fixtures do not depend on the library.
 // Draco: attributes added TEXCOORD_0, NORMAL, POSITION with unique ids 10, 20, 5 (the extension's
 // map, not the order, names them), no quantization (lossless). meshopt: one view per attribute
 // and the indices, in a fallback buffer without a uri (EXT_meshopt_compression.fallback).
@@ -163,10 +164,16 @@ inline std::string draco_glb(const FixtureMesh& m) {
 
 // meshopt: buffer 0 (the BIN chunk) holds the compressed streams; buffer 1, the fallback, has no
 // uri and no bytes; each view lies in buffer 1 and says where its compressed bytes are.
-inline std::string meshopt_glb(const FixtureMesh& m) {
+// With `octahedral_normals`: NORMAL as 8-bit octahedral BYTE VEC3 (stride 4, normalized;
+// KHR_mesh_quantization) through meshopt_encodeFilterOct, the view's filter OCTAHEDRAL.
+inline std::string meshopt_glb(const FixtureMesh& m, bool octahedral_normals = false) {
   nlohmann::json doc = scene_part();
   doc["extensionsUsed"] = {"EXT_meshopt_compression"};
   doc["extensionsRequired"] = {"EXT_meshopt_compression"};
+  if (octahedral_normals) {
+    doc["extensionsUsed"].push_back("KHR_mesh_quantization");
+    doc["extensionsRequired"].push_back("KHR_mesh_quantization");
+  }
   std::string bin;
   std::size_t fallback = 0;
   nlohmann::json views = nlohmann::json::array();
@@ -182,7 +189,23 @@ inline std::string meshopt_glb(const FixtureMesh& m) {
     fallback += V * stride;
   };
   add_vertices(m.positions.data(), 12);
-  add_vertices(m.normals.data(), 12);
+  if (octahedral_normals) {
+    std::vector<float> n4;
+    for (std::size_t v = 0; v < V; ++v) n4.insert(n4.end(), {m.normals[3 * v], m.normals[3 * v + 1], m.normals[3 * v + 2], 0.0f});
+    std::vector<std::int8_t> oct(4 * V);
+    meshopt_encodeFilterOct(oct.data(), V, 4, 8, n4.data());
+    std::vector<unsigned char> enc(meshopt_encodeVertexBufferBound(V, 4));
+    enc.resize(meshopt_encodeVertexBuffer(enc.data(), enc.size(), oct.data(), V, 4));
+    while (bin.size() % 4) bin += '\0';
+    views.push_back({{"buffer", 1}, {"byteOffset", fallback}, {"byteLength", V * 4}, {"byteStride", 4}, {"target", 34962},
+                     {"extensions", {{"EXT_meshopt_compression", {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", enc.size()},
+                                                                  {"byteStride", 4}, {"count", V}, {"mode", "ATTRIBUTES"},
+                                                                  {"filter", "OCTAHEDRAL"}}}}}});
+    bin.append(reinterpret_cast<const char*>(enc.data()), enc.size());
+    fallback += V * 4;
+  } else {
+    add_vertices(m.normals.data(), 12);
+  }
   add_vertices(m.uvs.data(), 8);
   std::vector<unsigned char> enc(meshopt_encodeIndexBufferBound(m.indices.size(), V));
   enc.resize(meshopt_encodeIndexBuffer(enc.data(), enc.size(), m.indices.data(), m.indices.size()));
@@ -195,7 +218,8 @@ inline std::string meshopt_glb(const FixtureMesh& m) {
   doc["bufferViews"] = views;
   doc["accessors"] = {
       {{"bufferView", 0}, {"componentType", 5126}, {"count", V}, {"type", "VEC3"}, {"min", minmax(m.positions, 3, false)}, {"max", minmax(m.positions, 3, true)}},
-      {{"bufferView", 1}, {"componentType", 5126}, {"count", V}, {"type", "VEC3"}},
+      octahedral_normals ? nlohmann::json{{"bufferView", 1}, {"componentType", 5120}, {"normalized", true}, {"count", V}, {"type", "VEC3"}}
+                         : nlohmann::json{{"bufferView", 1}, {"componentType", 5126}, {"count", V}, {"type", "VEC3"}},
       {{"bufferView", 2}, {"componentType", 5126}, {"count", V}, {"type", "VEC2"}},
       {{"bufferView", 3}, {"componentType", 5123}, {"count", m.indices.size()}, {"type", "SCALAR"}}};
   doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}}, {"indices", 3}}}}}};

@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <tuple>
 
 #include <catch2/catch.hpp>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/math_constants.h>
 #include "compressed_fixtures.h"
 
 using namespace shadetool;
@@ -96,6 +98,23 @@ TEST_CASE("meshopt-compressed glTF (fallback buffer without uri) decodes to the 
   const GltfDocument doc = read_gltf(shadetool_test::meshopt_glb(m), "meshopt.glb");
   CHECK(doc.primitives[0].mesh.positions == std::vector<double>(m.positions.begin(), m.positions.end()));
   CHECK(doc.primitives[0].mesh.corner_vertex == m.indices);
+}
+
+TEST_CASE("meshopt's OCTAHEDRAL filter decodes 8-bit normals within their quantisation (2 degrees)", "[gltf][meshopt]") {
+  const FixtureMesh m = shadetool_test::fixture_sphere();
+  const GltfDocument doc = read_gltf(shadetool_test::meshopt_glb(m, true), "oct.glb");
+  REQUIRE(doc.primitives.size() == 1);
+  const std::vector<double>& n = doc.primitives[0].mesh.vertex_normals;
+  REQUIRE(n.size() == m.normals.size());
+  for (std::size_t v = 0; v < n.size() / 3; ++v) {
+    double dot = 0, len = 0;
+    for (int k = 0; k < 3; ++k) {
+      dot += n[3 * v + std::size_t(k)] * double(m.normals[3 * v + std::size_t(k)]);
+      len += n[3 * v + std::size_t(k)] * n[3 * v + std::size_t(k)];
+    }
+    REQUIRE(len > 0);
+    CHECK(dot / std::sqrt(len) > std::cos(2.0 * kPi / 180));  // divisor checked above
+  }
 }
 
 TEST_CASE("Corrupt compressed data is refused with the JSON path", "[gltf][draco][meshopt]") {

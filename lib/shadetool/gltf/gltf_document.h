@@ -22,7 +22,10 @@
 // attribute is gathered through the split; when it changes the vertex count otherwise (repair's
 // welding) and the primitive has attributes or morph targets that cannot follow, nothing is
 // written (Error naming them: dropping them would break the materials, skins and weights that
-// refer to them).
+// refer to them). Last (engine/gltf_tidy.h): accessors not aligned to their component size are
+// copied to aligned views, accessors and views nothing refers to any more are removed with their
+// bytes (unless an unknown extension could refer to them: a note), every min/max is made exact.
+// With unlit_materials (baked colours, gltf/gltf_baked.h), materials get KHR_materials_unlit.
 //
 // Bad input (Error `FILE: JSON.PATH: what`): a property whose JSON type is not the schema's (a
 // number for a name, -1 for an index, an array for an object: engine/gltf_schema.h), a missing buffer file, a view or accessor beyond its
