@@ -309,8 +309,9 @@ if [ -x "$fixtures_bin" ] && "$fixtures_bin" "$tmp/cz"; then
     check "$c: bake-lighting valid" valid "$tmp/cz/b_$c.glb"
     "$bin" occlusion "$tmp/cz/$c.glb" -o "$tmp/cz/o_$c.glb" --samples 4 -q
     check "$c: occlusion valid" valid "$tmp/cz/o_$c.glb"
-    "$bin" render "$tmp/cz/$c.glb" -o "$tmp/cz/$c.png" --scene "$src/data/scenes/studio.json" --size 32,24 -q
+    "$bin" render "$tmp/cz/$c.glb" -o "$tmp/cz/$c.png" --scene "$src/data/scenes/studio.json" --size 32,24 2> "$tmp/err.txt"
     check "$c: render exit 0" test $? -eq 0
+    check "$c: render notes the decoding too (the one-mesh reader)" grep -q "$ext) decoded" "$tmp/err.txt"
     "$bin" info "$tmp/cz/$c.glb" --json > "$tmp/cz/i_$c.json" 2> /dev/null
     "$bin" info "$tmp/cz/plain.glb" --json > "$tmp/cz/i_plain.json" 2> /dev/null
     check "$c: info counts equal the uncompressed file's" "$py" -c '
