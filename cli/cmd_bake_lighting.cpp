@@ -15,6 +15,7 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include "usage_error.h"
+#include <shadetool/gltf/gltf_baked.h>
 #include <shadetool/gltf/gltf_lights.h>
 #include <shadetool/gltf/gltf_scene.h>
 #include <shadetool/lighting/bake_lighting.h>
@@ -33,6 +34,7 @@ struct BakeLightingOptions {
   std::string per = shadetool::shading_frequency_name(shadetool::ShadingFrequency::PerVertex);
   bool hdr = false;
   bool srgb = false;
+  bool unlit = false;
   bool shadows = false;
   std::uint32_t samples = 16;
 };
@@ -175,7 +177,10 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
   sub->add_option("--per", opt.per, "vertex: one colour per vertex (Gouraud); face: one per face (flat) (default vertex)")
       ->check(CLI::IsMember(shadetool::shading_frequency_names()));
   sub->add_flag("--hdr", opt.hdr, "Write float colours, unclamped (default: 8-bit, round(255 * clamp(c, 0, 1)))");
-  sub->add_flag("--srgb", opt.srgb, "Encode colours with the sRGB curve (default: linear)");
+  sub->add_flag("--srgb", opt.srgb, "Encode colours with the sRGB curve (default: linear; ignored for glTF, whose COLOR_0 is linear)");
+  sub->add_flag("--unlit", opt.unlit,
+                "glTF input to glTF output: give the baked primitives' materials KHR_materials_unlit (a non-glTF input "
+                "written as glTF always gets an unlit material)");
   auto* shadows_flag = sub->add_flag("--shadows", opt.shadows,
                 "Shadows: multiply each light's diffuse and specular terms by its visibility from the point (one ray "
                 "for directional, point and spot lights; --samples rays for area and sky lights)");
@@ -210,6 +215,12 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
     io.result_name = per_face ? "face colours" : "vertex colours";
 
     return run_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+      shadetool::ColorEncoding file_encoding = set.encoding;
+      if (r.output_gltf && file_encoding.srgb) {  // glTF 2.0, 3.7.2.1: COLOR_0 is linear in every component type
+        file_encoding.srgb = false;
+        r.notes.push_back("--srgb ignored: glTF's COLOR_0 holds linear values");
+      }
+      if (opt.unlit && !r.output_gltf) r.notes.push_back("--unlit ignored: only a glTF output has materials");
       const shadetool::Scene scene = own_scene ? gltf_own_scene(input, r) : file_scene;
       check_bakeable(mesh, input, set.frequency, r);
       shadetool::ShadowOptions cast = set.shadows;
@@ -224,9 +235,16 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       }
       const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
       add_bake_notes(baked, scene, set, r);
-      for (auto& n : shadetool::store_baked_colors(mesh, encoded_colors(baked, set.encoding, input), set.frequency,
+      for (auto& n : shadetool::store_baked_colors(mesh, encoded_colors(baked, file_encoding, input), set.frequency,
                                                    set.encoding.hdr))
         r.notes.push_back(n);
+      if (r.output_gltf && !r.gltf) {  // a baked glTF from another format: the normals used, an unlit material
+        const std::string added =
+            shadetool::add_baked_normals(mesh, set.frequency == shadetool::ShadingFrequency::PerFace);
+        if (!added.empty()) r.notes.push_back(added);
+        r.unlit = true;
+      }
+      if (r.output_gltf && r.gltf && opt.unlit) r.unlit = true;
       add_bake_stats(baked, set, cast.occluders != nullptr, r);
     }, OutputKind::Mesh);
   };

@@ -18,6 +18,7 @@
 #include "usage_error.h"
 #include <shadetool/lighting/bake_lighting.h>  // ShadingFrequency's vocabulary (--per)
 #include <shadetool/visibility/ambient_occlusion.h>
+#include <shadetool/gltf/gltf_baked.h>
 #include <shadetool/gltf/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
 #include <shadetool/io/split_corner_normals.h>
@@ -31,6 +32,7 @@ struct OcclusionOptions {
   double distance = std::numeric_limits<double>::infinity();
   std::string as = "both";
   std::string per = "vertex";
+  bool unlit = false;
 };
 
 // The open fraction as grey (r = g = b = value) in `colors`, keeping the channel count the mesh's
@@ -76,6 +78,9 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
       ->check(CLI::IsMember({"color", "quality", "both"}));
   sub->add_option("--per", opt.per, "One value per vertex (default) or per face")
       ->check(CLI::IsMember(shadetool::shading_frequency_names()));
+  sub->add_flag("--unlit", opt.unlit,
+                "glTF input to glTF output: give the primitives' materials KHR_materials_unlit (a non-glTF input "
+                "written as glTF always gets an unlit material)");
   return [command_options = options] {
     IoOptions& io = command_options->io;
     const OcclusionOptions& opt = command_options->opt;
@@ -97,7 +102,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
     io.result_name = std::string(colors && quality ? "grey colours and quality" : colors ? "grey colours" : "quality") + " per " + opt.per;
     return run_command(
         "occlusion", io,
-        [options, per_face, colors, quality](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [options, per_face, colors, quality, unlit = opt.unlit](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_faces(mesh, input);
           shadetool::require_finite_positions(mesh, input);
           // Normals pass through to the output: one without a direction is replaced, with a counted note.
@@ -146,6 +151,13 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
             if (per_face) store_grey(mesh, ao.open_fraction, mesh.face_colors, mesh.has_vertex_colors());
             else store_grey(mesh, ao.open_fraction, mesh.vertex_colors, mesh.has_face_colors());
           }
+          if (unlit && !r.output_gltf) r.notes.push_back("--unlit ignored: only a glTF output has materials");
+          if (colors && r.output_gltf && !r.gltf) {  // a baked glTF from another format: the normals used, an unlit material
+            const std::string added = shadetool::add_baked_normals(mesh, per_face);
+            if (!added.empty()) r.notes.push_back(added);
+            r.unlit = true;
+          }
+          if (colors && r.output_gltf && r.gltf && unlit) r.unlit = true;
           if (quality) {
             if (per_face ? mesh.has_face_quality() : mesh.has_vertex_quality())
               r.notes.push_back(fmt::format("the input's {} quality replaced by occlusion", what));

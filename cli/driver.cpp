@@ -311,6 +311,7 @@ void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& m
       wo.binary = !io.ascii;
       wo.name = output == "-" ? "stdout" : output;
       wo.refuse_unusable_normals = true;  // no subcommand writes a zero or non-finite normal
+      wo.gltf_unlit = result.unlit;
       shadetool::WriteInfo write_info;
       bytes = shadetool::write_mesh_to_memory(mesh, wo, &write_info);
       if (write_info.split_vertices > 0) {
@@ -344,16 +345,32 @@ bool input_is_gltf(const IoOptions& io, const std::string& input) {
   return f && f->format == Format::Gltf;
 }
 
-std::unique_ptr<shadetool::GltfDocument> read_gltf_input(const IoOptions&, const std::string& input) {
+// glTF output: a mesh written to a name (or --format) that says glTF.
+bool output_is_gltf(const IoOptions& io, OutputKind kind, const std::string& output) {
+  return kind == OutputKind::Mesh &&
+         shadetool::output_format(output, io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format")) ==
+             Format::Gltf;
+}
+
+// A document without a triangle primitive (only POINTS/LINES, or no mesh at all) has nothing for
+// a step to do: written unchanged with a note when the output is glTF, refused otherwise.
+std::unique_ptr<shadetool::GltfDocument> read_gltf_input(const IoOptions& io, const std::string& input, OutputKind kind,
+                                                         const std::string& output, FileResult& result) {
+  std::unique_ptr<shadetool::GltfDocument> doc;
   if (input == "-") {
     const std::string bytes = read_stdin();
     if (bytes.empty()) shadetool::fail("stdin", 0, "file is empty");
-    return std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes, "stdin"));
+    doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes, "stdin"));
+  } else {
+    const shadetool::io::FileBytes bytes = shadetool::io::read_file_bytes(input);
+    doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes.view(), input));
   }
-  const shadetool::io::FileBytes bytes = shadetool::io::read_file_bytes(input);
-  auto doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes.view(), input));
-  if (doc->primitives.empty())
-    shadetool::fail(input, 0, "no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to read as a mesh");
+  for (const std::string& n : doc->notes) result.notes.push_back(n);  // compressed geometry decoded
+  if (doc->primitives.empty()) {
+    if (!output_is_gltf(io, kind, output))
+      shadetool::fail(input, 0, "no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to read as a mesh");
+    result.notes.push_back("no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to compute, the document written unchanged");
+  }
   return doc;
 }
 
@@ -369,7 +386,9 @@ void run_step_per_primitive(shadetool::GltfDocument& doc, const MeshStep& step, 
     r.gltf = &p;
     r.gltf_document = &doc;
     r.gltf_document_state = &document_state;
+    r.output_gltf = result.output_gltf;
     step(p.mesh, input + ": " + p.json_path, r);
+    result.unlit = result.unlit || r.unlit;
     for (auto& n : r.notes) {
       auto it = std::find_if(notes.begin(), notes.end(), [&](const auto& e) { return e.first == n; });
       if (it == notes.end()) notes.push_back({n, {p.json_path}});
@@ -482,7 +501,7 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
       shadetool::ReadInfo read_info;
       shadetool::Mesh mesh;
       std::unique_ptr<shadetool::GltfDocument> document;
-      if (kind != OutputKind::Image && input_is_gltf(io, input)) document = read_gltf_input(io, input);
+      if (kind != OutputKind::Image && input_is_gltf(io, input)) document = read_gltf_input(io, input, kind, output, result);
       else mesh = read_input(io, input, read_info);
       const double read_ms = ms_since(t0);
       for (auto& n : read_info.notes) result.notes.push_back(n);
@@ -490,8 +509,10 @@ int run_command(const std::string& command, const IoOptions& io, const MeshStep&
 
       show_stage(input, "computing");
       t0 = std::chrono::steady_clock::now();
+      result.output_gltf = writes_file && output_is_gltf(io, kind, output);
       if (document) run_step_per_primitive(*document, step, input, result);
       else step(mesh, input, result);
+      if (document && result.unlit) document->unlit_materials = true;
       const double compute_ms = ms_since(t0);
 
       double write_ms = 0;

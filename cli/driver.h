@@ -122,6 +122,10 @@ struct FileResult {
   const shadetool::GltfDocument* gltf_document = nullptr;
   // A slot that lives across the document's primitives (DocumentState); null for other input.
   DocumentState* gltf_document_state = nullptr;
+  // Set by the driver before the step: the output is glTF (COLOR_0 is linear, materials exist).
+  bool output_gltf = false;
+  // Set by a step that bakes colours: a glTF output's materials get KHR_materials_unlit.
+  bool unlit = false;
 };
 
 using MeshStep = std::function<void(shadetool::Mesh& mesh, const std::string& input, FileResult& result)>;

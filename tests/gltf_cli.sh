@@ -156,11 +156,65 @@ check "bake-lighting --hdr: valid (COLOR_0 clamped to [0,1])" valid "$tmp/bh.glt
 "$bin" bake-lighting "$src/data/torus.obj" -o "$tmp/x.obj" > /dev/null 2>&1
 check "bake-lighting without --scene on OBJ: usage error (exit 2)" test $? -eq 2
 
+# Baked glTF outputs (issue 28, 2-3). COLOR_0 is linear whatever --srgb says (with a note); from
+# OBJ the output carries the normals used (checked against the torus's analytic normals) and an
+# unlit material; a glTF input keeps its materials, and gains KHR_materials_unlit only with --unlit.
+studio=$src/data/scenes/studio.json
+"$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/lin.glb" -q
+"$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/srgb.glb" --srgb 2> "$tmp/err.txt"
+check "bake --srgb to glTF: a note says it is ignored" grep -q -- "--srgb ignored: glTF's COLOR_0 holds linear values" "$tmp/err.txt"
+check "bake --srgb to glTF: COLOR_0 equals the linear bake's" "$py" -c '
+import json,subprocess,sys
+a,b=[json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",f,"0","0","COLOR_0"])) for f in sys.argv[3:5]]
+assert a==b' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/lin.glb" "$tmp/srgb.glb"
+"$bin" occlusion "$src/data/torus.obj" -o "$tmp/ao_obj.glb" --samples 8 -q
+"$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/hdr_obj.glb" --hdr -q
+for f in lin ao_obj hdr_obj; do
+  check "baked $f.glb from OBJ: valid" valid "$tmp/$f.glb"
+  check "baked $f.glb from OBJ: NORMAL within 2 degrees of the torus's analytic normals" "$py" -c '
+import json,math,subprocess,sys
+d=lambda a: json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"0","0",a]))
+P,N=d("POSITION"),d("NORMAL")
+r=[math.hypot(p[0],p[1]) for p in P]; R=(max(r)+min(r))/2   # the ring radius (axis z)
+for p,n,rr in zip(P,N,r):
+  a=[p[0]-R*p[0]/rr,p[1]-R*p[1]/rr,p[2]]; l=math.sqrt(sum(x*x for x in a))
+  assert sum(x*y for x,y in zip(a,n))/l>math.cos(math.radians(2)), (p,n)' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/$f.glb"
+  check "baked $f.glb from OBJ: an unlit material, COLOR_0 normalised ubyte (float with --hdr)" "$py" -c '
+import json,struct,sys
+d=open(sys.argv[1],"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n])
+p=j["meshes"][0]["primitives"][0]; m=j["materials"][p["material"]]
+assert "KHR_materials_unlit" in m["extensions"] and "KHR_materials_unlit" in j["extensionsUsed"], j
+c=j["accessors"][p["attributes"]["COLOR_0"]]
+assert (c["componentType"],c.get("normalized"))==((5126,None) if sys.argv[2]=="hdr_obj" else (5121,True)), c' "$tmp/$f.glb" "$f"
+done
+"$bin" bake-lighting "$fx/rich.glb" -o "$tmp/bu.glb" --unlit -q
+"$bin" occlusion "$fx/rich.glb" -o "$tmp/ou.glb" --unlit --samples 4 -q
+for f in bu ou; do
+  check "$f: glTF input --unlit: valid" valid "$tmp/$f.glb"
+  check "$f: glTF input --unlit: every triangle primitive's material unlit, the material otherwise as read" "$py" -c '
+import json,struct,sys
+def load(f):
+  d=open(f,"rb").read(); n=struct.unpack_from("<I",d,12)[0]; return json.loads(d[20:20+n])
+i,o=load(sys.argv[1]),load(sys.argv[2])
+for m,mesh in enumerate(o["meshes"]):
+  for k,p in enumerate(mesh["primitives"]):
+    if p.get("mode",4) not in (4,5,6): continue
+    mat=o["materials"][p["material"]]
+    assert "KHR_materials_unlit" in mat["extensions"], (m,k,mat)
+    if "material" in i["meshes"][m]["primitives"][k]:
+      was=dict(i["materials"][p["material"]]); now=dict(mat); now["extensions"]=dict(now["extensions"]); del now["extensions"]["KHR_materials_unlit"]
+      if not now["extensions"]: del now["extensions"]
+      assert was==now, (was,now)' "$fx/rich.glb" "$tmp/$f.glb"
+done
+
 # Bad input: one line naming the file and the JSON path, exit 1, no output.
 for case in "missing_bin:buffers[0].uri" "index_out_of_range:meshes[3].primitives[0].indices" \
             "accessor_overrun:accessors[0]" "wrong_component_type:meshes[0].primitives[0].attributes.POSITION" \
             "nan_position:meshes[0].primitives[0].attributes.POSITION" "recursive_nodes:nodes[" \
-            "draco:KHR_draco_mesh_compression"; do
+            "draco:KHR_draco_mesh_compression" "type_scene_name:scenes[0].name" \
+            "type_texture_index:materials[0].pbrMetallicRoughness.baseColorTexture.index" \
+            "type_not_object:materials[0].pbrMetallicRoughness" "type_count_string:accessors[1].count" \
+            "type_extensions:extensions" "type_node_mesh:nodes[0].mesh"; do
   name=${case%%:*} path=${case#*:}
   "$bin" normals "$fx/bad_$name.gltf" -o "$tmp/bad.glb" 2> "$tmp/err.txt"
   code=$?
@@ -170,6 +224,114 @@ for case in "missing_bin:buffers[0].uri" "index_out_of_range:meshes[3].primitive
   check "bad $name: JSON path $path" grep -qF "$path" "$tmp/err.txt"
   check "bad $name: no output" test ! -e "$tmp/bad.glb"
 done
+
+# Nothing for a step to do (issue 27, 15): only POINTS/LINES primitives, or a scene without nodes:
+# written unchanged with a note, exit 0 (a batch over a folder goes on); to a format that needs a
+# mesh, still refused.
+for f in points_lines no_nodes; do
+  rm -f "$tmp/nothing.glb"
+  "$bin" normals "$fx/$f.gltf" -o "$tmp/nothing.glb" 2> "$tmp/err.txt"
+  check "$f: normals exit 0" test $? -eq 0
+  check "$f: a note says nothing was computed" grep -q "nothing to compute, the document written unchanged" "$tmp/err.txt"
+  check "$f: kept" gcheck keep "$fx/$f.gltf" "$tmp/nothing.glb"
+  check "$f: valid" valid "$tmp/nothing.glb"
+  "$bin" normals "$fx/$f.gltf" -o "$tmp/nothing.ply" 2> /dev/null
+  check "$f: to PLY refused (exit 1), nothing written" test $? -eq 1 -a ! -e "$tmp/nothing.ply"
+done
+
+# Exact bounds (issue 27, 16): a split that drops an unused vertex, and an input whose NORMAL
+# min/max do not hold; every output's accessors have exact min/max (the validator computes them).
+for args in "--faces" "--recompute --crease 30" ""; do
+  rm -f "$tmp/bounds.glb"
+  "$bin" normals "$fx/bounds.gltf" -o "$tmp/bounds.glb" $args -q
+  check "bounds normals $args: exit 0" test $? -eq 0
+  check "bounds normals $args: valid (no ACCESSOR_MIN/MAX_MISMATCH)" valid "$tmp/bounds.glb"
+  check "bounds normals $args: TEXCOORD_0 max is (0.5, 0.5), the unused vertex's (1, 1) gone" "$py" -c '
+import json,struct,sys
+d=open(sys.argv[1],"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n])
+p=j["meshes"][0]["primitives"][0]; a=j["accessors"][p["attributes"]["TEXCOORD_0"]]
+assert a["max"]==[0.5,0.5] or sys.argv[2]=="", a' "$tmp/bounds.glb" "$args"
+done
+
+# An accessor that does not start on a multiple of its component size (corpus TestScene.gltf has
+# three): copied to an aligned view, so the output is valid; its values are kept.
+"$bin" normals "$fx/misaligned.gltf" -o "$tmp/aligned.glb" --recompute -q
+check "misaligned accessor: output valid" valid "$tmp/aligned.glb"
+check "misaligned accessor: TEXCOORD_0 kept" gcheck keep "$fx/misaligned.gltf" "$tmp/aligned.glb" --changed NORMAL
+
+# Replaced accessors leave nothing behind (issue 28, 6): repeated normals --recompute keeps the
+# accessor and bufferView counts and the size; the validator finds no more unused objects than in
+# the input (one: a TEXCOORD_0 that no material uses).
+"$bin" normals "$fx/rich.glb" -o "$tmp/p1.glb" --recompute --crease 30 -q
+"$bin" normals "$tmp/p1.glb" -o "$tmp/p2.glb" --recompute -q
+"$bin" normals "$tmp/p2.glb" -o "$tmp/p3.glb" --recompute --crease 30 -q
+"$bin" transform "$tmp/p3.glb" -o "$tmp/p4.glb" --scale 2 -q
+valid "$fx/rich.glb"; unused_in=$(grep -c UNUSED_OBJECT "$tmp/validator.txt")
+for f in p1 p2 p3 p4; do
+  check "prune $f: valid" valid "$tmp/$f.glb"
+  if [ -n "$validate" ]; then
+    check "prune $f: no more UNUSED_OBJECT than the input ($unused_in)" test "$(grep -c UNUSED_OBJECT "$tmp/validator.txt")" -eq "$unused_in"
+  fi
+  check "prune $f: kept" gcheck keep "$fx/rich.glb" "$tmp/$f.glb" --changed NORMAL,POSITION,TANGENT
+done
+check "prune: p1 and p3 have the same counts and size" "$py" -c '
+import json,struct,sys
+def head(f):
+  d=open(f,"rb").read(); n=struct.unpack_from("<I",d,12)[0]; j=json.loads(d[20:20+n])
+  return len(j["accessors"]),len(j["bufferViews"]),j["buffers"][0]["byteLength"]
+a,b=head(sys.argv[1]),head(sys.argv[2]); assert a==b, (a,b)' "$tmp/p1.glb" "$tmp/p3.glb"
+
+# Compressed glTF (issue 28, 5): Draco and meshopt files made by the libraries' own encoders
+# (tests/gltf/compressed_fixtures.h, built as gltf_compressed_fixtures beside the binary) and the
+# same mesh uncompressed. Every command reads them; glTF outputs are uncompressed, valid, with a
+# note; the decoded triangles (positions, normals, texture coordinates) equal the uncompressed file's.
+fixtures_bin=$(dirname "$bin")/gltf_compressed_fixtures
+mkdir -p "$tmp/cz"
+if [ -x "$fixtures_bin" ] && "$fixtures_bin" "$tmp/cz"; then
+  for c in draco meshopt; do
+    ext=KHR_draco_mesh_compression; [ $c = meshopt ] && ext=EXT_meshopt_compression
+    "$bin" normals "$tmp/cz/$c.glb" -o "$tmp/cz/n_$c.glb" 2> "$tmp/err.txt"
+    check "$c: normals exit 0" test $? -eq 0
+    check "$c: a note names the decoded $ext" grep -q "$ext) decoded (glTF output is written uncompressed)" "$tmp/err.txt"
+    check "$c: decoded triangles equal the uncompressed file's" gcheck keep "$tmp/cz/plain.glb" "$tmp/cz/n_$c.glb"
+    check "$c: output valid" valid "$tmp/cz/n_$c.glb"
+    check "$c: output uncompressed (no extension, no fallback)" sh -c "! grep -a -q -e '$ext' -e fallback '$tmp/cz/n_$c.glb'"
+    if [ -n "$validate" ]; then
+      check "$c: no unused object (the compressed bytes are gone)" sh -c "! grep -q UNUSED_OBJECT.*buffer '$tmp/validator.txt'"
+    fi
+    "$bin" normals "$tmp/cz/$c.glb" -o "$tmp/cz/r_$c.gltf" --recompute -q
+    check "$c: normals --recompute to .gltf valid" valid "$tmp/cz/r_$c.gltf"
+    "$bin" transform "$tmp/cz/$c.glb" -o "$tmp/cz/t_$c.glb" --scale 2 -q
+    check "$c: transform valid" valid "$tmp/cz/t_$c.glb"
+    "$bin" repair "$tmp/cz/$c.glb" -o "$tmp/cz/p_$c.glb" -q
+    check "$c: repair valid" valid "$tmp/cz/p_$c.glb"
+    "$bin" bake-lighting "$tmp/cz/$c.glb" -o "$tmp/cz/b_$c.glb" --scene "$src/data/scenes/studio.json" -q
+    check "$c: bake-lighting valid" valid "$tmp/cz/b_$c.glb"
+    "$bin" occlusion "$tmp/cz/$c.glb" -o "$tmp/cz/o_$c.glb" --samples 4 -q
+    check "$c: occlusion valid" valid "$tmp/cz/o_$c.glb"
+    "$bin" render "$tmp/cz/$c.glb" -o "$tmp/cz/$c.png" --scene "$src/data/scenes/studio.json" --size 32,24 2> "$tmp/err.txt"
+    check "$c: render exit 0" test $? -eq 0
+    check "$c: render notes the decoding too (the one-mesh reader)" grep -q "$ext) decoded" "$tmp/err.txt"
+    "$bin" info "$tmp/cz/$c.glb" --json > "$tmp/cz/i_$c.json" 2> /dev/null
+    "$bin" info "$tmp/cz/plain.glb" --json > "$tmp/cz/i_plain.json" 2> /dev/null
+    check "$c: info counts equal the uncompressed file's" "$py" -c '
+import json,sys
+a=json.load(open(sys.argv[1]))["stats"]; b=json.load(open(sys.argv[2]))["stats"]
+assert (a["vertices"],a["faces"])==(b["vertices"],b["faces"]), (a,b)' "$tmp/cz/i_$c.json" "$tmp/cz/i_plain.json"
+    if command -v assimp > /dev/null && assimp export "$tmp/cz/$c.glb" "$tmp/cz/ai_$c.obj" > /dev/null 2>&1; then
+      check "$c: decoded positions equal assimp's reading of the same file" "$py" -c '
+import json,subprocess,sys
+ours=json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"0","0","POSITION"]))
+theirs=[[float(x) for x in l.split()[1:4]] for l in open(sys.argv[4]) if l.startswith("v ")]
+assert len(ours)==len(theirs), (len(ours),len(theirs))
+for a,b in zip(sorted(ours),sorted(theirs)): assert max(abs(x-y) for x,y in zip(a,b))<1e-6, (a,b)' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/cz/n_$c.glb" "$tmp/cz/ai_$c.obj"
+    else
+      echo "skipped: assimp comparison of $c.glb (assimp cannot read it)"
+    fi
+  done
+else
+  check "compressed fixtures: build target gltf_compressed_fixtures" false
+fi
 
 # A second writer: assimp (assimp-utils) exports OBJ -> glb/gltf; we read, compute, validate.
 if command -v assimp > /dev/null; then

@@ -215,6 +215,52 @@ def write_glb(path, doc, binary_data, png):
         f.write(out)
 
 
+def small_fixtures(out):
+    """Files with nothing for a step to do, and bounds a writer must keep exact (issue 27, 15-16)."""
+    def embedded(b, doc, name):
+        doc["buffers"] = [{"uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(b.bin)).decode(),
+                           "byteLength": len(b.bin)}]
+        doc["bufferViews"], doc["accessors"] = b.views, b.accessors
+        with open(os.path.join(out, name), "w") as f:
+            json.dump(doc, f)
+    # Only POINTS and LINES primitives.
+    b = Builder()
+    p = b.floats([(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0)], "VEC3", minmax=True)
+    embedded(b, {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+                 "meshes": [{"primitives": [{"attributes": {"POSITION": p}, "mode": 0},
+                                            {"attributes": {"POSITION": p}, "mode": 1}]}]}, "points_lines.gltf")
+    # A scene without nodes (and no mesh).
+    with open(os.path.join(out, "no_nodes.gltf"), "w") as f:
+        json.dump({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"name": "empty"}]}, f)
+    # Two triangles and a vertex no face uses, whose TEXCOORD_0 (1, 1) is the only one at the
+    # maximum: min/max as the input states them are exact for the input, not for an output that
+    # drops that vertex. NORMAL with a min/max that does not hold.
+    b = Builder()
+    p = b.floats([(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0), (5, 5, 5)], "VEC3", minmax=True)
+    t = b.floats([(0, 0), (0.5, 0), (0, 0.5), (0.5, 0.5), (1, 1)], "VEC2", minmax=True)
+    n = b.floats([(0, 0, 1)] * 5, "VEC3")
+    b.accessors[n]["min"], b.accessors[n]["max"] = [0, 0, 0.5], [0, 0, 1.5]
+    i = b.accessor(b.view(struct.pack("<6H", 0, 1, 2, 2, 1, 3), target=34963), 5123, 6, "SCALAR")
+    embedded(b, {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+                 "meshes": [{"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t, "NORMAL": n},
+                                             "indices": i}]}]}, "bounds.gltf")
+
+
+def misaligned_fixture(out):
+    """TEXCOORD_0 floats starting 2 bytes into their view (as some exporters write them; the
+    validator's ACCESSOR_TOTAL_OFFSET_ALIGNMENT): a writer must not pass that on."""
+    b = Builder()
+    p = b.floats([(0, 0, 0), (1, 0, 0), (0, 1, 0)], "VEC3", minmax=True)
+    uv = b.view(b"\0\0" + struct.pack("<6f", 0, 0, 1, 0, 0, 1))
+    t = b.accessor(uv, 5126, 3, "VEC2", offset=2)
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+           "meshes": [{"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t}}]}],
+           "buffers": [{"uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(b.bin)).decode(),
+                        "byteLength": len(b.bin)}], "bufferViews": b.views, "accessors": b.accessors}
+    with open(os.path.join(out, "misaligned.gltf"), "w") as f:
+        json.dump(doc, f)
+
+
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
@@ -246,8 +292,21 @@ def main():
     bad("accessor_overrun", lambda d: d["accessors"][0].update(count=2400))
     bad("wrong_component_type", lambda d: d["accessors"][0].update(componentType=5125))
     bad("recursive_nodes", lambda d: d["nodes"][8].update(children=[7]))
+    # A Draco extension whose bufferView holds no Draco data (the cube's positions): does not decode.
     bad("draco", lambda d: d["meshes"][0]["primitives"][0].setdefault("extensions", {}).update(
         KHR_draco_mesh_compression={"bufferView": 0, "attributes": {"POSITION": 0}}))
+    small_fixtures(out)
+    misaligned_fixture(out)
+
+    # Schema type errors, as in assimp's test/models/glTF2/wrongTypes (written here anew): the
+    # Khronos validator rejects each; so must we, naming the JSON path.
+    bad("type_scene_name", lambda d: d["scenes"][0].update(name=42))
+    bad("type_texture_index", lambda d: d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"].update(index=-1))
+    bad("type_not_object", lambda d: d["materials"][0].update(pbrMetallicRoughness=["not an object"]))
+    bad("type_count_string", lambda d: d["accessors"][1].update(count="24"))
+    bad("type_extensions", lambda d: d.update(extensions=["KHR_lights_punctual"]))
+    bad("type_node_mesh", lambda d: d["nodes"][0].update(mesh=99))
+
     # NaN in POSITION: a copy of the binary with vertex 0's x replaced.
     nan_bin = bytearray(b.bin)
     off = doc["bufferViews"][doc["accessors"][0]["bufferView"]]["byteOffset"]

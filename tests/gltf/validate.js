@@ -1,7 +1,8 @@
 // validate.js: runs the Khronos glTF Validator (npm gltf-validator) over files.
 // Usage: node validate.js FILE.glb|FILE.gltf ...   (NODE_PATH must reach gltf-validator)
 // Prints one line per file: "FILE: N errors, N warnings" and each error's code, message and JSON
-// pointer; exits 1 if any file has an error (warnings and infos are printed, not failures).
+// pointer, then each warning and info; exits 1 if any file has an error (warnings and infos are
+// printed, not failures).
 'use strict';
 const fs = require('fs');
 const path = require('path');
@@ -21,7 +22,8 @@ async function validate(file) {
   const issues = report.issues;
   console.log(`${file}: ${issues.numErrors} errors, ${issues.numWarnings} warnings, ${issues.numInfos} infos`);
   for (const m of issues.messages)
-    if (m.severity <= 1) console.log(`  ${m.severity === 0 ? 'error' : 'warning'} ${m.code}: ${m.message} (${m.pointer || ''})`);
+    if (m.severity <= 2)
+      console.log(`  ${['error', 'warning', 'info'][m.severity]} ${m.code}: ${m.message} (${m.pointer || ''})`);
   return issues.numErrors;
 }
 

@@ -79,11 +79,14 @@ bool detect_gltf(std::string_view bytes) {
 // scene's nodes (gltf/gltf_scene.h); the CLI keeps the whole document instead (cli/driver.cpp).
 Mesh read_gltf_entry(std::string_view bytes, const std::string& name, ReadInfo& info) {
   const GltfDocument doc = read_gltf(bytes, name);
+  info.notes.insert(info.notes.end(), doc.notes.begin(), doc.notes.end());  // compressed geometry decoded
   return gltf_world_mesh(doc, info.notes);
 }
 void write_gltf_entry(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info) {
   GltfWriteResult result;
-  out = write_gltf(gltf_document_from_mesh(mesh), options.binary && !gltf_name_is_text(options.name), options.name, result);
+  GltfDocument doc = gltf_document_from_mesh(mesh);
+  doc.unlit_materials = options.gltf_unlit;
+  out = write_gltf(doc, options.binary && !gltf_name_is_text(options.name), options.name, result);
   info.split_vertices += result.split_vertices;
   for (auto& n : result.notes) info.notes.push_back(n);
 }

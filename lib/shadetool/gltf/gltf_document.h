@@ -22,12 +22,17 @@
 // attribute is gathered through the split; when it changes the vertex count otherwise (repair's
 // welding) and the primitive has attributes or morph targets that cannot follow, nothing is
 // written (Error naming them: dropping them would break the materials, skins and weights that
-// refer to them).
+// refer to them). Last (engine/gltf_tidy.h): accessors not aligned to their component size are
+// copied to aligned views, accessors and views nothing refers to any more are removed with their
+// bytes (unless an unknown extension could refer to them: a note), every min/max is made exact.
+// With unlit_materials (baked colours, gltf/gltf_baked.h), materials get KHR_materials_unlit.
 //
-// Bad input (Error `FILE: JSON.PATH: what`): a missing buffer file, a view or accessor beyond its
+// Bad input (Error `FILE: JSON.PATH: what`): a property whose JSON type is not the schema's (a
+// number for a name, -1 for an index, an array for an object: engine/gltf_schema.h), a missing buffer file, a view or accessor beyond its
 // buffer, an index out of range, component types the spec forbids for an attribute, NaN/Inf in
-// POSITION, a node graph that is not a forest (recursion), KHR_draco_mesh_compression or
-// EXT_meshopt_compression (refused: not decoded).
+// POSITION, a node graph that is not a forest (recursion), compressed data that does not decode.
+// KHR_draco_mesh_compression and EXT_meshopt_compression are decoded on reading (libdraco,
+// libmeshoptimizer: engine/gltf_decompress.h) and written uncompressed, with a note.
 #pragma once
 
 #include <cstddef>
@@ -69,6 +74,11 @@ struct GltfDocument {
   std::vector<GltfPrimitive> primitives;     // triangle primitives, in file order
   std::size_t passed_through_primitives = 0; // POINTS / LINES primitives left as they are
   bool was_binary = false;                   // read from a .glb
+  std::vector<std::string> notes;            // what reading changed (compressed geometry decoded)
+  // Written with KHR_materials_unlit (baked colours, gltf/gltf_baked.h): a fresh document gets one
+  // unlit material; a document as read gets the extension on its triangle primitives' materials
+  // (one unlit material for those without).
+  bool unlit_materials = false;
 };
 
 // Parses a .glb or .gltf (told apart by the bytes: "glTF" magic). `name` is the file's path:

@@ -11,6 +11,8 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 #include "engine/gltf_accessor.h"
+#include "engine/gltf_decompress.h"
+#include "engine/gltf_schema.h"
 #include "engine/gltf_source.h"
 
 namespace shadetool {
@@ -45,32 +47,6 @@ bool has_extension(const json& j, const char* ext) {
       for (const auto& e : j[key])
         if (e.is_string() && e.get<std::string>() == ext) return true;
   return false;
-}
-
-// Compressed geometry is refused with one line (not decoded: no packaged decoder is linked).
-void refuse_compression(const json& j, const std::string& name) {
-  if (!j.contains("meshes") || !j["meshes"].is_array()) return;
-  for (std::size_t m = 0; m < j["meshes"].size(); ++m) {
-    const json& mesh = j["meshes"][m];
-    if (!mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
-    for (std::size_t p = 0; p < mesh["primitives"].size(); ++p) {
-      const json& prim = mesh["primitives"][p];
-      if (prim.contains("extensions") && prim["extensions"].is_object() &&
-          prim["extensions"].contains("KHR_draco_mesh_compression"))
-        fail(name, 0, "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) +
-                          "].extensions.KHR_draco_mesh_compression: Draco-compressed geometry is not supported "
-                          "(decompress it first, e.g. `npx @gltf-transform/cli copy IN OUT`)");
-    }
-  }
-  if (j.contains("bufferViews") && j["bufferViews"].is_array())
-    for (std::size_t v = 0; v < j["bufferViews"].size(); ++v) {
-      const json& bv = j["bufferViews"][v];
-      if (bv.is_object() && bv.contains("extensions") && bv["extensions"].is_object() &&
-          (bv["extensions"].contains("EXT_meshopt_compression") || bv["extensions"].contains("KHR_meshopt_compression")))
-        fail(name, 0, "bufferViews[" + std::to_string(v) +
-                          "].extensions.EXT_meshopt_compression: meshopt-compressed buffers are not supported "
-                          "(decompress them first)");
-    }
 }
 
 // Every external buffer must be there: one line naming it, before tinygltf's own message.
@@ -251,7 +227,9 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
     fail(name, 0, "not valid glTF JSON: " + what.substr(what.find(']') == std::string::npos ? 0 : what.find(']') + 2));
   }
   if (!source->json.is_object()) fail(name, 0, "not valid glTF JSON: the document is not an object");
-  refuse_compression(source->json, name);
+  io::gltf::require_schema_types(source->json, name);
+  io::gltf::CompressedPlan compressed;  // what the loader must not see (engine/gltf_decompress.h)
+  std::string edited_json = io::gltf::prepare_compressed(*source, compressed);
   require_buffer_files(source->json, name);
   require_node_forest(source->json, name);
 
@@ -261,11 +239,22 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
   std::string err, warn;
   std::string base = fs::path(name).parent_path().string();
   if (base.empty()) base = ".";
+  std::string glb;  // a GLB whose JSON chunk was edited: header, the edited chunk, the rest as read
+  if (binary && !edited_json.empty()) {
+    while (edited_json.size() % 4) edited_json += ' ';
+    const std::string_view rest = bytes.substr(20 + json_text.size());
+    const std::uint32_t header[5] = {0x46546C67u, 2, std::uint32_t(20 + edited_json.size() + rest.size()),
+                                     std::uint32_t(edited_json.size()), 0x4E4F534Au};
+    glb.append(reinterpret_cast<const char*>(header), sizeof header);
+    glb += edited_json;
+    glb += rest;
+  }
+  const std::string_view glb_bytes = glb.empty() ? bytes : std::string_view(glb);
+  const std::string_view text = edited_json.empty() ? json_text : std::string_view(edited_json);
   const bool ok = binary ? loader.LoadBinaryFromMemory(&source->model, &err, &warn,
-                                                       reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                       unsigned(bytes.size()), base)
-                         : loader.LoadASCIIFromString(&source->model, &err, &warn, json_text.data(),
-                                                      unsigned(json_text.size()), base);
+                                                       reinterpret_cast<const unsigned char*>(glb_bytes.data()),
+                                                       unsigned(glb_bytes.size()), base)
+                         : loader.LoadASCIIFromString(&source->model, &err, &warn, text.data(), unsigned(text.size()), base);
   if (!ok) {
     std::string line = err.empty() ? std::string("tinygltf could not read the file") : err;
     for (char& c : line)
@@ -276,6 +265,7 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
 
   GltfDocument doc;
   doc.was_binary = binary;
+  io::gltf::decode_compressed(*source, compressed, doc.notes);
   const bool quantized = has_extension(source->json, "KHR_mesh_quantization");
   const tinygltf::Model& model = source->model;
   for (std::size_t m = 0; m < model.meshes.size(); ++m)

@@ -18,6 +18,7 @@
 #endif
 #include "engine/gltf_accessor.h"
 #include "engine/gltf_source.h"
+#include "engine/gltf_tidy.h"
 
 namespace shadetool {
 
@@ -484,6 +485,40 @@ std::string uri_escape(const std::string& s) {
   return out;
 }
 
+// KHR_materials_unlit on the materials of the document's triangle primitives; one unlit material
+// (white, non-metallic: COLOR_0 is what shows) for those without a material.
+void add_unlit_materials(const GltfDocument& doc, json& j, GltfWriteResult& result) {
+  if (!j.contains("materials") || !j["materials"].is_array()) j["materials"] = json::array();
+  json& materials = j["materials"];
+  long fresh = -1;
+  std::size_t marked = 0;
+  for (const GltfPrimitive& gp : doc.primitives) {
+    json& jprim = j["meshes"][gp.mesh_index]["primitives"][gp.primitive_index];
+    if (jprim.contains("material") && jprim["material"].is_number_integer() && jprim["material"].get<long>() >= 0 &&
+        jprim["material"].get<std::size_t>() < materials.size()) {
+      json& m = materials[jprim["material"].get<std::size_t>()];
+      if (!m.contains("extensions") || !m["extensions"].is_object()) m["extensions"] = json::object();
+      if (!m["extensions"].contains("KHR_materials_unlit")) m["extensions"]["KHR_materials_unlit"] = json::object(), ++marked;
+      continue;
+    }
+    if (fresh < 0) {
+      materials.push_back({{"name", "baked colours (unlit)"},
+                           {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+                           {"extensions", {{"KHR_materials_unlit", json::object()}}}});
+      fresh = long(materials.size() - 1);
+    }
+    jprim["material"] = fresh;
+  }
+  if (materials.empty()) j.erase("materials");
+  if (!j.contains("extensionsUsed") || !j["extensionsUsed"].is_array()) j["extensionsUsed"] = json::array();
+  bool listed = false;
+  for (const json& e : j["extensionsUsed"]) listed = listed || (e.is_string() && e.get<std::string>() == "KHR_materials_unlit");
+  if (!listed) j["extensionsUsed"].push_back("KHR_materials_unlit");
+  if (doc.source && (marked > 0 || fresh >= 0))
+    result.notes.push_back("KHR_materials_unlit on " + std::to_string(marked + (fresh >= 0)) +
+                           " materials (--unlit): viewers show the baked colours unlit");
+}
+
 }  // namespace
 
 std::string gltf_buffer_path(const std::string& path) {
@@ -545,6 +580,13 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
     json& jprim = j["meshes"][gp.mesh_index]["primitives"][gp.primitive_index];
     writer.write(gp, jprim);
   }
+
+  if (doc.unlit_materials) add_unlit_materials(doc, j, result);
+
+  // What a command replaced leaves nothing behind; every accessor aligned, every bound exact.
+  io::gltf::align_accessors(j, out.bytes, result.notes);
+  io::gltf::prune_unreferenced(j, out.bytes, result.notes, src && src->compact_buffers);
+  io::gltf::exact_bounds(j, out.bytes, result.notes);
 
   out.align(4);
   if (out.bytes.empty()) {

@@ -27,6 +27,8 @@ struct WriteOptions {
   // off for library users and test fixtures that must write such files on purpose). STL facet
   // normals are never refused: a bad one is written as its triangle's own.
   bool refuse_unusable_normals = false;
+  // glTF: the mesh's material gets KHR_materials_unlit (baked colours: gltf/gltf_baked.h).
+  bool gltf_unlit = false;
 };
 
 struct WriteInfo {

@@ -15,6 +15,7 @@ struct GltfSource {
   std::string name;             // the input's path, for messages
   nlohmann::json json;          // the document as read
   tinygltf::Model model;        // buffers[i].data loaded; images[i].image = the file's bytes
+  bool compact_buffers = false; // compressed bytes were decoded: the writer drops what no view holds
 };
 
 }  // namespace shadetool
