@@ -12,7 +12,10 @@
 #include <shadetool/core/validate.h>
 #include "driver.h"
 #include "number_flags.h"
+#include <shadetool/files/mesh_files.h>
 #include <shadetool/gltf/gltf_morph_normals.h>
+#include <shadetool/normals/tangent_vertices.h>
+#include <shadetool/normals/tangents.h>
 #include <shadetool/normals/update_mesh_normals.h>
 #include "usage_error.h"
 
@@ -26,7 +29,44 @@ struct NormalsOptions {
   bool recompute = false;
   bool faces = false;
   std::string precision = "double";
+  bool tangents = false;
 };
+
+// The format the step's mesh is written in: --format, else -o's extension, else the input's.
+shadetool::Format written_format(const IoOptions& io, const std::string& input) {
+  if (!io.format.empty()) return shadetool::parse_format_name(io.format, "--format");
+  if (!io.output.empty() && io.output != "-") return shadetool::format_from_extension(io.output);
+  try {
+    return shadetool::format_from_extension(input);
+  } catch (const shadetool::Error&) {
+    return shadetool::Format::Auto;
+  }
+}
+
+// --tangents on a mesh written to a non-glTF file: MikkTSpace frames per corner; PLY carries them
+// as vertex properties tx ty tz tw (vertices split where corners differ), other formats cannot.
+void add_tangents(shadetool::Mesh& mesh, const std::string& input, shadetool::Format format, FileResult& r) {
+  if (!mesh.has_texcoords()) {
+    r.notes.push_back("--tangents: the mesh has no texture coordinates: no tangents (MikkTSpace needs them)");
+    r.stats["tangents"] = 0;
+    return;
+  }
+  const shadetool::TangentFrames frames = shadetool::mikktspace_tangents(mesh);
+  r.stats["tangents"] = frames.tangents.size() / 4;
+  r.stats["tangent_fallback_corners"] = frames.fallback_corners;
+  if (frames.fallback_corners > 0)
+    r.notes.push_back(fmt::format("--tangents: {} corners without a texture coordinate: a tangent perpendicular to the normal, w = +1",
+                                  frames.fallback_corners));
+  if (format != shadetool::Format::Ply) {
+    const char* name = format == shadetool::Format::Auto ? "the output format" : shadetool::format_extension(format);
+    r.notes.push_back(fmt::format("--tangents: {} cannot hold tangents: computed, not written (write .ply or .glb)", name));
+    return;
+  }
+  const std::size_t added = shadetool::store_tangents_per_vertex(mesh, frames.tangents);
+  r.stats["tangent_split_vertices"] = added;
+  r.notes.push_back(fmt::format("--tangents: written as vertex properties tx ty tz tw ({} vertices split where corners' frames differ)", added));
+  (void)input;
+}
 
 shadetool::Weighting parse_weight(const std::string& w) {
   if (w == "uniform") return shadetool::Weighting::Uniform;
@@ -59,7 +99,11 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
   auto* faces = sub->add_flag("--faces", opt.faces, "Write one normal per face instead of vertex normals");
   sub->add_option("--precision", opt.precision, "Accumulate in double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
+  auto* tangents = sub->add_flag("--tangents", opt.tangents,
+                                  "Also compute MikkTSpace tangent frames (xyz, w = handedness) from the normals and "
+                                  "texture coordinates: glTF TANGENT, PLY tx ty tz tw");
   faces->excludes(crease);
+  faces->excludes(tangents);
   return [weight, faces] {
     if (faces->count() > 0 && weight->count() > 0)
       throw UsageError("--weight applies to vertex and corner normals, not to --faces");
@@ -86,6 +130,7 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
           // Normals of the other kind pass through unchanged (e.g. an STL's facet normals when vertex
           // normals are computed): none of them may carry NaN/Inf into the output.
           shadetool::require_finite_normals(mesh, input, "use --recompute to replace the input's normals (or `shadetool repair`)");
+          if (opt.tangents && !r.gltf) add_tangents(mesh, input, written_format(io, input), r);
           if (rep.kept) {
             r.notes.push_back(fmt::format("input has {}: kept unchanged, nothing computed (use --recompute to replace them)",
                                           rep.kept_what));
