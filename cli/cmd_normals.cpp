@@ -1,6 +1,7 @@
 // cmd_normals.cpp: `shadetool normals IN -o OUT [--weight uniform|area|angle|max] [--crease DEG]
 // [--recompute] [--faces] [--precision double|float] [--stats]`.
 // Parses, calls lib/shadetool/normals/update_mesh_normals.h, prints notes and counts; exit codes in driver.h.
+#include <algorithm>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -14,6 +15,7 @@
 #include "number_flags.h"
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/gltf/gltf_morph_normals.h>
+#include <shadetool/gltf/gltf_tangents.h>
 #include <shadetool/normals/tangent_vertices.h>
 #include <shadetool/normals/tangents.h>
 #include <shadetool/normals/update_mesh_normals.h>
@@ -58,8 +60,11 @@ void add_tangents(shadetool::Mesh& mesh, const std::string& input, shadetool::Fo
     r.notes.push_back(fmt::format("--tangents: {} corners without a texture coordinate: a tangent perpendicular to the normal, w = +1",
                                   frames.fallback_corners));
   if (format != shadetool::Format::Ply) {
-    const char* name = format == shadetool::Format::Auto ? "the output format" : shadetool::format_extension(format);
-    r.notes.push_back(fmt::format("--tangents: {} cannot hold tangents: computed, not written (write .ply or .glb)", name));
+    if (format == shadetool::Format::Gltf)
+      r.notes.push_back("--tangents: computed, not written: glTF made from another format gets no TANGENT (write .ply, or start from a glTF)");
+    else
+      r.notes.push_back(fmt::format("--tangents: {} cannot hold tangents: computed, not written (write .ply, or a glTF from a glTF)",
+                                    format == shadetool::Format::Auto ? "the output format" : shadetool::format_extension(format)));
     return;
   }
   const std::size_t added = shadetool::store_tangents_per_vertex(mesh, frames.tangents);
@@ -131,6 +136,16 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
           // normals are computed): none of them may carry NaN/Inf into the output.
           shadetool::require_finite_normals(mesh, input, "use --recompute to replace the input's normals (or `shadetool repair`)");
           if (opt.tangents && !r.gltf) add_tangents(mesh, input, written_format(io, input), r);
+          if (r.gltf && r.gltf_document) {
+            // New normals: TANGENT recomputed (or removed when it cannot be); kept normals: only
+            // --tangents adds missing ones.
+            const bool had = std::find(r.gltf->attributes.begin(), r.gltf->attributes.end(), "TANGENT") != r.gltf->attributes.end();
+            if (!rep.kept || (opt.tangents && !had)) {
+              const std::string note = shadetool::gltf_update_tangents(*r.gltf_document, *r.gltf, opt.tangents);
+              if (!note.empty()) r.notes.push_back(note);
+              r.stats["tangents"] = r.gltf->corner_tangents.size() / 4;
+            }
+          }
           if (rep.kept) {
             r.notes.push_back(fmt::format("input has {}: kept unchanged, nothing computed (use --recompute to replace them)",
                                           rep.kept_what));
