@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 #include <sys/stat.h>
+#include <unistd.h>
 #include <vector>
 
 #include <shadetool/core/error.h>
@@ -122,7 +123,9 @@ namespace {
 // The reference run under node, from the build tree (npm install on first use). Empty when not available.
 std::string reference_dir() {
   static std::string dir = [] {
-    const std::string prefix = std::string(std::getenv("PWD") ? std::getenv("PWD") : ".") + "/mikktspace-node";
+    char cwd[4096];
+    if (!::getcwd(cwd, sizeof cwd)) return std::string();
+    const std::string prefix = std::string(cwd) + "/mikktspace-node";  // ctest runs tests in the build tree
     struct stat st;
     if (::stat((prefix + "/node_modules/mikktspace").c_str(), &st) != 0) {
       if (std::system("command -v node > /dev/null && command -v npm > /dev/null") != 0) return std::string();
