@@ -32,6 +32,7 @@ struct NormalsOptions {
   bool faces = false;
   std::string precision = "double";
   bool tangents = false;
+  std::string smoothing_groups = "honour";
 };
 
 // The format the step's mesh is written in: --format, else -o's extension, else the input's.
@@ -104,6 +105,11 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
   auto* faces = sub->add_flag("--faces", opt.faces, "Write one normal per face instead of vertex normals");
   sub->add_option("--precision", opt.precision, "Accumulate in double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
+  sub->add_option("--smoothing-groups", opt.smoothing_groups,
+                  "honour (default): an OBJ's smoothing groups (s N / s off) split the normals, s off faces "
+                  "are flat; ignore: smooth across them")
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(shadetool::kSmoothingGroupsNames),
+                                                     std::end(shadetool::kSmoothingGroupsNames))));
   auto* tangents = sub->add_flag("--tangents", opt.tangents,
                                   "Also compute MikkTSpace tangent frames (xyz, w = handedness) from the normals and "
                                   "texture coordinates: glTF TANGENT, PLY tx ty tz tw");
@@ -120,6 +126,8 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
     request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * shadetool::kPi / 180.0 : 0.0;
     request.precision = opt.precision == "float" ? shadetool::Precision::Float : shadetool::Precision::Double;
     request.recompute = opt.recompute;
+    request.smoothing_groups = opt.smoothing_groups == "ignore" ? shadetool::SmoothingGroups::Ignore
+                                                                : shadetool::SmoothingGroups::Honour;
     return run_mesh_command(
         "normals", io,
         [request](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
@@ -168,6 +176,14 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
                              : request.kind == shadetool::NormalKind::Corner ? "corner"
                                                                              : "vertex";
           r.stats["normals"] = kind;
+          if (rep.honoured_groups) {
+            r.stats["normals"] = "corner";
+            r.stats["smoothing_groups"] = rep.smoothing_groups;
+            r.stats["flat_faces"] = rep.flat_faces;
+            r.notes.push_back(fmt::format("corner normals split by the file's smoothing groups ({} groups, {} flat faces: s off); "
+                                          "--smoothing-groups ignore smooths across them",
+                                          rep.smoothing_groups, rep.flat_faces));
+          }
           if (request.kind != shadetool::NormalKind::Face) r.stats["weight"] = opt.weight;
           if (request.kind == shadetool::NormalKind::Corner) {
             r.stats["crease_degrees"] = opt.crease_degrees;
@@ -176,7 +192,7 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
           r.stats["precision"] = opt.precision;
           r.stats["degenerate_faces"] = rep.degenerate_faces;
           const char* fallback_key = request.kind == shadetool::NormalKind::Face     ? "fallback_faces"
-                                     : request.kind == shadetool::NormalKind::Corner ? "fallback_corners"
+                                     : (request.kind == shadetool::NormalKind::Corner || rep.honoured_groups) ? "fallback_corners"
                                                                                      : "fallback_vertices";
           r.stats[fallback_key] = rep.fallback;
           if (rep.discarded > 0) r.notes.push_back(fmt::format("--recompute: {} normals from the input discarded", rep.discarded));
@@ -186,7 +202,7 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
             r.notes.push_back(fmt::format("{} {} had no valid face (isolated or only degenerate faces) or a cancelling sum: "
                                           "given a fallback normal (see man shadetool-normals)",
                                           rep.fallback, request.kind == shadetool::NormalKind::Face     ? "degenerate faces"
-                                                        : request.kind == shadetool::NormalKind::Corner ? "corners"
+                                                        : (request.kind == shadetool::NormalKind::Corner || rep.honoured_groups) ? "corners"
                                                                                                         : "vertices"));
         },
         true);

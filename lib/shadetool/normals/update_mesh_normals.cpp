@@ -1,6 +1,7 @@
 // update_mesh_normals.cpp: see update_mesh_normals.h.
 #include <shadetool/normals/update_mesh_normals.h>
 
+#include <shadetool/core/math_constants.h>
 #include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/invalid_normals.h>
@@ -66,6 +67,23 @@ NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
     return report;
   }
 
+  if (request.kind != NormalKind::Face && request.smoothing_groups == SmoothingGroups::Honour) {
+    const FaceSmoothingGroups groups = face_smoothing_groups(mesh);
+    if (groups.matter()) {
+      const double crease = request.kind == NormalKind::Corner ? request.crease_angle : kPi;
+      CornerNormals cn = corner_normals(mesh, crease, groups.groups, request.weighting, request.precision);
+      mesh.corner_normals = std::move(cn.normals);
+      mesh.corner_normal_index = std::move(cn.corner_index);
+      mesh.vertex_normals.clear();
+      report.computed = rows(mesh.corner_normals);
+      report.fallback = cn.fallback_corners;
+      report.degenerate_faces = cn.degenerate_faces;
+      report.honoured_groups = true;
+      report.smoothing_groups = groups.count;
+      report.flat_faces = groups.flat;
+      return report;
+    }
+  }
   switch (request.kind) {
     case NormalKind::Vertex: {
       VertexNormals vn = vertex_normals(mesh, request.weighting, request.precision);

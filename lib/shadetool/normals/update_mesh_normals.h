@@ -28,6 +28,7 @@
 #include <string>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/normals/smoothing_groups.h>
 #include <shadetool/normals/weighting.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -41,6 +42,10 @@ struct NormalsRequest {
   double crease_angle = 0.0;  // radians, kind Corner only
   Precision precision = Precision::Double;
   bool recompute = false;
+  // Honour: when the mesh's file has smoothing groups that matter (normals/smoothing_groups.h),
+  // kinds Vertex and Corner compute corner normals that never join faces of different groups and
+  // keep `s off` faces flat (crease_angle splits further inside a group; pi for kind Vertex).
+  SmoothingGroups smoothing_groups = SmoothingGroups::Honour;
 };
 
 struct NormalsReport {
@@ -53,6 +58,9 @@ struct NormalsReport {
   std::size_t degenerate_faces = 0;   // faces with no normal (zero area, repeated index, NaN)
   std::size_t dropped = 0;            // shading normals removed for kind Face
   std::size_t discarded = 0;          // normals discarded by `recompute` (rows, all kinds)
+  bool honoured_groups = false;       // corner normals split by the file's smoothing groups
+  std::size_t smoothing_groups = 0;   // distinct groups (s N), when honoured
+  std::size_t flat_faces = 0;         // faces in no group (s off, s 0), when honoured
 };
 
 NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request);
