@@ -2,7 +2,9 @@
 // [--recompute] [--faces] [--precision double|float] [--stats]`.
 // Parses, calls lib/shadetool/normals/update_mesh_normals.h, prints notes and counts; exit codes in driver.h.
 #include <algorithm>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -33,6 +35,8 @@ struct NormalsOptions {
   std::string precision = "double";
   bool tangents = false;
   std::string smoothing_groups = "honour";
+  int weight_strength = 50;
+  double weight_threshold = 0.01;
 };
 
 // The format the step's mesh is written in: --format, else -o's extension, else the input's.
@@ -74,6 +78,20 @@ void add_tangents(shadetool::Mesh& mesh, const std::string& input, shadetool::Fo
   (void)input;
 }
 
+// The --weight names: the four weightings, then Blender's Weighted Normal modes (weighting.h).
+std::vector<std::string> weight_names() {
+  std::vector<std::string> names = {"uniform", "area", "angle", "max"};
+  for (const char* n : shadetool::kRankedWeightingNames) names.push_back(n);
+  return names;
+}
+
+// A Weighted Normal mode's index in kRankedWeightingNames, or -1 for the four plain weightings.
+int ranked_index(const std::string& w) {
+  for (std::size_t i = 0; i < std::size(shadetool::kRankedWeightingNames); ++i)
+    if (w == shadetool::kRankedWeightingNames[i]) return int(i);
+  return -1;
+}
+
 shadetool::Weighting parse_weight(const std::string& w) {
   if (w == "uniform") return shadetool::Weighting::Uniform;
   if (w == "area") return shadetool::Weighting::Area;
@@ -94,8 +112,18 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
   add_io_options(*sub, io, /*writes_mesh=*/true);
   auto* weight = sub->add_option("--weight", opt.weight,
                                  "How face normals are weighted into vertex normals: uniform (Gouraud), area, "
-                                 "angle (Thuermer-Wuethrich, default), max (Max 1999)")
-                     ->check(CLI::IsMember({"uniform", "area", "angle", "max"}));
+                                 "angle (Thuermer-Wuethrich, default), max (Max 1999); or Blender's Weighted Normal "
+                                 "modes face-area, corner-angle, face-area-angle (large faces dominate)")
+                     ->check(CLI::IsMember(weight_names()));
+  auto* strength = sub->add_option("--weight-strength", opt.weight_strength,
+                                   "Weighted Normal modes: Blender's Weight, 1..100 (default 50: every rank alike; "
+                                   "higher: the largest faces dominate)")
+                       ->check(CLI::Range(1, 100))
+                       ->type_name("W");
+  auto* threshold = sub->add_option("--weight-threshold", opt.weight_threshold,
+                                    "Weighted Normal modes: values closer than T share a rank (default 0.01)")
+                        ->check(finite_number(0.0, 1e300))
+                        ->type_name("T");
   auto* crease = sub->add_option("--crease", opt.crease_degrees,
                                  "Per-corner normals: split where the angle between two faces' normals exceeds DEG "
                                  "degrees (0..180); boundary and non-manifold edges always split")
@@ -115,9 +143,12 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
                                   "texture coordinates: glTF TANGENT, PLY tx ty tz tw");
   faces->excludes(crease);
   faces->excludes(tangents);
-  return [weight, faces] {
+  return [weight, faces, strength, threshold] {
     if (faces->count() > 0 && weight->count() > 0)
       throw UsageError("--weight applies to vertex and corner normals, not to --faces");
+    const int ranked = ranked_index(opt.weight);
+    if (ranked < 0 && (strength->count() > 0 || threshold->count() > 0))
+      throw UsageError("--weight-strength and --weight-threshold apply to --weight face-area, corner-angle or face-area-angle");
     shadetool::NormalsRequest request;
     request.kind = opt.faces ? shadetool::NormalKind::Face
                    : opt.crease_degrees >= 0 ? shadetool::NormalKind::Corner
@@ -126,6 +157,12 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
     request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * shadetool::kPi / 180.0 : 0.0;
     request.precision = opt.precision == "float" ? shadetool::Precision::Float : shadetool::Precision::Double;
     request.recompute = opt.recompute;
+    if (ranked >= 0) {
+      request.ranked = true;
+      request.ranked_options.mode = shadetool::RankedWeighting(ranked);
+      request.ranked_options.strength = opt.weight_strength;
+      request.ranked_options.threshold = opt.weight_threshold;
+    }
     request.smoothing_groups = opt.smoothing_groups == "ignore" ? shadetool::SmoothingGroups::Ignore
                                                                 : shadetool::SmoothingGroups::Honour;
     return run_mesh_command(

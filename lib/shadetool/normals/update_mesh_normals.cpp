@@ -67,6 +67,25 @@ NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
     return report;
   }
 
+  if (request.kind != NormalKind::Face && request.ranked) {
+    RankedWeightingOptions options = request.ranked_options;
+    options.crease_angle = request.kind == NormalKind::Corner ? request.crease_angle : -1.0;
+    CornerNormals cn = ranked_normals(mesh, options);
+    if (request.kind == NormalKind::Corner) {
+      mesh.corner_normals = std::move(cn.normals);
+      mesh.corner_normal_index = std::move(cn.corner_index);
+      mesh.vertex_normals.clear();
+      report.computed = rows(mesh.corner_normals);
+    } else {
+      mesh.vertex_normals = std::move(cn.normals);
+      mesh.corner_normals.clear();
+      mesh.corner_normal_index.clear();
+      report.computed = rows(mesh.vertex_normals);
+    }
+    report.fallback = cn.fallback_corners;
+    report.degenerate_faces = cn.degenerate_faces;
+    return report;
+  }
   if (request.kind != NormalKind::Face && request.smoothing_groups == SmoothingGroups::Honour) {
     const FaceSmoothingGroups groups = face_smoothing_groups(mesh);
     if (groups.matter()) {

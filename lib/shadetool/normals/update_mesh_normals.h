@@ -28,6 +28,7 @@
 #include <string>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/normals/ranked_normals.h>
 #include <shadetool/normals/smoothing_groups.h>
 #include <shadetool/normals/weighting.h>
 
@@ -46,6 +47,11 @@ struct NormalsRequest {
   // kinds Vertex and Corner compute corner normals that never join faces of different groups and
   // keep `s off` faces flat (crease_angle splits further inside a group; pi for kind Vertex).
   SmoothingGroups smoothing_groups = SmoothingGroups::Honour;
+  // Blender's Weighted Normal modes instead of `weighting` (normals/ranked_normals.h): kind Vertex
+  // one normal per vertex, kind Corner keep sharp at crease_angle (its crease_angle is set here).
+  // Smoothing groups are not honoured with them.
+  bool ranked = false;
+  RankedWeightingOptions ranked_options;
 };
 
 struct NormalsReport {
