@@ -35,6 +35,7 @@ struct NormalsOptions {
   std::string precision = "double";
   bool tangents = false;
   std::string smoothing_groups = "honour";
+  bool flat_patches = false;
   int weight_strength = 50;
   double weight_threshold = 0.01;
 };
@@ -138,11 +139,14 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
                   "are flat; ignore: smooth across them")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(shadetool::kSmoothingGroupsNames),
                                                      std::end(shadetool::kSmoothingGroupsNames))));
+  auto* flat = sub->add_flag("--flat-patches", opt.flat_patches,
+                             "A vertex all of whose faces lie in one plane gets exactly that plane's normal");
   auto* tangents = sub->add_flag("--tangents", opt.tangents,
                                   "Also compute MikkTSpace tangent frames (xyz, w = handedness) from the normals and "
                                   "texture coordinates: glTF TANGENT, PLY tx ty tz tw");
   faces->excludes(crease);
   faces->excludes(tangents);
+  faces->excludes(flat);
   return [weight, faces, strength, threshold] {
     if (faces->count() > 0 && weight->count() > 0)
       throw UsageError("--weight applies to vertex and corner normals, not to --faces");
@@ -157,6 +161,7 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
     request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * shadetool::kPi / 180.0 : 0.0;
     request.precision = opt.precision == "float" ? shadetool::Precision::Float : shadetool::Precision::Double;
     request.recompute = opt.recompute;
+    request.flat_patches = opt.flat_patches;
     if (ranked >= 0) {
       request.ranked = true;
       request.ranked_options.mode = shadetool::RankedWeighting(ranked);
@@ -213,6 +218,7 @@ RegisterCommand reg(20, [](CLI::App& app) -> std::function<int()> {
                              : request.kind == shadetool::NormalKind::Corner ? "corner"
                                                                              : "vertex";
           r.stats["normals"] = kind;
+          if (opt.flat_patches) r.stats["flat_patches"] = rep.flat_patches;
           if (rep.honoured_groups) {
             r.stats["normals"] = "corner";
             r.stats["smoothing_groups"] = rep.smoothing_groups;

@@ -4,6 +4,7 @@
 #include <shadetool/core/math_constants.h>
 #include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/flat_patches.h>
 #include <shadetool/normals/invalid_normals.h>
 #include <shadetool/normals/vertex_fallback.h>
 #include <shadetool/normals/vertex_normals.h>
@@ -35,9 +36,7 @@ std::size_t count_degenerate(const std::vector<double>& face_normals) {
   return n;
 }
 
-}  // namespace
-
-NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
+NormalsReport compute_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
   NormalsReport report;
   if (request.recompute) {
     report.discarded = rows(mesh.vertex_normals) + rows(mesh.corner_normals) + rows(mesh.face_normals);
@@ -142,6 +141,19 @@ NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
       report.fallback = report.degenerate_faces;
       break;
     }
+  }
+  return report;
+}
+
+}  // namespace
+
+NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
+  NormalsReport report = compute_mesh_normals(mesh, request);
+  if (request.flat_patches && !report.kept && request.kind != NormalKind::Face) {
+    if (mesh.has_corner_normals())
+      report.flat_patches = snap_flat_patches(mesh, mesh.corner_normals, &mesh.corner_normal_index);
+    else if (mesh.has_vertex_normals())
+      report.flat_patches = snap_flat_patches(mesh, mesh.vertex_normals, nullptr);
   }
   return report;
 }

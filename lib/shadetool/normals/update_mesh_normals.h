@@ -52,6 +52,9 @@ struct NormalsRequest {
   // Smoothing groups are not honoured with them.
   bool ranked = false;
   RankedWeightingOptions ranked_options;
+  // Kinds Vertex and Corner: a vertex (smooth group) whose faces all lie in one plane gets exactly
+  // that plane's normal (normals/flat_patches.h).
+  bool flat_patches = false;
 };
 
 struct NormalsReport {
@@ -64,6 +67,7 @@ struct NormalsReport {
   std::size_t degenerate_faces = 0;   // faces with no normal (zero area, repeated index, NaN)
   std::size_t dropped = 0;            // shading normals removed for kind Face
   std::size_t discarded = 0;          // normals discarded by `recompute` (rows, all kinds)
+  std::size_t flat_patches = 0;       // normals replaced by their plane's (flat_patches)
   bool honoured_groups = false;       // corner normals split by the file's smoothing groups
   std::size_t smoothing_groups = 0;   // distinct groups (s N), when honoured
   std::size_t flat_faces = 0;         // faces in no group (s off, s 0), when honoured
