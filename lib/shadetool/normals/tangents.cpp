@@ -250,8 +250,10 @@ void find_neighbours(const Triangles& tris, std::vector<TriInfo>& info) {
       const std::uint32_t a = tris.index[3 * f + i], b = tris.index[3 * f + (i < 2 ? i + 1 : 0)];
       edges[3 * f + i] = {std::min(a, b), std::max(a, b), std::uint32_t(f)};
     }
+  // (i0, i1, f) order: one 64-bit key per edge, f as the tie-break.
   std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
-    return a.i0 != b.i0 ? a.i0 < b.i0 : a.i1 != b.i1 ? a.i1 < b.i1 : a.f < b.f;
+    const std::uint64_t ka = std::uint64_t(a.i0) << 32 | a.i1, kb = std::uint64_t(b.i0) << 32 | b.i1;
+    return ka != kb ? ka < kb : a.f < b.f;
   });
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const Edge& e = edges[i];
@@ -367,7 +369,8 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
   const float threshold_cos = -1.0f;
   std::vector<F3> ps, pt;
   std::vector<std::uint32_t> sub;
-  std::vector<std::vector<std::uint32_t>> unique_subs;
+  // This group's distinct sub-groups: members in one flat buffer (offsets), and their frames.
+  std::vector<std::uint32_t> sub_members, sub_offset;
   std::vector<TSpace> unique_frames;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const Group& group = groups[g];
@@ -379,7 +382,8 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
       ps[j] = project_unit(info[tri[j]].os, n);
       pt[j] = project_unit(info[tri[j]].ot, n);
     }
-    unique_subs.clear();
+    sub_members.clear();
+    sub_offset.assign(1, 0);
     unique_frames.clear();
     for (std::uint32_t i = 0; i < group.count; ++i) {
       const std::uint32_t f = tri[i];
@@ -393,9 +397,13 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
       }
       std::sort(sub.begin(), sub.end());
       std::size_t l = 0;
-      while (l < unique_subs.size() && unique_subs[l] != sub) ++l;
-      if (l == unique_subs.size()) {
-        unique_subs.push_back(sub);
+      const std::size_t known = unique_frames.size();
+      while (l < known && !(sub_offset[l + 1] - sub_offset[l] == sub.size() &&
+                            std::equal(sub.begin(), sub.end(), sub_members.begin() + sub_offset[l])))
+        ++l;
+      if (l == known) {
+        sub_members.insert(sub_members.end(), sub.begin(), sub.end());
+        sub_offset.push_back(std::uint32_t(sub_members.size()));
         unique_frames.push_back(evaluate_frame(sub, in, tris, info, group.representative));
       }
       TSpace& o = out[tris.corner[3 * f + index]];
