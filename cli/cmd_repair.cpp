@@ -13,6 +13,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include <shadetool/gltf/gltf_tangents.h>
 #include "number_flags.h"
 #include <shadetool/repair/repair_mesh.h>
 #include <shadetool/repair/repair_report_json.h>
@@ -135,6 +136,10 @@ RegisterCommand reg(30, [](CLI::App& app) -> std::function<int()> {
           const RepairReport rep = shadetool::repair_mesh(mesh, o);
           add_notes(rep, opt, r);
           add_stats(rep, r);
+          if (r.gltf && r.gltf_document && rep.normals.total() > 0) {  // new normals: TANGENT follows (gltf_tangents.h)
+            const std::string note = shadetool::gltf_update_tangents(*r.gltf_document, *r.gltf, false);
+            if (!note.empty()) r.notes.push_back(note);
+          }
           if (!opt.report.empty()) {
             nlohmann::json j{{"input", input}};
             if (!io.output.empty()) j["output"] = io.output;

@@ -86,3 +86,19 @@ TEST_CASE("glTF: a primitive with TANGENT but nothing to compute them from loses
     CHECK(p.drop_tangents);
   }
 }
+
+TEST_CASE("glTF: transform --normals recompute recomputes TANGENT with the new normals", "[gltf][tangents]") {
+  const std::string in = std::string(SHADETOOL_SOURCE_DIR) + "/data/scene.gltf";
+  const std::string out = "gltf_tangents_shear.glb";
+  const auto run = shadetool_test::run_process(
+      {SHADETOOL_BIN, "transform", in, "--matrix", "1,0.5,0,0,0,1,0,0,0,0,2,0", "--normals", "recompute", "-o", out});
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  CHECK(run.err.find("TANGENT recomputed") != std::string::npos);
+  const GltfDocument doc = read(out);
+  std::size_t checked = 0;
+  for (const GltfPrimitive& p : doc.primitives)
+    if (!p.tangents.empty()) check_frames(doc, p, checked);
+  CHECK(checked > 0);
+  std::remove(out.c_str());
+}
