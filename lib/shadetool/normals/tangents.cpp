@@ -165,6 +165,7 @@ void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) 
   for (std::size_t t = 0; t < T; ++t)
     if (!(tris.flag[t] & kDegenerate)) order.push_back(t);
   tris.good = order.size();
+  if (tris.good == T) return;  // nothing to move
   for (std::size_t t = 0; t < T; ++t)
     if (tris.flag[t] & kDegenerate) order.push_back(t);
   Triangles sorted;
