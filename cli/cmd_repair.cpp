@@ -13,6 +13,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include <shadetool/gltf/gltf_tangents.h>
 #include "number_flags.h"
 #include <shadetool/repair/remove_unreferenced.h>
 #include <shadetool/repair/repair_mesh.h>
@@ -147,6 +148,10 @@ RegisterCommand reg("repair", HelpSection::Edit, [](CLI::App& app) -> std::funct
           if (opt.remove_unreferenced) {
             r.stats["unreferenced_vertices_removed"] = unreferenced;
             if (unreferenced > 0) r.notes.push_back(fmt::format("unreferenced: removed {} no face used", count(unreferenced, "vertex", "vertices")));
+          }
+          if (r.gltf && r.gltf_document && rep.normals.total() > 0) {  // new normals: TANGENT follows (gltf_tangents.h)
+            const std::string note = shadetool::gltf_update_tangents(*r.gltf_document, *r.gltf, false);
+            if (!note.empty()) r.notes.push_back(note);
           }
           if (!opt.report.empty()) {
             nlohmann::json j{{"input", input}};

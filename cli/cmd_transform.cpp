@@ -24,6 +24,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include <shadetool/gltf/gltf_tangents.h>
 #include <shadetool/gltf/gltf_transform.h>
 #include <shadetool/transform/affine_maps.h>
 #include <shadetool/transform/classify_affine.h>
@@ -227,6 +228,13 @@ RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::fu
       }
       if (options.normals == shadetool::NormalsPolicy::Recompute && !had_normals)
         r.notes.push_back("the input has no normals: nothing to recompute");
+      // glTF: recomputed normals get TANGENT recomputed by MikkTSpace (gltf_tangents.h). Mapped
+      // normals keep the mapped tangents: under p -> A p + t each triangle's texture derivative
+      // dP/du maps to A dP/du exactly and stays orthogonal to the cofactor-mapped normal.
+      if (r.gltf && r.gltf_document && had_normals && file_options.normals == shadetool::NormalsPolicy::Recompute) {
+        const std::string note = shadetool::gltf_update_tangents(*r.gltf_document, *r.gltf, false);
+        if (!note.empty()) r.notes.push_back(note);
+      }
     }, OutputKind::Mesh);
   };
 });

@@ -24,7 +24,8 @@ bash_complete() {  # bash_complete WORD...: the completions of the last word
 B=$tmp/shadetool
 check "bash: subcommands" "normals" "$(bash_complete "$B" nor)"
 check "bash: all subcommands" "bake-lighting info normals occlusion render repair transform" "$(bash_complete "$B" "" | tr ' ' '\n' | grep -v '^--' | tr '\n' ' ' | sed 's/ $//')"
-check "bash: a subcommand's flags" "--weight" "$(bash_complete "$B" normals --wei)"
+check "bash: a subcommand's flags" "--weight --weight-strength --weight-threshold" "$(bash_complete "$B" normals --wei)"
+check "bash: one flag" "--weight-threshold" "$(bash_complete "$B" normals --weight-t)"
 check "bash: a flag's values" "angle area" "$(bash_complete "$B" normals a.obj --weight a)"
 check "bash: render's shading values" "flat gouraud phong" "$(bash_complete "$B" render a.obj --shading "")"
 check "bash: inputs are meshes and folders" "a.obj b.PLY dir" "$(bash_complete "$B" info "")"
@@ -43,7 +44,7 @@ if command -v zsh > /dev/null; then
   }
   check "zsh: subcommands" "--help --version bake-lighting info normals occlusion render repair transform" "$(zsh_complete "$B" nor)"
   check "zsh: a subcommand's flags include --weight" "--weight" "$(zsh_complete "$B" normals --wei | tr ' ' '\n' | grep -x -- --weight)"
-  check "zsh: a flag's values" "angle area max uniform" "$(zsh_complete "$B" normals a.obj --weight a)"
+  check "zsh: a flag's values" "angle area corner-angle face-area face-area-angle max uniform" "$(zsh_complete "$B" normals a.obj --weight a)"
   check "zsh: inputs are meshes" "_files -g *.(#i)(obj|ply|off|stl|glb|gltf)(-.)" "$(zsh_complete "$B" info "")"
   check "zsh: --output-dir takes folders" "_files -/" "$(zsh_complete "$B" normals a.obj --output-dir "")"
 else

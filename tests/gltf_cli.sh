@@ -46,7 +46,7 @@ for in in rich.gltf rich.glb embedded.gltf; do
     rm -f "$tmp/$out"
     "$bin" normals "$fx/$in" -o "$tmp/$out" --recompute -q
     check "normals $in -> $out exit 0" test $? -eq 0
-    check "normals $in -> $out keeps everything else" gcheck keep "$fx/$in" "$tmp/$out" --changed NORMAL
+    check "normals $in -> $out keeps everything else" gcheck keep "$fx/$in" "$tmp/$out" --changed NORMAL,TANGENT
     check "normals $in -> $out valid" valid "$tmp/$out"
   done
 done
@@ -59,7 +59,7 @@ j=json.load(open(sys.argv[1])); b=j["buffers"]
 assert len(b)==1 and b[0]["uri"]=="sep%20dir.bin", b
 import os; assert os.path.getsize(sys.argv[2])==b[0]["byteLength"]' "$tmp/sep dir.gltf" "$tmp/sep dir.bin"
 check "gltf -> gltf with a .bin: valid" valid "$tmp/sep dir.gltf"
-check "gltf -> gltf with a .bin: everything else kept" gcheck keep "$fx/rich.gltf" "$tmp/sep dir.gltf" --changed NORMAL
+check "gltf -> gltf with a .bin: everything else kept" gcheck keep "$fx/rich.gltf" "$tmp/sep dir.gltf" --changed NORMAL,TANGENT
 mkdir -p "$tmp/own"
 cp "$fx/rich.gltf" "$tmp/own/a.gltf"
 for f in $("$py" -c 'import json,sys; j=json.load(open(sys.argv[1])); print(" ".join(x["uri"] for x in j.get("buffers",[])+j.get("images",[]) if "uri" in x and not x["uri"].startswith("data:")))' "$fx/rich.gltf"); do cp "$fx/$f" "$tmp/own/"; done
@@ -102,10 +102,10 @@ assert len(d)==24 and max(abs(x) for r in d for x in r)<1e-6, d' "$py" "$src/tes
 
 # --crease and --faces split vertices; every other attribute follows the split.
 "$bin" normals "$fx/rich.glb" -o "$tmp/c.glb" --recompute --crease 30 -q
-check "crease: kept and valid" gcheck keep "$fx/rich.glb" "$tmp/c.glb" --changed NORMAL
+check "crease: kept and valid" gcheck keep "$fx/rich.glb" "$tmp/c.glb" --changed NORMAL,TANGENT
 check "crease: valid" valid "$tmp/c.glb"
 "$bin" normals "$fx/rich.glb" -o "$tmp/f.glb" --faces -q
-check "faces: kept" gcheck keep "$fx/rich.glb" "$tmp/f.glb" --changed NORMAL
+check "faces: kept" gcheck keep "$fx/rich.glb" "$tmp/f.glb" --changed NORMAL,TANGENT
 check "faces: valid" valid "$tmp/f.glb"
 
 # info and repair.

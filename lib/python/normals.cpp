@@ -1,11 +1,13 @@
-// normals.cpp: face_normals, vertex_normals, corner_normals on NumPy arrays: the library's calls
-// (normals/face_normals.h, vertex_normals.h, corner_normals.h), with the GIL released.
+// normals.cpp: face_normals, vertex_normals, corner_normals, tangents on NumPy arrays: the
+// library's calls (normals/face_normals.h, vertex_normals.h, corner_normals.h, tangents.h), with
+// the GIL released.
 #include <cmath>
 
 #include <shadetool/core/validate.h>
 #include <shadetool/core/math_constants.h>
 #include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/tangents.h>
 #include <shadetool/normals/vertex_normals.h>
 
 #include "arrays.h"
@@ -113,6 +115,49 @@ the library's normals/corner_normals.h, what `shadetool normals --crease DEG` wr
   corner_index  uint32 row of `normals` for every corner, shaped like F: (m, k), or (C,) for
                 (indices, offsets) polygons
 )doc") + kMeshArgs + "\n  crease_deg  degrees in [0, 180] (required)\n")
+          .c_str());
+
+  m.def(
+      "tangents",
+      [](py::object V, py::object F, py::object N, py::object UV) {
+        std::shared_ptr<const shadetool::Mesh> mesh = as_mesh(V);
+        FaceLayout layout;
+        if (mesh) {
+          if (!F.is_none() || !N.is_none() || !UV.is_none())
+            throw py::value_error("tangents: with a shadetool.Mesh, F, N and UV must be None (the mesh's own are used)");
+          layout = layout_of(*mesh);
+        } else {
+          if (N.is_none() || UV.is_none()) throw py::value_error("tangents: N (n, 3) and UV (n, 2) are required with arrays");
+          auto owned = std::make_shared<shadetool::Mesh>(owned_mesh(V, F, "tangents", layout));
+          const std::size_t n = owned->num_vertices();
+          owned->vertex_normals = read_double_rows(N, n, 3, "tangents: N");
+          owned->texcoords = read_double_rows(UV, n, 2, "tangents: UV");
+          owned->texcoord_dims = 2;
+          owned->corner_texcoord_index = owned->corner_vertex;
+          mesh = owned;
+        }
+        shadetool::TangentFrames frames;
+        {
+          py::gil_scoped_release nogil;
+          frames = shadetool::mikktspace_tangents(*mesh);  // shadetool::Error -> ValueError (module.cpp)
+        }
+        const py::ssize_t C = py::ssize_t(frames.tangents.size() / 4);
+        if (layout.corners_per_face == 0) return to_numpy(std::move(frames.tangents), {C, 4});
+        const py::ssize_t k = py::ssize_t(layout.corners_per_face);
+        return to_numpy(std::move(frames.tangents), {C / k, k, 4});
+      },
+      py::arg("V"), py::arg("F") = py::none(), py::arg("N") = py::none(), py::arg("UV") = py::none(),
+      (std::string(R"doc(tangents(V, F=None, N=None, UV=None) -> (m, k, 4) or (C, 4) float64
+
+MikkTSpace tangent frames per face corner (the library's normals/tangents.h, what
+`shadetool normals --tangents` writes): xyz a unit tangent, w = +1 or -1 the handedness
+(bitangent = w * cross(normal, tangent)), exactly the reference implementation's frames (Blender,
+Substance, xNormal, glTF), computed in float from the inputs rounded to float.
+  N   (n, 3) float vertex normals (unit)
+  UV  (n, 2) float texture coordinates per vertex (v up; for glTF's TEXCOORD_0 negate w)
+  or V a shadetool.Mesh with normals and texture coordinates (F, N, UV None).
+ValueError when the mesh has no texture coordinates or no normals.
+)doc") + kMeshArgs + "\n")
           .c_str());
 }
 

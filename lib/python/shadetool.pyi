@@ -91,6 +91,13 @@ def corner_normals(
     weight: Weight = ...,
     precision: Precision = ...,
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.uint32]]: ...
+# MikkTSpace frames per corner: (m, k, 4) float64 for (m, k) faces, (C, 4) for polygons; xyz, w = +-1
+def tangents(
+    V: MeshOrVertices,
+    F: Optional[Faces] = ...,
+    N: Optional[FloatArray] = ...,
+    UV: Optional[FloatArray] = ...,
+) -> npt.NDArray[np.float64]: ...
 # (F uint32 in F's layout, report) or, with return_normals=True, (F, N (n, 3) float64, report)
 def repair(
     V: MeshOrVertices,

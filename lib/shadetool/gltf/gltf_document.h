@@ -58,6 +58,10 @@ struct GltfPrimitive {
   std::string json_path;              // "meshes[0].primitives[1]"
   Mesh mesh;                          // what commands change, in object space
   std::vector<double> tangents;       // #V by 4 (xyz, w = handedness +-1), or empty
+  // Tangent frames per corner (#C by 4) a command computed (gltf_tangents.h): when not empty the
+  // writer writes TANGENT from them (vertices split where a vertex's corners differ), added if absent.
+  std::vector<double> corner_tangents;
+  bool drop_tangents = false;         // TANGENT is stale and cannot be recomputed: not written
   std::vector<GltfMorphTarget> targets;
   int color_component_type = 0;       // COLOR_0 as read (5126 float, 5121, 5123); 0: none
   std::vector<std::string> attributes;  // every attribute name as read (POSITION, TEXCOORD_0, ...)

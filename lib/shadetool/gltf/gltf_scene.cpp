@@ -1,5 +1,6 @@
 // gltf_scene.cpp: see gltf_scene.h.
 #include <shadetool/gltf/gltf_scene.h>
+#include <shadetool/gltf/gltf_tangents.h>
 
 #include <algorithm>
 #include <cmath>
@@ -170,24 +171,6 @@ void append_part(Mesh& out, const Mesh& part, const std::vector<double>& uv, Mer
   }
 }
 
-// TEXCOORD_0 of a primitive as read (#V by 2), or empty when it has none or a command changed
-// its vertex count (then `changed` is set).
-std::vector<double> texcoords_of(const GltfDocument& doc, const GltfPrimitive& p, bool& changed) {
-  if (!doc.source) return {};
-  const tinygltf::Model& model = doc.source->model;
-  const auto& prim = model.meshes[p.mesh_index].primitives[p.primitive_index];
-  const auto it = prim.attributes.find("TEXCOORD_0");
-  if (it == prim.attributes.end()) return {};
-  if (p.mesh.num_vertices() != p.read_vertices) {
-    changed = true;
-    return {};
-  }
-  std::vector<double> uv = io::gltf::accessor_doubles(model, it->second, doc.source->name);
-  if (uv.size() != 2 * p.read_vertices)
-    fail(doc.source->name, 0, p.json_path + ".attributes.TEXCOORD_0: not one VEC2 per vertex");
-  return uv;
-}
-
 }  // namespace
 
 std::vector<GltfNodePlacement> gltf_scene_nodes(const GltfDocument& document) {
@@ -271,7 +254,7 @@ Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& not
     const GltfPrimitive& p = document.primitives[i];
     const GltfPrimitivePlacements& where = placements[i];
     bool changed = false;
-    const std::vector<double> uv = texcoords_of(document, p, changed);
+    const std::vector<double> uv = gltf_texcoords(document, p, changed);
     if (changed) uv_changed.push_back(p.json_path);
     if (!p.targets.empty()) morphed.push_back(p.json_path);
     for (std::size_t n : where.singular_nodes) hidden.push_back(node_path(n));

@@ -223,21 +223,45 @@ struct Split {
 
 struct CornerKey {
   std::uint64_t vertex_and_second;
-  std::uint32_t texcoord;
-  bool operator==(const CornerKey& o) const { return vertex_and_second == o.vertex_and_second && texcoord == o.texcoord; }
+  std::uint32_t texcoord, tangent;
+  bool operator==(const CornerKey& o) const {
+    return vertex_and_second == o.vertex_and_second && texcoord == o.texcoord && tangent == o.tangent;
+  }
 };
 struct CornerKeyHash {
   std::size_t operator()(const CornerKey& k) const {
-    return std::hash<std::uint64_t>()(k.vertex_and_second ^ (std::uint64_t(k.texcoord) * 0x9E3779B97F4A7C15ull));
+    return std::hash<std::uint64_t>()(k.vertex_and_second ^ (std::uint64_t(k.texcoord) * 0x9E3779B97F4A7C15ull) ^
+                                      (std::uint64_t(k.tangent) * 0xff51afd7ed558ccdull));
   }
 };
 
-Split split_vertices(const Mesh& mesh, bool texcoords) {
+// Per corner, the first corner of its vertex with the same tangent frame (#C by 4 `tangents`).
+std::vector<std::uint32_t> tangent_classes(const Mesh& mesh, const std::vector<double>& tangents) {
+  const std::size_t C = mesh.num_corners();
+  std::vector<std::uint32_t> order(C), cls(C);
+  for (std::size_t c = 0; c < C; ++c) order[c] = std::uint32_t(c);
+  auto less = [&](std::uint32_t a, std::uint32_t b) {
+    if (mesh.corner_vertex[a] != mesh.corner_vertex[b]) return mesh.corner_vertex[a] < mesh.corner_vertex[b];
+    for (int k = 0; k < 4; ++k)
+      if (tangents[4 * std::size_t(a) + k] != tangents[4 * std::size_t(b) + k]) return tangents[4 * std::size_t(a) + k] < tangents[4 * std::size_t(b) + k];
+    return a < b;
+  };
+  std::sort(order.begin(), order.end(), less);
+  auto same = [&](std::uint32_t a, std::uint32_t b) {
+    return mesh.corner_vertex[a] == mesh.corner_vertex[b] &&
+           std::equal(&tangents[4 * std::size_t(a)], &tangents[4 * std::size_t(a)] + 4, &tangents[4 * std::size_t(b)]);
+  };
+  for (std::size_t i = 0; i < C; ++i) cls[order[i]] = i > 0 && same(order[i - 1], order[i]) ? cls[order[i - 1]] : order[i];
+  return cls;
+}
+
+Split split_vertices(const Mesh& mesh, bool texcoords, const std::vector<std::uint32_t>& tangent_class) {
   Split s;
   const bool per_face = mesh.has_face_normals() || mesh.has_face_colors();
   const bool per_corner = mesh.has_corner_normals();
+  const bool per_tangent = !tangent_class.empty();
   s.corner_output.resize(mesh.num_corners());
-  if (!per_face && !per_corner && !texcoords) {
+  if (!per_face && !per_corner && !texcoords && !per_tangent) {
     s.source_vertex.resize(mesh.num_vertices());
     for (std::size_t v = 0; v < s.source_vertex.size(); ++v) s.source_vertex[v] = std::uint32_t(v);
     s.corner_output = mesh.corner_vertex;
@@ -248,7 +272,8 @@ Split split_vertices(const Mesh& mesh, bool texcoords) {
   for (std::size_t f = 0; f < mesh.num_faces(); ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
       const std::uint64_t second = per_face ? std::uint64_t(f) : per_corner ? std::uint64_t(mesh.corner_normal_index[c]) : 0;
-      const CornerKey key{std::uint64_t(mesh.corner_vertex[c]) << 32 | second, texcoords ? mesh.corner_texcoord_index[c] : 0};
+      const CornerKey key{std::uint64_t(mesh.corner_vertex[c]) << 32 | second, texcoords ? mesh.corner_texcoord_index[c] : 0,
+                          per_tangent ? tangent_class[c] : 0};
       auto [it, fresh] = seen.emplace(key, std::uint32_t(s.source_vertex.size()));
       if (fresh) s.source_vertex.push_back(mesh.corner_vertex[c]);
       s.corner_output[c] = it->second;
@@ -276,7 +301,9 @@ struct PrimitiveWriter {
     };
     json& attrs = jprim["attributes"];
     const bool texcoords = !model && mesh.has_texcoords();  // a fresh document: TEXCOORD_0 from the mesh
-    const Split split = split_vertices(mesh, texcoords);
+    const bool corner_tangents = gp.corner_tangents.size() == 4 * mesh.num_corners() && mesh.num_corners() > 0;
+    const Split split = split_vertices(mesh, texcoords, corner_tangents ? tangent_classes(mesh, gp.corner_tangents)
+                                                                        : std::vector<std::uint32_t>());
     const bool identity = split.source_vertex.size() == mesh.num_vertices() && !mesh.has_corner_normals() &&
                           !mesh.has_face_normals() && !mesh.has_face_colors() && !texcoords;
     const std::size_t out_vertices = split.source_vertex.size();
@@ -360,6 +387,18 @@ struct PrimitiveWriter {
         result.notes.push_back(gp.json_path + ": " + std::to_string(w_dropped) + " corners' third texture coordinate (w) not written: TEXCOORD_0 holds u, v");
     }
 
+    // TANGENT from frames a command computed per corner (gltf/gltf_tangents.h), added if absent.
+    if (corner_tangents) {
+      std::vector<double> t(4 * out_vertices, 0.0);
+      for (std::size_t c = 0; c < mesh.num_corners(); ++c)
+        std::copy(&gp.corner_tangents[4 * c], &gp.corner_tangents[4 * c] + 4, &t[4 * std::size_t(split.corner_output[c])]);
+      for (std::size_t v = 0; v < out_vertices; ++v)
+        if (t[4 * v + 3] == 0.0) { t[4 * v] = 1.0; t[4 * v + 3] = 1.0; }  // a vertex no corner uses: any unit frame
+      attrs["TANGENT"] = add_float_accessor(out, t, 4, false, true);
+    } else if (gp.drop_tangents && attrs.contains("TANGENT")) {
+      attrs.erase("TANGENT");
+    }
+
     // TANGENT and every attribute not decoded: kept, gathered through a split, or dropped when the
     // vertices changed in a way they cannot follow.
     std::vector<std::string> dropped;
@@ -367,6 +406,7 @@ struct PrimitiveWriter {
       const tinygltf::Primitive& prim = model->meshes[gp.mesh_index].primitives[gp.primitive_index];
       for (const auto& [attr, index] : prim.attributes) {
         if (attr == "POSITION" || attr == "NORMAL" || (attr == "COLOR_0" && (mesh.has_vertex_colors() || mesh.has_face_colors()))) continue;
+        if (attr == "TANGENT" && (corner_tangents || gp.drop_tangents)) continue;  // written or removed above
         if (attr == "TANGENT" && !gp.tangents.empty() && same_vertices) {
           if (!keep_all || !same_vertex_data(gp.tangents, gp.read_tangents))
             attrs["TANGENT"] = add_float_accessor(out, gather(gp.tangents, 4, split.source_vertex), 4, false, true);

@@ -145,7 +145,7 @@ GroupNormals group_normals(const MeshView& mesh, const std::vector<std::uint32_t
 }
 
 template <class T, Weighting W>
-CornerNormals compute(const MeshView& mesh, double crease_angle, Precision precision) {
+CornerNormals compute(const MeshView& mesh, double crease_angle, Precision precision, const std::uint32_t* face_group) {
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
   // (1) face normals: zero for degenerate faces.
   const std::vector<double> fn = face_normals(mesh, precision);
@@ -193,7 +193,8 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
         if (j - i == 2 && (ends[i] & 1) != (ends[i + 1] & 1)) {
           const auto la = std::uint32_t(ends[i] & 0xffffffffu) >> 1, lb = std::uint32_t(ends[i + 1] & 0xffffffffu) >> 1;
           const std::uint32_t fa = topo.face(vc.corners[begin + la]), fb = topo.face(vc.corners[begin + lb]);
-          if (fa != fb) {
+          // Faces of different smoothing groups, or of none (0: flat), never join.
+          if (fa != fb && (!face_group || (face_group[fa] == face_group[fb] && face_group[fa] != 0))) {
             const Vec3d na = get3(fn, fa), nb = get3(fn, fb), x = cross(na, nb);
             // unit vectors: |na x nb| <= 1, no scaling needed before squaring
             if (interior_angle(std::sqrt(dot(x, x)), dot(na, nb)) <= crease_angle) {
@@ -301,14 +302,30 @@ GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint3
   });
 }
 
-CornerNormals corner_normals(const MeshView& mesh, double crease_angle, Weighting weighting, Precision precision) {
+namespace {
+
+CornerNormals corner_normals_in_groups(const MeshView& mesh, double crease_angle, Weighting weighting,
+                                       Precision precision, const std::uint32_t* face_group) {
   std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
   const MeshView in_range = in_kernel_range(mesh, storage);
   return dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
-    return compute<T, W>(in_range, crease_angle, precision);
+    return compute<T, W>(in_range, crease_angle, precision, face_group);
   });
+}
+
+}  // namespace
+
+CornerNormals corner_normals(const MeshView& mesh, double crease_angle, Weighting weighting, Precision precision) {
+  return corner_normals_in_groups(mesh, crease_angle, weighting, precision, nullptr);
+}
+
+CornerNormals corner_normals(const Mesh& mesh, double crease_angle, const std::vector<std::uint32_t>& face_group,
+                             Weighting weighting, Precision precision) {
+  if (face_group.size() != mesh.num_faces())
+    throw Error("corner_normals: the smoothing group array's size differs from the face count");
+  return corner_normals_in_groups(MeshView(mesh), crease_angle, weighting, precision, face_group.data());
 }
 
 // A Mesh is computed through its view: one code path.

@@ -49,6 +49,11 @@ CornerNormals corner_normals(const Mesh& mesh, double crease_angle, Weighting we
                              Precision precision = Precision::Double);
 CornerNormals corner_normals(const MeshView& mesh, double crease_angle, Weighting weighting = Weighting::Angle,
                              Precision precision = Precision::Double);
+// The same, with smoothing groups (normals/smoothing_groups.h): two faces join across an edge only
+// when face_group gives them the same label and it is not 0 (0: a flat face); creases split further.
+// Throws Error when face_group's size is not #F.
+CornerNormals corner_normals(const Mesh& mesh, double crease_angle, const std::vector<std::uint32_t>& face_group,
+                             Weighting weighting = Weighting::Angle, Precision precision = Precision::Double);
 
 // corner_group_normals: one normal per group of corners that the caller chose (a file's smoothing
 // groups, a stored normal pool), with the same weightings, kernels and summation order as

@@ -1,8 +1,10 @@
 // update_mesh_normals.cpp: see update_mesh_normals.h.
 #include <shadetool/normals/update_mesh_normals.h>
 
+#include <shadetool/core/math_constants.h>
 #include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
+#include <shadetool/normals/flat_patches.h>
 #include <shadetool/normals/invalid_normals.h>
 #include <shadetool/normals/two_sided_faces.h>
 #include <shadetool/normals/vertex_fallback.h>
@@ -69,9 +71,7 @@ void split_back_corners(const Mesh& mesh, const TwoSidedFaces& two, CornerNormal
   cn.corner_index = std::move(index);
 }
 
-}  // namespace
-
-NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
+NormalsReport compute_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
   NormalsReport report;
   if (request.recompute) {
     report.discarded = rows(mesh.vertex_normals) + rows(mesh.corner_normals) + rows(mesh.face_normals);
@@ -101,6 +101,42 @@ NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
     return report;
   }
 
+  if (request.kind != NormalKind::Face && request.ranked) {
+    RankedWeightingOptions options = request.ranked_options;
+    options.crease_angle = request.kind == NormalKind::Corner ? request.crease_angle : -1.0;
+    CornerNormals cn = ranked_normals(mesh, options);
+    if (request.kind == NormalKind::Corner) {
+      mesh.corner_normals = std::move(cn.normals);
+      mesh.corner_normal_index = std::move(cn.corner_index);
+      mesh.vertex_normals.clear();
+      report.computed = rows(mesh.corner_normals);
+    } else {
+      mesh.vertex_normals = std::move(cn.normals);
+      mesh.corner_normals.clear();
+      mesh.corner_normal_index.clear();
+      report.computed = rows(mesh.vertex_normals);
+    }
+    report.fallback = cn.fallback_corners;
+    report.degenerate_faces = cn.degenerate_faces;
+    return report;
+  }
+  if (request.kind != NormalKind::Face && request.smoothing_groups == SmoothingGroups::Honour) {
+    const FaceSmoothingGroups groups = face_smoothing_groups(mesh);
+    if (groups.matter()) {
+      const double crease = request.kind == NormalKind::Corner ? request.crease_angle : kPi;
+      CornerNormals cn = corner_normals(mesh, crease, groups.groups, request.weighting, request.precision);
+      mesh.corner_normals = std::move(cn.normals);
+      mesh.corner_normal_index = std::move(cn.corner_index);
+      mesh.vertex_normals.clear();
+      report.computed = rows(mesh.corner_normals);
+      report.fallback = cn.fallback_corners;
+      report.degenerate_faces = cn.degenerate_faces;
+      report.honoured_groups = true;
+      report.smoothing_groups = groups.count;
+      report.flat_faces = groups.flat;
+      return report;
+    }
+  }
   switch (request.kind) {
     case NormalKind::Vertex: {
       // A two-sided surface: the vertex normal from the front side only (the earlier face).
@@ -148,6 +184,19 @@ NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
       report.fallback = report.degenerate_faces;
       break;
     }
+  }
+  return report;
+}
+
+}  // namespace
+
+NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
+  NormalsReport report = compute_mesh_normals(mesh, request);
+  if (request.flat_patches && !report.kept && request.kind != NormalKind::Face) {
+    if (mesh.has_corner_normals())
+      report.flat_patches = snap_flat_patches(mesh, mesh.corner_normals, &mesh.corner_normal_index);
+    else if (mesh.has_vertex_normals())
+      report.flat_patches = snap_flat_patches(mesh, mesh.vertex_normals, nullptr);
   }
   return report;
 }

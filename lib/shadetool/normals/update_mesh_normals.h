@@ -34,6 +34,8 @@
 #include <string>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/normals/ranked_normals.h>
+#include <shadetool/normals/smoothing_groups.h>
 #include <shadetool/normals/weighting.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -47,6 +49,18 @@ struct NormalsRequest {
   double crease_angle = 0.0;  // radians, kind Corner only
   Precision precision = Precision::Double;
   bool recompute = false;
+  // Honour: when the mesh's file has smoothing groups that matter (normals/smoothing_groups.h),
+  // kinds Vertex and Corner compute corner normals that never join faces of different groups and
+  // keep `s off` faces flat (crease_angle splits further inside a group; pi for kind Vertex).
+  SmoothingGroups smoothing_groups = SmoothingGroups::Honour;
+  // Blender's Weighted Normal modes instead of `weighting` (normals/ranked_normals.h): kind Vertex
+  // one normal per vertex, kind Corner keep sharp at crease_angle (its crease_angle is set here).
+  // Smoothing groups are not honoured with them.
+  bool ranked = false;
+  RankedWeightingOptions ranked_options;
+  // Kinds Vertex and Corner: a vertex (smooth group) whose faces all lie in one plane gets exactly
+  // that plane's normal (normals/flat_patches.h).
+  bool flat_patches = false;
 };
 
 struct NormalsReport {
@@ -60,6 +74,10 @@ struct NormalsReport {
   std::size_t dropped = 0;            // shading normals removed for kind Face
   std::size_t discarded = 0;          // normals discarded by `recompute` (rows, all kinds)
   std::size_t two_sided_faces = 0;    // back faces of a two-sided surface (two_sided_faces.h)
+  std::size_t flat_patches = 0;       // normals replaced by their plane's (flat_patches)
+  bool honoured_groups = false;       // corner normals split by the file's smoothing groups
+  std::size_t smoothing_groups = 0;   // distinct groups (s N), when honoured
+  std::size_t flat_faces = 0;         // faces in no group (s off, s 0), when honoured
 };
 
 NormalsReport update_mesh_normals(Mesh& mesh, const NormalsRequest& request);

@@ -40,6 +40,16 @@ enum class Weighting {
   Max,      // sin(angle) / (|e1| |e2|) (Max 1999), exact when the neighbours lie on a sphere
 };
 
+// The modes of Blender's Weighted Normal modifier (MOD_weighted_normal.cc), which rank a vertex's
+// faces by a value and divide each rank's weight by the strength again (normals/ranked_normals.h):
+enum class RankedWeighting {
+  FaceArea,       // value: the face's area (Blender's "Face Area")
+  CornerAngle,    // value: the corner's interior angle ("Corner Angle")
+  FaceAreaAngle,  // value: area times angle ("Face Area And Angle", Unity's "area and angle weighted" ranked)
+};
+// --weight names, in enum order (beside those of Weighting: uniform, area, angle, max).
+inline constexpr const char* kRankedWeightingNames[] = {"face-area", "corner-angle", "face-area-angle"};
+
 // Precision the kernels accumulate in (inputs and outputs are double arrays either way).
 enum class Precision { Double, Float };
 

@@ -1,0 +1,94 @@
+// bench_tangents: MikkTSpace tangents (normals/tangents.h) against angle-weighted corner normals
+// (corner_normals, crease 180 degrees) on the same mesh: a UV torus grid with texture coordinates
+// (a seam at u = 1 and v = 1: split texture coordinates, as real files have). Median of N runs,
+// one thread for both (the tangents are serial). Writes the unindexed float inputs for the npm
+// reference when --dump FILE is given (bench/normals/bench_tangents.js times it).
+// usage: bench_tangents [--n GRID] [--runs N] [--dump FILE]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <tbb/global_control.h>
+
+#include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/tangents.h>
+#include <shadetool/normals/vertex_normals.h>
+
+using namespace shadetool;
+
+namespace {
+
+Mesh torus_grid(int n) {
+  Mesh m;
+  const double R = 1.0, r = 0.35, pi = 3.141592653589793;
+  // (n + 1)^2 texture coordinates (the seam rows/columns repeat), n^2 positions.
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * pi * i / n, v = 2 * pi * j / n;
+      m.add_vertex({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+    }
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.texcoords.insert(m.texcoords.end(), {double(i) / n, double(j) / n});
+  auto vid = [n](int i, int j) { return std::uint32_t((j % n) * n + (i % n)); };
+  auto tid = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.add_face({vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)});
+      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j), tid(i + 1, j + 1)});
+      m.add_face({vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)});
+      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j + 1), tid(i, j + 1)});
+    }
+  m.vertex_normals = vertex_normals(m, Weighting::Angle, Precision::Double).normals;
+  return m;
+}
+
+template <class F>
+double median_ms(int runs, F&& f) {
+  std::vector<double> t;
+  for (int k = 0; k < runs; ++k) {
+    const auto a = std::chrono::steady_clock::now();
+    f();
+    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int n = 400, runs = 7;
+  std::string dump;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--n")) n = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--runs")) runs = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--dump")) dump = argv[i + 1];
+  }
+  tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  const Mesh m = torus_grid(n);
+  const std::size_t C = m.num_corners();
+  volatile double sink = 0;
+  const double normals_ms = median_ms(runs, [&] { sink = sink + corner_normals(m, 3.141592653589793).normals[0]; });
+  const double tangents_ms = median_ms(runs, [&] { sink = sink + mikktspace_tangents(m).tangents[0]; });
+  std::printf("mesh: torus grid %d x %d, %zu triangles, %zu corners; median of %d runs, 1 thread\n", n, n, m.num_faces(), C, runs);
+  std::printf("| what | median ms | corners per second |\n|---|---|---|\n");
+  std::printf("| corner normals (angle, crease 180) | %.2f | %.3g |\n", normals_ms, C / (normals_ms / 1000));
+  std::printf("| MikkTSpace tangents (ours) | %.2f | %.3g |\n", tangents_ms, C / (tangents_ms / 1000));
+  std::printf("tangents / normals: %.2fx\n", tangents_ms / normals_ms);
+  if (!dump.empty()) {
+    std::vector<float> d;
+    for (std::size_t c = 0; c < C; ++c) {
+      const Vec3d p = m.position(m.corner_vertex[c]), nn = get3(m.vertex_normals, m.corner_vertex[c]);
+      const std::size_t t = 2 * std::size_t(m.corner_texcoord_index[c]);
+      for (double x : {p.x, p.y, p.z, nn.x, nn.y, nn.z, m.texcoords[t], m.texcoords[t + 1]}) d.push_back(float(x));
+    }
+    std::ofstream(dump, std::ios::binary).write(reinterpret_cast<const char*>(d.data()), std::streamsize(d.size() * 4));
+  }
+  return 0;
+}

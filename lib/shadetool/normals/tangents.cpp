@@ -1,0 +1,527 @@
+// tangents.cpp: see tangents.h. The steps are numbered as there; each is a function named after
+// what it does. Arithmetic is float in the reference's order (tangents.h, Precision).
+#include <shadetool/normals/tangents.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include <shadetool/core/error.h>
+
+namespace shadetool {
+namespace {
+
+struct F3 {
+  float x = 0, y = 0, z = 0;
+};
+F3 operator+(F3 a, F3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+F3 operator-(F3 a, F3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+F3 scale(float s, F3 v) { return {s * v.x, s * v.y, s * v.z}; }
+float dot(F3 a, F3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+float length(F3 v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+bool operator==(F3 a, F3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+// The reference's zero test: |x| > FLT_MIN.
+bool not_zero(float x) { return std::fabs(x) > FLT_MIN; }
+bool not_zero(F3 v) { return not_zero(v.x) || not_zero(v.y) || not_zero(v.z); }
+// Called where not_zero(v) holds (as the reference); a length that still underflows leaves v as it
+// is (the reference would divide by zero there).
+F3 normalize(F3 v) {
+  const float len = length(v);
+  return len > 0.0f ? scale(1.0f / len, v) : v;  // divisor checked
+}
+// v minus its component along the unit normal n, made unit when not zero.
+F3 project_unit(F3 v, F3 n) {
+  F3 p = v - scale(dot(n, v), n);
+  if (not_zero(p)) p = normalize(p);
+  return p;
+}
+
+// Triangle flags, as the reference's.
+constexpr std::uint8_t kDegenerate = 1, kQuadOneDegenerate = 2, kGroupWithAny = 4, kOrientPreserving = 8;
+
+// The algorithm's view of the mesh: per corner of the faces it takes, the float inputs.
+struct Corners {
+  std::vector<F3> position, normal, texcoord;  // by global corner index (texcoord z = 1, unused)
+};
+
+struct Triangles {
+  std::vector<std::uint32_t> corner;  // 3 per triangle: the global corner (the output slot)
+  std::vector<std::uint32_t> index;   // 3 per triangle: the welded vertex (a representative corner)
+  std::vector<std::uint32_t> face;    // the mesh face it came from
+  std::vector<std::uint8_t> flag;
+  std::size_t good = 0;               // triangles [0, good) are healthy, in order; the rest degenerate
+};
+
+struct TriInfo {
+  F3 os, ot;  // unit derivatives (or zero)
+  float mag_s = 0, mag_t = 0;
+  std::int32_t neighbour[3] = {-1, -1, -1};
+  std::int32_t group[3] = {-1, -1, -1};
+};
+
+struct Group {
+  std::uint32_t representative;
+  bool orient;
+  std::uint32_t offset, count;  // its triangles: group_triangles[offset, offset + count)
+};
+
+struct TSpace {
+  F3 os{1, 0, 0}, ot{0, 1, 0};
+  float mag_s = 1, mag_t = 1;
+  int counter = 0;
+  bool orient = false;
+  bool assigned = false;  // not the reference's: whether any frame reached this corner (a count)
+};
+
+// Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners).
+void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken, Triangles& tris) {
+  auto add = [&](std::uint32_t f, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    tris.corner.insert(tris.corner.end(), {a, b, c});
+    tris.face.push_back(f);
+  };
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    if (!taken[f]) continue;
+    const std::uint32_t b = mesh.face_start[f], n = mesh.face_start[f + 1] - b;
+    const auto fu = std::uint32_t(f);
+    if (n == 3) {
+      add(fu, b, b + 1, b + 2);
+    } else if (n == 4) {
+      // The shorter diagonal in texture space; tied: in space; still tied: 0-2.
+      auto dist2 = [](F3 a, F3 c) { const F3 d = c - a; return d.x * d.x + d.y * d.y + d.z * d.z; };
+      const float t02 = dist2(in.texcoord[b], in.texcoord[b + 2]), t13 = dist2(in.texcoord[b + 1], in.texcoord[b + 3]);
+      bool diagonal_02;
+      if (t02 < t13) diagonal_02 = true;
+      else if (t13 < t02) diagonal_02 = false;
+      else diagonal_02 = !(dist2(in.position[b + 1], in.position[b + 3]) < dist2(in.position[b], in.position[b + 2]));
+      if (diagonal_02) { add(fu, b, b + 1, b + 2); add(fu, b, b + 2, b + 3); }
+      else { add(fu, b, b + 1, b + 3); add(fu, b + 1, b + 2, b + 3); }
+    } else {
+      for (std::uint32_t k = 1; k + 1 < n; ++k) add(fu, b, b + k, b + k + 1);  // fan (not in the reference)
+    }
+  }
+  tris.flag.assign(tris.face.size(), 0);
+}
+
+// Step 2: welded vertex of every corner: the first corner with the same (position, normal,
+// texture coordinate) as float ==. An open-addressing table keyed by the values (-0 as +0);
+// a corner with a NaN equals nothing.
+std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32_t>& corners) {
+  const std::size_t C = in.position.size();
+  std::vector<std::uint32_t> rep(C, 0);
+  std::size_t cap = 16;
+  while (cap < 2 * corners.size()) cap *= 2;
+  std::vector<std::uint32_t> table(cap, ~0u);
+  auto key = [&](std::uint32_t c, float* k) {
+    const F3 &p = in.position[c], &n = in.normal[c], &t = in.texcoord[c];
+    const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
+    for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
+  };
+  for (std::uint32_t c : corners) {
+    float k[8];
+    key(c, k);
+    bool nan = false;
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (float x : k) {
+      nan = nan || x != x;
+      std::uint32_t bits;
+      std::memcpy(&bits, &x, 4);
+      h = (h ^ bits) * 0xff51afd7ed558ccdull;
+      h ^= h >> 32;
+    }
+    if (nan) { rep[c] = c; continue; }
+    for (std::size_t slot = h & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+      if (table[slot] == ~0u) { table[slot] = c; rep[c] = c; break; }
+      float o[8];
+      key(table[slot], o);
+      if (std::memcmp(o, k, sizeof k) == 0) { rep[c] = table[slot]; break; }
+    }
+  }
+  return rep;
+}
+
+// Step 3: degenerate triangles marked (a quad with exactly one of them marked too) and moved after
+// the healthy ones, which keep their order.
+void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) {
+  const std::size_t T = tris.face.size();
+  for (std::size_t t = 0; t < T; ++t) {
+    const F3 p0 = in.position[tris.index[3 * t]], p1 = in.position[tris.index[3 * t + 1]], p2 = in.position[tris.index[3 * t + 2]];
+    if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate;
+  }
+  for (std::size_t t = 0; t + 1 < T;) {
+    if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
+      if (((tris.flag[t] ^ tris.flag[t + 1]) & kDegenerate) != 0) {
+        tris.flag[t] |= kQuadOneDegenerate;
+        tris.flag[t + 1] |= kQuadOneDegenerate;
+      }
+      t += 2;
+    } else {
+      ++t;
+    }
+  }
+  std::vector<std::size_t> order;
+  order.reserve(T);
+  for (std::size_t t = 0; t < T; ++t)
+    if (!(tris.flag[t] & kDegenerate)) order.push_back(t);
+  tris.good = order.size();
+  if (tris.good == T) return;  // nothing to move
+  for (std::size_t t = 0; t < T; ++t)
+    if (tris.flag[t] & kDegenerate) order.push_back(t);
+  Triangles sorted;
+  sorted.good = tris.good;
+  for (std::size_t t : order) {
+    for (int k = 0; k < 3; ++k) {
+      sorted.corner.push_back(tris.corner[3 * t + k]);
+      sorted.index.push_back(tris.index[3 * t + k]);
+    }
+    sorted.face.push_back(tris.face[t]);
+    sorted.flag.push_back(tris.flag[t]);
+  }
+  tris = std::move(sorted);
+}
+
+float texture_area(const Corners& in, const std::uint32_t* idx) {
+  const F3 t1 = in.texcoord[idx[0]], t2 = in.texcoord[idx[1]], t3 = in.texcoord[idx[2]];
+  const float a = (t2.x - t1.x) * (t3.y - t1.y) - (t2.y - t1.y) * (t3.x - t1.x);
+  return a < 0 ? -a : a;
+}
+
+// Step 4: derivatives, magnitudes and orientation of each healthy triangle (eq. 18, 19).
+void triangle_derivatives(const Mesh& mesh, const Corners& in, Triangles& tris, std::vector<TriInfo>& info) {
+  const std::size_t T = tris.good;
+  for (std::size_t f = 0; f < T; ++f) {
+    std::uint8_t& flag = tris.flag[f];
+    flag |= kGroupWithAny;  // assumed bad
+    const std::uint32_t* idx = &tris.index[3 * f];
+    const F3 v1 = in.position[idx[0]], v2 = in.position[idx[1]], v3 = in.position[idx[2]];
+    const F3 t1 = in.texcoord[idx[0]], t2 = in.texcoord[idx[1]], t3 = in.texcoord[idx[2]];
+    const float t21x = t2.x - t1.x, t21y = t2.y - t1.y, t31x = t3.x - t1.x, t31y = t3.y - t1.y;
+    const F3 d1 = v2 - v1, d2 = v3 - v1;
+    const float signed_area2 = t21x * t31y - t21y * t31x;
+    const F3 os = scale(t31y, d1) - scale(t21y, d2);   // eq. 18
+    const F3 ot = scale(-t31x, d1) + scale(t21x, d2);  // eq. 19
+    if (signed_area2 > 0) flag |= kOrientPreserving;
+    if (!not_zero(signed_area2)) continue;
+    const float abs_area = std::fabs(signed_area2);
+    const float len_s = length(os), len_t = length(ot);
+    const float sign = (flag & kOrientPreserving) ? 1.0f : -1.0f;
+    if (not_zero(len_s)) info[f].os = scale(sign / len_s, os);  // divisor checked
+    if (not_zero(len_t)) info[f].ot = scale(sign / len_t, ot);  // divisor checked
+    info[f].mag_s = len_s / abs_area;  // divisor checked (not_zero above)
+    info[f].mag_t = len_t / abs_area;
+    if (not_zero(info[f].mag_s) && not_zero(info[f].mag_t)) flag &= std::uint8_t(~kGroupWithAny);
+  }
+  // A quad whose two healthy triangles disagree in orientation takes the larger one's (or the
+  // healthy one's when the other groups with any).
+  for (std::size_t t = 0; t + 1 < T;) {
+    if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
+      if (((tris.flag[t] ^ tris.flag[t + 1]) & kOrientPreserving) != 0) {
+        const bool first = (tris.flag[t + 1] & kGroupWithAny) != 0 ||
+                           texture_area(in, &tris.index[3 * t]) >= texture_area(in, &tris.index[3 * (t + 1)]);
+        const std::size_t t0 = first ? t : t + 1, t1 = first ? t + 1 : t;
+        tris.flag[t1] = std::uint8_t((tris.flag[t1] & ~kOrientPreserving) | (tris.flag[t0] & kOrientPreserving));
+      }
+      t += 2;
+    } else {
+      ++t;
+    }
+  }
+}
+
+// Which edge (0: 0-1, 1: 1-2, 2: 2-0) of triangle `idx` joins a and b, and its direction there.
+int edge_of(const std::uint32_t* idx, std::uint32_t a, std::uint32_t b, std::uint32_t& from, std::uint32_t& to) {
+  if (idx[0] == a || idx[0] == b) {
+    if (idx[1] == a || idx[1] == b) { from = idx[0]; to = idx[1]; return 0; }
+    from = idx[2]; to = idx[0];
+    return 2;
+  }
+  from = idx[1]; to = idx[2];
+  return 1;
+}
+
+// Step 5: neighbours across welded edges used in opposite directions; edges sorted by (lower
+// vertex, higher vertex, triangle), the first unpaired match wins.
+void find_neighbours(const Triangles& tris, std::vector<TriInfo>& info) {
+  struct Edge { std::uint32_t i0, i1, f; };
+  const std::size_t T = tris.good;
+  std::vector<Edge> edges(3 * T);
+  for (std::size_t f = 0; f < T; ++f)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = tris.index[3 * f + i], b = tris.index[3 * f + (i < 2 ? i + 1 : 0)];
+      edges[3 * f + i] = {std::min(a, b), std::max(a, b), std::uint32_t(f)};
+    }
+  // (i0, i1, f) order: one 64-bit key per edge, f as the tie-break.
+  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
+    const std::uint64_t ka = std::uint64_t(a.i0) << 32 | a.i1, kb = std::uint64_t(b.i0) << 32 | b.i1;
+    return ka != kb ? ka < kb : a.f < b.f;
+  });
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const Edge& e = edges[i];
+    std::uint32_t from_a, to_a;
+    const int edge_a = edge_of(&tris.index[3 * e.f], e.i0, e.i1, from_a, to_a);
+    if (info[e.f].neighbour[edge_a] != -1) continue;
+    for (std::size_t j = i + 1; j < edges.size() && edges[j].i0 == e.i0 && edges[j].i1 == e.i1; ++j) {
+      const std::uint32_t t = edges[j].f;
+      std::uint32_t from_b, to_b;
+      const int edge_b = edge_of(&tris.index[3 * t], e.i0, e.i1, from_b, to_b);
+      if (from_a == to_b && to_a == from_b && info[t].neighbour[edge_b] == -1) {
+        info[e.f].neighbour[edge_a] = std::int32_t(t);
+        info[t].neighbour[edge_b] = std::int32_t(e.f);
+        break;
+      }
+    }
+  }
+}
+
+int corner_at(const std::uint32_t* idx, std::uint32_t vertex) {
+  return idx[0] == vertex ? 0 : idx[1] == vertex ? 1 : 2;
+}
+
+// Step 6: groups of triangles around each welded vertex (the reference's four rules), depth first
+// through neighbours, left (the edge leaving the vertex) before right.
+void build_groups(Triangles& tris, std::vector<TriInfo>& info, std::vector<Group>& groups,
+                  std::vector<std::uint32_t>& members) {
+  const std::size_t T = tris.good;
+  std::vector<std::int32_t> stack;
+  for (std::size_t f = 0; f < T; ++f)
+    for (int i = 0; i < 3; ++i) {
+      if ((tris.flag[f] & kGroupWithAny) || info[f].group[i] != -1) continue;
+      const auto g = std::int32_t(groups.size());
+      Group group{tris.index[3 * f + i], (tris.flag[f] & kOrientPreserving) != 0, std::uint32_t(members.size()), 0};
+      members.push_back(std::uint32_t(f));
+      info[f].group[i] = g;
+      stack.assign({info[f].neighbour[i > 0 ? i - 1 : 2], info[f].neighbour[i]});
+      while (!stack.empty()) {
+        const std::int32_t t = stack.back();
+        stack.pop_back();
+        if (t < 0) continue;
+        const int k = corner_at(&tris.index[3 * t], group.representative);
+        TriInfo& ti = info[t];
+        if (ti.group[k] != -1) continue;  // this group's already, or another's
+        std::uint8_t& flag = tris.flag[t];
+        // The first group to reach a group-with-any triangle sets its orientation (the
+        // reference's one order dependency).
+        if ((flag & kGroupWithAny) && ti.group[0] == -1 && ti.group[1] == -1 && ti.group[2] == -1)
+          flag = std::uint8_t((flag & ~kOrientPreserving) | (group.orient ? kOrientPreserving : 0));
+        if (((flag & kOrientPreserving) != 0) != group.orient) continue;
+        members.push_back(std::uint32_t(t));
+        ti.group[k] = g;
+        stack.push_back(ti.neighbour[k > 0 ? k - 1 : 2]);
+        stack.push_back(ti.neighbour[k]);
+      }
+      group.count = std::uint32_t(members.size() - group.offset);
+      groups.push_back(group);
+    }
+}
+
+// The frame of one sub-group at vertex `rep`: members' projected derivatives weighted by the
+// corner angle of the triangle projected onto the normal's plane.
+TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const Corners& in, const Triangles& tris,
+                      const std::vector<TriInfo>& info, std::uint32_t rep) {
+  TSpace res;
+  res.os = {0, 0, 0};
+  res.ot = {0, 0, 0};
+  res.mag_s = res.mag_t = 0;
+  float angle_sum = 0;
+  for (std::uint32_t f : sub) {
+    if (tris.flag[f] & kGroupWithAny) continue;
+    const std::uint32_t* idx = &tris.index[3 * f];
+    const int i = corner_at(idx, rep);
+    const F3 n = in.normal[idx[i]];
+    const F3 os = project_unit(info[f].os, n), ot = project_unit(info[f].ot, n);
+    const F3 p0 = in.position[idx[i > 0 ? i - 1 : 2]], p1 = in.position[idx[i]], p2 = in.position[idx[i < 2 ? i + 1 : 0]];
+    const F3 v1 = project_unit(p0 - p1, n), v2 = project_unit(p2 - p1, n);
+    const float c = std::min(1.0f, std::max(-1.0f, dot(v1, v2)));
+    const float angle = float(std::acos(double(c)));
+    res.os = res.os + scale(angle, os);
+    res.ot = res.ot + scale(angle, ot);
+    res.mag_s += angle * info[f].mag_s;
+    res.mag_t += angle * info[f].mag_t;
+    angle_sum += angle;
+  }
+  if (not_zero(res.os)) res.os = normalize(res.os);
+  if (not_zero(res.ot)) res.ot = normalize(res.ot);
+  if (angle_sum > 0) {
+    res.mag_s /= angle_sum;  // divisor checked
+    res.mag_t /= angle_sum;
+  }
+  return res;
+}
+
+// Two frames meeting at one corner (the triangles of a quad): their mean, or the first when equal.
+TSpace average(const TSpace& a, const TSpace& b) {
+  if (a.mag_s == b.mag_s && a.mag_t == b.mag_t && a.os == b.os && a.ot == b.ot) return a;
+  TSpace r = a;
+  r.mag_s = 0.5f * (a.mag_s + b.mag_s);
+  r.mag_t = 0.5f * (a.mag_t + b.mag_t);
+  r.os = a.os + b.os;
+  r.ot = a.ot + b.ot;
+  if (not_zero(r.os)) r.os = normalize(r.os);
+  if (not_zero(r.ot)) r.ot = normalize(r.ot);
+  return r;
+}
+
+// Step 7: sub-groups and their frames, written to each triangle's corner.
+void group_frames(const Corners& in, const Triangles& tris, const std::vector<TriInfo>& info,
+                  const std::vector<Group>& groups, const std::vector<std::uint32_t>& members,
+                  std::vector<TSpace>& out) {
+  // The reference's angular threshold, 180 degrees: cos(float(pi)) rounded to float is exactly -1.
+  const float threshold_cos = -1.0f;
+  std::vector<F3> ps, pt;
+  std::vector<std::uint32_t> sub;
+  // This group's distinct sub-groups: members in one flat buffer (offsets), and their frames.
+  std::vector<std::uint32_t> sub_members, sub_offset;
+  std::vector<TSpace> unique_frames;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const Group& group = groups[g];
+    const std::uint32_t* tri = &members[group.offset];
+    const F3 n = in.normal[group.representative];  // every corner of the group has this normal
+    ps.resize(group.count);
+    pt.resize(group.count);
+    for (std::uint32_t j = 0; j < group.count; ++j) {
+      ps[j] = project_unit(info[tri[j]].os, n);
+      pt[j] = project_unit(info[tri[j]].ot, n);
+    }
+    sub_members.clear();
+    sub_offset.assign(1, 0);
+    unique_frames.clear();
+    for (std::uint32_t i = 0; i < group.count; ++i) {
+      const std::uint32_t f = tri[i];
+      const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
+      sub.clear();
+      for (std::uint32_t j = 0; j < group.count; ++j) {
+        const std::uint32_t t = tri[j];
+        const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
+        const bool same_face = tris.face[f] == tris.face[t];
+        if (any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos)) sub.push_back(t);
+      }
+      std::sort(sub.begin(), sub.end());
+      std::size_t l = 0;
+      const std::size_t known = unique_frames.size();
+      while (l < known && !(sub_offset[l + 1] - sub_offset[l] == sub.size() &&
+                            std::equal(sub.begin(), sub.end(), sub_members.begin() + sub_offset[l])))
+        ++l;
+      if (l == known) {
+        sub_members.insert(sub_members.end(), sub.begin(), sub.end());
+        sub_offset.push_back(std::uint32_t(sub_members.size()));
+        unique_frames.push_back(evaluate_frame(sub, in, tris, info, group.representative));
+      }
+      TSpace& o = out[tris.corner[3 * f + index]];
+      o = o.counter >= 1 ? average(o, unique_frames[l]) : unique_frames[l];
+      o.counter += 1;
+      o.orient = group.orient;
+      o.assigned = true;
+    }
+  }
+}
+
+// Step 8: frames for the corners of degenerate triangles.
+void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tris, std::vector<TSpace>& out) {
+  const std::size_t T = tris.face.size(), good = tris.good;
+  std::vector<std::uint32_t> first(in.position.size(), ~0u);  // welded vertex -> first healthy corner slot
+  for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
+  for (std::size_t t = good; t < T; ++t) {
+    if (tris.flag[t] & kQuadOneDegenerate) continue;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t j = first[tris.index[3 * t + i]];
+      if (j != ~0u) out[tris.corner[3 * t + i]] = out[tris.corner[j]];
+    }
+  }
+  for (std::size_t t = 0; t < good; ++t) {
+    if (!(tris.flag[t] & kQuadOneDegenerate)) continue;
+    const std::uint32_t b = mesh.face_start[tris.face[t]];
+    unsigned present = 0;
+    for (int i = 0; i < 3; ++i) present |= 1u << (tris.corner[3 * t + i] - b);
+    std::uint32_t missing = 0;
+    while (present & (1u << missing)) ++missing;
+    const F3 dst = in.position[b + missing];
+    for (int i = 0; i < 3; ++i)
+      if (in.position[tris.corner[3 * t + i]] == dst) {
+        out[b + missing] = out[tris.corner[3 * t + i]];
+        break;
+      }
+  }
+}
+
+}  // namespace
+
+Vec3d perpendicular_unit(const Vec3d& n) {
+  if (!is_finite(n) || std::fabs(dot(n, n) - 1.0) > 1e-3) return {1.0, 0.0, 0.0};
+  const double sign = std::copysign(1.0, n.z);
+  const double a = -1.0 / (sign + n.z);  // divisor checked: |sign + n.z| >= 1
+  const double b = n.x * n.y * a;
+  return {1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
+}
+
+TangentFrames mikktspace_tangents(const Mesh& mesh) {
+  if (!mesh.has_texcoords()) throw Error("tangents: the mesh has no texture coordinates");
+  if (!mesh.has_corner_normals() && !mesh.has_vertex_normals() && !mesh.has_face_normals())
+    throw Error("tangents: the mesh has no normals");
+  const std::size_t C = mesh.num_corners(), F = mesh.num_faces();
+  const int dims = mesh.texcoord_dims;
+  auto corner_normal = [&](std::size_t c, std::size_t f) {
+    if (mesh.has_corner_normals()) return get3(mesh.corner_normals, mesh.corner_normal_index[c]);
+    if (mesh.has_vertex_normals()) return get3(mesh.vertex_normals, mesh.corner_vertex[c]);
+    return get3(mesh.face_normals, f);
+  };
+  // Faces taken: 3+ corners, every one textured.
+  std::vector<std::uint8_t> taken(F, 0);
+  Corners in;
+  in.position.resize(C);
+  in.normal.resize(C);
+  in.texcoord.resize(C);
+  std::vector<std::uint32_t> corners;
+  corners.reserve(C);
+  for (std::size_t f = 0; f < F; ++f) {
+    bool ok = mesh.face_size(f) >= 3 && dims >= 2;
+    for (std::uint32_t c = mesh.face_start[f]; ok && c < mesh.face_start[f + 1]; ++c)
+      ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
+    taken[f] = ok;
+    if (!ok) continue;
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      const Vec3d p = mesh.position(mesh.corner_vertex[c]), n = corner_normal(c, f);
+      const std::size_t t = std::size_t(mesh.corner_texcoord_index[c]) * std::size_t(dims);
+      in.position[c] = {float(p.x), float(p.y), float(p.z)};
+      in.normal[c] = {float(n.x), float(n.y), float(n.z)};
+      in.texcoord[c] = {float(mesh.texcoords[t]), float(mesh.texcoords[t + 1]), 1.0f};
+      corners.push_back(std::uint32_t(c));
+    }
+  }
+  Triangles tris;
+  make_triangles(mesh, in, taken, tris);
+  const std::vector<std::uint32_t> rep = weld(in, corners);
+  tris.index.resize(tris.corner.size());
+  for (std::size_t k = 0; k < tris.corner.size(); ++k) tris.index[k] = rep[tris.corner[k]];
+  set_aside_degenerate(mesh, in, tris);
+  std::vector<TriInfo> info(tris.good);
+  triangle_derivatives(mesh, in, tris, info);
+  find_neighbours(tris, info);
+  std::vector<Group> groups;
+  std::vector<std::uint32_t> members;
+  members.reserve(3 * tris.good);
+  build_groups(tris, info, groups, members);
+  std::vector<TSpace> frames(C);
+  group_frames(in, tris, info, groups, members, frames);
+  degenerate_frames(mesh, in, tris, frames);
+
+  TangentFrames out;
+  out.tangents.resize(4 * C);
+  for (std::size_t f = 0; f < F; ++f)
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      double* o = &out.tangents[4 * std::size_t(c)];
+      if (!taken[f]) {
+        const Vec3d t = perpendicular_unit(corner_normal(c, f));
+        o[0] = t.x; o[1] = t.y; o[2] = t.z; o[3] = 1.0;
+        ++out.fallback_corners;
+        continue;
+      }
+      const TSpace& s = frames[c];
+      o[0] = s.os.x; o[1] = s.os.y; o[2] = s.os.z;
+      o[3] = s.orient ? 1.0 : -1.0;
+      if (!s.assigned) ++out.default_corners;
+    }
+  return out;
+}
+
+}  // namespace shadetool

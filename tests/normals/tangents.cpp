@@ -1,0 +1,280 @@
+// MikkTSpace tangents (normals/tangents.h) against closed forms and against the reference
+// implementation (npm `mikktspace`, installed into the build tree on first use; skipped loudly when
+// node or the registry is missing).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <dirent.h>
+#include <fstream>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
+
+#include <shadetool/core/error.h>
+#include <shadetool/core/math_constants.h>
+#include <shadetool/files/mesh_files.h>
+#include <shadetool/normals/tangents.h>
+#include <shadetool/normals/update_mesh_normals.h>
+#include "support/run_process.h"
+
+using namespace shadetool;
+
+namespace {
+
+// A flat grid in z = 0 with texture coordinates u = a x + b y, v = c x + d y (an affine map):
+// dP/du, the exact tangent, is the first column of the inverse of [[a b] [c d]], and w is the
+// sign of its determinant.
+Mesh affine_grid(double a, double b, double c, double d, int n, bool quads) {
+  Mesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = double(i) / n, y = double(j) / n;
+      m.add_vertex({x, y, 0});
+      m.texcoords.insert(m.texcoords.end(), {a * x + b * y, c * x + d * y});
+    }
+  auto at = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if (quads) m.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      else {
+        m.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        m.add_face({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  m.corner_texcoord_index = m.corner_vertex;
+  m.vertex_normals.clear();
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) m.vertex_normals.insert(m.vertex_normals.end(), {0, 0, 1});
+  return m;
+}
+
+double angle_deg(const double* t, Vec3d e) {
+  const Vec3d a{t[0], t[1], t[2]};
+  const Vec3d x = cross(a, e);
+  return std::atan2(std::sqrt(dot(x, x)), dot(a, e)) * 180.0 / kPi;
+}
+
+}  // namespace
+
+TEST_CASE("MikkTSpace: an affine texture map on a plane gives dP/du exactly, w the sign of the map", "[tangents]") {
+  struct Map { double a, b, c, d; };
+  for (const Map mp : {Map{1, 0, 0, 1}, Map{2, 0.5, -0.25, 1}, Map{-1, 0, 0, 1}, Map{0.3, 1, 1, 0}}) {
+    const double det = mp.a * mp.d - mp.b * mp.c;
+    const Vec3d dpdu = normalized_or(Vec3d{mp.d / det, -mp.c / det, 0}, Vec3d{});  // first column of the inverse
+    for (bool quads : {false, true}) {
+      const Mesh m = affine_grid(mp.a, mp.b, mp.c, mp.d, 4, quads);
+      const TangentFrames t = mikktspace_tangents(m);
+      REQUIRE(t.tangents.size() == 4 * m.num_corners());
+      CHECK(t.fallback_corners == 0);
+      CHECK(t.default_corners == 0);
+      for (std::size_t c = 0; c < m.num_corners(); ++c) {
+        CHECK(angle_deg(&t.tangents[4 * c], dpdu) < 1e-4);
+        CHECK(t.tangents[4 * c + 3] == (det > 0 ? 1.0 : -1.0));
+      }
+    }
+  }
+}
+
+TEST_CASE("MikkTSpace: a mirrored texture seam keeps each side's handedness", "[tangents]") {
+  // Two triangles sharing an edge, the right one's u mirrored (u = 2 - x): separate frames, w -1 there.
+  Mesh m;
+  for (Vec3d p : {Vec3d{0, 0, 0}, Vec3d{1, 0, 0}, Vec3d{1, 1, 0}, Vec3d{0, 1, 0}, Vec3d{2, 0, 0}, Vec3d{2, 1, 0}}) m.add_vertex(p);
+  m.add_face({0, 1, 2});
+  m.add_face({0, 2, 3});
+  m.add_face({1, 4, 5});
+  m.add_face({1, 5, 2});
+  m.texcoords = {0, 0, 1, 0, 1, 1, 0, 1, 0, 0, 0, 1};  // vertex 4 -> u 0, vertex 5 -> u 0 (mirror)
+  m.corner_texcoord_index = m.corner_vertex;
+  m.vertex_normals.assign(3 * 6, 0);
+  for (int v = 0; v < 6; ++v) m.vertex_normals[3 * v + 2] = 1;
+  const TangentFrames t = mikktspace_tangents(m);
+  for (std::size_t c = 0; c < 6; ++c) {
+    CHECK(t.tangents[4 * c + 3] == 1.0);
+    CHECK(angle_deg(&t.tangents[4 * c], {1, 0, 0}) < 1e-4);
+  }
+  for (std::size_t c = 6; c < 12; ++c) {
+    CHECK(t.tangents[4 * c + 3] == -1.0);
+    CHECK(angle_deg(&t.tangents[4 * c], {-1, 0, 0}) < 1e-4);
+  }
+}
+
+TEST_CASE("MikkTSpace: faces without texture coordinates get a tangent perpendicular to the normal", "[tangents]") {
+  Mesh m = affine_grid(1, 0, 0, 1, 1, false);
+  m.corner_texcoord_index[4] = kNoTexcoord;  // second triangle
+  const Vec3d n = normalized_or(Vec3d{1, 2, 3}, Vec3d{});
+  for (int v = 0; v < 4; ++v) set3(m.vertex_normals, v, n);
+  const TangentFrames t = mikktspace_tangents(m);
+  CHECK(t.fallback_corners == 3);
+  for (std::size_t c = 3; c < 6; ++c) {
+    const Vec3d x{t.tangents[4 * c], t.tangents[4 * c + 1], t.tangents[4 * c + 2]};
+    CHECK(std::fabs(dot(x, n)) < 1e-12);
+    CHECK(std::fabs(dot(x, x) - 1) < 1e-12);
+  }
+  Mesh bare = m;
+  bare.corner_texcoord_index.clear();
+  CHECK_THROWS_AS(mikktspace_tangents(bare), shadetool::Error);
+}
+
+namespace {
+
+// The reference run under node, from the build tree (npm install on first use). Empty when not available.
+std::string reference_dir() {
+  static std::string dir = [] {
+    char cwd[4096];
+    if (!::getcwd(cwd, sizeof cwd)) return std::string();
+    const std::string prefix = std::string(cwd) + "/mikktspace-node";  // ctest runs tests in the build tree
+    struct stat st;
+    if (::stat((prefix + "/node_modules/mikktspace").c_str(), &st) != 0) {
+      if (std::system("command -v node > /dev/null && command -v npm > /dev/null") != 0) return std::string();
+      const std::string cmd = "npm install --silent --no-audit --no-fund --prefix '" + prefix + "' mikktspace > /dev/null 2>&1";
+      if (std::system(cmd.c_str()) != 0) return std::string();
+    }
+    return prefix;
+  }();
+  return dir;
+}
+
+// Every triangle with all corners textured, as the reference's unindexed input; the same floats
+// mikktspace_tangents rounds its input to.
+struct Unindexed {
+  std::vector<float> data;             // 8 per corner
+  std::vector<std::uint32_t> corner;   // the mesh corner of each
+};
+
+Unindexed unindexed(const Mesh& m) {
+  Unindexed u;
+  for (std::size_t f = 0; f < m.num_faces(); ++f) {
+    bool ok = true;
+    for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) ok = ok && m.corner_texcoord_index[c] != kNoTexcoord;
+    if (!ok) continue;
+    for (std::uint32_t c = m.face_start[f]; c < m.face_start[f + 1]; ++c) {
+      const Vec3d p = m.position(m.corner_vertex[c]);
+      const Vec3d n = m.has_corner_normals() ? get3(m.corner_normals, m.corner_normal_index[c]) : get3(m.vertex_normals, m.corner_vertex[c]);
+      const std::size_t t = std::size_t(m.corner_texcoord_index[c]) * m.texcoord_dims;
+      for (double x : {p.x, p.y, p.z, n.x, n.y, n.z, m.texcoords[t], m.texcoords[t + 1]}) u.data.push_back(float(x));
+      u.corner.push_back(c);
+    }
+  }
+  return u;
+}
+
+// Polygons as fans (the reference takes triangles only); everything else kept.
+Mesh fan_triangles(const Mesh& m) {
+  Mesh t = m;
+  t.face_start = {0};
+  t.corner_vertex.clear();
+  t.corner_texcoord_index.clear();
+  t.corner_normal_index.clear();
+  t.face_normals.clear();
+  t.face_colors.clear();
+  t.face_quality.clear();
+  t.face_properties.clear();
+  t.face_group_run.clear();
+  for (std::size_t f = 0; f < m.num_faces(); ++f) {
+    const std::uint32_t b = m.face_start[f];
+    for (std::uint32_t k = 1; k + 1 < m.face_size(f); ++k)
+      for (std::uint32_t c : {b, b + k, b + k + 1}) {
+        t.corner_vertex.push_back(m.corner_vertex[c]);
+        t.corner_texcoord_index.push_back(m.corner_texcoord_index[c]);
+        if (m.has_corner_normals()) t.corner_normal_index.push_back(m.corner_normal_index[c]);
+        if (t.corner_vertex.size() % 3 == 0) t.face_start.push_back(std::uint32_t(t.corner_vertex.size()));
+      }
+  }
+  return t;
+}
+
+std::vector<std::string> textured_meshes() {
+  std::vector<std::string> out;
+  const std::string src = SHADETOOL_SOURCE_DIR;
+  // The corpus: beside the source tree in CI, two levels up from a worktree under wt/.
+  std::vector<std::string> roots = {src + "/data"};
+  for (const std::string& corpus : {src + "/../shared/corpus", src + "/../../shared/corpus"}) {
+    struct stat st;
+    if (::stat(corpus.c_str(), &st) == 0) { roots.push_back(corpus); break; }
+  }
+  while (!roots.empty()) {
+    const std::string dir = roots.back();
+    roots.pop_back();
+    DIR* d = ::opendir(dir.c_str());
+    if (!d) continue;
+    while (dirent* e = ::readdir(d)) {
+      const std::string name = e->d_name;
+      if (name == "." || name == "..") continue;
+      const std::string path = dir + "/" + name;
+      struct stat st;
+      if (::stat(path.c_str(), &st) != 0) continue;
+      if (S_ISDIR(st.st_mode)) { roots.push_back(path); continue; }
+      for (const char* ext : {".obj", ".ply", ".glb", ".gltf", ".off"})
+        if (name.size() > 4 && name.compare(name.size() - std::string(ext).size(), std::string::npos, ext) == 0) out.push_back(path);
+    }
+    ::closedir(d);
+  }
+  return out;
+}
+
+}  // namespace
+
+// Every textured mesh in data/ and the corpus: the same w at every corner, directions within 1e-3 degrees.
+TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on real files", "[tangents][reference]") {
+  const std::string ref = reference_dir();
+  if (ref.empty()) {
+    WARN("SKIPPED: the MikkTSpace reference (node + npm install mikktspace failed: no node or no registry)");
+    return;
+  }
+  std::size_t meshes = 0, corners = 0;
+  double overall_worst = 0;
+  for (const std::string& path : textured_meshes()) {
+    Mesh m;
+    try {
+      m = read_mesh(path);
+    } catch (const shadetool::Error&) {
+      continue;  // files the readers refuse are other tests' business
+    }
+    if (!m.has_texcoords() || m.texcoord_dims < 2) continue;
+    if (!m.has_vertex_normals() && !m.has_corner_normals()) {
+      NormalsRequest r;
+      update_mesh_normals(m, r);
+    }
+    m = fan_triangles(m);
+    const Unindexed u = unindexed(m);
+    if (u.corner.empty()) continue;
+    const std::string in = "tangents_ref_in.f32", out = "tangents_ref_out.f32";
+    {
+      std::ofstream f(in, std::ios::binary);
+      f.write(reinterpret_cast<const char*>(u.data.data()), std::streamsize(u.data.size() * sizeof(float)));
+    }
+    const auto run = shadetool_test::run_process(
+        {"/usr/bin/env", "NODE_PATH=" + ref + "/node_modules", "node",
+         std::string(SHADETOOL_SOURCE_DIR) + "/tests/normals/mikktspace_reference.js", in, out});
+    INFO(path << ": " << run.err);
+    REQUIRE(run.code == 0);
+    const std::string bytes = shadetool_test::read_file(out);
+    REQUIRE(bytes.size() == 4 * sizeof(float) * u.corner.size());
+    std::vector<float> expected(bytes.size() / sizeof(float));
+    std::memcpy(expected.data(), bytes.data(), bytes.size());
+    const TangentFrames t = mikktspace_tangents(m);
+    std::size_t w_differs = 0, direction_differs = 0;
+    double worst = 0;
+    for (std::size_t i = 0; i < u.corner.size(); ++i) {
+      const double* ours = &t.tangents[4 * std::size_t(u.corner[i])];
+      if (ours[3] != double(expected[4 * i + 3])) ++w_differs;
+      const double a = angle_deg(ours, {expected[4 * i], expected[4 * i + 1], expected[4 * i + 2]});
+      worst = std::max(worst, a);
+      if (!(a <= 1e-3)) ++direction_differs;
+    }
+    INFO(path << ": " << u.corner.size() << " corners, worst direction " << worst << " degrees");
+    CHECK(w_differs == 0);
+    CHECK(direction_differs == 0);
+    ++meshes;
+    corners += u.corner.size();
+    overall_worst = std::max(overall_worst, worst);
+  }
+  WARN("MikkTSpace reference: " << meshes << " textured meshes, " << corners << " corners, worst direction "
+                                << overall_worst << " degrees");
+  CHECK(meshes >= 1);
+  std::remove("tangents_ref_in.f32");
+  std::remove("tangents_ref_out.f32");
+}
