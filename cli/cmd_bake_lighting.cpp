@@ -13,11 +13,13 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include "fit_options.h"
 #include "usage_error.h"
 #include <shadetool/gltf/gltf_lights.h>
 #include <shadetool/gltf/gltf_scene.h>
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/lighting/encode_color.h>
+#include <shadetool/lighting/fit_vertex_lighting.h>
 #include <shadetool/lighting/read_scene.h>
 
 namespace shadetool_cli {
@@ -62,6 +64,7 @@ std::string join(const std::vector<std::string>& items) {
 RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
   static IoOptions io;
   static BakeLightingOptions opt;
+  static FitCliOptions fit;
   auto* sub = app.add_subcommand(
       "bake-lighting",
       "Bake lit colours into a mesh: OpenGL 2.1 fixed-function lighting (lambert, phong, blinn-phong; ambient, "
@@ -89,6 +92,7 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
                                   "for the sky and again for the ground)")
                       ->check(CLI::Range(1u, 1u << 20))
                       ->needs(shadows_flag);
+  add_fit_options(*sub, fit, "lit colour");
 
   return [samples] {
     // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
@@ -138,7 +142,21 @@ RegisterCommand reg(50, [](CLI::App& app) -> std::function<int()> {
         cast.occluders = static_cast<const SceneOccluders*>(state.get())->bvh.get();
         r.notes.push_back("shadows cast by the whole scene (every primitive placed by its nodes), one BVH");
       }
-      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade, cast);
+      shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, frequency, shade, cast);
+      // --fit least-squares (lighting/fit_vertex_lighting.h): the point colours replaced by the fit.
+      if (fit_method(fit) == shadetool::VertexFit::LeastSquares && frequency == shadetool::ShadingFrequency::PerVertex) {
+        shadetool::VertexFitOptions vfit;
+        vfit.method = shadetool::VertexFit::LeastSquares;
+        vfit.samples = fit.samples;
+        vfit.solve.regularization = fit.regularization;
+        if (!encoding.hdr) vfit.solve.upper = 1;  // 8-bit: [0, 1]
+        shadetool::VertexLightingFit lsq = shadetool::fit_vertex_lighting(mesh, scene, baked, shade, cast, vfit);
+        baked.rgb = std::move(lsq.rgb);
+        report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
+        if (shadows.enabled) r.stats["fit_shadow_rays"] = lsq.shadows.shadow_rays;
+      } else if (fit_method(fit) == shadetool::VertexFit::LeastSquares) {
+        r.notes.push_back("--fit least-squares ignored with --per face (one colour per face is its mean, not a fit)");
+      }
       const shadetool::ShadeReport& rep = baked.report;
 
       if (frequency == shadetool::ShadingFrequency::PerVertex && baked.normals_source.rfind("computed", 0) == 0)

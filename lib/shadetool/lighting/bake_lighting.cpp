@@ -85,6 +85,7 @@ BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency 
       normals = std::move(computed.normals);
     }
     result.rgb = shade_with_shadows(mesh, scene, mesh.positions, normals, options, shadows, result);
+    result.vertex_normals = std::move(normals);
     return result;
   }
 
