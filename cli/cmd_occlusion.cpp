@@ -14,7 +14,11 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include "fit_options.h"
+#include "usage_error.h"
 #include <shadetool/visibility/ambient_occlusion.h>
+#include <shadetool/visibility/fit_occlusion.h>
+#include <shadetool/visibility/occlusion_to_error.h>
 #include <shadetool/gltf/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
 
@@ -41,12 +45,14 @@ void store_grey(shadetool::Mesh& mesh, const std::vector<float>& open, std::vect
 RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
   static IoOptions io;
   static OcclusionOptions opt;
+  static FitCliOptions fit;
+  static double target_error = 0;
   auto* sub = app.add_subcommand(
       "occlusion",
       "Ambient occlusion by ray casting (Embree): per vertex or face, the cosine-weighted fraction of the sky "
       "open to distance D, as grey colours and/or a PLY quality property");
   add_io_options(*sub, io, /*writes_mesh=*/true);
-  sub->add_option("--samples", opt.samples, "Rays per vertex or face (default 64; error falls as N^-3/4)")
+  auto* samples_opt = sub->add_option("--samples", opt.samples, "Rays per vertex or face (default 64; error falls as N^-3/4); with --error the most rays per vertex or face (default 4096)")
       ->check(CLI::Range(1u, 1u << 20))
       ->type_name("N");
   sub->add_option("--distance", opt.distance,
@@ -57,7 +63,23 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       ->check(CLI::IsMember({"color", "quality", "both"}));
   sub->add_option("--per", opt.per, "One value per vertex (default) or per face")
       ->check(CLI::IsMember({"vertex", "face"}));
-  return [] {
+  auto* error_opt = sub->add_option("--error", target_error,
+                                    "Add rays in batches until the estimated standard error of each open fraction is at "
+                                    "most E (8 scrambled Sobol replicates; --samples caps the rays, default 4096)")
+                        ->check(CLI::PositiveNumber)
+                        ->type_name("E");
+  add_fit_options(*sub, fit, "open fraction");
+  return [samples_opt, error_opt] {
+    const bool to_error = error_opt->count() > 0;
+    const bool least_squares = fit_method(fit) == shadetool::VertexFit::LeastSquares;
+    shadetool::OcclusionToErrorOptions error_options;
+    error_options.target_error = target_error;
+    error_options.max_samples = samples_opt->count() > 0 ? opt.samples : 4096u;
+    error_options.max_distance = opt.distance;
+    if (to_error && error_options.max_samples < shadetool::kOcclusionReplicates * shadetool::kOcclusionFirstBatch)
+      throw UsageError("--error needs --samples of at least " +
+                       std::to_string(shadetool::kOcclusionReplicates * shadetool::kOcclusionFirstBatch) +
+                       " (one batch of every replicate)");
     shadetool::AmbientOcclusionOptions options;
     options.samples = opt.samples;
     options.max_distance = opt.distance;
@@ -65,7 +87,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
     const bool colors = opt.as != "quality", quality = opt.as != "color";
     return run_mesh_command(
         "occlusion", io,
-        [options, per_face, colors, quality](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [options, per_face, colors, quality, to_error, least_squares, error_options](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_faces(mesh, input);
           shadetool::require_finite_positions(mesh, input);
           // Normals pass through to the output: none may carry NaN or Inf into it.
@@ -74,6 +96,10 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           // the first primitive for all of them; the BVH statistics then count once, there.
           shadetool::MeshOcclusion job;
           bool scene_stats = true;
+          if ((to_error || least_squares) && r.gltf_document)
+            throw UsageError(input + ": --error and --fit least-squares do not yet work on a glTF scene (convert the mesh "
+                             "to PLY or OBJ first)");
+          shadetool::OcclusionToError adaptive;
           if (r.gltf_document && r.gltf && r.gltf_document_state) {
             std::shared_ptr<void>& state = *r.gltf_document_state;
             const std::size_t index = std::size_t(r.gltf - r.gltf_document->primitives.data());
@@ -88,9 +114,36 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
             job.ao = scene.primitives[index];
             job.normals_computed = scene.normals_computed[index];
             job.scene = scene.scene;
+          } else if (to_error) {  // visibility/occlusion_to_error.h
+            adaptive = shadetool::mesh_occlusion_to_error(mesh, per_face, error_options, input, job.normals_computed);
+            job.ao.open_fraction = adaptive.open_fraction;
+            job.ao.rays = adaptive.total_rays;
+            job.ao.hits = adaptive.hits;
+            job.ao.skipped = adaptive.skipped;
+            job.scene = adaptive.scene;
           } else {
             // The normals (when computed) and the BVH are freed inside: the outputs are made after.
             job = shadetool::mesh_occlusion(mesh, per_face, options, input);
+          }
+          if (least_squares && per_face) {
+            r.notes.push_back("--fit least-squares ignored with --per face (a face holds one value)");
+          } else if (least_squares) {  // visibility/fit_occlusion.h
+            shadetool::VertexFitOptions vfit;
+            vfit.method = shadetool::VertexFit::LeastSquares;
+            vfit.samples = fit.samples;
+            vfit.solve.regularization = fit.regularization;
+            shadetool::OcclusionFit lsq = shadetool::fit_occlusion(mesh, job.ao.open_fraction, options,
+                                                                   to_error ? &error_options : nullptr, vfit, input);
+            job.ao.open_fraction = std::move(lsq.open_fraction);
+            report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
+            r.stats["fit_rays"] = lsq.rays;
+          }
+          if (to_error) {
+            r.setting("target_error", error_options.target_error);
+            r.stats["capped"] = adaptive.capped;
+            nlohmann::json histogram = nlohmann::json::object();
+            for (const auto& [rays, count] : shadetool::ray_histogram(adaptive.rays)) histogram[std::to_string(rays)] = count;
+            r.stats["rays_histogram"] = histogram;
           }
           const shadetool::AmbientOcclusion& ao = job.ao;
           const shadetool::VisibilitySceneStats& s = job.scene;
@@ -116,7 +169,7 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
           double mean = 0;
           for (float v : ao.open_fraction) mean += v;
           r.stats["per"] = what;
-          r.setting("samples", options.samples);
+          r.setting(to_error ? "max_samples" : "samples", to_error ? error_options.max_samples : options.samples);
           if (std::isfinite(options.max_distance)) r.stats["distance"] = options.max_distance;
           r.stats["rays"] = ao.rays;
           r.stats["hits"] = ao.hits;

@@ -46,6 +46,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/fit/vertex_fit.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
@@ -89,6 +90,13 @@ struct LeastSquaresFitOptions {
   int max_iterations = 0;        // 0: 2 * #nodes (Eigen's default)
   double lower = 0;                                        // clamp after the solve
   double upper = std::numeric_limits<double>::infinity();
+};
+
+// What a caller of a fit chooses (`--fit`, `--fit-samples`, `--fit-regularization`).
+struct VertexFitOptions {
+  VertexFit method = VertexFit::Point;
+  int samples = 3;  // quadrature points per triangle (fit/triangle_quadrature.h)
+  LeastSquaresFitOptions solve;
 };
 
 struct LeastSquaresFit {

@@ -33,12 +33,6 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
-struct VertexFitOptions {
-  VertexFit method = VertexFit::Point;
-  int samples = 3;  // quadrature points per triangle (fit/triangle_quadrature.h)
-  LeastSquaresFitOptions solve;
-};
-
 struct VertexLightingFit {
   std::vector<double> rgb;
   LeastSquaresFit solve;         // values moved into rgb
