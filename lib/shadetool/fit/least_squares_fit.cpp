@@ -126,6 +126,13 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
   };
   const std::vector<QuadraturePoint> rule = triangle_quadrature(samples);
   const std::size_t T = e.tri_face.size();
+  const int g = quad_gauss_points(samples);
+  const std::size_t most = T * rule.size() + e.quad_face.size() * std::size_t(g * g);
+  q.node.reserve(4 * most);
+  q.vertex.reserve(4 * most);
+  q.phi.reserve(4 * most);
+  q.weight.reserve(most);
+  q.face.reserve(most);
   for (std::size_t t = 0; t < T; ++t) {
     const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
     if (!(area > 0)) continue;  // no area, no part of the integral

@@ -85,7 +85,8 @@ std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::v
                                             std::size_t width);
 
 struct LeastSquaresFitOptions {
-  double regularization = 0.001;  // lambda (dimensionless; 0: the plain least-squares solution)
+  double regularization = 0;  // lambda (dimensionless; 0: the plain least-squares solution, the
+                             // least error; bench/fit/results.md: R costs 5x the solve's time)
   double tolerance = 1e-10;      // relative residual |A c - b| / |b| at which CG stops
   int max_iterations = 0;        // 0: 2 * #nodes (Eigen's default)
   double lower = 0;                                        // clamp after the solve
