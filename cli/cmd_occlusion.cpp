@@ -65,8 +65,8 @@ RegisterCommand reg(60, [](CLI::App& app) -> std::function<int()> {
       ->check(CLI::IsMember({"vertex", "face"}));
   auto* error_opt = sub->add_option("--error", target_error,
                                     "Add rays in batches until the estimated standard error of each open fraction is at "
-                                    "most E (" + std::to_string(shadetool::kOcclusionReplicates) +
-                                        " scrambled Sobol replicates; --samples caps the rays, default 4096)")
+                                    "most E (a pilot of " + std::to_string(shadetool::kOcclusionReplicates) +
+                                        " scrambled Sobol replicates, then one sequence; --samples caps the rays, default 4096)")
                         ->check(CLI::PositiveNumber)
                         ->type_name("E");
   add_fit_options(*sub, fit, "open fraction");

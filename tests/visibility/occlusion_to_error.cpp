@@ -82,9 +82,7 @@ TEST_CASE("Occlusion to a stated error under a disc: true error below 2E at 95% 
     WARN("disc, E = " << E << ": within 2E at " << 100 * r.covered << "% of points, RMS " << r.rms << ", rays "
                       << r.rays << " vs fixed N = " << r.fixed_n << ": " << r.fixed_rays);
     CHECK(r.covered >= 0.95);
-    // Known shortfall (reported, not failed): 8 replicates of n rays cost 8^(1/4) = 1.68x the rays of
-    // one sequence of 8n at the N^(-3/4) rate, more than the per-point adaptivity saves here.
-    CHECK_NOFAIL(r.rays < r.fixed_rays);
+    CHECK(r.rays < r.fixed_rays);
   }
 }
 
@@ -105,7 +103,10 @@ TEST_CASE("Occlusion to a stated error in a cube's corner (sqrt(3)/4), over 400 
                              << r.rays << " vs fixed N = " << r.fixed_n << ": " << r.fixed_rays);
     CHECK(r.covered >= 0.95);
     CHECK(r.rms <= 1.2 * E);
-    CHECK_NOFAIL(r.rays < r.fixed_rays);  // every seed the same point: adaptivity cannot save rays
+    // Reported, not failed: every seed is the same point, so nothing is gained by adapting, and the
+    // pilot's 28 extra rays and the power-of-two steps decide (measured: E = 0.01 below the fixed
+    // count, E = 0.02 above it).
+    CHECK_NOFAIL(r.rays < r.fixed_rays);
   }
 }
 
@@ -131,10 +132,10 @@ TEST_CASE("Occlusion to an error: open points stop early, the cap is kept, same 
   }
   CHECK(sum == one.total_rays);
   CHECK(one.capped > 0);  // under the disc's rim 256 rays cannot reach 0.01
-  // the disc's own vertices face up into the open sky: every ray escapes, and they stop at 128
-  // rays (the binomial floor sqrt(p (1 - p) / N) with p = 1/2 / (N + 1) falls below 0.01 there)
+  // the disc's own vertices face up into the open sky: every pilot ray escapes, and the binomial
+  // floor sqrt(p (1 - p) / n) with p = 1/2 / (n + 1) sends them on to a short main sequence only
   const std::size_t disc_vertex = 81;
-  CHECK(one.rays[disc_vertex] == 128);
+  CHECK(one.rays[disc_vertex] < o.max_samples);
   CHECK(one.open_fraction[disc_vertex] == 1.0f);
   CHECK(one.standard_error[disc_vertex] <= 0.01f);
   o.max_samples = 16;

@@ -14,7 +14,9 @@ namespace shadetool {
 
 namespace {
 
-constexpr std::uint32_t kErrorSalt = 2;  // fixed-count occlusion uses 0 (vertices) and 1 (faces)
+constexpr std::uint32_t kErrorSalt = 2;
+// The rate assumed from the pilot to N rays: below the N^(-3/4) of sample_sequence.h, for margin.
+constexpr double kRate = 0.7;  // fixed-count occlusion uses 0 (vertices) and 1 (faces)
 
 struct PointResult {
   float open = 1, se = 0;
@@ -44,29 +46,43 @@ double replicate_standard_error(const std::uint32_t* hits, std::uint32_t R, std:
 
 PointResult trace_point(RTCScene rtc, const Vec3f& p, const Vec3d& axis, std::uint32_t point_seed,
                         const OcclusionToErrorOptions& o, float tfar) {
-  constexpr std::uint32_t R = kOcclusionReplicates;
+  constexpr std::uint32_t R = kOcclusionReplicates, n0 = kOcclusionFirstBatch;
   std::uint32_t hits[R] = {};
-  std::uint32_t done = 0, n = kOcclusionFirstBatch;
   PointResult out;
-  double se = 0;
-  for (;;) {
-    for (std::uint32_t r = 0; r < R; ++r)
-      hits[r] += visibility_engine::count_cosine_hits(rtc, p, axis, visibility::hash_combine(point_seed, r), done, n - done, tfar);
-    done = n;
-    se = replicate_standard_error(hits, R, n);
-    if (se <= o.target_error) break;
-    if (std::uint64_t(R) * 2 * n > o.max_samples) {
-      out.capped = true;
-      break;
-    }
-    n *= 2;
+  // Pilot: R scrambles of n0 rays; sigma = the spread of one replicate's estimate.
+  for (std::uint32_t r = 0; r < R; ++r)
+    hits[r] = visibility_engine::count_cosine_hits(rtc, p, axis, visibility::hash_combine(point_seed, r), 0, n0, tfar);
+  const double sigma = replicate_standard_error(hits, R, n0) * std::sqrt(double(R));
+  std::uint32_t pilot_hits = 0;
+  for (std::uint32_t r = 0; r < R; ++r) pilot_hits += hits[r];
+  const double pilot_open = 1.0 - double(pilot_hits) / double(R * n0);  // divisor: R n0 = 32
+  if (sigma / std::sqrt(double(R)) <= o.target_error) {
+    out.rays = R * n0;
+    out.hits = pilot_hits;
+    out.open = float(pilot_open);
+    out.se = float(sigma / std::sqrt(double(R)));
+    return out;
   }
-  std::uint32_t total = 0;
-  for (std::uint32_t r = 0; r < R; ++r) total += hits[r];
-  out.rays = R * n;
-  out.hits = total;
-  out.open = float(double(out.rays - total) / double(out.rays));  // divisor: >= 32
-  out.se = float(se);
+  // Main: replicate 0 extended to N rays, N the least power of two whose predicted error
+  // sigma (N / n0)^(-3/4) is at most E, within the cap.
+  const std::uint32_t room = o.max_samples - (R - 1) * n0;  // >= n0 (checked by the caller)
+  std::uint32_t N = 2 * n0;
+  while (N < room && sigma * std::pow(double(N) / n0, -kRate) > o.target_error && N <= (1u << 30)) N *= 2;
+  if (N > room) N = room;
+  const std::uint32_t main_hits =
+      hits[0] + visibility_engine::count_cosine_hits(rtc, p, axis, visibility::hash_combine(point_seed, 0), n0, N - n0, tfar);
+  // Inverse-variance combination of the main estimate and the other R - 1 pilots.
+  const double var_main = sigma * sigma * std::pow(double(N) / n0, -2 * kRate), var_pilot = sigma * sigma;
+  const double w_main = 1.0 / var_main, w_pilot = 1.0 / var_pilot;  // divisors: sigma > E > 0 here
+  double sum = w_main * (1.0 - double(main_hits) / N);
+  for (std::uint32_t r = 1; r < R; ++r) sum += w_pilot * (1.0 - double(hits[r]) / n0);
+  const double w = w_main + (R - 1) * w_pilot;
+  out.open = float(sum / w);
+  out.se = float(std::sqrt(1.0 / w));
+  out.rays = N + (R - 1) * n0;
+  out.hits = main_hits;
+  for (std::uint32_t r = 1; r < R; ++r) out.hits += hits[r];
+  out.capped = out.se > o.target_error;
   return out;
 }
 
