@@ -14,9 +14,9 @@ namespace shadetool {
 
 namespace {
 
-constexpr std::uint32_t kErrorSalt = 2;
+constexpr std::uint32_t kErrorSalt = 2;  // fixed-count occlusion uses 0 (vertices) and 1 (faces)
 // The rate assumed from the pilot to N rays: below the N^(-3/4) of sample_sequence.h, for margin.
-constexpr double kRate = 0.7;  // fixed-count occlusion uses 0 (vertices) and 1 (faces)
+constexpr double kRate = 0.7;
 
 struct PointResult {
   float open = 1, se = 0;
