@@ -14,6 +14,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include "fit_options.h"
 #include "usage_error.h"
 #include <shadetool/gltf/gltf_baked.h>
 #include <shadetool/gltf/gltf_lights.h>
@@ -21,6 +22,7 @@
 #include <shadetool/lighting/bake_lighting.h>
 #include <shadetool/io/split_corner_normals.h>
 #include <shadetool/lighting/encode_color.h>
+#include <shadetool/lighting/fit_vertex_lighting.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/lighting/world_occluders.h>
 
@@ -37,6 +39,7 @@ struct BakeLightingOptions {
   bool unlit = false;
   bool shadows = false;
   std::uint32_t samples = 16;
+  FitCliOptions fit;  // --fit, --fit-regularization, --fit-samples (fit_options.h)
 };
 
 std::string join(const std::vector<std::string>& items) {
@@ -188,10 +191,12 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
                                   "With --shadows: rays per point per area or sky light (default 16; a sky casts them "
                                   "for the sky and again for the ground)")
                       ->needs(shadows_flag);
+  add_fit_options(*sub, opt.fit, "lit colour");
 
   return [options, samples] {
     IoOptions& io = options->io;
     const BakeLightingOptions& opt = options->opt;
+    const FitCliOptions fit = opt.fit;
     // The scene is read once, before any mesh: a bad scene fails the command (exit 1), no output.
     const bool own_scene = opt.scene.empty();  // glTF input: the file's lights (gltf/gltf_lights.h)
     BakeSettings set;
@@ -233,7 +238,21 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
         r.notes.push_back(std::to_string(added) + " vertices added so that each corner is lit with its own normal (corner "
                           "normals differ there); the output's vertex normals are those corner normals");
       }
-      const shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
+      shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
+      // --fit least-squares (lighting/fit_vertex_lighting.h): the point colours replaced by the fit.
+      if (fit_method(fit) == shadetool::VertexFit::LeastSquares && set.frequency == shadetool::ShadingFrequency::PerVertex) {
+        shadetool::VertexFitOptions vfit;
+        vfit.method = shadetool::VertexFit::LeastSquares;
+        vfit.samples = fit.samples;
+        vfit.solve.regularization = fit.regularization;
+        if (!set.encoding.hdr) vfit.solve.upper = 1;  // 8-bit: [0, 1]
+        shadetool::VertexLightingFit lsq = shadetool::fit_vertex_lighting(mesh, scene, baked, set.shade, cast, vfit);
+        baked.rgb = std::move(lsq.rgb);
+        report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
+        if (set.shadows.enabled) r.stats["fit_shadow_rays"] = lsq.shadows.shadow_rays;
+      } else if (fit_method(fit) == shadetool::VertexFit::LeastSquares) {
+        r.notes.push_back("--fit least-squares ignored with --per face (one colour per face is its mean, not a fit)");
+      }
       add_bake_notes(baked, scene, set, r);
       for (auto& n : shadetool::store_baked_colors(mesh, encoded_colors(baked, file_encoding, input), set.frequency,
                                                    set.encoding.hdr))

@@ -15,9 +15,12 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include "driver.h"
+#include "fit_options.h"
 #include "usage_error.h"
 #include <shadetool/lighting/bake_lighting.h>  // ShadingFrequency's vocabulary (--per)
 #include <shadetool/visibility/ambient_occlusion.h>
+#include <shadetool/visibility/fit_occlusion.h>
+#include <shadetool/visibility/occlusion_to_error.h>
 #include <shadetool/gltf/gltf_baked.h>
 #include <shadetool/gltf/gltf_occlusion.h>
 #include <shadetool/visibility/visibility_scene.h>
@@ -33,6 +36,8 @@ struct OcclusionOptions {
   std::string as = "both";
   std::string per = "vertex";
   bool unlit = false;
+  double target_error = 0;  // --error E; 0: a fixed --samples
+  FitCliOptions fit;
 };
 
 // The open fraction as grey (r = g = b = value) in `colors`, keeping the channel count the mesh's
@@ -69,7 +74,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
       "Ambient occlusion by ray casting (Embree): per vertex or face, the cosine-weighted fraction of the sky "
       "open to distance D, as grey colours and/or a PLY quality property");
   add_io_options(*sub, io, OutputKind::Mesh);
-  sub->add_option("--samples", opt.samples, "Rays per vertex or face (default 64, at most 1048576; error falls as N^-3/4)")
+  auto* samples_opt = sub->add_option("--samples", opt.samples, "Rays per vertex or face (default 64, at most 1048576; error falls as N^-3/4); with --error the most rays per vertex or face (default 4096)")
       ->type_name("N");
   sub->add_option("--distance", opt.distance,
                   "Only occluders nearer than D > 0 (mesh units) count (default: unlimited)")
@@ -81,9 +86,27 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
   sub->add_flag("--unlit", opt.unlit,
                 "glTF input to glTF output: give the primitives' materials KHR_materials_unlit (a non-glTF input "
                 "written as glTF always gets an unlit material)");
-  return [command_options = options] {
+  auto* error_opt = sub->add_option("--error", opt.target_error,
+                                    "Add rays in batches until the estimated standard error of each open fraction is at "
+                                    "most E (a pilot of " + std::to_string(shadetool::kOcclusionReplicates) +
+                                        " scrambled Sobol replicates, then one sequence; --samples caps the rays, default 4096)")
+                        ->check(CLI::PositiveNumber)
+                        ->type_name("E");
+  add_fit_options(*sub, opt.fit, "open fraction");
+  return [command_options = options, samples_opt, error_opt] {
     IoOptions& io = command_options->io;
     const OcclusionOptions& opt = command_options->opt;
+    const FitCliOptions& fit = opt.fit;
+    const bool to_error = error_opt->count() > 0;
+    const bool least_squares = fit_method(fit) == shadetool::VertexFit::LeastSquares;
+    shadetool::OcclusionToErrorOptions error_options;
+    error_options.target_error = opt.target_error;
+    error_options.max_samples = samples_opt->count() > 0 ? opt.samples : 4096u;
+    error_options.max_distance = opt.distance;
+    if (to_error && error_options.max_samples < shadetool::kOcclusionReplicates * shadetool::kOcclusionFirstBatch)
+      throw UsageError("--error needs --samples of at least " +
+                       std::to_string(shadetool::kOcclusionReplicates * shadetool::kOcclusionFirstBatch) +
+                       " (one batch of every replicate)");
     shadetool::AmbientOcclusionOptions options;
     options.samples = opt.samples;
     options.max_distance = opt.distance;
@@ -102,7 +125,8 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
     io.result_name = std::string(colors && quality ? "grey colours and quality" : colors ? "grey colours" : "quality") + " per " + opt.per;
     return run_command(
         "occlusion", io,
-        [options, per_face, colors, quality, unlit = opt.unlit](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+        [options, per_face, colors, quality, unlit = opt.unlit, fit, to_error, least_squares, error_options](
+            shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_faces(mesh, input);
           shadetool::require_finite_positions(mesh, input);
           // Normals pass through to the output: one without a direction is replaced, with a counted note.
@@ -113,6 +137,10 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
           shadetool::MeshOcclusion job;
           shadetool::Mesh split;
           bool scene_stats = true;
+          if ((to_error || least_squares) && r.gltf_document)
+            throw UsageError(input + ": --error and --fit least-squares do not yet work on a glTF scene (convert the mesh "
+                             "to PLY or OBJ first)");
+          shadetool::OcclusionToError adaptive;
           if (r.gltf_document && r.gltf && r.gltf_document_state) {
             const std::size_t index = std::size_t(r.gltf - r.gltf_document->primitives.data());
             const auto& scene = r.gltf_document_state->get_or_make<shadetool::GltfSceneOcclusion>(
@@ -125,21 +153,51 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
             job.ao = scene.primitives[index];
             job.normals_computed = scene.normals_computed[index];
             job.scene = scene.scene;
-          } else if (std::size_t added = 0; !per_face && mesh.has_corner_normals() && !mesh.has_vertex_normals() &&
-                     usable_split(mesh, split, added)) {
-            // Corner normals (OBJ vn) are the file's normals: the rays leave about them, one
-            // vertex per distinct (vertex, normal) pair (io/split_corner_normals.h). When that adds
-            // no vertex the output keeps its corner normals; else it is the split mesh.
-            job = shadetool::mesh_occlusion(split, per_face, options, input);
-            if (added > 0) {
+          } else {
+            // Corner normals (OBJ vn) are the file's normals: the rays leave about them, one vertex
+            // per distinct (vertex, normal) pair (io/split_corner_normals.h). When that adds no
+            // vertex the output keeps its corner normals; else it is the split mesh.
+            std::size_t added = 0;
+            const bool corners = !per_face && mesh.has_corner_normals() && !mesh.has_vertex_normals() &&
+                                 usable_split(mesh, split, added);
+            const shadetool::Mesh& source = corners ? split : mesh;
+            if (to_error) {  // visibility/occlusion_to_error.h
+              adaptive = shadetool::mesh_occlusion_to_error(source, per_face, error_options, input, job.normals_computed);
+              job.ao.open_fraction = adaptive.open_fraction;
+              job.ao.rays = adaptive.total_rays;
+              job.ao.hits = adaptive.hits;
+              job.ao.skipped = adaptive.skipped;
+              job.scene = adaptive.scene;
+            } else {
+              // The normals (when computed) and the BVH are freed inside: the outputs are made after.
+              job = shadetool::mesh_occlusion(source, per_face, options, input);
+            }
+            if (corners && added > 0) {
               mesh = std::move(split);
               r.notes.push_back(fmt::format("{} vertices added so that each corner's rays leave about its own normal (corner "
                                             "normals differ there); the output's vertex normals are those corner normals",
                                             added));
             }
-          } else {
-            // The normals (when computed) and the BVH are freed inside: the outputs are made after.
-            job = shadetool::mesh_occlusion(mesh, per_face, options, input);
+          }
+          if (least_squares && per_face) {
+            r.notes.push_back("--fit least-squares ignored with --per face (a face holds one value)");
+          } else if (least_squares) {  // visibility/fit_occlusion.h
+            shadetool::VertexFitOptions vfit;
+            vfit.method = shadetool::VertexFit::LeastSquares;
+            vfit.samples = fit.samples;
+            vfit.solve.regularization = fit.regularization;
+            shadetool::OcclusionFit lsq = shadetool::fit_occlusion(mesh, job.ao.open_fraction, options,
+                                                                   to_error ? &error_options : nullptr, vfit, input);
+            job.ao.open_fraction = std::move(lsq.open_fraction);
+            report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
+            r.stats["fit_rays"] = lsq.rays;
+          }
+          if (to_error) {
+            r.setting("target_error", error_options.target_error);
+            r.stats["capped"] = adaptive.capped;
+            nlohmann::json histogram = nlohmann::json::object();
+            for (const auto& [rays, count] : shadetool::ray_histogram(adaptive.rays)) histogram[std::to_string(rays)] = count;
+            r.stats["rays_histogram"] = histogram;
           }
           const shadetool::AmbientOcclusion& ao = job.ao;
           const shadetool::VisibilitySceneStats& s = job.scene;
@@ -172,7 +230,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
           double mean = 0;
           for (float v : ao.open_fraction) mean += v;
           r.stats["per"] = what;
-          r.setting("samples", options.samples);
+          r.setting(to_error ? "max_samples" : "samples", to_error ? error_options.max_samples : options.samples);
           if (std::isfinite(options.max_distance)) r.stats["distance"] = options.max_distance;
           r.stats["rays"] = ao.rays;
           r.stats["hits"] = ao.hits;

@@ -76,6 +76,7 @@ BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency 
     result.normals_source = std::move(lit.source);
     result.normal_fallback_vertices = lit.fallback_vertices;
     result.rgb = shade_with_shadows(mesh, scene, mesh.positions, lit.normals, options, shadows, result);
+    result.vertex_normals = std::move(lit.normals);
     return result;
   }
 

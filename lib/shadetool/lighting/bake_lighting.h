@@ -52,6 +52,8 @@ struct BakeResult {
   std::string normals_source;          // e.g. "input vertex normals", "computed (angle-weighted)"
   std::size_t normal_fallback_vertices = 0;  // computed normals that needed the fallback
   ShadowStats shadows;                 // zero unless shadows.enabled
+  std::vector<double> vertex_normals;  // PerVertex: the normals lit with, #V by 3 object space (the
+                                       // normals lighting/fit_vertex_lighting.h interpolates)
 };
 
 // What a mesh must carry to be baked at `frequency` (Error "NAME: what"): per face, faces

@@ -243,7 +243,9 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
       surface.face_rgb = baked_face_colors(mesh, scene, options.lighting);
       break;
     case RenderShading::Gouraud:
-      surface.vertex_rgb = baked_vertex_colors(mesh, scene, options.lighting);
+      if (options.vertex_rgb && options.vertex_rgb->size() != 3 * V)
+        throw Error("render: " + std::to_string(options.vertex_rgb->size() / 3) + " vertex colours for " + std::to_string(V) + " vertices");
+      surface.vertex_rgb = options.vertex_rgb ? *options.vertex_rgb : baked_vertex_colors(mesh, scene, options.lighting);
       break;
     case RenderShading::Phong: {
       const std::vector<double> normals_object = shading_vertex_normals(mesh);

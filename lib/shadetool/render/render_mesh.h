@@ -81,6 +81,9 @@ struct RenderOptions {
   int threads = 0;                    // 0: TBB's default
   bool count_coverage = false;        // fill RenderResult::coverage (tests)
   bool check_eye_inside = true;       // refuse a camera inside the mesh
+  // Gouraud: these linear colours (#V by 3) instead of bake-lighting's point colours (null), e.g.
+  // lighting/fit_vertex_lighting.h's least-squares ones. The caller owns them for the call.
+  const std::vector<double>* vertex_rgb = nullptr;
 };
 
 struct RenderStats {

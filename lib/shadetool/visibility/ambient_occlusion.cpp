@@ -8,6 +8,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/normals/invalid_normals.h>
 #include <shadetool/normals/vertex_normals.h>
+#include <shadetool/visibility/engine/cosine_rays.h>
 #include <shadetool/visibility/engine/embree_scene.h>
 #include <shadetool/visibility/engine/face_normal_blocks.h>
 #include <shadetool/visibility/engine/point_ranges.h>
@@ -31,22 +32,7 @@ constexpr std::uint32_t kVertexSalt = 0, kFaceSalt = 1;
 // the scale is uniform and positive). Returns the number of rays that hit.
 std::uint32_t count_hits(RTCScene scene, const Vec3f& p_local, const Vec3d& n, std::uint32_t seed,
                          std::uint32_t samples, float tfar_local) {
-  Vec3d t, b;
-  visibility::orthonormal_basis(n, t, b);
-  const Vec3f origin = visibility::offset_ray_origin(p_local, Vec3f(n));
-  constexpr std::uint32_t kStream = 64;  // rays made, then traced together
-  RTCRay rays[kStream];
-  std::uint32_t hits = 0;
-  for (std::uint32_t first = 0; first < samples; first += kStream) {
-    const std::uint32_t count = std::min(kStream, samples - first);
-    for (std::uint32_t j = 0; j < count; ++j) {
-      const visibility::UnitSquarePoint s = visibility::scrambled_sobol_2d(first + j, seed);
-      const Vec3d w = visibility::cosine_hemisphere(s.u, s.v);
-      rays[j] = visibility_engine::make_ray(origin, Vec3f(t * w.x + b * w.y + n * w.z), tfar_local);
-    }
-    hits += visibility_engine::count_occluded(scene, rays, count);
-  }
-  return hits;
+  return visibility_engine::count_cosine_hits(scene, p_local, n, seed, 0, samples, tfar_local);
 }
 
 void check_options(const AmbientOcclusionOptions& o) { check_occlusion_options(o, "ambient occlusion"); }
@@ -299,6 +285,12 @@ void require_axis_normals(const Mesh& mesh, const std::string& source) {
 }
 
 }  // namespace
+
+std::vector<double> occlusion_vertex_axes(const Mesh& mesh, const std::string& source, bool& computed) {
+  if (mesh.has_vertex_normals()) require_axis_normals(mesh, source);
+  computed = !mesh.has_vertex_normals();
+  return computed ? vertex_normals(mesh).normals : mesh.vertex_normals;
+}
 
 MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclusionOptions& options,
                              const std::string& source) {

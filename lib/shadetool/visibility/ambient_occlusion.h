@@ -108,5 +108,10 @@ MeshOcclusion mesh_occlusion(const Mesh& mesh, bool per_face, const AmbientOcclu
 AmbientOcclusion mesh_occlusion(const VisibilityScene& scene, const Mesh& mesh, bool per_face,
                                 const AmbientOcclusionOptions& options, const std::string& source, bool& normals_computed);
 
+// The hemispheres' axes per vertex, #V by 3: the mesh's vertex normals (the same Error as
+// mesh_occlusion when any is invalid), else the library's angle-weighted ones in double
+// (computed = true). For callers that hold them all (occlusion_to_error.h, fit_occlusion.h).
+std::vector<double> occlusion_vertex_axes(const Mesh& mesh, const std::string& source, bool& computed);
+
 }  // namespace shadetool
 #pragma GCC visibility pop

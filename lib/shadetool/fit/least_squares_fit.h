@@ -1,0 +1,127 @@
+// least_squares_fit.h: the vertex values whose Gouraud interpolation is closest, in L2 over the
+// surface, to a signal f known at quadrature points (Kavan, Bargteil & Sloan, "Least Squares
+// Vertex Baking", EGSR 2011).
+//
+// Objective, per channel:   E(c) = integral over S of (sum_i c_i phi_i(x) - f(x))^2 dA + lambda R(c)
+// phi_i are the hat functions Gouraud interpolation uses (render/render_mesh.h): barycentric on
+// triangles and on the fan (from corner 0) of polygons with 5 or more corners; on quads the
+// bilinear weights (1-u)(1-v), u(1-v), uv, (1-u)v of corners 0..3 (the map P(u, v) of
+// render/inverse_bilinear.h; render blends a planar quad exactly so, a non-planar one on its fan).
+// Its minimum solves the normal equations
+//     (M + lambda R) c = b,   M_ij = integral phi_i phi_j dA,   b_i = integral phi_i f dA.
+//   M   triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]] (exact); quads: 3x3 Gauss-Legendre on the unit
+//       square with dA = |P_u x P_v| du dv (exact for planar quads: the integrand has degree <= 3
+//       in u and in v).
+//   b   the quadrature `q` (fit_quadrature: triangle_quadrature.h's rule with `samples` points per
+//       triangle; quads n x n Gauss-Legendre, n = 1, 2, 3 for samples 1, 3, 6 or 12), f given at
+//       its points.
+//   R   the paper's edge-based regulariser (its section on regularisation; the form below is the
+//       one of NVIDIA's optix_prime_baking sample, adapted from P.-P. Sloan's code): for every edge
+//       shared by exactly two triangles T1, T2 (of the fans above; quads on their 0-2 diagonal),
+//       the two triangles unfolded into one plane about the edge,
+//           R(c) = sum_edges (A1 + A2)^2 |grad g|T1 - grad g|T2|^2,   g = sum_i c_i phi_i,
+//       zero exactly when g is one linear function across the edge: it penalises kinks, not
+//       slopes, so a linear signal is still reproduced exactly. (A1 + A2)^2 |grad|^2 has the units of
+//       f^2 times area, as the data term: lambda is dimensionless and does not change with scale.
+//       Edges with a zero-length side or a zero-height triangle are left out (counted).
+// Nodes are what carries a value: corner_node maps each corner to its node (the vertex, or a
+// corner group split at a crease or seam: then no edge joins the two sides, M and R never couple
+// them, and the fitted values keep the discontinuity).
+//
+// Solver: Eigen's ConjugateGradient (Jacobi preconditioner) on M + lambda R, symmetric positive
+// definite when every node touches a face of positive area; stopped when |A c - b| <= tolerance
+// |b| (default 1e-10), from the point values as the first guess, one solve per channel. Nodes
+// that touch no face of positive area (isolated vertices, only degenerate faces) keep their point
+// value (fallback_nodes) and are left out of the system.
+// Clamping: after the solve, every value outside [lower, upper] is set to the bound and counted
+// (an unconstrained L2 fit overshoots near a sharp edge of f: a highlight, a shadow boundary).
+//
+// Precision: double throughout; the assembly is sequential in element order and the solve single
+// threaded, so the result is the same bits for any thread count.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <shadetool/core/mesh.h>
+#include <shadetool/fit/vertex_fit.h>
+
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
+namespace shadetool {
+
+// The faces as interpolation elements. Inputs: mesh (faces), corner_node (#C node ids; empty:
+// the corner's vertex), nodes (#nodes; ignored when corner_node is empty: #V).
+struct FitElements {
+  std::size_t nodes = 0;
+  std::vector<std::uint32_t> tri_vertex, tri_node, tri_face;     // 3, 3, 1 per triangle
+  std::vector<std::uint32_t> quad_vertex, quad_node, quad_face;  // 4, 4, 1 per quad
+  std::size_t skipped_faces = 0;                                 // fewer than 3 corners
+};
+FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& corner_node = {}, std::size_t nodes = 0);
+
+// The quadrature points: triangles' first, then quads', in element order. Per point up to 4
+// (node, phi) pairs (unused: phi 0), its weight w_k dA (units of `positions`, squared), its face,
+// and its element's vertices and their weights (to interpolate per-vertex data: positions, normals).
+struct FitQuadrature {
+  int samples = 3;
+  std::vector<std::uint32_t> node;     // 4 per point
+  std::vector<std::uint32_t> vertex;   // 4 per point
+  std::vector<double> phi;             // 4 per point
+  std::vector<double> weight;          // 1 per point
+  std::vector<std::uint32_t> face;     // 1 per point
+  std::size_t size() const { return weight.size(); }
+};
+// positions: #V by 3 (the space the area is measured in: world, for lighting). samples: 1, 3, 6, 12
+// (Error otherwise).
+FitQuadrature fit_quadrature(const FitElements& elements, const std::vector<double>& positions, int samples);
+
+// Per-vertex data (#V by width) at the quadrature points (#points by width): sum phi_k data[vertex_k].
+std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& vertex_data,
+                                            std::size_t width);
+// Per-node values (#nodes by width) interpolated at the quadrature points, as Gouraud shows them.
+std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::vector<double>& node_values,
+                                            std::size_t width);
+
+struct LeastSquaresFitOptions {
+  double regularization = 0;  // lambda (dimensionless; 0: the plain least-squares solution, the
+                             // least error; bench/fit/results.md: R costs 5x the solve's time)
+  double tolerance = 1e-10;      // relative residual |A c - b| / |b| at which CG stops
+  int max_iterations = 0;        // 0: 2 * #nodes (Eigen's default)
+  double lower = 0;                                        // clamp after the solve
+  double upper = std::numeric_limits<double>::infinity();
+};
+
+// What a caller of a fit chooses (`--fit`, `--fit-samples`, `--fit-regularization`).
+struct VertexFitOptions {
+  VertexFit method = VertexFit::Point;
+  int samples = 3;  // quadrature points per triangle (fit/triangle_quadrature.h)
+  LeastSquaresFitOptions solve;
+};
+
+struct LeastSquaresFit {
+  std::vector<double> values;       // #nodes by width
+  std::size_t clamped = 0;          // values set to lower or upper
+  std::size_t fallback_nodes = 0;   // nodes on no face of positive area: their point value
+  std::size_t regularized_edges = 0;
+  std::size_t skipped_edges = 0;    // interior edges left out of R (degenerate butterfly)
+  int iterations = 0;               // CG iterations, the most over the channels
+  double residual = 0;              // relative residual reached, the largest over the channels
+  bool converged = true;
+};
+
+// f: #points by width, the signal at q's points. point_values: #nodes by width (first guess and
+// fallback). Error for mismatched sizes.
+LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
+                                  const FitQuadrature& q, const std::vector<double>& f,
+                                  const std::vector<double>& point_values, std::size_t width,
+                                  const LeastSquaresFitOptions& options = {});
+
+// The relative L2 distance between the interpolated node values and f, by the quadrature q:
+//   sqrt( sum_k w_k |g(x_k) - f_k|^2 / sum_k w_k |f_k|^2 )   (0 when f is zero everywhere and g is).
+double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f,
+                         const std::vector<double>& node_values, std::size_t width);
+
+}  // namespace shadetool
+#pragma GCC visibility pop

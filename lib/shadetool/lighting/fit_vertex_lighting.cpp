@@ -1,0 +1,92 @@
+// fit_vertex_lighting.cpp: see fit_vertex_lighting.h.
+#include <shadetool/lighting/fit_vertex_lighting.h>
+
+#include <algorithm>
+#include <memory>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <shadetool/lighting/shade_point.h>
+
+namespace shadetool {
+
+std::vector<double> world_positions(const Mesh& mesh, const Scene& scene) {
+  std::vector<double> out(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) set3(out, v, transform_point(scene.world_from_object, mesh.position(v)));
+  return out;
+}
+
+std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene, const FitQuadrature& q,
+                                           const std::vector<double>& positions_world,
+                                           const std::vector<double>& vertex_normals_object,
+                                           const ShadeOptions& options, const ShadowOptions& shadows,
+                                           ShadowStats* shadow_stats) {
+  const Mat3d cof = signed_cofactor(scene.world_from_object.A);
+  std::vector<double> normals_world(vertex_normals_object.size());
+  for (std::size_t v = 0; v < vertex_normals_object.size() / 3; ++v)
+    set3(normals_world, v, Vec3d(transform_normal(cof, Normal3d(get3(vertex_normals_object, v)))));
+  const std::vector<double> p = interpolate_vertex_data(q, positions_world, 3);
+  const std::vector<double> n = interpolate_vertex_data(q, normals_world, 3);  // renormalised by shade_point
+  const PointLighting lit = prepare_point_lighting(scene, options.model);
+  const std::size_t S = q.size();
+
+  std::vector<double> visibility;
+  std::size_t row = 0;
+  if (shadows.enabled) {
+    Mesh world;  // the mesh's own occluders, unless the caller built the scene's
+    std::unique_ptr<VisibilityScene> own;
+    if (!shadows.occluders) {
+      world.positions = positions_world;
+      world.face_start = mesh.face_start;
+      world.corner_vertex = mesh.corner_vertex;
+      own = std::make_unique<VisibilityScene>(world);
+    }
+    const VisibilityScene& bvh = shadows.occluders ? *shadows.occluders : *own;
+    visibility = light_visibility(bvh, scene, lit.plan, p, n, {}, shadows.samples, shadow_stats);
+    row = 2 * lit.plan.lights.size();
+  }
+
+  std::vector<double> f(3 * S);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, S, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+    ShadeCounters counters;  // the point bake reports the counts; these are not summed
+    for (std::size_t s = r.begin(); s < r.end(); ++s) {
+      const Vec3d c = shadows.enabled ? shade_point_shadowed(lit, get3(p, s), get3(n, s), visibility.data() + s * row, &counters)
+                                      : shade_point(lit, get3(p, s), get3(n, s), &counters);
+      set3(f, s, c);
+    }
+  });
+  return f;
+}
+
+VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, const BakeResult& point,
+                                      const ShadeOptions& options, const ShadowOptions& shadows,
+                                      const VertexFitOptions& fit) {
+  VertexLightingFit out;
+  switch (fit.method) {
+    case VertexFit::Point:
+      out.rgb = point.rgb;
+      return out;
+    case VertexFit::LeastSquares: break;
+  }
+  const std::vector<double> positions_world = world_positions(mesh, scene);
+  const FitElements elements = fit_elements(mesh);
+  const FitQuadrature q = fit_quadrature(elements, positions_world, fit.samples);
+  out.quadrature_points = q.size();
+  std::vector<double> f =
+      lighting_at_quadrature(mesh, scene, q, positions_world, point.vertex_normals, options, shadows, &out.shadows);
+  // The target is the colour as it will be shown: clamped to the bounds (8-bit: [0, 1], as a
+  // renderer's per-pixel Phong is stored), so that light above 1 is not fitted with a slope that
+  // the clamp then cuts.
+  for (double& v : f) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
+  out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb, 3, fit.solve);
+  out.rgb = std::move(out.solve.values);
+  out.solve.values.clear();
+  out.error_fit = relative_l2_error(q, f, out.rgb, 3);
+  std::vector<double> point_clamped = point.rgb;  // as written: the same bounds as the fit's
+  for (double& v : point_clamped) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
+  out.error_point = relative_l2_error(q, f, point_clamped, 3);
+  return out;
+}
+
+}  // namespace shadetool

@@ -1,0 +1,293 @@
+// Tests for fit/least_squares_fit.h. Truth the code did not produce: the normal equations
+// assembled here, independently, with a collapsed Gauss-Legendre rule of high order (triangles)
+// or a tensor rule (quads), and solved densely by Gaussian elimination; linear functions, which
+// the hat functions reproduce exactly.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include <shadetool/fit/least_squares_fit.h>
+#include <shadetool/fit/vertex_fit.h>
+
+#include "support/analytic_meshes.h"
+
+using namespace shadetool;
+
+namespace {
+
+// Gauss-Legendre on [0, 1] with n = 8 points (exact to degree 15), by Newton's method on P_n.
+std::vector<std::pair<double, double>> gauss8() {
+  const int n = 8;
+  std::vector<std::pair<double, double>> out;
+  for (int i = 1; i <= n; ++i) {
+    double x = std::cos(kPi * (i - 0.25) / (n + 0.5)), dp = 0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1, p1 = x;
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (x * p1 - p0) / (x * x - 1);
+      x -= p1 / dp;
+    }
+    out.push_back({0.5 * (x + 1), 1.0 / ((1 - x * x) * dp * dp)});  // weight on [0,1]: 2/((1-x^2)P'^2) / 2
+  }
+  return out;
+}
+
+// Dense Gaussian elimination with partial pivoting.
+std::vector<double> dense_solve(std::vector<std::vector<double>> A, std::vector<double> b) {
+  const std::size_t n = b.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t p = k;
+    for (std::size_t i = k + 1; i < n; ++i)
+      if (std::fabs(A[i][k]) > std::fabs(A[p][k])) p = i;
+    std::swap(A[k], A[p]);
+    std::swap(b[k], b[p]);
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const double m = A[i][k] / A[k][k];
+      if (m == 0) continue;
+      for (std::size_t j = k; j < n; ++j) A[i][j] -= m * A[k][j];
+      b[i] -= m * b[k];
+    }
+  }
+  std::vector<double> x(n);
+  for (std::size_t k = n; k-- > 0;) {
+    double s = b[k];
+    for (std::size_t j = k + 1; j < n; ++j) s -= A[k][j] * x[j];
+    x[k] = s / A[k][k];
+  }
+  return x;
+}
+
+// (M, b) for f over a triangle mesh and planar quads, with the test's own rules: triangles by the
+// Duffy map of the square (l1 = u, l2 = v (1 - u), Jacobian (1 - u)), quads by 8 x 8 Gauss on
+// the bilinear map.
+void dense_normal_equations(const Mesh& mesh, const std::function<double(const Vec3d&)>& f,
+                            std::vector<std::vector<double>>& M, std::vector<double>& b) {
+  const std::size_t V = mesh.num_vertices();
+  M.assign(V, std::vector<double>(V, 0.0));
+  b.assign(V, 0.0);
+  const auto g = gauss8();
+  for (std::size_t face = 0; face < mesh.num_faces(); ++face) {
+    const std::uint32_t* c = mesh.corner_vertex.data() + mesh.face_start[face];
+    const std::size_t size = mesh.face_size(face);
+    if (size == 4) {
+      Vec3d q[4];
+      for (int k = 0; k < 4; ++k) q[k] = mesh.position(c[k]);
+      for (auto [u, wu] : g)
+        for (auto [v, wv] : g) {
+          const double phi[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+          const Vec3d pu = (q[1] - q[0]) * (1 - v) + (q[2] - q[3]) * v, pv = (q[3] - q[0]) * (1 - u) + (q[2] - q[1]) * u;
+          const double w = wu * wv * length(cross(pu, pv));
+          Vec3d x{0, 0, 0};
+          for (int k = 0; k < 4; ++k) x += q[k] * phi[k];
+          const double fx = f(x);
+          for (int i = 0; i < 4; ++i) {
+            b[c[i]] += w * phi[i] * fx;
+            for (int j = 0; j < 4; ++j) M[c[i]][c[j]] += w * phi[i] * phi[j];
+          }
+        }
+      continue;
+    }
+    for (std::size_t t = 1; t + 1 < size; ++t) {
+      const std::uint32_t v[3] = {c[0], c[t], c[t + 1]};
+      const Vec3d p0 = mesh.position(v[0]), p1 = mesh.position(v[1]), p2 = mesh.position(v[2]);
+      const double twice_area = length(cross(p1 - p0, p2 - p0));
+      for (auto [u, wu] : g)
+        for (auto [s, ws] : g) {
+          const double l[3] = {u, s * (1 - u), 1 - u - s * (1 - u)};
+          const double w = wu * ws * (1 - u) * twice_area;
+          const Vec3d x = p0 * l[0] + p1 * l[1] + p2 * l[2];
+          const double fx = f(x);
+          for (int i = 0; i < 3; ++i) {
+            b[v[i]] += w * l[i] * fx;
+            for (int j = 0; j < 3; ++j) M[v[i]][v[j]] += w * l[i] * l[j];
+          }
+        }
+    }
+  }
+}
+
+std::vector<double> fit_of(const Mesh& mesh, const std::function<double(const Vec3d&)>& f, int samples, double lambda,
+                           LeastSquaresFit* out = nullptr) {
+  const FitElements e = fit_elements(mesh);
+  const FitQuadrature q = fit_quadrature(e, mesh.positions, samples);
+  const std::vector<double> x = interpolate_vertex_data(q, mesh.positions, 3);
+  std::vector<double> fq(q.size()), point(mesh.num_vertices());
+  for (std::size_t s = 0; s < q.size(); ++s) fq[s] = f(get3(x, s));
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) point[v] = f(mesh.position(v));
+  LeastSquaresFitOptions o;
+  o.regularization = lambda;
+  o.tolerance = 1e-14;
+  o.lower = -1e300;
+  LeastSquaresFit fit = least_squares_fit(e, mesh.positions, q, fq, point, 1, o);
+  if (out) *out = fit;
+  return fit.values;
+}
+
+double max_relative(const std::vector<double>& a, const std::vector<double>& b) {
+  double num = 0, den = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    num = std::max(num, std::fabs(a[i] - b[i]));
+    den = std::max(den, std::fabs(b[i]));
+  }
+  return num / den;
+}
+
+// A planar grid of irregular quads (z = 0), w x h cells, corners jittered.
+Mesh planar_quads(int w, int h) {
+  Mesh m;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+  for (int j = 0; j <= h; ++j)
+    for (int i = 0; i <= w; ++i) {
+      const bool edge = i == 0 || j == 0 || i == w || j == h;
+      m.add_vertex({i + (edge ? 0 : jitter(rng)), j + (edge ? 0 : jitter(rng)), 0});
+    }
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const std::uint32_t a = std::uint32_t(j * (w + 1) + i);
+      m.add_face({a, a + 1, a + std::uint32_t(w) + 2, a + std::uint32_t(w) + 1});
+    }
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("The fit equals the dense normal-equations solve assembled independently (lambda = 0, triangles)",
+          "[fit][least_squares]") {
+  const Mesh mesh = shadetool::testing::icosphere(2, 0.2).mesh;  // 162 vertices, irregular
+  REQUIRE(mesh.num_vertices() <= 2000);
+  // f of degree 4 in x: phi f has degree 5 in the barycentrics, exact for the 12-point rule (degree 6)
+  const auto quartic = [](const Vec3d& p) { return 1 + p.x * p.x * p.y * p.z + 0.5 * p.z * p.z * p.z - p.y; };
+  // f of degree 3: exact for the 6-point rule (degree 4)
+  const auto cubic = [](const Vec3d& p) { return 2 + p.x * p.y * p.z - 0.3 * p.x * p.x + p.z; };
+  for (auto [samples, f] : {std::pair<int, std::function<double(const Vec3d&)>>{12, quartic}, {6, cubic}}) {
+    std::vector<std::vector<double>> M;
+    std::vector<double> b;
+    dense_normal_equations(mesh, f, M, b);
+    const std::vector<double> expected = dense_solve(M, b);
+    LeastSquaresFit info;
+    const std::vector<double> got = fit_of(mesh, f, samples, 0.0, &info);
+    INFO("samples " << samples << ", CG iterations " << info.iterations << ", residual " << info.residual);
+    CHECK(info.converged);
+    CHECK(max_relative(got, expected) < 1e-6);
+  }
+}
+
+TEST_CASE("The fit equals the dense normal-equations solve on planar quads (bilinear hat functions)",
+          "[fit][least_squares]") {
+  const Mesh mesh = planar_quads(9, 7);
+  // f of degree 3 in x: with the bilinear map and dA, the integrand of b has degree <= 5 in u and in v
+  const auto f = [](const Vec3d& p) { return 1 + 0.1 * p.x * p.x * p.y - 0.05 * p.y * p.y + 0.2 * p.x; };
+  std::vector<std::vector<double>> M;
+  std::vector<double> b;
+  dense_normal_equations(mesh, f, M, b);
+  const std::vector<double> expected = dense_solve(M, b);
+  const std::vector<double> got = fit_of(mesh, f, 6, 0.0);
+  CHECK(max_relative(got, expected) < 1e-6);
+}
+
+TEST_CASE("A linear signal is reproduced exactly: fit = point values, with and without the regulariser",
+          "[fit][least_squares]") {
+  // planar: the unfolded kink of a linear function is zero, so R does not move the solution
+  Mesh tri;
+  for (int j = 0; j <= 6; ++j)
+    for (int i = 0; i <= 6; ++i) tri.add_vertex({i + 0.3 * std::sin(7.0 * j), j + 0.2 * std::cos(3.0 * i), 0});
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) {
+      const std::uint32_t a = std::uint32_t(j * 7 + i);
+      tri.add_face({a, a + 1, a + 8});
+      tri.add_face({a, a + 8, a + 7});
+    }
+  const auto linear = [](const Vec3d& p) { return 0.5 + 0.25 * p.x - 0.125 * p.y; };
+  for (const Mesh* m : {&tri}) {
+    for (double lambda : {0.0, 0.1, 10.0}) {
+      const std::vector<double> got = fit_of(*m, linear, 3, lambda);
+      for (std::size_t v = 0; v < m->num_vertices(); ++v) CHECK(got[v] == Approx(linear(m->position(v))).epsilon(1e-8));
+    }
+  }
+  const Mesh quads = planar_quads(5, 5);  // bilinear interpolation of a linear function is exact too
+  const std::vector<double> got = fit_of(quads, linear, 3, 0.0);
+  for (std::size_t v = 0; v < quads.num_vertices(); ++v) CHECK(got[v] == Approx(linear(quads.position(v))).epsilon(1e-8));
+}
+
+TEST_CASE("The regulariser pulls a kinked fit toward one plane; clamping is counted; isolated nodes keep their value",
+          "[fit][least_squares]") {
+  Mesh m;
+  for (int j = 0; j <= 8; ++j)
+    for (int i = 0; i <= 8; ++i) m.add_vertex({double(i), double(j), 0});
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) {
+      const std::uint32_t a = std::uint32_t(j * 9 + i);
+      m.add_face({a, a + 1, a + 10});
+      m.add_face({a, a + 10, a + 9});
+    }
+  const std::uint32_t isolated = m.add_vertex({20, 20, 0});
+  const auto tent = [](const Vec3d& p) { return std::fabs(p.x - 4.1); };  // a kink between vertices
+  const FitElements e = fit_elements(m);
+  const FitQuadrature q = fit_quadrature(e, m.positions, 6);
+  const std::vector<double> x = interpolate_vertex_data(q, m.positions, 3);
+  std::vector<double> fq(q.size()), point(m.num_vertices());
+  for (std::size_t s = 0; s < q.size(); ++s) fq[s] = tent(get3(x, s));
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) point[v] = tent(m.position(v));
+  point[isolated] = 0.75;
+  LeastSquaresFitOptions o;
+  o.regularization = 0;
+  o.lower = -1e300;
+  const LeastSquaresFit plain = least_squares_fit(e, m.positions, q, fq, point, 1, o);
+  o.regularization = 1000;
+  const LeastSquaresFit smooth = least_squares_fit(e, m.positions, q, fq, point, 1, o);
+  CHECK(plain.fallback_nodes == 1);
+  CHECK(plain.values[isolated] == 0.75);
+  CHECK(smooth.regularized_edges == 8 * 8 * 3 - 16);  // interior edges of the 8 x 8 grid
+  // the plain fit has the least error by the same quadrature; a heavy regulariser more
+  CHECK(relative_l2_error(q, fq, plain.values, 1) < relative_l2_error(q, fq, point, 1));
+  CHECK(relative_l2_error(q, fq, smooth.values, 1) > relative_l2_error(q, fq, plain.values, 1));
+  // a heavy regulariser leaves nearly one plane: the second difference along x shrinks
+  const auto kink = [&](const std::vector<double>& c) { return std::fabs(c[3] - 2 * c[4] + c[5]); };
+  CHECK(kink(smooth.values) < 0.2 * kink(plain.values));
+  // clamping: bounds inside the values' range are counted
+  o.regularization = 0;
+  o.lower = 0.5;
+  o.upper = 3;
+  const LeastSquaresFit clamped = least_squares_fit(e, m.positions, q, fq, point, 1, o);
+  std::size_t outside = 0;
+  for (double v : plain.values) outside += v < 0.5 || v > 3;
+  CHECK(clamped.clamped == outside);
+  CHECK(outside > 0);
+}
+
+TEST_CASE("Corner groups: a node per side of a crease keeps the discontinuity", "[fit][least_squares]") {
+  // two triangles sharing an edge; the corners of the second get their own nodes
+  Mesh m;
+  m.add_vertex({0, 0, 0});
+  m.add_vertex({1, 0, 0});
+  m.add_vertex({0, 1, 0});
+  m.add_vertex({1, 1, 0});
+  m.add_face({0, 1, 2});
+  m.add_face({1, 3, 2});
+  const std::vector<std::uint32_t> corner_node = {0, 1, 2, 3, 4, 5};  // 6 nodes
+  const FitElements e = fit_elements(m, corner_node, 6);
+  const FitQuadrature q = fit_quadrature(e, m.positions, 3);
+  std::vector<double> f(q.size());
+  for (std::size_t s = 0; s < q.size(); ++s) f[s] = q.face[s] == 0 ? 0.25 : 0.75;  // a step at the shared edge
+  const LeastSquaresFit fit = least_squares_fit(e, m.positions, q, f, std::vector<double>(6, 0.0), 1, {});
+  for (int n = 0; n < 3; ++n) CHECK(fit.values[n] == Approx(0.25).epsilon(1e-9));
+  for (int n = 3; n < 6; ++n) CHECK(fit.values[n] == Approx(0.75).epsilon(1e-9));
+  CHECK(relative_l2_error(q, f, fit.values, 1) < 1e-9);
+}
+
+TEST_CASE("The --fit vocabulary round-trips through its names", "[fit][vocabulary]") {
+  for (const std::string& n : vertex_fit_names()) {
+    const auto f = parse_vertex_fit(n);
+    REQUIRE(f);
+    CHECK(vertex_fit_name(*f) == n);
+  }
+  CHECK_FALSE(parse_vertex_fit("least_squares"));
+}

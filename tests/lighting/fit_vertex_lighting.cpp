@@ -1,0 +1,116 @@
+// Tests for lighting/fit_vertex_lighting.h: the least-squares Gouraud colours against the point
+// colours, measured by a finer quadrature (12 points, degree 6) than the fit used (3 points), so
+// the error is not the fit's own objective; and the case where both must agree (f linear).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include <shadetool/lighting/fit_vertex_lighting.h>
+
+#include "lighting/lighting_test_util.h"
+#include "support/analytic_meshes.h"
+
+using namespace shadetool;
+using namespace shadetool::testing;
+
+namespace {
+
+struct Errors {
+  double fit, point;
+};
+
+// Fit with 3 points per triangle (HDR bounds), then both colour sets measured by the 12-point rule.
+Errors errors_of(const Mesh& mesh, const Scene& scene, bool shadows_on, const std::vector<std::uint32_t>* only_faces = nullptr) {
+  ShadowOptions shadows;
+  shadows.enabled = shadows_on;
+  const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, shadows);
+  VertexFitOptions fit;
+  fit.method = VertexFit::LeastSquares;
+  const VertexLightingFit lsq = fit_vertex_lighting(mesh, scene, point, {}, shadows, fit);
+  const std::vector<double> world = world_positions(mesh, scene);
+  const FitElements e = fit_elements(mesh);
+  FitQuadrature q = fit_quadrature(e, world, 12);
+  if (only_faces) {  // keep the points of the listed faces (their weights zeroed elsewhere)
+    for (std::size_t s = 0; s < q.size(); ++s) {
+      bool keep = false;
+      for (std::uint32_t f : *only_faces) keep = keep || q.face[s] == f;
+      if (!keep) q.weight[s] = 0;
+    }
+  }
+  const std::vector<double> f = lighting_at_quadrature(mesh, scene, q, world, point.vertex_normals, {}, shadows);
+  return {relative_l2_error(q, f, lsq.rgb, 3), relative_l2_error(q, f, point.rgb, 3)};
+}
+
+}  // namespace
+
+TEST_CASE("Planar mesh, directional Lambert light: f is linear on every face, so the fit is the point colours",
+          "[lighting][fit]") {
+  Mesh m;
+  for (int j = 0; j <= 5; ++j)
+    for (int i = 0; i <= 5; ++i) m.add_vertex({i + 0.2 * std::sin(5.0 * j), j + 0.1 * std::cos(2.0 * i), 0});
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) {
+      const std::uint32_t a = std::uint32_t(j * 6 + i);
+      m.add_face({a, a + 1, a + 7});
+      m.add_face({a, a + 7, a + 6});
+    }
+  Scene scene = dark_scene(ShadingModel::Lambert);
+  scene.material.diffuse = {0.8, 0.6, 0.4};
+  scene.lights.push_back(directional({0.3, -0.2, -1}));
+  const BakeResult point = bake_lighting(m, scene, ShadingFrequency::PerVertex);
+  VertexFitOptions fit;
+  fit.method = VertexFit::LeastSquares;
+  fit.solve.regularization = 0.1;  // zero on a linear signal of a plane
+  const VertexLightingFit lsq = fit_vertex_lighting(m, scene, point, {}, {}, fit);
+  REQUIRE(lsq.solve.clamped == 0);
+  for (std::size_t i = 0; i < point.rgb.size(); ++i) CHECK(lsq.rgb[i] == Approx(point.rgb[i]).epsilon(1e-8));
+  CHECK(lsq.error_fit < 1e-8);
+  CHECK(lsq.error_point < 1e-12);
+}
+
+TEST_CASE("Coarse sphere under a point light with a Phong highlight: the fitted error is below the point error",
+          "[lighting][fit]") {
+  const Mesh sphere = icosphere(2).mesh;  // 162 vertices
+  REQUIRE(sphere.num_vertices() <= 500);
+  Scene scene = dark_scene(ShadingModel::Phong);
+  scene.material.diffuse = {0.6, 0.6, 0.6};
+  scene.material.specular = {0.5, 0.5, 0.5};
+  scene.material.shininess = 40;
+  scene.material.ambient = {0.1, 0.1, 0.1};
+  scene.global_ambient = {1, 1, 1};
+  scene.lights.push_back(point_light({2.5, 1.5, 3}));
+  scene.camera_from_world = camera_at({0, 0, 4});
+  scene.has_camera = true;
+  const Errors e = errors_of(sphere, scene, false);
+  WARN("sphere, Phong highlight: relative L2 error, least squares " << e.fit << ", point " << e.point);
+  CHECK(e.fit < e.point);
+}
+
+TEST_CASE("Shadow edge on a ground plane: the fitted error is below the point error", "[lighting][fit]") {
+  // a 12 x 12 ground grid (z = 0) and a closed box above it, lit from above at an angle
+  Mesh m;
+  const int n = 12;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.add_vertex({-3 + 6.0 * i / n, -3 + 6.0 * j / n, 0});
+  std::vector<std::uint32_t> ground;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t a = std::uint32_t(j * (n + 1) + i);
+      ground.push_back(std::uint32_t(m.num_faces()));
+      m.add_face({a, a + 1, a + std::uint32_t(n) + 2});
+      ground.push_back(std::uint32_t(m.num_faces()));
+      m.add_face({a, a + std::uint32_t(n) + 2, a + std::uint32_t(n) + 1});
+    }
+  const std::uint32_t b = std::uint32_t(m.num_vertices());
+  for (int k = 0; k < 8; ++k) m.add_vertex({k & 1 ? 0.9 : -0.7, k & 2 ? 0.8 : -0.9, k & 4 ? 2.0 : 1.0});
+  const std::uint32_t box[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& f : box) m.add_face({b + f[0], b + f[1], b + f[2], b + f[3]});
+  Scene scene = dark_scene(ShadingModel::Lambert);
+  scene.material.diffuse = {0.8, 0.8, 0.8};
+  scene.material.ambient = {0.2, 0.2, 0.2};
+  scene.global_ambient = {1, 1, 1};
+  scene.lights.push_back(directional({0.45, 0.3, -1}));
+  const Errors e = errors_of(m, scene, true, &ground);
+  WARN("ground plane, shadow edge: relative L2 error, least squares " << e.fit << ", point " << e.point);
+  CHECK(e.fit < e.point);
+}
