@@ -23,6 +23,7 @@
 #include <shadetool/io/split_corner_normals.h>
 #include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/fit_vertex_lighting.h>
+#include <shadetool/lighting/default_scene.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/lighting/world_occluders.h>
 
@@ -39,6 +40,7 @@ struct BakeLightingOptions {
   bool unlit = false;
   bool shadows = false;
   std::uint32_t samples = 16;
+  std::string camera = shadetool::camera_choice_name(shadetool::CameraChoice::Scene);
   FitCliOptions fit;  // --fit, --fit-regularization, --fit-samples (fit_options.h)
 };
 
@@ -58,14 +60,24 @@ struct BakeSettings {
 };
 
 // No --scene: a glTF primitive is lit by its own file's KHR_lights_punctual lights, camera and
-// placement (gltf/gltf_lights.h); any other input needs --scene (exit 2).
-shadetool::Scene gltf_own_scene(const std::string& input, FileResult& r) {
-  if (!r.gltf) throw UsageError(input + ": --scene is required (only glTF files carry their own lights)");
-  std::vector<std::string> scene_notes;
-  shadetool::Scene scene = shadetool::gltf_scene(*r.gltf_document, *r.gltf, scene_notes);
-  if (scene.lights.empty())
-    throw shadetool::Error(shadetool::located(input, 0, "no --scene given and the file has no KHR_lights_punctual light"));
-  for (auto& n : scene_notes) r.notes.push_back(n);
+// placement (gltf/gltf_lights.h); a file without lights (every other format, a glTF without any)
+// by the default scene (lighting/default_scene.h: a sky and a key light over the viewer's
+// shoulder) seen by the camera that frames the mesh, a glTF primitive placed by its nodes.
+shadetool::Scene own_or_default_scene(const shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+  shadetool::Affine3d placement;
+  if (r.gltf) {
+    std::vector<std::string> scene_notes;
+    shadetool::Scene scene = shadetool::gltf_scene(*r.gltf_document, *r.gltf, scene_notes);
+    for (auto& n : scene_notes) r.notes.push_back(n);
+    if (!scene.lights.empty()) return scene;
+    placement = scene.world_from_object;
+  }
+  shadetool::Scene scene = shadetool::default_scene();
+  scene.world_from_object = placement;
+  shadetool::frame_camera(mesh, scene, input);
+  r.notes.push_back(std::string("no --scene") + (r.gltf ? " and no KHR_lights_punctual light in the file" : "") +
+                    ": the default scene (a sky and a key light over the viewer's shoulder, grey Phong), seen by "
+                    "a camera that frames the mesh");
   return scene;
 }
 
@@ -169,9 +181,14 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       "face");
   add_io_options(*sub, io, OutputKind::Mesh);
   sub->add_option("--scene", opt.scene,
-                  "Scene file (JSON): material, lights, camera, world_from_object (required, except for glTF input: "
-                  "then its KHR_lights_punctual lights, first camera and node placement are used)")
+                  "Scene file (JSON): material, lights, camera, world_from_object; default: a glTF input's own "
+                  "KHR_lights_punctual lights, first camera and node placement, else the default scene (a sky and a key "
+                  "light over the viewer's shoulder, a camera framing the mesh)")
       ->type_name("SCENE.json");
+  sub->add_option("--camera", opt.camera,
+                  "scene: the scene's camera (default; it sets the view for specular highlights); frame: a camera that "
+                  "frames the mesh instead")
+      ->check(CLI::IsMember(shadetool::camera_choice_names()));
   sub->add_option("--model", opt.model, "Shading model, overriding the scene's (default: the scene's, else blinn-phong)")
       ->check(CLI::IsMember(shadetool::shading_model_names()));
   sub->add_option("--space", opt.space,
@@ -214,6 +231,7 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       throw UsageError(e.what());
     }
     const shadetool::Scene file_scene = own_scene ? shadetool::Scene() : shadetool::read_scene(opt.scene);
+    const bool frame = shadetool::parse_camera_choice(opt.camera, "--camera") == shadetool::CameraChoice::Frame;
     // The result is colours: an output format without them is refused before any work.
     const bool per_face = set.frequency == shadetool::ShadingFrequency::PerFace;
     io.result_attributes = {per_face ? &shadetool::FormatAttributes::face_colors : &shadetool::FormatAttributes::vertex_colors};
@@ -226,7 +244,8 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
         r.notes.push_back("--srgb ignored: glTF's COLOR_0 holds linear values");
       }
       if (opt.unlit && !r.output_gltf) r.notes.push_back("--unlit ignored: only a glTF output has materials");
-      const shadetool::Scene scene = own_scene ? gltf_own_scene(input, r) : file_scene;
+      shadetool::Scene scene = own_scene ? own_or_default_scene(mesh, input, r) : file_scene;
+      if (frame) shadetool::frame_camera(mesh, scene, input);
       check_bakeable(mesh, input, set.frequency, r);
       shadetool::ShadowOptions cast = set.shadows;
       if (set.shadows.enabled && own_scene) cast.occluders = document_occluders(r);

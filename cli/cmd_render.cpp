@@ -14,6 +14,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include <shadetool/io/image_io.h>
+#include <shadetool/lighting/default_scene.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/render/output_image.h>
 #include <shadetool/render/render_mesh.h>
@@ -35,6 +36,7 @@ struct RenderCliOptions {
   int threads = 0;
   bool shadows = false;
   std::uint32_t shadow_samples = 16;
+  std::string camera = shadetool::camera_choice_name(shadetool::CameraChoice::Scene);
 };
 
 // A path's extension without its dot ("" when none).
@@ -61,9 +63,13 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
   auto* sub = app.add_subcommand(
       "render", "Render a mesh to a PNG (or PFM): flat, Gouraud or Phong shading with bake-lighting's lighting");
   add_io_options(*sub, io, OutputKind::Image);
-  sub->add_option("--scene", opt.scene, "Scene file (JSON): material, lights, camera (fov_y, near, far, orthographic)")
-      ->required()
+  sub->add_option("--scene", opt.scene,
+                  "Scene file (JSON): material, lights, camera (fov_y, near, far, orthographic); default: a sky and a "
+                  "key light over the viewer's shoulder, the mesh framed (lighting/default_scene.h)")
       ->type_name("SCENE.json");
+  sub->add_option("--camera", opt.camera,
+                  "scene: the scene's camera (default); frame: a camera that frames the mesh instead of the scene's")
+      ->check(CLI::IsMember(shadetool::camera_choice_names()));
   sub->add_option("--shading", opt.shading, "flat (face normal), gouraud (baked vertex colours) or phong (per sample; default)")
       ->check(CLI::IsMember(shadetool::render_shading_names()));
   sub->add_option("--size", opt.size, "Image size W,H in pixels (default 800,600)")->delimiter(',')->expected(2);
@@ -118,10 +124,14 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
     } catch (const shadetool::Error& e) {
       throw UsageError(e.what());
     }
-    const shadetool::Scene scene = shadetool::read_scene(opt.scene);
+    const bool default_scene = opt.scene.empty();
+    shadetool::Scene scene = default_scene ? shadetool::default_scene() : shadetool::read_scene(opt.scene);
+    if (shadetool::parse_camera_choice(opt.camera, "--camera") == shadetool::CameraChoice::Frame)
+      scene.has_camera = false;  // render/camera.h frames the mesh
 
     const bool pfm = is_pfm(output_image_format(io));  // --hdr has set io.format to pfm
-    return run_command("render", io, [ro, &scene, pfm](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+    return run_command("render", io, [ro, &scene, pfm, default_scene](shadetool::Mesh& mesh, const std::string& input,
+                                                                        FileResult& r) {
       // A mesh without faces renders as the background alone: not a picture of it (exit 1).
       shadetool::require_faces(mesh, input);
       shadetool::require_finite_positions(mesh, input);
@@ -135,7 +145,11 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
       r.image = shadetool::render_output_image(result.image, pfm);
 
       const shadetool::RenderStats& s = result.stats;
-      if (result.camera.framed) r.notes.push_back("the scene has no camera: using one that frames the mesh");
+      if (default_scene)
+        r.notes.push_back("no --scene: the default scene (a sky and a key light over the viewer's shoulder, grey "
+                          "Blinn-Phong), the mesh framed");
+      else if (result.camera.framed)
+        r.notes.push_back("using a camera that frames the mesh (the scene has none, or --camera frame)");
       if (s.quad_fallbacks > 0)
         r.notes.push_back(std::to_string(s.quad_fallbacks) +
                           " samples of degenerate quads were interpolated over their fan triangles");

@@ -1,6 +1,7 @@
 // Tests of lighting/default_scene.h: the framing camera puts every vertex of any mesh, at any
-// scale and position, inside the picture with the promised margin, and the default scene lights a
-// surface facing the viewer (checked by projecting with the camera's own matrix, written out here).
+// scale and position, inside the picture with the promised margin (checked by projecting with the
+// camera's own matrix, written out here), and the default scene is valid and lights the side of a
+// mesh that faces a viewer on +z.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/math_constants.h>
 #include <shadetool/lighting/default_scene.h>
+#include <shadetool/lighting/validate_scene.h>
 
 using namespace shadetool;
 
@@ -44,23 +46,28 @@ TEST_CASE("The framing camera shows every vertex of a mesh at any scale and plac
   for (double scale : {1e-6, 0.2, 1.0, 1e5})
     for (Vec3d centre : {Vec3d{0, 0, 0}, Vec3d{3e3, -2, 7}}) {
       const Mesh m = box(scale * centre, Vec3d{scale, 2 * scale, 0.5 * scale});
-      const Scene s = default_scene(m, "t");
+      Scene s = default_scene();
+      CHECK_FALSE(s.has_camera);  // render frames the mesh itself
+      frame_camera(m, s, "t");
       REQUIRE(s.has_camera);
       double tan_max;
       bool in_front;
       extent_in_view(m, s, tan_max, in_front);
       CHECK(in_front);
-      // inside the vertical half field of view (20 degrees) ...
-      CHECK(tan_max < std::tan(20 * kRadiansPerDegree));
-      // ... and filling a good part of it: the bounding sphere's radius subtends asin(1/1.1) of
-      // the half-angle, so the farthest corner is beyond a third of it whatever the box's shape.
-      CHECK(tan_max > std::tan(20 * kRadiansPerDegree) / 3);
+      const double half_fov = s.lens.fov_y_degrees / 2 * kRadiansPerDegree;
+      // inside the vertical half field of view ...
+      CHECK(tan_max < std::tan(half_fov));
+      // ... and filling a good part of it: the bounding sphere (radius r) is seen under asin(1/1.1)
+      // of the half-angle, so the farthest corner is beyond a third of it whatever the box's shape.
+      CHECK(tan_max > std::tan(half_fov) / 3);
     }
 }
 
 TEST_CASE("The default scene is valid and lights the side of a mesh that faces the viewer", "[lighting][default_scene]") {
   const Mesh m = box(Vec3d{0, 0, 0}, Vec3d{1, 1, 1});
-  const Scene s = default_scene(m, "t");
+  Scene s = default_scene();
+  CHECK_NOTHROW(validate_scene(s, "default scene"));
+  frame_camera(m, s, "t");
   REQUIRE(s.lights.size() == 2);
   CHECK(s.lights[0].type == LightType::Sky);
   CHECK(s.lights[1].type == LightType::Directional);
@@ -72,12 +79,13 @@ TEST_CASE("The default scene is valid and lights the side of a mesh that faces t
 
 TEST_CASE("Framing refuses a mesh with no finite position and takes a unit sphere around one point", "[lighting][default_scene]") {
   Mesh m = box(Vec3d{0, 0, 0}, Vec3d{0, 0, 0});
-  const Scene s = default_scene(m, "one point");
+  Scene s = default_scene();
+  frame_camera(m, s, "one point");
   double tan_max;
   bool in_front;
   extent_in_view(m, s, tan_max, in_front);
   CHECK(in_front);
   CHECK(tan_max == Approx(0).margin(1e-12));
   for (double& x : m.positions) x = std::nan("");
-  CHECK_THROWS_WITH(default_scene(m, "nan.obj"), Catch::Contains("nan.obj: no finite vertex position"));
+  CHECK_THROWS_WITH(frame_camera(m, s, "nan.obj"), Catch::Contains("nan.obj: no finite vertex position"));
 }

@@ -161,3 +161,42 @@ TEST_CASE("render of a mesh without faces is an error, not a background-only PNG
   CHECK(r.err.find("mesh is empty (no faces)") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
 }
+
+// Issue 28, item 12: without --scene, a 0.2-unit model far from the origin fills the picture (the
+// default scene's framing camera), and --camera frame rescues a scene whose fixed camera looks
+// elsewhere. Coverage is counted in the PFM (background exactly 0): more than 10% of the pixels lit
+// (the torus ring seen face on covers 16% of a 64x48 frame; a scene's fixed camera 0%, a dot 0.1%).
+namespace {
+double lit_fraction(const std::string& pfm_path) {
+  const std::string pfm = shadetool_test::read_file(pfm_path);
+  const std::size_t header = pfm.find("-1.0\n");
+  REQUIRE(header != std::string::npos);
+  std::size_t lit = 0, pixels = (pfm.size() - header - 5) / 12;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    float rgb[3];
+    std::memcpy(rgb, pfm.data() + header + 5 + 12 * p, 12);
+    lit += rgb[0] > 0 || rgb[1] > 0 || rgb[2] > 0;
+  }
+  return pixels ? double(lit) / double(pixels) : 0.0;
+}
+}  // namespace
+
+TEST_CASE("render without --scene frames a small, far model; --camera frame replaces a scene's camera", "[render][cli]") {
+  const fs::path d = scratch("default_scene");
+  // The torus (radius about 1.3) scaled to 0.2 units and moved 1000 units away.
+  auto r = run_shadetool("transform " + torus + " -o " + (d / "small.ply").string() + " --scale 0.08 --translate 1000,-500,300");
+  REQUIRE(r.code == 0);
+  r = run_shadetool("render " + (d / "small.ply").string() + " -o " + (d / "a.pfm").string() + " --hdr --size 64,48");
+  CHECK(r.code == 0);
+  CHECK(r.err.find("no --scene: the default scene") != std::string::npos);
+  CHECK(lit_fraction((d / "a.pfm").string()) > 0.1);
+  // studio.json's camera at (0,0,5) looking at the origin does not see it at all ...
+  r = run_shadetool("render " + (d / "small.ply").string() + " -o " + (d / "b.pfm").string() + " --hdr --size 64,48 --scene " + studio);
+  CHECK(r.code == 0);
+  CHECK(lit_fraction((d / "b.pfm").string()) == 0.0);
+  // ... and --camera frame does.
+  r = run_shadetool("render " + (d / "small.ply").string() + " -o " + (d / "c.pfm").string() +
+                    " --hdr --size 64,48 --camera frame --scene " + studio);
+  CHECK(r.code == 0);
+  CHECK(lit_fraction((d / "c.pfm").string()) > 0.1);
+}

@@ -6,6 +6,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/math_constants.h>
+#include <shadetool/core/vocabulary.h>
 #include <shadetool/lighting/look_at.h>
 
 namespace shadetool {
@@ -14,10 +15,21 @@ namespace {
 
 const Vec3d kUp{0, 1, 0};
 
-// The direction from the target to the eye: front, a little right, above.
-Vec3d view_from_target() { return normalized_or(Vec3d{0.6, 0.45, 1.0}, Vec3d{0, 0, 1}); }
+// The direction from the target to the eye: +z, as render's framing camera (render/camera.cpp).
+const Vec3d kViewFromTarget{0, 0, 1};
+
+const NamedValue<CameraChoice> kCameraChoices[] = {
+    {CameraChoice::Scene, "scene"},
+    {CameraChoice::Frame, "frame"},
+};
 
 }  // namespace
+
+CameraChoice parse_camera_choice(const std::string& text, const std::string& what) {
+  return parse_named(kCameraChoices, text, what);
+}
+const char* camera_choice_name(CameraChoice choice) { return name_of(kCameraChoices, choice); }
+std::vector<std::string> camera_choice_names() { return names_of(kCameraChoices); }
 
 void frame_camera(const MeshView& mesh, Scene& scene, const std::string& what) {
   const double inf = std::numeric_limits<double>::infinity();
@@ -39,49 +51,45 @@ void frame_camera(const MeshView& mesh, Scene& scene, const std::string& what) {
   double r = length(half);
   if (!std::isfinite(r)) fail(what, 0, "the mesh's extent overflows double: nothing to frame");
   if (r == 0) r = 1;  // one point: a unit sphere around it
-  const Vec3d v = view_from_target();
+  const Vec3d v = kViewFromTarget;
   double distance;
   if (scene.lens.orthographic_height > 0) {
-    scene.lens.orthographic_height = 2.2 * r;
-    distance = 3 * r;  // anything outside the sphere; near/far are fitted
+    distance = 2 * r;  // outside the sphere; near/far are fitted
   } else {
     const double half_fov = scene.lens.fov_y_degrees * kRadiansPerDegree / 2;  // (0, 90) degrees: sin > 0
     distance = 1.1 * r / std::sin(half_fov);
   }
   const Vec3d eye{centre.x + distance * v.x, centre.y + distance * v.y, centre.z + distance * v.z};
   Affine3d view;
-  if (!look_at(eye, centre, kUp, view)) fail(what, 0, "cannot place the framing camera");  // v is never parallel to +Y
+  if (!look_at(eye, centre, kUp, view)) fail(what, 0, "cannot place the framing camera");  // +z is never parallel to +Y
   scene.camera_from_world = view;
   scene.has_camera = true;
   scene.lens.near = scene.lens.far = 0;  // fitted to the mesh's bounds
 }
 
-Scene default_scene(const MeshView& mesh, const std::string& what) {
+Scene default_scene() {
   Scene scene;
-  scene.model = ShadingModel::BlinnPhong;
+  scene.model = ShadingModel::Phong;  // Arvo's closed form for the sky's lobe (Blinn-Phong's needs a quadrature: 300x slower)
   scene.global_ambient = {0, 0, 0};
   scene.material.ambient = {0, 0, 0};
   scene.material.diffuse = {0.8, 0.8, 0.8};
   scene.material.specular = {0.25, 0.25, 0.25};
   scene.material.shininess = 32;
-  scene.lens.fov_y_degrees = 40;
-  frame_camera(mesh, scene, what);
 
   Light sky;
   sky.type = LightType::Sky;
   sky.up = kUp;
   sky.ambient = {0, 0, 0};
-  sky.diffuse = sky.specular = {0.3, 0.3, 0.3};
-  sky.ground = {0.1, 0.1, 0.1};
+  sky.diffuse = {0.1, 0.1, 0.1};     // radiance: a surface facing up gets kd * 0.1 * pi = 0.25
+  sky.specular = {0, 0, 0};          // no sky highlight (it would cost a quadrature per point)
+  sky.ground = {0.03, 0.03, 0.03};
   scene.lights.push_back(sky);
 
-  const Vec3d v = view_from_target();
-  const Vec3d right = normalized_or(cross(-1.0 * v, kUp), Vec3d{1, 0, 0});  // f x up, f = -v: the camera's right
-  Light key;
+  Light key;  // from over the right shoulder of a viewer on +z: right +x, up +y, behind +z
   key.type = LightType::Directional;
-  key.direction = normalized_or(-1.0 * (v + 0.5 * kUp + 0.5 * right), Vec3d{0, -1, 0});
+  key.direction = normalized_or(Vec3d{-0.5, -0.5, -1.0}, Vec3d{0, 0, -1});
   key.ambient = {0, 0, 0};
-  key.diffuse = key.specular = {0.9, 0.9, 0.9};
+  key.diffuse = key.specular = {0.75, 0.75, 0.75};
   scene.lights.push_back(key);
   return scene;
 }
