@@ -1,6 +1,8 @@
 // main.cpp: `shadetool SUBCOMMAND ...`. Parses, dispatches, maps errors onto exit codes:
 // 0 success, 1 bad input or processing error, 2 usage error (CLI11's own codes are mapped to 2).
 #include <algorithm>
+#include <cctype>
+#include <string>
 #include <cstdio>
 #include <exception>
 #include <stdexcept>
@@ -53,8 +55,39 @@ int main(int argc, char** argv) {
     app.exit(e);
     return kExitOk;
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "shadetool: {}\n", e.what());
-    fmt::print(stderr, "Run 'shadetool --help' for usage.\n");
+    // Within a subcommand: an unknown flag is named first (CLI11 would report a missing input
+    // before it), and the usage shown is the subcommand's, not the top level's.
+    CLI::App* sub = nullptr;
+    for (auto& entry : runners)
+      if (entry.first->parsed()) sub = entry.first;
+    std::string message = e.what();
+    if (sub) {
+      for (int i = 2; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--") break;
+        const bool number = arg.size() > 1 && (std::isdigit(static_cast<unsigned char>(arg[1])) || arg[1] == '.');
+        if (arg.size() < 2 || arg[0] != '-' || number) continue;
+        const std::string name = arg.substr(0, arg.find('='));
+        if (name.rfind("--", 0) == 0 ? sub->get_option_no_throw(name) == nullptr
+                                     : sub->get_option_no_throw(name.substr(0, 2)) == nullptr) {
+          message = "unknown option '" + name + "' for '" + sub->get_name() + "'";
+          break;
+        }
+      }
+    }
+    fmt::print(stderr, "shadetool: {}\n", message);
+    if (sub) {
+      const std::string help = sub->help();
+      const std::size_t at = help.find("Usage:");
+      if (at != std::string::npos) {
+        std::string usage = help.substr(at, help.find('\n', at) - at);  // "Usage: NAME [OPTIONS] ..."
+        if (usage.rfind("Usage: shadetool ", 0) != 0) usage.insert(7, "shadetool ");
+        fmt::print(stderr, "{}\n", usage);
+      }
+      fmt::print(stderr, "Run 'shadetool {} --help' for its options.\n", sub->get_name());
+    } else {
+      fmt::print(stderr, "Run 'shadetool --help' for usage.\n");
+    }
     return kExitUsage;
   }
 

@@ -49,6 +49,13 @@ check "-o with two inputs is a usage error" test $? -eq 2
 check "stdin without --input-format is a usage error" test $? -eq 2
 "$bin" normals "$tmp/a.obj" --no-such-flag 2>/dev/null
 check "unknown flag exits 2" test $? -eq 2
+# The design card's typo (issue 28, item 15): the unknown flag is named even without an input, and
+# the usage shown is the subcommand's.
+"$bin" normals --bogus 2> "$tmp/bogus.err"
+check "normals --bogus exits 2" test $? -eq 2
+check "normals --bogus names the flag" grep -q "unknown option '--bogus' for 'normals'" "$tmp/bogus.err"
+check "normals --bogus shows normals' usage" grep -q "^Usage: shadetool normals \[OPTIONS\]" "$tmp/bogus.err"
+check "normals --bogus points at normals' help" grep -q "shadetool normals --help" "$tmp/bogus.err"
 "$bin" normals "$tmp/a.obj" --output-dir "$tmp/missing-dir" 2>/dev/null
 check "missing output directory exits 1" test $? -eq 1
 
