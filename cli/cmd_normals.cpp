@@ -3,6 +3,7 @@
 // Parses, calls lib/shadetool/normals/update_mesh_normals.h, prints notes and counts; exit codes in driver.h.
 #include <algorithm>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,7 @@ struct NormalsOptions {
   bool faces = false;
   std::string precision = shadetool::precision_name(shadetool::Precision::Double);
   bool tangents = false;
-  std::string smoothing_groups = "honour";
+  std::string smoothing_groups = shadetool::smoothing_groups_name(shadetool::SmoothingGroups::Honour);
   bool flat_patches = false;
   int weight_strength = 50;
   double weight_threshold = 0.01;
@@ -82,16 +83,10 @@ void add_tangents(shadetool::Mesh& mesh, const std::string& input, shadetool::Fo
 // The --weight names: the four weightings, then Blender's Weighted Normal modes (weighting.h).
 std::vector<std::string> weight_names() {
   std::vector<std::string> names = shadetool::weighting_names();
-  for (const char* n : shadetool::kRankedWeightingNames) names.push_back(n);
+  for (const std::string& n : shadetool::ranked_weighting_names()) names.push_back(n);
   return names;
 }
 
-// A Weighted Normal mode's index in kRankedWeightingNames, or -1 for the four plain weightings.
-int ranked_index(const std::string& w) {
-  for (std::size_t i = 0; i < std::size(shadetool::kRankedWeightingNames); ++i)
-    if (w == shadetool::kRankedWeightingNames[i]) return int(i);
-  return -1;
-}
 
 // True when update_mesh_normals would keep the mesh's normals (no computation, positions unused).
 bool has_normals_for(const shadetool::Mesh& mesh, shadetool::NormalKind kind) {
@@ -131,8 +126,7 @@ RegisterCommand reg("normals", HelpSection::Edit, [](CLI::App& app) -> std::func
   sub->add_option("--smoothing-groups", opt.smoothing_groups,
                   "honour (default): an OBJ's smoothing groups (s N / s off) split the normals, s off faces "
                   "are flat; ignore: smooth across them")
-      ->check(CLI::IsMember(std::vector<std::string>(std::begin(shadetool::kSmoothingGroupsNames),
-                                                     std::end(shadetool::kSmoothingGroupsNames))));
+      ->check(CLI::IsMember(shadetool::smoothing_groups_names()));
   auto* flat = sub->add_flag("--flat-patches", opt.flat_patches,
                              "A vertex all of whose faces lie in one plane gets exactly that plane's normal");
   auto* tangents = sub->add_flag("--tangents", opt.tangents,
@@ -146,26 +140,25 @@ RegisterCommand reg("normals", HelpSection::Edit, [](CLI::App& app) -> std::func
     const NormalsOptions& opt = options->opt;
     if (faces->count() > 0 && weight->count() > 0)
       throw UsageError("--weight applies to vertex and corner normals, not to --faces");
-    const int ranked = ranked_index(opt.weight);
-    if (ranked < 0 && (strength->count() > 0 || threshold->count() > 0))
+    const std::optional<shadetool::RankedWeighting> ranked = shadetool::find_ranked_weighting(opt.weight);
+    if (!ranked && (strength->count() > 0 || threshold->count() > 0))
       throw UsageError("--weight-strength and --weight-threshold apply to --weight face-area, corner-angle or face-area-angle");
     shadetool::NormalsRequest request;
     request.kind = opt.faces ? shadetool::NormalKind::Face
                    : opt.crease_degrees >= 0 ? shadetool::NormalKind::Corner
                                              : shadetool::NormalKind::Vertex;
-    if (ranked < 0) request.weighting = shadetool::parse_weighting(opt.weight, "--weight");
+    if (!ranked) request.weighting = shadetool::parse_weighting(opt.weight, "--weight");
     request.crease_angle = opt.crease_degrees >= 0 ? opt.crease_degrees * shadetool::kPi / 180.0 : 0.0;
     request.precision = shadetool::parse_precision(opt.precision, "--precision");
     request.recompute = opt.recompute;
     request.flat_patches = opt.flat_patches;
-    if (ranked >= 0) {
+    if (ranked) {
       request.ranked = true;
-      request.ranked_options.mode = shadetool::RankedWeighting(ranked);
+      request.ranked_options.mode = *ranked;
       request.ranked_options.strength = opt.weight_strength;
       request.ranked_options.threshold = opt.weight_threshold;
     }
-    request.smoothing_groups = opt.smoothing_groups == "ignore" ? shadetool::SmoothingGroups::Ignore
-                                                                : shadetool::SmoothingGroups::Honour;
+    request.smoothing_groups = shadetool::parse_smoothing_groups(opt.smoothing_groups, "--smoothing-groups");
     return run_command(
         "normals", io,
         [request, &opt, &io](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <string>
 
+#include <shadetool/core/vocabulary.h>
+
 namespace shadetool {
 
 FaceSmoothingGroups face_smoothing_groups(const Mesh& mesh) {
@@ -42,5 +44,18 @@ FaceSmoothingGroups face_smoothing_groups(const Mesh& mesh) {
   out.count = label.size();
   return out;
 }
+
+namespace {
+const NamedValue<SmoothingGroups> kSmoothingGroupsChoices[] = {
+    {SmoothingGroups::Honour, "honour"},
+    {SmoothingGroups::Ignore, "ignore"},
+};
+}  // namespace
+
+SmoothingGroups parse_smoothing_groups(std::string_view text, const std::string& what) {
+  return parse_named(kSmoothingGroupsChoices, text, what);
+}
+const char* smoothing_groups_name(SmoothingGroups choice) { return name_of(kSmoothingGroupsChoices, choice); }
+std::vector<std::string> smoothing_groups_names() { return names_of(kSmoothingGroupsChoices); }
 
 }  // namespace shadetool

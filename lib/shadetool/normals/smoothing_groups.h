@@ -13,6 +13,10 @@
 #include <cstdint>
 #include <vector>
 
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include <shadetool/core/mesh.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -20,7 +24,10 @@ namespace shadetool {
 
 // Whether normals computed for a mesh follow its file's smoothing groups (`--smoothing-groups`).
 enum class SmoothingGroups { Honour, Ignore };
-inline constexpr const char* kSmoothingGroupsNames[] = {"honour", "ignore"};  // in enum order
+// Its vocabulary (core/vocabulary.h, smoothing_groups.cpp): "honour", "ignore".
+SmoothingGroups parse_smoothing_groups(std::string_view text, const std::string& what);
+const char* smoothing_groups_name(SmoothingGroups choice);
+std::vector<std::string> smoothing_groups_names();
 
 struct FaceSmoothingGroups {
   std::vector<std::uint32_t> groups;

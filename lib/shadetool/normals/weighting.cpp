@@ -12,6 +12,11 @@ const NamedValue<Weighting> kWeightings[] = {
     {Weighting::Angle, "angle"},
     {Weighting::Max, "max"},
 };
+const NamedValue<RankedWeighting> kRankedWeightings[] = {
+    {RankedWeighting::FaceArea, "face-area"},
+    {RankedWeighting::CornerAngle, "corner-angle"},
+    {RankedWeighting::FaceAreaAngle, "face-area-angle"},
+};
 const NamedValue<Precision> kPrecisions[] = {
     {Precision::Double, "double"},
     {Precision::Float, "float"},
@@ -21,6 +26,14 @@ const NamedValue<Precision> kPrecisions[] = {
 Weighting parse_weighting(std::string_view text, const std::string& what) { return parse_named(kWeightings, text, what); }
 const char* weighting_name(Weighting weighting) { return name_of(kWeightings, weighting); }
 std::vector<std::string> weighting_names() { return names_of(kWeightings); }
+
+std::optional<RankedWeighting> find_ranked_weighting(std::string_view text) {
+  for (const NamedValue<RankedWeighting>& entry : kRankedWeightings)
+    if (text == entry.name) return entry.value;
+  return std::nullopt;
+}
+const char* ranked_weighting_name(RankedWeighting weighting) { return name_of(kRankedWeightings, weighting); }
+std::vector<std::string> ranked_weighting_names() { return names_of(kRankedWeightings); }
 
 Precision parse_precision(std::string_view text, const std::string& what) { return parse_named(kPrecisions, text, what); }
 const char* precision_name(Precision precision) { return name_of(kPrecisions, precision); }

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,8 +48,11 @@ enum class RankedWeighting {
   CornerAngle,    // value: the corner's interior angle ("Corner Angle")
   FaceAreaAngle,  // value: area times angle ("Face Area And Angle", Unity's "area and angle weighted" ranked)
 };
-// --weight names, in enum order (beside those of Weighting: uniform, area, angle, max).
-inline constexpr const char* kRankedWeightingNames[] = {"face-area", "corner-angle", "face-area-angle"};
+// Their --weight names (core/vocabulary.h, weighting.cpp), beside Weighting's: "face-area",
+// "corner-angle", "face-area-angle". find_: nullopt for a name that is not one of them.
+std::optional<RankedWeighting> find_ranked_weighting(std::string_view text);
+const char* ranked_weighting_name(RankedWeighting weighting);
+std::vector<std::string> ranked_weighting_names();
 
 // Precision the kernels accumulate in (inputs and outputs are double arrays either way).
 enum class Precision { Double, Float };
