@@ -14,6 +14,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include <shadetool/io/image_io.h>
+#include <shadetool/io/image_png.h>
 #include <shadetool/lighting/default_scene.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/render/output_image.h>
@@ -37,6 +38,7 @@ struct RenderCliOptions {
   bool shadows = false;
   std::uint32_t shadow_samples = 16;
   std::string camera = shadetool::camera_choice_name(shadetool::CameraChoice::Scene);
+  int png_compression = shadetool::io::kPngDefaultCompression;
 };
 
 // A path's extension without its dot ("" when none).
@@ -67,6 +69,11 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
                   "Scene file (JSON): material, lights, camera (fov_y, near, far, orthographic); default: a sky and a "
                   "key light over the viewer's shoulder, the mesh framed (lighting/default_scene.h)")
       ->type_name("SCENE.json");
+  sub->add_option("--png-compression", opt.png_compression,
+                  "PNG compression 0..9: 1 (default) fast, zlib 1 with the Up filter; 2..9 zlib's levels with adaptive "
+                  "filters, 9 the smallest file and the slowest (io/image_png.h); 0 stored")
+      ->check(CLI::Range(0, 9))
+      ->type_name("L");
   sub->add_option("--camera", opt.camera,
                   "scene: the scene's camera (default); frame: a camera that frames the mesh instead of the scene's")
       ->check(CLI::IsMember(shadetool::camera_choice_names()));
@@ -130,7 +137,8 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
       scene.has_camera = false;  // render/camera.h frames the mesh
 
     const bool pfm = is_pfm(output_image_format(io));  // --hdr has set io.format to pfm
-    return run_command("render", io, [ro, &scene, pfm, default_scene](shadetool::Mesh& mesh, const std::string& input,
+    const int png_compression = opt.png_compression;
+    return run_command("render", io, [ro, &scene, pfm, default_scene, png_compression](shadetool::Mesh& mesh, const std::string& input,
                                                                         FileResult& r) {
       // A mesh without faces renders as the background alone: not a picture of it (exit 1).
       shadetool::require_faces(mesh, input);
@@ -143,6 +151,7 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
         throw shadetool::Error(shadetool::located(input, 0, std::to_string(nonfinite) +
                                                                 " colour values came out NaN or infinite; nothing written"));
       r.image = shadetool::render_output_image(result.image, pfm);
+      r.image.png_compression = png_compression;
 
       const shadetool::RenderStats& s = result.stats;
       if (default_scene)

@@ -61,9 +61,9 @@ std::string encode_png(const Image& image, const std::string& name, ImageWriteIn
     std::vector<std::uint8_t> rgb(image.width * image.height * 3);
     for (std::size_t i = 0; i < image.width * image.height; ++i)
       for (int k = 0; k < 3; ++k) rgb[3 * i + k] = image.u8[4 * i + k];
-    return io::encode_png_srgb8(int(image.width), int(image.height), rgb, name);
+    return io::encode_png_srgb8(int(image.width), int(image.height), rgb, name, image.png_compression);
   }
-  return io::encode_png_srgb8(int(image.width), int(image.height), image.u8, name);
+  return io::encode_png_srgb8(int(image.width), int(image.height), image.u8, name, image.png_compression);
 }
 
 }  // namespace

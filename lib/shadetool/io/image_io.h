@@ -33,6 +33,7 @@ struct Image {
   Pixel pixel = Pixel::U8;
   std::vector<std::uint8_t> u8;  // Pixel::U8: width * height * channels
   std::vector<float> f32;        // Pixel::F32: width * height * channels
+  int png_compression = 1;       // PNG only: 0..9, io/image_png.h (1: fast, the default; 9: smallest)
 
   bool empty() const { return width == 0 || height == 0; }
 };
