@@ -121,6 +121,7 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
     const shadetool::Scene scene = shadetool::read_scene(opt.scene);
 
     const bool pfm = is_pfm(output_image_format(io));  // --hdr has set io.format to pfm
+    ro.clamp_vertex_colors = !pfm;  // Gouraud: OpenGL 2.1's clamped vertex colours, unless a float image
     return run_command("render", io, [ro, &scene, pfm](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       // A mesh without faces renders as the background alone: not a picture of it (exit 1).
       shadetool::require_faces(mesh, input);
