@@ -36,7 +36,8 @@ struct BakeLightingOptions {
   std::string space = shadetool::shading_space_name(shadetool::ShadingSpace::Auto);
   std::string per = shadetool::shading_frequency_name(shadetool::ShadingFrequency::PerVertex);
   bool hdr = false;
-  bool srgb = false;
+  bool srgb = false;    // the default now: a no-op with a note
+  bool linear = false;  // 8-bit outputs: linear bytes (lighting/encode_color.h's rule)
   bool unlit = false;
   bool shadows = false;
   std::uint32_t samples = 16;
@@ -54,7 +55,8 @@ std::string join(const std::vector<std::string>& items) {
 struct BakeSettings {
   shadetool::ShadeOptions shade;
   shadetool::ShadingFrequency frequency = shadetool::ShadingFrequency::PerVertex;
-  shadetool::ColorEncoding encoding;
+  bool hdr = false;
+  bool linear = false;
   shadetool::ShadowOptions shadows;
   bool samples_given = false;
 };
@@ -197,7 +199,10 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
   sub->add_option("--per", opt.per, "vertex: one colour per vertex (Gouraud); face: one per face (flat) (default vertex)")
       ->check(CLI::IsMember(shadetool::shading_frequency_names()));
   sub->add_flag("--hdr", opt.hdr, "Write float colours, unclamped (default: 8-bit, round(255 * clamp(c, 0, 1)))");
-  sub->add_flag("--srgb", opt.srgb, "Encode colours with the sRGB curve (default: linear; ignored for glTF, whose COLOR_0 is linear)");
+  sub->add_flag("--linear", opt.linear,
+                "Write linear 8-bit colours, the OpenGL 2.1 look (default: sRGB-encoded bytes, as viewers read them; "
+                "float and glTF colours are always linear; see man shadetool, COLOUR)");
+  sub->add_flag("--srgb", opt.srgb, "sRGB-encoded 8-bit colours: the default now (kept as a no-op)");
   sub->add_flag("--unlit", opt.unlit,
                 "glTF input to glTF output: give the baked primitives' materials KHR_materials_unlit (a non-glTF input "
                 "written as glTF always gets an unlit material)");
@@ -220,8 +225,9 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
     if (!opt.model.empty()) set.shade.model = shadetool::parse_shading_model(opt.model, "--model");
     set.shade.space = shadetool::parse_shading_space(opt.space, "--space");
     set.frequency = shadetool::parse_shading_frequency(opt.per, "--per");
-    set.encoding.hdr = opt.hdr;
-    set.encoding.srgb = opt.srgb;
+    set.hdr = opt.hdr;
+    set.linear = opt.linear;
+    if (opt.linear && opt.srgb) throw UsageError("--linear and --srgb contradict each other");
     set.shadows.enabled = opt.shadows;
     set.shadows.samples = opt.samples;
     set.samples_given = samples->count() > 0;
@@ -238,11 +244,11 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
     io.result_name = per_face ? "face colours" : "vertex colours";
 
     return run_command("bake-lighting", io, [=](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
-      shadetool::ColorEncoding file_encoding = set.encoding;
-      if (r.output_gltf && file_encoding.srgb) {  // glTF 2.0, 3.7.2.1: COLOR_0 is linear in every component type
-        file_encoding.srgb = false;
-        r.notes.push_back("--srgb ignored: glTF's COLOR_0 holds linear values");
-      }
+      // lighting/encode_color.h's rule: 8-bit sRGB unless --linear; float and glTF COLOR_0 linear.
+      const shadetool::ColorEncoding file_encoding = shadetool::output_color_encoding(!set.hdr, r.output_gltf, set.linear);
+      if (opt.srgb) r.notes.push_back("--srgb is the default now (8-bit colours are sRGB-encoded; float and glTF colours linear)");
+      if (opt.linear && !file_encoding.hdr && r.output_gltf) r.notes.push_back("--linear: glTF's COLOR_0 is linear anyway");
+      if (opt.linear && file_encoding.hdr) r.notes.push_back("--linear: float colours are linear anyway");
       if (opt.unlit && !r.output_gltf) r.notes.push_back("--unlit ignored: only a glTF output has materials");
       shadetool::Scene scene = own_scene ? own_or_default_scene(mesh, input, r) : file_scene;
       if (frame) shadetool::frame_camera(mesh, scene, input);
@@ -264,7 +270,7 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
         vfit.method = shadetool::VertexFit::LeastSquares;
         vfit.samples = fit.samples;
         vfit.solve.regularization = fit.regularization;
-        if (!set.encoding.hdr) vfit.solve.upper = 1;  // 8-bit: [0, 1]
+        if (!set.hdr) vfit.solve.upper = 1;  // 8-bit: [0, 1]
         shadetool::VertexLightingFit lsq = shadetool::fit_vertex_lighting(mesh, scene, baked, set.shade, cast, vfit);
         baked.rgb = std::move(lsq.rgb);
         report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
@@ -274,7 +280,7 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       }
       add_bake_notes(baked, scene, set, r);
       for (auto& n : shadetool::store_baked_colors(mesh, encoded_colors(baked, file_encoding, input), set.frequency,
-                                                   set.encoding.hdr))
+                                                   set.hdr))
         r.notes.push_back(n);
       if (r.output_gltf && !r.gltf) {  // a baked glTF from another format: the normals used, an unlit material
         const std::string added =

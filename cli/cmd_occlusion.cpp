@@ -18,6 +18,7 @@
 #include "fit_options.h"
 #include "usage_error.h"
 #include <shadetool/lighting/bake_lighting.h>  // ShadingFrequency's vocabulary (--per)
+#include <shadetool/lighting/encode_color.h>
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/visibility/fit_occlusion.h>
 #include <shadetool/visibility/occlusion_to_error.h>
@@ -36,23 +37,27 @@ struct OcclusionOptions {
   std::string as = "both";
   std::string per = "vertex";
   bool unlit = false;
+  bool linear = false;  // 8-bit outputs: linear bytes (lighting/encode_color.h's rule)
+  bool srgb = false;    // the default now: a no-op with a note
   double target_error = 0;  // --error E; 0: a fixed --samples
   FitCliOptions fit;
 };
 
-// The open fraction as grey (r = g = b = value) in `colors`, keeping the channel count the mesh's
+// The open fraction as grey (r = g = b = value, `encoding` applied: lighting/encode_color.h) in `colors`, keeping the channel count the mesh's
 // other colour array uses, or 4 when `colors` itself had alpha: an alpha the input had is kept
 // (transparency is not occlusion), else alpha is 1.
-void store_grey(shadetool::Mesh& mesh, const std::vector<float>& open, std::vector<float>& colors, bool other_has_colors) {
+void store_grey(shadetool::Mesh& mesh, const std::vector<float>& open, std::vector<float>& colors, bool other_has_colors,
+                const shadetool::ColorEncoding& encoding) {
   const bool own_alpha = mesh.color_channels == 4 && colors.size() == 4 * open.size();
   std::vector<float> alpha;
   if (own_alpha)
     for (std::size_t i = 0; i < open.size(); ++i) alpha.push_back(colors[4 * i + 3]);
   if (!other_has_colors && !own_alpha) mesh.color_channels = 3;
   const std::size_t ch = std::size_t(mesh.color_channels);
+  const std::vector<float> grey = shadetool::encode_colors(std::vector<double>(open.begin(), open.end()), encoding);
   colors.assign(ch * open.size(), 1.0f);
   for (std::size_t i = 0; i < open.size(); ++i) {
-    for (std::size_t k = 0; k < 3; ++k) colors[ch * i + k] = open[i];
+    for (std::size_t k = 0; k < 3; ++k) colors[ch * i + k] = grey[i];
     if (own_alpha) colors[ch * i + 3] = alpha[i];
   }
 }
@@ -92,6 +97,10 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
                                         " scrambled Sobol replicates, then one sequence; --samples caps the rays, default 4096)")
                         ->check(CLI::PositiveNumber)
                         ->type_name("E");
+  sub->add_flag("--linear", opt.linear,
+                "Write the grey as linear 8-bit colours, the OpenGL 2.1 look (default: sRGB-encoded bytes, as viewers "
+                "read them; float and glTF colours are always linear; see man shadetool, COLOUR)");
+  sub->add_flag("--srgb", opt.srgb, "sRGB-encoded 8-bit grey: the default (kept as a no-op)");
   add_fit_options(*sub, opt.fit, "open fraction");
   return [command_options = options, samples_opt, error_opt] {
     IoOptions& io = command_options->io;
@@ -118,6 +127,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
     const bool per_face =
         shadetool::parse_shading_frequency(opt.per, "--per") == shadetool::ShadingFrequency::PerFace;
     const bool colors = opt.as != "quality", quality = opt.as != "color";
+    if (opt.linear && opt.srgb) throw UsageError("--linear and --srgb contradict each other");
     // The result is grey colours and/or quality: an output format with neither is refused before any work.
     io.result_attributes.clear();
     if (colors) io.result_attributes.push_back(per_face ? &shadetool::FormatAttributes::face_colors : &shadetool::FormatAttributes::vertex_colors);
@@ -125,7 +135,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
     io.result_name = std::string(colors && quality ? "grey colours and quality" : colors ? "grey colours" : "quality") + " per " + opt.per;
     return run_command(
         "occlusion", io,
-        [options, per_face, colors, quality, unlit = opt.unlit, fit, to_error, least_squares, error_options](
+        [options, per_face, colors, quality, unlit = opt.unlit, linear = opt.linear, srgb = opt.srgb, fit, to_error, least_squares, error_options](
             shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::require_faces(mesh, input);
           shadetool::require_finite_positions(mesh, input);
@@ -204,10 +214,15 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
           if (job.normals_computed) r.stats["normals"] = "computed (angle-weighted)";
           const char* what = per_face ? "face" : "vertex";
           if (colors) {
+            // lighting/encode_color.h's rule: the writer stores these colours as bytes unless the
+            // mesh's colours are float (as read); glTF COLOR_0 is linear.
+            const shadetool::ColorEncoding encoding =
+                shadetool::output_color_encoding(!mesh.colors_are_float, r.output_gltf, linear);
+            if (srgb) r.notes.push_back("--srgb is the default now (8-bit colours are sRGB-encoded; float and glTF colours linear)");
             if (per_face ? mesh.has_face_colors() : mesh.has_vertex_colors())
               r.notes.push_back(fmt::format("the input's {} colours replaced by grey occlusion", what));
-            if (per_face) store_grey(mesh, ao.open_fraction, mesh.face_colors, mesh.has_vertex_colors());
-            else store_grey(mesh, ao.open_fraction, mesh.vertex_colors, mesh.has_face_colors());
+            if (per_face) store_grey(mesh, ao.open_fraction, mesh.face_colors, mesh.has_vertex_colors(), encoding);
+            else store_grey(mesh, ao.open_fraction, mesh.vertex_colors, mesh.has_face_colors(), encoding);
           }
           if (unlit && !r.output_gltf) r.notes.push_back("--unlit ignored: only a glTF output has materials");
           if (colors && r.output_gltf && !r.gltf) {  // a baked glTF from another format: the normals used, an unlit material

@@ -137,6 +137,7 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
       scene.has_camera = false;  // render/camera.h frames the mesh
 
     const bool pfm = is_pfm(output_image_format(io));  // --hdr has set io.format to pfm
+    ro.clamp_vertex_colors = !pfm;  // Gouraud: OpenGL 2.1's clamped vertex colours, unless a float image
     const int png_compression = opt.png_compression;
     return run_command("render", io, [ro, &scene, pfm, default_scene, png_compression](shadetool::Mesh& mesh, const std::string& input,
                                                                         FileResult& r) {

@@ -162,11 +162,14 @@ check "bake-lighting without --scene on OBJ: the default scene (exit 0, a note)"
 studio=$src/data/scenes/studio.json
 "$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/lin.glb" -q
 "$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/srgb.glb" --srgb 2> "$tmp/err.txt"
-check "bake --srgb to glTF: a note says it is ignored" grep -q -- "--srgb ignored: glTF's COLOR_0 holds linear values" "$tmp/err.txt"
-check "bake --srgb to glTF: COLOR_0 equals the linear bake's" "$py" -c '
+check "bake --srgb to glTF: a note says it is the default (a no-op)" grep -q -- "--srgb is the default now" "$tmp/err.txt"
+"$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/linear.glb" --linear -q
+for f in srgb linear; do
+  check "bake --$f to glTF: COLOR_0 equals the default (linear) bake's" "$py" -c '
 import json,subprocess,sys
 a,b=[json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",f,"0","0","COLOR_0"])) for f in sys.argv[3:5]]
-assert a==b' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/lin.glb" "$tmp/srgb.glb"
+assert a==b' "$py" "$src/tests/gltf/gltf_check.py" "$tmp/lin.glb" "$tmp/$f.glb"
+done
 "$bin" occlusion "$src/data/torus.obj" -o "$tmp/ao_obj.glb" --samples 8 -q
 "$bin" bake-lighting "$src/data/torus.obj" --scene "$studio" -o "$tmp/hdr_obj.glb" --hdr -q
 for f in lin ao_obj hdr_obj; do

@@ -8,6 +8,7 @@
 
 #include <shadetool/core/validate.h>
 #include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/normals/invalid_normals.h>
 #include <shadetool/normals/vertex_normals.h>
@@ -59,13 +60,24 @@ bool parse_per(const std::string& s, const std::string& fn) {
   return shadetool::parse_shading_frequency(s, fn + ": per") == shadetool::ShadingFrequency::PerFace;
 }
 
+// Colours as a uint8 array: lighting/encode_color.h's rule for an 8-bit output (not glTF), the
+// bytes the CLI writes to PLY (sRGB-encoded unless `linear`).
+template <typename T>
+py::array_t<std::uint8_t> colour_bytes(const std::vector<T>& values, bool linear, std::vector<py::ssize_t> shape) {
+  const std::vector<float> encoded = shadetool::encode_colors(std::vector<double>(values.begin(), values.end()),
+                                                              shadetool::output_color_encoding(true, false, linear));
+  std::vector<std::uint8_t> bytes(encoded.size());
+  for (std::size_t i = 0; i < encoded.size(); ++i) bytes[i] = std::uint8_t(std::lround(255.0 * encoded[i]));  // k/255 -> k
+  return to_numpy(std::move(bytes), std::move(shape));
+}
+
 }  // namespace
 
 void init_lighting(py::module_& m) {
   m.def(
       "bake_lighting",
       [](py::object V, py::object F, py::object N, py::object scene_arg, const std::string& per, py::object model,
-         const std::string& space, bool shadows, std::uint32_t samples) {
+         const std::string& space, bool shadows, std::uint32_t samples, bool uint8, bool linear) -> py::object {
         const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "bake_lighting");
         const shadetool::Scene scene = scene_of(scene_arg, "bake_lighting");
         const bool per_face = parse_per(per, "bake_lighting");
@@ -92,12 +104,13 @@ void init_lighting(py::module_& m) {
                                 " colour values came out NaN or infinite (light positions, intensities or the world map "
                                 "near the limits of double?)");
         const py::ssize_t rows = py::ssize_t(baked.rgb.size() / 3);
+        if (uint8) return colour_bytes(baked.rgb, linear, {rows, 3});
         return to_numpy(std::move(baked.rgb), {rows, 3});
       },
       py::arg("V"), py::arg("F") = py::none(), py::arg("N") = py::none(), py::arg("scene") = py::none(),
       py::arg("per") = "vertex", py::arg("model") = py::none(), py::arg("space") = "auto", py::arg("shadows") = false,
-      py::arg("samples") = 16,
-      R"doc(bake_lighting(V, F, N, scene, per="vertex", model=None, space="auto", shadows=False, samples=16) -> (rows, 3) float64
+      py::arg("samples") = 16, py::arg("uint8") = false, py::arg("linear") = false,
+      R"doc(bake_lighting(V, F, N, scene, per="vertex", model=None, space="auto", shadows=False, samples=16, uint8=False, linear=False) -> (rows, 3) float64 or uint8
 
 Lit colours per vertex (Gouraud) or per face (flat): OpenGL 2.1 fixed-function lighting with the
 library's lighting/bake_lighting.h, the colours `shadetool bake-lighting --hdr` stores (before
@@ -111,6 +124,8 @@ its float rounding): linear RGB, unclamped, float64, (n, 3) per vertex or (m, 3)
   space   "auto", "world", "camera" or "object" (same colours; render: flat and gouraud only,
           phong refuses any but "auto"); shadows: per-light visibility
           by ray casting (samples rays per area or sky light)
+  uint8   True: the 8-bit colours `shadetool bake-lighting` writes to PLY, sRGB-encoded (man
+          shadetool, COLOUR), or linear round(255 * clamp(c, 0, 1)) with linear=True
 ValueError: bad arrays, a bad scene (the library's `scene: $.path: what` message), non-finite
 positions or normals.
 )doc");
@@ -118,7 +133,7 @@ positions or normals.
   m.def(
       "occlusion",
       [](py::object V, py::object F, py::object N, std::uint32_t samples, double distance, const std::string& per,
-         std::uint32_t seed) {
+         std::uint32_t seed, bool uint8, bool linear) -> py::object {
         const std::shared_ptr<const Mesh> mesh = lit_mesh(V, F, N, "occlusion");
         const bool per_face = parse_per(per, "occlusion");
         shadetool::AmbientOcclusionOptions options;
@@ -135,11 +150,13 @@ positions or normals.
           ao = shadetool::mesh_occlusion(*mesh, per_face, options, "occlusion: N").ao;
         }
         const py::ssize_t rows = py::ssize_t(ao.open_fraction.size());
+        if (uint8) return colour_bytes(ao.open_fraction, linear, {rows});
         return to_numpy(std::move(ao.open_fraction), {rows});
       },
       py::arg("V"), py::arg("F") = py::none(), py::arg("N") = py::none(), py::arg("samples") = 64,
       py::arg("distance") = std::numeric_limits<double>::infinity(), py::arg("per") = "vertex", py::arg("seed") = 0,
-      R"doc(occlusion(V, F, N=None, samples=64, distance=inf, per="vertex", seed=0) -> (rows,) float32
+      py::arg("uint8") = false, py::arg("linear") = false,
+      R"doc(occlusion(V, F, N=None, samples=64, distance=inf, per="vertex", seed=0, uint8=False, linear=False) -> (rows,) float32 or uint8
 
 How open the sky is from each vertex (or face): the cosine-weighted fraction of the hemisphere
 about its normal from which a ray leaves without meeting the mesh within `distance`, in [0, 1]
@@ -150,6 +167,8 @@ thread count and run; the error falls as samples^-3/4.
   N      (n, 3) float vertex normals (the hemispheres' axes) or None: angle-weighted normals
   per    "vertex" -> (n,), "face" -> (m,) (face normal at the face's centroid)
 Points without a usable normal get 1 (no ray cast).
+  uint8  True: the grey bytes `shadetool occlusion` writes to PLY, sRGB-encoded (man shadetool,
+         COLOUR), or linear round(255 * open) with linear=True
 )doc");
 
   m.def(
@@ -171,6 +190,7 @@ Points without a usable normal get 1 (no ray cast).
         ro.lighting.model = parse_model(model, "render");
         ro.lighting.space = shadetool::parse_shading_space(space, "render: space");
         ro.threads = threads;
+        ro.clamp_vertex_colors = !hdr;  // gouraud: OpenGL 2.1's clamped vertex colours, unless float output
         shadetool::check_render_options(ro, "render");  // the library's limits (render_mesh.h)
         shadetool::RenderResult result;
         {
@@ -196,6 +216,7 @@ Points without a usable normal get 1 (no ray cast).
 Renders the mesh with bake_lighting's lighting (the library's render/render_mesh.h, what
 `shadetool render` writes): row 0 at the top.
   hdr=False: uint8 sRGB-encoded pixels (the PNG's bytes); hdr=True: float32 linear, unclamped
+  (gouraud: vertex colours clamped to [0, 1] before interpolating, as OpenGL 2.1, unless hdr=True)
   (the PFM's values, top row first)
   shading  "flat" (face normals), "gouraud" (baked vertex colours) or "phong" (per sample)
   samples  N: N x N samples per pixel, box-filtered (1..16); background linear RGB (3 floats >= 0)

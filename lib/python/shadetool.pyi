@@ -125,7 +125,9 @@ def bake_lighting(
     space: Literal["auto", "world", "camera", "object"] = ...,
     shadows: bool = ...,
     samples: int = ...,
-) -> npt.NDArray[np.float64]: ...
+    uint8: bool = ...,
+    linear: bool = ...,
+) -> npt.NDArray[Any]: ...  # float64 linear; uint8=True: the PLY's bytes (sRGB, or linear=True)
 # (n,) per vertex or (m,) per face, float32 open fraction in [0, 1]
 def occlusion(
     V: MeshOrVertices,
@@ -135,7 +137,9 @@ def occlusion(
     distance: float = ...,
     per: Literal["vertex", "face"] = ...,
     seed: int = ...,
-) -> npt.NDArray[np.float32]: ...
+    uint8: bool = ...,
+    linear: bool = ...,
+) -> npt.NDArray[Any]: ...  # float32; uint8=True: the PLY's grey bytes (sRGB, or linear=True)
 # (height, width, 3): uint8 sRGB (hdr=False) or float32 linear (hdr=True), row 0 at the top
 def render(
     V: MeshOrVertices,

@@ -35,29 +35,65 @@ const char* kFlatScene = R"({
   "lights": [{"type": "directional", "direction": [0, 0, -1]}]
 })";
 
+// kd's bytes as an 8-bit output stores them by default (man shadetool, COLOUR): IEC 61966-2-1,
+// worked by hand: 1.055 * 0.5^(1/2.4) - 0.055 = 0.735357 -> 255 * 0.735357 = 187.52 -> 188;
+// 1.055 * 0.25^(1/2.4) - 0.055 = 0.537099 -> 136.96 -> 137; 1 -> 255.
+const long kKdSrgbBytes[3] = {188, 137, 255};
+// ... and with --linear: round(255 * 0.5) = round(127.5) = 128, round(63.75) = 64, 255.
+const long kKdLinearBytes[3] = {128, 64, 255};
+
 }  // namespace
 
-TEST_CASE("bake-lighting writes 8-bit vertex colours round(255 c)", "[lighting][cli]") {
+TEST_CASE("bake-lighting writes 8-bit vertex colours sRGB-encoded by default, linear with --linear", "[lighting][cli][issue28]") {
+  // issue 28, item 1: viewers read 8-bit colours as sRGB; the lighting (kd here) is linear.
   TempDir dir;
   dir.write("quad.obj", kQuadObj);
   dir.write("scene.json", kFlatScene);
-  const Run r = run(dir.file("quad.obj") + " -o " + dir.file("lit.ply") + " --scene " + dir.file("scene.json"));
-  INFO(r.err);
-  REQUIRE(r.code == 0);
-  const Mesh m = read_mesh(dir.file("lit.ply"));
-  REQUIRE(m.vertex_colors.size() == 12);
-  CHECK_FALSE(m.colors_are_float);
-  // kd = (0.5, 0.25, 1) -> round(127.5) = 128, round(63.75) = 64, 255
-  for (int v = 0; v < 4; ++v) {
-    CHECK(std::lround(255 * m.vertex_colors[3 * v]) == 128);
-    CHECK(std::lround(255 * m.vertex_colors[3 * v + 1]) == 64);
-    CHECK(std::lround(255 * m.vertex_colors[3 * v + 2]) == 255);
+  struct Case {
+    const char* flags;
+    const long* bytes;
+  };
+  for (const Case& c : {Case{"", kKdSrgbBytes}, Case{" --srgb", kKdSrgbBytes}, Case{" --linear", kKdLinearBytes}}) {
+    INFO("flags:" << c.flags);
+    for (const char* out : {"lit.ply", "lit.off", "lit.obj"}) {
+      INFO(out);
+      const Run r = run(dir.file("quad.obj") + " -o " + dir.file(out) + " --scene " + dir.file("scene.json") + c.flags);
+      INFO(r.err);
+      REQUIRE(r.code == 0);
+      CHECK((r.err.find("--srgb is the default now") != std::string::npos) == (std::string(c.flags) == " --srgb"));
+      const Mesh m = read_mesh(dir.file(out));
+      REQUIRE(m.vertex_colors.size() == 12);
+      for (int v = 0; v < 4; ++v)
+        for (int k = 0; k < 3; ++k) CHECK(std::lround(255 * m.vertex_colors[3 * v + k]) == c.bytes[k]);
+      CHECK(m.positions == std::vector<double>{0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0});
+      CHECK(m.num_faces() == 2);
+    }
   }
-  CHECK(m.positions == std::vector<double>{0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0});
-  CHECK(m.num_faces() == 2);
+  CHECK(run(dir.file("quad.obj") + " -o " + dir.file("x.ply") + " --scene " + dir.file("scene.json") + " --linear --srgb")
+            .code == 2);
+  CHECK_FALSE(fs::exists(dir.file("x.ply")));
 }
 
-TEST_CASE("bake-lighting --hdr --srgb --per face --model --space", "[lighting][cli]") {
+TEST_CASE("bake-lighting to glTF writes linear COLOR_0 with and without --srgb", "[lighting][cli][issue28]") {
+  // glTF 2.0, 3.7.2.1: COLOR_0 is linear in every component type. ubyte, normalized: kd's
+  // linear bytes 128, 64, 255 whatever --srgb says.
+  TempDir dir;
+  dir.write("quad.obj", kQuadObj);
+  dir.write("scene.json", kFlatScene);
+  for (const char* flags : {"", " --srgb", " --linear"}) {
+    INFO("flags:" << flags);
+    const Run r = run(dir.file("quad.obj") + " -o " + dir.file("lit.glb") + " --scene " + dir.file("scene.json") + flags);
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const Mesh m = read_mesh(dir.file("lit.glb"));
+    REQUIRE(m.vertex_colors.size() >= 12);
+    const std::size_t ch = std::size_t(m.color_channels);
+    for (std::size_t v = 0; v < m.num_vertices(); ++v)
+      for (std::size_t k = 0; k < 3; ++k) CHECK(std::lround(255 * m.vertex_colors[ch * v + k]) == kKdLinearBytes[k]);
+  }
+}
+
+TEST_CASE("bake-lighting --hdr --srgb --per face --model --space: float colours stay linear", "[lighting][cli]") {
   TempDir dir;
   dir.write("quad.obj", kQuadObj);
   dir.write("scene.json", kFlatScene);
@@ -69,10 +105,11 @@ TEST_CASE("bake-lighting --hdr --srgb --per face --model --space", "[lighting][c
   REQUIRE(m.face_colors.size() == 6);
   CHECK(m.vertex_colors.empty());
   CHECK(m.colors_are_float);
-  // sRGB(0.5) = 1.055 * 0.5^(1/2.4) - 0.055 = 0.7353569830524495; sRGB(0.25) = 0.5370987304831942
-  CHECK(m.face_colors[0] == Approx(0.7353569830524495).epsilon(1e-6));
-  CHECK(m.face_colors[1] == Approx(0.5370987304831942).epsilon(1e-6));
-  CHECK(m.face_colors[2] == Approx(1.0).epsilon(1e-6));
+  // float outputs are linear (man shadetool, COLOUR; issue 28): kd itself; --srgb is a no-op now
+  CHECK(m.face_colors[0] == 0.5f);
+  CHECK(m.face_colors[1] == 0.25f);
+  CHECK(m.face_colors[2] == 1.0f);
+  CHECK(r.err.find("--srgb is the default now") != std::string::npos);
   // --stats names the model, the space and what was skipped (material specular defaults to 0)
   CHECK(r.err.find("model=blinn-phong") != std::string::npos);
   CHECK(r.err.find("space=object") != std::string::npos);
@@ -154,7 +191,7 @@ TEST_CASE("bake-lighting --shadows: the face under an occluder gets only its amb
   const Mesh plain = read_mesh(dir.file("plain.ply"));
   const Mesh shadows = read_mesh(dir.file("shadows.ply"));
   REQUIRE(shadows.face_colors.size() == 9);
-  const double kd[3] = {128, 64, 255};  // round(255 kd), read back as channel / 255
+  const long* kd = kKdSrgbBytes;  // kd's bytes (8-bit: sRGB), read back as channel / 255
   for (int c = 0; c < 3; ++c) {
     CHECK(plain.face_colors[c] * 255.0 == Approx(kd[c]));   // without shadows the tile is lit
     CHECK(shadows.face_colors[c] == 0);                     // with them it is black (no ambient)
@@ -241,8 +278,8 @@ TEST_CASE("bake-lighting lights each corner with the OBJ's own corner normal (cr
   for (std::size_t v = 0; v < 24; ++v) {
     const bool up = m.vertex_normals[3 * v + 2] > 0.999;
     top += up;
-    CHECK(std::lround(255 * m.vertex_colors[3 * v]) == (up ? 128 : 0));
-    CHECK(std::lround(255 * m.vertex_colors[3 * v + 2]) == (up ? 255 : 0));
+    CHECK(std::lround(255 * m.vertex_colors[3 * v]) == (up ? kKdSrgbBytes[0] : 0));  // 8-bit: sRGB
+    CHECK(std::lround(255 * m.vertex_colors[3 * v + 2]) == (up ? kKdSrgbBytes[2] : 0));
   }
   CHECK(top == 4);
 }

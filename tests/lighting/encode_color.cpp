@@ -48,3 +48,29 @@ TEST_CASE("encode_colors: 8-bit values survive a writer's round(255 c); hdr keep
   // above 1 the curve continues: 1.055 * 2.5^(1/2.4) - 0.055
   CHECK(encode_colors({2.5}, hdr)[0] == Approx(1.055 * std::pow(2.5, 1 / 2.4) - 0.055).epsilon(1e-7));
 }
+
+TEST_CASE("the colour convention: 8-bit sRGB unless --linear, float and glTF linear (issue 28)", "[lighting][encode]") {
+  // man shadetool, COLOUR: viewers read 8-bit colours as sRGB; glTF 2.0 3.7.2.1 makes COLOR_0
+  // linear in every component type; float (--hdr) outputs are linear.
+  for (bool gltf : {false, true})
+    for (bool linear : {false, true}) {
+      INFO("gltf " << gltf << ", linear " << linear);
+      const ColorEncoding eight = output_color_encoding(true, gltf, linear);
+      CHECK_FALSE(eight.hdr);
+      CHECK(eight.srgb == (!gltf && !linear));
+      const ColorEncoding flt = output_color_encoding(false, gltf, linear);
+      CHECK(flt.hdr);
+      CHECK_FALSE(flt.srgb);
+    }
+  // the byte a PLY gets for linear 0.5: 188 by default, 128 with --linear (round(127.5))
+  CHECK(std::lround(255.0 * encode_colors({0.5}, output_color_encoding(true, false, false))[0]) == 188);
+  CHECK(std::lround(255.0 * encode_colors({0.5}, output_color_encoding(true, false, true))[0]) == 128);
+  CHECK(std::lround(255.0 * encode_colors({0.5}, output_color_encoding(true, true, false))[0]) == 128);
+}
+
+TEST_CASE("clamp_displayable: [0, 1], NaN to 0", "[lighting][encode]") {
+  CHECK(clamp_displayable(2.5) == 1);
+  CHECK(clamp_displayable(-0.25) == 0);
+  CHECK(clamp_displayable(0.375) == 0.375);
+  CHECK(clamp_displayable(std::nan("")) == 0);
+}

@@ -125,3 +125,36 @@ def test_render_equals_the_cli_image(tmp_path, shading):
     ldr = shadetool.render(mesh, scene=scene, width=40, height=30, shading=shading, samples=2)
     assert ldr.dtype == np.uint8 and same_bits(ldr, read_png_rgb8(png))
     assert np.count_nonzero(ldr) > 0
+
+
+FLAT_SCENE = {"model": "lambert", "ambient": [0, 0, 0],
+              "material": {"ambient": [0, 0, 0], "diffuse": [0.5, 0.25, 1]},
+              "lights": [{"type": "directional", "direction": [0, 0, -1]}]}
+
+
+def test_bake_lighting_uint8_is_srgb_by_default_and_linear_on_request(tmp_path):
+    # issue 28, item 1: one convention with the CLI. kd = (0.5, 0.25, 1) lit straight on; IEC
+    # 61966-2-1 by hand: 1.055 * 0.5^(1/2.4) - 0.055 = 0.73536 -> 188; 0.25 -> 0.53710 -> 137.
+    V = np.array([[0, 0, 0], [2, 0, 0], [2, 1, 0], [0, 1, 0]], dtype=float)
+    F = np.array([[0, 1, 2], [0, 2, 3]])
+    N = np.array([[0, 0, 1.0]] * 4)
+    assert np.all(shadetool.bake_lighting(V, F, N, FLAT_SCENE, uint8=True) == [188, 137, 255])
+    assert np.all(shadetool.bake_lighting(V, F, N, FLAT_SCENE, uint8=True, linear=True) == [128, 64, 255])
+    assert shadetool.bake_lighting(V, F, N, FLAT_SCENE, uint8=True).dtype == np.uint8
+    assert np.allclose(shadetool.bake_lighting(V, F, N, FLAT_SCENE), [0.5, 0.25, 1], rtol=0, atol=1e-15)  # float: linear
+
+
+@pytest.mark.parametrize("linear", [False, True])
+def test_uint8_colours_equal_the_cli_bytes(tmp_path, linear):
+    flag = ["--linear"] if linear else []
+    mesh = shadetool.read_mesh(DATA / "torus_knot.ply")
+    run_cli("bake-lighting", DATA / "torus_knot.ply", "-o", tmp_path / "lit.ply", "--scene",
+            DATA / "scenes" / "studio.json", *flag)
+    stored = np.rint(np.asarray(shadetool.read_mesh(tmp_path / "lit.ply").vertex_colors) * 255)
+    rgb = shadetool.bake_lighting(mesh, scene=DATA / "scenes" / "studio.json", uint8=True, linear=linear)
+    assert np.array_equal(rgb.astype(np.int64), stored.astype(np.int64))
+    run_cli("occlusion", DATA / "torus_knot.ply", "-o", tmp_path / "ao.ply", "--samples", "16", *flag)
+    grey = np.rint(np.asarray(shadetool.read_mesh(tmp_path / "ao.ply").vertex_colors)[:, 0] * 255)
+    ao = shadetool.occlusion(mesh, samples=16, uint8=True, linear=linear)
+    assert ao.dtype == np.uint8
+    assert np.array_equal(ao.astype(np.int64), grey.astype(np.int64))

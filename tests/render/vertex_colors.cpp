@@ -40,7 +40,9 @@ TEST_CASE("a pixel centre on a vertex gets the vertex's baked colour (gouraud an
       const float* px = r.image.pixel(50, 50);
       INFO("vertex " << v << ", " << render_shading_name(shading));
       for (int c = 0; c < 3; ++c) {
-        const double expected = baked[3 * v + c];
+        // Gouraud: OpenGL 2.1 clamps the vertex colour to [0, 1] before interpolating (issue 28)
+        const double expected =
+            shading == RenderShading::Gouraud ? std::min(1.0, std::max(0.0, baked[3 * v + c])) : baked[3 * v + c];
         CHECK(std::abs(int(code(px[c])) - int(code(expected))) <= 1);  // to 1/255 as stored in the PNG
         CHECK(px[c] == Approx(expected).margin(1e-6));                  // and in fact to float rounding
       }
@@ -87,4 +89,41 @@ TEST_CASE("flat, gouraud and phong agree on a planar mesh under a directional li
   const float* centre = flat.pixel(48, 40);
   CHECK(centre[0] == Approx(0.2 * 0.05 + 0.7 * nl).margin(1e-6));
   CHECK(centre[2] == Approx(0.2 * 0.05 + 0.3 * nl).margin(1e-6));
+}
+
+TEST_CASE("gouraud clamps each vertex colour to [0, 1] before interpolating, as OpenGL 2.1 (--hdr: unclamped)",
+          "[render][vertex][issue28]") {
+  // issue 28, item 4: interpolating unclamped colours and clamping per pixel made highlights
+  // brighter than OpenGL draws them. Truth: the same triangle rendered from colours clamped by
+  // hand first, pixel by pixel.
+  const int side = 64;
+  Mesh mesh;
+  mesh.add_vertex({4, 4, 0});
+  mesh.add_vertex({60, 8, 0});
+  mesh.add_vertex({20, 60, 0});
+  mesh.add_face({0, 1, 2});
+  const Scene s = pixel_exact_scene(side);
+  const std::vector<double> over = {3.0, 0.2, 0.5, 0.1, 2.0, -0.25, 0.5, 0.5, 1.5};  // channels beyond 1 (and below 0)
+  const std::vector<double> clamped = {1.0, 0.2, 0.5, 0.1, 1.0, 0.0, 0.5, 0.5, 1.0};  // by hand
+  RenderOptions o;
+  o.width = o.height = side;
+  o.samples = 2;
+  o.shading = RenderShading::Gouraud;
+  o.vertex_rgb = &over;
+  const ImageRGB from_over = render_mesh(mesh, s, o).image;
+  o.clamp_vertex_colors = false;  // --hdr
+  const ImageRGB hdr = render_mesh(mesh, s, o).image;
+  o.vertex_rgb = &clamped;
+  const ImageRGB from_clamped = render_mesh(mesh, s, o).image;
+  REQUIRE(from_over.rgb.size() == from_clamped.rgb.size());
+  std::size_t covered = 0;
+  for (std::size_t i = 0; i < from_over.rgb.size(); ++i) {
+    CHECK(from_over.rgb[i] == from_clamped.rgb[i]);
+    covered += from_over.rgb[i] > 0;
+  }
+  CHECK(covered > 1000);  // the triangle covers about 1500 pixels: the comparison saw it
+  CHECK(max_abs_difference(hdr, from_clamped) > 0.5);  // --hdr keeps the unclamped interpolation
+  float brightest = 0;
+  for (float c : hdr.rgb) brightest = std::max(brightest, c);
+  CHECK(brightest > 1.5f);
 }

@@ -27,13 +27,17 @@ std::string temp_path(const std::string& name) {
 
 bool exists(const std::string& path) { return std::ifstream(path).good(); }
 
+// IEC 61966-2-1's encoding, written out here independently of lighting/encode_color.h.
+double iec_srgb(double c) { return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055; }
+
 }  // namespace
 
-TEST_CASE("occlusion writes the library's open fraction as PLY quality and grey colours", "[visibility][cli]") {
+TEST_CASE("occlusion writes the library's open fraction as PLY quality and grey colours", "[visibility][cli][issue28]") {
   const std::string in = std::string(SHADETOOL_SOURCE_DIR) + "/data/torus_knot.ply";
-  const std::string out = temp_path("knot.ply");
+  const std::string out = temp_path("knot.ply"), linear = temp_path("knot_linear.ply");
   const ProcessResult r = run_shadetool("occlusion '" + in + "' -o '" + out + "' --samples 32");
   REQUIRE(r.code == 0);
+  REQUIRE(run_shadetool("occlusion '" + in + "' -o '" + linear + "' --samples 32 --linear").code == 0);
   const Mesh mesh = read_mesh(in);
   const VisibilityScene scene(mesh);
   AmbientOcclusionOptions o;
@@ -41,12 +45,16 @@ TEST_CASE("occlusion writes the library's open fraction as PLY quality and grey 
   // The CLI computes the angle-weighted normals (block by block, the same bits as all at once).
   const AmbientOcclusion ao = ambient_occlusion_per_vertex(scene, mesh, vertex_normals(mesh).normals, o);
   REQUIRE(ao.hits > 0);
-  const Mesh written = read_mesh(out);
+  const Mesh written = read_mesh(out), written_linear = read_mesh(linear);
   REQUIRE(written.vertex_quality == ao.open_fraction);  // float written, float read: bit for bit
+  REQUIRE(written_linear.vertex_quality == ao.open_fraction);  // --linear changes the colours only
   REQUIRE(written.vertex_colors.size() == 3 * mesh.num_vertices());
+  REQUIRE(written_linear.vertex_colors.size() == 3 * mesh.num_vertices());
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    const float expect = std::round(ao.open_fraction[v] * 255.0f) / 255.0f;  // uchar colours
-    REQUIRE(written.vertex_colors[3 * v] == Approx(expect).margin(1e-6));
+    // uchar colours: sRGB-encoded by default (issue 28, man shadetool COLOUR), linear with --linear
+    const double open = ao.open_fraction[v];
+    REQUIRE(std::lround(255 * written.vertex_colors[3 * v]) == std::lround(255 * iec_srgb(open)));
+    REQUIRE(std::lround(255 * written_linear.vertex_colors[3 * v]) == std::lround(255 * open));
     REQUIRE(written.vertex_colors[3 * v + 1] == written.vertex_colors[3 * v]);
     REQUIRE(written.vertex_colors[3 * v + 2] == written.vertex_colors[3 * v]);
   }
@@ -60,6 +68,7 @@ TEST_CASE("occlusion writes the library's open fraction as PLY quality and grey 
   const AmbientOcclusion af = ambient_occlusion_per_face(scene, mesh, o);
   REQUIRE(a.face_quality == af.open_fraction);
   std::remove(out.c_str());
+  std::remove(linear.c_str());
   std::remove(ascii.c_str());
 }
 

@@ -16,6 +16,18 @@ std::uint8_t quantize_8bit(double c) {
   return static_cast<std::uint8_t>(std::lround(255.0 * c));
 }
 
+ColorEncoding output_color_encoding(bool eight_bit, bool gltf, bool linear) {
+  ColorEncoding e;
+  e.hdr = !eight_bit;
+  e.srgb = eight_bit && !gltf && !linear;
+  return e;
+}
+
+double clamp_displayable(double c) {
+  if (!(c > 0)) return 0;  // negative, zero, NaN
+  return c < 1 ? c : 1;
+}
+
 std::vector<float> encode_colors(const std::vector<double>& rgb, const ColorEncoding& encoding) {
   std::vector<float> out(rgb.size());
   for (std::size_t i = 0; i < rgb.size(); ++i) {

@@ -2,6 +2,8 @@
 // snapping, culling) are here; the tile loop is engine/tile_raster.cpp.
 #include <shadetool/render/render_mesh.h>
 
+#include <shadetool/lighting/encode_color.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -246,6 +248,8 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
       if (options.vertex_rgb && options.vertex_rgb->size() != 3 * V)
         throw Error("render: " + std::to_string(options.vertex_rgb->size() / 3) + " vertex colours for " + std::to_string(V) + " vertices");
       surface.vertex_rgb = options.vertex_rgb ? *options.vertex_rgb : baked_vertex_colors(mesh, scene, options.lighting);
+      if (options.clamp_vertex_colors)  // OpenGL 2.1: the vertex colour is clamped before it is interpolated
+        for (double& c : surface.vertex_rgb) c = clamp_displayable(c);
       break;
     case RenderShading::Phong: {
       const std::vector<double> normals_object = shading_vertex_normals(mesh);

@@ -24,7 +24,10 @@
 //      (screen barycentrics lambda are affine in screen space, attributes are affine in 1/w-space),
 //      and the shading:
 //        flat     the face's colour from bake_lighting per face (face normal at the centroid)
-//        gouraud  the baked vertex colours (bake_lighting per vertex), interpolated
+//        gouraud  the baked vertex colours (bake_lighting per vertex), each clamped to [0, 1]
+//                 first (lighting/encode_color.h clamp_displayable, as OpenGL 2.1 clamps a vertex's
+//                 colour before interpolating it) unless options.clamp_vertex_colors is false
+//                 (float output: --hdr), then interpolated
 //        phong    world position and world normal interpolated, the normal renormalised, the
 //                 lighting equation evaluated at the sample (render/lighting_adapter.h)
 //      quads: the sample's world point through the inverse bilinear map (inverse_bilinear.h) and
@@ -84,6 +87,9 @@ struct RenderOptions {
   // Gouraud: these linear colours (#V by 3) instead of bake-lighting's point colours (null), e.g.
   // lighting/fit_vertex_lighting.h's least-squares ones. The caller owns them for the call.
   const std::vector<double>* vertex_rgb = nullptr;
+  // Gouraud: clamp each vertex colour to [0, 1] before interpolating (OpenGL 2.1; the 8-bit
+  // image). false: unclamped (a float image, --hdr). Flat and Phong clamp per pixel when encoded.
+  bool clamp_vertex_colors = true;
 };
 
 struct RenderStats {
