@@ -49,10 +49,11 @@ mode_t current_umask() {
 }
 
 // The temporaries being written, for the signal handler: a fixed table (no allocation, no lock in
-// the handler). A slot is claimed (state 0 -> 1), mkstemp fills its name in place (so the file
-// never exists unlisted), and it is released (1 -> 0) once the temporary is renamed or removed.
-// The handler may unlink a slot's name while it is half-filled or already renamed: that name
-// names no file, or names one of ours being written, which the handler removes anyway.
+// the handler). A slot is claimed (state 0 -> 1), given the template `PATH.tmp-XXXXXX` and listed
+// (1 -> 2); mkstemp then fills the X's in place (so the file never exists unlisted), and the slot
+// is released (-> 0) once the temporary is renamed or removed. The handler unlinks listed slots
+// only: a name whose X's are half-filled, or already renamed, names no file (or a temporary of
+// ours, which the handler removes anyway), never a user's file.
 constexpr std::size_t kSlots = 256;
 struct TemporarySlot {
   std::atomic<int> in_use{0};
@@ -71,6 +72,7 @@ class Registration {
       if (g_slots[i].in_use.load(std::memory_order_relaxed) == 0 &&
           g_slots[i].in_use.compare_exchange_strong(expected, 1, std::memory_order_acq_rel)) {
         std::memcpy(g_slots[i].name, tmpl.c_str(), tmpl.size() + 1);
+        g_slots[i].in_use.store(2, std::memory_order_release);  // listed: the name is whole
         index_ = static_cast<int>(i);
         return;
       }
@@ -94,7 +96,7 @@ class Registration {
 extern "C" void remove_temporaries_and_reraise(int sig) {
   const int saved = errno;
   for (TemporarySlot& s : g_slots)
-    if (s.in_use.load(std::memory_order_acquire) == 1) ::unlink(s.name);
+    if (s.in_use.load(std::memory_order_acquire) == 2) ::unlink(s.name);
   struct sigaction dfl {};
   dfl.sa_handler = SIG_DFL;
   sigemptyset(&dfl.sa_mask);
