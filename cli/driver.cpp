@@ -77,6 +77,9 @@ void add_io_options(CLI::App& sub, IoOptions& io, OutputKind kind) {
     sub.add_option("--format", io.format,
                    "Output format: " + shadetool::format_list(false) + " (glTF: glb or gltf; default: from -o's extension)")
         ->check(CLI::IsMember(format_names_and_extensions(), CLI::ignore_case));
+    sub.add_flag("--in-place", io.in_place,
+                 "Replace each input file by its result, atomically, in its own format (without -o, --output-dir or "
+                 "--in-place: stdout when it is not a terminal)");
     auto* a = sub.add_flag("--ascii", io.ascii, "Write PLY/STL as text (glTF: JSON .gltf instead of .glb)");
     auto* b = sub.add_flag("--binary", io.binary, "Write PLY/STL as binary (the default)");
     a->excludes(b);
@@ -130,6 +133,7 @@ std::string read_stdin() {
 std::string output_path_for(const IoOptions& io, const std::string& input, OutputKind kind) {
   if (kind == OutputKind::Report) return {};
   if (!io.output.empty()) return io.output;
+  if (io.in_place) return input;
   const fs::path in = input == "-" ? fs::path("stdin") : fs::path(input);
   std::string ext;
   if (kind == OutputKind::Image) {
@@ -145,6 +149,7 @@ std::string output_path_for(const IoOptions& io, const std::string& input, Outpu
 }
 
 void refuse_overlapping_paths(const IoOptions& io, OutputKind kind);
+bool input_is_gltf(const IoOptions& io, const std::string& input);
 
 // A result no output format can hold is a usage error before any work (bake-lighting -o x.stl
 // would write a file with nothing it computed). An output whose format is unknown is left to the
@@ -173,7 +178,26 @@ void validate(const IoOptions& io, OutputKind kind) {
   if (stdin_inputs == 1 && io.input_format.empty()) throw UsageError("reading stdin (-) needs --input-format");
   if (kind == OutputKind::Report) return refuse_overlapping_paths(io, kind);
   if (!io.output.empty() && !io.output_dir.empty()) throw UsageError("give -o or --output-dir, not both");
-  if (io.output.empty() && io.output_dir.empty()) throw UsageError("no output given: use -o FILE or --output-dir DIR");
+  if (io.in_place && (!io.output.empty() || !io.output_dir.empty()))
+    throw UsageError("--in-place replaces the inputs: give it without -o and --output-dir");
+  if (io.in_place)
+    for (const std::string& input : io.inputs) {
+      if (input == "-") throw UsageError("--in-place cannot replace stdin (-): use -o FILE or -o -");
+      if (!io.format.empty()) {
+        const shadetool::FormatEntry* in = shadetool::find_format(fs::path(input).extension().string().erase(0, 1));
+        const Format out = shadetool::parse_format_name(io.format, "--format");
+        const bool gltf_form_differs = in && in->format == Format::Gltf &&
+                                       shadetool::gltf_name_is_text(input) != shadetool::gltf_name_is_text("." + io.format);
+        if (!in || in->format != out || gltf_form_differs)
+          throw UsageError(shadetool::located(input, 0, "--in-place keeps the input's format: --format " + io.format +
+                                                            " would change it; write the new format with -o or --output-dir"));
+      }
+      if (io.ascii && input_is_gltf(io, input) && !shadetool::gltf_name_is_text(input))
+        throw UsageError(shadetool::located(input, 0, "--in-place keeps the input's format: --ascii would write JSON glTF into a .glb; use -o"));
+    }
+  if (io.output.empty() && io.output_dir.empty() && !io.in_place)
+    throw UsageError(kind == OutputKind::Mesh ? "no output given: use -o FILE, --output-dir DIR or --in-place"
+                                              : "no output given: use -o FILE or --output-dir DIR");
   if (!io.output.empty() && io.inputs.size() > 1)
     throw UsageError("-o takes one input; use --output-dir DIR for several");
   if (io.output == "-" && io.format.empty()) throw UsageError("writing stdout (-o -) needs --format");
@@ -232,6 +256,7 @@ void refuse_overlapping_paths(const IoOptions& io, OutputKind kind) {
   for (const Output& o : outputs)
     for (const auto& [input, id] : inputs)
       if (o.id.same_file(id)) {
+        if (io.in_place && o.from_input && o.origin == input) continue;  // --in-place: replacing it is the point
         if (o.from_input && o.origin == input)
           throw UsageError(shadetool::located(input, 0, "the output " + o.path + " is the input file: refusing to overwrite the input"));
         if (o.from_input)
@@ -473,7 +498,42 @@ void write_gltf_output(const IoOptions& io, OutputKind kind, const shadetool::Gl
 
 }  // namespace
 
-int run_command(const std::string& command, const IoOptions& io, const MeshStep& step, OutputKind kind) {
+namespace {
+
+// The input's format as a --format value ("obj", "glb", ...): --input-format, else its extension.
+std::string input_format_name(const IoOptions& io, const std::string& input) {
+  if (!io.input_format.empty()) return io.input_format;
+  std::string ext = input == "-" ? std::string() : fs::path(input).extension().string();
+  if (!ext.empty()) ext.erase(0, 1);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext.empty() || !shadetool::find_format(ext))
+    throw UsageError(shadetool::located(input, 0, "no output given and the input's format is not known from its name: "
+                                                  "use -o FILE, --output-dir DIR, --in-place, or -o - --format FORMAT"));
+  return ext;
+}
+
+// A mesh command given none of -o, --output-dir, --in-place: to stdout when stdout is not a
+// terminal (a pipe, a file), one input only, in the input's format unless --format names one.
+IoOptions with_default_output(const IoOptions& io, OutputKind kind) {
+  if (kind != OutputKind::Mesh || !io.output.empty() || !io.output_dir.empty() || io.in_place || io.inputs.empty())
+    return io;
+  if (isatty(STDOUT_FILENO))
+    throw UsageError("no output given: use -o FILE, --output-dir DIR or --in-place (a mesh is written to stdout only "
+                     "when it is not a terminal)");
+  if (io.inputs.size() > 1)
+    throw UsageError("no output given for " + std::to_string(io.inputs.size()) +
+                     " inputs: stdout takes one mesh; use --output-dir DIR or --in-place");
+  IoOptions out = io;
+  out.output = "-";
+  if (out.format.empty()) out.format = input_format_name(io, io.inputs[0]);
+  return out;
+}
+
+}  // namespace
+
+int run_command(const std::string& command, const IoOptions& given_io, const MeshStep& step, OutputKind kind) {
+  shadetool::io::remove_temporaries_on_signals();  // an interrupted write leaves no PATH.tmp-XXXXXX
+  const IoOptions io = with_default_output(given_io, kind);
   validate(io, kind);
   refuse_unheld_result(command, io, kind);
   const bool writes_file = kind != OutputKind::Report;

@@ -5,7 +5,11 @@
 //   OutputKind::Mesh    the step changes the mesh in place; the driver writes it with a mesh format
 //                       (files/format_table.h): -o FILE, -o - (stdout, needs --format), --output-dir
 //                       DIR (named after the input, extension from --format or the input's),
-//                       --format, --ascii/--binary.
+//                       --format, --ascii/--binary, --in-place (each input replaced atomically by
+//                       its result, in its own format). Without any of -o, --output-dir and
+//                       --in-place: when stdout is not a terminal, one input's mesh goes there in
+//                       the input's format (as `-o - --format INPUT'S` would); at a terminal it is
+//                       a usage error naming the three.
 //   OutputKind::Image   the step fills FileResult::image; the driver writes it with an image format
 //                       (io/image_io.h: --format, else -o's extension; --output-dir names files
 //                       INPUT_STEM.EXT with EXT the format's, by default the table's first).
@@ -53,6 +57,7 @@ struct IoOptions {
   std::vector<std::string> inputs;
   std::string output;        // -o FILE or -o - (stdout); one input only
   std::string output_dir;    // --output-dir DIR: outputs named after the inputs
+  bool in_place = false;     // --in-place (Mesh only): each input replaced atomically, in its own format
   std::string format;        // --format: a mesh format (OutputKind::Mesh) or an image format (Image)
   std::string input_format;  // --input-format, needed for stdin
   bool ascii = false;

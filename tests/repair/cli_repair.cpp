@@ -211,7 +211,10 @@ TEST_CASE("repair: usage errors exit 2 and write nothing", "[repair][cli]") {
   CHECK(run("repair '" + in + "' -o '" + out + "' --weight median", err) == 2);
   CHECK(run("repair '" + in + "' '" + in + "' --output-dir '" + tmp.path.string() + "' --report '" + tmp / "r.json" + "'", err) == 2);
   CHECK(err.find("--report takes one input") != std::string::npos);
-  CHECK(run("repair '" + in + "'", err) == 2);  // no output given
+  // No output given, stdout not a terminal (captured): one mesh goes to stdout, several are refused.
+  CHECK(run("repair '" + in + "' '" + in + "'", err) == 2);
+  CHECK(err.find("--output-dir") != std::string::npos);
+  CHECK(err.find("--in-place") != std::string::npos);
   CHECK(!fs::exists(out));
   CHECK(!fs::exists(tmp / "r.json"));
 }

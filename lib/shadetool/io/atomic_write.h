@@ -13,6 +13,15 @@
 // file is replaced. Only then are they renamed into place, in order (a rename within a directory
 // does not fail for want of space; should one fail anyway, the later temporaries are removed).
 // Entries "-" are written to stdout last, after every rename.
+//
+// remove_temporaries_on_signals: installs handlers for SIGINT and SIGTERM (only where the
+// disposition is still the default one: a host that handles them itself, Python, keeps its own)
+// that unlink every temporary being written at that moment and then re-raise the signal with the
+// default action, so the process ends with the signal's status and an interrupted write leaves
+// no `PATH.tmp-XXXXXX` behind (the existing file at PATH is untouched: it is only ever replaced
+// by rename). Async-signal-safe: the temporaries are kept in a small fixed table of names (256
+// slots of PATH_MAX bytes; a write that finds the table full, or a longer name, is simply not
+// cleaned up on a signal), the handler calls only unlink, sigaction and raise. Idempotent.
 #pragma once
 
 #include <string>
@@ -29,6 +38,8 @@ struct FileToWrite {
   std::string_view bytes;
 };
 void write_files_atomically(const std::vector<FileToWrite>& files);
+
+void remove_temporaries_on_signals();
 
 }  // namespace shadetool::io
 #pragma GCC visibility pop
