@@ -71,6 +71,27 @@ void split_back_corners(const Mesh& mesh, const TwoSidedFaces& two, CornerNormal
   cn.corner_index = std::move(index);
 }
 
+// The mesh's normals become the corner normals `cn` (its vertex normals dropped); the report counts them.
+void store_corner_normals(Mesh& mesh, CornerNormals&& cn, NormalsReport& report) {
+  mesh.corner_normals = std::move(cn.normals);
+  mesh.corner_normal_index = std::move(cn.corner_index);
+  mesh.vertex_normals.clear();
+  report.computed = rows(mesh.corner_normals);
+  report.fallback = cn.fallback_corners;
+  report.degenerate_faces = cn.degenerate_faces;
+}
+
+// The mesh's normals become the vertex normals `normals` (its corner normals dropped).
+void store_vertex_normals(Mesh& mesh, std::vector<double>&& normals, std::size_t fallback, std::size_t degenerate,
+                          NormalsReport& report) {
+  mesh.vertex_normals = std::move(normals);
+  mesh.corner_normals.clear();
+  mesh.corner_normal_index.clear();
+  report.computed = rows(mesh.vertex_normals);
+  report.fallback = fallback;
+  report.degenerate_faces = degenerate;
+}
+
 NormalsReport compute_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
   NormalsReport report;
   if (request.recompute) {
@@ -105,32 +126,17 @@ NormalsReport compute_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
     RankedWeightingOptions options = request.ranked_options;
     options.crease_angle = request.kind == NormalKind::Corner ? request.crease_angle : -1.0;
     CornerNormals cn = ranked_normals(mesh, options);
-    if (request.kind == NormalKind::Corner) {
-      mesh.corner_normals = std::move(cn.normals);
-      mesh.corner_normal_index = std::move(cn.corner_index);
-      mesh.vertex_normals.clear();
-      report.computed = rows(mesh.corner_normals);
-    } else {
-      mesh.vertex_normals = std::move(cn.normals);
-      mesh.corner_normals.clear();
-      mesh.corner_normal_index.clear();
-      report.computed = rows(mesh.vertex_normals);
-    }
-    report.fallback = cn.fallback_corners;
-    report.degenerate_faces = cn.degenerate_faces;
+    if (request.kind == NormalKind::Corner)
+      store_corner_normals(mesh, std::move(cn), report);
+    else  // one normal per vertex: cn's pool is per vertex
+      store_vertex_normals(mesh, std::move(cn.normals), cn.fallback_corners, cn.degenerate_faces, report);
     return report;
   }
   if (request.kind != NormalKind::Face && request.smoothing_groups == SmoothingGroups::Honour) {
     const FaceSmoothingGroups groups = face_smoothing_groups(mesh);
     if (groups.matter()) {
       const double crease = request.kind == NormalKind::Corner ? request.crease_angle : kPi;
-      CornerNormals cn = corner_normals(mesh, crease, groups.groups, request.weighting, request.precision);
-      mesh.corner_normals = std::move(cn.normals);
-      mesh.corner_normal_index = std::move(cn.corner_index);
-      mesh.vertex_normals.clear();
-      report.computed = rows(mesh.corner_normals);
-      report.fallback = cn.fallback_corners;
-      report.degenerate_faces = cn.degenerate_faces;
+      store_corner_normals(mesh, corner_normals(mesh, crease, groups.groups, request.weighting, request.precision), report);
       report.honoured_groups = true;
       report.smoothing_groups = groups.count;
       report.flat_faces = groups.flat;
@@ -144,12 +150,7 @@ NormalsReport compute_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
       report.two_sided_faces = two.backs;
       VertexNormals vn = two.backs > 0 ? vertex_normals(front_faces(mesh, two), request.weighting, request.precision)
                                        : vertex_normals(mesh, request.weighting, request.precision);
-      mesh.vertex_normals = std::move(vn.normals);
-      mesh.corner_normals.clear();
-      mesh.corner_normal_index.clear();
-      report.computed = rows(mesh.vertex_normals);
-      report.fallback = vn.fallback_vertices;
-      report.degenerate_faces = vn.degenerate_faces;
+      store_vertex_normals(mesh, std::move(vn.normals), vn.fallback_vertices, vn.degenerate_faces, report);
       break;
     }
     case NormalKind::Corner: {
@@ -158,12 +159,7 @@ NormalsReport compute_mesh_normals(Mesh& mesh, const NormalsRequest& request) {
       CornerNormals cn = two.backs > 0 ? corner_normals(front_faces(mesh, two), request.crease_angle, request.weighting, request.precision)
                                        : corner_normals(mesh, request.crease_angle, request.weighting, request.precision);
       if (two.backs > 0) split_back_corners(mesh, two, cn);
-      mesh.corner_normals = std::move(cn.normals);
-      mesh.corner_normal_index = std::move(cn.corner_index);
-      mesh.vertex_normals.clear();
-      report.computed = rows(mesh.corner_normals);
-      report.fallback = cn.fallback_corners;
-      report.degenerate_faces = cn.degenerate_faces;
+      store_corner_normals(mesh, std::move(cn), report);
       break;
     }
     case NormalKind::Face: {
