@@ -327,6 +327,8 @@ std::string split_vertices_note(std::size_t added) {
 void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& mesh, const std::string& output,
                   FileResult& result) {
   std::string bytes;
+  shadetool::io::ProduceBytes produce;  // a mesh streams into the file (io/byte_sink.h)
+  shadetool::WriteInfo write_info;
   switch (kind) {
     case OutputKind::Report: break;
     case OutputKind::Mesh: {
@@ -337,28 +339,27 @@ void write_output(const IoOptions& io, OutputKind kind, const shadetool::Mesh& m
       wo.name = output == "-" ? "stdout" : output;
       wo.refuse_unusable_normals = true;  // no subcommand writes a zero or non-finite normal
       wo.gltf_unlit = result.unlit;
-      shadetool::WriteInfo write_info;
-      bytes = shadetool::write_mesh_to_memory(mesh, wo, &write_info);
-      if (write_info.split_vertices > 0) {
-        result.stats["split_vertices"] = write_info.split_vertices;
-        result.notes.push_back(split_vertices_note(write_info.split_vertices));
-      }
-      for (auto& n : write_info.notes) result.notes.push_back(n);  // what the format could not carry
+      produce = shadetool::prepare_mesh_write(mesh, wo, &write_info);  // refuses what no writer writes
       break;
     }
     case OutputKind::Image: {
-      shadetool::ImageWriteInfo write_info;
-      bytes = shadetool::encode_image(result.image, shadetool::image_format_for(output, io.format), output, &write_info);
+      shadetool::ImageWriteInfo image_info;
+      bytes = shadetool::encode_image(result.image, shadetool::image_format_for(output, io.format), output, &image_info);
       result.stats["width"] = result.image.width;
       result.stats["height"] = result.image.height;
-      for (auto& n : write_info.notes) result.notes.push_back(n);
+      for (auto& n : image_info.notes) result.notes.push_back(n);
       break;
     }
   }
   std::vector<shadetool::io::FileToWrite> files;
-  if (kind != OutputKind::Report) files.push_back({output, bytes});
+  if (kind != OutputKind::Report) files.push_back({output, bytes, produce});
   for (const auto& [path, content] : result.other_files) files.push_back({path, content});
   shadetool::io::write_files_atomically(files);
+  if (write_info.split_vertices > 0) {
+    result.stats["split_vertices"] = write_info.split_vertices;
+    result.notes.push_back(split_vertices_note(write_info.split_vertices));
+  }
+  for (auto& n : write_info.notes) result.notes.push_back(n);  // what the format could not carry
 }
 
 // glTF input: true when --input-format or the input's extension names glTF.

@@ -7,7 +7,11 @@
 #    temporary left), its bytes those of -o; refused with -o/--output-dir, for stdin and for a
 #    format change;
 #  - SIGINT/SIGTERM during a write remove the temporary and leave the existing output untouched,
-#    and the process ends with the signal's status.
+#    and the process ends with the signal's status;
+#  - a full device (stdout: /dev/full; a file: past the file-size limit, ulimit -f, which fails
+#    write(2) with EFBIG midway like a full disk fails it with ENOSPC): exit 1, one line naming the
+#    output, no output file, no temporary, an existing output untouched (the writers stream
+#    through a 1 MiB buffer, io/byte_sink.h, so the failure comes after bytes were written).
 set -uo pipefail
 bin=$1 src=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -166,6 +170,28 @@ for sig in (signal.SIGINT, signal.SIGTERM):
 sys.exit(1 if failed else 0)
 EOF
 check "signals during a write: temporaries removed, output untouched" test $? -eq 0
+
+# 5. A full device.
+if [ -w /dev/full ]; then
+  "$bin" normals "$src/data/torus.obj" > /dev/full 2> "$tmp/full.err"
+  code=$?
+  check "stdout /dev/full: exit 1" test "$code" -eq 1
+  check "stdout /dev/full: one line naming stdout" bash -c '[ "$(wc -l < "$1")" -eq 1 ] && grep -q "stdout: cannot write: No space left on device" "$1"' _ "$tmp/full.err"
+else
+  skip "no writable /dev/full"
+fi
+mkdir "$tmp/limit"
+echo "# the existing output" > "$tmp/limit/kept.obj"
+# 256 KiB limit; the 2M-triangle mesh of section 4 writes ~100 MB. SIGXFSZ ignored: write fails (EFBIG).
+( trap '' XFSZ; ulimit -f 256; exec "$bin" normals --recompute "$tmp/sig/big.obj" -o "$tmp/limit/new.obj" ) 2> "$tmp/limit.err"
+check "file past the size limit: exit 1" test $? -eq 1
+check "... one line naming the file" bash -c '[ "$(wc -l < "$1")" -eq 1 ] && grep -q "new.obj: cannot write: File too large" "$1"' _ "$tmp/limit.err"
+check "... no output file" test ! -e "$tmp/limit/new.obj"
+( trap '' XFSZ; ulimit -f 256; exec "$bin" normals --recompute "$tmp/sig/big.obj" -o "$tmp/limit/kept.obj" ) 2> /dev/null
+check "... an existing output untouched" grep -qx "# the existing output" "$tmp/limit/kept.obj"
+check "... no temporary left" test "$(ls "$tmp/limit")" = "kept.obj"
+( trap '' XFSZ; ulimit -f 256; exec "$bin" normals --recompute "$tmp/sig/big.obj" --format ply ) > "$tmp/limit/stdout.ply" 2> "$tmp/limit.err"
+check "stdout a file past the size limit: exit 1, one line naming stdout" bash -c '[ $0 -eq 1 ] && [ "$(wc -l < "$1")" -eq 1 ] && grep -q "stdout: cannot write: File too large" "$1"' $? "$tmp/limit.err"
 
 echo "cli_output: $pass passed, $fail failed, $skipped skipped"
 test "$fail" -eq 0

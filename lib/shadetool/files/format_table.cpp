@@ -82,25 +82,27 @@ Mesh read_gltf_entry(std::string_view bytes, const std::string& name, ReadInfo& 
   info.notes.insert(info.notes.end(), doc.notes.begin(), doc.notes.end());  // compressed geometry decoded
   return gltf_world_mesh(doc, info.notes);
 }
-void write_gltf_entry(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info) {
+void write_gltf_entry(const Mesh& mesh, const WriteOptions& options, io::ByteSink& out, WriteInfo& info) {
   GltfWriteResult result;
   GltfDocument doc = gltf_document_from_mesh(mesh);
   doc.unlit_materials = options.gltf_unlit;
-  out = write_gltf(doc, options.binary && !gltf_name_is_text(options.name), options.name, result);
+  // glTF builds its document in memory (JSON and binary chunk in one string, gltf_write.cpp); the
+  // sink takes that string without copying it again (an append longer than its buffer skips it).
+  out.append(write_gltf(doc, options.binary && !gltf_name_is_text(options.name), options.name, result));
   info.split_vertices += result.split_vertices;
   for (auto& n : result.notes) info.notes.push_back(n);
 }
 
-void write_obj_entry(const Mesh& mesh, const WriteOptions&, std::string& out, WriteInfo& info) {
+void write_obj_entry(const Mesh& mesh, const WriteOptions&, io::ByteSink& out, WriteInfo& info) {
   io::write_obj(mesh, out, info);
 }
-void write_ply_entry(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info) {
+void write_ply_entry(const Mesh& mesh, const WriteOptions& options, io::ByteSink& out, WriteInfo& info) {
   io::write_ply(mesh, options.binary, out, info);
 }
-void write_off_entry(const Mesh& mesh, const WriteOptions&, std::string& out, WriteInfo& info) {
+void write_off_entry(const Mesh& mesh, const WriteOptions&, io::ByteSink& out, WriteInfo& info) {
   io::write_off(mesh, out, info);
 }
-void write_stl_entry(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info) {
+void write_stl_entry(const Mesh& mesh, const WriteOptions& options, io::ByteSink& out, WriteInfo& info) {
   io::write_stl(mesh, options.binary, out, info);
 }
 

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/io/byte_sink.h>
 #include <shadetool/io/mesh_io.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -59,7 +60,7 @@ struct FormatEntry {
   std::vector<const char*> extensions;  // lower case, no dot; the first is what writers name files
   bool (*detect)(std::string_view bytes);
   Mesh (*read)(std::string_view bytes, const std::string& name, ReadInfo& info);
-  void (*write)(const Mesh& mesh, const WriteOptions& options, std::string& out, WriteInfo& info);
+  void (*write)(const Mesh& mesh, const WriteOptions& options, io::ByteSink& out, WriteInfo& info);
   bool has_binary_form;                 // --ascii / --binary choose between two forms
   FormatAttributes holds;
 };

@@ -119,40 +119,54 @@ bool check_writable(const Mesh& mesh, const FormatEntry& format, const WriteOpti
 
 }  // namespace
 
-std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info) {
-  WriteInfo local;
-  WriteInfo& wi = info ? *info : local;
+io::ProduceBytes prepare_mesh_write(const Mesh& mesh, const WriteOptions& options, WriteInfo* info) {
   const std::string name = options.name.empty() ? std::string("<output>") : options.name;
   if (options.format == Format::Auto) fail(name, 0, "no output format given");
-  std::string out;
   const FormatEntry& format = format_entry(options.format);
-  if (check_writable(mesh, format, options, name)) {
-    // A float-typed binary file cannot hold the values: the wider type (PLY: double properties).
-    Mesh wide = mesh;
-    wide.precision = ValuePrecision::Double;
-    format.write(wide, options, out, wi);
-    wi.notes.push_back("values beyond the range of float: written as double");
-  } else {
-    format.write(mesh, options, out, wi);
-  }
-  if (mesh.has_groups() && format.holds.groups == Holds::No) {
-    std::size_t lines = 0;
-    for (const std::string& run : mesh.group_statements) lines += std::size_t(std::count(run.begin(), run.end(), '\n'));
-    wi.notes.push_back("materials and groups not written (" + std::to_string(lines) +
-                       " mtllib/usemtl/g/o/s lines): " + format_upper_name(format) + " holds none");
-  }
-  if (format.holds.quality == Holds::No && (mesh.has_vertex_quality() || mesh.has_face_quality()))
-    wi.notes.push_back("quality (per-vertex / per-face scalar) not written: only PLY holds it");
-  if (format.holds.properties == Holds::No && (!mesh.vertex_properties.empty() || !mesh.face_properties.empty())) {
-    std::string names;
-    for (const auto* list : {&mesh.vertex_properties, &mesh.face_properties})
-      for (const MeshProperty& p : *list) names += (names.empty() ? "" : ", ") + p.name;
-    wi.notes.push_back("vertex/face properties not written (" + names + "): only PLY holds them");
-  }
-  if (format.holds.comments == Holds::No && !mesh.comments.empty())
-    wi.notes.push_back(std::to_string(mesh.comments.size()) + " comment line" + (mesh.comments.size() == 1 ? "" : "s") +
-                       " not written (first: '" + mesh.comments[0].substr(0, 60) + "'): " + format_upper_name(format) +
-                       " holds none");
+  const bool widen = check_writable(mesh, format, options, name);
+  return [&mesh, &format, options, info, widen](io::ByteSink& out) {
+    WriteInfo local;
+    WriteInfo& wi = info ? *info : local;
+    if (widen) {
+      // A float-typed binary file cannot hold the values: the wider type (PLY: double properties).
+      Mesh wide = mesh;
+      wide.precision = ValuePrecision::Double;
+      format.write(wide, options, out, wi);
+      wi.notes.push_back("values beyond the range of float: written as double");
+    } else {
+      format.write(mesh, options, out, wi);
+    }
+    if (mesh.has_groups() && format.holds.groups == Holds::No) {
+      std::size_t lines = 0;
+      for (const std::string& run : mesh.group_statements) lines += std::size_t(std::count(run.begin(), run.end(), '\n'));
+      wi.notes.push_back("materials and groups not written (" + std::to_string(lines) +
+                         " mtllib/usemtl/g/o/s lines): " + format_upper_name(format) + " holds none");
+    }
+    if (format.holds.quality == Holds::No && (mesh.has_vertex_quality() || mesh.has_face_quality()))
+      wi.notes.push_back("quality (per-vertex / per-face scalar) not written: only PLY holds it");
+    if (format.holds.properties == Holds::No && (!mesh.vertex_properties.empty() || !mesh.face_properties.empty())) {
+      std::string names;
+      for (const auto* list : {&mesh.vertex_properties, &mesh.face_properties})
+        for (const MeshProperty& p : *list) names += (names.empty() ? "" : ", ") + p.name;
+      wi.notes.push_back("vertex/face properties not written (" + names + "): only PLY holds them");
+    }
+    if (format.holds.comments == Holds::No && !mesh.comments.empty())
+      wi.notes.push_back(std::to_string(mesh.comments.size()) + " comment line" + (mesh.comments.size() == 1 ? "" : "s") +
+                         " not written (first: '" + mesh.comments[0].substr(0, 60) + "'): " + format_upper_name(format) +
+                         " holds none");
+  };
+}
+
+void write_mesh_to_sink(const Mesh& mesh, const WriteOptions& options, io::ByteSink& sink, WriteInfo* info) {
+  prepare_mesh_write(mesh, options, info)(sink);
+}
+
+std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info) {
+  const io::ProduceBytes produce = prepare_mesh_write(mesh, options, info);
+  std::string out;
+  io::StringSink sink(out);
+  produce(sink);
+  sink.flush();
   return out;
 }
 
@@ -166,8 +180,7 @@ void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& o
   WriteOptions o = options;
   o.format = output_format(path, o.format);
   if (o.name.empty()) o.name = path;
-  const std::string bytes = write_mesh_to_memory(mesh, o, info);
-  io::write_file_atomically(path, bytes);
+  io::write_file_atomically(path, prepare_mesh_write(mesh, o, info));
 }
 
 }  // namespace shadetool

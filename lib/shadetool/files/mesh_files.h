@@ -8,6 +8,11 @@
 //   write_mesh           Mesh -> file, atomically: written to a temporary file in the target
 //                        directory and renamed into place; on any error no output file is left and
 //                        an existing file at `path` is untouched. "-" writes to stdout.
+//                        The bytes stream through a 1 MiB buffer (io/byte_sink.h): writing holds
+//                        that buffer, never the whole output (glTF excepted: its JSON and binary
+//                        chunk are built in memory, gltf/gltf_write.cpp).
+//   write_mesh_to_sink   Mesh -> any io::ByteSink (a file descriptor, a string); the sink's owner
+//                        flushes it. write_mesh_to_memory: to a string.
 // Errors throw shadetool::Error with `FILE:LINE: what is wrong` (see core/error.h).
 //
 // What no writer writes (Error `NAME: what`, nothing written): a NaN or infinite coordinate,
@@ -22,6 +27,7 @@
 #include <string_view>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/io/byte_sink.h>
 #include <shadetool/io/mesh_io.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -45,6 +51,13 @@ void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& o
                 WriteInfo* info = nullptr);
 // Writes to a string (tests, pipes). Same bytes write_mesh would put in a file.
 std::string write_mesh_to_memory(const Mesh& mesh, const WriteOptions& options, WriteInfo* info = nullptr);
+// Appends the bytes write_mesh would put in a file to `sink` (options.format must be set: not Auto).
+void write_mesh_to_sink(const Mesh& mesh, const WriteOptions& options, io::ByteSink& sink, WriteInfo* info = nullptr);
+// The same in two steps, for callers that create the output between them (write_mesh,
+// cli/driver.cpp): what no writer writes is refused now (Error, before any file exists); the
+// function returned appends the bytes. It refers to `mesh` and `*info`: keep them alive until it
+// has run.
+io::ProduceBytes prepare_mesh_write(const Mesh& mesh, const WriteOptions& options, WriteInfo* info = nullptr);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

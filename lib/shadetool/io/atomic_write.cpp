@@ -21,21 +21,6 @@ namespace shadetool::io {
 
 namespace {
 
-bool write_all(int fd, std::string_view bytes) {
-  const char* p = bytes.data();
-  std::size_t left = bytes.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    p += n;
-    left -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 // Read once (umask can only be read by setting it): calling umask(0); umask(m) from several writer
 // threads at once (-j N) could interleave and leave the process's umask at 0, so that later files
 // got mode 0666 whatever the user's umask. A function-local static is initialised exactly once.
@@ -127,7 +112,7 @@ namespace {
 // Writes `bytes` to a new temporary file next to `path` (same directory: rename(2) is atomic there)
 // with the mode the final file should get; returns its name. On any error nothing is left behind.
 // `reg` lists the temporary for the signal handler until the caller has renamed or removed it.
-std::string write_temporary(const std::string& path, std::string_view bytes, Registration& reg) {
+std::string write_temporary(const std::string& path, const FileToWrite& contents, Registration& reg) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) fail(path, 0, "cannot write: is a directory");
 
@@ -148,7 +133,20 @@ std::string write_temporary(const std::string& path, std::string_view bytes, Reg
     const char* e = std::getenv("SHADETOOL_FSYNC");
     return e != nullptr && std::string_view(e) == "1";
   }();
-  bool ok = ::fchmod(fd, mode) == 0 && write_all(fd, bytes) && (!want_fsync || ::fsync(fd) == 0);
+  bool ok = ::fchmod(fd, mode) == 0;
+  if (ok) {
+    try {
+      FdSink sink(fd, path);
+      if (contents.produce) contents.produce(sink);
+      else sink.append(contents.bytes);
+      sink.flush();
+    } catch (...) {  // a write error (FdSink's Error names `path`) or the producer's own
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      throw;
+    }
+    ok = !want_fsync || ::fsync(fd) == 0;
+  }
   int saved = errno;
   if (::close(fd) != 0 && ok) {
     ok = false;
@@ -161,22 +159,22 @@ std::string write_temporary(const std::string& path, std::string_view bytes, Reg
   return tmp;
 }
 
-void write_stdout(std::string_view bytes) {
+void write_stdout(const FileToWrite& contents) {
   std::fflush(stdout);
-  if (!write_all(STDOUT_FILENO, bytes)) fail("stdout", 0, std::string("cannot write: ") + std::strerror(errno));
+  FdSink sink(STDOUT_FILENO, "stdout");
+  if (contents.produce) contents.produce(sink);
+  else sink.append(contents.bytes);
+  sink.flush();
 }
 
 }  // namespace
 
 void write_file_atomically(const std::string& path, std::string_view bytes) {
-  if (path == "-") return write_stdout(bytes);
-  Registration reg(path + ".tmp-XXXXXX");
-  const std::string tmp = write_temporary(path, bytes, reg);
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int saved = errno;
-    ::unlink(tmp.c_str());
-    fail(path, 0, std::string("cannot write: ") + std::strerror(saved));
-  }
+  write_files_atomically({FileToWrite{path, bytes}});
+}
+
+void write_file_atomically(const std::string& path, const ProduceBytes& produce) {
+  write_files_atomically({FileToWrite{path, {}, produce}});
 }
 
 void write_files_atomically(const std::vector<FileToWrite>& files) {
@@ -189,7 +187,7 @@ void write_files_atomically(const std::vector<FileToWrite>& files) {
     for (const FileToWrite& f : files)
       if (f.path != "-") {
         registrations.push_back(std::make_unique<Registration>(f.path + ".tmp-XXXXXX"));
-        temporaries.push_back(write_temporary(f.path, f.bytes, *registrations.back()));
+        temporaries.push_back(write_temporary(f.path, f, *registrations.back()));
       }
   } catch (...) {
     remove_temporaries(0);
@@ -206,7 +204,7 @@ void write_files_atomically(const std::vector<FileToWrite>& files) {
     ++t;
   }
   for (const FileToWrite& f : files)
-    if (f.path == "-") write_stdout(f.bytes);
+    if (f.path == "-") write_stdout(f);
 }
 
 }  // namespace shadetool::io

@@ -353,7 +353,7 @@ Mesh read_obj(std::string_view file_bytes, const std::string& name, ReadInfo& in
   return std::move(s.mesh);
 }
 
-void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
+void write_obj(const Mesh& input, ByteSink& out, WriteInfo& info) {
   // Face colours: OBJ holds colours per vertex only, so vertices are split until every corner's
   // vertex carries its face's colour (split_face_colors.h). Faces and corners keep their order, so
   // corner c of `mesh` is corner c of `input`: normals and texcoords stay indexed per corner.
@@ -372,7 +372,6 @@ void write_obj(const Mesh& input, std::string& out, WriteInfo& info) {
   }
   info.split_vertices = added;
   const Mesh& mesh = must_split ? split : input;
-  out.reserve(out.size() + mesh.num_vertices() * 40 + mesh.num_corners() * 10);
   out += "# written by shadetool\n";
   for (const std::string& c : mesh.comments)  // another format's comment lines (PLY header comments) as `#` lines
     if (c != "comment written by shadetool" && c.find('\n') == std::string::npos && c.find('\r') == std::string::npos)

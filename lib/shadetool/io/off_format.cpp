@@ -280,7 +280,7 @@ Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& in
   return mesh;
 }
 
-void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
+void write_off(const Mesh& input, ByteSink& out, WriteInfo& info) {
   Mesh split;
   const Mesh& mesh = with_corner_normals_split(input, split, info.split_vertices);
 
@@ -296,14 +296,14 @@ void write_off(const Mesh& input, std::string& out, WriteInfo& info) {
   auto color = [&](float c) {
     out += ' ';
     if (mesh.colors_are_float) {
-      const std::size_t at = out.size();
-      append_shortest_float(out, c);
-      if (out.find_first_of(".eEn", at) == std::string::npos) out += ".0";  // n: nan, inf
+      std::string text;
+      append_shortest_float(text, c);
+      out += text;
+      if (text.find_first_of(".eEn") == std::string::npos) out += ".0";  // n: nan, inf
     } else {
       append_uint(out, color_to_uchar(c));
     }
   };
-  out.reserve(out.size() + mesh.num_vertices() * 36 * (normals ? 2 : 1) + mesh.num_corners() * 8);
   out += vcolors ? "C" : "";
   out += normals ? "N" : "";
   out += "OFF\n";

@@ -25,13 +25,14 @@
 #include <string_view>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/io/byte_sink.h>
 #include <shadetool/io/mesh_io.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 Mesh read_off(std::string_view bytes, const std::string& name, ReadInfo& info);
-void write_off(const Mesh& mesh, std::string& out, WriteInfo& info);
+void write_off(const Mesh& mesh, ByteSink& out, WriteInfo& info);
 
 }  // namespace shadetool::io
 #pragma GCC visibility pop

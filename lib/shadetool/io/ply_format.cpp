@@ -32,7 +32,7 @@ Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
 namespace {
 
 template <class T>
-void put(std::string& out, T v) {
+void put(ByteSink& out, T v) {
   char b[sizeof(T)];
   std::memcpy(b, &v, sizeof v);
   if (!ply::host_is_little()) std::reverse(b, b + sizeof(T));
@@ -73,7 +73,7 @@ std::vector<ExtraOut> extras_to_write(const std::vector<MeshProperty>& props, st
 
 // One value of an extra property in its declared type: integers as integers (the values were read
 // from that type, so they are in range; anything else is rounded and clamped to it).
-void put_extra(std::string& out, double v, ply::Type t, bool binary) {
+void put_extra(ByteSink& out, double v, ply::Type t, bool binary) {
   auto integer = [&](double lo, double hi) { return std::isfinite(v) ? std::fmin(hi, std::fmax(lo, std::nearbyint(v))) : 0.0; };
   if (!binary) out += ' ';
   switch (t) {
@@ -193,18 +193,7 @@ PlyPlan plan_ply(const Mesh& mesh, bool binary, WriteInfo& info) {
 }
 
 // Step 2: the header.
-void write_ply_header(const Mesh& mesh, const PlyPlan& p, std::string& out) {
-  // Every byte counted, so the string never doubles and copies (a doubling held old and new
-  // blocks at once: the peak of `occlusion` on 1M triangles, bench/visibility/results.md).
-  std::size_t vextra_bytes = 0, fextra_bytes = 0;
-  for (const ExtraOut& e : p.vextras) vextra_bytes += ply::type_size(e.type);
-  for (const ExtraOut& e : p.fextras) fextra_bytes += ply::type_size(e.type);
-  const std::size_t real_bytes = p.dbl ? 8 : 4, color_bytes = std::size_t(p.ch) * (p.cfloat ? 4 : 1);
-  out.reserve(out.size() + 300 + 40 * (p.vextras.size() + p.fextras.size()) +
-              p.nv * (real_bytes * ((p.vnormals ? 6 : 3) + (p.vtex ? 2 : 0)) + (p.vcolors ? color_bytes : 0) +
-                      (p.vquality ? 4 : 0) + vextra_bytes) +
-              mesh.num_corners() * 4 +
-              p.nf * (1 + (p.fnormals ? 3 * real_bytes : 0) + (p.fcolors ? color_bytes : 0) + (p.fquality ? 4 : 0) + fextra_bytes));
+void write_ply_header(const Mesh& mesh, const PlyPlan& p, ByteSink& out) {
   const std::string real = p.real;
   out += "ply\nformat ";
   out += p.binary ? "binary_little_endian" : "ascii";
@@ -243,7 +232,7 @@ void write_ply_header(const Mesh& mesh, const PlyPlan& p, std::string& out) {
 // One value at a time, in the plan's encoding and types.
 struct PlyValues {
   const PlyPlan& p;
-  std::string& out;
+  ByteSink& out;
 
   void real(double v, bool first) {
     if (p.binary) {
@@ -346,7 +335,7 @@ void write_ply_faces(const Mesh& mesh, const PlyPlan& p, PlyValues& w) {
 
 }  // namespace
 
-void write_ply(const Mesh& input, bool binary, std::string& out, WriteInfo& info) {
+void write_ply(const Mesh& input, bool binary, ByteSink& out, WriteInfo& info) {
   Mesh split;
   const Mesh& mesh = with_corner_normals_split(input, split, info.split_vertices);
   const PlyPlan plan = plan_ply(mesh, binary, info);

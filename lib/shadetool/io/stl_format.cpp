@@ -299,7 +299,7 @@ Mesh read_stl(std::string_view file_bytes, const std::string& name, ReadInfo& in
 
 namespace {
 
-void put_float(std::string& out, float f) {
+void put_float(ByteSink& out, float f) {
   std::uint32_t u;
   std::memcpy(&u, &f, sizeof u);
   const char b[4] = {char(u & 0xff), char((u >> 8) & 0xff), char((u >> 16) & 0xff), char((u >> 24) & 0xff)};
@@ -308,7 +308,7 @@ void put_float(std::string& out, float f) {
 
 }  // namespace
 
-void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info) {
+void write_stl(const Mesh& mesh, bool binary, ByteSink& out, WriteInfo& info) {
   info.split_vertices = 0;
   std::size_t triangles = 0, polygons = 0;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
@@ -325,7 +325,6 @@ void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info)
   const bool face_normals = mesh.has_face_normals();
   std::size_t no_area = 0, replaced = 0;
   if (binary) {
-    out.reserve(out.size() + 84 + 50 * triangles);
     std::string header = "binary STL written by shadetool";
     header.resize(80, ' ');
     out += header;

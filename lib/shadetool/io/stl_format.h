@@ -20,13 +20,14 @@
 #include <string_view>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/io/byte_sink.h>
 #include <shadetool/io/mesh_io.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
 Mesh read_stl(std::string_view bytes, const std::string& name, ReadInfo& info);
-void write_stl(const Mesh& mesh, bool binary, std::string& out, WriteInfo& info);
+void write_stl(const Mesh& mesh, bool binary, ByteSink& out, WriteInfo& info);
 
 }  // namespace shadetool::io
 #pragma GCC visibility pop

@@ -31,29 +31,34 @@ inline bool is_exact_float(double x) {
   return static_cast<double>(static_cast<float>(x)) == x;
 }
 
-inline void append_shortest(std::string& out, double v) {
+// Out: std::string or io::ByteSink (byte_sink.h).
+template <class Out>
+inline void append_shortest(Out& out, double v) {
   char buf[40];
   const auto r = is_exact_float(v) ? std::to_chars(buf, buf + sizeof buf, static_cast<float>(v))
                                    : std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
+  out.append(buf, std::size_t(r.ptr - buf));
 }
 
-inline void append_shortest_float(std::string& out, float v) {
+template <class Out>
+inline void append_shortest_float(Out& out, float v) {
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
+  out.append(buf, std::size_t(r.ptr - buf));
 }
 
-inline void append_uint(std::string& out, std::uint64_t v) {
+template <class Out>
+inline void append_uint(Out& out, std::uint64_t v) {
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
+  out.append(buf, std::size_t(r.ptr - buf));
 }
 
-inline void append_int(std::string& out, std::int64_t v) {
+template <class Out>
+inline void append_int(Out& out, std::int64_t v) {
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
+  out.append(buf, std::size_t(r.ptr - buf));
 }
 
 // A colour channel stored as float in [0,1] to the uchar a PLY/OFF file holds: round(c * 255),
