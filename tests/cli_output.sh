@@ -192,6 +192,26 @@ check "... an existing output untouched" grep -qx "# the existing output" "$tmp/
 check "... no temporary left" test "$(ls "$tmp/limit")" = "kept.obj"
 ( trap '' XFSZ; ulimit -f 256; exec "$bin" normals --recompute "$tmp/sig/big.obj" --format ply ) > "$tmp/limit/stdout.ply" 2> "$tmp/limit.err"
 check "stdout a file past the size limit: exit 1, one line naming stdout" bash -c '[ $0 -eq 1 ] && [ "$(wc -l < "$1")" -eq 1 ] && grep -q "stdout: cannot write: File too large" "$1"' $? "$tmp/limit.err"
+# A real full disk: a 1 MiB tmpfs in a private mount namespace (unshare -rm: no root needed where
+# user namespaces are allowed). torus_knot's normals as OBJ are ~0.8 MB: the first fits, a second
+# beside it does not (ENOSPC midway through the stream).
+mkdir "$tmp/disk"
+if unshare -rm sh -c 'mount -t tmpfs -o size=1m tmpfs "$1"' _ "$tmp/disk" 2>/dev/null; then
+  unshare -rm sh -c '
+    mount -t tmpfs -o size=1m tmpfs "$2" || exit 9
+    echo "# the existing output" > "$2/kept.obj"
+    "$1" normals "$3/data/torus_knot.ply" -o "$2/first.obj" || exit 8
+    "$1" normals "$3/data/torus_knot.ply" -o "$2/kept.obj" 2> "$2/../disk.err"
+    echo "exit $?" > "$2/../disk.code"
+    ls -A "$2" > "$2/../disk.ls"
+    cat "$2/kept.obj" > "$2/../disk.kept"' _ "$bin" "$tmp/disk" "$src"
+  check "full disk: exit 1" grep -qx "exit 1" "$tmp/disk.code"
+  check "... one line naming the file" bash -c '[ "$(wc -l < "$1")" -eq 1 ] && grep -q "kept.obj: cannot write: No space left on device" "$1"' _ "$tmp/disk.err"
+  check "... the existing output untouched" grep -qx "# the existing output" "$tmp/disk.kept"
+  check "... no temporary left" bash -c '[ "$(tr "\n" " " < "$1")" = "first.obj kept.obj " ]' _ "$tmp/disk.ls"
+else
+  skip "full disk: no tmpfs in a user namespace here (unshare -rm)"
+fi
 
 echo "cli_output: $pass passed, $fail failed, $skipped skipped"
 test "$fail" -eq 0

@@ -45,9 +45,11 @@ TwoSidedFaces two_sided_faces(const Mesh& mesh) {
   }
   for (std::size_t v = 0; v < V; ++v) start[v + 2] += start[v + 1];
   // After placing, bucket v is [start[v], start[v + 1]) (each placement advances start[v + 1]).
-  struct Entry { std::uint64_t key; std::uint32_t face; };
+  // Keys and faces in two arrays (12 bytes a face, not a padded 16-byte struct): this is the
+  // peak of `normals` on a large mesh (bench/io/results.md, "Writing streams").
   constexpr std::uint64_t kNever = ~std::uint64_t(0) - 1;  // matches nothing
-  std::vector<Entry> bucket(start[V + 1]);
+  std::vector<std::uint64_t> bucket_key(start[V + 1]);
+  std::vector<std::uint32_t> bucket_face(start[V + 1]);
   for (std::size_t f = 0; f < F; ++f) {
     const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
     if (e - b < 3) continue;
@@ -58,29 +60,38 @@ TwoSidedFaces two_sided_faces(const Mesh& mesh) {
       const std::uint32_t n = mesh.corner_vertex[at + 1 < e ? at + 1 : b], p = mesh.corner_vertex[at > b ? at - 1 : e - 1];
       key = n == p || n == m || p == m ? kNever : std::uint64_t(n) << 32 | p;  // a repeated index: no winding
     }
-    bucket[start[m + 1]++] = {key, std::uint32_t(f)};  // ascending face order within a bucket
+    const std::uint32_t slot = start[m + 1]++;  // ascending face order within a bucket
+    bucket_key[slot] = key;
+    bucket_face[slot] = std::uint32_t(f);
   }
   std::vector<std::uint8_t> paired;  // faces already a front or a back; sized on the first pair
   for (std::size_t v = 0; v < V; ++v)
     for (std::uint32_t i = start[v] + 1; i < start[v + 1]; ++i) {
-      const Entry& g = bucket[i];
-      if (g.key == kNever) continue;
-      const std::uint64_t want = g.key == ~std::uint64_t(0) ? g.key : (g.key << 32 | g.key >> 32);
+      const std::uint64_t g_key = bucket_key[i];
+      const std::uint32_t g_face = bucket_face[i];
+      if (g_key == kNever) continue;
+      const std::uint64_t want = g_key == ~std::uint64_t(0) ? g_key : (g_key << 32 | g_key >> 32);
       for (std::uint32_t j = start[v]; j < i; ++j) {
-        const Entry& f = bucket[j];
-        if (f.key != want || (!paired.empty() && paired[f.face])) continue;
-        if (want == ~std::uint64_t(0) && !reverse_of(mesh, f.face, g.face)) continue;
+        const std::uint32_t f_face = bucket_face[j];
+        if (bucket_key[j] != want || (!paired.empty() && paired[f_face])) continue;
+        if (want == ~std::uint64_t(0) && !reverse_of(mesh, f_face, g_face)) continue;
         if (paired.empty()) {
           paired.assign(F, 0);
           out.front_of.assign(F, TwoSidedFaces::kNotBack);
         }
-        out.front_of[g.face] = f.face;
-        paired[f.face] = paired[g.face] = 1;
+        out.front_of[g_face] = f_face;
+        paired[f_face] = paired[g_face] = 1;
         ++out.backs;
         break;
       }
     }
-  if (out.front_of.empty()) out.front_of.assign(F, TwoSidedFaces::kNotBack);
+  if (out.front_of.empty()) {
+    // The buckets go before front_of comes: not both at once (the peak, as above).
+    std::vector<std::uint64_t>().swap(bucket_key);
+    std::vector<std::uint32_t>().swap(bucket_face);
+    std::vector<std::uint32_t>().swap(start);
+    out.front_of.assign(F, TwoSidedFaces::kNotBack);
+  }
   return out;
 }
 
