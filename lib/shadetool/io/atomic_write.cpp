@@ -109,8 +109,9 @@ void remove_temporaries_on_signals() {
 
 namespace {
 
-// Writes `bytes` to a new temporary file next to `path` (same directory: rename(2) is atomic there)
-// with the mode the final file should get; returns its name. On any error nothing is left behind.
+// Writes `contents` (its bytes, or what its producer appends, through a 1 MiB FdSink) to a new
+// temporary file next to `path` (same directory: rename(2) is atomic there) with the mode the
+// final file should get; returns its name. On any error nothing is left behind.
 // `reg` lists the temporary for the signal handler until the caller has renamed or removed it.
 std::string write_temporary(const std::string& path, const FileToWrite& contents, Registration& reg) {
   struct stat st {};
