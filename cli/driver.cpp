@@ -393,9 +393,22 @@ std::unique_ptr<shadetool::GltfDocument> read_gltf_input(const IoOptions& io, co
   }
   for (const std::string& n : doc->notes) result.notes.push_back(n);  // compressed geometry decoded
   if (doc->primitives.empty()) {
-    if (!output_is_gltf(io, kind, output))
+    // A report (info) describes what there is, as it does for a PLY point cloud; a step that would
+    // write another format has no mesh to write.
+    if (kind == OutputKind::Report) {
+      result.text += fmt::format("{}: glTF, no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive\n"
+                                 "  POINTS/LINES           {} primitives, {} vertices\n  faces                  0\n",
+                                 input, doc->passed_through_primitives, doc->passed_through_vertices);
+      result.stats["format"] = "glTF";
+      result.stats["triangle_primitives"] = 0;
+      result.stats["points_lines_primitives"] = doc->passed_through_primitives;
+      result.stats["points_lines_vertices"] = doc->passed_through_vertices;
+      result.stats["faces"] = 0;
+    } else if (!output_is_gltf(io, kind, output)) {
       shadetool::fail(input, 0, "no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to read as a mesh");
-    result.notes.push_back("no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to compute, the document written unchanged");
+    } else {
+      result.notes.push_back("no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive: nothing to compute, the document written unchanged");
+    }
   }
   return doc;
 }

@@ -241,6 +241,16 @@ for f in points_lines no_nodes; do
   "$bin" normals "$fx/$f.gltf" -o "$tmp/nothing.ply" 2> /dev/null
   check "$f: to PLY refused (exit 1), nothing written" test $? -eq 1 -a ! -e "$tmp/nothing.ply"
 done
+# info describes such a file, as it does a PLY point cloud (it exited 1 before): the POINTS/LINES
+# primitives and their POSITION counts, counted independently from the JSON here.
+"$bin" info --json "$fx/points_lines.gltf" > "$tmp/info.json" 2> /dev/null
+check "points_lines: info exit 0" test $? -eq 0
+check "points_lines: info counts the POINTS/LINES primitives and their vertices" "$py" -c '
+import json,sys
+info=json.loads(open(sys.argv[1]).read())["stats"]; d=json.load(open(sys.argv[2]))
+prims=[p for m in d["meshes"] for p in m["primitives"] if p.get("mode",4) in (0,1,2,3)]
+assert info["faces"]==0 and info["points_lines_primitives"]==len(prims)>0, info
+assert info["points_lines_vertices"]==sum(d["accessors"][p["attributes"]["POSITION"]]["count"] for p in prims), info' "$tmp/info.json" "$fx/points_lines.gltf"
 
 # Exact bounds (issue 27, 16): a split that drops an unused vertex, and an input whose NORMAL
 # min/max do not hold; every output's accessors have exact min/max (the validator computes them).

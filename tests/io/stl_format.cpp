@@ -4,6 +4,8 @@
 #include <cstring>
 #include <limits>
 
+#include <shadetool/geometry/degenerate_face.h>
+
 #include "io_test_util.h"
 
 using namespace shadetool;
@@ -165,4 +167,39 @@ TEST_CASE("STL: a facet with no area written with +z reads back without a note (
     for (const std::string& n : ri.notes) CHECK(n.find("against the winding") == std::string::npos);
     for (const std::string& n : ri.notes) CHECK(n.find("facet normals replaced") == std::string::npos);
   }
+}
+
+TEST_CASE("STL: a facet degenerate by the library's rule keeps its authored normal (no noise direction)", "[stl][degenerate]") {
+  // The third corner is 1e-15 off the line of the other two: sin(angle) ~ 1e-15 < 64 eps, so info,
+  // repair and normals call the facet degenerate (geometry/degenerate_face.h), and its cross
+  // product's direction (here +z) is rounding, not a winding. The authored normal (-z) must not be
+  // replaced as "against the winding" (it was, before the reader used the rule).
+  const std::vector<std::array<float, 12>> facets = {
+      {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0},       // a proper triangle, normal +z as authored
+      {0, 0, -1, 0, 0, 0, 1, 0, 0, 2, 1e-15f, 0},  // collinear to double precision
+  };
+  Mesh m;
+  REQUIRE(face_degenerate_kind([&] {
+            Mesh t;
+            t.add_vertex({0, 0, 0});
+            t.add_vertex({1, 0, 0});
+            t.add_vertex({2, double(1e-15f), 0});
+            t.add_face({0, 1, 2});
+            return t;
+          }(), 0) == DegenerateKind::ZeroArea);
+  ReadInfo ri;
+  m = read_text(binary_stl(facets, 2), Format::Stl, &ri);
+  REQUIRE(m.num_faces() == 2);
+  CHECK(get3(m.face_normals, 1) == Vec3d{0, 0, -1});
+  for (const std::string& n : ri.notes) CHECK(n.find("against the winding") == std::string::npos);
+  // Written without face normals, the degenerate facet gets +z and the writer's note, as one of
+  // exactly zero area does, not the direction of its rounding noise.
+  Mesh plain = m;
+  plain.face_normals.clear();
+  WriteOptions o;
+  o.format = Format::Stl;
+  o.binary = false;
+  WriteInfo wi;
+  const std::string text = write_mesh_to_memory(plain, o, &wi);
+  CHECK(wi.notes.size() == 1);
 }

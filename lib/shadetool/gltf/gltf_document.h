@@ -77,6 +77,7 @@ struct GltfDocument {
   std::shared_ptr<const GltfSource> source;  // null for a document made from a plain Mesh
   std::vector<GltfPrimitive> primitives;     // triangle primitives, in file order
   std::size_t passed_through_primitives = 0; // POINTS / LINES primitives left as they are
+  std::size_t passed_through_vertices = 0;   // their POSITION accessors' counts (what info reports)
   bool was_binary = false;                   // read from a .glb
   std::vector<std::string> notes;            // what reading changed (compressed geometry decoded)
   // Written with KHR_materials_unlit (baked colours, gltf/gltf_baked.h): a fresh document gets one

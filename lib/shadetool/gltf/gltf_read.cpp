@@ -274,6 +274,10 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
       if (!(mode < 0 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
             mode == TINYGLTF_MODE_TRIANGLE_FAN)) {
         ++doc.passed_through_primitives;
+        const auto& attrs = model.meshes[m].primitives[p].attributes;
+        const auto pos = attrs.find("POSITION");
+        if (pos != attrs.end() && pos->second >= 0 && static_cast<std::size_t>(pos->second) < model.accessors.size())
+          doc.passed_through_vertices += model.accessors[static_cast<std::size_t>(pos->second)].count;
         continue;
       }
       GltfPrimitive gp;

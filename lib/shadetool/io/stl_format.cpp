@@ -10,6 +10,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
+#include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/io/engine/newell_normal.h>
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/engine/text_encoding.h>
@@ -103,10 +104,14 @@ std::uint32_t load_le_u32(const char* p) {
          std::uint32_t(std::uint8_t(p[2])) << 16 | std::uint32_t(std::uint8_t(p[3])) << 24;
 }
 
-// Unit normal of a triangle (right-handed winding), or (0,0,0) when its area is zero or not
-// finite. The cross product is scaled by its largest component before the length is taken, so
-// its square neither overflows nor underflows (divisors checked).
-Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+// Unit normal of the triangle (v0, v1, v2) (right-handed winding), or (0,0,0) when it is
+// degenerate by the library's one rule (geometry/degenerate_face.h: a repeated index, a
+// non-finite corner, or an area vector below 64 eps of its bound: a direction made of rounding
+// noise is no normal). The cross product is scaled by its largest component before the length is
+// taken, so its square neither overflows nor underflows (divisors checked).
+Vec3d triangle_normal(const Mesh& mesh, std::uint32_t v0, std::uint32_t v1, std::uint32_t v2) {
+  if (triangle_degenerate_kind(mesh.positions.data(), v0, v1, v2) != DegenerateKind::None) return {0, 0, 0};
+  const Vec3d a = mesh.position(v0), b = mesh.position(v1), c = mesh.position(v2);
   Vec3d n = cross(b - a, c - a);
   const double m = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
   if (!(m > 0) || !std::isfinite(m)) return {0, 0, 0};
@@ -127,8 +132,7 @@ void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merg
     std::size_t zero = 0, against = 0, no_area = 0;
     for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
       const std::uint32_t c = mesh.face_start[f];
-      const Vec3d g = triangle_normal(mesh.position(mesh.corner_vertex[c]), mesh.position(mesh.corner_vertex[c + 1]),
-                                      mesh.position(mesh.corner_vertex[c + 2]));
+      const Vec3d g = triangle_normal(mesh, mesh.corner_vertex[c], mesh.corner_vertex[c + 1], mesh.corner_vertex[c + 2]);
       const Vec3d n = get3(normals, f);
       const bool is_zero = n.x == 0 && n.y == 0 && n.z == 0;
       const bool arealess = g.x == 0 && g.y == 0 && g.z == 0;
@@ -340,10 +344,11 @@ void write_stl(const Mesh& mesh, bool binary, ByteSink& out, WriteInfo& info) {
     for (std::uint32_t c = s + 1; c + 1 < e; ++c) {
       const Vec3d p1 = mesh.position(mesh.corner_vertex[c]);
       const Vec3d p2 = mesh.position(mesh.corner_vertex[c + 1]);
-      Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(p0, p1, p2);
+      const std::uint32_t v0 = mesh.corner_vertex[s], v1 = mesh.corner_vertex[c], v2 = mesh.corner_vertex[c + 1];
+      Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(mesh, v0, v1, v2);
       const bool usable = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(n.x == 0 && n.y == 0 && n.z == 0);
       if (face_normals && !usable) {  // a zero or NaN face normal: the triangle's own instead
-        n = triangle_normal(p0, p1, p2);
+        n = triangle_normal(mesh, v0, v1, v2);
         ++replaced;
       }
       if (n.x == 0 && n.y == 0 && n.z == 0) n = newell_normal(mesh, f);  // a fan triangle: its polygon's
