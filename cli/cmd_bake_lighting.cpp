@@ -255,6 +255,7 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       check_bakeable(mesh, input, set.frequency, r);
       shadetool::ShadowOptions cast = set.shadows;
       if (set.shadows.enabled && own_scene) cast.occluders = document_occluders(r);
+      cast.progress = r.progress;
       if (set.frequency == shadetool::ShadingFrequency::PerVertex && shadetool::io::corner_normals_disagree(mesh)) {
         // Corner normals that differ at a vertex (creases, OBJ vn): one vertex per (vertex, normal)
         // pair, each lit with its own normal, as the same normals read from a PLY file are.

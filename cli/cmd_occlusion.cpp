@@ -135,8 +135,10 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
     io.result_name = std::string(colors && quality ? "grey colours and quality" : colors ? "grey colours" : "quality") + " per " + opt.per;
     return run_command(
         "occlusion", io,
-        [options, per_face, colors, quality, unlit = opt.unlit, linear = opt.linear, srgb = opt.srgb, fit, to_error, least_squares, error_options](
+        [base_options = options, per_face, colors, quality, unlit = opt.unlit, linear = opt.linear, srgb = opt.srgb, fit, to_error, least_squares, error_options](
             shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+          shadetool::AmbientOcclusionOptions options = base_options;
+          options.progress = r.progress;
           shadetool::require_faces(mesh, input);
           shadetool::require_finite_positions(mesh, input);
           // Normals pass through to the output: one without a direction is replaced, with a counted note.

@@ -145,7 +145,9 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
       shadetool::require_faces(mesh, input);
       shadetool::require_finite_positions(mesh, input);
       shadetool::require_finite_normals(mesh, input, "run `shadetool repair` or `shadetool normals --recompute` first");
-      const shadetool::RenderResult result = shadetool::render_mesh(mesh, scene, ro, input);
+      shadetool::RenderOptions with_progress = ro;
+      with_progress.progress = r.progress;
+      const shadetool::RenderResult result = shadetool::render_mesh(mesh, scene, with_progress, input);
       std::size_t nonfinite = 0;
       for (float c : result.image.rgb) nonfinite += !std::isfinite(c);
       if (nonfinite > 0)

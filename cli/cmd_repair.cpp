@@ -140,6 +140,7 @@ RegisterCommand reg("repair", HelpSection::Edit, [](CLI::App& app) -> std::funct
           o.weighting = shadetool::parse_weighting(opt.weight, "--weight");
           o.remove_degenerate = opt.remove_degenerate;
           o.weld_eps = opt.weld;
+          o.progress = r.progress;
           const RepairReport rep = shadetool::repair_mesh(mesh, o);
           // Faces removed as degenerate may leave vertices unused: removed too.
           if (opt.remove_unreferenced) unreferenced += shadetool::remove_unreferenced_vertices(mesh);

@@ -5,6 +5,8 @@
 #include <cctype>
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
@@ -20,6 +22,8 @@
 #include <fmt/core.h>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/progress.h>
+#include <shadetool/core/time_left.h>
 #include <shadetool/core/validate.h>
 #include <shadetool/io/atomic_write.h>
 #include <shadetool/io/file_bytes.h>
@@ -278,40 +282,109 @@ void refuse_overlapping_paths(const IoOptions& io, OutputKind kind) {
     }
 }
 
-// A one-line progress display on stderr, only when stderr is a terminal and the work is long
-// (several files, or one file over 32 MiB); pipelines and logs get nothing extra.
+// A one-line progress display on stderr, only when stderr is a terminal and neither --quiet nor
+// --json is given; pipelines and logs get nothing extra. One file: its stage ("reading...") and,
+// for a stage that reports a fraction (core/progress.h), `occlusion 43% (about 7 s left)` (the
+// time left by core/time_left.h's rule), drawn by a thread of its own once the file has taken
+// kFirstDraw and redrawn at most every kRedraw, so a quick run prints nothing. Several files:
+// `[k/n] files done`, as each ends.
 class Progress {
  public:
-  Progress(const IoOptions& io, std::size_t files) : files_(files) {
-    if (io.quiet || io.json || !isatty(STDERR_FILENO)) return;
-    std::error_code ec;
-    const bool big = files == 1 && io.inputs[0] != "-" && fs::file_size(io.inputs[0], ec) > (32u << 20) && !ec;
-    enabled_ = files > 1 || big;
+  static constexpr std::chrono::milliseconds kFirstDraw{500}, kRedraw{100};
+
+  Progress(const IoOptions& io, std::size_t files, std::mutex& out_mutex) : files_(files), out_mutex_(out_mutex) {
+    enabled_ = !io.quiet && !io.json && isatty(STDERR_FILENO);
+    if (enabled_ && files_ == 1) thread_ = std::thread([this] { draw_loop(); });
+  }
+  ~Progress() { stop(); }
+  // Where the one file's stages report (null with several files or no display).
+  shadetool::ProgressSink* sink() { return enabled_ && files_ == 1 ? &meter_ : nullptr; }
+  // The driver's own stages (reading, computing, writing): a name, no fraction until a kernel
+  // begins a stage of its own.
+  void stage(const std::string& input, const char* what) {
+    if (!sink()) return;
+    {
+      std::lock_guard<std::mutex> lock(state_mutex_);
+      input_ = input;
+    }
+    meter_.begin(what, 0);
+  }
+  // Ends the drawing thread; call it without the output mutex held (the thread takes it to draw).
+  void stop() {
+    if (!thread_.joinable()) return;
+    {
+      std::lock_guard<std::mutex> lock(state_mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
   }
   // Called with the output mutex held.
-  void stage(const std::string& input, const char* what) {
-    if (enabled_ && files_ == 1) fmt::print(stderr, "\r\033[Kshadetool: {}: {}...", input, what);
-  }
   void file_done(bool ok) {
     ++done_;
     failed_ += ok ? 0 : 1;
     if (enabled_ && files_ > 1) fmt::print(stderr, "\r\033[Kshadetool: [{}/{}] files done, {} failed", done_, files_, failed_);
   }
+  // Called with the output mutex held.
   void clear() {
-    if (enabled_) fmt::print(stderr, "\r\033[K");
+    if (enabled_ && (files_ > 1 || drawn_)) fmt::print(stderr, "\r\033[K");
+    drawn_ = false;
   }
-  bool enabled() const { return enabled_; }
 
  private:
+  // "shadetool: FILE: occlusion 43% (about 7 s left)", or "shadetool: FILE: reading...".
+  std::string line(const shadetool::ProgressMeter::Snapshot& s, const std::string& input) {
+    std::string text = fmt::format("shadetool: {}: {}", printable(input), s.stage ? s.stage : "starting");
+    if (!s.has_fraction()) return text + "...";
+    const double f = s.fraction();
+    // Whole percents, rounded down: 100% only when the stage is done.
+    text += fmt::format(" {}%", unsigned(f * 100));
+    if (const auto left = time_left_.update(s.generation, s.elapsed, f); left && f < 1)
+      text += *left < 90 ? fmt::format(" (about {:.0f} s left)", std::ceil(*left))
+                         : fmt::format(" (about {:.0f} min left)", std::ceil(*left / 60));
+    return text;
+  }
+
+  void draw_loop() {
+    const auto start = std::chrono::steady_clock::now();
+    std::string last;
+    std::unique_lock<std::mutex> lock(state_mutex_);
+    while (!wake_.wait_for(lock, kRedraw, [this] { return stopping_; })) {
+      if (std::chrono::steady_clock::now() - start < kFirstDraw) continue;
+      const std::string input = input_;
+      lock.unlock();
+      const std::string text = line(meter_.snapshot(), input);
+      if (text != last) {
+        std::lock_guard<std::mutex> out(out_mutex_);
+        fmt::print(stderr, "\r\033[K{}", text);
+        std::fflush(stderr);
+        drawn_ = true;
+        last = text;
+      }
+      lock.lock();
+    }
+  }
+
   std::size_t files_, done_ = 0, failed_ = 0;
   bool enabled_ = false;
+  std::mutex& out_mutex_;
+  bool drawn_ = false;  // a line is on the terminal (guarded by out_mutex_)
+  shadetool::ProgressMeter meter_;
+  shadetool::TimeLeft time_left_;  // the drawing thread's only
+  std::mutex state_mutex_;         // input_, stopping_
+  std::condition_variable wake_;
+  std::string input_;
+  bool stopping_ = false;
+  std::thread thread_;
 };
 
 
 // Reads one input: a file, or stdin ("-") in the format --input-format names.
-shadetool::Mesh read_input(const IoOptions& io, const std::string& input, shadetool::ReadInfo& read_info) {
+shadetool::Mesh read_input(const IoOptions& io, const std::string& input, shadetool::ReadInfo& read_info,
+                           shadetool::ProgressSink* progress) {
   const Format in_format =
       io.input_format.empty() ? Format::Auto : shadetool::parse_format_name(io.input_format, "--input-format");
+  read_info.progress = shadetool::ProgressCursor(progress);
   return input == "-" ? shadetool::read_mesh_from_memory(read_stdin(), in_format, "stdin", &read_info)
                       : shadetool::read_mesh(input, in_format, &read_info);
 }
@@ -557,18 +630,16 @@ int run_command(const std::string& command, const IoOptions& given_io, const Mes
   std::atomic<int> failures{0};
   std::atomic<int> usage_failures{0};  // a step's UsageError: the flags do not suit that file
   std::vector<std::string> failed;
-  Progress progress(io, io.inputs.size());
-  auto show_stage = [&](const std::string& input, const char* what) {
-    if (!progress.enabled()) return;
-    std::lock_guard<std::mutex> lock(out_mutex);
-    progress.stage(input, what);
-  };
+  Progress progress(io, io.inputs.size(), out_mutex);
+  auto show_stage = [&](const std::string& input, const char* what) { progress.stage(input, what); };
 
+  const std::size_t n_inputs = io.inputs.size();
   auto process = [&](const std::string& input) {
     nlohmann::json line = {{"command", command}, {"input", input}};
     const std::string output = output_path_for(io, input, kind);
     if (writes_file) line["output"] = output;
     FileResult result;
+    result.progress = progress.sink();
     try {
       show_stage(input, "reading");
       auto t0 = std::chrono::steady_clock::now();
@@ -576,7 +647,7 @@ int run_command(const std::string& command, const IoOptions& given_io, const Mes
       shadetool::Mesh mesh;
       std::unique_ptr<shadetool::GltfDocument> document;
       if (kind != OutputKind::Image && input_is_gltf(io, input)) document = read_gltf_input(io, input, kind, output, result);
-      else mesh = read_input(io, input, read_info);
+      else mesh = read_input(io, input, read_info, result.progress);
       const double read_ms = ms_since(t0);
       for (auto& n : read_info.notes) result.notes.push_back(n);
       if (read_info.merged_vertices > 0) result.stats["merged_vertices"] = read_info.merged_vertices;
@@ -611,6 +682,7 @@ int run_command(const std::string& command, const IoOptions& given_io, const Mes
       line["time_ms"] = {{"read", read_ms}, {"compute", compute_ms}, {"write", write_ms}};
       line["stats"] = result.stats;
 
+      if (n_inputs == 1) progress.stop();
       std::lock_guard<std::mutex> lock(out_mutex);
       progress.clear();
       if (!io.quiet)
@@ -638,6 +710,7 @@ int run_command(const std::string& command, const IoOptions& given_io, const Mes
                   : shadetool::located(input, 0, dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what());
       failures.fetch_add(1);
       if (dynamic_cast<const UsageError*>(&e)) usage_failures.fetch_add(1);
+      if (n_inputs == 1) progress.stop();
       std::lock_guard<std::mutex> lock(out_mutex);
       failed.push_back(input);
       progress.clear();
@@ -665,6 +738,7 @@ int run_command(const std::string& command, const IoOptions& given_io, const Mes
     for (unsigned k = 0; k < jobs; ++k) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
   }
+  progress.stop();
   progress.clear();
   if (n > 1 && failures > 0 && !io.json) {
     std::string list;

@@ -43,6 +43,7 @@
 #include <nlohmann/json.hpp>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/core/progress.h>
 #include <shadetool/files/format_table.h>
 #include <shadetool/gltf/gltf_document.h>
 #include <shadetool/io/image_io.h>
@@ -131,6 +132,10 @@ struct FileResult {
   bool output_gltf = false;
   // Set by a step that bakes colours: a glTF output's materials get KHR_materials_unlit.
   bool unlit = false;
+  // Set by the driver: where a step's long kernels report their fraction done (the options'
+  // `progress` of occlusion, render, bake-lighting, repair; core/progress.h). Null when nothing
+  // shows progress (stderr not a terminal, --quiet, --json, several files).
+  shadetool::ProgressSink* progress = nullptr;
 };
 
 using MeshStep = std::function<void(shadetool::Mesh& mesh, const std::string& input, FileResult& result)>;

@@ -118,6 +118,7 @@ std::vector<FormatEntry> make_table() {
     e.holds.face_colors = Holds::Converted;  // vertices split (io/split_face_colors.h)
     e.holds.groups = Holds::Yes;
     e.holds.comments = Holds::Converted;   // `#` lines after the first
+    e.reports_progress = true;             // every 65536 lines
     t.push_back(e);
   }
   {
@@ -130,6 +131,7 @@ std::vector<FormatEntry> make_table() {
     e.holds.face_colors = Holds::Yes;
     e.holds.quality = Holds::Yes;               // float `quality` of vertex and face
     e.holds.properties = Holds::Yes;            // every other scalar, by name and declared type
+    e.reports_progress = true;                  // every element
     e.holds.comments = Holds::Yes;              // comment / obj_info header lines
     t.push_back(e);
   }

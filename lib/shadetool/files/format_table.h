@@ -63,6 +63,9 @@ struct FormatEntry {
   void (*write)(const Mesh& mesh, const WriteOptions& options, io::ByteSink& out, WriteInfo& info);
   bool has_binary_form;                 // --ascii / --binary choose between two forms
   FormatAttributes holds;
+  // The reader tells ReadInfo::progress the bytes it has read as it goes (OBJ, PLY): reading is
+  // a stage with a fraction. Otherwise reading shows its name alone (core/progress.h, total 0).
+  bool reports_progress = false;
 };
 
 // One attribute of FormatAttributes, to name what a command's result is written as (bake-lighting:

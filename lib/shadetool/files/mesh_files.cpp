@@ -53,7 +53,10 @@ Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::str
   ri.format = format;
   if (bytes.empty()) fail(name, 0, "file is empty");
   if (format == Format::Auto) fail(name, 0, "no mesh format given");
-  Mesh mesh = format_entry(format).read(bytes, name, ri);
+  const FormatEntry& entry = format_entry(format);
+  report_begin(ri.progress.sink(), "reading", entry.reports_progress ? bytes.size() : 0);
+  Mesh mesh = entry.read(bytes, name, ri);
+  if (entry.reports_progress) ri.progress.at(bytes.size());
   // A file with content that yields no vertex is not an empty mesh but a file we could not read.
   if (mesh.num_vertices() == 0) fail(name, 0, "no vertex in the file: nothing to read as a mesh");
   return mesh;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <shadetool/core/progress.h>
+
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
@@ -17,6 +19,10 @@ struct ReadInfo {
   Format format = Format::Auto;
   std::size_t merged_vertices = 0;  // STL: identical positions merged into shared vertices
   std::vector<std::string> notes;   // things the user should know (one line each)
+  // In: where reading reports its stage "reading" in bytes of the file (core/progress.h); a
+  // reader calls progress.at(bytes consumed) every so often, read_mesh_from_memory begins the
+  // stage and ends it at the file's size. Default: nobody listens.
+  ProgressCursor progress;
 };
 
 struct WriteOptions {

@@ -176,7 +176,7 @@ bool read_f(ObjLines& s, ObjLine& l, const std::string& name) {
 }
 
 // Step 1, read: every line, in order, into `s`.
-void read_lines(std::string_view bytes, const std::string& name, ObjLines& s) {
+void read_lines(std::string_view bytes, const std::string& name, ObjLines& s, ProgressCursor& progress) {
   Mesh& mesh = s.mesh;
   const char* p = bytes.data();
   const char* const end = p + bytes.size();
@@ -194,7 +194,7 @@ void read_lines(std::string_view bytes, const std::string& name, ObjLines& s) {
   reserve_bulk(mesh.face_start, bytes.size() / 24 + 1);
 
   while (p < end) {
-    ++line;
+    if ((++line & 0xffff) == 0) progress.at(std::uint64_t(p - bytes.data()));  // bytes read, every 65536 lines
     const char* eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
     if (!eol) eol = end;
     const char* q = skip_spaces(p, eol);
@@ -341,7 +341,7 @@ Mesh read_obj(std::string_view file_bytes, const std::string& name, ReadInfo& in
   refuse_utf16(file_bytes, name);
   const LineEndings lines(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
   ObjLines s;
-  read_lines(lines.lf(), name, s);
+  read_lines(lines.lf(), name, s, info.progress);
   validate_lines(s, name);
   build_corner_normals(s, info);
   build_texcoords(s);

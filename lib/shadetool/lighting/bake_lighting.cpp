@@ -47,7 +47,8 @@ std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, con
   }
   const ShadingModel model = options.model ? *options.model : scene.model;
   const LightingPlan plan = plan_lighting(scene, model);
-  const std::vector<double> visibility = light_visibility(bvh, scene, plan, wp, wn, {}, shadows.samples, &result.shadows);
+  const std::vector<double> visibility = light_visibility(bvh, scene, plan, wp, wn, {}, shadows.samples, &result.shadows,
+                                                                shadows.progress);
   ShadeOptions with = options;
   with.visibility = &visibility;
   return shade_points(scene, points, normals, with, &result.report);

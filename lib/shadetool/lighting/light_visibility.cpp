@@ -131,6 +131,28 @@ LightSample sample_environment(const Light& light, const Vec3d& n, double u, dou
 
 }  // namespace
 
+namespace {
+
+// The units of the stage "shadows": rays per point, summed over the kept lights (a sampled ray
+// whose weight is 0 is counted though not cast: the fraction is of the work planned).
+std::uint64_t shadow_progress_units(const Scene& lighting, const LightingPlan& plan, std::size_t P, std::uint32_t samples) {
+  std::uint64_t per_point = 0;
+  for (const std::size_t index : plan.lights) {
+    switch (lighting.lights[index].type) {
+      case LightType::Ambient: break;
+      case LightType::Directional:
+      case LightType::Point:
+      case LightType::Spot: per_point += 1; break;
+      case LightType::Area:
+      case LightType::Environment: per_point += samples; break;
+      case LightType::Sky: per_point += 2ull * samples; break;
+    }
+  }
+  return per_point * P;
+}
+
+}  // namespace
+
 void check_shadow_options(const ShadowOptions& shadows, const std::string& what) {
   if (shadows.enabled && (shadows.samples < 1 || shadows.samples > kMaxShadowSamples))
     throw Error(what + " must be 1.." + std::to_string(kMaxShadowSamples) + ", got " + std::to_string(shadows.samples));
@@ -139,7 +161,7 @@ void check_shadow_options(const ShadowOptions& shadows, const std::string& what)
 std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& lighting, const LightingPlan& plan,
                                      const std::vector<double>& points, const std::vector<double>& normals,
                                      const std::vector<std::uint64_t>& ids, std::uint32_t samples,
-                                     ShadowStats* stats) {
+                                     ShadowStats* stats, ProgressSink* progress) {
   if (points.size() % 3 != 0 || normals.size() != points.size())
     throw Error("light_visibility: points and normals must both be #P by 3");
   if (samples == 0) throw Error("light_visibility: samples must be at least 1");
@@ -147,6 +169,7 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
   const std::size_t L = plan.lights.size();
   const std::size_t row = 2 * L;
   std::vector<double> vis(row * P, 1.0);
+  report_begin(progress, "shadows", shadow_progress_units(lighting, plan, P, samples));
   ShadowStats st;
   st.bvh_bytes = scene.stats().bvh_bytes + scene.stats().buffer_bytes;
   st.build_ms = scene.stats().build_ms;
@@ -179,6 +202,7 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
     const Light& light = lighting.lights[plan.lights[j]];
     ShadowSampleOptions so;
     so.samples = samples;
+    so.progress = progress;
     so.seed = std::uint32_t(2 * j);
     switch (light.type) {
       case LightType::Ambient:  // never in plan.lights
@@ -187,12 +211,14 @@ std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& 
         ++st.hard_lights;
         st.shadow_rays += P;
         store_hard(j, shadow_visibility_directional(scene, points, normals, -light.direction));
+        report_advance(progress, P);
         break;
       case LightType::Point:
       case LightType::Spot:
         ++st.hard_lights;
         st.shadow_rays += P;
         store_hard(j, shadow_visibility_point(scene, points, normals, light.position));
+        report_advance(progress, P);
         break;
       case LightType::Area: {
         ++st.sampled_lights;

@@ -23,6 +23,8 @@
 //          samples     N >= 1 for area and sky lights
 // Output:  #P rows of 2 * plan.lights.size(): per light its fraction, then the sky's ground's
 //          (1 for other kinds), the layout ShadeOptions::visibility reads.
+// Progress: the stage "shadows" in rays per point (1 per point for a hard light, N for an area
+//          or environment light, 2N for a sky), told to `progress` (core/progress.h) when given.
 // Threads: any count; same bits (each point's rays depend only on its id and the light's index).
 // Errors:  throws Error for samples = 0 or mismatched sizes (shadow_visibility.h's checks).
 #pragma once
@@ -32,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include <shadetool/core/progress.h>
 #include <shadetool/lighting/lighting_plan.h>
 #include <shadetool/lighting/scene.h>
 #include <shadetool/visibility/visibility_scene.h>
@@ -46,6 +49,8 @@ struct ShadowOptions {
   // scene built by the caller (a glTF document's whole scene, gltf/gltf_scene.h's world mesh, in
   // which this mesh is placed by world_from_object too), shared by every mesh of that scene.
   const VisibilityScene* occluders = nullptr;
+  // Where the stage "shadows" reports (light_visibility; core/progress.h). Null: nobody listens.
+  ProgressSink* progress = nullptr;
 };
 
 // The limit of ShadowOptions::samples, and its check at every entry point that casts shadows
@@ -67,7 +72,7 @@ struct ShadowStats {
 std::vector<double> light_visibility(const VisibilityScene& scene, const Scene& lighting, const LightingPlan& plan,
                                      const std::vector<double>& points, const std::vector<double>& normals,
                                      const std::vector<std::uint64_t>& ids, std::uint32_t samples,
-                                     ShadowStats* stats = nullptr);
+                                     ShadowStats* stats = nullptr, ProgressSink* progress = nullptr);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

@@ -317,6 +317,7 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
   raster.samples = options.samples;
   raster.surface = &surface;
   raster.count_coverage = options.count_coverage;
+  raster.progress = options.progress;
   RenderStats& stats = result.stats;
   stats.faces = F;
   raster.parts.resize(chunks);

@@ -56,6 +56,7 @@
 #include <string>
 #include <vector>
 
+#include <shadetool/core/progress.h>
 #include <shadetool/core/mesh.h>
 #include <shadetool/lighting/scene.h>
 #include <shadetool/render/camera.h>
@@ -90,6 +91,9 @@ struct RenderOptions {
   // Gouraud: clamp each vertex colour to [0, 1] before interpolating (OpenGL 2.1; the 8-bit
   // image). false: unclamped (a float image, --hdr). Flat and Phong clamp per pixel when encoded.
   bool clamp_vertex_colors = true;
+  // Where the stage "render" reports, in tiles of the image (core/progress.h); null: nobody
+  // listens. Never changes a pixel.
+  ProgressSink* progress = nullptr;
 };
 
 struct RenderStats {

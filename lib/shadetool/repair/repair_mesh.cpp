@@ -22,7 +22,10 @@ namespace shadetool {
 RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   RepairReport report;
   report.faces_in = mesh.num_faces();
+  constexpr std::uint64_t kPasses = 7;  // the passes of RepairOptions::progress
+  report_begin(options.progress, "repair", kPasses);
   if (options.weld_eps >= 0) report.vertices_welded = weld_vertices(mesh, options.weld_eps).removed;
+  report_advance(options.progress, 1);
 
   const std::size_t F = mesh.num_faces();
   // Step 1: consistent winding. Faces without a winding of their own (fewer than 3 corners, a
@@ -52,6 +55,7 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
       adj = edge_adjacency(seams, left_out);
     }
   }
+  report_advance(options.progress, 1);
   ConsistentWinding winding = consistent_winding(*decide, adj, left_out);
   const DuplicateFaces duplicates = duplicate_faces(*decide, adj, winding);
   report.duplicate_faces = duplicates.count;
@@ -75,6 +79,7 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   // finds the degenerate faces (step 4), sharing its reads of the positions. It reads the output
   // mesh: joined vertices have the same positions, so the volumes are the same, and a face with
   // two coincident corners stays what it is (zero area, not a repeated index).
+  report_advance(options.progress, 1);
   DegenerateFaces degenerate;
   const ComponentVolumes volumes = component_signed_volumes(mesh, winding, &degenerate);
   report.degenerate_faces = degenerate.count();
@@ -82,7 +87,9 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   report.degenerate_repeated_index = degenerate.repeated_index;
   report.degenerate_too_few_corners = degenerate.too_few_corners;
   report.degenerate_non_finite = degenerate.non_finite;
+  report_advance(options.progress, 1);
   const OutwardOrientation outward = outward_orientation(*decide, winding, boundaries, volumes);
+  report_advance(options.progress, 1);
   report.nested_shells = outward.nested_shells;
   report.oriented_by_majority = outward.majority_components;
   report.oriented_by_normals = outward.normals_components;
@@ -146,8 +153,10 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     report.degenerate_faces_removed = remove_faces(mesh, remove);
   }
 
+  report_advance(options.progress, 1);
   // Step 3: normals, on the final faces.
   report.normals = fix_normals(mesh, options.weighting);
+  report_advance(options.progress, 1);
   report.faces_out = mesh.num_faces();
   return report;
 }

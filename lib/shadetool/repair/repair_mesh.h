@@ -33,6 +33,7 @@
 // Repairing the output again changes nothing (RepairReport::changes() == 0).
 #pragma once
 
+#include <shadetool/core/progress.h>
 #include <shadetool/core/mesh.h>
 #include <shadetool/normals/weighting.h>
 #include <shadetool/repair/repair_report.h>
@@ -44,6 +45,9 @@ struct RepairOptions {
   Weighting weighting = Weighting::Angle;
   bool remove_degenerate = false;
   double weld_eps = -1;  // < 0: off
+  // Where the stage "repair" reports, one unit per named pass (weld, adjacency and seams, winding,
+  // signed volumes, outward orientation, reversal, normals; core/progress.h). Null: nobody listens.
+  ProgressSink* progress = nullptr;
 };
 
 RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options = {});

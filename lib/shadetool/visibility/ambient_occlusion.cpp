@@ -82,6 +82,7 @@ Totals trace(const VisibilityScene& scene, std::size_t begin, std::size_t end, s
     }
     __atomic_add_fetch(&total_hits, range_hits, __ATOMIC_RELAXED);
     __atomic_add_fetch(&total_skipped, range_skipped, __ATOMIC_RELAXED);
+    report_advance(options.progress, e - b);
   });
   return {total_hits, total_skipped};
 }
@@ -99,6 +100,7 @@ template <class PointFn>
 AmbientOcclusion run(const VisibilityScene& scene, std::size_t count, std::uint32_t salt,
                      const AmbientOcclusionOptions& options, const PointFn& point) {
   check_options(options);
+  report_begin(options.progress, "occlusion", count);
   std::vector<float> open(count, 1.0f);
   AmbientOcclusion out = totals(trace(scene, 0, count, salt, options, point,
                                       [&](std::size_t i, std::uint32_t hits) { open[i] = open_fraction(hits, options.samples); }),
@@ -143,6 +145,7 @@ template <class StoreFn>
 Totals trace_faces(const VisibilityScene& scene, const Mesh& mesh, const AmbientOcclusionOptions& options,
                    const StoreFn& store) {
   Totals sum;
+  report_begin(options.progress, "occlusion", mesh.num_faces());
   std::vector<std::uint32_t> starts;
   for (std::size_t first = 0; first < mesh.num_faces(); first += kFaceBlock) {
     const std::size_t last = std::min(mesh.num_faces(), first + kFaceBlock);
@@ -241,12 +244,14 @@ AmbientOcclusion mesh_counts(const Mesh& mesh, bool per_face, bool computed, con
     if (per_face) {
       sum = trace_faces(scene, mesh, options, store);
     } else if (!computed) {
+      report_begin(options.progress, "occlusion", count);
       sum = trace(scene, 0, count, kVertexSalt, options, [&](std::size_t v, Vec3f& p, Vec3d& n, std::uint64_t&) {
         return vertex_query(scene, mesh, v, get3(mesh.vertex_normals, v), p, n);
       }, store);
     } else {
       visibility_engine::VertexNormalBlocks blocks(mesh, kNormalBlockLog2);
       VertexNormals normals;
+      report_begin(options.progress, "occlusion", count);
       for (std::size_t k = 0; k < blocks.blocks(); ++k) {
         blocks.compute(k, normals);
         const std::size_t first = blocks.begin(k);

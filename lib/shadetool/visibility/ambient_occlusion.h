@@ -23,7 +23,8 @@
 //          points, normals  #P by 3 each, world space (ambient_occlusion_at_points)
 //          ids      #P seeds' ids (empty: the point's index)
 //          options  samples N >= 1; max_distance D > 0 in world units (default +inf: any hit
-//                   counts); seed mixed into every point's scramble
+//                   counts); seed mixed into every point's scramble; progress (optional) told
+//                   the points traced
 // Output:  AmbientOcclusion: open_fraction #P (float), rays cast and hits, and `skipped`: points
 //          whose normal is zero or not finite (an isolated vertex, a degenerate face): open = 1,
 //          no ray cast.
@@ -44,6 +45,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/core/progress.h>
 #include <shadetool/visibility/visibility_scene.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -53,6 +55,9 @@ struct AmbientOcclusionOptions {
   std::uint32_t samples = 64;
   double max_distance = std::numeric_limits<double>::infinity();  // world units
   std::uint32_t seed = 0;
+  // Reports the rays' stage "occlusion" in points (vertices, faces or points), a block of points
+  // per call (core/progress.h); null: nobody listens. Never changes a result.
+  ProgressSink* progress = nullptr;
 };
 
 // The limits of AmbientOcclusionOptions, checked once here (every entry point below calls it; the

@@ -113,6 +113,7 @@ std::vector<double> shadow_visibility_sampled(const VisibilityScene& scene, cons
       }
       out[i] = total > 0 ? seen / total : 1.0;  // divisor checked; equal sums give exactly 1
     }
+    report_advance(options.progress, std::uint64_t(e - b) * options.samples);
   });
   return out;
 }

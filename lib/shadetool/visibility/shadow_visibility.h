@@ -38,6 +38,7 @@
 #include <functional>
 #include <vector>
 
+#include <shadetool/core/progress.h>
 #include <shadetool/core/vec3.h>
 #include <shadetool/visibility/visibility_scene.h>
 
@@ -62,6 +63,9 @@ using LightSampler = std::function<LightSample(std::size_t, const Vec3d&, double
 struct ShadowSampleOptions {
   std::uint32_t samples = 16;
   std::uint32_t seed = 0;  // e.g. the light's index, so that two lights do not share directions
+  // Told samples units per point, a block of points per call (core/progress.h); the caller
+  // begins the stage. Null: nobody listens. Never changes a result.
+  ProgressSink* progress = nullptr;
 };
 
 std::vector<double> shadow_visibility_sampled(const VisibilityScene& scene, const std::vector<double>& points,

@@ -448,6 +448,7 @@ Mesh read_ply_body(std::string_view bytes, const PlyHeader& header, const PlyLay
     else if (&e == layout.face) read_face_element(e, layout, in, mesh, name, info);
     else if (&e == layout.strips) read_strips_element(e, layout, in, mesh, name, info);
     else skip_element(e, in, info);
+    info.progress.at(bytes.size() - in.remaining());  // bytes read, per element
   }
   refuse_trailing_data(in, name);
   // Faces in an element this reader does not take (a second face element, strips beside faces,

@@ -46,6 +46,7 @@ struct RasterInput {
   std::vector<double> clip_b;  // 9 per clipped triangle: B_i (3 doubles) per screen vertex
   const SurfaceInputs* surface = nullptr;
   bool count_coverage = false;
+  ProgressSink* progress = nullptr;  // the stage "render" in tiles (core/progress.h)
 };
 
 struct RasterOutput {

@@ -290,12 +290,14 @@ RasterOutput rasterize_tiles(const RasterInput& in) {
 
   std::vector<TileResult> results(bins.size());
   tbb::enumerable_thread_specific<TileBuffers> scratch;
+  report_begin(in.progress, "render", bins.size());
   // In the caller's arena (render_mesh sets the thread count); which thread runs a tile does not
   // change its pixels.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
     TileBuffers& buffers = scratch.local();
     for (std::size_t k = r.begin(); k < r.end(); ++k)
       results[k] = raster_tile(in, bins[k], int(k % std::size_t(tiles_x)), int(k / std::size_t(tiles_x)), buffers, out);
+    report_advance(in.progress, r.end() - r.begin());
   });
   for (const TileResult& r : results) {
     out.samples_covered += r.covered;
