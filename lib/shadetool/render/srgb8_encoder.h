@@ -36,7 +36,8 @@ class Srgb8Encoder {
     std::uint32_t bits;
     std::memcpy(&bits, &linear, sizeof bits);
     unsigned code = bucket_code_[bits >> 16];  // 0 < linear < t_255 < 1: bits < 0x3F800000
-    while (linear >= threshold_[code + 1]) ++code;  // stops at 254 at the latest: linear < t_255
+    code += linear >= threshold_[code + 1];  // without a branch: a bucket holds at most one threshold
+    while (linear >= threshold_[code + 1]) ++code;  // so never taken; kept for exactness. Stops at 254: linear < t_255
     return std::uint8_t(code);
   }
 

@@ -170,6 +170,9 @@ void gouraud_run(const Vec3d corner_rgb[3], const double inv_w[3], const double*
   const __m128d one = _mm_set1_pd(1.0), zero = _mm_setzero_pd(), scale = _mm_set1_pd(inv_samples);
   const __m128d iw0 = _mm_set1_pd(inv_w[0]), iw1 = _mm_set1_pd(inv_w[1]), iw2 = _mm_set1_pd(inv_w[2]);
   auto select = [](__m128d mask, __m128d a, __m128d b) { return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b)); };
+  __m128d rgb[3][3];  // rgb[k][c]: corner k's channel c in both lanes
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c) rgb[k][c] = _mm_set1_pd(corner_rgb[k][c]);
   for (; i + 2 <= n; i += 2) {
     const __m128d l1 = _mm_loadu_pd(lambda1 + i), l2 = _mm_loadu_pd(lambda2 + i);
     const __m128d l0 = _mm_sub_pd(_mm_sub_pd(one, l1), l2);
@@ -184,9 +187,9 @@ void gouraud_run(const Vec3d corner_rgb[3], const double inv_w[3], const double*
     // blend_vertex_colors, then the box filter's 0 + c and scale, per channel
     float channel[3][4];
     for (int c = 0; c < 3; ++c) {
-      __m128d acc = _mm_add_pd(zero, _mm_mul_pd(_mm_set1_pd(corner_rgb[0][c]), w0));
-      acc = _mm_add_pd(acc, _mm_mul_pd(_mm_set1_pd(corner_rgb[1][c]), w1));
-      acc = _mm_add_pd(acc, _mm_mul_pd(_mm_set1_pd(corner_rgb[2][c]), w2));
+      __m128d acc = _mm_add_pd(zero, _mm_mul_pd(rgb[0][c], w0));
+      acc = _mm_add_pd(acc, _mm_mul_pd(rgb[1][c], w1));
+      acc = _mm_add_pd(acc, _mm_mul_pd(rgb[2][c], w2));
       _mm_storeu_ps(channel[c], _mm_cvtpd_ps(_mm_mul_pd(_mm_add_pd(zero, acc), scale)));
     }
     for (int k = 0; k < 2; ++k)
@@ -236,14 +239,30 @@ struct TileBuffers {
   std::vector<const ScreenTriangle*> owner;
 };
 
-TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTriangle*>& bin, int tile_x, int tile_y,
-                       TileBuffers& buffers, RasterOutput& out) {
+// Tile side in pixels (the pixels are the same for any side: every sample's value depends only on
+// the triangles in index order). 64 where the per-sample work is light (flat and Gouraud at one
+// sample per pixel: fewer tiles, so fewer per-tile clears and bin entries); 32 otherwise: Phong
+// reads three vertices' positions and normals per sample, and at 1M triangles a 64-pixel tile's
+// working set made it 1.4x slower; N x N samples multiply a tile's buffers (bench/render/results.md).
+int tile_pixels(RenderShading shading, int samples) {
+  switch (shading) {
+    case RenderShading::Flat:
+    case RenderShading::Gouraud:
+      return samples == 1 ? kMaxTilePixels : 32;
+    case RenderShading::Phong:
+      return 32;
+  }
+  return 32;
+}
+
+TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTriangle*>& bin, int tile_side, int tile_x,
+                       int tile_y, TileBuffers& buffers, RasterOutput& out) {
   const int N = in.samples;
-  const int px0 = tile_x * kTilePixels, py0 = tile_y * kTilePixels;
-  const int px1 = std::min(in.width, px0 + kTilePixels), py1 = std::min(in.height, py0 + kTilePixels);
+  const int px0 = tile_x * tile_side, py0 = tile_y * tile_side;
+  const int px1 = std::min(in.width, px0 + tile_side), py1 = std::min(in.height, py0 + tile_side);
   const Vec3d background = in.surface->background;
   const std::size_t row_floats = 3 * std::size_t(px1 - px0);
-  float tile_row[3 * kTilePixels];  // one pixel row of the tile, written to the image by write_image_row
+  float tile_row[3 * kMaxTilePixels];  // one pixel row of the tile, written to the image by write_image_row
   if (bin.empty()) {  // nothing here: the background, no per-sample work
     for (int pxl = px0; pxl < px1; ++pxl) {
       float* o = tile_row + 3 * (pxl - px0);
@@ -427,9 +446,10 @@ RasterOutput rasterize_tiles(const RasterInput& in) {
   if (in.count_coverage) out.coverage.assign(std::size_t(in.width) * N * std::size_t(in.height) * N, 0);
 
   // Bins: each tile lists the triangles whose sample bounds meet it, in triangle order.
-  const int tiles_x = (in.width + kTilePixels - 1) / kTilePixels;
-  const int tiles_y = (in.height + kTilePixels - 1) / kTilePixels;
-  const int tile_samples = kTilePixels * N;
+  const int tile_side = tile_pixels(in.surface->shading, N);
+  const int tiles_x = (in.width + tile_side - 1) / tile_side;
+  const int tiles_y = (in.height + tile_side - 1) / tile_side;
+  const int tile_samples = tile_side * N;
   std::vector<std::vector<const ScreenTriangle*>> bins(std::size_t(tiles_x) * std::size_t(tiles_y));
   for (const auto& part : in.parts)
     for (const ScreenTriangle& t : part) {
@@ -446,7 +466,8 @@ RasterOutput rasterize_tiles(const RasterInput& in) {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
     TileBuffers& buffers = scratch.local();
     for (std::size_t k = r.begin(); k < r.end(); ++k)
-      results[k] = raster_tile(in, bins[k], int(k % std::size_t(tiles_x)), int(k / std::size_t(tiles_x)), buffers, out);
+      results[k] = raster_tile(in, bins[k], tile_side, int(k % std::size_t(tiles_x)), int(k / std::size_t(tiles_x)),
+                               buffers, out);
   });
   for (const TileResult& r : results) {
     out.samples_covered += r.covered;
