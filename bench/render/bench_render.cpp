@@ -9,7 +9,8 @@
 // threads, all work on the calling thread; T = 2: 2 rasteriser threads), set before the context
 // is created, hence one process per T.
 //
-// Usage: bench_render THREADS [REPEATS]   (default 5)
+// Usage: bench_render THREADS [REPEATS [MESHES [SHADING]]]   (REPEATS default 5; MESHES "all"
+// (default) or "10k": the 10k-triangle sphere only; SHADING "all" (default), "gouraud" or "phong")
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -293,11 +294,14 @@ int main(int argc, char** argv) {
   std::printf("%-10s %-8s %9s %9s %7s %9s %9s %7s %8s %8s %9s %8s\n", "triangles", "shading", "ours_ms", "mesa_ms",
               "ratio", "ours_cpu", "mesa_cpu", "ratio", "cover_o", "cover_m", "diff_8bit", "only_one");
   const Scene scene = bench_scene();
-  for (const auto& [nu, nv] : std::vector<std::pair<int, int>>{{100, 51}, {1000, 501}}) {
+  std::vector<std::pair<int, int>> spheres{{100, 51}, {1000, 501}};
+  if (argc > 3 && std::string(argv[3]) == "10k") spheres.pop_back();
+  for (const auto& [nu, nv] : spheres) {
     const Mesh mesh = testing::uv_sphere(nu, nv).mesh;
     const std::vector<double> normals = shading_vertex_normals(mesh);
     MesaRenderer mesa(mesh, normals, scene);
     for (RenderShading shading : {RenderShading::Gouraud, RenderShading::Phong}) {
+      if (argc > 4 && std::string(argv[4]) != "all" && std::string(argv[4]) != render_shading_name(shading)) continue;
       RenderOptions o;
       o.shading = shading;
       o.width = kWidth;

@@ -10,8 +10,8 @@
 //                                 run-length strategy (Z_RLE): a rendered frame's rows repeat the
 //                                 row above (background, flat shading), which Up turns into zeros
 //                                 and RLE codes cheaply. Chosen by bench/render/png_encode.cpp on
-//                                 1920x1080 frames: 5.4-5.7x faster than libpng's default (zlib 6,
-//                                 adaptive filters), files 35-37% larger (bench/render/results.md).
+//                                 1920x1080 frames: about 5x faster than libpng's default (zlib 6,
+//                                 adaptive filters), files 16-37% larger (bench/render/results.md).
 //                           2..9  zlib level `level` with libpng's adaptive filters (6 is libpng's
 //                                 default; 9 the smallest file, the slowest)
 // Output:  the PNG file's bytes: IHDR (8-bit RGB, no interlace), sRGB (perceptual intent) with the

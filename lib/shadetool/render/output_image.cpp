@@ -1,7 +1,7 @@
 // output_image.cpp: see output_image.h.
 #include <shadetool/render/output_image.h>
 
-#include <shadetool/render/lighting_adapter.h>
+#include <shadetool/render/srgb8_encoder.h>
 
 namespace shadetool {
 
@@ -16,7 +16,8 @@ Image render_output_image(const ImageRGB& rendered, bool linear_float) {
   } else {
     out.pixel = Image::Pixel::U8;
     out.u8.resize(rendered.rgb.size());
-    for (std::size_t i = 0; i < rendered.rgb.size(); ++i) out.u8[i] = encode_srgb_8bit(rendered.rgb[i]);
+    const Srgb8Encoder& encode = srgb8_encoder();  // bitwise encode_srgb_8bit, by table
+    for (std::size_t i = 0; i < rendered.rgb.size(); ++i) out.u8[i] = encode(rendered.rgb[i]);
   }
   return out;
 }

@@ -5,7 +5,8 @@
 // Input:   rendered      render/image.h: height * width * 3 linear floats, row 0 at the top
 //          linear_float  true: copy the floats (unclamped); false: per channel
 //                        encode_srgb_8bit (render/lighting_adapter.h: IEC 61966-2-1, then
-//                        round(255 * clamp(c, 0, 1)); NaN -> 0)
+//                        round(255 * clamp(c, 0, 1)); NaN -> 0), computed by its table
+//                        (render/srgb8_encoder.h: the same code for every float)
 // Output:  io/image_io.h Image, width x height x 3, Pixel::F32 or Pixel::U8, same row order.
 #pragma once
 

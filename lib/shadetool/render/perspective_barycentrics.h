@@ -19,14 +19,13 @@ namespace shadetool {
 inline void perspective_barycentrics(const double lambda[3], const double inv_w[3], double b[3]) {
   const double m0 = lambda[0] * inv_w[0], m1 = lambda[1] * inv_w[1], m2 = lambda[2] * inv_w[2];
   const double sum = m0 + m1 + m2;
-  if (!(sum > 0)) {
-    b[0] = lambda[0], b[1] = lambda[1], b[2] = lambda[2];
-    return;
-  }
-  const double inv = 1.0 / sum;  // divisor checked above
-  b[0] = m0 * inv;
-  b[1] = m1 * inv;
-  b[2] = m2 * inv;
+  // Selects rather than an early return, so that loops over samples vectorise: the quotient is
+  // used only where sum > 0 (divisor checked), else b = lambda.
+  const bool positive = sum > 0;
+  const double inv = 1.0 / sum;
+  b[0] = positive ? m0 * inv : lambda[0];
+  b[1] = positive ? m1 * inv : lambda[1];
+  b[2] = positive ? m2 * inv : lambda[2];
 }
 
 }  // namespace shadetool

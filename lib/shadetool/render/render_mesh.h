@@ -17,7 +17,7 @@
 //   3. per triangle: clipped against near/far/guard band (clip_polygon.h), projected, snapped to
 //      1/256 of a sample (fill_rule.h), back faces culled unless scene.two_sided (orientation
 //      as seen by the camera, times sign(det(V M)): a mirror keeps its outside outside).
-//   4. tiles of 32 x 32 pixels on TBB threads (engine/tile_raster.cpp): per sample the nearest
+//   4. square tiles (32 or 64 pixels, tile_raster.cpp) on TBB threads: per sample the nearest
 //      triangle (depth test on z/w, ties to the lower triangle index) and its screen barycentrics;
 //      then per visible sample the perspective-correct barycentrics of the original triangle,
 //        b_i = (lambda_i / w_i) / sum_j (lambda_j / w_j)

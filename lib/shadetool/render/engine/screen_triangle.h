@@ -12,7 +12,7 @@
 namespace shadetool::render_engine {
 
 constexpr int kSubUnits = 256;      // fixed-point units per sample spacing (fill_rule.h)
-constexpr int kTilePixels = 32;     // tile side in pixels
+constexpr int kMaxTilePixels = 64;  // tile side in pixels: at most this (tile_raster.cpp tile_pixels)
 
 struct ScreenTriangle {
   std::int32_t X[3], Y[3];      // fixed point, orient(v0, v1, v2) > 0

@@ -5,7 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -18,6 +24,28 @@
 namespace shadetool::render_engine {
 
 namespace {
+
+// Copies n floats of one tile row into the image (bit for bit). Non-temporal stores where the
+// destination is 16-byte aligned: the renderer writes each pixel of the image (25 MB at 1920x1080)
+// once and never reads it back, so the stores need not first read every cache line they fill
+// (bench/render/results.md); raster_tile ends with a store fence so the pixels are visible to
+// whoever reads the image after the tile loop.
+void write_image_row(float* dst, const float* src, std::size_t n) {
+#if defined(__SSE2__)
+  std::size_t i = 0;
+  for (; i < n && (reinterpret_cast<std::uintptr_t>(dst + i) & 15) != 0; ++i) dst[i] = src[i];
+  for (; i + 4 <= n; i += 4) _mm_stream_ps(dst + i, _mm_loadu_ps(src + i));
+  for (; i < n; ++i) dst[i] = src[i];
+#else
+  std::memcpy(dst, src, n * sizeof(float));
+#endif
+}
+
+void store_fence() {
+#if defined(__SSE2__)
+  _mm_sfence();
+#endif
+}
 
 
 // The original triangle's barycentrics at a sample with screen barycentrics lambda.
@@ -106,6 +134,80 @@ void phong_point(const RasterInput& in, const ScreenTriangle& t, const double la
   n = n2 > 0x1p-1000 && n2 <= 0x1p1000 ? n * (1.0 / std::sqrt(n2)) : Vec3d{0, 0, 0};  // divisor checked
 }
 
+// Gouraud's colour at a sample: the corners' colours blended by the sample's weights, summed in
+// weight order (the one home of this sum: shade_sample and the tile loop's run cache call it).
+inline Vec3d blend_vertex_colors(const Vec3d* rgb, const double* weight, int count) {
+  Vec3d c{0, 0, 0};
+  for (int k = 0; k < count; ++k) c += rgb[k] * weight[k];
+  return c;
+}
+
+// A Gouraud triangle's corner colours in screen order, looked up once for a run of samples that
+// the same triangle owns. direct: unclipped and not a quad, so that the perspective-correct
+// barycentrics are the corners' weights (sample_weights' fast path); otherwise shade_sample.
+struct GouraudCorners {
+  const ScreenTriangle* triangle = nullptr;
+  bool direct = false;
+  Vec3d rgb[3];
+
+  void load(const SurfaceInputs& s, const ScreenTriangle* t) {
+    triangle = t;
+    direct = !t->quad && t->clip_index < 0;
+    if (direct)
+      for (int i = 0; i < 3; ++i) rgb[i] = get3(s.vertex_rgb, t->vertex[t->perm[i]]);
+  }
+};
+
+// One sample per pixel, Gouraud, a run of n pixels that one direct triangle owns (GouraudCorners).
+// The scalar loop is the definition: per pixel the operations of the general loop in the same
+// order (lambda, perspective_barycentrics, blend_vertex_colors, the box filter's sum and scale).
+// With SSE2 two pixels go through the very same IEEE operations side by side (no fused
+// multiply-add, same order, the same selects), so the floats are bitwise the scalar loop's.
+void gouraud_run(const Vec3d corner_rgb[3], const double inv_w[3], const double* lambda1, const double* lambda2,
+                 int n, double inv_samples, float* out) {
+  int i = 0;
+#if defined(__SSE2__)
+  const __m128d one = _mm_set1_pd(1.0), zero = _mm_setzero_pd(), scale = _mm_set1_pd(inv_samples);
+  const __m128d iw0 = _mm_set1_pd(inv_w[0]), iw1 = _mm_set1_pd(inv_w[1]), iw2 = _mm_set1_pd(inv_w[2]);
+  auto select = [](__m128d mask, __m128d a, __m128d b) { return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b)); };
+  __m128d rgb[3][3];  // rgb[k][c]: corner k's channel c in both lanes
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c) rgb[k][c] = _mm_set1_pd(corner_rgb[k][c]);
+  for (; i + 2 <= n; i += 2) {
+    const __m128d l1 = _mm_loadu_pd(lambda1 + i), l2 = _mm_loadu_pd(lambda2 + i);
+    const __m128d l0 = _mm_sub_pd(_mm_sub_pd(one, l1), l2);
+    // perspective_barycentrics
+    const __m128d m0 = _mm_mul_pd(l0, iw0), m1 = _mm_mul_pd(l1, iw1), m2 = _mm_mul_pd(l2, iw2);
+    const __m128d sum = _mm_add_pd(_mm_add_pd(m0, m1), m2);
+    const __m128d positive = _mm_cmpgt_pd(sum, zero);
+    const __m128d inv = _mm_div_pd(one, sum);
+    const __m128d w0 = select(positive, _mm_mul_pd(m0, inv), l0);
+    const __m128d w1 = select(positive, _mm_mul_pd(m1, inv), l1);
+    const __m128d w2 = select(positive, _mm_mul_pd(m2, inv), l2);
+    // blend_vertex_colors, then the box filter's 0 + c and scale, per channel
+    float channel[3][4];
+    for (int c = 0; c < 3; ++c) {
+      __m128d acc = _mm_add_pd(zero, _mm_mul_pd(rgb[0][c], w0));
+      acc = _mm_add_pd(acc, _mm_mul_pd(rgb[1][c], w1));
+      acc = _mm_add_pd(acc, _mm_mul_pd(rgb[2][c], w2));
+      _mm_storeu_ps(channel[c], _mm_cvtpd_ps(_mm_mul_pd(_mm_add_pd(zero, acc), scale)));
+    }
+    for (int k = 0; k < 2; ++k)
+      for (int c = 0; c < 3; ++c) out[3 * (i + k) + c] = channel[c][k];
+  }
+#endif
+  for (; i < n; ++i) {
+    const double lambda[3] = {1.0 - lambda1[i] - lambda2[i], lambda1[i], lambda2[i]};
+    double weight[3];
+    perspective_barycentrics(lambda, inv_w, weight);
+    Vec3d sum{0, 0, 0};
+    sum += blend_vertex_colors(corner_rgb, weight, 3);
+    out[3 * i] = float(sum.x * inv_samples);
+    out[3 * i + 1] = float(sum.y * inv_samples);
+    out[3 * i + 2] = float(sum.z * inv_samples);
+  }
+}
+
 Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double lambda[3], ShadeCounters& counters,
                    std::size_t& fallbacks) {
   const SurfaceInputs& s = *in.surface;
@@ -114,9 +216,9 @@ Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double 
       return get3(s.face_rgb, t.face);
     case RenderShading::Gouraud: {
       const VertexWeights w = sample_weights(in, t, lambda, fallbacks);
-      Vec3d c{0, 0, 0};
-      for (int k = 0; k < w.count; ++k) c += get3(s.vertex_rgb, w.vertex[k]) * w.weight[k];
-      return c;
+      Vec3d rgb[4];
+      for (int k = 0; k < w.count; ++k) rgb[k] = get3(s.vertex_rgb, w.vertex[k]);
+      return blend_vertex_colors(rgb, w.weight, w.count);
     }
     case RenderShading::Phong: {
       Vec3d p, n;
@@ -137,24 +239,45 @@ struct TileBuffers {
   std::vector<const ScreenTriangle*> owner;
 };
 
-TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTriangle*>& bin, int tile_x, int tile_y,
-                       TileBuffers& buffers, RasterOutput& out) {
+// Tile side in pixels (the pixels are the same for any side: every sample's value depends only on
+// the triangles in index order). 64 where the per-sample work is light (flat and Gouraud at one
+// sample per pixel: fewer tiles, so fewer per-tile clears and bin entries); 32 otherwise: Phong
+// reads three vertices' positions and normals per sample, and at 1M triangles a 64-pixel tile's
+// working set made it 1.4x slower; N x N samples multiply a tile's buffers (bench/render/results.md).
+int tile_pixels(RenderShading shading, int samples) {
+  switch (shading) {
+    case RenderShading::Flat:
+    case RenderShading::Gouraud:
+      return samples == 1 ? kMaxTilePixels : 32;
+    case RenderShading::Phong:
+      return 32;
+  }
+  return 32;
+}
+
+TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTriangle*>& bin, int tile_side, int tile_x,
+                       int tile_y, TileBuffers& buffers, RasterOutput& out) {
   const int N = in.samples;
-  const int px0 = tile_x * kTilePixels, py0 = tile_y * kTilePixels;
-  const int px1 = std::min(in.width, px0 + kTilePixels), py1 = std::min(in.height, py0 + kTilePixels);
+  const int px0 = tile_x * tile_side, py0 = tile_y * tile_side;
+  const int px1 = std::min(in.width, px0 + tile_side), py1 = std::min(in.height, py0 + tile_side);
   const Vec3d background = in.surface->background;
+  const std::size_t row_floats = 3 * std::size_t(px1 - px0);
+  float tile_row[3 * kMaxTilePixels];  // one pixel row of the tile, written to the image by write_image_row
   if (bin.empty()) {  // nothing here: the background, no per-sample work
-    for (int py = py0; py < py1; ++py)
-      for (int pxl = px0; pxl < px1; ++pxl) {
-        float* o = out.image.pixel(pxl, py);
-        o[0] = float(background.x), o[1] = float(background.y), o[2] = float(background.z);
-      }
+    for (int pxl = px0; pxl < px1; ++pxl) {
+      float* o = tile_row + 3 * (pxl - px0);
+      o[0] = float(background.x), o[1] = float(background.y), o[2] = float(background.z);
+    }
+    for (int py = py0; py < py1; ++py) write_image_row(out.image.pixel(px0, py), tile_row, row_floats);
+    store_fence();
     return {};
   }
   const int sx0 = px0 * N, sy0 = py0 * N, sx1 = px1 * N - 1, sy1 = py1 * N - 1;  // inclusive
   const int tw = sx1 - sx0 + 1, th = sy1 - sy0 + 1;
   const std::size_t count = std::size_t(tw) * std::size_t(th);
-  buffers.depth.assign(count, std::numeric_limits<double>::infinity());
+  // depth[s] is meaningful only where owner[s] is set (else +infinity, the depth test's start):
+  // only the owners are cleared per tile.
+  buffers.depth.resize(count);
   buffers.owner.assign(count, nullptr);
   buffers.lambda1.resize(count);
   buffers.lambda2.resize(count);
@@ -163,6 +286,8 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
   double* lambda1 = buffers.lambda1.data();
   double* lambda2 = buffers.lambda2.data();
   const std::size_t full_width = std::size_t(in.width) * std::size_t(N);
+  const bool count_coverage = in.count_coverage;
+  constexpr double kNoDepth = std::numeric_limits<double>::infinity();
 
   for (const ScreenTriangle* tp : bin) {
     const ScreenTriangle& t = *tp;
@@ -184,17 +309,22 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
     std::int64_t row0 = orient(X1, Y1, X2, Y2, px, py) + bias0 - 1;  // inside: E + bias - 1 >= 0
     std::int64_t row1 = orient(X2, Y2, X0, Y0, px, py) + bias1 - 1;
     std::int64_t row2 = orient(X0, Y0, X1, Y1, px, py) + bias2 - 1;
+    const double z0 = t.z[0], z1 = t.z[1], z2 = t.z[2];  // locals: the stores below cannot change them
     for (int sy = by0; sy <= by1; ++sy) {
       std::int64_t e0 = row0, e1 = row1, e2 = row2;
       std::size_t s = std::size_t(sy - sy0) * std::size_t(tw) + std::size_t(bx0 - sx0);
-      for (int sx = bx0; sx <= bx1; ++sx, ++s, e0 += step_x0, e1 += step_x1, e2 += step_x2) {
-        if ((e0 | e1 | e2) < 0) continue;
-        if (in.count_coverage) ++out.coverage[std::size_t(sy) * full_width + std::size_t(sx)];
+      int sx = bx0;
+      // The covered samples of a row are one interval (the triangle is convex): skip to it, walk
+      // it, and stop at its end.
+      for (; sx <= bx1 && (e0 | e1 | e2) < 0; ++sx, ++s, e0 += step_x0, e1 += step_x1, e2 += step_x2) {
+      }
+      for (; sx <= bx1 && (e0 | e1 | e2) >= 0; ++sx, ++s, e0 += step_x0, e1 += step_x1, e2 += step_x2) {
+        if (count_coverage) ++out.coverage[std::size_t(sy) * full_width + std::size_t(sx)];
         const double l0 = double(e0 + 1 - bias0) * inv_area;
         const double l1 = double(e1 + 1 - bias1) * inv_area;
         const double l2 = double(e2 + 1 - bias2) * inv_area;
-        const double z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
-        if (z < depth[s]) {
+        const double z = l0 * z0 + l1 * z1 + l2 * z2;
+        if (z < (owner[s] != nullptr ? depth[s] : kNoDepth)) {
           depth[s] = z;
           owner[s] = tp;
           lambda1[s] = l1;
@@ -235,6 +365,44 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
   const std::size_t row = shadowed ? in.surface->shader->row_size() : 0;
   std::size_t next = 0;  // shadowed: the next gathered point
   const double inv_samples = 1.0 / double(N * N);  // N >= 1
+  if (N == 1 && !shadowed) {  // the common case: the loop below with its sample index arithmetic folded
+    const bool gouraud = in.surface->shading == RenderShading::Gouraud;
+    GouraudCorners corners;
+    for (int py = py0; py < py1; ++py) {
+      const std::size_t s_row = std::size_t(py - py0) * std::size_t(tw) - std::size_t(px0);
+      for (int pxl = px0; pxl < px1;) {
+        const std::size_t s = s_row + std::size_t(pxl);
+        const ScreenTriangle* t = owner[s];
+        float* out_px = tile_row + 3 * (pxl - px0);
+        if (gouraud && t != nullptr) {
+          if (t != corners.triangle) corners.load(*in.surface, t);
+          if (corners.direct) {  // the run of pixels this triangle owns, in one loop
+            int end = pxl + 1;
+            while (end < px1 && owner[s_row + std::size_t(end)] == t) ++end;
+            gouraud_run(corners.rgb, t->inv_w, lambda1 + s, lambda2 + s, end - pxl, inv_samples, out_px);
+            r.covered += std::size_t(end - pxl);
+            pxl = end;
+            continue;
+          }
+        }
+        Vec3d sum{0, 0, 0};
+        if (t == nullptr) {
+          sum += background;
+        } else {
+          ++r.covered;
+          const double lambda[3] = {1.0 - lambda1[s] - lambda2[s], lambda1[s], lambda2[s]};
+          sum += shade_sample(in, *t, lambda, counters, r.fallbacks);
+        }
+        out_px[0] = float(sum.x * inv_samples);
+        out_px[1] = float(sum.y * inv_samples);
+        out_px[2] = float(sum.z * inv_samples);
+        ++pxl;
+      }
+      write_image_row(out.image.pixel(px0, py), tile_row, row_floats);
+    }
+    store_fence();
+    return r;
+  }
   for (int py = py0; py < py1; ++py) {
     for (int pxl = px0; pxl < px1; ++pxl) {
       Vec3d sum{0, 0, 0};
@@ -256,12 +424,14 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
           sum += shade_sample(in, *owner[s], lambda, counters, r.fallbacks);
         }
       }
-      float* out_px = out.image.pixel(pxl, py);
+      float* out_px = tile_row + 3 * (pxl - px0);
       out_px[0] = float(sum.x * inv_samples);
       out_px[1] = float(sum.y * inv_samples);
       out_px[2] = float(sum.z * inv_samples);
     }
+    write_image_row(out.image.pixel(px0, py), tile_row, row_floats);
   }
+  store_fence();
   return r;
 }
 
@@ -276,9 +446,10 @@ RasterOutput rasterize_tiles(const RasterInput& in) {
   if (in.count_coverage) out.coverage.assign(std::size_t(in.width) * N * std::size_t(in.height) * N, 0);
 
   // Bins: each tile lists the triangles whose sample bounds meet it, in triangle order.
-  const int tiles_x = (in.width + kTilePixels - 1) / kTilePixels;
-  const int tiles_y = (in.height + kTilePixels - 1) / kTilePixels;
-  const int tile_samples = kTilePixels * N;
+  const int tile_side = tile_pixels(in.surface->shading, N);
+  const int tiles_x = (in.width + tile_side - 1) / tile_side;
+  const int tiles_y = (in.height + tile_side - 1) / tile_side;
+  const int tile_samples = tile_side * N;
   std::vector<std::vector<const ScreenTriangle*>> bins(std::size_t(tiles_x) * std::size_t(tiles_y));
   for (const auto& part : in.parts)
     for (const ScreenTriangle& t : part) {
@@ -296,7 +467,8 @@ RasterOutput rasterize_tiles(const RasterInput& in) {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
     TileBuffers& buffers = scratch.local();
     for (std::size_t k = r.begin(); k < r.end(); ++k)
-      results[k] = raster_tile(in, bins[k], int(k % std::size_t(tiles_x)), int(k / std::size_t(tiles_x)), buffers, out);
+      results[k] = raster_tile(in, bins[k], tile_side, int(k % std::size_t(tiles_x)), int(k / std::size_t(tiles_x)),
+                               buffers, out);
     report_advance(in.progress, r.end() - r.begin());
   });
   for (const TileResult& r : results) {
