@@ -106,21 +106,27 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
 
 // Step 2: welded vertex of every corner: the first corner with the same (position, normal,
 // texture coordinate) as float ==. An open-addressing table keyed by the values (-0 as +0);
-// a corner with a NaN equals nothing.
+// a corner with a NaN equals nothing. Two passes: every corner's key hashed (in order, a stream),
+// then the corners inserted in order, the slot of a corner a few places ahead prefetched (the
+// table is larger than the caches and its slots random: the wait for memory is the cost).
+void weld_key(const Corners& in, std::uint32_t c, float* k) {
+  const F3 &p = in.position[c], &n = in.normal[c], &t = in.texcoord[c];
+  const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
+  for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
+}
+
 std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32_t>& corners) {
-  const std::size_t C = in.position.size();
+  const std::size_t C = in.position.size(), N = corners.size();
   std::vector<std::uint32_t> rep(C, 0);
   std::size_t cap = 16;
-  while (cap < 2 * corners.size()) cap *= 2;
+  while (cap < 2 * N) cap *= 2;
   std::vector<std::uint32_t> table(cap, ~0u);
-  auto key = [&](std::uint32_t c, float* k) {
-    const F3 &p = in.position[c], &n = in.normal[c], &t = in.texcoord[c];
-    const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
-    for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
-  };
-  for (std::uint32_t c : corners) {
+  constexpr std::uint64_t kNaN = ~0ull;  // a key with a NaN: not hashed (no real hash is all ones
+                                         // after the masking below)
+  std::vector<std::uint64_t> hash(N);
+  for (std::size_t i = 0; i < N; ++i) {
     float k[8];
-    key(c, k);
+    weld_key(in, corners[i], k);
     bool nan = false;
     std::uint64_t h = 0x9E3779B97F4A7C15ull;
     for (float x : k) {
@@ -130,11 +136,19 @@ std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32
       h = (h ^ bits) * 0xff51afd7ed558ccdull;
       h ^= h >> 32;
     }
-    if (nan) { rep[c] = c; continue; }
-    for (std::size_t slot = h & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+    hash[i] = nan ? kNaN : (h & (cap - 1));
+  }
+  constexpr std::size_t kAhead = 8;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (i + kAhead < N && hash[i + kAhead] != kNaN) __builtin_prefetch(&table[hash[i + kAhead]]);
+    const std::uint32_t c = corners[i];
+    if (hash[i] == kNaN) { rep[c] = c; continue; }
+    float k[8];
+    weld_key(in, c, k);
+    for (std::size_t slot = hash[i];; slot = (slot + 1) & (cap - 1)) {
       if (table[slot] == ~0u) { table[slot] = c; rep[c] = c; break; }
       float o[8];
-      key(table[slot], o);
+      weld_key(in, table[slot], o);
       if (std::memcmp(o, k, sizeof k) == 0) { rep[c] = table[slot]; break; }
     }
   }
@@ -240,35 +254,46 @@ int edge_of(const std::uint32_t* idx, std::uint32_t a, std::uint32_t b, std::uin
   return 1;
 }
 
-// Step 5: neighbours across welded edges used in opposite directions; edges sorted by (lower
-// vertex, higher vertex, triangle), the first unpaired match wins.
-void find_neighbours(const Triangles& tris, std::vector<TriInfo>& info) {
-  struct Edge { std::uint32_t i0, i1, f; };
+// Step 5: neighbours across welded edges used in opposite directions; edges in (lower vertex,
+// higher vertex, triangle) order, the first unpaired match wins. The order: a counting sort by the
+// lower vertex (stable: triangles stay ascending), then each vertex's few edges sorted by
+// (higher vertex, triangle).
+void find_neighbours(const Triangles& tris, std::size_t num_welded, std::vector<TriInfo>& info) {
+  struct Edge { std::uint32_t i1, f; };
   const std::size_t T = tris.good;
+  std::vector<std::uint32_t> start(num_welded + 1, 0);
+  for (std::size_t k = 0; k < 3 * T; ++k) {
+    const std::uint32_t a = tris.index[k], b = tris.index[k % 3 < 2 ? k + 1 : k - 2];
+    ++start[std::min(a, b) + 1];
+  }
+  for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
   std::vector<Edge> edges(3 * T);
-  for (std::size_t f = 0; f < T; ++f)
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t a = tris.index[3 * f + i], b = tris.index[3 * f + (i < 2 ? i + 1 : 0)];
-      edges[3 * f + i] = {std::min(a, b), std::max(a, b), std::uint32_t(f)};
+  {
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < 3 * T; ++k) {
+      const std::uint32_t a = tris.index[k], b = tris.index[k % 3 < 2 ? k + 1 : k - 2];
+      edges[next[std::min(a, b)]++] = {std::max(a, b), std::uint32_t(k / 3)};
     }
-  // (i0, i1, f) order: one 64-bit key per edge, f as the tie-break.
-  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
-    const std::uint64_t ka = std::uint64_t(a.i0) << 32 | a.i1, kb = std::uint64_t(b.i0) << 32 | b.i1;
-    return ka != kb ? ka < kb : a.f < b.f;
-  });
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const Edge& e = edges[i];
-    std::uint32_t from_a, to_a;
-    const int edge_a = edge_of(&tris.index[3 * e.f], e.i0, e.i1, from_a, to_a);
-    if (info[e.f].neighbour[edge_a] != -1) continue;
-    for (std::size_t j = i + 1; j < edges.size() && edges[j].i0 == e.i0 && edges[j].i1 == e.i1; ++j) {
-      const std::uint32_t t = edges[j].f;
-      std::uint32_t from_b, to_b;
-      const int edge_b = edge_of(&tris.index[3 * t], e.i0, e.i1, from_b, to_b);
-      if (from_a == to_b && to_a == from_b && info[t].neighbour[edge_b] == -1) {
-        info[e.f].neighbour[edge_a] = std::int32_t(t);
-        info[t].neighbour[edge_b] = std::int32_t(e.f);
-        break;
+  }
+  for (std::size_t v = 0; v < num_welded; ++v)
+    std::sort(edges.begin() + start[v], edges.begin() + start[v + 1],
+              [](const Edge& a, const Edge& b) { return a.i1 != b.i1 ? a.i1 < b.i1 : a.f < b.f; });
+  for (std::size_t v = 0; v < num_welded; ++v) {
+    const auto i0 = std::uint32_t(v);
+    for (std::size_t i = start[v]; i < start[v + 1]; ++i) {
+      const Edge& e = edges[i];
+      std::uint32_t from_a, to_a;
+      const int edge_a = edge_of(&tris.index[3 * e.f], i0, e.i1, from_a, to_a);
+      if (info[e.f].neighbour[edge_a] != -1) continue;
+      for (std::size_t j = i + 1; j < start[v + 1] && edges[j].i1 == e.i1; ++j) {
+        const std::uint32_t t = edges[j].f;
+        std::uint32_t from_b, to_b;
+        const int edge_b = edge_of(&tris.index[3 * t], i0, e.i1, from_b, to_b);
+        if (from_a == to_b && to_a == from_b && info[t].neighbour[edge_b] == -1) {
+          info[e.f].neighbour[edge_a] = std::int32_t(t);
+          info[t].neighbour[edge_b] = std::int32_t(e.f);
+          break;
+        }
       }
     }
   }
@@ -315,27 +340,30 @@ void build_groups(Triangles& tris, std::vector<TriInfo>& info, std::vector<Group
     }
 }
 
-// The frame of one sub-group at vertex `rep`: members' projected derivatives weighted by the
-// corner angle of the triangle projected onto the normal's plane.
-TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const Corners& in, const Triangles& tris,
+// The frame of one sub-group at vertex `rep`: members' projected derivatives (ps, pt: those of
+// the group's members onto the vertex normal, by position in the group) weighted by the corner
+// angle of the triangle projected onto the normal's plane. `sub`: positions in the group, in
+// ascending triangle order (the order of the sums).
+TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const std::uint32_t* tri, const std::vector<F3>& ps,
+                      const std::vector<F3>& pt, const Corners& in, const Triangles& tris,
                       const std::vector<TriInfo>& info, std::uint32_t rep) {
   TSpace res;
   res.os = {0, 0, 0};
   res.ot = {0, 0, 0};
   res.mag_s = res.mag_t = 0;
   float angle_sum = 0;
-  for (std::uint32_t f : sub) {
+  for (std::uint32_t j : sub) {
+    const std::uint32_t f = tri[j];
     if (tris.flag[f] & kGroupWithAny) continue;
     const std::uint32_t* idx = &tris.index[3 * f];
     const int i = corner_at(idx, rep);
     const F3 n = in.normal[idx[i]];
-    const F3 os = project_unit(info[f].os, n), ot = project_unit(info[f].ot, n);
     const F3 p0 = in.position[idx[i > 0 ? i - 1 : 2]], p1 = in.position[idx[i]], p2 = in.position[idx[i < 2 ? i + 1 : 0]];
     const F3 v1 = project_unit(p0 - p1, n), v2 = project_unit(p2 - p1, n);
     const float c = std::min(1.0f, std::max(-1.0f, dot(v1, v2)));
     const float angle = float(std::acos(double(c)));
-    res.os = res.os + scale(angle, os);
-    res.ot = res.ot + scale(angle, ot);
+    res.os = res.os + scale(angle, ps[j]);
+    res.ot = res.ot + scale(angle, pt[j]);
     res.mag_s += angle * info[f].mag_s;
     res.mag_t += angle * info[f].mag_t;
     angle_sum += angle;
@@ -383,6 +411,33 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
       ps[j] = project_unit(info[tri[j]].os, n);
       pt[j] = project_unit(info[tri[j]].ot, n);
     }
+    // The common case: every pair of members joins (none antiparallel), so every member's
+    // sub-group is the whole group: one frame, of the members in ascending order.
+    bool whole = true;
+    for (std::uint32_t i = 0; i < group.count && whole; ++i)
+      for (std::uint32_t j = i + 1; j < group.count && whole; ++j) {
+        const std::uint32_t f = tri[i], t = tri[j];
+        const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
+        const bool same_face = tris.face[f] == tris.face[t];
+        whole = any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos);
+      }
+    auto by_triangle = [tri](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; };
+    if (whole) {
+      sub.resize(group.count);
+      for (std::uint32_t j = 0; j < group.count; ++j) sub[j] = j;
+      std::sort(sub.begin(), sub.end(), by_triangle);
+      const TSpace frame = evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative);
+      for (std::uint32_t i = 0; i < group.count; ++i) {
+        const std::uint32_t f = tri[i];
+        const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
+        TSpace& o = out[tris.corner[3 * f + index]];
+        o = o.counter >= 1 ? average(o, frame) : frame;
+        o.counter += 1;
+        o.orient = group.orient;
+        o.assigned = true;
+      }
+      continue;
+    }
     sub_members.clear();
     sub_offset.assign(1, 0);
     unique_frames.clear();
@@ -394,9 +449,9 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
         const std::uint32_t t = tri[j];
         const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
         const bool same_face = tris.face[f] == tris.face[t];
-        if (any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos)) sub.push_back(t);
+        if (any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos)) sub.push_back(j);
       }
-      std::sort(sub.begin(), sub.end());
+      std::sort(sub.begin(), sub.end(), by_triangle);
       std::size_t l = 0;
       const std::size_t known = unique_frames.size();
       while (l < known && !(sub_offset[l + 1] - sub_offset[l] == sub.size() &&
@@ -405,7 +460,7 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
       if (l == known) {
         sub_members.insert(sub_members.end(), sub.begin(), sub.end());
         sub_offset.push_back(std::uint32_t(sub_members.size()));
-        unique_frames.push_back(evaluate_frame(sub, in, tris, info, group.representative));
+        unique_frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
       }
       TSpace& o = out[tris.corner[3 * f + index]];
       o = o.counter >= 1 ? average(o, unique_frames[l]) : unique_frames[l];
@@ -496,7 +551,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   set_aside_degenerate(mesh, in, tris);
   std::vector<TriInfo> info(tris.good);
   triangle_derivatives(mesh, in, tris, info);
-  find_neighbours(tris, info);
+  find_neighbours(tris, C, info);
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
   members.reserve(3 * tris.good);
