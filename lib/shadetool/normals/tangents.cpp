@@ -70,9 +70,7 @@ struct Group {
 struct TSpace {
   F3 os{1, 0, 0}, ot{0, 1, 0};
   float mag_s = 1, mag_t = 1;
-  int counter = 0;
   bool orient = false;
-  bool assigned = false;  // not the reference's: whether any frame reached this corner (a count)
 };
 
 // Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners).
@@ -390,17 +388,37 @@ TSpace average(const TSpace& a, const TSpace& b) {
   return r;
 }
 
+// The frames reached per corner, by index: each distinct frame stored once (about one per group),
+// every corner the index of its own (~0u: none reached it; the reference's default then).
+struct CornerFrames {
+  std::vector<TSpace> frames;
+  std::vector<std::uint32_t> of;  // #C
+
+  // Corner c receives frames[f] from a group of orientation `orient`: its own when it had none,
+  // else the mean with the one it has (the two triangles of a quad), in the later group's orientation.
+  void receive(std::uint32_t c, std::uint32_t f, bool orient) {
+    if (of[c] == ~0u) {
+      of[c] = f;  // frames[f].orient is its group's
+      return;
+    }
+    TSpace r = average(frames[of[c]], frames[f]);
+    r.orient = orient;
+    frames.push_back(r);
+    of[c] = std::uint32_t(frames.size() - 1);
+  }
+};
+
 // Step 7: sub-groups and their frames, written to each triangle's corner.
 void group_frames(const Corners& in, const Triangles& tris, const std::vector<TriInfo>& info,
                   const std::vector<Group>& groups, const std::vector<std::uint32_t>& members,
-                  std::vector<TSpace>& out) {
+                  CornerFrames& out) {
   // The reference's angular threshold, 180 degrees: cos(float(pi)) rounded to float is exactly -1.
   const float threshold_cos = -1.0f;
   std::vector<F3> ps, pt;
   std::vector<std::uint32_t> sub;
-  // This group's distinct sub-groups: members in one flat buffer (offsets), and their frames.
+  // This group's distinct sub-groups: members in one flat buffer (offsets); their frames are
+  // out.frames[base, base + count).
   std::vector<std::uint32_t> sub_members, sub_offset;
-  std::vector<TSpace> unique_frames;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const Group& group = groups[g];
     const std::uint32_t* tri = &members[group.offset];
@@ -426,21 +444,19 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
       sub.resize(group.count);
       for (std::uint32_t j = 0; j < group.count; ++j) sub[j] = j;
       std::sort(sub.begin(), sub.end(), by_triangle);
-      const TSpace frame = evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative);
+      out.frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+      out.frames.back().orient = group.orient;
+      const auto frame = std::uint32_t(out.frames.size() - 1);
       for (std::uint32_t i = 0; i < group.count; ++i) {
         const std::uint32_t f = tri[i];
         const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
-        TSpace& o = out[tris.corner[3 * f + index]];
-        o = o.counter >= 1 ? average(o, frame) : frame;
-        o.counter += 1;
-        o.orient = group.orient;
-        o.assigned = true;
+        out.receive(tris.corner[3 * f + index], frame, group.orient);
       }
       continue;
     }
     sub_members.clear();
     sub_offset.assign(1, 0);
-    unique_frames.clear();
+    const std::size_t base = out.frames.size();
     for (std::uint32_t i = 0; i < group.count; ++i) {
       const std::uint32_t f = tri[i];
       const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
@@ -453,26 +469,23 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
       }
       std::sort(sub.begin(), sub.end(), by_triangle);
       std::size_t l = 0;
-      const std::size_t known = unique_frames.size();
+      const std::size_t known = sub_offset.size() - 1;
       while (l < known && !(sub_offset[l + 1] - sub_offset[l] == sub.size() &&
                             std::equal(sub.begin(), sub.end(), sub_members.begin() + sub_offset[l])))
         ++l;
       if (l == known) {
         sub_members.insert(sub_members.end(), sub.begin(), sub.end());
         sub_offset.push_back(std::uint32_t(sub_members.size()));
-        unique_frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+        out.frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+        out.frames.back().orient = group.orient;
       }
-      TSpace& o = out[tris.corner[3 * f + index]];
-      o = o.counter >= 1 ? average(o, unique_frames[l]) : unique_frames[l];
-      o.counter += 1;
-      o.orient = group.orient;
-      o.assigned = true;
+      out.receive(tris.corner[3 * f + index], std::uint32_t(base + l), group.orient);
     }
   }
 }
 
 // Step 8: frames for the corners of degenerate triangles.
-void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tris, std::vector<TSpace>& out) {
+void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tris, std::vector<std::uint32_t>& out) {
   const std::size_t T = tris.face.size(), good = tris.good;
   std::vector<std::uint32_t> first(in.position.size(), ~0u);  // welded vertex -> first healthy corner slot
   for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
@@ -556,9 +569,12 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   std::vector<std::uint32_t> members;
   members.reserve(3 * tris.good);
   build_groups(tris, info, groups, members);
-  std::vector<TSpace> frames(C);
+  CornerFrames frames;
+  frames.frames.reserve(groups.size() + groups.size() / 8);
+  frames.of.assign(C, ~0u);
   group_frames(in, tris, info, groups, members, frames);
-  degenerate_frames(mesh, in, tris, frames);
+  degenerate_frames(mesh, in, tris, frames.of);
+  const TSpace none;  // the reference's default frame
 
   TangentFrames out;
   out.tangents.resize(4 * C);
@@ -571,10 +587,11 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
         ++out.fallback_corners;
         continue;
       }
-      const TSpace& s = frames[c];
+      const std::uint32_t k = frames.of[c];
+      const TSpace& s = k != ~0u ? frames.frames[k] : none;
       o[0] = s.os.x; o[1] = s.os.y; o[2] = s.os.z;
       o[3] = s.orient ? 1.0 : -1.0;
-      if (!s.assigned) ++out.default_corners;
+      if (k == ~0u) ++out.default_corners;
     }
   return out;
 }
