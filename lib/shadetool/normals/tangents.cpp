@@ -42,8 +42,15 @@ F3 project_unit(F3 v, F3 n) {
 constexpr std::uint8_t kDegenerate = 1, kQuadOneDegenerate = 2, kGroupWithAny = 4, kOrientPreserving = 8;
 
 // The algorithm's view of the mesh: per corner of the faces it takes, the float inputs.
+// The algorithm's view of the mesh: float copies of the values corners refer to (positions,
+// normals, texture coordinates: each converted once), and per corner the index of each.
 struct Corners {
-  std::vector<F3> position, normal, texcoord;  // by global corner index (texcoord z = 1, unused)
+  std::vector<F3> positions, normals, texcoords;  // texcoords: z = 1, unused
+  const std::uint32_t *vertex = nullptr, *normal = nullptr, *texcoord = nullptr;  // #C each
+  std::size_t num_corners = 0;
+  F3 position(std::uint32_t c) const { return positions[vertex[c]]; }
+  F3 normal_of(std::uint32_t c) const { return normals[normal[c]]; }
+  F3 texcoord_of(std::uint32_t c) const { return texcoords[texcoord[c]]; }
 };
 
 struct Triangles {
@@ -88,11 +95,11 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
     } else if (n == 4) {
       // The shorter diagonal in texture space; tied: in space; still tied: 0-2.
       auto dist2 = [](F3 a, F3 c) { const F3 d = c - a; return d.x * d.x + d.y * d.y + d.z * d.z; };
-      const float t02 = dist2(in.texcoord[b], in.texcoord[b + 2]), t13 = dist2(in.texcoord[b + 1], in.texcoord[b + 3]);
+      const float t02 = dist2(in.texcoord_of(b), in.texcoord_of(b + 2)), t13 = dist2(in.texcoord_of(b + 1), in.texcoord_of(b + 3));
       bool diagonal_02;
       if (t02 < t13) diagonal_02 = true;
       else if (t13 < t02) diagonal_02 = false;
-      else diagonal_02 = !(dist2(in.position[b + 1], in.position[b + 3]) < dist2(in.position[b], in.position[b + 2]));
+      else diagonal_02 = !(dist2(in.position(b + 1), in.position(b + 3)) < dist2(in.position(b), in.position(b + 2)));
       if (diagonal_02) { add(fu, b, b + 1, b + 2); add(fu, b, b + 2, b + 3); }
       else { add(fu, b, b + 1, b + 3); add(fu, b + 1, b + 2, b + 3); }
     } else {
@@ -108,13 +115,13 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
 // then the corners inserted in order, the slot of a corner a few places ahead prefetched (the
 // table is larger than the caches and its slots random: the wait for memory is the cost).
 void weld_key(const Corners& in, std::uint32_t c, float* k) {
-  const F3 &p = in.position[c], &n = in.normal[c], &t = in.texcoord[c];
+  const F3 p = in.position(c), n = in.normal_of(c), t = in.texcoord_of(c);
   const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
   for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
 }
 
 std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32_t>& corners) {
-  const std::size_t C = in.position.size(), N = corners.size();
+  const std::size_t C = in.num_corners, N = corners.size();
   std::vector<std::uint32_t> rep(C, 0);
   std::size_t cap = 16;
   while (cap < 2 * N) cap *= 2;
@@ -158,7 +165,7 @@ std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32
 void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) {
   const std::size_t T = tris.face.size();
   for (std::size_t t = 0; t < T; ++t) {
-    const F3 p0 = in.position[tris.index[3 * t]], p1 = in.position[tris.index[3 * t + 1]], p2 = in.position[tris.index[3 * t + 2]];
+    const F3 p0 = in.position(tris.index[3 * t]), p1 = in.position(tris.index[3 * t + 1]), p2 = in.position(tris.index[3 * t + 2]);
     if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate;
   }
   for (std::size_t t = 0; t + 1 < T;) {
@@ -194,7 +201,7 @@ void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) 
 }
 
 float texture_area(const Corners& in, const std::uint32_t* idx) {
-  const F3 t1 = in.texcoord[idx[0]], t2 = in.texcoord[idx[1]], t3 = in.texcoord[idx[2]];
+  const F3 t1 = in.texcoord_of(idx[0]), t2 = in.texcoord_of(idx[1]), t3 = in.texcoord_of(idx[2]);
   const float a = (t2.x - t1.x) * (t3.y - t1.y) - (t2.y - t1.y) * (t3.x - t1.x);
   return a < 0 ? -a : a;
 }
@@ -206,8 +213,8 @@ void triangle_derivatives(const Mesh& mesh, const Corners& in, Triangles& tris, 
     std::uint8_t& flag = tris.flag[f];
     flag |= kGroupWithAny;  // assumed bad
     const std::uint32_t* idx = &tris.index[3 * f];
-    const F3 v1 = in.position[idx[0]], v2 = in.position[idx[1]], v3 = in.position[idx[2]];
-    const F3 t1 = in.texcoord[idx[0]], t2 = in.texcoord[idx[1]], t3 = in.texcoord[idx[2]];
+    const F3 v1 = in.position(idx[0]), v2 = in.position(idx[1]), v3 = in.position(idx[2]);
+    const F3 t1 = in.texcoord_of(idx[0]), t2 = in.texcoord_of(idx[1]), t3 = in.texcoord_of(idx[2]);
     const float t21x = t2.x - t1.x, t21y = t2.y - t1.y, t31x = t3.x - t1.x, t31y = t3.y - t1.y;
     const F3 d1 = v2 - v1, d2 = v3 - v1;
     const float signed_area2 = t21x * t31y - t21y * t31x;
@@ -355,8 +362,8 @@ TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const std::uint32_t
     if (tris.flag[f] & kGroupWithAny) continue;
     const std::uint32_t* idx = &tris.index[3 * f];
     const int i = corner_at(idx, rep);
-    const F3 n = in.normal[idx[i]];
-    const F3 p0 = in.position[idx[i > 0 ? i - 1 : 2]], p1 = in.position[idx[i]], p2 = in.position[idx[i < 2 ? i + 1 : 0]];
+    const F3 n = in.normal_of(idx[i]);
+    const F3 p0 = in.position(idx[i > 0 ? i - 1 : 2]), p1 = in.position(idx[i]), p2 = in.position(idx[i < 2 ? i + 1 : 0]);
     const F3 v1 = project_unit(p0 - p1, n), v2 = project_unit(p2 - p1, n);
     const float c = std::min(1.0f, std::max(-1.0f, dot(v1, v2)));
     const float angle = float(std::acos(double(c)));
@@ -422,7 +429,7 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const Group& group = groups[g];
     const std::uint32_t* tri = &members[group.offset];
-    const F3 n = in.normal[group.representative];  // every corner of the group has this normal
+    const F3 n = in.normal_of(group.representative);  // every corner of the group has this normal
     ps.resize(group.count);
     pt.resize(group.count);
     for (std::uint32_t j = 0; j < group.count; ++j) {
@@ -487,7 +494,7 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
 // Step 8: frames for the corners of degenerate triangles.
 void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tris, std::vector<std::uint32_t>& out) {
   const std::size_t T = tris.face.size(), good = tris.good;
-  std::vector<std::uint32_t> first(in.position.size(), ~0u);  // welded vertex -> first healthy corner slot
+  std::vector<std::uint32_t> first(in.num_corners, ~0u);  // welded vertex -> first healthy corner slot
   for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
   for (std::size_t t = good; t < T; ++t) {
     if (tris.flag[t] & kQuadOneDegenerate) continue;
@@ -503,9 +510,9 @@ void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tri
     for (int i = 0; i < 3; ++i) present |= 1u << (tris.corner[3 * t + i] - b);
     std::uint32_t missing = 0;
     while (present & (1u << missing)) ++missing;
-    const F3 dst = in.position[b + missing];
+    const F3 dst = in.position(b + missing);
     for (int i = 0; i < 3; ++i)
-      if (in.position[tris.corner[3 * t + i]] == dst) {
+      if (in.position(tris.corner[3 * t + i]) == dst) {
         out[b + missing] = out[tris.corner[3 * t + i]];
         break;
       }
@@ -536,9 +543,32 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   // Faces taken: 3+ corners, every one textured.
   std::vector<std::uint8_t> taken(F, 0);
   Corners in;
-  in.position.resize(C);
-  in.normal.resize(C);
-  in.texcoord.resize(C);
+  in.positions.resize(mesh.num_vertices());
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+    const Vec3d p = mesh.position(v);
+    in.positions[v] = {float(p.x), float(p.y), float(p.z)};
+  }
+  const std::vector<double>& normal_values = mesh.has_corner_normals()   ? mesh.corner_normals
+                                             : mesh.has_vertex_normals() ? mesh.vertex_normals
+                                                                         : mesh.face_normals;
+  in.normals.resize(normal_values.size() / 3);
+  for (std::size_t k = 0; k < in.normals.size(); ++k)
+    in.normals[k] = {float(normal_values[3 * k]), float(normal_values[3 * k + 1]), float(normal_values[3 * k + 2])};
+  const std::size_t stride = std::size_t(std::max(dims, 1));
+  in.texcoords.resize(dims >= 2 ? mesh.texcoords.size() / stride : 0);
+  for (std::size_t k = 0; k < in.texcoords.size(); ++k)
+    in.texcoords[k] = {float(mesh.texcoords[stride * k]), float(mesh.texcoords[stride * k + 1]), 1.0f};
+  std::vector<std::uint32_t> corner_face;  // face normals: the normal index of a corner is its face
+  if (!mesh.has_corner_normals() && !mesh.has_vertex_normals()) {
+    corner_face.resize(C);
+    for (std::size_t f = 0; f < F; ++f)
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) corner_face[c] = std::uint32_t(f);
+  }
+  in.num_corners = C;
+  in.vertex = mesh.corner_vertex.data();
+  in.normal = mesh.has_corner_normals() ? mesh.corner_normal_index.data()
+              : mesh.has_vertex_normals() ? mesh.corner_vertex.data() : corner_face.data();
+  in.texcoord = mesh.corner_texcoord_index.data();
   std::vector<std::uint32_t> corners;
   corners.reserve(C);
   for (std::size_t f = 0; f < F; ++f) {
@@ -547,14 +577,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
       ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
     taken[f] = ok;
     if (!ok) continue;
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      const Vec3d p = mesh.position(mesh.corner_vertex[c]), n = corner_normal(c, f);
-      const std::size_t t = std::size_t(mesh.corner_texcoord_index[c]) * std::size_t(dims);
-      in.position[c] = {float(p.x), float(p.y), float(p.z)};
-      in.normal[c] = {float(n.x), float(n.y), float(n.z)};
-      in.texcoord[c] = {float(mesh.texcoords[t]), float(mesh.texcoords[t + 1]), 1.0f};
-      corners.push_back(std::uint32_t(c));
-    }
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) corners.push_back(std::uint32_t(c));
   }
   Triangles tris;
   make_triangles(mesh, in, taken, tris);
