@@ -111,10 +111,10 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
 
 // Step 2: welded vertex of every corner: the first corner with the same (position, normal,
 // texture coordinate) as float ==. An open-addressing table keyed by the values (-0 as +0);
-// a corner with a NaN equals nothing. Two passes: every corner's key hashed (in order, a stream),
-// then the corners inserted in order, the slot of a corner a few places ahead prefetched (the
-// table is larger than the caches and its slots random: the wait for memory is the cost).
-void weld_key(const Corners& in, std::uint32_t c, float* k) {
+// a corner with a NaN equals nothing. The corners go in in order; the slot of the corner 8 places
+// ahead is hashed and prefetched meanwhile (the table is larger than the caches and its slots
+// random: the wait for memory is the cost).
+[[gnu::always_inline]] inline void weld_key(const Corners& in, std::uint32_t c, float* k) {
   const F3 p = in.position(c), n = in.normal_of(c), t = in.texcoord_of(c);
   const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
   for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
@@ -126,12 +126,10 @@ std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32
   std::size_t cap = 16;
   while (cap < 2 * N) cap *= 2;
   std::vector<std::uint32_t> table(cap, ~0u);
-  constexpr std::uint64_t kNaN = ~0ull;  // a key with a NaN: not hashed (no real hash is all ones
-                                         // after the masking below)
-  std::vector<std::uint64_t> hash(N);
-  for (std::size_t i = 0; i < N; ++i) {
+  constexpr std::uint64_t kNaN = ~0ull;  // a key with a NaN: not hashed (a slot is below cap)
+  auto slot_of = [&](std::uint32_t c) {
     float k[8];
-    weld_key(in, corners[i], k);
+    weld_key(in, c, k);
     bool nan = false;
     std::uint64_t h = 0x9E3779B97F4A7C15ull;
     for (float x : k) {
@@ -141,16 +139,22 @@ std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32
       h = (h ^ bits) * 0xff51afd7ed558ccdull;
       h ^= h >> 32;
     }
-    hash[i] = nan ? kNaN : (h & (cap - 1));
-  }
-  constexpr std::size_t kAhead = 8;
+    return nan ? kNaN : (h & (cap - 1));
+  };
+  constexpr std::size_t kAhead = 8;  // the slots of the next kAhead corners, in a ring
+  std::uint64_t ahead[kAhead];
+  for (std::size_t i = 0; i < kAhead && i < N; ++i) ahead[i] = slot_of(corners[i]);
   for (std::size_t i = 0; i < N; ++i) {
-    if (i + kAhead < N && hash[i + kAhead] != kNaN) __builtin_prefetch(&table[hash[i + kAhead]]);
+    const std::uint64_t first_slot = ahead[i % kAhead];
+    if (i + kAhead < N) {
+      ahead[i % kAhead] = slot_of(corners[i + kAhead]);
+      if (ahead[i % kAhead] != kNaN) __builtin_prefetch(&table[ahead[i % kAhead]]);
+    }
     const std::uint32_t c = corners[i];
-    if (hash[i] == kNaN) { rep[c] = c; continue; }
+    if (first_slot == kNaN) { rep[c] = c; continue; }
     float k[8];
     weld_key(in, c, k);
-    for (std::size_t slot = hash[i];; slot = (slot + 1) & (cap - 1)) {
+    for (std::size_t slot = first_slot;; slot = (slot + 1) & (cap - 1)) {
       if (table[slot] == ~0u) { table[slot] = c; rep[c] = c; break; }
       float o[8];
       weld_key(in, table[slot], o);
