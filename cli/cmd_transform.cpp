@@ -189,7 +189,8 @@ RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::fu
     const bool singular = cls.path == shadetool::TransformPath::Singular;
     const bool no_map = maps.empty();
 
-    return run_command("transform", io, [M, options, no_map, singular](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
+    const bool similarity = shadetool::mapped_tangents_stay_mikktspace(cls.path);
+    return run_command("transform", io, [M, options, no_map, singular, similarity](shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
       const bool had_normals = mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals();
       shadetool::TransformOptions file_options = options;
       if (singular && had_normals && options.normals == shadetool::NormalsPolicy::Transform)
@@ -228,12 +229,16 @@ RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::fu
       }
       if (options.normals == shadetool::NormalsPolicy::Recompute && !had_normals)
         r.notes.push_back("the input has no normals: nothing to recompute");
-      // glTF: recomputed normals get TANGENT recomputed by MikkTSpace (gltf_tangents.h). Mapped
-      // normals keep the mapped tangents: under p -> A p + t each triangle's texture derivative
-      // dP/du maps to A dP/du exactly and stays orthogonal to the cofactor-mapped normal.
-      if (r.gltf && r.gltf_document && had_normals && file_options.normals == shadetool::NormalsPolicy::Recompute) {
+      // glTF: new normals get TANGENT recomputed by MikkTSpace (gltf_tangents.h): recomputed
+      // normals, and normals mapped by a map that is not a similarity (gltf_transform.h,
+      // mapped_tangents_stay_mikktspace). A similarity keeps the mapped tangents: they are the
+      // MikkTSpace frames of the mapped mesh.
+      const bool recomputed = had_normals && file_options.normals == shadetool::NormalsPolicy::Recompute;
+      const bool non_similar = had_normals && file_options.normals == shadetool::NormalsPolicy::Transform && !similarity;
+      if (r.gltf && r.gltf_document && (recomputed || non_similar)) {
         const std::string note = shadetool::gltf_update_tangents(*r.gltf_document, *r.gltf, false);
-        if (!note.empty()) r.notes.push_back(note);
+        if (!note.empty())
+          r.notes.push_back(non_similar ? note + " (the map is not a similarity: mapped tangents would not be MikkTSpace's)" : note);
       }
     }, OutputKind::Mesh);
   };

@@ -121,25 +121,35 @@ check "repair --weld on a primitive with texcoords/skin/targets: exit 1" test $?
 check "repair --weld: names what cannot follow" grep -q "TEXCOORD_0.*cannot follow" "$tmp/err.txt"
 check "repair --weld: no output" test ! -e "$tmp/rw.glb"
 
-# transform: a mirror with a non-uniform scale.
-"$bin" transform "$fx/rich.glb" --scale -1,2,1 -o "$tmp/t.glb" -q
+# transform: a mirror with a non-uniform scale (not a similarity: TANGENT recomputed by MikkTSpace
+# from the mapped normals, with a note; on the cube's flat faces its direction is still A t), and a
+# mirror alone (a similarity: TANGENT mapped, w flipped, gltf/gltf_transform.h).
+"$bin" transform "$fx/rich.glb" --scale -1,2,1 -o "$tmp/t.glb" 2> "$tmp/t.err"
 check "transform: kept" gcheck keep "$fx/rich.glb" "$tmp/t.glb" --changed POSITION,NORMAL,TANGENT
 check "transform: valid (min/max updated)" valid "$tmp/t.glb"
-check "transform: POSITION x negated, y doubled; TANGENT mapped, w flipped; morph deltas mapped" "$py" -c '
+check "transform: a map that is not a similarity recomputes TANGENT (note)" grep -q "TANGENT recomputed (MikkTSpace) with the new normals (the map is not a similarity" "$tmp/t.err"
+"$bin" transform "$fx/rich.glb" --scale -1,1,1 -o "$tmp/tm.glb" 2> "$tmp/tm.err"
+check "transform: a similarity keeps the mapped TANGENT (no note)" test "$(grep -c "TANGENT recomputed" "$tmp/tm.err")" -eq 0
+transform_check() {  # OUT SX SY W_FLIPPED: POSITION (x, y) scaled; TANGENT along A t (w flipped, if asked); re-wound; morph deltas mapped
+  "$py" -c '
 import json,subprocess,sys
+sx,sy,wflip=float(sys.argv[5]),float(sys.argv[6]),sys.argv[7]=="1"
 def dump(f,a): return json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",f,"0","0",a]))
 pi,po=dump(sys.argv[3],"POSITION"),dump(sys.argv[4],"POSITION")
 ti,to=dump(sys.argv[3],"TANGENT"),dump(sys.argv[4],"TANGENT")
 ci,co=json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[3],"0","0","corners"])),json.loads(subprocess.check_output([sys.argv[1],sys.argv[2],"dump",sys.argv[4],"0","0","corners"]))
 assert len(po)==len(pi)
-for a,b in zip(pi,po): assert b==[-a[0],2*a[1],a[2]], (a,b)
+for a,b in zip(pi,po): assert b==[sx*a[0],sy*a[1],a[2]], (a,b)
 for a,b in zip(ti,to):
-  m=[-a[0],2*a[1],a[2]]; l=sum(x*x for x in m)**0.5
-  assert all(abs(m[k]/l-b[k])<1e-6 for k in range(3)) and b[3]==-a[3], (a,b)
+  m=[sx*a[0],sy*a[1],a[2]]; l=sum(x*x for x in m)**0.5
+  assert all(abs(m[k]/l-b[k])<1e-6 for k in range(3)) and abs(b[3])==1 and (not wflip or b[3]==-a[3]), (a,b)
 assert co==[c for t in range(0,len(ci),3) for c in (ci[t],ci[t+2],ci[t+1])], "mirror re-winds"
 di,do=dump(sys.argv[3],"targets.0.POSITION"),dump(sys.argv[4],"targets.0.POSITION")
-for a,b in zip(di,do): assert b==[-a[0],2*a[1],a[2]], (a,b)
-' "$py" "$src/tests/gltf/gltf_check.py" "$fx/rich.glb" "$tmp/t.glb"
+for a,b in zip(di,do): assert b==[sx*a[0],sy*a[1],a[2]], (a,b)
+' "$py" "$src/tests/gltf/gltf_check.py" "$fx/rich.glb" "$@"
+}
+check "transform --scale -1,2,1: POSITION x negated, y doubled; TANGENT along A t; morph deltas mapped" transform_check "$tmp/t.glb" -1 2 0
+check "transform --scale -1,1,1: POSITION x negated; TANGENT mapped, w flipped; morph deltas mapped" transform_check "$tmp/tm.glb" -1 1 1
 
 # bake-lighting: the file's own lights and camera; COLOR_0 in the input's type (normalised ubyte).
 "$bin" bake-lighting "$fx/rich.glb" -o "$tmp/b.glb" -q

@@ -19,6 +19,7 @@
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/tangents.h>
 #include <shadetool/normals/update_mesh_normals.h>
+#include "support/mikktspace_reference.h"
 #include "support/run_process.h"
 
 using namespace shadetool;
@@ -120,23 +121,6 @@ TEST_CASE("MikkTSpace: faces without texture coordinates get a tangent perpendic
 
 namespace {
 
-// The reference run under node, from the build tree (npm install on first use). Empty when not available.
-std::string reference_dir() {
-  static std::string dir = [] {
-    char cwd[4096];
-    if (!::getcwd(cwd, sizeof cwd)) return std::string();
-    const std::string prefix = std::string(cwd) + "/mikktspace-node";  // ctest runs tests in the build tree
-    struct stat st;
-    if (::stat((prefix + "/node_modules/mikktspace").c_str(), &st) != 0) {
-      if (std::system("command -v node > /dev/null && command -v npm > /dev/null") != 0) return std::string();
-      const std::string cmd = "npm install --silent --no-audit --no-fund --prefix '" + prefix + "' mikktspace > /dev/null 2>&1";
-      if (std::system(cmd.c_str()) != 0) return std::string();
-    }
-    return prefix;
-  }();
-  return dir;
-}
-
 // Every triangle with all corners textured, as the reference's unindexed input; the same floats
 // mikktspace_tangents rounds its input to.
 struct Unindexed {
@@ -219,7 +203,7 @@ std::vector<std::string> textured_meshes() {
 
 // Every textured mesh in data/ and the corpus: the same w at every corner, directions within 1e-3 degrees.
 TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on real files", "[tangents][reference]") {
-  const std::string ref = reference_dir();
+  const std::string ref = shadetool_test::mikktspace_reference_dir();
   if (ref.empty()) {
     WARN("SKIPPED: the MikkTSpace reference (node + npm install mikktspace failed: no node or no registry)");
     return;
@@ -241,20 +225,10 @@ TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on real files", "[ta
     m = fan_triangles(m);
     const Unindexed u = unindexed(m);
     if (u.corner.empty()) continue;
-    const std::string in = "tangents_ref_in.f32", out = "tangents_ref_out.f32";
-    {
-      std::ofstream f(in, std::ios::binary);
-      f.write(reinterpret_cast<const char*>(u.data.data()), std::streamsize(u.data.size() * sizeof(float)));
-    }
-    const auto run = shadetool_test::run_process(
-        {"/usr/bin/env", "NODE_PATH=" + ref + "/node_modules", "node",
-         std::string(SHADETOOL_SOURCE_DIR) + "/tests/normals/mikktspace_reference.js", in, out});
-    INFO(path << ": " << run.err);
-    REQUIRE(run.code == 0);
-    const std::string bytes = shadetool_test::read_file(out);
-    REQUIRE(bytes.size() == 4 * sizeof(float) * u.corner.size());
-    std::vector<float> expected(bytes.size() / sizeof(float));
-    std::memcpy(expected.data(), bytes.data(), bytes.size());
+    std::string error;
+    const std::vector<float> expected = shadetool_test::mikktspace_reference(u.data, "tangents_ref", error);
+    INFO(path << ": " << error);
+    REQUIRE(expected.size() == 4 * u.corner.size());
     const TangentFrames t = mikktspace_tangents(m);
     std::size_t w_differs = 0, direction_differs = 0;
     double worst = 0;
@@ -275,6 +249,4 @@ TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on real files", "[ta
   WARN("MikkTSpace reference: " << meshes << " textured meshes, " << corners << " corners, worst direction "
                                 << overall_worst << " degrees");
   CHECK(meshes >= 1);
-  std::remove("tangents_ref_in.f32");
-  std::remove("tangents_ref_out.f32");
 }

@@ -61,4 +61,18 @@ GltfTransformReport transform_gltf_extras(GltfPrimitive& p, const Affine3d& M, b
   return rep;
 }
 
+bool mapped_tangents_stay_mikktspace(TransformPath path) {
+  switch (path) {
+    case TransformPath::Identity:
+    case TransformPath::Translation:
+    case TransformPath::Rotation:
+    case TransformPath::UniformScale:
+      return true;
+    case TransformPath::General:
+    case TransformPath::Singular:
+      return false;
+  }
+  return false;
+}
+
 }  // namespace shadetool

@@ -16,12 +16,23 @@
 //                  cof(A), normalised on the general path): the displaced normal maps as a normal.
 // Double precision throughout; the singular map leaves tangents and normal deltas as read (the
 // command refuses it where normals are transformed).
+//
+// mapped_tangents_stay_mikktspace(path): whether the mapped frame (A t, w flipped under a mirror)
+//   of a MikkTSpace frame is the MikkTSpace frame of the mapped mesh, so that the mapped TANGENT
+//   may be kept. True for the similarities (Identity, Translation, Rotation with or without a
+//   mirror, UniformScale): MikkTSpace's steps (projection of dP/du onto the plane of the vertex
+//   normal, normalisation, corner-angle-weighted sums) commute with s Q. False for General: it
+//   changes corner angles, and A does not keep the projection onto the normal's plane (A n is not
+//   along cof(A) n), so the frames must be recomputed from the mapped normals (the transform
+//   command does, with a note; tests/gltf/gltf_tangents.cpp checks both against the reference
+//   MikkTSpace). False for Singular (no frame survives).
 #pragma once
 
 #include <cstddef>
 
 #include <shadetool/core/affine.h>
 #include <shadetool/gltf/gltf_document.h>
+#include <shadetool/transform/classify_affine.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
@@ -33,6 +44,8 @@ struct GltfTransformReport {
 };
 
 GltfTransformReport transform_gltf_extras(GltfPrimitive& primitive, const Affine3d& M, bool drop_normals);
+
+bool mapped_tangents_stay_mikktspace(TransformPath path);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

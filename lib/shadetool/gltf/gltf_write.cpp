@@ -267,15 +267,32 @@ Split split_vertices(const Mesh& mesh, bool texcoords, const std::vector<std::ui
     s.corner_output = mesh.corner_vertex;
     return s;
   }
+  // Split by tangent frames only (the rest is per vertex already): every vertex keeps its index
+  // for the first frame its corners use, the vertices split off are appended, so that a primitive
+  // whose frames agree at every vertex keeps its vertex order, and the accessors as read stay
+  // valid beside the new TANGENT.
+  const bool keep_order = per_tangent && !per_face && !per_corner && !texcoords;
+  if (keep_order) {
+    s.source_vertex.resize(mesh.num_vertices());
+    for (std::size_t v = 0; v < s.source_vertex.size(); ++v) s.source_vertex[v] = std::uint32_t(v);
+  }
+  std::vector<bool> claimed(keep_order ? mesh.num_vertices() : 0, false);
   std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> seen;
   seen.reserve(mesh.num_corners());
   for (std::size_t f = 0; f < mesh.num_faces(); ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      const std::uint32_t v = mesh.corner_vertex[c];
       const std::uint64_t second = per_face ? std::uint64_t(f) : per_corner ? std::uint64_t(mesh.corner_normal_index[c]) : 0;
-      const CornerKey key{std::uint64_t(mesh.corner_vertex[c]) << 32 | second, texcoords ? mesh.corner_texcoord_index[c] : 0,
+      const CornerKey key{std::uint64_t(v) << 32 | second, texcoords ? mesh.corner_texcoord_index[c] : 0,
                           per_tangent ? tangent_class[c] : 0};
+      if (keep_order && !claimed[v]) {
+        claimed[v] = true;
+        seen.emplace(key, v);
+        s.corner_output[c] = v;
+        continue;
+      }
       auto [it, fresh] = seen.emplace(key, std::uint32_t(s.source_vertex.size()));
-      if (fresh) s.source_vertex.push_back(mesh.corner_vertex[c]);
+      if (fresh) s.source_vertex.push_back(v);
       s.corner_output[c] = it->second;
     }
   return s;
@@ -305,7 +322,8 @@ struct PrimitiveWriter {
     const Split split = split_vertices(mesh, texcoords, corner_tangents ? tangent_classes(mesh, gp.corner_tangents)
                                                                         : std::vector<std::uint32_t>());
     const bool identity = split.source_vertex.size() == mesh.num_vertices() && !mesh.has_corner_normals() &&
-                          !mesh.has_face_normals() && !mesh.has_face_colors() && !texcoords;
+                          !mesh.has_face_normals() && !mesh.has_face_colors() && !texcoords &&
+                          std::equal(split.corner_output.begin(), split.corner_output.end(), mesh.corner_vertex.begin());
     const std::size_t out_vertices = split.source_vertex.size();
     const bool same_vertices = model && mesh.num_vertices() == gp.read_vertices;
     const bool keep_all = identity && same_vertices;  // accessors as read stay valid

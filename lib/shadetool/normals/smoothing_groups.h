@@ -1,7 +1,8 @@
 // smoothing_groups.h: the smoothing group of every face, from OBJ `s N` / `s off` statements as
 // read (Mesh::group_statements, face_group_run), the way 3ds Max and Blender's OBJ importer treat
 // them when they compute normals: faces in different groups never share a normal, `s off` and
-// `s 0` faces (and faces before the first `s`, in a file that has one) are flat.
+// `s 0` faces (and faces before the first `s`, in a file that has one) are flat. (Blender's legacy
+// importer reads `s 0` as a group named "0", its new importer as flat: tests/blender_normals.sh.)
 //
 // Input:   mesh    group_statements and face_group_run as the OBJ reader keeps them
 // Output:  groups  #F: 0 for a flat face, else a label >= 1 (one per distinct N, in order of first

@@ -42,8 +42,15 @@ F3 project_unit(F3 v, F3 n) {
 constexpr std::uint8_t kDegenerate = 1, kQuadOneDegenerate = 2, kGroupWithAny = 4, kOrientPreserving = 8;
 
 // The algorithm's view of the mesh: per corner of the faces it takes, the float inputs.
+// The algorithm's view of the mesh: float copies of the values corners refer to (positions,
+// normals, texture coordinates: each converted once), and per corner the index of each.
 struct Corners {
-  std::vector<F3> position, normal, texcoord;  // by global corner index (texcoord z = 1, unused)
+  std::vector<F3> positions, normals, texcoords;  // texcoords: z = 1, unused
+  const std::uint32_t *vertex = nullptr, *normal = nullptr, *texcoord = nullptr;  // #C each
+  std::size_t num_corners = 0;
+  F3 position(std::uint32_t c) const { return positions[vertex[c]]; }
+  F3 normal_of(std::uint32_t c) const { return normals[normal[c]]; }
+  F3 texcoord_of(std::uint32_t c) const { return texcoords[texcoord[c]]; }
 };
 
 struct Triangles {
@@ -70,9 +77,7 @@ struct Group {
 struct TSpace {
   F3 os{1, 0, 0}, ot{0, 1, 0};
   float mag_s = 1, mag_t = 1;
-  int counter = 0;
   bool orient = false;
-  bool assigned = false;  // not the reference's: whether any frame reached this corner (a count)
 };
 
 // Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners).
@@ -90,11 +95,11 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
     } else if (n == 4) {
       // The shorter diagonal in texture space; tied: in space; still tied: 0-2.
       auto dist2 = [](F3 a, F3 c) { const F3 d = c - a; return d.x * d.x + d.y * d.y + d.z * d.z; };
-      const float t02 = dist2(in.texcoord[b], in.texcoord[b + 2]), t13 = dist2(in.texcoord[b + 1], in.texcoord[b + 3]);
+      const float t02 = dist2(in.texcoord_of(b), in.texcoord_of(b + 2)), t13 = dist2(in.texcoord_of(b + 1), in.texcoord_of(b + 3));
       bool diagonal_02;
       if (t02 < t13) diagonal_02 = true;
       else if (t13 < t02) diagonal_02 = false;
-      else diagonal_02 = !(dist2(in.position[b + 1], in.position[b + 3]) < dist2(in.position[b], in.position[b + 2]));
+      else diagonal_02 = !(dist2(in.position(b + 1), in.position(b + 3)) < dist2(in.position(b), in.position(b + 2)));
       if (diagonal_02) { add(fu, b, b + 1, b + 2); add(fu, b, b + 2, b + 3); }
       else { add(fu, b, b + 1, b + 3); add(fu, b + 1, b + 2, b + 3); }
     } else {
@@ -106,21 +111,25 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
 
 // Step 2: welded vertex of every corner: the first corner with the same (position, normal,
 // texture coordinate) as float ==. An open-addressing table keyed by the values (-0 as +0);
-// a corner with a NaN equals nothing.
+// a corner with a NaN equals nothing. The corners go in in order; the slot of the corner 8 places
+// ahead is hashed and prefetched meanwhile (the table is larger than the caches and its slots
+// random: the wait for memory is the cost).
+[[gnu::always_inline]] inline void weld_key(const Corners& in, std::uint32_t c, float* k) {
+  const F3 p = in.position(c), n = in.normal_of(c), t = in.texcoord_of(c);
+  const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
+  for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
+}
+
 std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32_t>& corners) {
-  const std::size_t C = in.position.size();
+  const std::size_t C = in.num_corners, N = corners.size();
   std::vector<std::uint32_t> rep(C, 0);
   std::size_t cap = 16;
-  while (cap < 2 * corners.size()) cap *= 2;
+  while (cap < 2 * N) cap *= 2;
   std::vector<std::uint32_t> table(cap, ~0u);
-  auto key = [&](std::uint32_t c, float* k) {
-    const F3 &p = in.position[c], &n = in.normal[c], &t = in.texcoord[c];
-    const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
-    for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
-  };
-  for (std::uint32_t c : corners) {
+  constexpr std::uint64_t kNaN = ~0ull;  // a key with a NaN: not hashed (a slot is below cap)
+  auto slot_of = [&](std::uint32_t c) {
     float k[8];
-    key(c, k);
+    weld_key(in, c, k);
     bool nan = false;
     std::uint64_t h = 0x9E3779B97F4A7C15ull;
     for (float x : k) {
@@ -130,11 +139,25 @@ std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32
       h = (h ^ bits) * 0xff51afd7ed558ccdull;
       h ^= h >> 32;
     }
-    if (nan) { rep[c] = c; continue; }
-    for (std::size_t slot = h & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+    return nan ? kNaN : (h & (cap - 1));
+  };
+  constexpr std::size_t kAhead = 8;  // the slots of the next kAhead corners, in a ring
+  std::uint64_t ahead[kAhead];
+  for (std::size_t i = 0; i < kAhead && i < N; ++i) ahead[i] = slot_of(corners[i]);
+  for (std::size_t i = 0; i < N; ++i) {
+    const std::uint64_t first_slot = ahead[i % kAhead];
+    if (i + kAhead < N) {
+      ahead[i % kAhead] = slot_of(corners[i + kAhead]);
+      if (ahead[i % kAhead] != kNaN) __builtin_prefetch(&table[ahead[i % kAhead]]);
+    }
+    const std::uint32_t c = corners[i];
+    if (first_slot == kNaN) { rep[c] = c; continue; }
+    float k[8];
+    weld_key(in, c, k);
+    for (std::size_t slot = first_slot;; slot = (slot + 1) & (cap - 1)) {
       if (table[slot] == ~0u) { table[slot] = c; rep[c] = c; break; }
       float o[8];
-      key(table[slot], o);
+      weld_key(in, table[slot], o);
       if (std::memcmp(o, k, sizeof k) == 0) { rep[c] = table[slot]; break; }
     }
   }
@@ -146,7 +169,7 @@ std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32
 void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) {
   const std::size_t T = tris.face.size();
   for (std::size_t t = 0; t < T; ++t) {
-    const F3 p0 = in.position[tris.index[3 * t]], p1 = in.position[tris.index[3 * t + 1]], p2 = in.position[tris.index[3 * t + 2]];
+    const F3 p0 = in.position(tris.index[3 * t]), p1 = in.position(tris.index[3 * t + 1]), p2 = in.position(tris.index[3 * t + 2]);
     if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate;
   }
   for (std::size_t t = 0; t + 1 < T;) {
@@ -182,7 +205,7 @@ void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) 
 }
 
 float texture_area(const Corners& in, const std::uint32_t* idx) {
-  const F3 t1 = in.texcoord[idx[0]], t2 = in.texcoord[idx[1]], t3 = in.texcoord[idx[2]];
+  const F3 t1 = in.texcoord_of(idx[0]), t2 = in.texcoord_of(idx[1]), t3 = in.texcoord_of(idx[2]);
   const float a = (t2.x - t1.x) * (t3.y - t1.y) - (t2.y - t1.y) * (t3.x - t1.x);
   return a < 0 ? -a : a;
 }
@@ -194,8 +217,8 @@ void triangle_derivatives(const Mesh& mesh, const Corners& in, Triangles& tris, 
     std::uint8_t& flag = tris.flag[f];
     flag |= kGroupWithAny;  // assumed bad
     const std::uint32_t* idx = &tris.index[3 * f];
-    const F3 v1 = in.position[idx[0]], v2 = in.position[idx[1]], v3 = in.position[idx[2]];
-    const F3 t1 = in.texcoord[idx[0]], t2 = in.texcoord[idx[1]], t3 = in.texcoord[idx[2]];
+    const F3 v1 = in.position(idx[0]), v2 = in.position(idx[1]), v3 = in.position(idx[2]);
+    const F3 t1 = in.texcoord_of(idx[0]), t2 = in.texcoord_of(idx[1]), t3 = in.texcoord_of(idx[2]);
     const float t21x = t2.x - t1.x, t21y = t2.y - t1.y, t31x = t3.x - t1.x, t31y = t3.y - t1.y;
     const F3 d1 = v2 - v1, d2 = v3 - v1;
     const float signed_area2 = t21x * t31y - t21y * t31x;
@@ -240,35 +263,46 @@ int edge_of(const std::uint32_t* idx, std::uint32_t a, std::uint32_t b, std::uin
   return 1;
 }
 
-// Step 5: neighbours across welded edges used in opposite directions; edges sorted by (lower
-// vertex, higher vertex, triangle), the first unpaired match wins.
-void find_neighbours(const Triangles& tris, std::vector<TriInfo>& info) {
-  struct Edge { std::uint32_t i0, i1, f; };
+// Step 5: neighbours across welded edges used in opposite directions; edges in (lower vertex,
+// higher vertex, triangle) order, the first unpaired match wins. The order: a counting sort by the
+// lower vertex (stable: triangles stay ascending), then each vertex's few edges sorted by
+// (higher vertex, triangle).
+void find_neighbours(const Triangles& tris, std::size_t num_welded, std::vector<TriInfo>& info) {
+  struct Edge { std::uint32_t i1, f; };
   const std::size_t T = tris.good;
+  std::vector<std::uint32_t> start(num_welded + 1, 0);
+  for (std::size_t k = 0; k < 3 * T; ++k) {
+    const std::uint32_t a = tris.index[k], b = tris.index[k % 3 < 2 ? k + 1 : k - 2];
+    ++start[std::min(a, b) + 1];
+  }
+  for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
   std::vector<Edge> edges(3 * T);
-  for (std::size_t f = 0; f < T; ++f)
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t a = tris.index[3 * f + i], b = tris.index[3 * f + (i < 2 ? i + 1 : 0)];
-      edges[3 * f + i] = {std::min(a, b), std::max(a, b), std::uint32_t(f)};
+  {
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < 3 * T; ++k) {
+      const std::uint32_t a = tris.index[k], b = tris.index[k % 3 < 2 ? k + 1 : k - 2];
+      edges[next[std::min(a, b)]++] = {std::max(a, b), std::uint32_t(k / 3)};
     }
-  // (i0, i1, f) order: one 64-bit key per edge, f as the tie-break.
-  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
-    const std::uint64_t ka = std::uint64_t(a.i0) << 32 | a.i1, kb = std::uint64_t(b.i0) << 32 | b.i1;
-    return ka != kb ? ka < kb : a.f < b.f;
-  });
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const Edge& e = edges[i];
-    std::uint32_t from_a, to_a;
-    const int edge_a = edge_of(&tris.index[3 * e.f], e.i0, e.i1, from_a, to_a);
-    if (info[e.f].neighbour[edge_a] != -1) continue;
-    for (std::size_t j = i + 1; j < edges.size() && edges[j].i0 == e.i0 && edges[j].i1 == e.i1; ++j) {
-      const std::uint32_t t = edges[j].f;
-      std::uint32_t from_b, to_b;
-      const int edge_b = edge_of(&tris.index[3 * t], e.i0, e.i1, from_b, to_b);
-      if (from_a == to_b && to_a == from_b && info[t].neighbour[edge_b] == -1) {
-        info[e.f].neighbour[edge_a] = std::int32_t(t);
-        info[t].neighbour[edge_b] = std::int32_t(e.f);
-        break;
+  }
+  for (std::size_t v = 0; v < num_welded; ++v)
+    std::sort(edges.begin() + start[v], edges.begin() + start[v + 1],
+              [](const Edge& a, const Edge& b) { return a.i1 != b.i1 ? a.i1 < b.i1 : a.f < b.f; });
+  for (std::size_t v = 0; v < num_welded; ++v) {
+    const auto i0 = std::uint32_t(v);
+    for (std::size_t i = start[v]; i < start[v + 1]; ++i) {
+      const Edge& e = edges[i];
+      std::uint32_t from_a, to_a;
+      const int edge_a = edge_of(&tris.index[3 * e.f], i0, e.i1, from_a, to_a);
+      if (info[e.f].neighbour[edge_a] != -1) continue;
+      for (std::size_t j = i + 1; j < start[v + 1] && edges[j].i1 == e.i1; ++j) {
+        const std::uint32_t t = edges[j].f;
+        std::uint32_t from_b, to_b;
+        const int edge_b = edge_of(&tris.index[3 * t], i0, e.i1, from_b, to_b);
+        if (from_a == to_b && to_a == from_b && info[t].neighbour[edge_b] == -1) {
+          info[e.f].neighbour[edge_a] = std::int32_t(t);
+          info[t].neighbour[edge_b] = std::int32_t(e.f);
+          break;
+        }
       }
     }
   }
@@ -315,27 +349,30 @@ void build_groups(Triangles& tris, std::vector<TriInfo>& info, std::vector<Group
     }
 }
 
-// The frame of one sub-group at vertex `rep`: members' projected derivatives weighted by the
-// corner angle of the triangle projected onto the normal's plane.
-TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const Corners& in, const Triangles& tris,
+// The frame of one sub-group at vertex `rep`: members' projected derivatives (ps, pt: those of
+// the group's members onto the vertex normal, by position in the group) weighted by the corner
+// angle of the triangle projected onto the normal's plane. `sub`: positions in the group, in
+// ascending triangle order (the order of the sums).
+TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const std::uint32_t* tri, const std::vector<F3>& ps,
+                      const std::vector<F3>& pt, const Corners& in, const Triangles& tris,
                       const std::vector<TriInfo>& info, std::uint32_t rep) {
   TSpace res;
   res.os = {0, 0, 0};
   res.ot = {0, 0, 0};
   res.mag_s = res.mag_t = 0;
   float angle_sum = 0;
-  for (std::uint32_t f : sub) {
+  for (std::uint32_t j : sub) {
+    const std::uint32_t f = tri[j];
     if (tris.flag[f] & kGroupWithAny) continue;
     const std::uint32_t* idx = &tris.index[3 * f];
     const int i = corner_at(idx, rep);
-    const F3 n = in.normal[idx[i]];
-    const F3 os = project_unit(info[f].os, n), ot = project_unit(info[f].ot, n);
-    const F3 p0 = in.position[idx[i > 0 ? i - 1 : 2]], p1 = in.position[idx[i]], p2 = in.position[idx[i < 2 ? i + 1 : 0]];
+    const F3 n = in.normal_of(idx[i]);
+    const F3 p0 = in.position(idx[i > 0 ? i - 1 : 2]), p1 = in.position(idx[i]), p2 = in.position(idx[i < 2 ? i + 1 : 0]);
     const F3 v1 = project_unit(p0 - p1, n), v2 = project_unit(p2 - p1, n);
     const float c = std::min(1.0f, std::max(-1.0f, dot(v1, v2)));
     const float angle = float(std::acos(double(c)));
-    res.os = res.os + scale(angle, os);
-    res.ot = res.ot + scale(angle, ot);
+    res.os = res.os + scale(angle, ps[j]);
+    res.ot = res.ot + scale(angle, pt[j]);
     res.mag_s += angle * info[f].mag_s;
     res.mag_t += angle * info[f].mag_t;
     angle_sum += angle;
@@ -362,30 +399,75 @@ TSpace average(const TSpace& a, const TSpace& b) {
   return r;
 }
 
+// The frames reached per corner, by index: each distinct frame stored once (about one per group),
+// every corner the index of its own (~0u: none reached it; the reference's default then).
+struct CornerFrames {
+  std::vector<TSpace> frames;
+  std::vector<std::uint32_t> of;  // #C
+
+  // Corner c receives frames[f] from a group of orientation `orient`: its own when it had none,
+  // else the mean with the one it has (the two triangles of a quad), in the later group's orientation.
+  void receive(std::uint32_t c, std::uint32_t f, bool orient) {
+    if (of[c] == ~0u) {
+      of[c] = f;  // frames[f].orient is its group's
+      return;
+    }
+    TSpace r = average(frames[of[c]], frames[f]);
+    r.orient = orient;
+    frames.push_back(r);
+    of[c] = std::uint32_t(frames.size() - 1);
+  }
+};
+
 // Step 7: sub-groups and their frames, written to each triangle's corner.
 void group_frames(const Corners& in, const Triangles& tris, const std::vector<TriInfo>& info,
                   const std::vector<Group>& groups, const std::vector<std::uint32_t>& members,
-                  std::vector<TSpace>& out) {
+                  CornerFrames& out) {
   // The reference's angular threshold, 180 degrees: cos(float(pi)) rounded to float is exactly -1.
   const float threshold_cos = -1.0f;
   std::vector<F3> ps, pt;
   std::vector<std::uint32_t> sub;
-  // This group's distinct sub-groups: members in one flat buffer (offsets), and their frames.
+  // This group's distinct sub-groups: members in one flat buffer (offsets); their frames are
+  // out.frames[base, base + count).
   std::vector<std::uint32_t> sub_members, sub_offset;
-  std::vector<TSpace> unique_frames;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const Group& group = groups[g];
     const std::uint32_t* tri = &members[group.offset];
-    const F3 n = in.normal[group.representative];  // every corner of the group has this normal
+    const F3 n = in.normal_of(group.representative);  // every corner of the group has this normal
     ps.resize(group.count);
     pt.resize(group.count);
     for (std::uint32_t j = 0; j < group.count; ++j) {
       ps[j] = project_unit(info[tri[j]].os, n);
       pt[j] = project_unit(info[tri[j]].ot, n);
     }
+    // The common case: every pair of members joins (none antiparallel), so every member's
+    // sub-group is the whole group: one frame, of the members in ascending order.
+    bool whole = true;
+    for (std::uint32_t i = 0; i < group.count && whole; ++i)
+      for (std::uint32_t j = i + 1; j < group.count && whole; ++j) {
+        const std::uint32_t f = tri[i], t = tri[j];
+        const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
+        const bool same_face = tris.face[f] == tris.face[t];
+        whole = any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos);
+      }
+    auto by_triangle = [tri](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; };
+    if (whole) {
+      sub.resize(group.count);
+      for (std::uint32_t j = 0; j < group.count; ++j) sub[j] = j;
+      std::sort(sub.begin(), sub.end(), by_triangle);
+      out.frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+      out.frames.back().orient = group.orient;
+      const auto frame = std::uint32_t(out.frames.size() - 1);
+      for (std::uint32_t i = 0; i < group.count; ++i) {
+        const std::uint32_t f = tri[i];
+        const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
+        out.receive(tris.corner[3 * f + index], frame, group.orient);
+      }
+      continue;
+    }
     sub_members.clear();
     sub_offset.assign(1, 0);
-    unique_frames.clear();
+    const std::size_t base = out.frames.size();
     for (std::uint32_t i = 0; i < group.count; ++i) {
       const std::uint32_t f = tri[i];
       const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
@@ -394,32 +476,29 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
         const std::uint32_t t = tri[j];
         const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
         const bool same_face = tris.face[f] == tris.face[t];
-        if (any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos)) sub.push_back(t);
+        if (any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos)) sub.push_back(j);
       }
-      std::sort(sub.begin(), sub.end());
+      std::sort(sub.begin(), sub.end(), by_triangle);
       std::size_t l = 0;
-      const std::size_t known = unique_frames.size();
+      const std::size_t known = sub_offset.size() - 1;
       while (l < known && !(sub_offset[l + 1] - sub_offset[l] == sub.size() &&
                             std::equal(sub.begin(), sub.end(), sub_members.begin() + sub_offset[l])))
         ++l;
       if (l == known) {
         sub_members.insert(sub_members.end(), sub.begin(), sub.end());
         sub_offset.push_back(std::uint32_t(sub_members.size()));
-        unique_frames.push_back(evaluate_frame(sub, in, tris, info, group.representative));
+        out.frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+        out.frames.back().orient = group.orient;
       }
-      TSpace& o = out[tris.corner[3 * f + index]];
-      o = o.counter >= 1 ? average(o, unique_frames[l]) : unique_frames[l];
-      o.counter += 1;
-      o.orient = group.orient;
-      o.assigned = true;
+      out.receive(tris.corner[3 * f + index], std::uint32_t(base + l), group.orient);
     }
   }
 }
 
 // Step 8: frames for the corners of degenerate triangles.
-void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tris, std::vector<TSpace>& out) {
+void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tris, std::vector<std::uint32_t>& out) {
   const std::size_t T = tris.face.size(), good = tris.good;
-  std::vector<std::uint32_t> first(in.position.size(), ~0u);  // welded vertex -> first healthy corner slot
+  std::vector<std::uint32_t> first(in.num_corners, ~0u);  // welded vertex -> first healthy corner slot
   for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
   for (std::size_t t = good; t < T; ++t) {
     if (tris.flag[t] & kQuadOneDegenerate) continue;
@@ -435,9 +514,9 @@ void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tri
     for (int i = 0; i < 3; ++i) present |= 1u << (tris.corner[3 * t + i] - b);
     std::uint32_t missing = 0;
     while (present & (1u << missing)) ++missing;
-    const F3 dst = in.position[b + missing];
+    const F3 dst = in.position(b + missing);
     for (int i = 0; i < 3; ++i)
-      if (in.position[tris.corner[3 * t + i]] == dst) {
+      if (in.position(tris.corner[3 * t + i]) == dst) {
         out[b + missing] = out[tris.corner[3 * t + i]];
         break;
       }
@@ -468,9 +547,32 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   // Faces taken: 3+ corners, every one textured.
   std::vector<std::uint8_t> taken(F, 0);
   Corners in;
-  in.position.resize(C);
-  in.normal.resize(C);
-  in.texcoord.resize(C);
+  in.positions.resize(mesh.num_vertices());
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+    const Vec3d p = mesh.position(v);
+    in.positions[v] = {float(p.x), float(p.y), float(p.z)};
+  }
+  const std::vector<double>& normal_values = mesh.has_corner_normals()   ? mesh.corner_normals
+                                             : mesh.has_vertex_normals() ? mesh.vertex_normals
+                                                                         : mesh.face_normals;
+  in.normals.resize(normal_values.size() / 3);
+  for (std::size_t k = 0; k < in.normals.size(); ++k)
+    in.normals[k] = {float(normal_values[3 * k]), float(normal_values[3 * k + 1]), float(normal_values[3 * k + 2])};
+  const std::size_t stride = std::size_t(std::max(dims, 1));
+  in.texcoords.resize(dims >= 2 ? mesh.texcoords.size() / stride : 0);
+  for (std::size_t k = 0; k < in.texcoords.size(); ++k)
+    in.texcoords[k] = {float(mesh.texcoords[stride * k]), float(mesh.texcoords[stride * k + 1]), 1.0f};
+  std::vector<std::uint32_t> corner_face;  // face normals: the normal index of a corner is its face
+  if (!mesh.has_corner_normals() && !mesh.has_vertex_normals()) {
+    corner_face.resize(C);
+    for (std::size_t f = 0; f < F; ++f)
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) corner_face[c] = std::uint32_t(f);
+  }
+  in.num_corners = C;
+  in.vertex = mesh.corner_vertex.data();
+  in.normal = mesh.has_corner_normals() ? mesh.corner_normal_index.data()
+              : mesh.has_vertex_normals() ? mesh.corner_vertex.data() : corner_face.data();
+  in.texcoord = mesh.corner_texcoord_index.data();
   std::vector<std::uint32_t> corners;
   corners.reserve(C);
   for (std::size_t f = 0; f < F; ++f) {
@@ -479,14 +581,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
       ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
     taken[f] = ok;
     if (!ok) continue;
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      const Vec3d p = mesh.position(mesh.corner_vertex[c]), n = corner_normal(c, f);
-      const std::size_t t = std::size_t(mesh.corner_texcoord_index[c]) * std::size_t(dims);
-      in.position[c] = {float(p.x), float(p.y), float(p.z)};
-      in.normal[c] = {float(n.x), float(n.y), float(n.z)};
-      in.texcoord[c] = {float(mesh.texcoords[t]), float(mesh.texcoords[t + 1]), 1.0f};
-      corners.push_back(std::uint32_t(c));
-    }
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) corners.push_back(std::uint32_t(c));
   }
   Triangles tris;
   make_triangles(mesh, in, taken, tris);
@@ -496,14 +591,17 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   set_aside_degenerate(mesh, in, tris);
   std::vector<TriInfo> info(tris.good);
   triangle_derivatives(mesh, in, tris, info);
-  find_neighbours(tris, info);
+  find_neighbours(tris, C, info);
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
   members.reserve(3 * tris.good);
   build_groups(tris, info, groups, members);
-  std::vector<TSpace> frames(C);
+  CornerFrames frames;
+  frames.frames.reserve(groups.size() + groups.size() / 8);
+  frames.of.assign(C, ~0u);
   group_frames(in, tris, info, groups, members, frames);
-  degenerate_frames(mesh, in, tris, frames);
+  degenerate_frames(mesh, in, tris, frames.of);
+  const TSpace none;  // the reference's default frame
 
   TangentFrames out;
   out.tangents.resize(4 * C);
@@ -516,10 +614,11 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
         ++out.fallback_corners;
         continue;
       }
-      const TSpace& s = frames[c];
+      const std::uint32_t k = frames.of[c];
+      const TSpace& s = k != ~0u ? frames.frames[k] : none;
       o[0] = s.os.x; o[1] = s.os.y; o[2] = s.os.z;
       o[3] = s.orient ? 1.0 : -1.0;
-      if (!s.assigned) ++out.default_corners;
+      if (k == ~0u) ++out.default_corners;
     }
   return out;
 }
