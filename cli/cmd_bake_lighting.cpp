@@ -266,10 +266,7 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
       // --fit least-squares (lighting/fit_vertex_lighting.h): the point colours replaced by the fit.
       if (fit_method(fit) == shadetool::VertexFit::LeastSquares && set.frequency == shadetool::ShadingFrequency::PerVertex) {
-        shadetool::VertexFitOptions vfit;
-        vfit.method = shadetool::VertexFit::LeastSquares;
-        vfit.samples = fit.samples;
-        vfit.solve.regularization = fit.regularization;
+        shadetool::VertexFitOptions vfit = vertex_fit_options(fit);
         if (!set.hdr) vfit.solve.upper = 1;  // 8-bit: [0, 1]
         shadetool::VertexLightingFit lsq = shadetool::fit_vertex_lighting(mesh, scene, baked, set.shade, cast, vfit);
         baked.rgb = std::move(lsq.rgb);
