@@ -8,9 +8,10 @@
 //          measured with the 12-point degree-6 rule: finer than any fit's own rule, so no fit is
 //          scored by its own objective
 // Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES]
+//        bench_fit breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES]   (the least-squares time per stage)
+//        bench_fit errors SRC_DIR [MAX_TRIANGLES]   (error at several λ, with and without 8-bit bounds)
 //        bench_fit picture SRC_DIR OUT.png   (point Gouraud | least-squares Gouraud | Phong, coarse)
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -23,20 +24,12 @@
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/render/render_mesh.h>
 
+#include "../bench_timing.h"
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;
 
 namespace {
-
-double now_ms() {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 std::vector<double> clamped(std::vector<double> v) {
   for (double& x : v) x = std::min(std::max(x, 0.0), 1.0);
@@ -94,6 +87,107 @@ int table(const std::string& src, int repeats, std::size_t max_triangles) {
   return 0;
 }
 
+// Where the time of one least-squares bake goes, per stage, in process CPU time (every thread's:
+// the work, not the wait), medians of `repeats` runs with the
+// stages taken in turn within each run (round-robin): the point bake, the quadrature (elements and
+// points), f at the quadrature points (lighting_at_quadrature: interpolation and shade_point),
+// the normal equations' assembly (least_squares_fit stopped at once: tolerance 1, no CG step
+// taken from the first guess), and the conjugate gradient (the full fit minus the assembly).
+int breakdown(const std::string& src, int repeats, std::size_t max_triangles) {
+  std::printf("| mesh | scene | pt | point bake | quadrature | f at points | assembly | CG | CG iterations | total LS | f evals / vertex |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
+  for (const auto& s : sizes) {
+    if (std::size_t(2 * s[0] * s[1]) > max_triangles) continue;
+    const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
+    for (const char* name : {"studio", "window"}) {
+      const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
+      for (int samples : {1, 3, 6}) {
+        std::vector<double> t_point, t_quad, t_f, t_asm, t_cg;
+        int iterations = 0;
+        std::size_t points = 0;
+        for (int k = 0; k < repeats; ++k) {
+          double t0 = cpu_ms();
+          const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+          t_point.push_back(cpu_ms() - t0);
+          t0 = cpu_ms();
+          const std::vector<double> world = world_positions(mesh, scene);
+          const FitElements elements = fit_elements(mesh);
+          const FitQuadrature q = fit_quadrature(elements, world, samples);
+          t_quad.push_back(cpu_ms() - t0);
+          points = q.size();
+          t0 = cpu_ms();
+          std::vector<double> f = clamped(lighting_at_quadrature(mesh, scene, q, world, point.vertex_normals, {}, {}));
+          t_f.push_back(cpu_ms() - t0);
+          LeastSquaresFitOptions o;
+          o.upper = 1;
+          o.tolerance = 1;
+          t0 = cpu_ms();
+          least_squares_fit(elements, world, q, f, point.rgb, 3, o);
+          const double assembly = cpu_ms() - t0;
+          t_asm.push_back(assembly);
+          o.tolerance = LeastSquaresFitOptions{}.tolerance;
+          t0 = cpu_ms();
+          iterations = least_squares_fit(elements, world, q, f, point.rgb, 3, o).iterations;
+          t_cg.push_back(std::max(0.0, cpu_ms() - t0 - assembly));
+        }
+        const double total = median(t_point) + median(t_quad) + median(t_f) + median(t_asm) + median(t_cg);
+        std::printf("| torus %zuk tri | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.2f | %.1f |\n",
+                    mesh.num_faces() / 1000, name, samples, median(t_point), median(t_quad), median(t_f),
+                    median(t_asm), median(t_cg), iterations, total, double(points) / double(mesh.num_vertices()));
+        std::fflush(stdout);
+      }
+    }
+  }
+  return 0;
+}
+
+// Why a fit gains what it gains: the relative L2 error (the 12-point reference, as the table) of
+// the point colours and of the 3-point least-squares fit at several regulariser weights λ (the
+// default is 0), with the 8-bit bounds (f, the reference and the colours clamped to [0, 1]) and
+// without them (HDR: nothing clamped), and the share of the surface where the clamped reference is
+// saturated (some channel at 1).
+int errors(const std::string& src, std::size_t max_triangles) {
+  std::printf("| mesh | scene | bounds | point | LS λ=0 (default) | LS λ=1e-3 | LS λ=1e-2 | LS λ=1e-1 | gain at λ=0 | saturated area |\n"
+              "|---|---|---|---|---|---|---|---|---|---|\n");
+  const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
+  for (const auto& s : sizes) {
+    if (std::size_t(2 * s[0] * s[1]) > max_triangles) continue;
+    const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
+    for (const char* name : {"studio", "window"}) {
+      const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
+      const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+      const std::vector<double> world = world_positions(mesh, scene);
+      const FitQuadrature ref = fit_quadrature(fit_elements(mesh), world, 12);
+      const std::vector<double> f_raw = lighting_at_quadrature(mesh, scene, ref, world, point.vertex_normals, {}, {});
+      for (bool eight_bit : {true, false}) {
+        const std::vector<double> f = eight_bit ? clamped(f_raw) : f_raw;
+        double saturated = 0, area = 0;
+        for (std::size_t k = 0; k < ref.size(); ++k) {
+          area += ref.weight[k];
+          if (std::max({f[3 * k], f[3 * k + 1], f[3 * k + 2]}) >= 1) saturated += ref.weight[k];
+        }
+        const double e_point = relative_l2_error(ref, f, eight_bit ? clamped(point.rgb) : point.rgb, 3);
+        std::printf("| torus %zuk tri | %s | %s | %.5f |", mesh.num_faces() / 1000, name, eight_bit ? "8-bit" : "HDR", e_point);
+        double e0 = 0;
+        for (double lambda : {0.0, 1e-3, 1e-2, 1e-1}) {
+          VertexFitOptions fit;
+          fit.method = VertexFit::LeastSquares;
+          fit.samples = 3;
+          fit.solve.regularization = lambda;
+          if (eight_bit) fit.solve.upper = 1;
+          const double e = relative_l2_error(ref, f, fit_vertex_lighting(mesh, scene, point, {}, {}, fit).rgb, 3);
+          if (lambda == 0) e0 = e;
+          std::printf(" %.5f |", e);
+        }
+        std::printf(" %+.0f%% | %.0f%% |\n", 100 * (e0 / e_point - 1), area > 0 ? 100 * saturated / area : 0.0);
+        std::fflush(stdout);
+      }
+    }
+  }
+  return 0;
+}
+
 int picture(const std::string& src, const std::string& out) {
   const Mesh mesh = testing::icosphere(1).mesh;  // 80 triangles: highlights fall between vertices
   Scene scene = read_scene(src + "/data/scenes/studio.json");
@@ -132,10 +226,13 @@ int picture(const std::string& src, const std::string& out) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] | picture SRC_DIR OUT.png\n");
+    std::fprintf(stderr, "usage: bench_fit table|breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES] | picture SRC_DIR OUT.png\n");
     return 2;
   }
   const std::string mode = argv[1], src = argv[2];
   if (mode == "picture" && argc > 3) return picture(src, argv[3]);
+  if (mode == "errors") return errors(src, argc > 3 ? std::size_t(std::atoll(argv[3])) : 20000);
+  if (mode == "breakdown")
+    return breakdown(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000);
   return table(src, argc > 3 ? std::atoi(argv[3]) : 5, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000);
 }
