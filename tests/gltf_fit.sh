@@ -57,8 +57,11 @@ for depth in hdr 8bit; do
     --fit least-squares --shadows "${flag[@]}" -q
   "$bin" bake-lighting "$tmp/flat.ply" --scene "$tmp/scene.json" -o "$tmp/flat_point_$depth.ply" --ascii --linear \
     --shadows "${flag[@]}" -q
-  # Float colours: float rounding (COLOR_0 is float32); 8-bit: both the same linear bytes.
-  tol=1e-6; [ $depth = 8bit ] && tol=1e-6
+  # Float colours: float rounding (COLOR_0 is float32). 8-bit: each solve stops within a quarter
+  # step of the exact values (fit/least_squares_fit.h, accuracy), the glTF's per primitive and the
+  # flattened mesh's for all at once, so a byte may differ by one step where a value lies near a
+  # rounding boundary.
+  tol=1e-6; [ $depth = 8bit ] && tol=0.00393
   check "bake-lighting --fit least-squares glTF ($depth) = the flattened mesh's fit" \
     cmp "$tmp/lit_$depth.gltf" "$tmp/flat_lit_$depth.ply" color $tol "$tmp/flat_point_$depth.ply"
 done
