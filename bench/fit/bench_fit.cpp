@@ -10,7 +10,8 @@
 //          measured with the 12-point degree-6 rule: finer than any fit's own rule, so no fit is
 //          scored by its own objective
 // Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES]   (default 7, 200000, 0)
-//        bench_fit breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES]   (the least-squares time per stage)
+//        bench_fit breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window]
+//                  (the least-squares time per stage)
 //        bench_fit errors SRC_DIR [MAX_TRIANGLES]   (error at several λ, with and without 8-bit bounds)
 //        bench_fit picture SRC_DIR OUT.png   (point Gouraud | least-squares Gouraud | Phong, coarse)
 #include <algorithm>
@@ -82,7 +83,7 @@ int table(const std::string& src, int repeats, std::size_t max_triangles, std::s
           wall[m].push_back(now_ms() - w0);
         }
       for (int m = 0; m < 4; ++m) {
-        std::printf("| torus %zuk tri | %s | %s | %.1f | %.1f | %.2f | %.5f | %+.0f%% |\n", mesh.num_faces() / 1000, name,
+        std::printf("| torus %zuk tri | %s | %s | %.1f | %.1f | %.2f | %.3g | %+.0f%% |\n", mesh.num_faces() / 1000, name,
                     m == 0 ? "point" : ("least squares, " + std::to_string(methods[m]) + " pt").c_str(), median(wall[m]),
                     median(cpu[m]), median(cpu[m]) / median(cpu[0]), error[m], 100 * (error[m] / error[0] - 1));
         std::fflush(stdout);
@@ -98,14 +99,17 @@ int table(const std::string& src, int repeats, std::size_t max_triangles, std::s
 // points), f at the quadrature points (lighting_at_quadrature: interpolation and shade_point),
 // the normal equations' assembly (least_squares_fit stopped at once: tolerance 1, no CG step
 // taken from the first guess), and the conjugate gradient (the full fit minus the assembly).
-int breakdown(const std::string& src, int repeats, std::size_t max_triangles) {
+int breakdown(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles,
+              const std::string& only_scene) {
   std::printf("| mesh | scene | pt | point bake | quadrature | f at points | assembly | CG | CG iterations | total LS | f evals / vertex |\n"
               "|---|---|---|---|---|---|---|---|---|---|---|\n");
   const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
   for (const auto& s : sizes) {
-    if (std::size_t(2 * s[0] * s[1]) > max_triangles) continue;
+    const std::size_t triangles = std::size_t(2 * s[0] * s[1]);
+    if (triangles > max_triangles || triangles < min_triangles) continue;
     const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
     for (const char* name : {"studio", "window"}) {
+      if (!only_scene.empty() && only_scene != name) continue;
       const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
       for (int samples : {1, 3, 6}) {
         std::vector<double> t_point, t_quad, t_f, t_asm, t_cg;
@@ -242,7 +246,8 @@ int main(int argc, char** argv) {
   if (mode == "picture" && argc > 3) return picture(src, argv[3]);
   if (mode == "errors") return errors(src, argc > 3 ? std::size_t(std::atoll(argv[3])) : 20000);
   if (mode == "breakdown")
-    return breakdown(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000);
+    return breakdown(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000,
+                     argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 ? argv[6] : "");
   return table(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000,
                argc > 5 ? std::size_t(std::atoll(argv[5])) : 0);
 }
