@@ -267,11 +267,11 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
       // --fit least-squares (lighting/fit_vertex_lighting.h): the point colours replaced by the fit.
       if (fit_method(fit) == shadetool::VertexFit::LeastSquares && set.frequency == shadetool::ShadingFrequency::PerVertex) {
-        shadetool::VertexFitOptions vfit;
-        vfit.method = shadetool::VertexFit::LeastSquares;
-        vfit.samples = fit.samples;
-        vfit.solve.regularization = fit.regularization;
-        if (!set.hdr) vfit.solve.upper = 1;  // 8-bit: [0, 1]
+        shadetool::VertexFitOptions vfit = vertex_fit_options(fit);
+        if (!set.hdr) {  // 8-bit: [0, 1], and the solve to a quarter of a step
+          vfit.solve.upper = 1;
+          vfit.solve.accuracy = shadetool::kEightBitFitAccuracy;
+        }
         shadetool::VertexLightingFit lsq = shadetool::fit_vertex_lighting(mesh, scene, baked, set.shade, cast, vfit);
         baked.rgb = std::move(lsq.rgb);
         report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);

@@ -149,22 +149,28 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
           shadetool::MeshOcclusion job;
           shadetool::Mesh split;
           bool scene_stats = true;
-          if ((to_error || least_squares) && r.gltf_document)
-            throw UsageError(input + ": --error and --fit least-squares do not yet work on a glTF scene (convert the mesh "
-                             "to PLY or OBJ first)");
           shadetool::OcclusionToError adaptive;
+          const shadetool::OcclusionFit* scene_fit = nullptr;  // a glTF primitive's fit, made with the scene's
           if (r.gltf_document && r.gltf && r.gltf_document_state) {
             const std::size_t index = std::size_t(r.gltf - r.gltf_document->primitives.data());
+            shadetool::GltfOcclusionMethod method;  // --error, --fit least-squares: per primitive, in world space
+            if (to_error) method.to_error = error_options;
+            if (least_squares) method.fit = vertex_fit_options(fit);
             const auto& scene = r.gltf_document_state->get_or_make<shadetool::GltfSceneOcclusion>(
                 [&](shadetool::GltfSceneOcclusion& made) {
                   made = shadetool::gltf_scene_occlusion(*r.gltf_document, per_face, options,
-                                                         shadetool::gltf_source_name(*r.gltf_document));
+                                                         shadetool::gltf_source_name(*r.gltf_document), method);
                 },
                 &scene_stats);
             for (const auto& n : scene.notes) r.notes.push_back(n);  // the same line from every primitive: said once
             job.ao = scene.primitives[index];
             job.normals_computed = scene.normals_computed[index];
             job.scene = scene.scene;
+            if (to_error) {
+              adaptive.rays = scene.to_error[index].rays;
+              adaptive.capped = scene.to_error[index].capped;
+            }
+            if (!scene.fits.empty()) scene_fit = &scene.fits[index];
           } else {
             // Corner normals (OBJ vn) are the file's normals: the rays leave about them, one vertex
             // per distinct (vertex, normal) pair (io/split_corner_normals.h). When that adds no
@@ -194,12 +200,10 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
           if (least_squares && per_face) {
             r.notes.push_back("--fit least-squares ignored with --per face (a face holds one value)");
           } else if (least_squares) {  // visibility/fit_occlusion.h
-            shadetool::VertexFitOptions vfit;
-            vfit.method = shadetool::VertexFit::LeastSquares;
-            vfit.samples = fit.samples;
-            vfit.solve.regularization = fit.regularization;
-            shadetool::OcclusionFit lsq = shadetool::fit_occlusion(mesh, job.ao.open_fraction, options,
-                                                                   to_error ? &error_options : nullptr, vfit, input);
+            shadetool::OcclusionFit lsq = scene_fit ? *scene_fit
+                                                    : shadetool::fit_occlusion(mesh, job.ao.open_fraction, options,
+                                                                               to_error ? &error_options : nullptr,
+                                                                               vertex_fit_options(fit), input);
             job.ao.open_fraction = std::move(lsq.open_fraction);
             report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
             r.stats["fit_rays"] = lsq.rays;

@@ -44,6 +44,15 @@ inline shadetool::VertexFit fit_method(const FitCliOptions& o) {
   return shadetool::parse_vertex_fit(o.method).value_or(shadetool::VertexFit::Point);  // checked by IsMember
 }
 
+// The library's options of a least-squares fit (no clamp: each caller sets its bounds).
+inline shadetool::VertexFitOptions vertex_fit_options(const FitCliOptions& o) {
+  shadetool::VertexFitOptions v;
+  v.method = fit_method(o);
+  v.samples = o.samples;
+  v.solve.regularization = o.regularization;
+  return v;
+}
+
 // The --stats keys of a least-squares fit.
 inline void report_fit(FileResult& r, const shadetool::LeastSquaresFit& s, double error_fit, double error_point,
                        std::size_t points, const FitCliOptions& o) {

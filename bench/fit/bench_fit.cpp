@@ -2,15 +2,19 @@
 // points per triangle (lighting/fit_vertex_lighting.h), on tori of about 10k, 100k (and 1M)
 // triangles under data/scenes/studio.json and window.json.
 //   time   the whole per-vertex bake: bake_lighting (the point colours), plus for least squares the
-//          quadrature, f at its points, assembly and CG; median of REPEATS runs
+//          quadrature, f at its points, assembly and CG (8-bit: to kEightBitFitAccuracy, as
+//          bake-lighting); wall and process CPU time, medians of REPEATS runs, the methods taken
+//          round-robin
 //   error  relative L2 distance of the interpolated colours (8-bit bounds: clamped to [0, 1], as
 //          written) to the per-point colour render --shading phong computes (clamped likewise),
 //          measured with the 12-point degree-6 rule: finer than any fit's own rule, so no fit is
 //          scored by its own objective
-// Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES]
+// Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES]   (default 7, 200000, 0)
+//        bench_fit breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window]
+//                  (the least-squares time per stage)
+//        bench_fit errors SRC_DIR [MAX_TRIANGLES]   (error at several λ, with and without 8-bit bounds)
 //        bench_fit picture SRC_DIR OUT.png   (point Gouraud | least-squares Gouraud | Phong, coarse)
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -23,70 +27,173 @@
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/render/render_mesh.h>
 
+#include "../bench_timing.h"
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;
 
 namespace {
 
-double now_ms() {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 std::vector<double> clamped(std::vector<double> v) {
   for (double& x : v) x = std::min(std::max(x, 0.0), 1.0);
   return v;
 }
 
-struct Row {
-  double ms;
-  double error;
-};
-
-Row run(const Mesh& mesh, const Scene& scene, int samples, int repeats, const FitQuadrature& ref,
-        const std::vector<double>& f_ref) {
-  std::vector<double> times;
-  std::vector<double> rgb;
-  for (int k = 0; k < repeats; ++k) {
-    const double t0 = now_ms();
-    BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
-    if (samples > 0) {
-      VertexFitOptions fit;
-      fit.method = VertexFit::LeastSquares;
-      fit.samples = samples;
-      fit.solve.upper = 1;
-      rgb = fit_vertex_lighting(mesh, scene, point, {}, {}, fit).rgb;
-    } else {
-      rgb = clamped(point.rgb);
-    }
-    times.push_back(now_ms() - t0);
-  }
-  return {median(times), relative_l2_error(ref, f_ref, rgb, 3)};
+// One bake: the point colours (samples 0) or the least-squares fit at `samples` points per
+// triangle, 8-bit bounds as bake-lighting writes them. Returns the colours.
+std::vector<double> bake(const Mesh& mesh, const Scene& scene, int samples) {
+  BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+  if (samples == 0) return clamped(point.rgb);
+  VertexFitOptions fit;
+  fit.method = VertexFit::LeastSquares;
+  fit.samples = samples;
+  fit.solve.upper = 1;  // 8-bit, as bake-lighting writes it
+  fit.solve.accuracy = kEightBitFitAccuracy;
+  return fit_vertex_lighting(mesh, scene, point, {}, {}, fit).rgb;
 }
 
-int table(const std::string& src, int repeats, std::size_t max_triangles) {
-  std::printf("| mesh | scene | method | time (ms) | x point | relative L2 error | vs point |\n|---|---|---|---|---|---|---|\n");
+// The four methods (point, least squares at 1, 3, 6 points) timed round-robin: each repetition runs
+// every method once, so that the load of the machine falls on all of them alike. Wall and process
+// CPU time, medians.
+int table(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles) {
+  std::printf("| mesh | scene | method | wall ms | CPU ms | x point (CPU) | relative L2 error | vs point |\n"
+              "|---|---|---|---|---|---|---|---|\n");
+  const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
+  const int methods[] = {0, 1, 3, 6};
+  for (const auto& s : sizes) {
+    const std::size_t triangles = std::size_t(2 * s[0] * s[1]);
+    if (triangles > max_triangles || triangles < min_triangles) continue;
+    const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
+    for (const char* name : {"studio", "window"}) {
+      const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
+      double error[4] = {};
+      {
+        const BakeResult normals = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+        const std::vector<double> world = world_positions(mesh, scene);
+        const FitQuadrature ref = fit_quadrature(fit_elements(mesh), world, 12);
+        const std::vector<double> f = clamped(lighting_at_quadrature(mesh, scene, ref, world, normals.vertex_normals, {}, {}));
+        for (int m = 0; m < 4; ++m) error[m] = relative_l2_error(ref, f, bake(mesh, scene, methods[m]), 3);
+      }  // the reference's memory (12 points per triangle) freed before the timing
+      std::vector<double> wall[4], cpu[4];
+      for (int k = 0; k < repeats; ++k)
+        for (int m = 0; m < 4; ++m) {
+          const double w0 = now_ms(), c0 = cpu_ms();
+          bake(mesh, scene, methods[m]);
+          cpu[m].push_back(cpu_ms() - c0);
+          wall[m].push_back(now_ms() - w0);
+        }
+      for (int m = 0; m < 4; ++m) {
+        std::printf("| torus %zuk tri | %s | %s | %.1f | %.1f | %.2f | %.3g | %+.0f%% |\n", mesh.num_faces() / 1000, name,
+                    m == 0 ? "point" : ("least squares, " + std::to_string(methods[m]) + " pt").c_str(), median(wall[m]),
+                    median(cpu[m]), median(cpu[m]) / median(cpu[0]), error[m], 100 * (error[m] / error[0] - 1));
+        std::fflush(stdout);
+      }
+    }
+  }
+  return 0;
+}
+
+// Where the time of one least-squares bake goes, per stage, in process CPU time (every thread's:
+// the work, not the wait), medians of `repeats` runs with the
+// stages taken in turn within each run (round-robin): the point bake, the quadrature (elements and
+// points), f at the quadrature points (lighting_at_quadrature: interpolation and shade_point),
+// the normal equations' assembly (least_squares_fit stopped at once: tolerance 1, no CG step
+// taken from the first guess), and the conjugate gradient (the full fit minus the assembly).
+int breakdown(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles,
+              const std::string& only_scene) {
+  std::printf("| mesh | scene | pt | point bake | quadrature | f at points | assembly | CG | CG iterations | total LS | f evals / vertex |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
+  for (const auto& s : sizes) {
+    const std::size_t triangles = std::size_t(2 * s[0] * s[1]);
+    if (triangles > max_triangles || triangles < min_triangles) continue;
+    const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
+    for (const char* name : {"studio", "window"}) {
+      if (!only_scene.empty() && only_scene != name) continue;
+      const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
+      for (int samples : {1, 3, 6}) {
+        std::vector<double> t_point, t_quad, t_f, t_asm, t_cg;
+        int iterations = 0;
+        std::size_t points = 0;
+        for (int k = 0; k < repeats; ++k) {
+          double t0 = cpu_ms();
+          const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+          t_point.push_back(cpu_ms() - t0);
+          t0 = cpu_ms();
+          const std::vector<double> world = world_positions(mesh, scene);
+          const FitElements elements = fit_elements(mesh);
+          const FitQuadrature q = fit_quadrature(elements, world, samples);
+          t_quad.push_back(cpu_ms() - t0);
+          points = q.size();
+          t0 = cpu_ms();
+          std::vector<double> f = clamped(lighting_at_quadrature(mesh, scene, q, world, point.vertex_normals, {}, {}));
+          t_f.push_back(cpu_ms() - t0);
+          LeastSquaresFitOptions o;
+          o.upper = 1;
+          o.tolerance = 1;
+          t0 = cpu_ms();
+          least_squares_fit(elements, world, q, f, point.rgb, 3, o);
+          const double assembly = cpu_ms() - t0;
+          t_asm.push_back(assembly);
+          o.tolerance = LeastSquaresFitOptions{}.tolerance;
+          o.accuracy = kEightBitFitAccuracy;  // as bake-lighting's 8-bit output
+          t0 = cpu_ms();
+          iterations = least_squares_fit(elements, world, q, f, point.rgb, 3, o).iterations;
+          t_cg.push_back(std::max(0.0, cpu_ms() - t0 - assembly));
+        }
+        const double total = median(t_point) + median(t_quad) + median(t_f) + median(t_asm) + median(t_cg);
+        std::printf("| torus %zuk tri | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.2f | %.1f |\n",
+                    mesh.num_faces() / 1000, name, samples, median(t_point), median(t_quad), median(t_f),
+                    median(t_asm), median(t_cg), iterations, total, double(points) / double(mesh.num_vertices()));
+        std::fflush(stdout);
+      }
+    }
+  }
+  return 0;
+}
+
+// Why a fit gains what it gains: the relative L2 error (the 12-point reference, as the table) of
+// the point colours and of the 3-point least-squares fit at several regulariser weights λ (the
+// default is 0), with the 8-bit bounds (f, the reference and the colours clamped to [0, 1]) and
+// without them (HDR: nothing clamped), and the share of the surface where the clamped reference is
+// saturated (some channel at 1).
+int errors(const std::string& src, std::size_t max_triangles) {
+  std::printf("| mesh | scene | bounds | point | LS λ=0 (default) | LS λ=1e-3 | LS λ=1e-2 | LS λ=1e-1 | gain at λ=0 | saturated area |\n"
+              "|---|---|---|---|---|---|---|---|---|---|\n");
   const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
   for (const auto& s : sizes) {
     if (std::size_t(2 * s[0] * s[1]) > max_triangles) continue;
     const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
     for (const char* name : {"studio", "window"}) {
       const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
-      const BakeResult normals = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+      const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
       const std::vector<double> world = world_positions(mesh, scene);
       const FitQuadrature ref = fit_quadrature(fit_elements(mesh), world, 12);
-      const std::vector<double> f = clamped(lighting_at_quadrature(mesh, scene, ref, world, normals.vertex_normals, {}, {}));
-      const Row point = run(mesh, scene, 0, repeats, ref, f);
-      for (int samples : {0, 1, 3, 6}) {
-        const Row r = samples == 0 ? point : run(mesh, scene, samples, repeats, ref, f);
-        std::printf("| torus %zuk tri | %s | %s | %.1f | %.2f | %.5f | %+.0f%% |\n", mesh.num_faces() / 1000, name,
-                    samples == 0 ? "point" : ("least squares, " + std::to_string(samples) + " pt").c_str(), r.ms,
-                    r.ms / point.ms, r.error, 100 * (r.error / point.error - 1));
+      const std::vector<double> f_raw = lighting_at_quadrature(mesh, scene, ref, world, point.vertex_normals, {}, {});
+      for (bool eight_bit : {true, false}) {
+        const std::vector<double> f = eight_bit ? clamped(f_raw) : f_raw;
+        double saturated = 0, area = 0;
+        for (std::size_t k = 0; k < ref.size(); ++k) {
+          area += ref.weight[k];
+          if (std::max({f[3 * k], f[3 * k + 1], f[3 * k + 2]}) >= 1) saturated += ref.weight[k];
+        }
+        const double e_point = relative_l2_error(ref, f, eight_bit ? clamped(point.rgb) : point.rgb, 3);
+        std::printf("| torus %zuk tri | %s | %s | %.5f |", mesh.num_faces() / 1000, name, eight_bit ? "8-bit" : "HDR", e_point);
+        double e0 = 0;
+        for (double lambda : {0.0, 1e-3, 1e-2, 1e-1}) {
+          VertexFitOptions fit;
+          fit.method = VertexFit::LeastSquares;
+          fit.samples = 3;
+          fit.solve.regularization = lambda;
+          if (eight_bit) {
+            fit.solve.upper = 1;
+            fit.solve.accuracy = kEightBitFitAccuracy;
+          }
+          const double e = relative_l2_error(ref, f, fit_vertex_lighting(mesh, scene, point, {}, {}, fit).rgb, 3);
+          if (lambda == 0) e0 = e;
+          std::printf(" %.5f |", e);
+        }
+        std::printf(" %+.0f%% | %.0f%% |\n", 100 * (e0 / e_point - 1), area > 0 ? 100 * saturated / area : 0.0);
         std::fflush(stdout);
       }
     }
@@ -132,10 +239,15 @@ int picture(const std::string& src, const std::string& out) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] | picture SRC_DIR OUT.png\n");
+    std::fprintf(stderr, "usage: bench_fit table|breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES] | picture SRC_DIR OUT.png\n");
     return 2;
   }
   const std::string mode = argv[1], src = argv[2];
   if (mode == "picture" && argc > 3) return picture(src, argv[3]);
-  return table(src, argc > 3 ? std::atoi(argv[3]) : 5, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000);
+  if (mode == "errors") return errors(src, argc > 3 ? std::size_t(std::atoll(argv[3])) : 20000);
+  if (mode == "breakdown")
+    return breakdown(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000,
+                     argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 ? argv[6] : "");
+  return table(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000,
+               argc > 5 ? std::size_t(std::atoll(argv[5])) : 0);
 }

@@ -45,18 +45,11 @@
 #include <shadetool/visibility/sample_sequence.h>
 #include <shadetool/visibility/visibility_scene.h>
 
+#include "../bench_timing.h"
+
 using namespace shadetool;
 
 namespace {
-
-double now_ms() {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 // The bare Embree scene: same float vertices and triangles as VisibilityScene builds.
 struct BareScene {

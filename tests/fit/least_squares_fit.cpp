@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include <shadetool/fit/least_squares_fit.h>
@@ -191,6 +192,45 @@ TEST_CASE("The fit equals the dense normal-equations solve on planar quads (bili
   const std::vector<double> expected = dense_solve(M, b);
   const std::vector<double> got = fit_of(mesh, f, 6, 0.0);
   CHECK(max_relative(got, expected) < 1e-6);
+}
+
+TEST_CASE("With an accuracy, CG stops early and every value is still within it of the dense solve (Wathen's bound)",
+          "[fit][least_squares]") {
+  // The stop |A c - b|_2 <= a min M_ii / 4 must bound |c - c*|_inf by a: checked against the
+  // independent dense solve, on irregular triangles (12-point rule, f of degree 4: b exact) and on
+  // jittered planar quads (3 x 3 Gauss, f of degree 3).
+  const auto quartic = [](const Vec3d& p) { return 1 + p.x * p.x * p.y * p.z + 0.5 * p.z * p.z * p.z - p.y; };
+  const auto cubic = [](const Vec3d& p) { return 1 + 0.1 * p.x * p.x * p.y - 0.05 * p.y * p.y + 0.2 * p.x; };
+  const Mesh sphere = shadetool::testing::icosphere(3, 0.2).mesh;  // 642 vertices
+  const Mesh quads = planar_quads(12, 10);
+  for (auto [mesh, f, samples] : {std::tuple<const Mesh*, std::function<double(const Vec3d&)>, int>{&sphere, quartic, 12},
+                                  {&quads, cubic, 6}}) {
+    std::vector<std::vector<double>> M;
+    std::vector<double> b;
+    dense_normal_equations(*mesh, f, M, b);
+    const std::vector<double> expected = dense_solve(M, b);
+    const FitElements e = fit_elements(*mesh);
+    const FitQuadrature q = fit_quadrature(e, mesh->positions, samples);
+    const std::vector<double> x = interpolate_vertex_data(q, mesh->positions, 3);
+    std::vector<double> fq(q.size()), point(mesh->num_vertices());
+    for (std::size_t s = 0; s < q.size(); ++s) fq[s] = f(get3(x, s));
+    for (std::size_t v = 0; v < mesh->num_vertices(); ++v) point[v] = f(mesh->position(v));
+    LeastSquaresFitOptions o;
+    o.lower = -1e300;
+    o.tolerance = 1e-14;
+    const LeastSquaresFit full = least_squares_fit(e, mesh->positions, q, fq, point, 1, o);
+    for (double a : {1e-3, 1e-5}) {
+      o.accuracy = a;
+      const LeastSquaresFit early = least_squares_fit(e, mesh->positions, q, fq, point, 1, o);
+      double worst = 0;
+      for (std::size_t v = 0; v < expected.size(); ++v) worst = std::max(worst, std::fabs(early.values[v] - expected[v]));
+      INFO("accuracy " << a << ": max |c - c*| " << worst << ", CG iterations " << early.iterations << " (to 1e-14: "
+                       << full.iterations << ")");
+      CHECK(worst <= a);
+      CHECK(early.iterations > 0);
+      CHECK(early.iterations < full.iterations);
+    }
+  }
 }
 
 TEST_CASE("A linear signal is reproduced exactly: fit = point values, with and without the regulariser",

@@ -189,10 +189,16 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     throw Error("least_squares_fit: the regularization weight must be finite and >= 0");
   LeastSquaresFit fit;
   std::vector<Triplet> triplets;
-  std::vector<double> diagonal(N, 0.0);
+  triplets.reserve(9 * e.tri_face.size() + 16 * e.quad_face.size() +
+                   (options.regularization > 0 ? 16 * 3 * (e.tri_face.size() + 2 * e.quad_face.size()) / 2 : 0));
+  std::vector<double> diagonal(N, 0.0), mass_diagonal(N, 0.0);  // of M + lambda R, of M
   const auto add = [&](std::uint32_t i, std::uint32_t j, double v) {
     triplets.emplace_back(int(i), int(j), v);
     if (i == j) diagonal[i] += v;
+  };
+  const auto add_mass = [&](std::uint32_t i, std::uint32_t j, double v) {
+    add(i, j, v);
+    if (i == j) mass_diagonal[i] += v;
   };
 
   // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
@@ -204,8 +210,9 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
     if (!(area > 0)) continue;
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) add(n[i], n[j], area / 12 * (i == j ? 2 : 1));
-    reg.push_back({{n[0], n[1], n[2]}, {e.tri_vertex[3 * t], e.tri_vertex[3 * t + 1], e.tri_vertex[3 * t + 2]}});
+      for (int j = 0; j < 3; ++j) add_mass(n[i], n[j], area / 12 * (i == j ? 2 : 1));
+    if (options.regularization > 0)
+      reg.push_back({{n[0], n[1], n[2]}, {e.tri_vertex[3 * t], e.tri_vertex[3 * t + 1], e.tri_vertex[3 * t + 2]}});
   }
   // M, quads: 3x3 Gauss-Legendre on the bilinear map.
   const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
@@ -224,9 +231,11 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       }
     if (!(m[0][0] + m[1][1] + m[2][2] + m[3][3] > 0)) continue;
     for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) add(n[i], n[j], m[i][j]);
-    reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
-    reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
+      for (int j = 0; j < 4; ++j) add_mass(n[i], n[j], m[i][j]);
+    if (options.regularization > 0) {
+      reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
+      reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
+    }
   }
 
   // R: the interior edges (exactly two triangles of positive area), found by sorting the sides.
@@ -296,15 +305,30 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     cg.setTolerance(options.tolerance);
     if (options.max_iterations > 0) cg.setMaxIterations(options.max_iterations);
     cg.compute(A);
+    double min_mass = std::numeric_limits<double>::infinity();  // over the active nodes
+    for (std::size_t i = 0; i < N; ++i)
+      if (index[i] >= 0) min_mass = std::min(min_mass, mass_diagonal[i]);
+    // b for every channel in one pass over the points (each entry summed in point order, as one
+    // pass per channel would).
+    std::vector<double> b_all(std::size_t(n_active) * width, 0.0);
+    for (std::size_t s = 0; s < S; ++s)
+      for (int j = 0; j < 4; ++j) {
+        const int r = index[q.node[4 * s + j]];
+        if (r < 0) continue;
+        const double w = q.weight[s] * q.phi[4 * s + j];
+        for (std::size_t k = 0; k < width; ++k) b_all[std::size_t(r) * width + k] += w * f[s * width + k];
+      }
     for (std::size_t k = 0; k < width; ++k) {
-      Eigen::VectorXd b = Eigen::VectorXd::Zero(n_active), x0(n_active);
-      for (std::size_t s = 0; s < S; ++s)
-        for (int j = 0; j < 4; ++j) {
-          const int r = index[q.node[4 * s + j]];
-          if (r >= 0) b[r] += q.weight[s] * q.phi[4 * s + j] * f[s * width + k];
-        }
+      Eigen::VectorXd b(n_active), x0(n_active);
+      for (int r = 0; r < n_active; ++r) b[r] = b_all[std::size_t(r) * width + k];
       for (std::size_t i = 0; i < N; ++i)
         if (index[i] >= 0) x0[index[i]] = point_values[i * width + k];
+      // accuracy: |A c - b|_2 <= accuracy min M_ii / 4 bounds every value's error (header, Solver).
+      const double b_norm = b.norm();
+      double tolerance = options.tolerance;
+      if (options.accuracy > 0 && b_norm > 0 && min_mass > 0 && std::isfinite(min_mass))
+        tolerance = std::max(tolerance, options.accuracy * min_mass / 4 / b_norm);  // divisor checked
+      cg.setTolerance(tolerance);
       const Eigen::VectorXd x = cg.solveWithGuess(b, x0);
       fit.iterations = std::max(fit.iterations, int(cg.iterations()));
       fit.residual = std::max(fit.residual, double(cg.error()));

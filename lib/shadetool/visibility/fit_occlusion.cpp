@@ -1,12 +1,18 @@
 // fit_occlusion.cpp: see fit_occlusion.h.
 #include <shadetool/visibility/fit_occlusion.h>
 
+#include <memory>
+
 #include <shadetool/core/error.h>
 
 namespace shadetool {
 
-OcclusionFit fit_occlusion(const Mesh& mesh, const std::vector<float>& point_open, const AmbientOcclusionOptions& fixed,
-                           const OcclusionToErrorOptions* adaptive, const VertexFitOptions& fit, const std::string& source) {
+namespace {
+
+// given: the scene the rays meet (null: the mesh's own BVH, built here and freed before the solve).
+OcclusionFit fit_against(const VisibilityScene* given, const Mesh& mesh, const std::vector<float>& point_open,
+                         const AmbientOcclusionOptions& fixed, const OcclusionToErrorOptions* adaptive,
+                         const VertexFitOptions& fit, const std::string& source) {
   const std::size_t V = mesh.num_vertices();
   if (point_open.size() != V) throw Error("fit_occlusion: " + std::to_string(point_open.size()) + " values for " + std::to_string(V) + " vertices");
   bool computed = false;
@@ -21,7 +27,9 @@ OcclusionFit fit_occlusion(const Mesh& mesh, const std::vector<float>& point_ope
   out.quadrature_points = q.size();
   std::vector<float> open;
   {
-    const VisibilityScene scene(mesh);
+    std::unique_ptr<VisibilityScene> own;
+    if (!given) own = std::make_unique<VisibilityScene>(mesh);
+    const VisibilityScene& scene = given ? *given : *own;
     if (adaptive) {
       OcclusionToError r = occlusion_to_error_at_points(scene, points, normals, ids, *adaptive);
       open = std::move(r.open_fraction);
@@ -43,6 +51,19 @@ OcclusionFit fit_occlusion(const Mesh& mesh, const std::vector<float>& point_ope
   out.open_fraction.assign(out.solve.values.begin(), out.solve.values.end());
   out.solve.values.clear();
   return out;
+}
+
+}  // namespace
+
+OcclusionFit fit_occlusion(const Mesh& mesh, const std::vector<float>& point_open, const AmbientOcclusionOptions& fixed,
+                           const OcclusionToErrorOptions* adaptive, const VertexFitOptions& fit, const std::string& source) {
+  return fit_against(nullptr, mesh, point_open, fixed, adaptive, fit, source);
+}
+
+OcclusionFit fit_occlusion(const VisibilityScene& scene, const Mesh& mesh, const std::vector<float>& point_open,
+                           const AmbientOcclusionOptions& fixed, const OcclusionToErrorOptions* adaptive,
+                           const VertexFitOptions& fit, const std::string& source) {
+  return fit_against(&scene, mesh, point_open, fixed, adaptive, fit, source);
 }
 
 }  // namespace shadetool

@@ -21,6 +21,7 @@
 #include <shadetool/fit/least_squares_fit.h>
 #include <shadetool/visibility/ambient_occlusion.h>
 #include <shadetool/visibility/occlusion_to_error.h>
+#include <shadetool/visibility/visibility_scene.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
@@ -36,6 +37,13 @@ struct OcclusionFit {
 
 OcclusionFit fit_occlusion(const Mesh& mesh, const std::vector<float>& point_open, const AmbientOcclusionOptions& fixed,
                            const OcclusionToErrorOptions* adaptive, const VertexFitOptions& fit, const std::string& source);
+
+// The same fit for `mesh` against a scene built from another mesh (a glTF document's whole scene
+// in world space, gltf/gltf_occlusion.h: `mesh` is then the primitive placed in that world); the
+// quadrature points' rays meet `scene`, areas are measured in mesh's own coordinates.
+OcclusionFit fit_occlusion(const VisibilityScene& scene, const Mesh& mesh, const std::vector<float>& point_open,
+                           const AmbientOcclusionOptions& fixed, const OcclusionToErrorOptions* adaptive,
+                           const VertexFitOptions& fit, const std::string& source);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

@@ -139,13 +139,19 @@ OcclusionToError occlusion_to_error_at_points(const VisibilityScene& scene, cons
 
 OcclusionToError mesh_occlusion_to_error(const Mesh& mesh, bool per_face, const OcclusionToErrorOptions& options,
                                          const std::string& source, bool& normals_computed) {
-  normals_computed = false;
   const VisibilityScene scene(mesh);
+  OcclusionToError out = mesh_occlusion_to_error(scene, mesh, per_face, options, source, normals_computed);
+  out.scene = scene.stats();
+  return out;
+}
+
+OcclusionToError mesh_occlusion_to_error(const VisibilityScene& scene, const Mesh& mesh, bool per_face,
+                                         const OcclusionToErrorOptions& options, const std::string& source,
+                                         bool& normals_computed) {
+  normals_computed = false;
   if (!per_face) {
     const std::vector<double> axes = occlusion_vertex_axes(mesh, source, normals_computed);
-    OcclusionToError out = occlusion_to_error_at_points(scene, mesh.positions, axes, {}, options);
-    out.scene = scene.stats();
-    return out;
+    return occlusion_to_error_at_points(scene, mesh.positions, axes, {}, options);
   }
   const std::size_t F = mesh.num_faces();
   std::vector<double> normals = face_normals(mesh, Precision::Double), centres(3 * F, 0.0);
@@ -159,9 +165,7 @@ OcclusionToError mesh_occlusion_to_error(const Mesh& mesh, bool per_face, const 
     for (std::size_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) sum += mesh.position(mesh.corner_vertex[c]);
     set3(centres, f, sum * (1.0 / double(size)));  // divisor: size >= 3
   }
-  OcclusionToError out = occlusion_to_error_at_points(scene, centres, normals, {}, options);
-  out.scene = scene.stats();
-  return out;
+  return occlusion_to_error_at_points(scene, centres, normals, {}, options);
 }
 
 std::map<std::uint32_t, std::size_t> ray_histogram(const std::vector<std::uint32_t>& rays) {

@@ -67,6 +67,12 @@ OcclusionToError occlusion_to_error_at_points(const VisibilityScene& scene, cons
 // face normal; the mesh's own BVH), as mesh_occlusion does with a fixed count.
 OcclusionToError mesh_occlusion_to_error(const Mesh& mesh, bool per_face, const OcclusionToErrorOptions& options,
                                          const std::string& source, bool& normals_computed);
+// The same job for `mesh` against a scene built from another mesh (a glTF document's whole scene,
+// gltf/gltf_occlusion.h; the points are the mesh's own vertices or face centres, ids their
+// indices, as above); `scene` in the result is left empty (the caller owns the BVH).
+OcclusionToError mesh_occlusion_to_error(const VisibilityScene& scene, const Mesh& mesh, bool per_face,
+                                         const OcclusionToErrorOptions& options, const std::string& source,
+                                         bool& normals_computed);
 
 // Points per ray count (32 for a point the pilot settled, N + 28 otherwise, 0 for skipped points).
 std::map<std::uint32_t, std::size_t> ray_histogram(const std::vector<std::uint32_t>& rays);
