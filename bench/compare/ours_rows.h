@@ -18,6 +18,7 @@
 #include "harness.h"
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
+#include <shadetool/normals/weighting.h>  // weighting_name: the option vocabulary's names
 
 namespace shadetool::bench {
 
@@ -25,16 +26,6 @@ inline std::string fmt_g(const char* format, double x) {
   char buf[96];
   std::snprintf(buf, sizeof buf, format, x);
   return buf;
-}
-
-inline const char* weighting_name(Weighting w) {
-  switch (w) {
-    case Weighting::Uniform: return "uniform";
-    case Weighting::Area: return "area";
-    case Weighting::Angle: return "angle";
-    case Weighting::Max: return "max";
-  }
-  return "?";
 }
 
 // One case per (weighting, precision, threads): shadetool::vertex_normals. Notes: vertices that
