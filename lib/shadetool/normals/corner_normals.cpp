@@ -4,21 +4,23 @@
 // triangles); (2) vertex -> corners adjacency as flat arrays (offsets + corners in ascending
 // corner order; two passes: count, fill); (3) in parallel over vertices: link the two corners
 // across each smooth manifold edge of the vertex's fan (link_small_fan: every pair of the fan's
-// edge ends compared, no sort, for fans of up to kSmallFan corners; link_large_fan: ends sorted by
-// far vertex, for poles and cone apexes; union-find over the vertex's corners, no allocation per
-// vertex), number groups by first corner; (4) prefix sum of group counts gives each vertex's
-// rows in the pool, and every corner its row (corner_index); (5) the corners' weighted
-// contributions (corner_contributions.h) are summed into their rows by the same deterministic
-// parallel scatter as vertex_normals (accumulate_by_vertex.h), so a group's sum adds its corners in
-// ascending corner order: with no crease in the way the result is vertex_normals' bit for bit;
-// (6) rows normalised in parallel, fallbacks for the rare rows that cannot be.
+// edge ends compared, no sort, for fans of up to kSmallFan corners, and a fan that is one closed
+// ring of smooth edges is one group at once; link_large_fan: ends sorted by far vertex, for poles
+// and cone apexes; union-find over the vertex's corners, no allocation per vertex), number groups
+// by first corner. The faces around a vertex lie anywhere in the face arrays, so this pass waits
+// on memory: the fans kPrefetchVertices ahead are prefetched. (4) prefix sum of group counts gives
+// each vertex's rows in the pool, and every corner its row (corner_index); (5) the corners'
+// weighted contributions (corner_contributions.h) are summed into their rows by the same
+// deterministic parallel scatter as vertex_normals (accumulate_by_vertex.h), so a group's sum adds
+// its corners in ascending corner order: with no crease in the way the result is vertex_normals'
+// bit for bit; (6) rows normalised in parallel, fallbacks for the rare rows that cannot be.
 // Precision: contributions in double, rounded once to T, sums in T (double or float, as
 // vertex_normals; corner_contributions.h); the crease test compares angles in double:
 // interior_angle(|n1 x n2|, n1 . n2) > crease_angle (interior_angle.h), decided from n1 . n2 alone
 // away from the threshold (CreaseTest: the same verdicts, see there).
-// Same results, bit for bit, as the crease path before issue 31 (grouping by sorted edge ends
-// and an angle per edge end; tests/support/corner_normals_reference.h keeps it), 1.6-1.8x faster
-// on one thread (bench/normals/results/notes.md).
+// Same results, bit for bit, as the crease path before issue 31 (grouping by sorted edge ends and
+// an angle per edge end; tests/support/corner_normals_reference.h keeps it as the reference of
+// tests/normals/corner_normals_bitwise.cpp); figures in bench/normals/results/notes.md.
 #include <shadetool/normals/corner_normals.h>
 
 #include <algorithm>
@@ -28,6 +30,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 
 #include <shadetool/geometry/interior_angle.h>
@@ -48,8 +51,10 @@ using namespace engine;
 
 // Corners of each vertex: corners[offset[v] .. offset[v+1]), ascending (two passes over the
 // corners: count, fill).
+// Scratch in BulkVectors (core/bulk_reserve.h: unzeroed, huge pages): every entry is written.
 struct VertexCorners {
-  std::vector<std::uint32_t> offset, corners;
+  std::vector<std::uint32_t> offset;
+  BulkVector<std::uint32_t> corners;
 };
 
 VertexCorners vertex_corners(const MeshView& mesh) {
@@ -59,14 +64,15 @@ VertexCorners vertex_corners(const MeshView& mesh) {
   for (std::size_t c = 0; c < C; ++c) ++vc.offset[mesh.corner_vertex[c] + 1];
   for (std::size_t v = 0; v < V; ++v) vc.offset[v + 1] += vc.offset[v];
   vc.corners.resize(C);
-  std::vector<std::uint32_t> fill(vc.offset.begin(), vc.offset.end() - 1);
+  BulkVector<std::uint32_t> fill(vc.offset.begin(), vc.offset.end() - 1);
   for (std::size_t c = 0; c < C; ++c) vc.corners[fill[mesh.corner_vertex[c]]++] = std::uint32_t(c);
   return vc;
 }
 
 // What the fan grouping reads of a corner: its face, and the vertices before and after it in the
-// face (kNoVertex for both in a degenerate face, whose edges are creases).
-constexpr std::uint32_t kNoVertex = 0xffffffffu;
+// face; in a degenerate face (whose edges are creases) both are the corner's own vertex, which no
+// edge end of the fan leads to.
+constexpr std::uint32_t kNoLink = 0xffffffffu;  // link_small_fan: a corner linked to none
 struct FanCorner {
   std::uint32_t corner, face, next, prev;
 };
@@ -90,11 +96,11 @@ struct CornerTopology {
     const std::uint32_t* cv = mesh.corner_vertex;
     if (triangles) {
       const std::uint32_t f = c / 3, k = c - 3 * f;
-      if (!valid[f]) return {c, f, kNoVertex, kNoVertex};
+      if (!valid[f]) return {c, f, cv[c], cv[c]};
       return {c, f, cv[k == 2 ? c - 2 : c + 1], cv[k == 0 ? c + 2 : c - 1]};
     }
     const std::uint32_t f = face_of[c];
-    if (!valid[f]) return {c, f, kNoVertex, kNoVertex};
+    if (!valid[f]) return {c, f, cv[c], cv[c]};
     const std::uint32_t begin = mesh.face_begin(f), end = mesh.face_end(f);
     return {c, f, cv[c + 1 < end ? c + 1 : begin], cv[c > begin ? c - 1 : end - 1]};
   }
@@ -140,7 +146,7 @@ struct CreaseTest {
 
 // Per-range scratch for the vertex fans (grown to the largest fan seen, never shrunk).
 constexpr std::uint32_t kSmallFan = 32;
-constexpr std::size_t kPrefetchVertices = 8;
+constexpr std::size_t kPrefetchVertices = 16;
 struct FanScratch {
   std::vector<std::uint64_t> ends;
   std::vector<std::uint32_t> parent_, number_;
@@ -167,23 +173,43 @@ struct FanScratch {
 // faces, and smooth(face i, face j). Corners of degenerate faces have no ends (their edges are
 // creases). parent: d roots on entry (union_find.h; union by lower index).
 // Small fans: every pair compared (d^2 <= 1024 comparisons, no sort, no allocation).
+// Returns true when the fan is one closed ring of smooth edges through every corner (the common
+// case: one group, the caller skips the union-find); else links the corners in parent.
 template <class Smooth>
-void link_small_fan(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Smooth& smooth, std::uint32_t* parent) {
-  std::uint32_t nxt[kSmallFan], prv[kSmallFan];
+bool link_small_fan(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Smooth& smooth, std::uint32_t* parent) {
+  std::uint32_t nxt[kSmallFan], prv[kSmallFan], to[kSmallFan];
   for (std::uint32_t i = 0; i < d; ++i) {
     nxt[i] = fan[i].next;
     prv[i] = fan[i].prev;
   }
+  std::uint32_t links = 0;
   for (std::uint32_t i = 0; i < d; ++i) {
+    to[i] = kNoLink;
     const std::uint32_t w = nxt[i];
-    if (w == v || w == kNoVertex) continue;
+    if (w == v) continue;  // no edge end (a degenerate face, or a face that repeats v)
     std::uint32_t leaving = 0, arriving = 0, j = 0;
     for (std::uint32_t k = 0; k < d; ++k) {
       leaving += nxt[k] == w;
       if (prv[k] == w) { ++arriving; j = k; }
     }
-    if (leaving == 1 && arriving == 1 && smooth(fan[i].face, fan[j].face)) union_find_unite(parent, i, j);
+    if (leaving == 1 && arriving == 1 && smooth(fan[i].face, fan[j].face)) {
+      to[i] = j;
+      ++links;
+    }
   }
+  if (links == d) {
+    // Every corner has its leaving edge linked, to distinct corners (each far vertex is left and
+    // reached once): to is a permutation. One cycle through all d corners is one group.
+    std::uint32_t k = 0, steps = 0;
+    do {
+      k = to[k];
+      ++steps;
+    } while (k != 0 && steps <= d);
+    if (steps == d) return true;
+  }
+  for (std::uint32_t i = 0; i < d; ++i)
+    if (to[i] != kNoLink) union_find_unite(parent, i, to[i]);
+  return false;
 }
 
 // Large fans (a pole, a cone apex): the edge ends as one 64-bit key each: far vertex (high 32
@@ -197,9 +223,9 @@ void link_large_fan(std::uint32_t v, const FanCorner* fan, std::uint32_t d, cons
   };
   ends.clear();
   for (std::uint32_t i = 0; i < d; ++i) {
-    const std::uint32_t n = fan[i].next, p = fan[i].prev;  // kNoVertex: degenerate face, no ends
-    if (n != v && n != kNoVertex) ends.push_back(end_key(n, i, true));
-    if (p != v && p != kNoVertex) ends.push_back(end_key(p, i, false));
+    const std::uint32_t n = fan[i].next, p = fan[i].prev;  // both v in a degenerate face: no ends
+    if (n != v) ends.push_back(end_key(n, i, true));
+    if (p != v) ends.push_back(end_key(p, i, false));
   }
   std::sort(ends.begin(), ends.end());
   for (std::size_t i = 0; i < ends.size();) {
@@ -224,6 +250,7 @@ std::size_t sum_rows(const MeshView& mesh, const std::uint32_t* target, std::siz
   ChunkPlan plan;
   tbb::parallel_invoke(
       [&] {
+        reserve_bulk(normals, 3 * rows);
         normals.assign(3 * rows, 0.0);
         if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * rows, 0.0f);
       },
@@ -289,6 +316,7 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
 
   // (3) groups per vertex; the group number of each corner is stored in corner_index for now.
   CornerNormals out;
+  reserve_bulk(out.corner_index, C);  // huge pages for the fresh array (core/bulk_reserve.h)
   out.corner_index.resize(C);
   std::vector<std::uint32_t> groups(V, 0);
   std::vector<std::uint8_t> has_degenerate_group(V, 0);
@@ -302,13 +330,16 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
   parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
     FanScratch scratch;  // reused across the range's vertices
     for (std::size_t v = v_begin; v < v_end; ++v) {
-      // The faces around a vertex lie anywhere in the face arrays: fetch those of the vertex
-      // kPrefetchVertices ahead (its corners' vertex indices, validity and face normals).
+      // The faces around a vertex lie anywhere in the face arrays: fetch what the vertex
+      // kPrefetchVertices ahead will read (its corners' faces and face normals) and write
+      // (corner_index). Measured: without it the pass took 1.2x (sphere) to 1.7x (faceted
+      // icosahedron) as long (bench/normals/results/notes.md).
       if (v + kPrefetchVertices < v_end) {
         for (std::uint32_t i = vc.offset[v + kPrefetchVertices], e = vc.offset[v + kPrefetchVertices + 1]; i < e; ++i) {
           const std::uint32_t c = vc.corners[i];
           __builtin_prefetch(mesh.corner_vertex + c);
           __builtin_prefetch(fn.data() + 3 * std::size_t(topo.triangles ? c / 3 : topo.face_of[c]));
+          __builtin_prefetch(out.corner_index.data() + c, 1);
         }
       }
       const std::uint32_t begin = vc.offset[v], d = vc.offset[v + 1] - begin;
@@ -316,8 +347,15 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
       FanCorner* fan = scratch.fan(d);
       for (std::uint32_t i = 0; i < d; ++i) fan[i] = topo.fan_corner(vc.corners[begin + i], valid.data());
       std::uint32_t* parent = scratch.parent(d);
-      if (d <= kSmallFan) link_small_fan(std::uint32_t(v), fan, d, smooth, parent);
-      else link_large_fan(std::uint32_t(v), fan, d, smooth, parent, scratch.ends);
+      if (d <= kSmallFan) {
+        if (link_small_fan(std::uint32_t(v), fan, d, smooth, parent)) {  // one group, no degenerate face
+          for (std::uint32_t i = 0; i < d; ++i) out.corner_index[fan[i].corner] = 0;
+          groups[v] = 1;
+          continue;
+        }
+      } else {
+        link_large_fan(std::uint32_t(v), fan, d, smooth, parent, scratch.ends);
+      }
       // Number groups by first corner; degenerate-face corners share the vertex's only group
       // when it has one, else get a group of their own (numbered last).
       std::uint32_t* number = scratch.number(d);

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <vector>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/geometry/face_area_vector.h>
@@ -95,7 +96,9 @@ std::vector<double> face_normals(const MeshView& mesh, Precision precision) {
   std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
   const MeshView in_range = normals_detail::in_kernel_range(mesh, storage);
   const std::size_t F = mesh.num_faces();
-  std::vector<double> out(3 * F);
+  std::vector<double> out;
+  reserve_bulk(out, 3 * F);  // huge pages for the fresh array (core/bulk_reserve.h)
+  out.resize(3 * F);
   engine::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
     const bool triangles = in_range.all_triangles();
     if (precision == Precision::Float) {
