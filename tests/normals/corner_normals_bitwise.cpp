@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
 #include <shadetool/core/error.h>
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/corner_normals.h>
@@ -265,4 +267,19 @@ TEST_CASE("corner_normals: smoothing groups, tiny and huge scales, irregular sph
   for (Weighting w : kAll)
     for (Precision p : {Precision::Double, Precision::Float}) check_same(sphere, 30 * kDeg, w, p, "irregular sphere");
   check_same(sphere, 2 * kDeg, Weighting::Angle, Precision::Double, "irregular sphere");
+}
+
+TEST_CASE("corner_normals: the in-order (1 thread) and parallel (2 threads) groupings both equal the frozen copy",
+          "[corner_normals][reference][parallel]") {
+  // 40401 vertices: above kSerialBelow, so 2 threads take the parallel ranges and the pass that
+  // adds each vertex's first row afterwards; 1 thread numbers rows in vertex order at once.
+  const Mesh m = random_terrain(200, 0.4, 23);
+  REQUIRE(m.num_vertices() > 32768);
+  const CornerNormals old = reference_crease::corner_normals_reference(MeshView(m), 30 * kDeg, Weighting::Angle, Precision::Double);
+  for (int threads : {1, 2}) {
+    CornerNormals now;
+    tbb::task_arena(threads).execute([&] { now = corner_normals(m, 30 * kDeg, Weighting::Angle); });
+    INFO(threads << " threads");
+    CHECK(difference(now, old) == "");
+  }
 }
