@@ -9,7 +9,8 @@
 // and cone apexes; union-find over the vertex's corners, no allocation per vertex), number groups
 // by first corner. The faces around a vertex lie anywhere in the face arrays, so this pass waits
 // on memory: the fans kPrefetchVertices ahead are prefetched. (4) prefix sum of group counts gives
-// each vertex's rows in the pool, and every corner its row (corner_index); (5) the corners'
+// each vertex's rows in the pool, and every corner its row (corner_index; on one thread the
+// vertices go in order and (3) writes the rows directly); (5) the corners'
 // weighted contributions (corner_contributions.h) are summed into their rows by the same
 // deterministic parallel scatter as vertex_normals (accumulate_by_vertex.h), so a group's sum adds
 // its corners in ascending corner order: with no crease in the way the result is vertex_normals'
