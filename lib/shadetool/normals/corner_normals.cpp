@@ -1,26 +1,37 @@
 // corner_normals.cpp: see corner_normals.h.
 //
-// Steps: (1) unit face normals (crease test, degenerate faces); (2) vertex -> corners adjacency
-// as flat arrays (offsets + corners in ascending corner order; two passes: count, fill);
-// (3) in parallel over vertices: sort the vertex's edge ends by the far vertex, link the two
-// corners across each smooth manifold edge (union-find over the vertex's corners, no allocation
-// per vertex), number groups by first corner; (4) prefix sum of group counts gives each vertex's
-// rows in the pool, and every corner its row (corner_index); (5) the corners' weighted
-// contributions (corner_contributions.h) are summed into their rows by the same deterministic
-// parallel scatter as vertex_normals (accumulate_by_vertex.h), so a group's sum adds its corners in
-// ascending corner order: with no crease in the way the result is vertex_normals' bit for bit;
-// (6) rows normalised in parallel, fallbacks for the rare rows that cannot be.
+// Steps: (1) unit face normals (crease test, degenerate faces; face_normals.h, vectorised for
+// triangles); (2) vertex -> corners adjacency as flat arrays (offsets + corners in ascending
+// corner order; two passes: count, fill); (3) in parallel over vertices: link the two corners
+// across each smooth manifold edge of the vertex's fan (link_small_fan: every pair of the fan's
+// edge ends compared, no sort, for fans of up to kSmallFan corners, and a fan that is one closed
+// ring of smooth edges is one group at once; link_large_fan: ends sorted by far vertex, for poles
+// and cone apexes; union-find over the vertex's corners, no allocation per vertex), number groups
+// by first corner. The faces around a vertex lie anywhere in the face arrays, so this pass waits
+// on memory: the fans kPrefetchVertices ahead are prefetched. (4) prefix sum of group counts gives
+// each vertex's rows in the pool, and every corner its row (corner_index; on one thread the
+// vertices go in order and (3) writes the rows directly); (5) the corners'
+// weighted contributions (corner_contributions.h) are summed into their rows by the same
+// deterministic parallel scatter as vertex_normals (accumulate_by_vertex.h), so a group's sum adds
+// its corners in ascending corner order: with no crease in the way the result is vertex_normals'
+// bit for bit; (6) rows normalised in parallel, fallbacks for the rare rows that cannot be.
 // Precision: contributions in double, rounded once to T, sums in T (double or float, as
-// vertex_normals; corner_contributions.h); the crease test
-// compares angles in double: atan2(|n1 x n2|, n1 . n2) > crease_angle (interior_angle.h).
+// vertex_normals; corner_contributions.h); the crease test compares angles in double:
+// interior_angle(|n1 x n2|, n1 . n2) > crease_angle (interior_angle.h), decided from n1 . n2 alone
+// away from the threshold (CreaseTest: the same verdicts, see there).
+// Same results, bit for bit, as the crease path before issue 31 (grouping by sorted edge ends and
+// an angle per edge end; tests/support/corner_normals_reference.h keeps it as the reference of
+// tests/normals/corner_normals_bitwise.cpp); figures in bench/normals/results/notes.md.
 #include <shadetool/normals/corner_normals.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include <tbb/parallel_invoke.h>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 
 #include <shadetool/geometry/interior_angle.h>
@@ -28,10 +39,10 @@
 #include <shadetool/normals/engine/accumulate_by_vertex.h>
 #include <shadetool/normals/engine/corner_contributions.h>
 #include <shadetool/normals/face_normals.h>
-#include <shadetool/geometry/interior_angle.h>
 #include <shadetool/normals/engine/mesh_scale.h>
 #include <shadetool/normals/engine/normalise_sums.h>
 #include <shadetool/core/engine/parallel.h>
+#include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/normals/vertex_fallback.h>
 
 namespace shadetool {
@@ -40,9 +51,12 @@ namespace {
 using namespace normals_detail;
 using namespace engine;
 
-// Corners of each vertex: corners[offset[v] .. offset[v+1]), ascending.
+// Corners of each vertex: corners[offset[v] .. offset[v+1]), ascending (two passes over the
+// corners: count, fill).
+// Scratch in BulkVectors (core/bulk_reserve.h: unzeroed, huge pages): every entry is written.
 struct VertexCorners {
-  std::vector<std::uint32_t> offset, corners;
+  std::vector<std::uint32_t> offset;
+  BulkVector<std::uint32_t> corners;
 };
 
 VertexCorners vertex_corners(const MeshView& mesh) {
@@ -52,9 +66,23 @@ VertexCorners vertex_corners(const MeshView& mesh) {
   for (std::size_t c = 0; c < C; ++c) ++vc.offset[mesh.corner_vertex[c] + 1];
   for (std::size_t v = 0; v < V; ++v) vc.offset[v + 1] += vc.offset[v];
   vc.corners.resize(C);
-  std::vector<std::uint32_t> fill(vc.offset.begin(), vc.offset.end() - 1);
+  BulkVector<std::uint32_t> fill(vc.offset.begin(), vc.offset.end() - 1);
   for (std::size_t c = 0; c < C; ++c) vc.corners[fill[mesh.corner_vertex[c]]++] = std::uint32_t(c);
   return vc;
+}
+
+// What the fan grouping reads of a corner: its face, and the vertices before and after it in the
+// face; in a degenerate face (whose edges are creases) both are the corner's own vertex, which no
+// edge end of the fan leads to.
+constexpr std::uint32_t kNoLink = 0xffffffffu;  // link_small_fan: a corner linked to none
+struct FanCorner {
+  std::uint32_t corner, face, next, prev;
+};
+
+// Whether face f has a unit normal in fn (#F by 3, face_normals.h: zero for a degenerate face).
+inline bool has_normal(const double* fn, std::uint32_t f) {
+  const double* n = fn + 3 * std::size_t(f);
+  return !(n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0);
 }
 
 // Face of each corner and its neighbours in the face; triangles by arithmetic (corner = 3 f + k),
@@ -72,20 +100,155 @@ struct CornerTopology {
         for (std::uint32_t c = m.face_begin(f), end = m.face_end(f); c < end; ++c) face_of[c] = std::uint32_t(f);
     });
   }
-  std::uint32_t face(std::uint32_t c) const { return triangles ? c / 3 : face_of[c]; }
-  std::uint32_t next_vertex(std::uint32_t c) const {
-    if (triangles) return mesh.corner_vertex[c % 3 == 2 ? c - 2 : c + 1];
+  FanCorner fan_corner(std::uint32_t c, const double* fn) const {
+    const std::uint32_t* cv = mesh.corner_vertex;
+    if (triangles) {
+      const std::uint32_t f = c / 3, k = c - 3 * f;
+      if (!has_normal(fn, f)) return {c, f, cv[c], cv[c]};
+      return {c, f, cv[k == 2 ? c - 2 : c + 1], cv[k == 0 ? c + 2 : c - 1]};
+    }
     const std::uint32_t f = face_of[c];
-    return mesh.corner_vertex[c + 1 < mesh.face_end(f) ? c + 1 : mesh.face_begin(f)];
-  }
-  std::uint32_t prev_vertex(std::uint32_t c) const {
-    if (triangles) return mesh.corner_vertex[c % 3 == 0 ? c + 2 : c - 1];
-    const std::uint32_t f = face_of[c];
-    return mesh.corner_vertex[c > mesh.face_begin(f) ? c - 1 : mesh.face_end(f) - 1];
+    if (!has_normal(fn, f)) return {c, f, cv[c], cv[c]};
+    const std::uint32_t begin = mesh.face_begin(f), end = mesh.face_end(f);
+    return {c, f, cv[c + 1 < end ? c + 1 : begin], cv[c > begin ? c - 1 : end - 1]};
   }
 };
 
-// Sums of the corners' contributions into rows: row target[c] < rows for every corner, added in
+// The crease test: the edge between unit face normals na, nb is smooth when
+// interior_angle(|na x nb|, na . nb) <= crease_angle (geometry/interior_angle.h), as it always was.
+// Fast path: most edges are far from the threshold, and their verdict follows from d = na . nb
+// alone: with |na|, |nb| within 1e-6 of 1 (double normals: ~1e-16; float-rounded ones: ~1e-7),
+// cos(phi) for the true angle phi between them lies within 4e-7 of the computed d, and the
+// computed interior angle within 1e-14 of phi. So d > cos(crease_angle) + kBand gives phi, and
+// the computed angle, below crease_angle (smooth), d < cos(crease_angle) - kBand above it
+// (crease); only inside the band is the angle computed, by the same expression as before. The
+// verdicts are therefore exactly those of the angle comparison (tests/normals/
+// corner_normals_bitwise.cpp checks edges at exactly the threshold). cos is monotonic only on
+// [0, pi]: crease_angle < 0 or NaN makes every edge a crease (no angle is <= it), crease_angle
+// >= pi every edge smooth (interior_angle never exceeds kPi).
+struct CreaseTest {
+  static constexpr double kBand = 1e-5;
+  double angle, above, below;  // smooth when d > above; crease when d < below
+
+  explicit CreaseTest(double crease_angle) : angle(crease_angle) {
+    const double inf = std::numeric_limits<double>::infinity();
+    if (!(crease_angle >= 0.0)) {
+      above = below = inf;  // every edge a crease
+    } else if (crease_angle >= kPi) {
+      above = below = -inf;  // every edge smooth
+    } else {
+      const double c = std::cos(crease_angle);
+      above = c + kBand;
+      below = c - kBand;
+    }
+  }
+  bool smooth(const Vec3d& na, const Vec3d& nb) const {
+    const double d = dot(na, nb);
+    if (d > above) return true;
+    if (d < below) return false;
+    const Vec3d x = cross(na, nb);
+    // unit vectors: |na x nb| <= 1, no scaling needed before squaring
+    return interior_angle(std::sqrt(dot(x, x)), d) <= angle;
+  }
+};
+
+// Per-range scratch for the vertex fans (grown to the largest fan seen, never shrunk).
+constexpr std::uint32_t kSmallFan = 32;
+constexpr std::size_t kPrefetchVertices = 16;
+struct FanScratch {
+  std::vector<std::uint64_t> ends;
+  std::vector<std::uint32_t> parent_, number_;
+  std::vector<FanCorner> fan_;
+  FanCorner* fan(std::uint32_t d) {
+    if (fan_.size() < d) fan_.resize(d);
+    return fan_.data();
+  }
+  std::uint32_t* parent(std::uint32_t d) {
+    if (parent_.size() < d) parent_.resize(d);
+    for (std::uint32_t i = 0; i < d; ++i) parent_[i] = i;
+    return parent_.data();
+  }
+  std::uint32_t* number(std::uint32_t d) {
+    if (number_.size() < d) number_.resize(d);
+    std::fill(number_.begin(), number_.begin() + d, ~0u);
+    return number_.data();
+  }
+};
+
+// Linking the corners of vertex v (corners[0 .. d), ascending; local index i) across its smooth
+// manifold edges: edge {v, w} joins corners i and j when exactly two edge ends at v lead to w, one
+// leaving v (corner i, next vertex w) and one arriving (corner j, previous vertex w), both in valid
+// faces, and smooth(face i, face j). Corners of degenerate faces have no ends (their edges are
+// creases). parent: d roots on entry (union_find.h; union by lower index).
+// Small fans: every pair compared (d^2 <= 1024 comparisons, no sort, no allocation).
+// Returns true when the fan is one closed ring of smooth edges through every corner (the common
+// case: one group, the caller skips the union-find); else links the corners in parent.
+template <class Smooth>
+bool link_small_fan(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Smooth& smooth, std::uint32_t* parent) {
+  std::uint32_t nxt[kSmallFan], prv[kSmallFan], to[kSmallFan];
+  for (std::uint32_t i = 0; i < d; ++i) {
+    nxt[i] = fan[i].next;
+    prv[i] = fan[i].prev;
+  }
+  std::uint32_t links = 0;
+  for (std::uint32_t i = 0; i < d; ++i) {
+    to[i] = kNoLink;
+    const std::uint32_t w = nxt[i];
+    if (w == v) continue;  // no edge end (a degenerate face, or a face that repeats v)
+    std::uint32_t leaving = 0, arriving = 0, j = 0;
+    for (std::uint32_t k = 0; k < d; ++k) {
+      leaving += nxt[k] == w;
+      if (prv[k] == w) { ++arriving; j = k; }
+    }
+    if (leaving == 1 && arriving == 1 && smooth(fan[i].face, fan[j].face)) {
+      to[i] = j;
+      ++links;
+    }
+  }
+  if (links == d) {
+    // Every corner has its leaving edge linked, to distinct corners (each far vertex is left and
+    // reached once): to is a permutation. One cycle through all d corners is one group.
+    std::uint32_t k = 0, steps = 0;
+    do {
+      k = to[k];
+      ++steps;
+    } while (k != 0 && steps <= d);
+    if (steps == d) return true;
+  }
+  for (std::uint32_t i = 0; i < d; ++i)
+    if (to[i] != kNoLink) union_find_unite(parent, i, to[i]);
+  return false;
+}
+
+// Large fans (a pole, a cone apex): the edge ends as one 64-bit key each: far vertex (high 32
+// bits), local corner index, and whether the edge leaves v (bit 0); sorting the keys sorts by far
+// vertex, then corner. The same links as link_small_fan.
+template <class Smooth>
+void link_large_fan(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Smooth& smooth, std::uint32_t* parent,
+                    std::vector<std::uint64_t>& ends) {
+  auto end_key = [](std::uint32_t far, std::uint32_t local, bool out) {
+    return (std::uint64_t(far) << 32) | (std::uint64_t(local) << 1) | std::uint64_t(out);
+  };
+  ends.clear();
+  for (std::uint32_t i = 0; i < d; ++i) {
+    const std::uint32_t n = fan[i].next, p = fan[i].prev;  // both v in a degenerate face: no ends
+    if (n != v) ends.push_back(end_key(n, i, true));
+    if (p != v) ends.push_back(end_key(p, i, false));
+  }
+  std::sort(ends.begin(), ends.end());
+  for (std::size_t i = 0; i < ends.size();) {
+    std::size_t j = i + 1;
+    while (j < ends.size() && (ends[j] >> 32) == (ends[i] >> 32)) ++j;
+    // exactly two ends, one leaving v and one arriving
+    if (j - i == 2 && (ends[i] & 1) != (ends[i + 1] & 1)) {
+      const auto la = std::uint32_t(ends[i] & 0xffffffffu) >> 1, lb = std::uint32_t(ends[i + 1] & 0xffffffffu) >> 1;
+      if (smooth(fan[la].face, fan[lb].face)) union_find_unite(parent, la, lb);
+    }
+    i = j;
+  }
+}
+
+// Sums of the corners contributions into rows: row target[c] < rows for every corner, added in
 // ascending corner order by the deterministic parallel scatter (accumulate_by_vertex.h). The sums
 // are in `normals` (3 rows values) for T = double, else in float_sum. The chunk plan is made
 // beside the (serial) zeroing of the arrays. Returns the number of degenerate faces.
@@ -95,6 +258,7 @@ std::size_t sum_rows(const MeshView& mesh, const std::uint32_t* target, std::siz
   ChunkPlan plan;
   tbb::parallel_invoke(
       [&] {
+        reserve_bulk(normals, 3 * rows);
         normals.assign(3 * rows, 0.0);
         if constexpr (!std::is_same_v<T, double>) float_sum.assign(3 * rows, 0.0f);
       },
@@ -149,92 +313,89 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
   // (1) face normals: zero for degenerate faces.
   const std::vector<double> fn = face_normals(mesh, precision);
-  std::vector<std::uint8_t> valid(mesh.num_faces());
-  parallel_ranges(mesh.num_faces(), [&](std::size_t b, std::size_t e) {
-    for (std::size_t f = b; f < e; ++f) valid[f] = !(fn[3 * f] == 0.0 && fn[3 * f + 1] == 0.0 && fn[3 * f + 2] == 0.0);
-  });
-  auto face_valid = [&](std::size_t f) { return valid[f] != 0; };
-  const CornerTopology topo(mesh);
+  auto face_valid = [&](std::uint32_t f) { return has_normal(fn.data(), f); };
   // (2) adjacency.
+  const CornerTopology topo(mesh);
   const VertexCorners vc = vertex_corners(mesh);
 
-  // (3) groups per vertex; the group number of each corner is stored in corner_index for now.
+  // (3) groups per vertex. On one thread the vertices go in order and each corner gets its pool
+  // row at once (first_row: the rows of the vertices before); in parallel ranges it gets the
+  // group number within its vertex, and (4) adds the vertex's first row afterwards.
   CornerNormals out;
+  reserve_bulk(out.corner_index, C);  // huge pages for the fresh array (core/bulk_reserve.h)
   out.corner_index.resize(C);
   std::vector<std::uint32_t> groups(V, 0);
   std::vector<std::uint8_t> has_degenerate_group(V, 0);
-  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
-    // Edge ends as one 64-bit key: far vertex (high 32 bits), local corner index, and whether
-    // the edge leaves v (bit 0); sorting the keys sorts by far vertex, then corner.
-    std::vector<std::uint64_t> ends;  // scratch, reused across the range's vertices
-    std::vector<std::uint32_t> parent, number;
-    auto end_key = [](std::uint32_t far, std::uint32_t local, bool out) {
-      return (std::uint64_t(far) << 32) | (std::uint64_t(local) << 1) | std::uint64_t(out);
-    };
-    for (std::size_t v = v_begin; v < v_end; ++v) {
+  const CreaseTest crease(crease_angle);
+  // Whether the two faces of a manifold edge join: not the same face, the same smoothing group
+  // (not 0: flat), and no crease between their normals.
+  auto smooth = [&](std::uint32_t fa, std::uint32_t fb) {
+    return fa != fb && (!face_group || (face_group[fa] == face_group[fb] && face_group[fa] != 0)) &&
+           crease.smooth(get3(fn, fa), get3(fn, fb));
+  };
+  const bool in_order = V < kSerialBelow || usable_threads() < 2;
+  std::uint32_t first_row = 0;  // in_order only
+  auto group_range = [&](std::size_t v_begin, std::size_t v_end) {
+    FanScratch scratch;  // reused across the range's vertices
+    for (std::size_t v = v_begin; v < v_end; first_row += in_order ? groups[v] : 0, ++v) {
+      const std::uint32_t row = in_order ? first_row : 0;
+      // The faces around a vertex lie anywhere in the face arrays: fetch what the vertex
+      // kPrefetchVertices ahead will read (its corners' faces and face normals) and write
+      // (corner_index). Measured: without it the pass took 1.2x (sphere) to 1.7x (faceted
+      // icosahedron) as long (bench/normals/results/notes.md).
+      if (v + kPrefetchVertices < v_end) {
+        for (std::uint32_t i = vc.offset[v + kPrefetchVertices], e = vc.offset[v + kPrefetchVertices + 1]; i < e; ++i) {
+          const std::uint32_t c = vc.corners[i];
+          __builtin_prefetch(mesh.corner_vertex + c);
+          __builtin_prefetch(fn.data() + 3 * std::size_t(topo.triangles ? c / 3 : topo.face_of[c]));
+          __builtin_prefetch(out.corner_index.data() + c, 1);
+        }
+      }
       const std::uint32_t begin = vc.offset[v], d = vc.offset[v + 1] - begin;
       if (d == 0) continue;
-      ends.clear();
-      parent.resize(d);
-      for (std::uint32_t i = 0; i < d; ++i) {
-        parent[i] = i;
-        const std::uint32_t c = vc.corners[begin + i];
-        if (!face_valid(topo.face(c))) continue;  // edges of degenerate faces: creases
-        const std::uint32_t n = topo.next_vertex(c), p = topo.prev_vertex(c);
-        if (n != v) ends.push_back(end_key(n, i, true));
-        if (p != v) ends.push_back(end_key(p, i, false));
-      }
-      std::sort(ends.begin(), ends.end());
-      for (std::size_t i = 0; i < ends.size();) {
-        std::size_t j = i + 1;
-        while (j < ends.size() && (ends[j] >> 32) == (ends[i] >> 32)) ++j;
-        // Smooth only if exactly two faces meet at edge {v, far}, with opposite orientations
-        // (one leaves v along it, the other arrives), and the dihedral angle is small enough.
-        if (j - i == 2 && (ends[i] & 1) != (ends[i + 1] & 1)) {
-          const auto la = std::uint32_t(ends[i] & 0xffffffffu) >> 1, lb = std::uint32_t(ends[i + 1] & 0xffffffffu) >> 1;
-          const std::uint32_t fa = topo.face(vc.corners[begin + la]), fb = topo.face(vc.corners[begin + lb]);
-          // Faces of different smoothing groups, or of none (0: flat), never join.
-          if (fa != fb && (!face_group || (face_group[fa] == face_group[fb] && face_group[fa] != 0))) {
-            const Vec3d na = get3(fn, fa), nb = get3(fn, fb), x = cross(na, nb);
-            // unit vectors: |na x nb| <= 1, no scaling needed before squaring
-            if (interior_angle(std::sqrt(dot(x, x)), dot(na, nb)) <= crease_angle) {
-              union_find_unite(parent.data(), la, lb);  // root = smallest local index
-            }
-          }
+      FanCorner* fan = scratch.fan(d);
+      for (std::uint32_t i = 0; i < d; ++i) fan[i] = topo.fan_corner(vc.corners[begin + i], fn.data());
+      std::uint32_t* parent = scratch.parent(d);
+      if (d <= kSmallFan) {
+        if (link_small_fan(std::uint32_t(v), fan, d, smooth, parent)) {  // one group, no degenerate face
+          for (std::uint32_t i = 0; i < d; ++i) out.corner_index[fan[i].corner] = row;
+          groups[v] = 1;
+          continue;
         }
-        i = j;
+      } else {
+        link_large_fan(std::uint32_t(v), fan, d, smooth, parent, scratch.ends);
       }
       // Number groups by first corner; degenerate-face corners share the vertex's only group
       // when it has one, else get a group of their own (numbered last).
-      number.assign(d, ~0u);
+      std::uint32_t* number = scratch.number(d);
       std::uint32_t g = 0;
       bool any_degenerate = false;
       for (std::uint32_t i = 0; i < d; ++i) {
-        const std::uint32_t c = vc.corners[begin + i];
-        if (!face_valid(topo.face(c))) { any_degenerate = true; continue; }
-        const std::uint32_t r = union_find_root(parent.data(), i);
+        if (!face_valid(fan[i].face)) { any_degenerate = true; continue; }
+        const std::uint32_t r = union_find_root(parent, i);
         if (number[r] == ~0u) number[r] = g++;
-        out.corner_index[c] = number[r];
+        out.corner_index[fan[i].corner] = row + number[r];
       }
       if (any_degenerate) {
         std::uint32_t dg = 0;
         if (g != 1) { dg = g++; has_degenerate_group[v] = 1; }
-        for (std::uint32_t i = 0; i < d; ++i) {
-          const std::uint32_t c = vc.corners[begin + i];
-          if (!face_valid(topo.face(c))) out.corner_index[c] = dg;
-        }
+        for (std::uint32_t i = 0; i < d; ++i)
+          if (!face_valid(fan[i].face)) out.corner_index[fan[i].corner] = row + dg;
       }
       groups[v] = g;
     }
-  });
+  };
+  if (in_order) group_range(0, V);
+  else parallel_ranges(V, group_range);
 
   // (4) pool rows: vertex v owns rows base[v] .. base[v] + groups[v].
   std::vector<std::uint32_t> base(V + 1, 0);
   for (std::size_t v = 0; v < V; ++v) base[v + 1] = base[v] + groups[v];
   const std::size_t N = base[V];
-  parallel_ranges(C, [&](std::size_t b, std::size_t e) {
-    for (std::size_t c = b; c < e; ++c) out.corner_index[c] += base[mesh.corner_vertex[c]];
-  });
+  if (!in_order)
+    parallel_ranges(C, [&](std::size_t b, std::size_t e) {
+      for (std::size_t c = b; c < e; ++c) out.corner_index[c] += base[mesh.corner_vertex[c]];
+    });
 
   // (5) sums: in the output array itself in double, else in a float accumulator.
   std::vector<float> float_sum;
@@ -266,7 +427,7 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
         std::uint32_t in_group = ~0u, any = ~0u;
         std::size_t corners_in_row = 0;
         for (std::uint32_t i = vc.offset[v]; i < vc.offset[v + 1]; ++i) {
-          const std::uint32_t c = vc.corners[i], f = topo.face(c);
+          const std::uint32_t c = vc.corners[i], f = topo.fan_corner(c, fn.data()).face;
           const bool mine = out.corner_index[c] == r;
           corners_in_row += mine;
           if (face_valid(f)) {

@@ -25,6 +25,10 @@
 // the vertex, creases ignored), sharing the vertex's only group when it has one; a vertex with no
 // valid face gets (0, 0, 1). A group whose sum cancels takes its first corner's face normal.
 // Scale: as vertex_normals (a 2^k-scaled mesh gives bitwise the same normals; engine/mesh_scale.h).
+// Crease test: interior_angle(|n1 x n2|, n1 . n2) <= crease_angle (geometry/interior_angle.h) on
+// the unit face normals of face_normals.h; decided from n1 . n2 against cos(crease_angle) where
+// that is at least 1e-5 from the threshold, which provably gives the angle comparison's verdict
+// (corner_normals.cpp, CreaseTest), so an edge at exactly the threshold angle is smooth as before.
 #pragma once
 
 #include <cstddef>

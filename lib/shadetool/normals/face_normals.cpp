@@ -1,7 +1,9 @@
 // face_normals.cpp: one unit normal per face (see face_normals.h).
 //
 // Triangles: cross product of the two shortest edges; polygons: Newell's method
-// (geometry/face_area_vector.h).
+// (geometry/face_area_vector.h). All-triangle meshes go through the vectorised block pass of the
+// normals kernels (engine/triangle_blocks.h; same bits, several times faster than the scalar loop,
+// bench/normals/results/notes.md), its rejects through the scalar loop.
 // Precision: both compute in double (edges, cross product, length, division); Float then rounds
 // the unit normal once to float (relative error <= 2^-24 per component, so within ~1e-5 deg of
 // Double whatever the triangle's shape or the mesh's scale: 1e-30 and 1e30 included) and widens it
@@ -13,13 +15,17 @@
 // neither overflow nor underflow, and a 2^k-scaled mesh gives bitwise the same normals.
 #include <shadetool/normals/face_normals.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/geometry/face_area_vector.h>
 #include <shadetool/geometry/scaled_length.h>
 #include <shadetool/normals/engine/mesh_scale.h>
+#include <shadetool/normals/engine/triangle_blocks.h>
 
 namespace shadetool {
 namespace {
@@ -52,16 +58,56 @@ void face_normals_range(const MeshView& mesh, std::size_t f_begin, std::size_t f
   }
 }
 
+// All-triangle meshes: blocks of kTriangleBlock faces through the vectorised pass
+// (normals/engine/triangle_blocks.h, triangle_block_unit_normals: the same N, the same length and
+// divisions, so the same bits as face_normals_range); a face it leaves NaN (degenerate, or
+// outside its range) goes through face_normals_range, which asks the degenerate-face rule.
+template <class T>
+void face_normals_triangle_blocks(const MeshView& mesh, std::size_t f_begin, std::size_t f_end, double* out) {
+  using normals_detail::kTriangleBlock;
+  const double* P = mesh.positions;
+  const std::uint32_t* cv = mesh.corner_vertex;
+  alignas(64) double xyz[9][kTriangleBlock];
+  alignas(64) double unit[3][kTriangleBlock];
+  for (std::size_t b = f_begin; b < f_end; b += kTriangleBlock) {
+    const std::size_t count = std::min(kTriangleBlock, f_end - b);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t c = 3 * (b + i);
+      for (int k = 0; k < 3; ++k) {
+        const double* p = P + 3 * std::size_t(cv[c + k]);
+        xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
+      }
+    }
+    normals_detail::triangle_block_unit_normals(count, &xyz[0][0], &unit[0][0]);
+    for (std::size_t i = 0; i < count; ++i) {
+      double* o = out + 3 * (b + i);
+      if (std::isnan(unit[0][i])) {
+        face_normals_range<T>(mesh, b + i, b + i + 1, out);
+        continue;
+      }
+      o[0] = double(T(unit[0][i])); o[1] = double(T(unit[1][i])); o[2] = double(T(unit[2][i]));
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<double> face_normals(const MeshView& mesh, Precision precision) {
   std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
   const MeshView in_range = normals_detail::in_kernel_range(mesh, storage);
   const std::size_t F = mesh.num_faces();
-  std::vector<double> out(3 * F);
+  std::vector<double> out;
+  reserve_bulk(out, 3 * F);  // huge pages for the fresh array (core/bulk_reserve.h)
+  out.resize(3 * F);
   engine::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
-    if (precision == Precision::Float) face_normals_range<float>(in_range, b, e, out.data());
-    else face_normals_range<double>(in_range, b, e, out.data());
+    const bool triangles = in_range.all_triangles();
+    if (precision == Precision::Float) {
+      if (triangles) face_normals_triangle_blocks<float>(in_range, b, e, out.data());
+      else face_normals_range<float>(in_range, b, e, out.data());
+    } else {
+      if (triangles) face_normals_triangle_blocks<double>(in_range, b, e, out.data());
+      else face_normals_range<double>(in_range, b, e, out.data());
+    }
   });
   return out;
 }

@@ -161,4 +161,43 @@ void triangle_block_uniform(std::size_t n, const double* __restrict corner_xyz, 
   }
 }
 
+// N from the apex exactly as triangle_area_vector builds it (face_area_vector.h: points selected,
+// then a = p_{k+1} - p_k, b = p_{k+2} - p_k): block_geometry's edge selection gives the same
+// values but not always the same sign of a zero component (p1 - p2 is +0 where -(p2 - p1) is -0),
+// and face normals are compared bit for bit, zeros included.
+SHADETOOL_VECTOR_CLONES
+void triangle_block_unit_normals(std::size_t n, const double* __restrict corner_xyz, double* __restrict unit) {
+  if (n > B) n = B;
+  const double *x0 = corner_xyz, *y0 = x0 + B, *z0 = y0 + B, *x1 = z0 + B, *y1 = x1 + B, *z1 = y1 + B;
+  const double *x2 = z1 + B, *y2 = x2 + B, *z2 = y2 + B;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double e0x = x1[i] - x0[i], e0y = y1[i] - y0[i], e0z = z1[i] - z0[i];
+    const double e1x = x2[i] - x1[i], e1y = y2[i] - y1[i], e1z = z2[i] - z1[i];
+    const double e2x = x0[i] - x2[i], e2y = y0[i] - y2[i], e2z = z0[i] - z2[i];
+    const double l0 = e0x * e0x + e0y * e0y + e0z * e0z;
+    const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+    const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+    // apex_corner: k = 2 (e0 longest), 0 (e1 longest), else 1; the apex p, then q = p_{k+1}, r = p_{k+2}
+    const bool k2 = (l0 >= l1) & (l0 >= l2), k0 = (l1 > l0) & (l1 >= l2);
+    const double px = k2 ? x2[i] : (k0 ? x0[i] : x1[i]), py = k2 ? y2[i] : (k0 ? y0[i] : y1[i]), pz = k2 ? z2[i] : (k0 ? z0[i] : z1[i]);
+    const double qx = k2 ? x0[i] : (k0 ? x1[i] : x2[i]), qy = k2 ? y0[i] : (k0 ? y1[i] : y2[i]), qz = k2 ? z0[i] : (k0 ? z1[i] : z2[i]);
+    const double rx = k2 ? x1[i] : (k0 ? x2[i] : x0[i]), ry = k2 ? y1[i] : (k0 ? y2[i] : y0[i]), rz = k2 ? z1[i] : (k0 ? z2[i] : z0[i]);
+    const double ax = qx - px, ay = qy - py, az = qz - pz, bx = rx - px, by = ry - py, bz = rz - pz;
+    const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+    const double nn = nx * nx + ny * ny + nz * nz;
+    // degenerate_face.h's squares test (same expression, same values); outside its range, or
+    // N . N outside [1e-250, 1e250], the scalar path decides.
+    const double la = k2 ? l1 : (k0 ? l2 : l0), lb = k2 ? l2 : (k0 ? l0 : l1);
+    const bool valid = (la > kSquaresTestFrom) & (la < kSquaresTestTo) & (lb > kSquaresTestFrom) &
+                       (lb < kSquaresTestTo) & (nn > kDegenerateTolerance2 * (la * lb));
+    const bool in = (nn >= 1e-250) & (nn <= 1e250) & valid;
+    const double len = std::sqrt(in ? nn : 1.0);  // checked_length's direct range: sqrt(N . N)
+    const double x = nx / len, y = ny / len, z = nz / len;  // divisor checked: >= 1e-125
+    unit[i] = in ? x : nan;  // a select, not "+ flag": keeps -0.0
+    unit[B + i] = in ? y : nan;
+    unit[2 * B + i] = in ? z : nan;
+  }
+}
+
 }  // namespace shadetool::normals_detail

@@ -48,6 +48,11 @@
 //                        outside [1e-250, 1e250] (tiny or huge, non-finite input) or, for max,
 //                        l0 l1 l2 outside the normal range; the caller computes that one on its
 //                        scalar path (which asks the rule).
+//
+// triangle_block_unit_normals: N / |N| per triangle (the unit face normal of normals/face_normals.h:
+// N.x / |N| per component, |N| = sqrt(N . N), as geometry/scaled_length.h's checked_length inside
+// its direct range), into 3 rows (x, y, z) of kTriangleBlock values; NaN under the same conditions
+// as the contributions (degenerate, or out of the vector pass's range): the caller's scalar path.
 #pragma once
 
 #include <cstddef>
@@ -60,5 +65,6 @@ constexpr std::size_t kTriangleBlock = 64;
 void triangle_block_angle(std::size_t n, const double* corner_xyz, double* contribution);
 void triangle_block_max(std::size_t n, const double* corner_xyz, double* contribution);
 void triangle_block_uniform(std::size_t n, const double* corner_xyz, double* contribution);
+void triangle_block_unit_normals(std::size_t n, const double* corner_xyz, double* unit);
 
 }  // namespace shadetool::normals_detail

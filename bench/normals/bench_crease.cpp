@@ -1,0 +1,160 @@
+// bench_crease: crease normals (corner_normals, angle weighting, crease 30 degrees) against
+// angle-weighted vertex normals on the same mesh, one thread (issue 31 goal 3: at most 2x).
+//
+// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference]
+// Meshes: the irregular UV sphere of bench_normals (about N triangles, default 1M; no edge above
+// 30 degrees, so every group is a whole vertex fan), a faceted icosahedron (its 20 flat faces
+// subdivided 4^7 times each: 1.3M triangles, real 41.8-degree creases along the 30 edges and
+// exactly flat fans elsewhere), and any --file (e.g. CAD models of the corpus).
+// Rows per mesh: vertex_normals(mesh, Angle) (fresh call), corner_normals(mesh, 30 deg, Angle),
+// and the frozen copy of the crease path before issue 31 (tests/support/corner_normals_reference.h;
+// --no-reference drops it). Repetitions interleaved round-robin (rep 1 of every row, then rep 2,
+// ...) after one warm-up, inside one TBB arena of 1 thread; medians of wall and process CPU time.
+// The new and old crease outputs are compared bit for bit once per mesh (a mismatch is reported
+// and the exit code is 1).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <tbb/task_arena.h>
+
+#include <shadetool/files/mesh_files.h>
+#include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/vertex_normals.h>
+#include "load_average.h"
+#include "support/analytic_meshes.h"
+#include "support/corner_normals_reference.h"
+
+using namespace shadetool;
+using namespace shadetool::testing;
+
+namespace {
+
+// The icosahedron with each face cut into 4^levels coplanar triangles (midpoints not projected).
+Mesh faceted_icosahedron(int levels) {
+  Mesh ico = icosphere(0).mesh;
+  std::vector<Vec3d> P;
+  for (std::size_t v = 0; v < ico.num_vertices(); ++v) P.push_back(ico.position(v));
+  std::vector<std::uint32_t> F(ico.corner_vertex.begin(), ico.corner_vertex.end());
+  for (int l = 0; l < levels; ++l) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
+    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+      const auto k = std::make_pair(std::min(a, b), std::max(a, b));
+      const auto it = mid.find(k);
+      if (it != mid.end()) return it->second;
+      P.push_back((P[a] + P[b]) * 0.5);
+      return mid[k] = std::uint32_t(P.size() - 1);
+    };
+    std::vector<std::uint32_t> G;
+    G.reserve(4 * F.size());
+    for (std::size_t f = 0; f < F.size(); f += 3) {
+      const std::uint32_t a = F[f], b = F[f + 1], c = F[f + 2];
+      const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+      G.insert(G.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
+    }
+    F.swap(G);
+  }
+  Mesh m;
+  for (const Vec3d& p : P) m.add_vertex(p);
+  for (std::size_t f = 0; f < F.size(); f += 3) m.add_face({F[f], F[f + 1], F[f + 2]});
+  m.precision = ValuePrecision::Double;
+  return m;
+}
+
+bool same_bits(const CornerNormals& a, const CornerNormals& b) {
+  return a.corner_index == b.corner_index && a.normals.size() == b.normals.size() &&
+         std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(double)) == 0 &&
+         a.fallback_corners == b.fallback_corners && a.degenerate_faces == b.degenerate_faces;
+}
+
+double cpu_now() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::size_t faces = 1000000;
+  int reps = 15;
+  bool reference = true;
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::stoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--faces") && i + 1 < argc) faces = std::stoul(argv[++i]);
+    else if (!std::strcmp(argv[i], "--file") && i + 1 < argc) files.push_back(argv[++i]);
+    else if (!std::strcmp(argv[i], "--no-reference")) reference = false;
+    else {
+      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference]\n");
+      return 2;
+    }
+  }
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  {
+    const int nv = std::max(4, int(std::lround(std::sqrt(double(faces) / 4.0))));
+    meshes.emplace_back("irregular UV sphere", irregular(uv_sphere(2 * nv, nv, 0.15, 11), 13).mesh);
+    int levels = 1;
+    while (20.0 * std::pow(4.0, levels + 1) <= 1.5 * double(faces)) ++levels;
+    meshes.emplace_back("faceted icosahedron", faceted_icosahedron(levels));
+  }
+  for (const std::string& path : files) {
+    const std::size_t slash = path.find_last_of('/');
+    meshes.emplace_back(slash == std::string::npos ? path : path.substr(slash + 1), read_mesh(path));
+  }
+  const double crease = 30.0 * kPi / 180.0;
+  const std::string load_start = load_average();
+  int status = 0;
+  tbb::task_arena arena(1);
+
+  std::printf("bench_crease: 1 thread, median of %d interleaved runs (after 1 warm-up); crease 30 degrees, angle weighting, double\n",
+              reps);
+  std::printf("load average at start: %s\n\n", load_start.c_str());
+  std::printf("| mesh | triangles | row | median ms | median CPU ms | CPU / vertex_normals |\n|---|---:|---|---:|---:|---:|\n");
+  for (auto& [name, mesh] : meshes) {
+    VertexNormals vn;
+    CornerNormals cn, old;
+    struct Row { const char* name; std::function<void()> run; std::vector<double> wall, cpu; };
+    std::vector<Row> rows;
+    rows.push_back({"vertex_normals angle", [&] { vn = vertex_normals(mesh, Weighting::Angle); }, {}, {}});
+    rows.push_back({"corner_normals angle, crease 30", [&] { cn = corner_normals(mesh, crease, Weighting::Angle); }, {}, {}});
+    if (reference)
+      rows.push_back({"crease path before issue 31 (frozen copy)", [&] {
+                        old = reference_crease::corner_normals_reference(MeshView(mesh), crease, Weighting::Angle);
+                      }, {}, {}});
+    arena.execute([&] {
+      for (int rep = -1; rep < reps; ++rep)
+        for (Row& r : rows) {
+          const double c0 = cpu_now();
+          const auto t0 = std::chrono::steady_clock::now();
+          r.run();
+          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+          if (rep >= 0) {
+            r.wall.push_back(ms);
+            r.cpu.push_back(cpu_now() - c0);
+          }
+        }
+    });
+    auto median = [](std::vector<double> x) {
+      std::sort(x.begin(), x.end());
+      return x[x.size() / 2];
+    };
+    const double base = median(rows[0].cpu);
+    for (Row& r : rows)
+      std::printf("| %s | %zu | %s | %.2f | %.2f | %.2fx |\n", name.c_str(), mesh.num_faces(), r.name, median(r.wall), median(r.cpu),
+                  median(r.cpu) / base);
+    if (reference && !same_bits(cn, old)) {
+      std::printf("| %s | | MISMATCH: corner_normals differs from the frozen copy | | | |\n", name.c_str());
+      status = 1;
+    }
+  }
+  std::printf("\nload average at end: %s\n", load_average().c_str());
+  return status;
+}

@@ -1,0 +1,285 @@
+// corner_normals and face_normals against frozen copies of their code before issue 31's rewrite
+// (tests/support/corner_normals_reference.h): the same normals, corner indices and counts, bit for
+// bit, on every mesh file in data/ and the corpus, on random meshes whose crease threshold is set
+// to exactly an edge's own angle (and the doubles either side of it), and on the awkward cases:
+// non-manifold and boundary edges, inconsistent orientation, degenerate faces, polygons, fans
+// larger than the small-fan path, smoothing groups, float precision, tiny and huge scales.
+#include <catch2/catch.hpp>
+
+#include <dirent.h>
+#include <sys/stat.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <tbb/task_arena.h>
+
+#include <shadetool/core/error.h>
+#include <shadetool/files/mesh_files.h>
+#include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/face_normals.h>
+#include "normals_test_util.h"
+#include "support/corner_normals_reference.h"
+
+using namespace shadetool;
+using namespace shadetool::testing;
+
+namespace {
+
+const Weighting kAll[] = {Weighting::Uniform, Weighting::Area, Weighting::Angle, Weighting::Max};
+constexpr double kDeg = kPi / 180;
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// The first difference between the new and the frozen result, or "" when they agree bit for bit.
+std::string difference(const CornerNormals& n, const CornerNormals& r) {
+  if (n.corner_index != r.corner_index) return "corner_index";
+  if (!same_bits(n.normals, r.normals)) return "normals";
+  if (n.fallback_corners != r.fallback_corners) return "fallback_corners";
+  if (n.degenerate_faces != r.degenerate_faces) return "degenerate_faces";
+  return "";
+}
+
+// corner_normals against the frozen copy for one (mesh, angle, weighting, precision[, groups]).
+void check_same(const Mesh& m, double angle, Weighting w, Precision p, const std::string& what,
+                const std::vector<std::uint32_t>* groups = nullptr) {
+  const CornerNormals now = groups ? corner_normals(m, angle, *groups, w, p) : corner_normals(m, angle, w, p);
+  const CornerNormals old = reference_crease::corner_normals_reference(MeshView(m), angle, w, p, groups ? groups->data() : nullptr);
+  INFO(what << ", crease " << angle << " rad, weighting " << weighting_name(w) << ", " << precision_name(p));
+  CHECK(difference(now, old) == "");
+}
+
+void check_face_normals(const Mesh& m, const std::string& what) {
+  for (Precision p : {Precision::Double, Precision::Float}) {
+    INFO(what << ", " << precision_name(p));
+    CHECK(same_bits(face_normals(m, p), reference_crease::face_normals_reference(MeshView(m), p)));
+  }
+}
+
+// Every mesh file under data/ and the corpus (/work/shared/corpus beside the tree, as tangents.cpp).
+std::vector<std::string> mesh_files() {
+  std::vector<std::string> out;
+  const std::string src = SHADETOOL_SOURCE_DIR;
+  std::vector<std::string> roots = {src + "/data"};
+  for (const std::string& corpus : {src + "/../shared/corpus", src + "/../../shared/corpus"}) {
+    struct stat st;
+    if (::stat(corpus.c_str(), &st) == 0) { roots.push_back(corpus); break; }
+  }
+  while (!roots.empty()) {
+    const std::string dir = roots.back();
+    roots.pop_back();
+    DIR* d = ::opendir(dir.c_str());
+    if (!d) continue;
+    while (dirent* e = ::readdir(d)) {
+      const std::string name = e->d_name;
+      if (name == "." || name == "..") continue;
+      const std::string path = dir + "/" + name;
+      struct stat st;
+      if (::stat(path.c_str(), &st) != 0) continue;
+      if (S_ISDIR(st.st_mode)) { roots.push_back(path); continue; }
+      std::string lower = name;
+      for (char& ch : lower) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+      for (const char* ext : {".obj", ".ply", ".glb", ".gltf", ".off", ".stl"}) {
+        const std::size_t n = std::strlen(ext);
+        if (lower.size() > n && lower.compare(lower.size() - n, n, ext) == 0) out.push_back(path);
+      }
+    }
+    ::closedir(d);
+  }
+  return out;
+}
+
+// A random height field: an n x n grid of points with random heights (angles between neighbouring
+// faces anywhere from 0 to ~170 degrees), triangulated with random diagonals.
+Mesh random_terrain(int n, double roughness, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(-1, 1);
+  Mesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.add_vertex({double(i), double(j), roughness * U(rng)});
+  auto id = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (rng() & 1) { m.add_face({a, b, c}); m.add_face({a, c, d}); }
+      else { m.add_face({a, b, d}); m.add_face({b, c, d}); }
+    }
+  m.precision = ValuePrecision::Double;
+  return m;
+}
+
+// The crease test's angle of every interior edge of a triangle mesh, as corner_normals computes it
+// (interior_angle of the unit face normals; geometry/interior_angle.h).
+std::vector<double> edge_angles(const Mesh& m, Precision p) {
+  const std::vector<double> fn = face_normals(m, p);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> faces;
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const std::uint32_t a = m.corner_vertex[3 * f + k], b = m.corner_vertex[3 * f + (k + 1) % 3];
+      faces[{std::min(a, b), std::max(a, b)}].push_back(std::uint32_t(f));
+    }
+  std::vector<double> out;
+  for (auto& [edge, fs] : faces) {
+    if (fs.size() != 2) continue;
+    const Vec3d na = get3(fn, fs[0]), nb = get3(fn, fs[1]), x = cross(na, nb);
+    out.push_back(interior_angle(std::sqrt(dot(x, x)), dot(na, nb)));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("corner_normals equals the frozen pre-issue-31 crease path bit for bit on every file in data/ and the corpus",
+          "[corner_normals][reference]") {
+  std::size_t meshes = 0;
+  for (const std::string& path : mesh_files()) {
+    Mesh m;
+    try {
+      m = read_mesh(path);
+    } catch (const shadetool::Error&) {
+      continue;  // files the readers refuse are other tests' business
+    }
+    if (m.num_faces() == 0) continue;
+    ++meshes;
+    check_face_normals(m, path);
+    for (Weighting w : kAll)
+      for (Precision p : {Precision::Double, Precision::Float}) check_same(m, 30 * kDeg, w, p, path);
+    for (double angle : {0.0, 1 * kDeg, 60 * kDeg, 89.9 * kDeg, 180 * kDeg}) check_same(m, angle, Weighting::Angle, Precision::Double, path);
+  }
+  INFO("meshes read: " << meshes);
+  CHECK(meshes >= 10);  // data/ alone holds more than ten
+}
+
+TEST_CASE("corner_normals: a crease threshold equal to an edge's own angle gives the old verdicts exactly",
+          "[corner_normals][reference]") {
+  // Terrains of three roughnesses: gentle (angles near 0: the band near cos = 1), moderate, wild.
+  for (double roughness : {0.02, 0.4, 3.0})
+    for (Precision p : {Precision::Double, Precision::Float}) {
+      const Mesh m = random_terrain(12, roughness, 5u + std::uint32_t(roughness * 100));
+      const std::vector<double> angles = edge_angles(m, p);
+      REQUIRE(angles.size() > 300);
+      for (std::size_t i = 0; i < angles.size(); i += 7) {
+        const double a = angles[i];
+        for (double t : {a, std::nextafter(a, -1.0), std::nextafter(a, 10.0)})
+          check_same(m, t, Weighting::Angle, p, "terrain roughness " + std::to_string(roughness));
+      }
+      check_face_normals(m, "terrain");
+    }
+}
+
+TEST_CASE("corner_normals: thresholds outside [0, pi], and on both sides of pi and 0, give the old verdicts",
+          "[corner_normals][reference]") {
+  const Mesh m = random_terrain(10, 3.0, 99);
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (double t : {-1.0, -0.0, 0.0, 1e-300, 1e-9, kPi / 2, std::nextafter(kPi, 0.0), kPi, std::nextafter(kPi, 4.0), 4.0,
+                   2 * kPi, 7.0, inf, -inf, nan})
+    for (Weighting w : kAll) check_same(m, t, w, Precision::Double, "terrain, edge thresholds");
+}
+
+TEST_CASE("corner_normals: non-manifold, boundary, inconsistent, degenerate, polygon and large-fan meshes as before",
+          "[corner_normals][reference]") {
+  std::vector<std::pair<std::string, Mesh>> cases;
+  {  // three triangles on one edge (non-manifold), a boundary, an isolated vertex
+    Mesh m;
+    for (Vec3d p : {Vec3d{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0.1}, {0.5, 0.2, 1}, {5, 5, 5}}) m.add_vertex(p);
+    m.add_face({0, 1, 2});
+    m.add_face({1, 0, 3});
+    m.add_face({0, 1, 4});
+    cases.emplace_back("non-manifold fin", m);
+  }
+  {  // a square of two triangles whose second is reversed (orientations disagree)
+    Mesh m;
+    for (Vec3d p : {Vec3d{0, 0, 0}, {1, 0, 0}, {1, 1, 0.1}, {0, 1, 0}}) m.add_vertex(p);
+    m.add_face({0, 1, 2});
+    m.add_face({0, 2, 3});
+    m.add_face({0, 3, 2});
+    cases.emplace_back("inconsistent", m);
+  }
+  {  // degenerate faces: a repeated index, collinear corners, a zero-area sliver, a NaN corner
+    Mesh m = random_terrain(6, 0.5, 3);
+    const std::uint32_t v0 = 0, v1 = 1, v2 = 2, n = std::uint32_t(m.num_vertices());
+    m.add_vertex({0.5, 0, 0});  // on the edge 0-1: collinear with it
+    m.add_vertex({std::numeric_limits<double>::quiet_NaN(), 0, 0});
+    m.add_face({v0, v0, v2});
+    m.add_face({v0, n, v1});
+    m.add_face({v1, n + 1, v2});
+    m.add_face({7, 8, 15});
+    m.add_face({8, 7, 15});  // a two-sided pair: sums that cancel
+    cases.emplace_back("degenerate", m);
+  }
+  {  // polygons: quads, a pentagon, a polygon with a repeated vertex
+    Mesh m;
+    for (Vec3d p : {Vec3d{0, 0, 0}, {1, 0, 0}, {2, 0, 0.5}, {0, 1, 0}, {1, 1, 0.2}, {2, 1, 1}, {0, 2, 0.3}, {1, 2, 0.9}, {2, 2, 0}})
+      m.add_vertex(p);
+    m.add_face({0, 1, 4, 3});
+    m.add_face({1, 2, 5, 4});
+    m.add_face({3, 4, 7, 6});
+    m.add_face({4, 5, 8, 7});
+    m.add_face({0, 3, 6, 7, 4});
+    m.add_face({2, 1, 2, 5, 8});
+    cases.emplace_back("polygons", m);
+  }
+  for (int sides : {31, 32, 33, 200}) {  // cones: the apex fan crosses kSmallFan; a ridge every other side
+    Mesh m;
+    m.add_vertex({0, 0, 1});
+    for (int i = 0; i < sides; ++i) {
+      const double a = 2 * kPi * i / sides, r = (i % 2) ? 1.0 : 1.6;
+      m.add_vertex({r * std::cos(a), r * std::sin(a), 0});
+    }
+    m.add_vertex({0, 0, -0.2});
+    for (int i = 0; i < sides; ++i) {
+      const std::uint32_t a = 1 + std::uint32_t(i), b = 1 + std::uint32_t((i + 1) % sides);
+      m.add_face({0, a, b});
+      m.add_face({std::uint32_t(sides + 1), b, a});
+    }
+    m.add_face({0, 1, 2});  // one non-manifold fin at the apex
+    cases.emplace_back("cone " + std::to_string(sides), m);
+  }
+  for (auto& [name, m] : cases) {
+    m.precision = ValuePrecision::Double;
+    check_face_normals(m, name);
+    for (Weighting w : kAll)
+      for (Precision p : {Precision::Double, Precision::Float})
+        for (double angle : {0.0, 20 * kDeg, 30 * kDeg, 75 * kDeg, 180 * kDeg}) check_same(m, angle, w, p, name);
+  }
+}
+
+TEST_CASE("corner_normals: smoothing groups, tiny and huge scales, irregular spheres as before", "[corner_normals][reference]") {
+  Mesh terrain = random_terrain(16, 0.6, 17);
+  std::vector<std::uint32_t> groups(terrain.num_faces());
+  for (std::size_t f = 0; f < groups.size(); ++f) groups[f] = std::uint32_t((f / 7) % 4);  // 0: flat faces
+  for (Weighting w : kAll) check_same(terrain, 40 * kDeg, w, Precision::Double, "terrain, smoothing groups", &groups);
+  for (double scale : {std::ldexp(1.0, -80), 1e-30, 1e30, std::ldexp(1.0, 90)}) {
+    Mesh m = terrain;
+    for (double& x : m.positions) x *= scale;
+    check_face_normals(m, "scaled terrain");
+    for (Weighting w : kAll) check_same(m, 30 * kDeg, w, Precision::Double, "scaled terrain");
+  }
+  const Mesh sphere = irregular(uv_sphere(96, 48, 0.15, 11), 13).mesh;
+  check_face_normals(sphere, "irregular sphere");
+  for (Weighting w : kAll)
+    for (Precision p : {Precision::Double, Precision::Float}) check_same(sphere, 30 * kDeg, w, p, "irregular sphere");
+  check_same(sphere, 2 * kDeg, Weighting::Angle, Precision::Double, "irregular sphere");
+}
+
+TEST_CASE("corner_normals: the in-order (1 thread) and parallel (2 threads) groupings both equal the frozen copy",
+          "[corner_normals][reference][parallel]") {
+  // 40401 vertices: above kSerialBelow, so 2 threads take the parallel ranges and the pass that
+  // adds each vertex's first row afterwards; 1 thread numbers rows in vertex order at once.
+  const Mesh m = random_terrain(200, 0.4, 23);
+  REQUIRE(m.num_vertices() > 32768);
+  const CornerNormals old = reference_crease::corner_normals_reference(MeshView(m), 30 * kDeg, Weighting::Angle, Precision::Double);
+  for (int threads : {1, 2}) {
+    CornerNormals now;
+    tbb::task_arena(threads).execute([&] { now = corner_normals(m, 30 * kDeg, Weighting::Angle); });
+    INFO(threads << " threads");
+    CHECK(difference(now, old) == "");
+  }
+}
