@@ -29,11 +29,18 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 constexpr std::size_t kParallelMinBytes = std::size_t(4) << 20;
 constexpr std::size_t kChunkMinBytes = std::size_t(1) << 20;
 
+[[noreturn]] __attribute__((noinline, cold)) void fail_index(std::int64_t idx, std::size_t count, const char* what,
+                                                            const std::string& name, std::size_t line);
+
 // Resolves a 1-based or negative (relative) OBJ index against `count` elements defined so far.
-std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* what, const std::string& name,
-                            std::size_t line) {
+inline std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* what, const std::string& name,
+                                   std::size_t line) {
   if (idx > 0 && static_cast<std::uint64_t>(idx) <= count) return static_cast<std::uint32_t>(idx - 1);
   if (idx < 0 && static_cast<std::uint64_t>(-idx) <= count) return static_cast<std::uint32_t>(std::int64_t(count) + idx);
+  fail_index(idx, count, what, name, line);
+}
+
+void fail_index(std::int64_t idx, std::size_t count, const char* what, const std::string& name, std::size_t line) {
   if (idx == 0) fail(name, line, std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
   const std::string plural = std::string(what) == "vertex" ? "vertices" : std::string(what) + "s";
   fail(name, line,
@@ -84,28 +91,37 @@ struct ObjArrays {
   std::vector<double>& tex;                    // vt pool, 3 per entry (missing components 0)
 };
 
-// One line's numbers: the cursor, the line's end and number, for messages.
+// One line's numbers: the cursor, the end of the chunk (the line ends at the first '\n' or there:
+// the parsers stop at the line feed, so a line is scanned once, not searched for its end first)
+// and the line's number, for messages.
 struct ObjLine {
   const char* q;
-  const char* eol;
+  const char* end;
   std::size_t number;
 };
 
+inline bool at_line_end(const char* q, const char* end) { return q == end || *q == '\n'; }
+
 // Parses the next number of the line into x; false at the end of the line (or a comment).
 inline bool next_number(ObjChunk& s, ObjLine& l, const std::string& name, double& x) {
-  const char* b = skip_spaces(l.q, l.eol);
-  if (b == l.eol || *b == '#') return false;
+  const char* b = skip_spaces(l.q, l.end);
+  if (at_line_end(b, l.end) || *b == '#') return false;
   l.q = b;
-  if (!parse_double(l.q, l.eol, x)) fail(name, l.number, "malformed number '" + token_at(b, l.eol) + "'");
-  if (!s.any_double && (has_more_digits_than_float(b, l.q) || outside_float_range(x))) s.any_double = true;
+  bool more_digits = false;
+  if (!parse_double_counting_digits(l.q, l.end, x, more_digits))
+    fail(name, l.number, "malformed number '" + token_at(b, l.end) + "'");
+  if (!s.any_double && (more_digits || outside_float_range(x))) s.any_double = true;
   return true;
 }
 
 // Appends (serial) or stores at element `i` (parallel) n values of one kind.
 template <bool kPlaced, class T>
 inline void put(std::vector<T>& v, std::size_t i, const T* values, std::size_t n) {
-  if constexpr (kPlaced) std::copy(values, values + n, v.data() + i * n);
-  else v.insert(v.end(), values, values + n);
+  if constexpr (kPlaced) {
+    std::copy(values, values + n, v.data() + i * n);
+  } else {
+    for (std::size_t k = 0; k < n; ++k) v.push_back(values[k]);
+  }
 }
 
 // `v x y z [w]` or `v x y z r g b [a]`.
@@ -159,18 +175,18 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   const std::size_t first_corner = s.read.corners;  // chunk-local
   std::uint32_t* placed = kPlaced ? mesh.corner_vertex.data() + s.at.corners : nullptr;
   const char*& q = l.q;
-  const char* const eol = l.eol;
+  const char* const eol = l.end;  // the chunk's end: the line ends at '\n' before it
   const std::size_t line = l.number;
   for (;;) {
     q = skip_spaces(q, eol);
-    if (q == eol || *q == '#') break;
+    if (at_line_end(q, eol) || *q == '#') break;
     std::int64_t idx;
     const char* tok = q;
     if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
     const std::uint32_t vertex = resolve_index(idx, nv, "vertex", name, line);
     if constexpr (kPlaced) {
       // The counting pass counted this token; a corner beyond its count would be a bug there.
-      if (s.read.corners - first_corner >= 1u << 30 || s.at.corners + s.read.corners >= mesh.corner_vertex.size())
+      if (s.at.corners + s.read.corners >= mesh.corner_vertex.size())
         fail(name, line, "internal error: face corners beyond the counted ones");
       placed[s.read.corners] = vertex;
     } else {
@@ -178,22 +194,22 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
     }
     ++s.read.corners;
     std::uint32_t t = kNone, n = kNone;
-    if (q < eol && *q == '/') {
+    if (!at_line_end(q, eol) && *q == '/') {
       ++q;
-      if (q < eol && *q != '/') {
-        if (!parse_int64(q, eol, idx) || (q < eol && *q != '/' && !is_space(*q)))
+      if (!at_line_end(q, eol) && *q != '/') {
+        if (!parse_int64(q, eol, idx) || (!at_line_end(q, eol) && *q != '/' && !is_space(*q)))
           fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
         if (nt == 0) ++s.dangling_tex;
         else t = resolve_index(idx, nt, "texcoord", name, line);
       }
-      if (q < eol && *q == '/') {
+      if (!at_line_end(q, eol) && *q == '/') {
         ++q;
         if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
         if (nn == 0) ++s.dangling_normal;
         else n = resolve_index(idx, nn, "normal", name, line);
       }
     }
-    if (q < eol && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+    if (!at_line_end(q, eol) && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
     if (n != kNone) {
       if (!s.have_cn) s.cn.assign(s.read.corners - 1, kNone);
       s.have_cn = true;
@@ -253,21 +269,41 @@ inline ObjKeyword obj_keyword(const char* kw, std::size_t kwlen) {
 template <bool kPlaced>
 void read_lines(const char* p, const char* const end, const std::string& name, ObjChunk& s, ObjArrays& a) {
   std::size_t line = s.at.lines;
+  // The line feed (or the end) at or after q.
+  auto line_feed = [end](const char* q) {
+    if (q == end || *q == '\n') return q;
+    const void* lf = std::memchr(q, '\n', std::size_t(end - q));
+    return lf ? static_cast<const char*>(lf) : end;
+  };
   while (p < end) {
     ++line;
-    const char* eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
-    if (!eol) eol = end;
-    const char* q = skip_spaces(p, eol);
-    if (q < eol && *q != '#') {
+    const char* q = skip_spaces(p, end);
+    const char* eol;
+    if (at_line_end(q, end) || *q == '#') {
+      eol = line_feed(q);
+    } else {
       const char* kw = q;
-      while (q < eol && !is_space(*q)) ++q;
+      while (q < end && !is_space_or_newline(*q)) ++q;
       const std::size_t kwlen = std::size_t(q - kw);
-      ObjLine l{q, eol, line};
-      switch (obj_keyword(kw, kwlen)) {
+      ObjLine l{q, end, line};
+      const ObjKeyword keyword = obj_keyword(kw, kwlen);
+      switch (keyword) {
         case ObjKeyword::V: read_v<kPlaced>(s, a, l, name); break;
         case ObjKeyword::Vn: read_vn<kPlaced>(s, a, l, name); break;
         case ObjKeyword::Vt: read_vt<kPlaced>(s, a, l, name); break;
         case ObjKeyword::F: read_f<kPlaced>(s, a, l, name); break;
+        case ObjKeyword::Grouping:
+        case ObjKeyword::L:
+        case ObjKeyword::P:
+        case ObjKeyword::Other: break;
+      }
+      // What the line's reader left (spaces, a comment, values it does not read) up to its end.
+      eol = line_feed(skip_spaces(l.q, end));
+      switch (keyword) {
+        case ObjKeyword::V:
+        case ObjKeyword::Vn:
+        case ObjKeyword::Vt:
+        case ObjKeyword::F: break;
         case ObjKeyword::Grouping: {
           // Grouping, smoothing groups and materials: kept verbatim, in place relative to the faces.
           const char* e = eol;
