@@ -9,6 +9,9 @@
 #include <limits>
 
 #include <tbb/parallel_for.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
@@ -331,25 +334,28 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
 // Malformed lines are counted as tokens here and refused by read_lines with their line number.
 ObjCounts count_lines(const char* p, const char* const end) {
   ObjCounts c;
+  auto line_feed = [end](const char* q) {
+    if (q == end || *q == '\n') return q;
+    const void* lf = std::memchr(q, '\n', std::size_t(end - q));
+    return lf ? static_cast<const char*>(lf) : end;
+  };
   while (p < end) {
     ++c.lines;
-    const char* eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
-    if (!eol) eol = end;
-    const char* q = skip_spaces(p, eol);
-    if (q < eol && *q != '#') {
+    const char* q = skip_spaces(p, end);
+    if (!at_line_end(q, end) && *q != '#') {
       const char* kw = q;
-      while (q < eol && !is_space(*q)) ++q;
+      while (q < end && !is_space_or_newline(*q)) ++q;
       switch (obj_keyword(kw, std::size_t(q - kw))) {
         case ObjKeyword::V: ++c.v; break;
         case ObjKeyword::Vn: ++c.vn; break;
         case ObjKeyword::Vt: ++c.vt; break;
-        case ObjKeyword::F: {
+        case ObjKeyword::F: {  // its tokens up to the line feed or a comment: one scan, no search
           std::size_t n = 0;
           for (;;) {
-            q = skip_spaces(q, eol);
-            if (q == eol || *q == '#') break;
+            q = skip_spaces(q, end);
+            if (at_line_end(q, end) || *q == '#') break;
             ++n;
-            while (q < eol && !is_space(*q)) ++q;
+            while (q < end && !is_space_or_newline(*q)) ++q;
           }
           if (n > 0) {
             ++c.faces;
@@ -363,6 +369,7 @@ ObjCounts count_lines(const char* p, const char* const end) {
         case ObjKeyword::Other: break;
       }
     }
+    const char* eol = line_feed(q);
     if (eol == end) break;
     p = eol + 1;
   }
@@ -466,6 +473,26 @@ void merge_chunks(std::vector<ObjChunk>& chunks, ObjLines& s) {
   merge_statements(chunks, s.mesh);
 }
 
+// Fresh memory is faulted in page by page on its first write, the kernel zeroing each page: done
+// by the threads in parallel (MADV_POPULATE_WRITE, Linux 5.14) before resize() value-initialises
+// the arrays on one thread; elsewhere (or when the kernel refuses) resize() faults them in itself.
+template <class T>
+void populate_in_parallel(T* data, std::size_t n) {
+#if defined(__linux__)
+  constexpr int kPopulateWrite = 23;  // MADV_POPULATE_WRITE; glibc 2.36's headers may lack it
+  constexpr std::uintptr_t kBlock = std::uintptr_t(1) << 21;
+  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) & ~(std::uintptr_t(4095));
+  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(data + n);
+  if (end - begin < 4 * kBlock) return;
+  tbb::parallel_for(begin, end, kBlock, [&](std::uintptr_t b) {
+    ::madvise(reinterpret_cast<void*>(b), std::min(kBlock, end - b), kPopulateWrite);
+  });
+#else
+  (void)data;
+  (void)n;
+#endif
+}
+
 // The chunks of [0, size): about `target` bytes each, every cut just after a line feed, so every
 // line is whole in one chunk.
 std::vector<std::size_t> chunk_starts(std::string_view bytes, std::size_t target) {
@@ -529,10 +556,13 @@ void read_all_lines(std::string_view bytes, const std::string& name, const ObjRe
     total.lines += counts[i].lines;
   }
   reserve_bulk(mesh.positions, 3 * total.v);
-  mesh.positions.resize(3 * total.v);
   reserve_bulk(mesh.corner_vertex, total.corners);
-  mesh.corner_vertex.resize(total.corners);
   reserve_bulk(mesh.face_start, total.faces + 1);
+  populate_in_parallel(mesh.positions.data(), 3 * total.v);
+  populate_in_parallel(mesh.corner_vertex.data(), total.corners);
+  populate_in_parallel(mesh.face_start.data(), total.faces + 1);
+  mesh.positions.resize(3 * total.v);
+  mesh.corner_vertex.resize(total.corners);
   mesh.face_start.resize(total.faces + 1);
   s.normals.resize(3 * total.vn);
   s.tex.resize(3 * total.vt);
