@@ -2,6 +2,7 @@
 #include <shadetool/io/obj_format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -332,6 +333,16 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
 // Step 1 in parallel, the counting pass: how many v, vt, vn, faces, corners and lines [p, end)
 // holds, by the tokens read_lines will read (a face's corners are its tokens before a comment).
 // Malformed lines are counted as tokens here and refused by read_lines with their line number.
+// What the counting pass tells apart: is_space's bytes, the line feed, `#`, anything else.
+enum class CharClass : unsigned char { Other, Space, LineFeed, Hash };
+constexpr std::array<CharClass, 256> make_char_class() {
+  std::array<CharClass, 256> t{};
+  for (int c = 0; c < 256; ++c)
+    t[std::size_t(c)] = c == '\n' ? CharClass::LineFeed : c == '#' ? CharClass::Hash : is_space(char(c)) ? CharClass::Space : CharClass::Other;
+  return t;
+}
+constexpr std::array<CharClass, 256> kCharClass = make_char_class();
+
 ObjCounts count_lines(const char* p, const char* const end) {
   ObjCounts c;
   auto line_feed = [end](const char* q) {
@@ -350,12 +361,15 @@ ObjCounts count_lines(const char* p, const char* const end) {
         case ObjKeyword::Vn: ++c.vn; break;
         case ObjKeyword::Vt: ++c.vt; break;
         case ObjKeyword::F: {  // its tokens up to the line feed or a comment: one scan, no search
+          // A token starts where a byte that is not a space follows a space; a `#` starting a
+          // token starts a comment (read_f's rule). Byte classes from a table: one load a byte.
           std::size_t n = 0;
-          for (;;) {
-            q = skip_spaces(q, end);
-            if (at_line_end(q, end) || *q == '#') break;
-            ++n;
-            while (q < end && !is_space_or_newline(*q)) ++q;
+          bool after_space = true;
+          for (; q < end; ++q) {
+            const CharClass k = kCharClass[static_cast<unsigned char>(*q)];
+            if (k == CharClass::LineFeed || (k == CharClass::Hash && after_space)) break;
+            n += after_space && k != CharClass::Space;
+            after_space = k == CharClass::Space;
           }
           if (n > 0) {
             ++c.faces;

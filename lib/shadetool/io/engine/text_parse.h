@@ -16,8 +16,8 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
-inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-inline bool is_space_or_newline(char c) { return is_space(c) || c == '\n'; }
+constexpr bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+constexpr bool is_space_or_newline(char c) { return is_space(c) || c == '\n'; }
 
 inline const char* skip_spaces(const char* p, const char* end) {
   while (p < end && is_space(*p)) ++p;
