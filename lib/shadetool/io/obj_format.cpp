@@ -537,9 +537,27 @@ void read_all_lines(std::string_view bytes, const std::string& name, const ObjRe
   if (target == 0) target = threads > 1 && bytes.size() >= kParallelMinBytes ? std::max(kChunkMinBytes, bytes.size() / (4 * threads)) : bytes.size();
   std::vector<std::size_t> starts = chunk_starts(bytes, std::max<std::size_t>(target, 1));
   std::size_t n = starts.size() - 1;
+  // OBJ is text: a NUL byte means binary data (another format, or garbage), not lines to skip.
+  // Looked for before any line is read, in every chunk at once when there are several.
+  std::vector<const char*> nul(n, nullptr);
+  auto find_nul = [&](std::size_t i) {
+    nul[i] = static_cast<const char*>(std::memchr(bytes.data() + starts[i], '\0', starts[i + 1] - starts[i]));
+  };
+  auto refuse_nul = [&] {
+    for (const char* at : nul)
+      if (at)
+        fail(name, 1 + std::size_t(std::count(bytes.data(), at, '\n')), "binary data (a NUL byte) in an OBJ file: not a text mesh");
+  };
   std::vector<ObjCounts> counts(n);
-  if (n > 1) {
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) { counts[i] = count_lines(bytes.data() + starts[i], bytes.data() + starts[i + 1]); });
+  if (n == 1) {
+    find_nul(0);
+    refuse_nul();
+  } else {
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      find_nul(i);
+      counts[i] = count_lines(bytes.data() + starts[i], bytes.data() + starts[i + 1]);
+    });
+    refuse_nul();
     std::size_t v = 0, corners = 0;
     for (const ObjCounts& c : counts) {
       v += c.v;
@@ -707,10 +725,6 @@ Mesh read_obj(std::string_view file_bytes, const std::string& name, ReadInfo& in
   refuse_utf16(file_bytes, name);
   const LineEndings lines(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
   const std::string_view bytes = lines.lf();
-  // OBJ is text: a NUL byte means binary data (another format, or garbage), not lines to skip.
-  if (const void* nul = std::memchr(bytes.data(), '\0', bytes.size()))
-    fail(name, 1 + std::size_t(std::count(bytes.data(), static_cast<const char*>(nul), '\n')),
-         "binary data (a NUL byte) in an OBJ file: not a text mesh");
   ObjLines s;
   read_all_lines(bytes, name, options, s);
   validate_lines(s, name);
