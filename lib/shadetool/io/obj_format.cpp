@@ -65,6 +65,7 @@ struct ObjCounts {
 struct ObjChunk {
   ObjCounts at;                                // the chunk's first v, vt, vn, face, corner, line
   ObjCounts read;                              // what the chunk read so far (chunk-local counts)
+  ObjCounts room;                              // parallel reading: what the counting pass found
   bool any_double = false;
   int tex_dims = 0;                            // most components any vt had
   std::vector<float> rgba;                     // 4 per chunk vertex once any has a colour
@@ -118,6 +119,10 @@ inline bool next_number(ObjChunk& s, ObjLine& l, const std::string& name, double
   return true;
 }
 
+// Raised in parallel reading when a chunk holds more (or fewer) elements than the counting pass
+// gave it room for: the two passes split some text differently, and the file is read in one pass.
+struct Miscounted {};
+
 // Appends (serial) or stores at element `i` (parallel) n values of one kind.
 template <bool kPlaced, class T>
 inline void put(std::vector<T>& v, std::size_t i, const T* values, std::size_t n) {
@@ -137,6 +142,7 @@ void read_v(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   if (n == 8) fail(name, l.number, "v has more than 7 values (expected x y z [w] or x y z r g b [a])");
   if (n < 3) fail(name, l.number, "v has " + std::to_string(n) + " values (need x y z)");
   if (n == 5) fail(name, l.number, "v has 5 values (expected x y z [w] or x y z r g b [a])");
+  if (kPlaced && s.read.v >= s.room.v) throw Miscounted{};
   put<kPlaced>(a.mesh.positions, s.at.v + s.read.v, v, 3);
   ++s.read.v;
   if (n >= 6) {
@@ -155,6 +161,7 @@ void read_vn(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   int n = 0;
   while (n < 3 && next_number(s, l, name, v[n])) ++n;
   if (n < 3) fail(name, l.number, "vn has " + std::to_string(n) + " values (need x y z)");
+  if (kPlaced && s.read.vn >= s.room.vn) throw Miscounted{};
   put<kPlaced>(a.normals, s.at.vn + s.read.vn, v, 3);
   ++s.read.vn;
 }
@@ -166,6 +173,7 @@ void read_vt(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   while (n < 3 && next_number(s, l, name, v[n])) ++n;
   if (n < 1) fail(name, l.number, "vt has no values (need u [v [w]])");
   s.tex_dims = std::max(s.tex_dims, n);
+  if (kPlaced && s.read.vt >= s.room.vt) throw Miscounted{};
   put<kPlaced>(a.tex, s.at.vt + s.read.vt, v, 3);
   ++s.read.vt;
 }
@@ -189,9 +197,8 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
     if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
     const std::uint32_t vertex = resolve_index(idx, nv, "vertex", name, line);
     if constexpr (kPlaced) {
-      // The counting pass counted this token; a corner beyond its count would be a bug there.
-      if (s.at.corners + s.read.corners >= mesh.corner_vertex.size())
-        fail(name, line, "internal error: face corners beyond the counted ones");
+      // Beyond what the counting pass found: the passes split this text differently.
+      if (s.read.corners >= s.room.corners) throw Miscounted{};
       placed[s.read.corners] = vertex;
     } else {
       mesh.corner_vertex.push_back(vertex);
@@ -239,8 +246,7 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   if (corners > std::numeric_limits<std::uint32_t>::max() - 1)
     fail(name, line, "too many face corners (more than 2^32)");
   if constexpr (kPlaced) {
-    if (s.at.faces + s.read.faces + 1 >= mesh.face_start.size())
-      fail(name, line, "internal error: faces beyond the counted ones");
+    if (s.read.faces >= s.room.faces) throw Miscounted{};
     mesh.face_start[s.at.faces + s.read.faces + 1] = static_cast<std::uint32_t>(corners);
   } else {
     mesh.face_start.push_back(static_cast<std::uint32_t>(corners));
@@ -523,6 +529,20 @@ std::vector<std::size_t> chunk_starts(std::string_view bytes, std::size_t target
   return starts;
 }
 
+// Step 1, read, in one pass: every line in order, appended to the mesh's vectors.
+void read_one_pass(std::string_view bytes, const std::string& name, ObjLines& s) {
+  Mesh& mesh = s.mesh;
+  ObjArrays arrays{mesh, s.normals, s.tex};
+  // Capacity guessed from the file size, generously (untouched capacity costs address space,
+  // not memory): a `v` line is >= 24 bytes in practice, a triangle line about 12 per corner.
+  reserve_bulk(mesh.positions, bytes.size() / 24 * 3);
+  reserve_bulk(mesh.corner_vertex, bytes.size() / 8);
+  reserve_bulk(mesh.face_start, bytes.size() / 24 + 1);
+  std::vector<ObjChunk> chunks(1);
+  read_lines<false>(bytes.data(), bytes.data() + bytes.size(), name, chunks[0], arrays);
+  merge_chunks(chunks, s);
+}
+
 // Step 1, read, in one pass (one chunk, appended to the mesh's vectors) or in chunks: a counting
 // pass over the chunks in parallel gives each chunk its offsets (the v, vt, vn, faces, corners and
 // lines before it), then every chunk is read in parallel into its place, resolving relative
@@ -566,20 +586,15 @@ void read_all_lines(std::string_view bytes, const std::string& name, const ObjRe
     // Beyond 32-bit indices: the one pass stops at the line where the count overflows.
     if (v > std::numeric_limits<std::uint32_t>::max() || corners > std::numeric_limits<std::uint32_t>::max() - 1) n = 1;
   }
-  std::vector<ObjChunk> chunks(n);
   if (n == 1) {
-    // Capacity guessed from the file size, generously (untouched capacity costs address space,
-    // not memory): a `v` line is >= 24 bytes in practice, a triangle line about 12 per corner.
-    reserve_bulk(mesh.positions, bytes.size() / 24 * 3);
-    reserve_bulk(mesh.corner_vertex, bytes.size() / 8);
-    reserve_bulk(mesh.face_start, bytes.size() / 24 + 1);
-    read_lines<false>(bytes.data(), bytes.data() + bytes.size(), name, chunks[0], arrays);
-    merge_chunks(chunks, s);
+    read_one_pass(bytes, name, s);
     return;
   }
+  std::vector<ObjChunk> chunks(n);
   ObjCounts total;
   for (std::size_t i = 0; i < n; ++i) {
     chunks[i].at = total;
+    chunks[i].room = counts[i];
     total.v += counts[i].v;
     total.vt += counts[i].vt;
     total.vn += counts[i].vn;
@@ -599,17 +614,26 @@ void read_all_lines(std::string_view bytes, const std::string& name, const ObjRe
   s.normals.resize(3 * total.vn);
   s.tex.resize(3 * total.vt);
   std::vector<std::exception_ptr> errors(n);
+  std::vector<char> miscounted(n, 0);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
     try {
       read_lines<true>(bytes.data() + starts[i], bytes.data() + starts[i + 1], name, chunks[i], arrays);
       const ObjCounts& r = chunks[i].read;
       const ObjCounts& c = counts[i];
-      if (r.v != c.v || r.vt != c.vt || r.vn != c.vn || r.faces != c.faces || r.corners != c.corners)
-        fail(name, 0, "internal error: the counting pass and the reading pass disagree");
+      if (r.v != c.v || r.vt != c.vt || r.vn != c.vn || r.faces != c.faces || r.corners != c.corners) throw Miscounted{};
+    } catch (const Miscounted&) {
+      miscounted[i] = 1;
     } catch (...) {
       errors[i] = std::current_exception();
     }
   });
+  if (std::find(miscounted.begin(), miscounted.end(), 1) != miscounted.end()) {
+    // Text the two passes split differently (a face token such as `1/ 2`, whose vt the reader
+    // takes across the space): the one pass reads it as it always has.
+    s = ObjLines{};
+    read_one_pass(bytes, name, s);
+    return;
+  }
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
   merge_chunks(chunks, s);

@@ -13,7 +13,8 @@
 // parsed into its place in the mesh's arrays at once, relative (negative) indices and ranges
 // resolved against the whole file's counts; grouping statements, colours and per-corner vn/vt are
 // merged in file order. The mesh is the same bit for bit as one pass gives, and so is the error
-// (the first in the file, with its line).
+// (the first in the file, with its line). Text the two passes would split differently (a corner
+// written `1/ 2`, whose vt the reader takes across the space) is read in one pass instead.
 // Steps: read the lines (read_lines), validate, build the corner normals, texture coordinates and
 // vertex colours from the pools, then note what was skipped.
 // Precision: every value is stored as parsed, the double nearest to the text, never rounded to
