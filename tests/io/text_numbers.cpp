@@ -1,6 +1,9 @@
 // Tests of io/engine/number_text.h and io/engine/text_parse.h: shortest output, strict tokens, the digit rule.
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/engine/text_parse.h>
+#include <cstring>
+#include <random>
+
 #include "io_test_util.h"
 
 using namespace shadetool;
@@ -96,4 +99,44 @@ TEST_CASE("digit rule: more than 9 significant digits means double data", "[text
   CHECK(more("1.0000000001"));
   CHECK(!more("1.23456789e-300"));
   CHECK(more("0.10000000000000001"));
+}
+
+TEST_CASE("parse_double_counting_digits gives parse_double's value and end and has_more_digits_than_float's answer",
+          "[text]") {
+  // Truth: fast_float::from_chars (through parse_double) and the textual digit count, on tokens of
+  // every shape the one-scan path and its fallback see: 1 to 25 digits, leading and trailing zeros,
+  // exponents inside and outside Clinger's range, signs, inf/nan, malformed tails.
+  std::mt19937_64 rng(31);
+  std::vector<std::string> tokens{"0", "-0", "+1", "+-1", "1e", "1.5x", "1.5.2", ".5", "5.", "-.5e-3", "inf", "-Infinity",
+                                  "nan", "1234567891", "0.00790996756", "-9.39081747e-06", "123456.789", "0.500000000000",
+                                  "1e308", "1e-320", "4.9e-324", "1e400", "12345678901234567890123", "0.1234567890123e22",
+                                  "9007199254740993", "1.0000000000000000000001", "e5", "-", ""};
+  const char digits[] = "0123456789";
+  for (int i = 0; i < 20000; ++i) {
+    std::string t;
+    if (rng() % 3 == 0) t += rng() % 2 ? '-' : '+';
+    const int lead_zeros = int(rng() % 4), n = 1 + int(rng() % 24);
+    t.append(std::size_t(lead_zeros), '0');
+    for (int k = 0; k < n; ++k) t += digits[rng() % 10];
+    if (rng() % 2) t.insert(t.size() - std::size_t(rng() % std::size_t(n)), ".");
+    if (rng() % 4 == 0) t.append(std::size_t(rng() % 5), '0');
+    if (rng() % 3 == 0) t += "e" + std::to_string(int(rng() % 80) - 40);
+    tokens.push_back(t);
+  }
+  for (const std::string& t : tokens) {
+    for (const std::string& tail : {std::string(), std::string(" 2"), std::string("\n"), std::string("x")}) {
+      const std::string text = t + tail;
+      INFO("'" << text << "'");
+      const char *p1 = text.data(), *p2 = text.data();
+      double v1 = 0, v2 = 0;
+      bool more = false;
+      const bool ok1 = parse_double(p1, text.data() + text.size(), v1);
+      const bool ok2 = parse_double_counting_digits(p2, text.data() + text.size(), v2, more);
+      REQUIRE(ok1 == ok2);
+      if (!ok1) continue;
+      CHECK(p1 == p2);
+      CHECK(std::memcmp(&v1, &v2, sizeof v1) == 0);
+      CHECK(more == has_more_digits_than_float(text.data(), p1));
+    }
+  }
 }

@@ -2,13 +2,22 @@
 #include <shadetool/io/obj_format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <limits>
+#include <mutex>
+
+#include <tbb/parallel_for.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/io/engine/newell_normal.h>
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/split_face_colors.h>
@@ -20,12 +29,23 @@ namespace shadetool::io {
 namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+// Files smaller than this are read in one pass; larger ones in chunks of at least kChunkMinBytes,
+// about four per thread (chunks of unequal cost balance across threads).
+constexpr std::size_t kParallelMinBytes = std::size_t(4) << 20;
+constexpr std::size_t kChunkMinBytes = std::size_t(1) << 20;
+
+[[noreturn]] __attribute__((noinline, cold)) void fail_index(std::int64_t idx, std::size_t count, const char* what,
+                                                            const std::string& name, std::size_t line);
 
 // Resolves a 1-based or negative (relative) OBJ index against `count` elements defined so far.
-std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* what, const std::string& name,
-                            std::size_t line) {
+inline std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* what, const std::string& name,
+                                   std::size_t line) {
   if (idx > 0 && static_cast<std::uint64_t>(idx) <= count) return static_cast<std::uint32_t>(idx - 1);
   if (idx < 0 && static_cast<std::uint64_t>(-idx) <= count) return static_cast<std::uint32_t>(std::int64_t(count) + idx);
+  fail_index(idx, count, what, name, line);
+}
+
+void fail_index(std::int64_t idx, std::size_t count, const char* what, const std::string& name, std::size_t line) {
   if (idx == 0) fail(name, line, std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
   const std::string plural = std::string(what) == "vertex" ? "vertices" : std::string(what) + "s";
   fail(name, line,
@@ -33,18 +53,26 @@ std::uint32_t resolve_index(std::int64_t idx, std::size_t count, const char* wha
            (count == 1 ? std::string(what) : plural) + " defined so far)");
 }
 
-// What one pass over the lines gathers: the mesh's positions and faces as read, and the pools and
-// per-corner indices the build steps turn into the mesh's arrays.
-struct ObjLines {
-  Mesh mesh;
+// Where one chunk of lines puts what it reads. Serial reading (one chunk) appends to the mesh's
+// vectors; parallel reading writes each chunk's share at the offsets the counting pass gave it
+// (`at` = the chunk's first element of each kind, counted over all chunks before it).
+struct ObjCounts {
+  std::size_t v = 0, vt = 0, vn = 0, faces = 0, corners = 0, lines = 0;
+};
+
+// What one chunk of lines gathers besides the arrays it writes in place: the lazily allocated
+// per-vertex colours and per-corner vn/vt indices (chunk-local: merged after all chunks), the
+// grouping statements with the number of the chunk's faces before each, and what was skipped.
+struct ObjChunk {
+  ObjCounts at;                                // the chunk's first v, vt, vn, face, corner, line
+  ObjCounts read;                              // what the chunk read so far (chunk-local counts)
+  ObjCounts room;                              // parallel reading: what the counting pass found
   bool any_double = false;
-  std::vector<double> normals;                 // vn pool, 3 per entry
-  std::vector<double> tex;                     // vt pool, 3 per entry (missing components 0)
   int tex_dims = 0;                            // most components any vt had
-  std::vector<float> rgba;                     // 4 per vertex once any vertex has a colour
+  std::vector<float> rgba;                     // 4 per chunk vertex once any has a colour
   int color_channels = 0;                      // 3 or 4 once seen
   std::size_t colored_vertices = 0;
-  std::vector<std::uint32_t> cn, ct;           // per corner, kNone where absent (allocated lazily)
+  std::vector<std::uint32_t> cn, ct;           // per chunk corner, kNone where absent (lazily)
   bool have_cn = false, have_ct = false;
   std::size_t corners_with_normal = 0, corners_with_tex = 0;
   // Corners naming a vn (vt) index while the file has defined no vn (vt) at all: ignored, as
@@ -53,39 +81,77 @@ struct ObjLines {
   std::size_t skipped_lines = 0;
   std::string skipped_keyword;
   std::size_t skipped_empty_faces = 0, skipped_lines_l = 0, skipped_points = 0;
-  std::string pending_statements;              // grouping lines since the last face
-  bool any_statement = false;
+  struct Statement {
+    std::size_t faces_before;                  // chunk faces read before the line
+    std::size_t begin, end;                    // the line in `statement_text`
+  };
+  std::vector<Statement> statements;           // grouping lines (o, g, s, usemtl, mtllib) in order
+  // One pass only: the bytes read so far go to `progress` every 65536 lines (core/progress.h),
+  // measured from `base`, the text's first byte.
+  ProgressCursor* progress = nullptr;
+  const char* base = nullptr;
+  std::string statement_text;
 };
 
-// One line's numbers: the cursor, the line's end and number, for messages.
+// The arrays a chunk writes: in serial reading the mesh's vectors (appended to), in parallel
+// reading the same vectors, sized by the counting pass, written at the chunk's offsets.
+struct ObjArrays {
+  Mesh& mesh;
+  std::vector<double>& normals;                // vn pool, 3 per entry
+  std::vector<double>& tex;                    // vt pool, 3 per entry (missing components 0)
+};
+
+// One line's numbers: the cursor, the end of the chunk (the line ends at the first '\n' or there:
+// the parsers stop at the line feed, so a line is scanned once, not searched for its end first)
+// and the line's number, for messages.
 struct ObjLine {
   const char* q;
-  const char* eol;
+  const char* end;
   std::size_t number;
 };
 
+inline bool at_line_end(const char* q, const char* end) { return q == end || *q == '\n'; }
+
 // Parses the next number of the line into x; false at the end of the line (or a comment).
-bool next_number(ObjLines& s, ObjLine& l, const std::string& name, double& x) {
-  const char* b = skip_spaces(l.q, l.eol);
-  if (b == l.eol || *b == '#') return false;
+inline bool next_number(ObjChunk& s, ObjLine& l, const std::string& name, double& x) {
+  const char* b = skip_spaces(l.q, l.end);
+  if (at_line_end(b, l.end) || *b == '#') return false;
   l.q = b;
-  if (!parse_double(l.q, l.eol, x)) fail(name, l.number, "malformed number '" + token_at(b, l.eol) + "'");
-  if (!s.any_double && (has_more_digits_than_float(b, l.q) || outside_float_range(x))) s.any_double = true;
+  bool more_digits = false;
+  if (!parse_double_counting_digits(l.q, l.end, x, more_digits))
+    fail(name, l.number, "malformed number '" + token_at(b, l.end) + "'");
+  if (!s.any_double && (more_digits || outside_float_range(x))) s.any_double = true;
   return true;
 }
 
+// Raised in parallel reading when a chunk holds more (or fewer) elements than the counting pass
+// gave it room for: the two passes split some text differently, and the file is read in one pass.
+struct Miscounted {};
+
+// Appends (serial) or stores at element `i` (parallel) n values of one kind.
+template <bool kPlaced, class T>
+inline void put(std::vector<T>& v, std::size_t i, const T* values, std::size_t n) {
+  if constexpr (kPlaced) {
+    std::copy(values, values + n, v.data() + i * n);
+  } else {
+    for (std::size_t k = 0; k < n; ++k) v.push_back(values[k]);
+  }
+}
+
 // `v x y z [w]` or `v x y z r g b [a]`.
-void read_v(ObjLines& s, ObjLine& l, const std::string& name) {
+template <bool kPlaced>
+void read_v(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   double v[8];
   int n = 0;
   while (n < 8 && next_number(s, l, name, v[n])) ++n;
   if (n == 8) fail(name, l.number, "v has more than 7 values (expected x y z [w] or x y z r g b [a])");
   if (n < 3) fail(name, l.number, "v has " + std::to_string(n) + " values (need x y z)");
   if (n == 5) fail(name, l.number, "v has 5 values (expected x y z [w] or x y z r g b [a])");
-  Mesh& mesh = s.mesh;
-  mesh.positions.insert(mesh.positions.end(), v, v + 3);
+  if (kPlaced && s.read.v >= s.room.v) throw Miscounted{};
+  put<kPlaced>(a.mesh.positions, s.at.v + s.read.v, v, 3);
+  ++s.read.v;
   if (n >= 6) {
-    if (s.rgba.empty()) s.rgba.assign(4 * (mesh.num_vertices() - 1), 1.0f);
+    if (s.rgba.empty()) s.rgba.assign(4 * (s.read.v - 1), 1.0f);
     s.rgba.insert(s.rgba.end(), {float(v[3]), float(v[4]), float(v[5]), n == 7 ? float(v[6]) : 1.0f});
     s.color_channels = std::max(s.color_channels, n == 7 ? 4 : 3);
     ++s.colored_vertices;
@@ -94,146 +160,499 @@ void read_v(ObjLines& s, ObjLine& l, const std::string& name) {
   }
 }
 
-void read_vn(ObjLines& s, ObjLine& l, const std::string& name) {
+template <bool kPlaced>
+void read_vn(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   double v[3];
   int n = 0;
   while (n < 3 && next_number(s, l, name, v[n])) ++n;
   if (n < 3) fail(name, l.number, "vn has " + std::to_string(n) + " values (need x y z)");
-  s.normals.insert(s.normals.end(), v, v + 3);
+  if (kPlaced && s.read.vn >= s.room.vn) throw Miscounted{};
+  put<kPlaced>(a.normals, s.at.vn + s.read.vn, v, 3);
+  ++s.read.vn;
 }
 
-void read_vt(ObjLines& s, ObjLine& l, const std::string& name) {
+template <bool kPlaced>
+void read_vt(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   double v[3] = {0, 0, 0};
   int n = 0;
   while (n < 3 && next_number(s, l, name, v[n])) ++n;
   if (n < 1) fail(name, l.number, "vt has no values (need u [v [w]])");
   s.tex_dims = std::max(s.tex_dims, n);
-  s.tex.insert(s.tex.end(), v, v + 3);
+  if (kPlaced && s.read.vt >= s.room.vt) throw Miscounted{};
+  put<kPlaced>(a.tex, s.at.vt + s.read.vt, v, 3);
+  ++s.read.vt;
 }
 
-// `f` in the forms i, i/j, i//k, i/j/k. Returns false for an `f` with no index (skipped, counted).
-bool read_f(ObjLines& s, ObjLine& l, const std::string& name) {
-  Mesh& mesh = s.mesh;
-  const std::size_t nv = mesh.num_vertices();
-  const std::size_t first_corner = mesh.corner_vertex.size();
+// `f` in the forms i, i/j, i//k, i/j/k. An `f` with no index is skipped (counted).
+template <bool kPlaced>
+void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
+  Mesh& mesh = a.mesh;
+  // Elements defined before this line, in the whole file: what relative indices count back from.
+  const std::size_t nv = s.at.v + s.read.v, nt = s.at.vt + s.read.vt, nn = s.at.vn + s.read.vn;
+  const std::size_t first_corner = s.read.corners;  // chunk-local
+  std::uint32_t* placed = kPlaced ? mesh.corner_vertex.data() + s.at.corners : nullptr;
   const char*& q = l.q;
-  const char* const eol = l.eol;
+  const char* const eol = l.end;  // the chunk's end: the line ends at '\n' before it
   const std::size_t line = l.number;
   for (;;) {
     q = skip_spaces(q, eol);
-    if (q == eol || *q == '#') break;
+    if (at_line_end(q, eol) || *q == '#') break;
     std::int64_t idx;
     const char* tok = q;
     if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
-    mesh.corner_vertex.push_back(resolve_index(idx, nv, "vertex", name, line));
-    std::uint32_t t = kNone, nn = kNone;
-    if (q < eol && *q == '/') {
+    const std::uint32_t vertex = resolve_index(idx, nv, "vertex", name, line);
+    if constexpr (kPlaced) {
+      // Beyond what the counting pass found: the passes split this text differently.
+      if (s.read.corners >= s.room.corners) throw Miscounted{};
+      placed[s.read.corners] = vertex;
+    } else {
+      mesh.corner_vertex.push_back(vertex);
+    }
+    ++s.read.corners;
+    std::uint32_t t = kNone, n = kNone;
+    if (!at_line_end(q, eol) && *q == '/') {
       ++q;
-      if (q < eol && *q != '/') {
-        if (!parse_int64(q, eol, idx) || (q < eol && *q != '/' && !is_space(*q)))
+      if (!at_line_end(q, eol) && *q != '/') {
+        if (!parse_int64(q, eol, idx) || (!at_line_end(q, eol) && *q != '/' && !is_space(*q)))
           fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
-        if (s.tex.empty()) ++s.dangling_tex;
-        else t = resolve_index(idx, s.tex.size() / 3, "texcoord", name, line);
+        if (nt == 0) ++s.dangling_tex;
+        else t = resolve_index(idx, nt, "texcoord", name, line);
       }
-      if (q < eol && *q == '/') {
+      if (!at_line_end(q, eol) && *q == '/') {
         ++q;
         if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
-        if (s.normals.empty()) ++s.dangling_normal;
-        else nn = resolve_index(idx, s.normals.size() / 3, "normal", name, line);
+        if (nn == 0) ++s.dangling_normal;
+        else n = resolve_index(idx, nn, "normal", name, line);
       }
     }
-    if (q < eol && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
-    if (nn != kNone) {
-      if (!s.have_cn) s.cn.assign(mesh.corner_vertex.size() - 1, kNone);
+    if (!at_line_end(q, eol) && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+    if (n != kNone) {
+      if (!s.have_cn) s.cn.assign(s.read.corners - 1, kNone);
       s.have_cn = true;
       ++s.corners_with_normal;
     }
-    if (s.have_cn) s.cn.push_back(nn);
+    if (s.have_cn) s.cn.push_back(n);
     if (t != kNone) {
-      if (!s.have_ct) s.ct.assign(mesh.corner_vertex.size() - 1, kNone);
+      if (!s.have_ct) s.ct.assign(s.read.corners - 1, kNone);
       s.have_ct = true;
       ++s.corners_with_tex;
     }
     if (s.have_ct) s.ct.push_back(t);
   }
-  const std::size_t size = mesh.corner_vertex.size() - first_corner;
+  const std::size_t size = s.read.corners - first_corner;
   if (size == 0) {  // `f` alone: nothing to keep (other readers skip it too)
     ++s.skipped_empty_faces;
-    return false;
+    return;
   }
   if (size < 3)
     fail(name, line, "face has " + std::to_string(size) + (size == 1 ? " vertex" : " vertices") +
                          " (a face needs at least 3)");
-  if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 1)
+  const std::size_t corners = s.at.corners + s.read.corners;
+  if (corners > std::numeric_limits<std::uint32_t>::max() - 1)
     fail(name, line, "too many face corners (more than 2^32)");
-  mesh.face_start.push_back(static_cast<std::uint32_t>(mesh.corner_vertex.size()));
-  if (s.any_statement) {
-    if (!s.pending_statements.empty()) mesh.group_statements.push_back(std::move(s.pending_statements));
-    s.pending_statements.clear();
-    mesh.face_group_run.push_back(static_cast<std::uint32_t>(mesh.group_statements.size()));
+  if constexpr (kPlaced) {
+    if (s.read.faces >= s.room.faces) throw Miscounted{};
+    mesh.face_start[s.at.faces + s.read.faces + 1] = static_cast<std::uint32_t>(corners);
+  } else {
+    mesh.face_start.push_back(static_cast<std::uint32_t>(corners));
   }
-  return true;
+  ++s.read.faces;
 }
 
-// Step 1, read: every line, in order, into `s`.
-void read_lines(std::string_view bytes, const std::string& name, ObjLines& s, ProgressCursor& progress) {
-  Mesh& mesh = s.mesh;
-  const char* p = bytes.data();
-  const char* const end = p + bytes.size();
-  std::size_t line = 0;
+// Which statement a line starts with; the keyword is the line's first token.
+enum class ObjKeyword { V, Vn, Vt, F, Grouping, L, P, Other };
 
-  // OBJ is text: a NUL byte means binary data (another format, or garbage), not lines to skip.
-  if (const void* nul = std::memchr(p, '\0', bytes.size()))
-    fail(name, 1 + std::size_t(std::count(p, static_cast<const char*>(nul), '\n')),
-         "binary data (a NUL byte) in an OBJ file: not a text mesh");
+inline ObjKeyword obj_keyword(const char* kw, std::size_t kwlen) {
+  if (kwlen == 1) {
+    switch (kw[0]) {
+      case 'v': return ObjKeyword::V;
+      case 'f': return ObjKeyword::F;
+      case 'o': case 'g': case 's': return ObjKeyword::Grouping;
+      case 'l': return ObjKeyword::L;
+      case 'p': return ObjKeyword::P;
+    }
+    return ObjKeyword::Other;
+  }
+  if (kwlen == 2 && kw[0] == 'v' && kw[1] == 'n') return ObjKeyword::Vn;
+  if (kwlen == 2 && kw[0] == 'v' && kw[1] == 't') return ObjKeyword::Vt;
+  const std::string_view k(kw, kwlen);
+  if (k == "usemtl" || k == "mtllib") return ObjKeyword::Grouping;
+  return ObjKeyword::Other;
+}
 
-  // Capacity guessed from the file size, generously (untouched capacity costs address space,
-  // not memory): a `v` line is >= 24 bytes in practice, a triangle line about 12 per corner.
-  reserve_bulk(mesh.positions, bytes.size() / 24 * 3);
-  reserve_bulk(mesh.corner_vertex, bytes.size() / 8);
-  reserve_bulk(mesh.face_start, bytes.size() / 24 + 1);
-
+// Step 1, read: every line of [p, end), in order, into `s` and the arrays.
+template <bool kPlaced>
+void read_lines(const char* p, const char* const end, const std::string& name, ObjChunk& s, ObjArrays& a) {
+  std::size_t line = s.at.lines;
+  // The line feed (or the end) at or after q.
+  auto line_feed = [end](const char* q) {
+    if (q == end || *q == '\n') return q;
+    const void* lf = std::memchr(q, '\n', std::size_t(end - q));
+    return lf ? static_cast<const char*>(lf) : end;
+  };
   while (p < end) {
-    if ((++line & 0xffff) == 0) progress.at(std::uint64_t(p - bytes.data()));  // bytes read, every 65536 lines
-    const char* eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
-    if (!eol) eol = end;
-    const char* q = skip_spaces(p, eol);
-    if (q < eol && *q != '#') {
+    if ((++line & 0xffff) == 0 && s.progress) s.progress->at(std::uint64_t(p - s.base));
+    const char* q = skip_spaces(p, end);
+    const char* eol;
+    if (at_line_end(q, end) || *q == '#') {
+      eol = line_feed(q);
+    } else {
       const char* kw = q;
-      while (q < eol && !is_space(*q)) ++q;
+      while (q < end && !is_space_or_newline(*q)) ++q;
       const std::size_t kwlen = std::size_t(q - kw);
-      ObjLine l{q, eol, line};
-      if (kwlen == 1 && kw[0] == 'v') {
-        read_v(s, l, name);
-      } else if (kwlen == 2 && kw[0] == 'v' && kw[1] == 'n') {
-        read_vn(s, l, name);
-      } else if (kwlen == 2 && kw[0] == 'v' && kw[1] == 't') {
-        read_vt(s, l, name);
-      } else if (kwlen == 1 && kw[0] == 'f') {
-        read_f(s, l, name);
-      } else if ((kwlen == 1 && (kw[0] == 'o' || kw[0] == 'g' || kw[0] == 's')) ||
-                 std::string_view(kw, kwlen) == "usemtl" || std::string_view(kw, kwlen) == "mtllib") {
-        // Grouping, smoothing groups and materials: kept verbatim, in place relative to the faces.
-        if (!s.any_statement) mesh.face_group_run.assign(mesh.num_faces(), 0);
-        s.any_statement = true;
-        const char* e = eol;
-        while (e > kw && is_space(e[-1])) --e;
-        s.pending_statements.append(kw, std::size_t(e - kw));
-        s.pending_statements += '\n';
-      } else if (kwlen == 1 && kw[0] == 'l') {
-        ++s.skipped_lines_l;
-      } else if (kwlen == 1 && kw[0] == 'p') {
-        ++s.skipped_points;
-      } else {
-        if (s.skipped_lines++ == 0) s.skipped_keyword.assign(kw, std::min<std::size_t>(kwlen, 40));
+      ObjLine l{q, end, line};
+      const ObjKeyword keyword = obj_keyword(kw, kwlen);
+      switch (keyword) {
+        case ObjKeyword::V: read_v<kPlaced>(s, a, l, name); break;
+        case ObjKeyword::Vn: read_vn<kPlaced>(s, a, l, name); break;
+        case ObjKeyword::Vt: read_vt<kPlaced>(s, a, l, name); break;
+        case ObjKeyword::F: read_f<kPlaced>(s, a, l, name); break;
+        case ObjKeyword::Grouping:
+        case ObjKeyword::L:
+        case ObjKeyword::P:
+        case ObjKeyword::Other: break;
+      }
+      // What the line's reader left (spaces, a comment, values it does not read) up to its end.
+      eol = line_feed(skip_spaces(l.q, end));
+      switch (keyword) {
+        case ObjKeyword::V:
+        case ObjKeyword::Vn:
+        case ObjKeyword::Vt:
+        case ObjKeyword::F: break;
+        case ObjKeyword::Grouping: {
+          // Grouping, smoothing groups and materials: kept verbatim, in place relative to the faces.
+          const char* e = eol;
+          while (e > kw && is_space(e[-1])) --e;
+          const std::size_t begin = s.statement_text.size();
+          s.statement_text.append(kw, std::size_t(e - kw));
+          s.statements.push_back({s.read.faces, begin, s.statement_text.size()});
+          break;
+        }
+        case ObjKeyword::L: ++s.skipped_lines_l; break;
+        case ObjKeyword::P: ++s.skipped_points; break;
+        case ObjKeyword::Other:
+          if (s.skipped_lines++ == 0) s.skipped_keyword.assign(kw, std::min<std::size_t>(kwlen, 40));
+          break;
       }
     }
     if (eol == end) break;
     p = eol + 1;
   }
-  if (!s.pending_statements.empty()) mesh.group_statements.push_back(std::move(s.pending_statements));
+  s.read.lines = line - s.at.lines;
 }
 
+// Step 1 in parallel, the counting pass: how many v, vt, vn, faces, corners and lines [p, end)
+// holds, by the tokens read_lines will read (a face's corners are its tokens before a comment).
+// Malformed lines are counted as tokens here and refused by read_lines with their line number.
+// What the counting pass tells apart: is_space's bytes, the line feed, `#`, anything else.
+enum class CharClass : unsigned char { Other, Space, LineFeed, Hash };
+constexpr std::array<CharClass, 256> make_char_class() {
+  std::array<CharClass, 256> t{};
+  for (int c = 0; c < 256; ++c)
+    t[std::size_t(c)] = c == '\n' ? CharClass::LineFeed : c == '#' ? CharClass::Hash : is_space(char(c)) ? CharClass::Space : CharClass::Other;
+  return t;
+}
+constexpr std::array<CharClass, 256> kCharClass = make_char_class();
+
+ObjCounts count_lines(const char* p, const char* const end) {
+  ObjCounts c;
+  auto line_feed = [end](const char* q) {
+    if (q == end || *q == '\n') return q;
+    const void* lf = std::memchr(q, '\n', std::size_t(end - q));
+    return lf ? static_cast<const char*>(lf) : end;
+  };
+  while (p < end) {
+    ++c.lines;
+    const char* q = skip_spaces(p, end);
+    if (!at_line_end(q, end) && *q != '#') {
+      const char* kw = q;
+      while (q < end && !is_space_or_newline(*q)) ++q;
+      switch (obj_keyword(kw, std::size_t(q - kw))) {
+        case ObjKeyword::V: ++c.v; break;
+        case ObjKeyword::Vn: ++c.vn; break;
+        case ObjKeyword::Vt: ++c.vt; break;
+        case ObjKeyword::F: {  // its tokens up to the line feed or a comment: one scan, no search
+          // A token starts where a byte that is not a space follows a space; a `#` starting a
+          // token starts a comment (read_f's rule). Byte classes from a table: one load a byte.
+          std::size_t n = 0;
+          bool after_space = true;
+          for (; q < end; ++q) {
+            const CharClass k = kCharClass[static_cast<unsigned char>(*q)];
+            if (k == CharClass::LineFeed || (k == CharClass::Hash && after_space)) break;
+            n += after_space && k != CharClass::Space;
+            after_space = k == CharClass::Space;
+          }
+          if (n > 0) {
+            ++c.faces;
+            c.corners += n;
+          }
+          break;
+        }
+        case ObjKeyword::Grouping:
+        case ObjKeyword::L:
+        case ObjKeyword::P:
+        case ObjKeyword::Other: break;
+      }
+    }
+    const char* eol = line_feed(q);
+    if (eol == end) break;
+    p = eol + 1;
+  }
+  return c;
+}
+
+// What the chunks gathered, merged in file order into one ObjLines for the build steps.
+struct ObjLines {
+  Mesh mesh;
+  bool any_double = false;
+  std::vector<double> normals;                 // vn pool, 3 per entry
+  std::vector<double> tex;                     // vt pool, 3 per entry (missing components 0)
+  int tex_dims = 0;
+  std::vector<float> rgba;                     // 4 per vertex once any vertex has a colour
+  int color_channels = 0;
+  std::size_t colored_vertices = 0;
+  std::vector<std::uint32_t> cn, ct;           // per corner, kNone where absent
+  std::size_t corners_with_normal = 0, corners_with_tex = 0;
+  std::size_t dangling_normal = 0, dangling_tex = 0;
+  std::size_t skipped_lines = 0;
+  std::string skipped_keyword;
+  std::size_t skipped_empty_faces = 0, skipped_lines_l = 0, skipped_points = 0;
+};
+
+// Grouping statements become runs between faces: a run is the statement lines read since the
+// last face; face f's face_group_run is the number of runs before it. Replayed in file order over
+// the chunks, so the result does not depend on where the chunks were cut.
+void merge_statements(std::vector<ObjChunk>& chunks, Mesh& mesh) {
+  bool any_statement = false;
+  std::string pending;
+  std::size_t faces_done = 0;
+  for (ObjChunk& c : chunks) {
+    std::size_t f = 0;  // chunk faces placed in face_group_run so far
+    auto faces_until = [&](std::size_t end_face) {
+      if (any_statement) {
+        for (; f < end_face; ++f) {
+          if (!pending.empty()) {
+            mesh.group_statements.push_back(std::move(pending));
+            pending.clear();
+          }
+          mesh.face_group_run.push_back(static_cast<std::uint32_t>(mesh.group_statements.size()));
+        }
+      }
+      f = end_face;
+    };
+    for (const ObjChunk::Statement& st : c.statements) {
+      faces_until(st.faces_before);
+      if (!any_statement) mesh.face_group_run.assign(faces_done + st.faces_before, 0);
+      any_statement = true;
+      pending.append(c.statement_text, st.begin, st.end - st.begin);
+      pending += '\n';
+    }
+    faces_until(c.read.faces);
+    faces_done += c.read.faces;
+  }
+  if (!pending.empty()) mesh.group_statements.push_back(std::move(pending));
+}
+
+// Per-chunk lazily allocated arrays (colours per vertex, vn/vt indices per corner) merged into one:
+// allocated for the whole file when any chunk has them, `fill` where a chunk has none.
+template <class T>
+void merge_lazy(std::vector<ObjChunk>& chunks, std::vector<T> ObjChunk::*member, std::size_t ObjCounts::*count,
+                std::size_t width, T fill, std::vector<T>& out) {
+  bool any = false;
+  for (const ObjChunk& c : chunks) any = any || !(c.*member).empty();
+  if (!any) return;
+  if (chunks.size() == 1) {
+    out = std::move(chunks[0].*member);
+    return;
+  }
+  std::size_t total = 0;
+  for (const ObjChunk& c : chunks) total += c.read.*count;
+  out.reserve(total * width);
+  for (ObjChunk& c : chunks) {
+    std::vector<T>& v = c.*member;
+    if (v.empty()) out.insert(out.end(), c.read.*count * width, fill);
+    else out.insert(out.end(), v.begin(), v.end());
+    std::vector<T>().swap(v);
+  }
+}
+
+void merge_chunks(std::vector<ObjChunk>& chunks, ObjLines& s) {
+  for (const ObjChunk& c : chunks) {
+    s.any_double = s.any_double || c.any_double;
+    s.tex_dims = std::max(s.tex_dims, c.tex_dims);
+    s.color_channels = std::max(s.color_channels, c.color_channels);
+    s.colored_vertices += c.colored_vertices;
+    s.corners_with_normal += c.corners_with_normal;
+    s.corners_with_tex += c.corners_with_tex;
+    s.dangling_normal += c.dangling_normal;
+    s.dangling_tex += c.dangling_tex;
+    if (s.skipped_lines == 0 && c.skipped_lines > 0) s.skipped_keyword = c.skipped_keyword;
+    s.skipped_lines += c.skipped_lines;
+    s.skipped_empty_faces += c.skipped_empty_faces;
+    s.skipped_lines_l += c.skipped_lines_l;
+    s.skipped_points += c.skipped_points;
+  }
+  merge_lazy(chunks, &ObjChunk::rgba, &ObjCounts::v, 4, 1.0f, s.rgba);
+  merge_lazy(chunks, &ObjChunk::cn, &ObjCounts::corners, 1, kNone, s.cn);
+  merge_lazy(chunks, &ObjChunk::ct, &ObjCounts::corners, 1, kNone, s.ct);
+  merge_statements(chunks, s.mesh);
+}
+
+// Fresh memory is faulted in page by page on its first write, the kernel zeroing each page: done
+// by the threads in parallel (MADV_POPULATE_WRITE, Linux 5.14) before resize() value-initialises
+// the arrays on one thread; elsewhere (or when the kernel refuses) resize() faults them in itself.
+template <class T>
+void populate_in_parallel(T* data, std::size_t n) {
+#if defined(__linux__)
+  constexpr int kPopulateWrite = 23;  // MADV_POPULATE_WRITE; glibc 2.36's headers may lack it
+  constexpr std::uintptr_t kBlock = std::uintptr_t(1) << 21;
+  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) & ~(std::uintptr_t(4095));
+  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(data + n);
+  if (end - begin < 4 * kBlock) return;
+  tbb::parallel_for(begin, end, kBlock, [&](std::uintptr_t b) {
+    ::madvise(reinterpret_cast<void*>(b), std::min(kBlock, end - b), kPopulateWrite);
+  });
+#else
+  (void)data;
+  (void)n;
+#endif
+}
+
+// The chunks of [0, size): about `target` bytes each, every cut just after a line feed, so every
+// line is whole in one chunk.
+std::vector<std::size_t> chunk_starts(std::string_view bytes, std::size_t target) {
+  std::vector<std::size_t> starts{0};
+  for (std::size_t at = target; at < bytes.size();) {
+    const void* lf = std::memchr(bytes.data() + at - 1, '\n', bytes.size() - at + 1);
+    if (!lf) break;
+    const std::size_t next = std::size_t(static_cast<const char*>(lf) - bytes.data()) + 1;
+    if (next >= bytes.size()) break;
+    starts.push_back(next);
+    at = next + target;
+  }
+  starts.push_back(bytes.size());
+  return starts;
+}
+
+// Step 1, read, in one pass: every line in order, appended to the mesh's vectors.
+void read_one_pass(std::string_view bytes, const std::string& name, ObjLines& s, ProgressCursor& progress) {
+  Mesh& mesh = s.mesh;
+  ObjArrays arrays{mesh, s.normals, s.tex};
+  // Capacity guessed from the file size, generously (untouched capacity costs address space,
+  // not memory): a `v` line is >= 24 bytes in practice, a triangle line about 12 per corner.
+  reserve_bulk(mesh.positions, bytes.size() / 24 * 3);
+  reserve_bulk(mesh.corner_vertex, bytes.size() / 8);
+  reserve_bulk(mesh.face_start, bytes.size() / 24 + 1);
+  std::vector<ObjChunk> chunks(1);
+  chunks[0].progress = &progress;
+  chunks[0].base = bytes.data();
+  read_lines<false>(bytes.data(), bytes.data() + bytes.size(), name, chunks[0], arrays);
+  merge_chunks(chunks, s);
+}
+
+// Step 1, read, in one pass (one chunk, appended to the mesh's vectors) or in chunks: a counting
+// pass over the chunks in parallel gives each chunk its offsets (the v, vt, vn, faces, corners and
+// lines before it), then every chunk is read in parallel into its place, resolving relative
+// indices and checking ranges against the elements defined before it in the whole file; what the
+// chunks gathered besides the arrays is merged in file order. The first error in file order is
+// the one raised, with its line number, as in one pass.
+void read_all_lines(std::string_view bytes, const std::string& name, const ObjReadOptions& options, ObjLines& s,
+                    ProgressCursor& progress) {
+  Mesh& mesh = s.mesh;
+  ObjArrays arrays{mesh, s.normals, s.tex};
+  const std::size_t threads = usable_threads();
+  std::size_t target = options.chunk_bytes;
+  if (target == 0) target = threads > 1 && bytes.size() >= kParallelMinBytes ? std::max(kChunkMinBytes, bytes.size() / (4 * threads)) : bytes.size();
+  std::vector<std::size_t> starts = chunk_starts(bytes, std::max<std::size_t>(target, 1));
+  std::size_t n = starts.size() - 1;
+  // OBJ is text: a NUL byte means binary data (another format, or garbage), not lines to skip.
+  // Looked for before any line is read, in every chunk at once when there are several.
+  std::vector<const char*> nul(n, nullptr);
+  auto find_nul = [&](std::size_t i) {
+    nul[i] = static_cast<const char*>(std::memchr(bytes.data() + starts[i], '\0', starts[i + 1] - starts[i]));
+  };
+  auto refuse_nul = [&] {
+    for (const char* at : nul)
+      if (at)
+        fail(name, 1 + std::size_t(std::count(bytes.data(), at, '\n')), "binary data (a NUL byte) in an OBJ file: not a text mesh");
+  };
+  std::vector<ObjCounts> counts(n);
+  if (n == 1) {
+    find_nul(0);
+    refuse_nul();
+  } else {
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      find_nul(i);
+      counts[i] = count_lines(bytes.data() + starts[i], bytes.data() + starts[i + 1]);
+    });
+    refuse_nul();
+    std::size_t v = 0, corners = 0;
+    for (const ObjCounts& c : counts) {
+      v += c.v;
+      corners += c.corners;
+    }
+    // Beyond 32-bit indices: the one pass stops at the line where the count overflows.
+    if (v > std::numeric_limits<std::uint32_t>::max() || corners > std::numeric_limits<std::uint32_t>::max() - 1) n = 1;
+  }
+  if (n == 1) {
+    read_one_pass(bytes, name, s, progress);
+    return;
+  }
+  std::vector<ObjChunk> chunks(n);
+  ObjCounts total;
+  for (std::size_t i = 0; i < n; ++i) {
+    chunks[i].at = total;
+    chunks[i].room = counts[i];
+    total.v += counts[i].v;
+    total.vt += counts[i].vt;
+    total.vn += counts[i].vn;
+    total.faces += counts[i].faces;
+    total.corners += counts[i].corners;
+    total.lines += counts[i].lines;
+  }
+  reserve_bulk(mesh.positions, 3 * total.v);
+  reserve_bulk(mesh.corner_vertex, total.corners);
+  reserve_bulk(mesh.face_start, total.faces + 1);
+  populate_in_parallel(mesh.positions.data(), 3 * total.v);
+  populate_in_parallel(mesh.corner_vertex.data(), total.corners);
+  populate_in_parallel(mesh.face_start.data(), total.faces + 1);
+  mesh.positions.resize(3 * total.v);
+  mesh.corner_vertex.resize(total.corners);
+  mesh.face_start.resize(total.faces + 1);
+  s.normals.resize(3 * total.vn);
+  s.tex.resize(3 * total.vt);
+  std::vector<std::exception_ptr> errors(n);
+  std::vector<char> miscounted(n, 0);
+  std::mutex progress_mutex;  // the cursor is serial: chunks report their bytes as they finish
+  std::uint64_t chunk_bytes_done = 0;
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    try {
+      read_lines<true>(bytes.data() + starts[i], bytes.data() + starts[i + 1], name, chunks[i], arrays);
+      {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        chunk_bytes_done += starts[i + 1] - starts[i];
+        progress.at(chunk_bytes_done);
+      }
+      const ObjCounts& r = chunks[i].read;
+      const ObjCounts& c = counts[i];
+      if (r.v != c.v || r.vt != c.vt || r.vn != c.vn || r.faces != c.faces || r.corners != c.corners) throw Miscounted{};
+    } catch (const Miscounted&) {
+      miscounted[i] = 1;
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  });
+  if (std::find(miscounted.begin(), miscounted.end(), 1) != miscounted.end()) {
+    // Text the two passes split differently (a face token such as `1/ 2`, whose vt the reader
+    // takes across the space): the one pass reads it as it always has.
+    s = ObjLines{};
+    read_one_pass(bytes, name, s, progress);
+    return;
+  }
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  merge_chunks(chunks, s);
+}
 // Step 2, validate: a file without vertices is not a mesh.
 void validate_lines(const ObjLines& s, const std::string& name) {
   if (s.mesh.num_vertices() == 0 && s.skipped_lines > 0)
@@ -338,10 +757,15 @@ void note_skipped(const ObjLines& s, ReadInfo& info) {
 }  // namespace
 
 Mesh read_obj(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
+  return read_obj(file_bytes, name, info, ObjReadOptions{});
+}
+
+Mesh read_obj(std::string_view file_bytes, const std::string& name, ReadInfo& info, const ObjReadOptions& options) {
   refuse_utf16(file_bytes, name);
   const LineEndings lines(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
+  const std::string_view bytes = lines.lf();
   ObjLines s;
-  read_lines(lines.lf(), name, s, info.progress);
+  read_all_lines(bytes, name, options, s, info.progress);
   validate_lines(s, name);
   build_corner_normals(s, info);
   build_texcoords(s);

@@ -8,6 +8,13 @@
 // A `vt` or `vn` index on a face corner while the file has defined no `vt` (`vn`) line before it
 // (OpenSubdiv's shapes write `f v/vt/vn` with neither) is ignored, counted in one note, as assimp
 // does; an index beyond a pool that does have entries is still an error naming the line.
+// Reading in parallel: files of 4 MiB or more are cut into chunks at line feeds; a counting pass
+// gives each chunk the number of v, vt, vn, faces, corners and lines before it, then every chunk is
+// parsed into its place in the mesh's arrays at once, relative (negative) indices and ranges
+// resolved against the whole file's counts; grouping statements, colours and per-corner vn/vt are
+// merged in file order. The mesh is the same bit for bit as one pass gives, and so is the error
+// (the first in the file, with its line). Text the two passes would split differently (a corner
+// written `1/ 2`, whose vt the reader takes across the space) is read in one pass instead.
 // Steps: read the lines (read_lines), validate, build the corner normals, texture coordinates and
 // vertex colours from the pools, then note what was skipped.
 // Precision: every value is stored as parsed, the double nearest to the text, never rounded to
@@ -26,6 +33,7 @@
 // added, and a note says so. Vertex colours, if the mesh also has them, give way (note).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -36,7 +44,16 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
+// How the reader splits its work; the mesh read never depends on it (tests/io/obj_format.cpp reads
+// every file with chunks forced small and compares).
+struct ObjReadOptions {
+  // Bytes per chunk of lines read in parallel (cut at line feeds); 0: the file in one pass on one
+  // thread or below 4 MiB, else about four chunks per thread of the current TBB arena.
+  std::size_t chunk_bytes = 0;
+};
+
 Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info);
+Mesh read_obj(std::string_view bytes, const std::string& name, ReadInfo& info, const ObjReadOptions& options);
 void write_obj(const Mesh& mesh, ByteSink& out, WriteInfo& info);
 
 }  // namespace shadetool::io

@@ -16,8 +16,8 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::io {
 
-inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-inline bool is_space_or_newline(char c) { return is_space(c) || c == '\n'; }
+constexpr bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+constexpr bool is_space_or_newline(char c) { return is_space(c) || c == '\n'; }
 
 inline const char* skip_spaces(const char* p, const char* end) {
   while (p < end && is_space(*p)) ++p;
@@ -80,6 +80,43 @@ inline bool has_more_digits_than_float(const char* b, const char* e) {
     if (c != '0') significant = counted;
   }
   return significant > 9;
+}
+
+// parse_double and has_more_digits_than_float(token) in one scan, for the hot loop of the OBJ
+// reader: the token starts at p (no leading spaces); on success p is past it, `value` is what
+// parse_double gives and `more_digits` what has_more_digits_than_float gives for the token
+// (including the short-token shortcut). The digits are gathered once (fast_float's
+// parse_number_string); a mantissa of at most 2^53 with a decimal exponent in [-22, 22] is
+// converted by Clinger's fast path (both operands exact, one correctly rounded IEEE operation, the
+// same path and result as fast_float's under the default round-to-nearest mode, which shadetool
+// never changes); anything else (more digits, larger exponents, inf, nan) goes through
+// fast_float::from_chars and the textual digit count.
+inline bool parse_double_counting_digits(const char*& p, const char* end, double& value, bool& more_digits) {
+  const char* const start = p;
+  const char* q = p;
+  if (q < end && *q == '+') ++q;  // as parse_double
+  const fast_float::parsed_number_string pns = fast_float::parse_number_string(q, end, fast_float::parse_options{});
+  using Binary = fast_float::binary_format<double>;
+  if (pns.valid && !pns.too_many_digits && pns.exponent >= Binary::min_exponent_fast_path() &&
+      pns.exponent <= Binary::max_exponent_fast_path() && pns.mantissa <= Binary::max_mantissa_fast_path()) {
+    if (pns.lastmatch < end && !is_space_or_newline(*pns.lastmatch)) return false;
+    double v = double(pns.mantissa);
+    if (pns.exponent < 0) v = v / Binary::exact_power_of_ten(-pns.exponent);
+    else v = v * Binary::exact_power_of_ten(pns.exponent);
+    value = pns.negative ? -v : v;
+    p = pns.lastmatch;
+    // Significant digits: the mantissa's, less its trailing zeros (leading ones are not in it).
+    more_digits = false;
+    if (p - start > 10 && pns.mantissa >= 1000000000u) {
+      std::uint64_t m = pns.mantissa;
+      while (m % 10 == 0) m /= 10;
+      more_digits = m >= 1000000000u;
+    }
+    return true;
+  }
+  if (!parse_double(p, end, value)) return false;
+  more_digits = has_more_digits_than_float(start, p);
+  return true;
 }
 
 // True when x is finite but float cannot hold it at all: beyond float's range (narrowed it would be

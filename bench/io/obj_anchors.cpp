@@ -1,0 +1,179 @@
+// obj_anchors.cpp: bench_obj_anchors, reading OBJ files: shadetool's reader (1 and 2 threads)
+// against fast_obj and rapidobj, the fastest OBJ readers in public use, timed in one program.
+//
+//   shadetool read_mesh   files/mesh_files.h: exact doubles (correctly rounded), errors name the
+//                         line; threads through a tbb::task_arena of 1 or 2
+//   fast_obj              thisistherk/fast_obj (third_party/fast_obj, MIT): floats from its own
+//                         parse_float (not correctly rounded), no error on malformed numbers
+//   rapidobj              guybrush77/rapidobj (third_party/rapidobj, MIT): floats (its own copy of
+//                         fast_float, rounded to float), threads patched to 1 or 2
+//
+// Every contender reads the same file from its path (so file reading is inside every row), warm in
+// the page cache (one untimed read of each first). The rows are interleaved run by run
+// (round-robin over contenders in every repetition), so load changes hit every row alike; each
+// row's median wall time and median process CPU time (user + system, all threads: on a loaded
+// machine the CPU time of a 1-thread row is the steadier measure; a 2-thread row is judged by wall
+// time) and the ratios of medians to the first row (below 1: faster) are printed with
+// /proc/loadavg before and after.
+// Destroying a result is outside the timed region.
+// Memory: M_MMAP_THRESHOLD is fixed at 1 MiB, as in io_read.cpp, so that every large block is a
+// fresh mapping in every repetition as in a one-shot process (no contender is flattered by glibc
+// recycling its last block).
+//
+// Usage: bench_obj_anchors [--reps N] [--only TEXT] FILE.obj...   (--only: rows whose name contains
+// TEXT, for profiling one reader under perf)
+#include <malloc.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <tbb/task_arena.h>
+
+#include <shadetool/files/mesh_files.h>
+
+// rapidobj asks std::thread::hardware_concurrency() how many threads to use; the vendored copy asks
+// this instead (third_party/README.md), so its 1-thread row is one thread on any machine.
+static unsigned g_rapidobj_threads = 1;
+inline unsigned rapidobj_bench_threads() { return g_rapidobj_threads; }
+#include "third_party/rapidobj/rapidobj.hpp"
+
+extern "C" {
+#include "third_party/fast_obj/fast_obj.h"
+}
+
+namespace {
+
+std::string loadavg() {
+  std::ifstream f("/proc/loadavg");
+  std::string a, b, c;
+  f >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
+
+long file_size(const std::string& path) {
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  return long(f.tellg());
+}
+
+struct Contender {
+  std::string name;
+  std::function<std::size_t()> run;  // returns a count (faces) so the work is not optimised away
+  std::function<void()> reset;       // frees the result, untimed
+  std::vector<double> ms, cpu_ms;
+  std::size_t count = 0;
+};
+
+// User + system CPU time of the whole process (every thread), in ms.
+double process_cpu_ms() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return (double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3) + (double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3);
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int reps = 9;
+  std::string only;
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--reps" && i + 1 < argc) reps = std::atoi(argv[++i]);
+    else if (a == "--only" && i + 1 < argc) only = argv[++i];
+    else files.push_back(a);
+  }
+  if (files.empty()) {
+    std::fprintf(stderr, "usage: bench_obj_anchors [--reps N] [--only TEXT] FILE.obj...\n");
+    return 2;
+  }
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  for (const std::string& path : files) {
+    std::vector<Contender> rows;
+    auto ours = std::make_shared<std::unique_ptr<shadetool::Mesh>>();
+    for (int t : {1, 2}) {
+      auto arena = std::make_shared<tbb::task_arena>(t);
+      rows.push_back({"shadetool read_mesh, " + std::to_string(t) + " thread" + (t > 1 ? "s" : ""),
+                      [ours, arena, path] {
+                        arena->execute([&] { *ours = std::make_unique<shadetool::Mesh>(shadetool::read_mesh(path)); });
+                        return (*ours)->num_faces();
+                      },
+                      [ours] { ours->reset(); }});
+    }
+    auto fo = std::make_shared<fastObjMesh*>(nullptr);
+    rows.push_back({"fast_obj",
+                    [fo, path] {
+                      *fo = fast_obj_read(path.c_str());
+                      if (!*fo) throw std::runtime_error(path + ": fast_obj_read failed");
+                      return std::size_t((*fo)->face_count);
+                    },
+                    [fo] {
+                      if (*fo) fast_obj_destroy(*fo);
+                      *fo = nullptr;
+                    }});
+    auto ro = std::make_shared<std::unique_ptr<rapidobj::Result>>();
+    for (unsigned t : {1u, 2u}) {
+      rows.push_back({"rapidobj, " + std::to_string(t) + " thread" + (t > 1 ? "s" : ""),
+                      [ro, path, t] {
+                        g_rapidobj_threads = t;
+                        *ro = std::make_unique<rapidobj::Result>(rapidobj::ParseFile(path));
+                        if ((*ro)->error.code) throw std::runtime_error(path + ": rapidobj: " + (*ro)->error.code.message());
+                        std::size_t faces = 0;
+                        for (const auto& s : (*ro)->shapes) faces += s.mesh.num_face_vertices.size();
+                        return faces;
+                      },
+                      [ro] { ro->reset(); }});
+    }
+    if (!only.empty())
+      rows.erase(std::remove_if(rows.begin(), rows.end(), [&](const Contender& c) { return c.name.find(only) == std::string::npos; }),
+                 rows.end());
+    if (rows.empty()) continue;
+    // Warm: one untimed run of each (page cache, lazy library initialisation).
+    for (Contender& c : rows) {
+      c.count = c.run();
+      c.reset();
+    }
+    const std::string load_before = loadavg();
+    for (int r = 0; r < reps; ++r)
+      for (Contender& c : rows) {
+        const double cpu0 = process_cpu_ms();
+        const auto t0 = std::chrono::steady_clock::now();
+        c.count = c.run();
+        const auto t1 = std::chrono::steady_clock::now();
+        c.cpu_ms.push_back(process_cpu_ms() - cpu0);
+        c.ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+        c.reset();
+      }
+    const std::string load_after = loadavg();
+    const double mb = file_size(path) / 1e6;
+    std::printf("%s: %.1f MB, %d runs per row interleaved, medians; load %s before, %s after\n", path.c_str(), mb, reps,
+                load_before.c_str(), load_after.c_str());
+    std::printf("| %-30s | %9s | %8s | %8s | %-21s | %10s | %-21s | %10s |\n", "reader", "median ms", "MB/s", "min ms",
+                "wall: time / first row", "median CPU ms", "CPU: time / first row", "faces");
+    std::printf("|%s|%s|%s|%s|%s|%s|%s|%s|\n", std::string(32, '-').c_str(), std::string(11, '-').c_str(),
+                std::string(10, '-').c_str(), std::string(10, '-').c_str(), std::string(23, '-').c_str(),
+                std::string(12, '-').c_str(), std::string(23, '-').c_str(), std::string(12, '-').c_str());
+    const double base = median(rows[0].ms), base_cpu = median(rows[0].cpu_ms);
+    for (const Contender& c : rows) {
+      const double m = median(c.ms), cpu = median(c.cpu_ms);
+      std::printf("| %-30s | %9.1f | %8.0f | %8.1f | %21.2f | %12.1f | %21.2f | %10zu |\n", c.name.c_str(), m, mb * 1e3 / m,
+                  *std::min_element(c.ms.begin(), c.ms.end()), m / base, cpu, cpu / base_cpu, c.count);
+    }
+    std::printf("\n");
+  }
+  return 0;
+}
