@@ -1,7 +1,8 @@
 // bench_occlusion_loop.cpp: shadetool's per-vertex occlusion against bare Embree loops over
 // exactly the rays it casts (issue 31, goal 2).
 //
-//   bench_occlusion_loop MESH.ply [--samples N] [--runs R] [--threads T] [--flags LIST] [--forms LIST]
+//   bench_occlusion_loop MESH.ply [--samples N] [--runs R] [--threads T] [--stride S] [--flags LIST]
+//                        [--forms LIST] [--other-forms LIST]
 //
 // The rays: for every vertex ambient_occlusion_per_vertex traces (unit angle-weighted normal, the
 // BVH's float vertex), its N rays made beforehand, outside every timing, by the library's own
@@ -10,10 +11,15 @@
 // per vertex and one float direction per ray (12 B a ray), which each bare loop copies into the
 // ray layout its Embree call takes: the least a loop over these rays can do.
 //
+// --stride S: every S-th vertex only (vertex ids 0, S, 2S, ...; the BVH is still the whole mesh's),
+// traced by ambient_occlusion_at_points with those ids and the same axes: the same rays as the
+// per-vertex call for those vertices (S = 1, the default: ambient_occlusion_per_vertex itself).
+//
 // Rows, taken round-robin run by run (medians of R runs), each on T threads (tbb::global_control;
 // every row splits the vertices with visibility_engine::parallel_point_ranges, ours does too):
 //   shadetool      ambient_occlusion_per_vertex(scene, mesh, normals, N): makes its rays as it goes
-//   FORM / FLAGS   a bare loop over the stored rays on an Embree scene built from the same float
+//   FORM / FLAGS   (--forms on the first FLAGS, --other-forms, default the same, on the others)
+//                  a bare loop over the stored rays on an Embree scene built from the same float
 //                  buffers with the scene flags FLAGS (robust+compact = shadetool's, none, robust,
 //                  compact), in one of the forms:
 //     single       rtcOccluded1 per ray
@@ -88,12 +94,13 @@ struct Rays {
   std::vector<float> direction;       // 3 per ray, vertex-major
 };
 
-Rays make_rays(const VisibilityScene& scene, const Mesh& mesh, const std::vector<double>& normals, std::uint32_t samples) {
+Rays make_rays(const VisibilityScene& scene, const Mesh& mesh, const std::vector<double>& normals, std::uint32_t samples,
+               std::size_t stride) {
   Rays r;
   r.samples = samples;
   const std::vector<float>& local = scene.impl().vertices;
   const std::uint32_t salt_seed = visibility::hash_combine(0, 0);
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+  for (std::size_t v = 0; v < mesh.num_vertices(); v += stride) {
     const Vec3d raw = get3(normals, v);
     const double l = length(raw);
     if (!is_finite(mesh.position(v)) || !(l > 0) || !std::isfinite(l)) continue;
@@ -128,12 +135,20 @@ RTCSceneFlags parse_flags(const std::string& s) {
 struct BareScene {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  std::int64_t bytes = 0;
+  std::int64_t bytes[2] = {0, 0};  // Embree's allocations now, and their peak during the build
   BareScene(const VisibilityScene& vs, const Mesh& mesh, RTCSceneFlags flags) {
     device = rtcNewDevice(nullptr);
     rtcSetDeviceMemoryMonitorFunction(
-        device, [](void* u, ssize_t b, bool) { __atomic_add_fetch(static_cast<std::int64_t*>(u), std::int64_t(b), __ATOMIC_RELAXED); return true; },
-        &bytes);
+        device,
+        [](void* u, ssize_t b, bool) {
+          std::int64_t* m = static_cast<std::int64_t*>(u);
+          const std::int64_t now = __atomic_add_fetch(&m[0], std::int64_t(b), __ATOMIC_RELAXED);
+          std::int64_t peak = __atomic_load_n(&m[1], __ATOMIC_RELAXED);
+          while (now > peak && !__atomic_compare_exchange_n(&m[1], &peak, now, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+          }
+          return true;
+        },
+        bytes);
     scene = rtcNewScene(device);
     rtcSetSceneFlags(scene, flags);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -313,6 +328,8 @@ int main(int argc, char** argv) {
   }
   std::uint32_t samples = 64;
   int runs = 7, threads = 1;
+  std::size_t stride = 1;
+  std::string other_forms;
   std::string flag_list = "robust+compact,none", form_list = "single,stream-v,stream-4k,packet8,packet16";
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -321,6 +338,8 @@ int main(int argc, char** argv) {
     else if (a == "--threads") threads = std::atoi(argv[i + 1]);
     else if (a == "--flags") flag_list = argv[i + 1];
     else if (a == "--forms") form_list = argv[i + 1];
+    else if (a == "--other-forms") other_forms = argv[i + 1];
+    else if (a == "--stride") stride = std::max<std::size_t>(1, std::size_t(std::atol(argv[i + 1])));
     else {
       std::fprintf(stderr, "bench_occlusion_loop: unknown option %s\n", a.c_str());
       return 2;
@@ -330,41 +349,56 @@ int main(int argc, char** argv) {
   const Mesh mesh = read_mesh(argv[1]);
   const std::vector<double> normals = vertex_normals(mesh).normals;
   const VisibilityScene scene(mesh);
-  const Rays rays = make_rays(scene, mesh, normals, samples);
+  const Rays rays = make_rays(scene, mesh, normals, samples, stride);
+  // --stride: the points, their axes and ids for ambient_occlusion_at_points (every S-th vertex).
+  std::vector<double> points, axes;
+  std::vector<std::uint64_t> ids;
+  for (std::size_t v = 0; stride > 1 && v < mesh.num_vertices(); v += stride) {
+    for (int k = 0; k < 3; ++k) points.push_back(mesh.positions[3 * v + k]), axes.push_back(normals[3 * v + k]);
+    ids.push_back(v);
+  }
   const double total_rays = double(rays.vertex.size()) * samples;
-  std::printf("mesh %s: %zu vertices, %zu triangles; %zu traced vertices x N = %u = %.0f rays; %d thread(s), %d runs\n",
-              argv[1], mesh.num_vertices(), mesh.num_faces(), rays.vertex.size(), samples, total_rays, threads, runs);
+  std::printf("mesh %s: %zu vertices, %zu triangles; %zu traced vertices (stride %zu) x N = %u = %.0f rays; %d thread(s), %d runs\n",
+              argv[1], mesh.num_vertices(), mesh.num_faces(), rays.vertex.size(), stride, samples, total_rays, threads, runs);
   std::printf("shadetool's BVH: %.1f MB (robust+compact)\n", double(scene.stats().bvh_bytes) / 1e6);
 
-  const std::vector<std::string> flag_names = split(flag_list), form_names = split(form_list);
+  const std::vector<std::string> flag_names = split(flag_list), form_names = split(form_list),
+                                 other_names = other_forms.empty() ? form_names : split(other_forms);
+  const auto forms_of = [&](std::size_t s) -> const std::vector<std::string>& { return s == 0 ? form_names : other_names; };
   std::vector<std::unique_ptr<BareScene>> scenes;
   for (const std::string& f : flag_names) {
     scenes.push_back(std::make_unique<BareScene>(scene, mesh, parse_flags(f)));
-    std::printf("bare BVH %s: %.1f MB\n", f.c_str(), double(scenes.back()->bytes) / 1e6);
+    std::printf("bare BVH %s: %.1f MB after the build, %.1f MB at its peak (Embree's memory monitor)\n", f.c_str(),
+                double(scenes.back()->bytes[0]) / 1e6, double(scenes.back()->bytes[1]) / 1e6);
   }
 
   AmbientOcclusionOptions options;
   options.samples = samples;
   std::vector<Row> rows;
-  rows.push_back({"shadetool ambient_occlusion_per_vertex", {}, {}, 0, 0});
-  for (const std::string& fl : flag_names)
-    for (const std::string& fo : form_names) rows.push_back({fo + " / " + fl, {}, {}, 0, 0});
+  rows.push_back({stride == 1 ? "shadetool ambient_occlusion_per_vertex" : "shadetool ambient_occlusion_at_points", {}, {}, 0, 0});
+  for (std::size_t s = 0; s < flag_names.size(); ++s)
+    for (const std::string& fo : forms_of(s)) rows.push_back({fo + " / " + flag_names[s], {}, {}, 0, 0});
 
   std::vector<std::uint32_t> ours(rays.vertex.size()), hits(rays.vertex.size());
   for (int run = 0; run < runs; ++run) {
     std::size_t row = 0;
     {
       const double c0 = cpu_s(), w0 = wall_s();
-      const AmbientOcclusion ao = ambient_occlusion_per_vertex(scene, mesh, normals, options);
+      const AmbientOcclusion ao = stride == 1 ? ambient_occlusion_per_vertex(scene, mesh, normals, options)
+                                              : ambient_occlusion_at_points(scene, points, axes, ids, options);
       rows[row].cpu.push_back(cpu_s() - c0);
       rows[row].wall.push_back(wall_s() - w0);
       rows[row].hits = ao.hits;
+      if (stride > 1 && ao.skipped != 0) {
+        std::fprintf(stderr, "bench_occlusion_loop: --stride: %zu points skipped: not the traced vertices\n", ao.skipped);
+        return 1;
+      }
       for (std::size_t i = 0; i < rays.vertex.size(); ++i)  // open = (N - hits)/N exactly: invert
-        ours[i] = samples - std::uint32_t(std::lround(double(ao.open_fraction[rays.vertex[i]]) * samples));
+        ours[i] = samples - std::uint32_t(std::lround(double(ao.open_fraction[stride == 1 ? rays.vertex[i] : i]) * samples));
       ++row;
     }
     for (std::size_t s = 0; s < flag_names.size(); ++s)
-      for (const std::string& fo : form_names) {
+      for (const std::string& fo : forms_of(s)) {
         std::fill(hits.begin(), hits.end(), 0u);
         const double c0 = cpu_s(), w0 = wall_s();
         bare_run(scenes[s]->scene, rays, parse_form(fo), hits);
