@@ -49,7 +49,7 @@ struct Totals {
 
 // Traces the rays of points [begin, end): point(i, p_local, n, id) fills point i's query or
 // returns false (skipped: nothing stored), store(i, hits) keeps a traced point's hits. Each TBB
-// range's points go into Embree streams of up to 4096 rays (engine/cosine_rays.h's CosineRayBatch:
+// range's points go into Embree streams of up to 2048 rays (engine/cosine_rays.h's CosineRayBatch:
 // a point's rays depend only on its own seed and axis, so the split changes no answer). Totals are
 // summed per range, then added atomically: integer sums, the same for any split.
 template <class PointFn, class StoreFn>
