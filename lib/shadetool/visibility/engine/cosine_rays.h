@@ -62,7 +62,8 @@ class CosineRayBatch {
         capacity_(std::uint32_t(std::max<std::size_t>(1, std::min<std::size_t>(kBatchRays, capacity_rays)))),
         rays_(new RTCRay[capacity_]) {}
 
-  // Point `slot`'s rays 0 .. samples - 1 about unit axis n from p_local (offset by ray_offset.h).
+  // Point `slot`'s rays 0 .. samples - 1 about unit axis n from p_local (scene frame; offset by
+  // ray_offset.h). n is the same in the world and scene frames: the scale is uniform and positive.
   // done(slot, hits) is called for every point whose rays a full stream completes.
   template <class Done>
   void add(std::size_t slot, const Vec3f& p_local, const Vec3d& n, std::uint32_t seed, std::uint32_t samples,
