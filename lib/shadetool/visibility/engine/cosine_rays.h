@@ -12,8 +12,8 @@
 //   rays and answers as count_cosine_hits point by point (each ray's answer is its own), at a
 //   lower cost: Embree's per-call cost (about 1.4 us) is paid per 2048 rays, not per 64
 //   (bench/visibility/results.md, "Occlusion loop"). 2048 rays = kRaysPerTask, about one TBB
-//   task's rays: a 98 KB buffer per thread, under glibc's mmap threshold, so it costs no fresh
-//   pages per task (with 4096 the command's peak RSS grew by 136 KiB).
+//   task's rays: a 98 KB buffer per thread, under glibc's mmap threshold (on the 1M knot the
+//   command's peak RSS was 100-400 KiB above main's with it, 300-550 KiB with 4096).
 #pragma once
 
 #include <algorithm>
