@@ -2,6 +2,7 @@
 # bench/visibility/run.sh [--quick] [--blender-samples 4,16,64]: builds bench_visibility and
 # make_torus_knot (Release, -DSHADETOOL_BUILD_BENCH=ON), generates a (2,3) torus-knot tube of 1M
 # triangles (--quick: 100k), and writes bench/visibility/results/: ao.md (the table printed),
+# occlusion_loop.md (bench_occlusion_loop, 1 and 2 threads),
 # ao.csv, error_vs_time.png (gnuplot-nox, a bench dependency already), memory.md (peak RSS of
 # `shadetool occlusion` on the same mesh, /usr/bin/time), and the anchors on the same mesh, points
 # and reference: open3d.md/.csv (python3-open3d, under embree_mask_shim.so, built here with cc) and
@@ -19,7 +20,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSHADETOOL_BUILD_BENCH=ON > /dev/null
-cmake --build "$build" -j2 --target bench_visibility make_torus_knot shadetool_cli > /dev/null
+cmake --build "$build" -j2 --target bench_visibility bench_occlusion_loop make_torus_knot shadetool_cli > /dev/null
 out=$src/bench/visibility/results
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -30,6 +31,18 @@ mkdir -p "$out"
   echo
   "$build/bench/visibility/bench_visibility" "$tmp/knot.ply" --points "$points" --runs "$runs" --full-n 64 --csv "$out/ao.csv" --export "$tmp/points.bin"
 } | tee "$out/ao.md"
+# shadetool's loop against bare Embree loops over the same rays, flags and forms (results.md,
+# "Occlusion loop"); on the 1M knot every 8th vertex (--quick: every vertex of the 100k knot).
+stride=8
+[ "$along" = 1250 ] && stride=1
+{
+  echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  for t in 1 2; do
+    "$build/bench/visibility/bench_occlusion_loop" "$tmp/knot.ply" --runs 7 --threads $t --stride $stride \
+      --flags robust+compact,none,robust --forms single,stream-v,stream-4k,np-4k,packet8,packet16 \
+      --other-forms stream-4k,np-4k,packet16
+  done
+} | tee "$out/occlusion_loop.md"
 # Anchors on the same mesh floats, points and reference (bench_visibility --export).
 here=$src/bench/visibility
 if /usr/bin/python3 -c 'import open3d' 2> /dev/null; then

@@ -28,13 +28,6 @@ namespace {
 
 constexpr std::uint32_t kVertexSalt = 0, kFaceSalt = 1;
 
-// One point: p_local on the surface (scene frame), n unit (directions are the same in both frames:
-// the scale is uniform and positive). Returns the number of rays that hit.
-std::uint32_t count_hits(RTCScene scene, const Vec3f& p_local, const Vec3d& n, std::uint32_t seed,
-                         std::uint32_t samples, float tfar_local) {
-  return visibility_engine::count_cosine_hits(scene, p_local, n, seed, 0, samples, tfar_local);
-}
-
 void check_options(const AmbientOcclusionOptions& o) { check_occlusion_options(o, "ambient occlusion"); }
 
 // Unit n from a stored normal, or false when it has zero or non-finite length.
@@ -54,8 +47,10 @@ struct Totals {
   std::uint64_t hits = 0, skipped = 0;
 };
 
-// Runs count_hits over points [begin, end): point(i, p_local, n, id) fills point i's query or
-// returns false (skipped: nothing stored), store(i, hits) keeps a traced point's hits. Totals are
+// Traces the rays of points [begin, end): point(i, p_local, n, id) fills point i's query or
+// returns false (skipped: nothing stored), store(i, hits) keeps a traced point's hits. Each TBB
+// range's points go into Embree streams of up to 2048 rays (engine/cosine_rays.h's CosineRayBatch:
+// a point's rays depend only on its own seed and axis, so the split changes no answer). Totals are
 // summed per range, then added atomically: integer sums, the same for any split.
 template <class PointFn, class StoreFn>
 Totals trace(const VisibilityScene& scene, std::size_t begin, std::size_t end, std::uint32_t salt,
@@ -68,6 +63,11 @@ Totals trace(const VisibilityScene& scene, std::size_t begin, std::size_t end, s
   RTCScene rtc = scene.impl().scene;
   visibility_engine::parallel_point_ranges(end - begin, options.samples, [&](std::size_t b, std::size_t e) {
     std::uint64_t range_hits = 0, range_skipped = 0;
+    visibility_engine::CosineRayBatch batch(rtc, tfar, (e - b) * std::size_t(options.samples));
+    const auto done = [&](std::size_t i, std::uint32_t hits) {
+      range_hits += hits;
+      store(i, hits);
+    };
     for (std::size_t i = begin + b; i < begin + e; ++i) {
       Vec3f p;
       Vec3d n;
@@ -76,10 +76,9 @@ Totals trace(const VisibilityScene& scene, std::size_t begin, std::size_t end, s
         ++range_skipped;
         continue;
       }
-      const std::uint32_t hits = count_hits(rtc, p, n, visibility::point_seed(id, salt_seed), options.samples, tfar);
-      range_hits += hits;
-      store(i, hits);
+      batch.add(i, p, n, visibility::point_seed(id, salt_seed), options.samples, done);
     }
+    batch.finish(done);  // every point of the range is stored: the end of one block of work
     __atomic_add_fetch(&total_hits, range_hits, __ATOMIC_RELAXED);
     __atomic_add_fetch(&total_skipped, range_skipped, __ATOMIC_RELAXED);
     report_advance(options.progress, e - b);

@@ -33,7 +33,7 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool::visibility {
 
-inline std::uint32_t reverse_bits(std::uint32_t x) {
+constexpr std::uint32_t reverse_bits(std::uint32_t x) {
   x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
   x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
@@ -42,7 +42,7 @@ inline std::uint32_t reverse_bits(std::uint32_t x) {
 }
 
 // Burley 2020, listing 3 (Laine & Karras 2011 with Burley's constants).
-inline std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
+constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
   x += seed;
   x ^= x * 0x6c50b47cu;
   x ^= x * 0xb82f1e52u;
@@ -56,7 +56,7 @@ inline std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed
   return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
 }
 
-inline std::uint32_t sobol_dimension_1(std::uint32_t i) {
+constexpr std::uint32_t sobol_dimension_1(std::uint32_t i) {
   std::uint32_t r = 0;
   for (std::uint32_t v = 1u << 31; i != 0; i >>= 1, v ^= v >> 1)
     if (i & 1u) r ^= v;
