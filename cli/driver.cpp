@@ -29,6 +29,7 @@
 #include <shadetool/io/file_bytes.h>
 #include <shadetool/gltf/gltf_document.h>
 #include <shadetool/gltf/gltf_scene.h>
+#include <shadetool/gltf/gltf_tangents.h>
 #include <shadetool/files/format_table.h>
 #include <shadetool/io/image_io.h>
 #include <shadetool/files/mesh_files.h>
@@ -548,7 +549,9 @@ void write_gltf_output(const IoOptions& io, OutputKind kind, const shadetool::Gl
   Format format = io.format.empty() ? Format::Auto : shadetool::parse_format_name(io.format, "--format");
   format = shadetool::output_format(output, format);
   if (format != Format::Gltf) {
-    const shadetool::Mesh world = shadetool::gltf_world_mesh(doc, result.notes);
+    shadetool::Mesh world = shadetool::gltf_world_mesh(doc, result.notes);
+    const std::string tangents = shadetool::gltf_world_tangents(doc, world, format == Format::Ply);
+    if (!tangents.empty()) result.notes.push_back(tangents);
     result.notes.push_back("glTF materials, textures and the scene graph not written (the mesh is in world space)");
     return write_output(io, kind, world, output, result);
   }

@@ -559,5 +559,33 @@ red=[struct.unpack_from("<"+fmt,b,at+i*stride)[0]/scale for i in range(a["count"
 assert red[4]==0, red
 assert all(red[i]>0.5 for i in (0,2,6,8)), red' "$tmp/roof_lit.glb"
 
+# A glTF with tangents written to another format (the world-space mesh): PLY gets the merged mesh's
+# MikkTSpace frames as tx ty tz tw (they were dropped without a note, though "TANGENT added" was
+# said); a format without tangents says it drops them. Checked here: the properties exist, each
+# tangent is unit, orthogonal to its vertex normal, w = +-1.
+rm -f "$tmp/tan.ply" "$tmp/tan.obj"
+"$bin" normals "$src/data/scene.gltf" --tangents -o "$tmp/tan.ply" --ascii 2> "$tmp/err.txt"
+check "glTF --tangents to PLY: exit 0" test $? -eq 0
+check "glTF --tangents to PLY: a note says they are written" grep -q "TANGENT: MikkTSpace frames of the world-space mesh written" "$tmp/err.txt"
+check "glTF --tangents to PLY: tx ty tz tw unit, orthogonal to the normal, w = +-1" "$py" -c '
+import sys, math
+lines = open(sys.argv[1]).read().split("\n")
+end = lines.index("end_header"); props = []; nv = 0
+for l in lines[:end]:
+    w = l.split()
+    if w[:2] == ["element", "vertex"]: nv = int(w[2]); cur = True
+    elif w[:1] == ["element"]: cur = False
+    elif w[:1] == ["property"] and cur: props.append(w[-1])
+ix = {p: i for i, p in enumerate(props)}
+assert all(k in ix for k in ("tx", "ty", "tz", "tw", "nx", "ny", "nz")), props
+for l in lines[end + 1:end + 1 + nv]:
+    v = [float(x) for x in l.split()]
+    t = [v[ix[k]] for k in ("tx", "ty", "tz")]; n = [v[ix[k]] for k in ("nx", "ny", "nz")]
+    assert abs(math.sqrt(sum(x * x for x in t)) - 1) < 1e-5, t
+    assert abs(sum(a * b for a, b in zip(t, n))) < 1e-4, (t, n)
+    assert v[ix["tw"]] in (1.0, -1.0), v[ix["tw"]]' "$tmp/tan.ply"
+"$bin" normals "$src/data/scene.gltf" --tangents -o "$tmp/tan.obj" 2> "$tmp/err.txt"
+check "glTF --tangents to OBJ: a note says TANGENT is not written" grep -q "TANGENT not written: the output format cannot hold tangents" "$tmp/err.txt"
+
 echo "gltf_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include <shadetool/core/error.h>
+#include <shadetool/normals/tangent_vertices.h>
 #include <shadetool/normals/tangents.h>
 #include "engine/gltf_accessor.h"
 #include "engine/gltf_source.h"
@@ -64,6 +65,19 @@ std::string gltf_update_tangents(const GltfDocument& doc, GltfPrimitive& p, bool
   p.corner_tangents = std::move(frames.tangents);
   p.drop_tangents = false;
   return had ? "TANGENT recomputed (MikkTSpace) with the new normals" : "TANGENT added (MikkTSpace; " + why + ")";
+}
+
+std::string gltf_world_tangents(const GltfDocument& doc, Mesh& world, bool holds_tangents) {
+  const bool any = std::any_of(doc.primitives.begin(), doc.primitives.end(), [](const GltfPrimitive& p) {
+    return !p.corner_tangents.empty() || !p.tangents.empty();
+  });
+  if (!any) return "";
+  if (!holds_tangents) return "TANGENT not written: the output format cannot hold tangents (write .ply or .glb)";
+  if (!world.has_texcoords()) return "TANGENT not written: the merged mesh has no texture coordinates";
+  const TangentFrames frames = mikktspace_tangents(world);
+  const std::size_t added = store_tangents_per_vertex(world, frames.tangents);
+  return "TANGENT: MikkTSpace frames of the world-space mesh written as vertex properties tx ty tz tw (" +
+         std::to_string(added) + " vertices split where corners' frames differ)";
 }
 
 }  // namespace shadetool

@@ -15,6 +15,15 @@
 //   negated raw w).
 //   Returns a note for the user, without the primitive's path ("" when nothing was needed): recomputed, added, or why not
 //   (no TEXCOORD_0: no tangents; a stale TANGENT is then removed, never written beside new normals).
+// gltf_world_tangents: a document written to another format becomes one world-space mesh
+//   (gltf_world_mesh); when any of its primitives carries tangents (TANGENT as read, or frames a
+//   command computed), `world` gets MikkTSpace frames of its own (computed on the merged, placed
+//   mesh with its texture coordinates as Mesh holds them, v up: the w a PLY reader expects) stored
+//   as per-vertex tx ty tz tw (normals/tangent_vertices.h, vertices split where corners differ)
+//   when `holds_tangents` (PLY); otherwise nothing is stored. Recomputed rather than mapped: the
+//   placement may be no similarity (then mapped tangents are no MikkTSpace frame, see
+//   gltf_transform.h), and merged primitives are one mesh. Returns the note for the user ("" when
+//   no primitive had tangents).
 #pragma once
 
 #include <string>
@@ -28,6 +37,8 @@ namespace shadetool {
 std::vector<double> gltf_texcoords(const GltfDocument& doc, const GltfPrimitive& p, bool& changed);
 
 std::string gltf_update_tangents(const GltfDocument& doc, GltfPrimitive& p, bool add);
+
+std::string gltf_world_tangents(const GltfDocument& doc, Mesh& world, bool holds_tangents);
 
 }  // namespace shadetool
 #pragma GCC visibility pop
