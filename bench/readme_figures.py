@@ -54,10 +54,11 @@ def ratio(x, digits=2):
 def judged(key, area, what, value, goal, source, higher_is_better=True, unit="x", digits=2):
     """A figure with a goal: `goal` is the bound, `value` a float (None: not measured)."""
     if value is None or (isinstance(value, float) and math.isnan(value)):
-        return Figure(key, area, what, "not measured", f"{'>=' if higher_is_better else '<='} {goal}{unit}", "-", source)
+        sep = "" if unit in ("x", "%") else " "
+        return Figure(key, area, what, "not measured", f"{'>=' if higher_is_better else '<='} {goal}{sep}{unit}", "-", source)
     ok = value >= goal if higher_is_better else value <= goal
-    shown = f"{value:.{digits}f}{unit}" if unit == "x" else f"{value:.{digits}f} {unit}"
-    return Figure(key, area, what, shown, f"{'>=' if higher_is_better else '<='} {goal}{'x' if unit == 'x' else ' ' + unit}",
+    sep = "" if unit in ("x", "%") else " "
+    return Figure(key, area, what, f"{value:.{digits}f}{sep}{unit}", f"{'>=' if higher_is_better else '<='} {goal}{sep}{unit}",
                   "met" if ok else "missed", source)
 
 
