@@ -277,7 +277,7 @@ def python(args):
     out = []
     for line in txt.splitlines():
         c = [x.strip() for x in line.strip().strip("|").split("|")]
-        if len(c) == 4 and c[0] == "shadetool (arrays)":
+        if len(c) == 4 and c[0] == "shadetool.vertex_normals(V, F) area (arrays)":
             out.append(judged("python.open3d", "Python", "Open3D `compute_vertex_normals` / `shadetool.vertex_normals` from the same NumPy arrays (1M triangles, conversions included)",
                               float(c[3].rstrip("x")), 2, src))
         m = re.match(r"area: Python \(arrays\) / C\+\+ call = (\d+(?:\.\d+)?)x", line)
