@@ -179,12 +179,17 @@ def render(args):
     if not out:
         raise RuntimeError("bench/render/run.sh printed no table (libosmesa6-dev missing?)")
     png = run(["bash", "bench/render/png_encode.sh", str(max(args.reps, 7))])
+    frame, worst = "", None
     for line in png.splitlines():
-        m = re.match(r"^\| \| 1 \| (\d+(?:\.\d+)?) \| (\d+) \|", line)
-        if m:
-            out.append(judged("render.png_ms", "render", f"PNG encoding of a 1920x1080 frame, default level 1 ({int(m.group(2)):,} bytes; median)",
-                              float(m.group(1)), 20, "bench/render/png_encode.sh", higher_is_better=False, unit="ms", digits=1))
-            break
+        c = [x.strip() for x in line.strip().strip("|").split("|")]
+        if len(c) == 6 and c[0] and not c[1]:
+            frame = c[0]
+        elif len(c) == 6 and c[1] == "shadetool level 1 (default)":
+            if worst is None or float(c[2]) > worst[0]:
+                worst = (float(c[2]), int(c[4]), frame)
+    out.append(judged("render.png_ms", "render", "PNG encoding of a 1920x1080 frame at the default level 1, the slowest of the frames "
+                      f"({worst[2] if worst else '-'}, {worst[1] if worst else 0:,} bytes; median CPU ms)",
+                      worst[0] if worst else None, 20, "bench/render/png_encode.sh", higher_is_better=False, unit="ms", digits=1))
     return out
 
 
