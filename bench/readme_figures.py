@@ -325,7 +325,33 @@ def memory(args):
                    peaks[1] / arrays, 1.25, "bench/io/results.md", higher_is_better=False)]
 
 
-SOURCES = {"core": core, "memory": memory, "lighting": lighting, "render": render, "fit": fit, "tangents": tangents, "repair": repair,
+def crease(args):
+    """bench_crease: corner normals split at 30 degrees against angle-weighted vertex normals on the
+    same mesh, one thread, process CPU (issue 31 goal 3: at most 2x)."""
+    run(["cmake", "--build", args.build_dir, "-j2", "--target", "bench_crease"])
+    exe = os.path.join(args.build_dir, "bench", "normals", "bench_crease")
+    if not os.path.exists(exe):
+        exe = os.path.join(args.build_dir, "bench", "bench_crease")
+    corpus = os.path.join(os.path.dirname(SRC), "shared", "corpus")
+    files = []
+    for root, _, names in os.walk(corpus):
+        files += [os.path.join(root, n) for n in names if n in ("counter.unitsmm.STL", "turbineblade.ply")]
+    cmd = [exe, "--reps", str(max(args.reps, 7)), "--no-reference"]
+    for f in sorted(files):
+        cmd += ["--file", f]
+    txt = run(cmd)
+    out = []
+    for line in txt.splitlines():
+        c = [x.strip() for x in line.strip().strip("|").split("|")]
+        if len(c) == 6 and c[2] == "corner_normals angle, crease 30":
+            out.append(judged(f"crease.{c[0]}", "normals", f"corner normals split at 30 degrees / angle-weighted vertex normals, {c[0]} ({int(c[1]):,} triangles, 1 thread, CPU)",
+                              float(c[5].rstrip("x")), 2, "bench/normals/results/notes.md", higher_is_better=False))
+    if not out:
+        raise RuntimeError("bench_crease printed no rows")
+    return out
+
+
+SOURCES = {"core": core, "memory": memory, "crease": crease, "lighting": lighting, "render": render, "fit": fit, "tangents": tangents, "repair": repair,
            "gltf": gltf, "pipeline": pipeline, "python": python}
 
 
