@@ -5,6 +5,9 @@
 #   bench/run.sh            everything (about 10 minutes on 2 cores once built)
 #   bench/run.sh --quick    a subset in under a minute (10k meshes, fewer runs); results go to
 #                           build-bench/results-quick unless --out is given
+#   bench/run.sh --readme   everything, then the module benchmarks behind the README's figures
+#                           (bench/readme_figures.py: bench/results/readme.tsv), and rewrites the
+#                           README's figure table from them (about 25 minutes on 2 cores once built)
 #   options: --no-install (do not apt-get), --build-dir DIR (default build-bench),
 #            --out DIR (default bench/results), --jobs N (build jobs, default 2)
 #
@@ -16,19 +19,21 @@ set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 src=$(cd "$here/.." && pwd)
-quick=0 install=1 build="$src/build-bench" out="" jobs=2
+quick=0 install=1 build="$src/build-bench" out="" jobs=2 readme=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
+    --readme) readme=1 ;;
     --no-install) install=0 ;;
     --build-dir) build=$2; shift ;;
     --out) out=$2; shift ;;
     --jobs) jobs=$2; shift ;;
-    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench/run.sh: unknown option '$1'" >&2; exit 2 ;;
   esac
   shift
 done
+[ $readme = 0 ] || [ $quick = 0 ] || { echo "bench/run.sh: --readme needs the full run, not --quick" >&2; exit 2; }
 [ -n "$out" ] || { if [ $quick = 1 ]; then out="$build/results-quick"; else out="$here/results"; fi; }
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
@@ -242,3 +247,10 @@ echo "wall seconds: $(( $(date +%s) - started ))" >>"$out/machine.txt"
 log "report"
 python3 "$here/report.py" "$out"
 log "done in $(( $(date +%s) - started )) s: $out/results.md"
+
+# ---- 7. the README's figures --------------------------------------------------------------------
+if [ $readme = 1 ]; then
+  python3 "$here/readme_figures.py" collect --results "$out" --build-dir "$build"
+  python3 "$here/readme_figures.py" readme --results "$out"
+  python3 "$here/readme_figures.py" check --results "$out"
+fi

@@ -69,8 +69,10 @@ def timed(fn):
 
 def build_cpp(build, out):
     src = HERE / "cpp_vertex_normals.cpp"
-    cmd = ["c++", "-O3", "-DNDEBUG", "-std=c++17", f"-I{build}/include", str(src), f"{build}/libshadetool.a",
-           "-ltbb", "-lembree3", "-lpng", "-lfmt", "-lpthread", "-o", str(out)]
+    # The headers are the source tree's lib/ (include paths are real paths) plus the build's
+    # generated ones; the static library's own dependencies are its pkg-config Libs.private.
+    cmd = ["c++", "-O3", "-DNDEBUG", "-std=c++17", f"-I{SOURCE}/lib", f"-I{build}/generated", str(src),
+           f"{build}/libshadetool.a", "-ltbb", "-lembree3", "-lpng", "-ldraco", "-lmeshoptimizer", "-lpthread", "-o", str(out)]
     subprocess.run(cmd, check=True)
 
 
