@@ -7,7 +7,7 @@
 #                           build-bench/results-quick unless --out is given
 #   bench/run.sh --readme   everything, then the module benchmarks behind the README's figures
 #                           (bench/readme_figures.py: bench/results/readme.tsv), and rewrites the
-#                           README's figure table from them (about 25 minutes on 2 cores once built)
+#                           README's figure table from them (about 8 minutes on 2 quiet cores once built)
 #   options: --no-install (do not apt-get), --build-dir DIR (default build-bench),
 #            --out DIR (default bench/results), --jobs N (build jobs, default 2)
 #

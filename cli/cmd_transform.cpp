@@ -229,6 +229,16 @@ RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::fu
       }
       if (options.normals == shadetool::NormalsPolicy::Recompute && !had_normals)
         r.notes.push_back("the input has no normals: nothing to recompute");
+      // PLY tangents (vertex properties tx ty tz tw): mapped or removed by transform_mesh.
+      if (std::string_view(rep.tangents) == "mapped") {
+        r.stats["tangents"] = rep.tangents_mapped;
+        r.notes.push_back(similarity ? "tangents tx ty tz tw mapped by A (w flipped under a mirror)"
+                                     : "tangents tx ty tz tw mapped by A (w flipped under a mirror): orthogonal to the new normals, "
+                                       "but the map is not a similarity, so they are not the mapped mesh's MikkTSpace frames "
+                                       "(`shadetool normals --tangents` recomputes them)");
+      } else if (std::string_view(rep.tangents) == "dropped") {
+        r.notes.push_back("tangents tx ty tz tw removed: they belonged to the normals as read (`shadetool normals --tangents` makes new ones)");
+      }
       // glTF: new normals get TANGENT recomputed by MikkTSpace (gltf_tangents.h): recomputed
       // normals, and normals mapped by a map that is not a similarity (gltf_transform.h,
       // mapped_tangents_stay_mikktspace). A similarity keeps the mapped tangents: they are the

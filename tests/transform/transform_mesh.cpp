@@ -364,3 +364,63 @@ TEST_CASE("transform_mesh: a uniform mirror (--scale -2) turns the sphere inside
     CHECK(get3(m.vertex_normals, v) == -ico.exact_normals[v]);
   }
 }
+
+TEST_CASE("transform_mesh: PLY tangents tx ty tz tw follow the map (A t, w flipped by a mirror) or go with recomputed normals",
+          "[transform][tangents]") {
+  // One triangle whose vertices carry the normal n = (0, 0.6, 0.8) and the tangent t = (1, 0, 0)
+  // (orthogonal, as tangent_vertices.h stores them), w = +1. They were kept as read before, stale
+  // after any rotation.
+  auto make = [] {
+    Mesh m;
+    m.add_vertex({0, 0, 0});
+    m.add_vertex({1, 0, 0});
+    m.add_vertex({0, -0.8, 0.6});
+    m.add_face({0, 1, 2});
+    m.vertex_normals = {0, 0.6, 0.8, 0, 0.6, 0.8, 0, 0.6, 0.8};
+    for (const char* n : {"tx", "ty", "tz", "tw"})
+      m.vertex_properties.push_back(MeshProperty{n, "float", std::vector<double>(3, std::string(n) == "tx" || std::string(n) == "tw" ? 1.0 : 0.0)});
+    return m;
+  };
+  auto prop = [](const Mesh& m, const char* n) -> const std::vector<double>* {
+    for (const MeshProperty& p : m.vertex_properties)
+      if (p.name == n) return &p.values;
+    return nullptr;
+  };
+  SECTION("a rotation by 90 degrees about z turns t into (0, 1, 0)") {
+    Mesh m = make();
+    const TransformReport r = transform_mesh(m, rotation_map(90, {0, 0, 1}));
+    CHECK(std::string(r.tangents) == "mapped");
+    CHECK(r.tangents_mapped == 3);
+    CHECK((*prop(m, "tx"))[0] == Approx(0).margin(1e-15));
+    CHECK((*prop(m, "ty"))[0] == Approx(1).epsilon(1e-15));
+    CHECK((*prop(m, "tw"))[0] == 1.0);
+  }
+  SECTION("a mirror x -> -x: t = (-1, 0, 0) and w = -1") {
+    Mesh m = make();
+    transform_mesh(m, scale_map({-1, 1, 1}));
+    CHECK((*prop(m, "tx"))[1] == -1.0);
+    CHECK((*prop(m, "tw"))[1] == -1.0);
+  }
+  SECTION("a shear with non-uniform scale: t' = A t / |A t|, still orthogonal to the mapped normal") {
+    Mesh m = make();
+    Affine3d M;
+    M.A.m = {{{2, 1, 0.5}, {0, 1, 0.3}, {0.2, 0, 3}}};
+    transform_mesh(m, M);
+    const Vec3d at{2, 0, 0.2};  // A (1, 0, 0)
+    const double len = std::sqrt(dot(at, at));
+    const Vec3d t{(*prop(m, "tx"))[2], (*prop(m, "ty"))[2], (*prop(m, "tz"))[2]};
+    CHECK(t.x == Approx(at.x / len).epsilon(1e-14));
+    CHECK(t.z == Approx(at.z / len).epsilon(1e-14));
+    const Vec3d n{m.vertex_normals[6], m.vertex_normals[7], m.vertex_normals[8]};
+    CHECK(std::fabs(dot(t, n)) < 1e-14);
+  }
+  SECTION("recomputed normals: the tangents that belonged to the old ones are removed") {
+    Mesh m = make();
+    TransformOptions o;
+    o.normals = NormalsPolicy::Recompute;
+    const TransformReport r = transform_mesh(m, rotation_map(30, {1, 0, 0}), o);
+    CHECK(std::string(r.tangents) == "dropped");
+    CHECK(prop(m, "tx") == nullptr);
+    CHECK(prop(m, "tw") == nullptr);
+  }
+}

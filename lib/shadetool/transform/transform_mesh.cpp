@@ -1,14 +1,18 @@
 // transform_mesh.cpp: see transform_mesh.h.
 #include <shadetool/transform/transform_mesh.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
 #include <shadetool/core/vocabulary.h>
 #include <shadetool/core/engine/parallel.h>
+#include <shadetool/geometry/scaled_length.h>
 #include <shadetool/transform/recompute_normals.h>
 #include <shadetool/transform/reverse_winding.h>
 #include <shadetool/transform/transform_normals.h>
@@ -74,6 +78,53 @@ std::string singular_map_message(const AffineClass& c) {
          "): normals have no reliable transform; drop or recompute them (--normals drop | --normals recompute)";
 }
 
+namespace {
+
+// Vertex properties tx ty tz tw (transform_mesh.h): mapped by A with w flipped under a mirror, or
+// removed when they no longer belong to the normals.
+void transform_tangent_properties(Mesh& mesh, const Affine3d& M, const AffineClass& c, NormalsPolicy policy,
+                                  TransformReport& report) {
+  auto find = [&](const char* n) {
+    for (std::size_t i = 0; i < mesh.vertex_properties.size(); ++i)
+      if (mesh.vertex_properties[i].name == n) return static_cast<std::ptrdiff_t>(i);
+    return std::ptrdiff_t(-1);
+  };
+  const std::ptrdiff_t ix = find("tx"), iy = find("ty"), iz = find("tz"), iw = find("tw");
+  if (ix < 0 || iy < 0 || iz < 0) return;
+  if (c.path == TransformPath::Identity || c.path == TransformPath::Translation) {
+    report.tangents = "untouched";
+    return;
+  }
+  if (c.path == TransformPath::Singular || policy != NormalsPolicy::Transform) {
+    auto& props = mesh.vertex_properties;
+    props.erase(std::remove_if(props.begin(), props.end(),
+                               [](const MeshProperty& p) { return p.name == "tx" || p.name == "ty" || p.name == "tz" || p.name == "tw"; }),
+                props.end());
+    report.tangents = "dropped";
+    return;
+  }
+  std::vector<double>& tx = mesh.vertex_properties[std::size_t(ix)].values;
+  std::vector<double>& ty = mesh.vertex_properties[std::size_t(iy)].values;
+  std::vector<double>& tz = mesh.vertex_properties[std::size_t(iz)].values;
+  const std::size_t n = std::min({tx.size(), ty.size(), tz.size()});
+  for (std::size_t v = 0; v < n; ++v) {
+    const Vec3d t{tx[v], ty[v], tz[v]};
+    if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) || (t.x == 0 && t.y == 0 && t.z == 0)) continue;
+    const Vec3d a = M.A * t;
+    double o[3];
+    if (!normalise_checked(a.x, a.y, a.z, o)) continue;  // geometry/scaled_length.h: A t = 0 or not finite
+    tx[v] = o[0];
+    ty[v] = o[1];
+    tz[v] = o[2];
+    ++report.tangents_mapped;
+  }
+  if (iw >= 0 && c.mirror)
+    for (double& w : mesh.vertex_properties[std::size_t(iw)].values) w = -w;
+  report.tangents = "mapped";
+}
+
+}  // namespace
+
 TransformReport transform_mesh(Mesh& mesh, const Affine3d& M, const TransformOptions& options, const std::string& name) {
   TransformReport report;
   report.affine = classify_affine(M);
@@ -127,6 +178,7 @@ TransformReport transform_mesh(Mesh& mesh, const Affine3d& M, const TransformOpt
     report.fallback_normals = recompute_normals(mesh);
     report.normals = "recomputed";
   }
+  transform_tangent_properties(mesh, M, c, options.normals, report);
   return report;
 }
 

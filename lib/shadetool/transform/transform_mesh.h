@@ -24,6 +24,13 @@
 //                  the winding is still reversed when det A < 0)
 // Recompute: after positions and winding, the normals present are recomputed from the new faces
 // (recompute_normals.h). Drop: every normal array is cleared.
+// Tangents held as vertex properties tx ty tz tw (normals/tangent_vertices.h, PLY) follow the map
+// as tangents do: t' = A t, normalised, w' = sign(det A) w (a mirror flips the bitangent). With
+// normals transformed, t' stays orthogonal to n' = sign(det A) cof(A) n, since
+// (A t) . (cof(A) n) = det(A) (t . n) = 0; after a map that is no similarity it is no longer the
+// MikkTSpace frame of the new mesh (the CLI says so). When the normals are recomputed or dropped,
+// or the map is singular, the tangents no longer belong to the normals: they are removed
+// (tangents = "dropped"). A zero or non-finite tangent, or one A sends to zero, is left as read.
 // A zero or non-finite input normal is left exactly as read (and counted), never turned into NaN.
 #pragma once
 
@@ -57,6 +64,9 @@ struct TransformReport {
   std::size_t normals_mapped = 0;     // normal vectors multiplied (vertex + corner pool + face)
   std::size_t normals_left = 0;       // zero or non-finite input normals left as read
   std::size_t fallback_normals = 0;   // Recompute: vertices / corner groups with no valid face
+  const char* tangents = "none";      // vertex properties tx ty tz tw: "none", "untouched",
+                                      // "mapped", "dropped"
+  std::size_t tangents_mapped = 0;
 };
 
 TransformReport transform_mesh(Mesh& mesh, const Affine3d& M, const TransformOptions& options = {},
