@@ -18,26 +18,7 @@ gcheck() { "$py" "$src/tests/gltf/gltf_check.py" "$@"; }
 fx=$tmp/fx
 "$py" "$src/tests/gltf/make_fixtures.py" "$fx" || { echo "FAIL: fixtures"; exit 1; }
 
-# The validator: node + the npm package gltf-validator under the build tree.
-validator_dir=$(dirname "$bin")/gltf-validator-node
-validate=""
-if command -v node > /dev/null; then
-  if [ ! -d "$validator_dir/node_modules/gltf-validator" ] && command -v npm > /dev/null; then
-    npm install --silent --no-audit --no-fund --prefix "$validator_dir" gltf-validator > "$tmp/npm.log" 2>&1 || cat "$tmp/npm.log"
-  fi
-  if [ -d "$validator_dir/node_modules/gltf-validator" ]; then
-    validate="node $src/tests/gltf/validate.js"
-    export NODE_PATH=$validator_dir/node_modules
-  else
-    echo "skipped: Khronos glTF Validator (npm install gltf-validator failed: no registry?)"
-  fi
-else
-  echo "skipped: Khronos glTF Validator (no node: install nodejs and npm)"
-fi
-valid() {  # valid FILE...: no validator error
-  [ -z "$validate" ] && return 0
-  $validate "$@" > "$tmp/validator.txt" || { cat "$tmp/validator.txt"; return 1; }
-}
+source "$src/tests/gltf/validator.sh"  # $validate and valid FILE...
 check "hand-written fixtures are valid glTF" valid "$fx/rich.gltf" "$fx/rich.glb" "$fx/embedded.gltf"
 
 # normals: NORMAL replaced or added, everything else kept, .gltf -> .glb -> .gltf.

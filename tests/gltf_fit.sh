@@ -20,25 +20,7 @@ check() {  # check NAME COMMAND...
 py=/usr/bin/python3; [ -x "$py" ] || py=python3
 cmp() { "$py" "$src/tests/gltf/compare_flat.py" "$@"; }
 
-validator_dir=$(dirname "$bin")/gltf-validator-node
-validate=""
-if command -v node > /dev/null; then
-  if [ ! -d "$validator_dir/node_modules/gltf-validator" ] && command -v npm > /dev/null; then
-    npm install --silent --no-audit --no-fund --prefix "$validator_dir" gltf-validator > "$tmp/npm.log" 2>&1 || cat "$tmp/npm.log"
-  fi
-  if [ -d "$validator_dir/node_modules/gltf-validator" ]; then
-    validate="node $src/tests/gltf/validate.js"
-    export NODE_PATH=$validator_dir/node_modules
-  else
-    echo "skipped: Khronos glTF Validator (npm install gltf-validator failed: no registry?)"
-  fi
-else
-  echo "skipped: Khronos glTF Validator (no node: install nodejs and npm)"
-fi
-valid() {  # valid FILE...: no validator error
-  [ -z "$validate" ] && return 0
-  $validate "$@" > "$tmp/validator.txt" || { cat "$tmp/validator.txt"; return 1; }
-}
+source "$src/tests/gltf/validator.sh"  # $validate and valid FILE...
 
 # Three primitives (two in one mesh), every one with NORMAL, placed by rotated, scaled, translated
 # nodes; a directional and a point light (KHR_lights_punctual) and the same lights as a scene file.

@@ -6,8 +6,6 @@
 // larger than the small-fan path, smoothing groups, float precision, tiny and huge scales.
 #include <catch2/catch.hpp>
 
-#include <dirent.h>
-#include <sys/stat.h>
 
 #include <cmath>
 #include <cstring>
@@ -25,6 +23,7 @@
 #include <shadetool/normals/face_normals.h>
 #include "normals_test_util.h"
 #include "support/corner_normals_reference.h"
+#include "support/mesh_file_list.h"
 
 using namespace shadetool;
 using namespace shadetool::testing;
@@ -65,35 +64,7 @@ void check_face_normals(const Mesh& m, const std::string& what) {
 
 // Every mesh file under data/ and the corpus (/work/shared/corpus beside the tree, as tangents.cpp).
 std::vector<std::string> mesh_files() {
-  std::vector<std::string> out;
-  const std::string src = SHADETOOL_SOURCE_DIR;
-  std::vector<std::string> roots = {src + "/data"};
-  for (const std::string& corpus : {src + "/../shared/corpus", src + "/../../shared/corpus"}) {
-    struct stat st;
-    if (::stat(corpus.c_str(), &st) == 0) { roots.push_back(corpus); break; }
-  }
-  while (!roots.empty()) {
-    const std::string dir = roots.back();
-    roots.pop_back();
-    DIR* d = ::opendir(dir.c_str());
-    if (!d) continue;
-    while (dirent* e = ::readdir(d)) {
-      const std::string name = e->d_name;
-      if (name == "." || name == "..") continue;
-      const std::string path = dir + "/" + name;
-      struct stat st;
-      if (::stat(path.c_str(), &st) != 0) continue;
-      if (S_ISDIR(st.st_mode)) { roots.push_back(path); continue; }
-      std::string lower = name;
-      for (char& ch : lower) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-      for (const char* ext : {".obj", ".ply", ".glb", ".gltf", ".off", ".stl"}) {
-        const std::size_t n = std::strlen(ext);
-        if (lower.size() > n && lower.compare(lower.size() - n, n, ext) == 0) out.push_back(path);
-      }
-    }
-    ::closedir(d);
-  }
-  return out;
+  return shadetool::testing::data_and_corpus_mesh_files({".obj", ".ply", ".glb", ".gltf", ".off", ".stl"});
 }
 
 // A random height field: an n x n grid of points with random heights (angles between neighbouring

@@ -7,10 +7,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <dirent.h>
 #include <fstream>
 #include <string>
-#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
@@ -19,6 +17,7 @@
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/tangents.h>
 #include <shadetool/normals/update_mesh_normals.h>
+#include "support/mesh_file_list.h"
 #include "support/mikktspace_reference.h"
 #include "support/run_process.h"
 
@@ -171,32 +170,7 @@ Mesh fan_triangles(const Mesh& m) {
 }
 
 std::vector<std::string> textured_meshes() {
-  std::vector<std::string> out;
-  const std::string src = SHADETOOL_SOURCE_DIR;
-  // The corpus: beside the source tree in CI, two levels up from a worktree under wt/.
-  std::vector<std::string> roots = {src + "/data"};
-  for (const std::string& corpus : {src + "/../shared/corpus", src + "/../../shared/corpus"}) {
-    struct stat st;
-    if (::stat(corpus.c_str(), &st) == 0) { roots.push_back(corpus); break; }
-  }
-  while (!roots.empty()) {
-    const std::string dir = roots.back();
-    roots.pop_back();
-    DIR* d = ::opendir(dir.c_str());
-    if (!d) continue;
-    while (dirent* e = ::readdir(d)) {
-      const std::string name = e->d_name;
-      if (name == "." || name == "..") continue;
-      const std::string path = dir + "/" + name;
-      struct stat st;
-      if (::stat(path.c_str(), &st) != 0) continue;
-      if (S_ISDIR(st.st_mode)) { roots.push_back(path); continue; }
-      for (const char* ext : {".obj", ".ply", ".glb", ".gltf", ".off"})
-        if (name.size() > 4 && name.compare(name.size() - std::string(ext).size(), std::string::npos, ext) == 0) out.push_back(path);
-    }
-    ::closedir(d);
-  }
-  return out;
+  return shadetool::testing::data_and_corpus_mesh_files({".obj", ".ply", ".glb", ".gltf", ".off"});
 }
 
 }  // namespace
