@@ -43,29 +43,7 @@ check "... nothing on stdout" test ! -s "$tmp/two.out"
 check "... one line" test "$(wc -l < "$tmp/two.err")" -eq 1
 
 # 2. stdout a terminal: a usage error naming -o, --output-dir and --in-place.
-at_terminal() {  # at_terminal COMMAND...: runs it with a terminal as stdout, prints what it wrote
-  if command -v script > /dev/null && script -qec "test -t 1" /dev/null > /dev/null 2>&1; then
-    script -qec "$(printf '%q ' "$@")" /dev/null
-    return
-  fi
-  python3 - "$@" <<'EOF'
-import os, pty, subprocess, sys
-master, slave = os.openpty()
-p = subprocess.Popen(sys.argv[1:], stdout=slave, stderr=slave, stdin=subprocess.DEVNULL)
-os.close(slave)
-out = b""
-while True:
-    try:
-        chunk = os.read(master, 4096)
-    except OSError:
-        break
-    if not chunk:
-        break
-    out += chunk
-sys.stdout.write(out.decode(errors="replace"))
-sys.exit(p.wait())
-EOF
-}
+source "$src/tests/support/at_terminal.sh"  # at_terminal COMMAND...
 if at_terminal test -t 1 > /dev/null 2>&1; then
   msg=$(at_terminal "$bin" normals "$src/data/torus.obj"); code=$?
   check "terminal: exit 2" test "$code" -eq 2

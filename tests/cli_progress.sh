@@ -14,29 +14,7 @@ check() {  # check NAME CONDITION...
   if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $name"; fi
 }
 
-at_terminal() {  # at_terminal COMMAND...: runs it with a terminal as stdout and stderr, prints what it wrote
-  if command -v script > /dev/null && script -qec "test -t 2" /dev/null > /dev/null 2>&1; then
-    script -qec "$(printf '%q ' "$@")" /dev/null
-    return
-  fi
-  python3 - "$@" <<'PY'
-import os, pty, subprocess, sys
-master, slave = os.openpty()
-p = subprocess.Popen(sys.argv[1:], stdout=slave, stderr=slave, stdin=subprocess.DEVNULL)
-os.close(slave)
-out = b""
-while True:
-    try:
-        chunk = os.read(master, 4096)
-    except OSError:
-        break
-    if not chunk:
-        break
-    out += chunk
-sys.stdout.buffer.write(out)
-sys.exit(p.wait())
-PY
-}
+source "$src/tests/support/at_terminal.sh"  # at_terminal COMMAND...
 if ! at_terminal test -t 2 > /dev/null 2>&1; then
   echo "skipped: neither script(1) nor python3's pty gives a terminal here"
   exit 0
