@@ -2,12 +2,36 @@
 #include <shadetool/normals/tangent_vertices.h>
 
 #include <algorithm>
+#include <array>
+#include <iterator>
 #include <cstdint>
 
 #include <shadetool/core/error.h>
 #include <shadetool/normals/tangents.h>
 
 namespace shadetool {
+
+const char* const kTangentPropertyNames[4] = {"tx", "ty", "tz", "tw"};
+
+std::array<MeshProperty*, 4> tangent_properties(Mesh& mesh) {
+  std::array<MeshProperty*, 4> props{};
+  for (std::size_t k = 0; k < 4; ++k)
+    for (MeshProperty& p : mesh.vertex_properties)
+      if (p.name == kTangentPropertyNames[k]) props[k] = &p;
+  return props;
+}
+
+std::size_t remove_tangent_properties(Mesh& mesh) {
+  auto& props = mesh.vertex_properties;
+  const std::size_t before = props.size();
+  props.erase(std::remove_if(props.begin(), props.end(),
+                             [](const MeshProperty& p) {
+                               return std::any_of(std::begin(kTangentPropertyNames), std::end(kTangentPropertyNames),
+                                                  [&](const char* n) { return p.name == n; });
+                             }),
+              props.end());
+  return before - props.size();
+}
 
 std::size_t store_tangents_per_vertex(Mesh& mesh, const std::vector<double>& tangents) {
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
@@ -52,9 +76,7 @@ std::size_t store_tangents_per_vertex(Mesh& mesh, const std::vector<double>& tan
   mesh.corner_vertex = new_vertex;
 
   const std::size_t V2 = mesh.num_vertices();
-  const char* names[4] = {"tx", "ty", "tz", "tw"};
-  std::vector<MeshProperty*> props;
-  for (const char* name : names) {
+  for (const char* name : kTangentPropertyNames) {
     auto it = std::find_if(mesh.vertex_properties.begin(), mesh.vertex_properties.end(),
                            [&](const MeshProperty& p) { return p.name == name; });
     if (it == mesh.vertex_properties.end()) {
@@ -64,9 +86,7 @@ std::size_t store_tangents_per_vertex(Mesh& mesh, const std::vector<double>& tan
     it->type = "float";
     it->values.assign(V2, 0.0);
   }
-  for (const char* name : names)
-    for (MeshProperty& p : mesh.vertex_properties)
-      if (p.name == name) props.push_back(&p);
+  const std::array<MeshProperty*, 4> props = tangent_properties(mesh);
   for (std::size_t v = 0; v < V2; ++v) {
     double t[4] = {1.0, 0.0, 0.0, 1.0};
     if (frame_corner[v] != ~0u) {

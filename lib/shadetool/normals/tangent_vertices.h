@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
@@ -23,6 +24,13 @@
 namespace shadetool {
 
 std::size_t store_tangents_per_vertex(Mesh& mesh, const std::vector<double>& tangents);
+
+// The four properties' names, in order: tx, ty, tz, tw (the one place they are spelled).
+extern const char* const kTangentPropertyNames[4];
+// The mesh's tangent properties in that order, null where one is absent (transform maps them).
+std::array<MeshProperty*, 4> tangent_properties(Mesh& mesh);
+// Removes every tangent property (their frames no longer belong to the normals); returns how many.
+std::size_t remove_tangent_properties(Mesh& mesh);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

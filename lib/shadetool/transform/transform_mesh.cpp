@@ -2,6 +2,7 @@
 #include <shadetool/transform/transform_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <shadetool/core/vocabulary.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/geometry/scaled_length.h>
+#include <shadetool/normals/tangent_vertices.h>
 #include <shadetool/transform/recompute_normals.h>
 #include <shadetool/transform/reverse_winding.h>
 #include <shadetool/transform/transform_normals.h>
@@ -84,28 +86,20 @@ namespace {
 // removed when they no longer belong to the normals.
 void transform_tangent_properties(Mesh& mesh, const Affine3d& M, const AffineClass& c, NormalsPolicy policy,
                                   TransformReport& report) {
-  auto find = [&](const char* n) {
-    for (std::size_t i = 0; i < mesh.vertex_properties.size(); ++i)
-      if (mesh.vertex_properties[i].name == n) return static_cast<std::ptrdiff_t>(i);
-    return std::ptrdiff_t(-1);
-  };
-  const std::ptrdiff_t ix = find("tx"), iy = find("ty"), iz = find("tz"), iw = find("tw");
-  if (ix < 0 || iy < 0 || iz < 0) return;
+  const std::array<MeshProperty*, 4> t4 = tangent_properties(mesh);  // tx ty tz tw, null where absent
+  if (!t4[0] || !t4[1] || !t4[2]) return;
   if (c.path == TransformPath::Identity || c.path == TransformPath::Translation) {
     report.tangents = "untouched";
     return;
   }
   if (c.path == TransformPath::Singular || policy != NormalsPolicy::Transform) {
-    auto& props = mesh.vertex_properties;
-    props.erase(std::remove_if(props.begin(), props.end(),
-                               [](const MeshProperty& p) { return p.name == "tx" || p.name == "ty" || p.name == "tz" || p.name == "tw"; }),
-                props.end());
+    remove_tangent_properties(mesh);
     report.tangents = "dropped";
     return;
   }
-  std::vector<double>& tx = mesh.vertex_properties[std::size_t(ix)].values;
-  std::vector<double>& ty = mesh.vertex_properties[std::size_t(iy)].values;
-  std::vector<double>& tz = mesh.vertex_properties[std::size_t(iz)].values;
+  std::vector<double>& tx = t4[0]->values;
+  std::vector<double>& ty = t4[1]->values;
+  std::vector<double>& tz = t4[2]->values;
   const std::size_t n = std::min({tx.size(), ty.size(), tz.size()});
   for (std::size_t v = 0; v < n; ++v) {
     const Vec3d t{tx[v], ty[v], tz[v]};
@@ -118,8 +112,8 @@ void transform_tangent_properties(Mesh& mesh, const Affine3d& M, const AffineCla
     tz[v] = o[2];
     ++report.tangents_mapped;
   }
-  if (iw >= 0 && c.mirror)
-    for (double& w : mesh.vertex_properties[std::size_t(iw)].values) w = -w;
+  if (t4[3] && c.mirror)
+    for (double& w : t4[3]->values) w = -w;
   report.tangents = "mapped";
 }
 
