@@ -513,7 +513,6 @@ FIGURE = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?:\s*[-–]\s*\d+(?:\.\d+)?)?x(?![
 def check(args):
     problems = []
     head, rows = load(args.results)
-    by_key = {r["key"]: r for r in rows}
     text = open(args.readme).read().splitlines()
     if BEGIN not in text or END not in text:
         problems.append(f"{args.readme}: no readme-figures block")
@@ -541,7 +540,6 @@ def check(args):
         for m in FIGURE.finditer(line):
             problems.append(f"{args.readme}:{n}: performance figure '{m.group(0)}' outside the generated block: "
                             "no run regenerates it (move it into bench/readme_figures.py, or to a bench/*/results.md)")
-    del by_key
     for p in problems:
         print(p)
     print(f"readme figures: {len(rows)} in readme.tsv ({head.get('date', '?')}), {len(problems)} problems")
