@@ -11,7 +11,10 @@
 #include <shadetool/normals/corner_normals.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
+#include <shadetool/repair/consistent_winding.h>
 #include <shadetool/repair/degenerate_faces.h>
+#include <shadetool/repair/signed_volume.h>
+#include <shadetool/core/edge_adjacency.h>
 
 using namespace shadetool;
 
@@ -115,6 +118,20 @@ TEST_CASE("degenerate rule: info, repair and normals agree face for face on sliv
     const DegenerateFaces repaired = degenerate_faces(m);
     CHECK(repaired.count() == rule);
     for (std::size_t f = 0; f < m.num_faces(); ++f) CHECK((repaired.kind[f] != DegenerateKind::None) == bool(degenerate[f]));
+    // repair's volume pass classifies the faces it sums (triangles by the sufficient test
+    // triangle_surely_valid, then the rule), kind for kind as the rule does.
+    {
+      EdgeAdjacencyOptions left_out;
+      left_out.skip_unwound_faces = true;
+      const ConsistentWinding winding = consistent_winding(m, edge_adjacency(m, left_out), left_out);
+      DegenerateFaces by_volumes;
+      component_signed_volumes(m, winding, &by_volumes);
+      REQUIRE(by_volumes.kind.size() == m.num_faces());
+      std::size_t differ = 0;
+      for (std::size_t f = 0; f < m.num_faces(); ++f) differ += by_volumes.kind[f] != face_degenerate_kind(m, f);
+      CHECK(differ == 0);
+      CHECK(by_volumes.count() == rule);
+    }
 
     for (Precision precision : {Precision::Double, Precision::Float}) {
       const std::vector<double> fn = face_normals(m, precision);
@@ -146,4 +163,27 @@ TEST_CASE("degenerate rule: info, repair and normals agree face for face on sliv
       }
     }
   }
+}
+
+TEST_CASE("degenerate rule: the sufficient test triangle_surely_valid never passes a face the rule calls degenerate",
+          "[geometry][degenerate]") {
+  // Slivers at the threshold, every first corner (the test uses the edges from corner 0, the rule
+  // the two shortest): wherever the sufficient test says valid, the rule must say None. It must
+  // also pass most well-shaped faces, or it saves nothing.
+  const Mesh m = sliver_mesh(false, 11);
+  std::size_t passed = 0, wrong = 0, regular_passed = 0;
+  for (std::size_t f = 0; f < m.num_faces(); ++f) {
+    const std::uint32_t* v = m.corner_vertex.data() + m.face_start[f];
+    for (int first = 0; first < 3; ++first) {
+      const Vec3d p0 = m.position(v[first]), p1 = m.position(v[(first + 1) % 3]), p2 = m.position(v[(first + 2) % 3]);
+      const Vec3d e0 = p1 - p0, e2 = p2 - p0;
+      if (!triangle_surely_valid(cross(e0, e2), e0, e2)) continue;
+      ++passed;
+      regular_passed += f % 2 == 1;  // odd faces are the well-shaped neighbours
+      wrong += face_degenerate_kind(m, f) != DegenerateKind::None;
+    }
+  }
+  CHECK(wrong == 0);
+  CHECK(regular_passed == 3 * m.num_faces() / 2);
+  CHECK(passed > regular_passed);  // some slivers above the threshold pass too
 }

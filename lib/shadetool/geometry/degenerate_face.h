@@ -28,6 +28,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
@@ -53,21 +54,31 @@ SHADETOOL_INLINE bool triangle_zero_area_by_squares(double nn, double la, double
   return true;
 }
 
-// The same from a triangle's corner positions, for a caller that has them loaded: true and `kind`
-// (None or ZeroArea) when the squares are in range; false otherwise (NaN, a zero edge, a repeated
-// index included): then call face_degenerate_kind.
-SHADETOOL_INLINE bool triangle_kind_by_squares(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, DegenerateKind& kind) {
-  const Vec3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
-  const double l0 = dot(e0, e0), l1 = dot(e1, e1), l2 = dot(e2, e2);
-  const int k = apex_corner(l0, l1, l2);
-  // two shortest edges, as triangle_area_vector: e0 longest -> e1 x e2; e1 longest -> e2 x e0; else e0 x e1
-  const Vec3d a = k == 2 ? e1 : (k == 0 ? e2 : e0), b = k == 2 ? e2 : (k == 0 ? e0 : e1);
-  const double la = k == 2 ? l1 : (k == 0 ? l2 : l0), lb = k == 2 ? l2 : (k == 0 ? l0 : l1);
-  const Vec3d N = cross(a, b);
-  bool zero_area = false;
-  if (!triangle_zero_area_by_squares(dot(N, N), la, lb, zero_area)) return false;
-  kind = zero_area ? DegenerateKind::ZeroArea : DegenerateKind::None;
-  return true;
+// A sufficient test that a triangle is not degenerate, for a loop that has computed
+// N0 = e0 x e2 with e0 = p1 - p0, e2 = p2 - p0 anyway (the area-weighted normals kernel, repair's
+// volume pass): true when N0 . N0 > (96 eps)^2 |e0|^2 |e2|^2 with |e0|^2 |e2|^2 in [1e-250, 1e249]
+// (then N0 . N0 <= |e0|^2 |e2|^2 is in range too). True implies the rule's verdict None: N0 and the
+// rule's N are both within 5 eps |e0| |e2| of the exact area vector (rounded edges, two products
+// and a difference per component, no over/underflow in that range) and the rule's |a| |b| <=
+// |e0| |e2| (the two shortest edges have the smallest product), so |N| > (96 - 10) eps |e0| |e2| >
+// 64 eps |a| |b| with room for the rule's own rounding of its lengths. False: ask the rule
+// (face_degenerate_kind or triangle_degenerate_kind; near-degenerate faces, NaN, a repeated index).
+// Evaluated as: |e0|^2 |e2|^2 = nn + d^2 with d = e0 . e2 (Lagrange's identity), so the test reads
+// nn > K' d^2 with K' = (96 eps)^2 / (1 - (96 eps)^2): one dot product instead of two squared
+// lengths and their product; q = nn + d^2 in [1e-250, 1e249] as one unsigned compare of the bit
+// patterns (monotonic for q >= 0; NaN lies above). Two dot products and no branch that
+// mispredicts, where the rule itself picks the two shortest edges.
+constexpr double kSurelyValid2 = (96 * 2.220446049250313e-16) * (96 * 2.220446049250313e-16);
+constexpr double kSurelyValidLagrange = kSurelyValid2 / (1 - kSurelyValid2);
+// Bit patterns of 1e-250 and 1e249, and the span between them.
+constexpr std::uint64_t kSurelyValidQFrom = 0x0c06e93f5da2824cull, kSurelyValidQTo = 0x73a1e0b622c774d0ull;
+constexpr std::uint64_t kSurelyValidQSpan = kSurelyValidQTo - kSurelyValidQFrom;
+
+SHADETOOL_INLINE bool triangle_surely_valid(const Vec3d& N0, const Vec3d& e0, const Vec3d& e2) {
+  const double nn = dot(N0, N0), d = dot(e0, e2), d2 = d * d, q = nn + d2;
+  std::uint64_t q_bits;
+  std::memcpy(&q_bits, &q, sizeof q);
+  return (nn > kSurelyValidLagrange * d2) & (q_bits - kSurelyValidQFrom < kSurelyValidQSpan);
 }
 
 // Kind of triangle (v0, v1, v2) from its positions only: None, ZeroArea or NonFinite (a repeated

@@ -79,8 +79,9 @@ ComponentVolumes component_signed_volumes(const Mesh& mesh, const ConsistentWind
       if (triangles) {
         const Vec3d p0 = position(cv[b]), p1 = position(cv[b + 1]), p2 = position(cv[b + 2]);
         const Vec3d e1 = p1 - p0, e2 = p2 - p0, n = cross(e1, e2);
-        if (kind && !triangle_kind_by_squares(p0, p1, p2, kind[f]))
-          kind[f] = degenerate_kind(mesh, f);
+        // The rule's sufficient test on this cross product (no choice of the shortest edges,
+        // whose branches mispredict on randomly flipped faces); the rule itself only when it fails.
+        if (kind) kind[f] = triangle_surely_valid(n, e1, e2) ? DegenerateKind::None : degenerate_kind(mesh, f);
         const Vec3d q0 = p0 - r;
         det_sum = dot(q0, n);  // det(p0 - r, p1 - r, p2 - r)
         abs_sum = std::abs(det_sum);

@@ -66,14 +66,10 @@ namespace shadetool::normals_detail {
 //   triangle_scalar, polygon_contributions  call the rule (triangle_degenerate_kind,
 //            face_area_kind) for the face.
 //   Area triangles  compute N0 = (p1 - p0) x (p2 - p0) (see below) and take a face as valid when
-//            N0 . N0 > (96 eps)^2 (|e0|^2 |e2|^2) with |e0|^2 |e2|^2 in [1e-250, 1e249] (then
-//            N0 . N0 <= |e0|^2 |e2|^2 is in range too), else ask the rule. That test implies the rule's verdict None:
-//            N0 and the rule's N are both within 5 eps |e0| |e2| of the exact area vector
-//            (rounded edges, two products and a difference per component, no over/underflow in
-//            that range) and the rule's |a| |b| <= |e0| |e2| (the two shortest edges have the
-//            smallest product), so |N| > (96 - 10) eps |e0| |e2| > 64 eps |a| |b| with room for
-//            the rule's own rounding of its lengths. It costs two dot products per triangle and
-//            no branch that mispredicts (the rule itself runs only for near-degenerate faces).
+//            the rule's sufficient test triangle_surely_valid passes (N0 . N0 > (96 eps)^2
+//            |e0|^2 |e2|^2, in range; it implies the rule's verdict None, proof there), else ask
+//            the rule. It costs two dot products per triangle and no branch that mispredicts (the
+//            rule itself runs only for near-degenerate faces).
 
 // Software prefetch, kPrefetchFaces faces ahead, of the positions a triangle loop will read and
 // (when the caller passes its per-vertex sums, `rows`, 3 values per vertex) of the sums it will
@@ -81,13 +77,6 @@ namespace shadetool::normals_detail {
 // bench/normals/results/notes.md, "Timing notes moved from the source"). Only a hint: no effect
 // on results.
 constexpr std::size_t kPrefetchFaces = 64;
-
-// (96 eps)^2: the area kernel's sufficient test for a valid face (see "Degenerate faces" above).
-constexpr double kAreaKernelValid2 = (96 * 2.220446049250313e-16) * (96 * 2.220446049250313e-16);
-constexpr double kAreaKernelValidLagrange = kAreaKernelValid2 / (1 - kAreaKernelValid2);
-// Bit patterns of 1e-250 and 1e249, and the span between them (see the area kernel).
-constexpr std::uint64_t kAreaKernelQFrom = 0x0c06e93f5da2824cull, kAreaKernelQTo = 0x73a1e0b622c774d0ull;
-constexpr std::uint64_t kAreaKernelQSpan = kAreaKernelQTo - kAreaKernelQFrom;
 
 // The caller's per-vertex sums for prefetching: base address and bytes per vertex (none: null).
 struct RowHint {
@@ -232,16 +221,8 @@ inline std::size_t triangle_contributions(const MeshView& mesh, std::size_t f_be
       const Vec3d p0 = load_position(P, v0), p1 = load_position(P, v1), p2 = load_position(P, v2);
       const Vec3d e0 = p1 - p0, e2 = p2 - p0;
       const Vec3d N = cross(e0, e2);
-      // Valid by the sufficient test (see "Degenerate faces" above), else ask the rule (rare).
-      // |e0|^2 |e2|^2 = nn + (e0 . e2)^2 (Lagrange's identity), so the test
-      // nn > (96 eps)^2 |e0|^2 |e2|^2 reads nn > K' d^2 with K' = (96 eps)^2 / (1 - (96 eps)^2):
-      // one dot product instead of two squared lengths and their product. q = nn + d^2 in
-      // [1e-250, 1e249] as one unsigned compare of the bit patterns (monotonic for q >= 0; NaN
-      // lies above).
-      const double nn = dot(N, N), d = dot(e0, e2), d2 = d * d, q = nn + d2;
-      std::uint64_t q_bits;
-      std::memcpy(&q_bits, &q, sizeof q);
-      const bool fast = (nn > kAreaKernelValidLagrange * d2) & (q_bits - kAreaKernelQFrom < kAreaKernelQSpan);
+      // Valid by the sufficient test (geometry/degenerate_face.h), else ask the rule (rare).
+      const bool fast = triangle_surely_valid(N, e0, e2);
       if (__builtin_expect(!fast, 0) && triangle_degenerate_kind(P, v0, v1, v2) != DegenerateKind::None) {
         ++degenerate;
         continue;
