@@ -226,10 +226,20 @@ def tangents(args):
 
 
 def repair(args):
-    txt = run(["bash", "bench/repair/run.sh", "--reps", str(args.reps)])
-    m = re.search(r"repair / read, wall = (\d+(?:\.\d+)?)", txt)
-    return [judged("repair.over_read", "repair", "repair (winding, orientation, normals) / reading the binary PLY, 1 thread (wall)",
-                   float(m.group(1)) if m else None, 3, "bench/repair/results.md", higher_is_better=False)]
+    # Read and repair alternate repetition by repetition in one process (bench_repair). 1 thread:
+    # the goal's case, process CPU time (equal to wall on a free core, steadier under load).
+    # 2 threads: what `shadetool repair` uses on this 2-core machine by default, wall time.
+    env = dict(os.environ, BUILD_DIR=args.build_dir)
+    src = "bench/repair/results.md"
+    what = "repair (winding, orientation, normals) / reading the binary PLY"
+    out = []
+    for threads, key, clock, label in ((1, "repair.over_read", "CPU", "1 thread (process CPU)"),
+                                       (2, "repair.over_read_2t", "wall", "2 threads, the CLI's default here (wall)")):
+        txt = run(["bash", "bench/repair/run.sh", "--reps", str(max(args.reps, 7)), "--threads", str(threads), "--stages", "0"], env=env)
+        m = re.search(r"repair / read, wall = (\d+(?:\.\d+)?)[^\n]*CPU = (\d+(?:\.\d+)?)", txt)
+        value = float(m.group(1 if clock == "wall" else 2)) if m else None
+        out.append(judged(key, "repair", f"{what}, {label}", value, 3, src, higher_is_better=False))
+    return out
 
 
 def gltf(args):

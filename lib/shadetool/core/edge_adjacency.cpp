@@ -22,13 +22,19 @@ namespace {
 
 constexpr std::size_t kParallelFaces = engine::kSerialBelow;
 
-// Whether a face of n corners has fewer than 3 corners or repeats a vertex index (the rule of
-// core/repeated_index.h; triangles, the bulk, inline).
-bool unwound(const std::uint32_t* v, std::uint32_t n) {
-  if (n < 3) return true;
-  if (n == 3) return v[0] == v[1] || v[1] == v[2] || v[0] == v[2];
+// Whether a polygon of n > 3 corners repeats a vertex index (core/repeated_index.h), out of line.
+bool polygon_unwound(const std::uint32_t* v, std::uint32_t n) {
   std::vector<std::uint32_t> scratch;  // allocates only beyond 16 corners
   return has_repeated_index(v, n, scratch);
+}
+
+// Whether a face of n corners has fewer than 3 corners or repeats a vertex index (the rule of
+// core/repeated_index.h). Triangles, the bulk, inline and without branches on the compares (the
+// polygon path's vector kept GCC from inlining it: a call per face in both face passes).
+inline bool unwound(const std::uint32_t* v, std::uint32_t n) {
+  if (n == 3) return (v[0] == v[1]) | (v[1] == v[2]) | (v[0] == v[2]);
+  if (n < 3) return true;
+  return polygon_unwound(v, n);
 }
 
 // The faces whose half-edges are sorted, split into `parts` ranges that the count and scatter
