@@ -22,8 +22,9 @@
 // no square roots, no over- or underflow there: la lb in (1e-250, 1e250)); others use the scaled
 // lengths of core/vec3.h. The normals kernels evaluate that same expression on the same values
 // (normals/engine/triangle_blocks.cpp), or a sufficient test that provably implies it
-// (normals/engine/corner_contributions.h, the area kernel), and call triangle_degenerate_kind
-// for every other face, so they skip exactly the faces this rule calls degenerate.
+// (triangle_surely_valid below: the area kernel of normals/engine/corner_contributions.h and
+// repair's volume pass), and call triangle_degenerate_kind (or face_degenerate_kind) for every
+// other face, so they skip exactly the faces this rule calls degenerate.
 #pragma once
 
 #include <cstddef>
