@@ -218,7 +218,8 @@ std::string mime_for(const std::string& uri, const std::string& given) {
 // normal-or-face, texture coordinate) triple, in order of first use.
 struct Split {
   std::vector<std::uint32_t> source_vertex;  // output vertex -> mesh vertex
-  std::vector<std::uint32_t> corner_output;  // corner -> output vertex
+  std::vector<std::uint32_t> corner_output;  // corner -> output vertex; empty when corners_kept
+  bool corners_kept = false;                 // no split: corner -> mesh.corner_vertex (not copied)
 };
 
 struct CornerKey {
@@ -260,13 +261,13 @@ Split split_vertices(const Mesh& mesh, bool texcoords, const std::vector<std::ui
   const bool per_face = mesh.has_face_normals() || mesh.has_face_colors();
   const bool per_corner = mesh.has_corner_normals();
   const bool per_tangent = !tangent_class.empty();
-  s.corner_output.resize(mesh.num_corners());
   if (!per_face && !per_corner && !texcoords && !per_tangent) {
     s.source_vertex.resize(mesh.num_vertices());
     for (std::size_t v = 0; v < s.source_vertex.size(); ++v) s.source_vertex[v] = std::uint32_t(v);
-    s.corner_output = mesh.corner_vertex;
+    s.corners_kept = true;
     return s;
   }
+  s.corner_output.resize(mesh.num_corners());
   // Split by tangent frames only (the rest is per vertex already): every vertex keeps its index
   // for the first frame its corners use, the vertices split off are appended, so that a primitive
   // whose frames agree at every vertex keeps its vertex order, and the accessors as read stay
@@ -321,9 +322,10 @@ struct PrimitiveWriter {
     const bool corner_tangents = gp.corner_tangents.size() == 4 * mesh.num_corners() && mesh.num_corners() > 0;
     const Split split = split_vertices(mesh, texcoords, corner_tangents ? tangent_classes(mesh, gp.corner_tangents)
                                                                         : std::vector<std::uint32_t>());
+    const std::uint32_t* corner_output = split.corners_kept ? mesh.corner_vertex.data() : split.corner_output.data();
     const bool identity = split.source_vertex.size() == mesh.num_vertices() && !mesh.has_corner_normals() &&
                           !mesh.has_face_normals() && !mesh.has_face_colors() && !texcoords &&
-                          std::equal(split.corner_output.begin(), split.corner_output.end(), mesh.corner_vertex.begin());
+                          (split.corners_kept || std::equal(split.corner_output.begin(), split.corner_output.end(), mesh.corner_vertex.begin()));
     const std::size_t out_vertices = split.source_vertex.size();
     const bool same_vertices = model && mesh.num_vertices() == gp.read_vertices;
     const bool keep_all = identity && same_vertices;  // accessors as read stay valid
@@ -341,7 +343,7 @@ struct PrimitiveWriter {
         std::vector<double> n(3 * out_vertices, 0.0);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
           for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-            const std::size_t o = split.corner_output[c];
+            const std::size_t o = corner_output[c];
             const double* src = mesh.has_face_normals()     ? &mesh.face_normals[3 * f]
                                 : mesh.has_corner_normals() ? &mesh.corner_normals[3 * std::size_t(mesh.corner_normal_index[c])]
                                                             : &mesh.vertex_normals[3 * std::size_t(mesh.corner_vertex[c])];
@@ -367,7 +369,7 @@ struct PrimitiveWriter {
         std::vector<float> col(std::size_t(channels) * out_vertices, 1.0f);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
           for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-            const std::size_t o = split.corner_output[c];
+            const std::size_t o = corner_output[c];
             const float* src = mesh.has_face_colors() ? &mesh.face_colors[std::size_t(channels) * f]
                                                       : &mesh.vertex_colors[std::size_t(channels) * mesh.corner_vertex[c]];
             std::copy(src, src + channels, &col[std::size_t(channels) * o]);
@@ -394,8 +396,8 @@ struct PrimitiveWriter {
           ++missing;
           continue;
         }
-        uv[2 * std::size_t(split.corner_output[c])] = mesh.texcoords[dims * t];
-        uv[2 * std::size_t(split.corner_output[c]) + 1] = 1 - mesh.texcoords[dims * t + 1];
+        uv[2 * std::size_t(corner_output[c])] = mesh.texcoords[dims * t];
+        uv[2 * std::size_t(corner_output[c]) + 1] = 1 - mesh.texcoords[dims * t + 1];
         w_dropped += dims > 2 && mesh.texcoords[dims * t + 2] != 0;
       }
       attrs["TEXCOORD_0"] = add_float_accessor(out, uv, 2, false, true);
@@ -409,7 +411,7 @@ struct PrimitiveWriter {
     if (corner_tangents) {
       std::vector<double> t(4 * out_vertices, 0.0);
       for (std::size_t c = 0; c < mesh.num_corners(); ++c)
-        std::copy(&gp.corner_tangents[4 * c], &gp.corner_tangents[4 * c] + 4, &t[4 * std::size_t(split.corner_output[c])]);
+        std::copy(&gp.corner_tangents[4 * c], &gp.corner_tangents[4 * c] + 4, &t[4 * std::size_t(corner_output[c])]);
       for (std::size_t v = 0; v < out_vertices; ++v)
         if (t[4 * v + 3] == 0.0) { t[4 * v] = 1.0; t[4 * v + 3] = 1.0; }  // a vertex no corner uses: any unit frame
       attrs["TANGENT"] = add_float_accessor(out, t, 4, false, true);
@@ -460,9 +462,9 @@ struct PrimitiveWriter {
       for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
         const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
         for (std::uint32_t c = b + 1; c + 1 < e; ++c) {  // polygons as fans (triangles: one)
-          idx.push_back(split.corner_output[b]);
-          idx.push_back(split.corner_output[c]);
-          idx.push_back(split.corner_output[c + 1]);
+          idx.push_back(corner_output[b]);
+          idx.push_back(corner_output[c]);
+          idx.push_back(corner_output[c + 1]);
         }
       }
       jprim["indices"] = add_index_accessor(out, idx, out_vertices);
