@@ -125,10 +125,10 @@ int add_color_accessor(OutBuffer& out, const std::vector<float>& colors, int cha
 
 // An attribute passed through, its elements gathered through `source_vertex` (output vertex ->
 // input vertex); same component type, type and normalisation as the original accessor.
-int add_gathered_accessor(OutBuffer& out, const tinygltf::Model& model, int index, const std::vector<std::uint32_t>& source_vertex,
+int add_gathered_accessor(OutBuffer& out, const GltfSource& source, int index, const std::vector<std::uint32_t>& source_vertex,
                           const std::string& name) {
-  const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
-  const std::vector<unsigned char> raw = io::gltf::accessor_bytes(model, index, name);
+  const tinygltf::Accessor& a = source.model.accessors[std::size_t(index)];
+  const std::vector<unsigned char> raw = io::gltf::accessor_bytes(source, index, name);
   const std::size_t elem = std::size_t(io::gltf::type_components(a.type)) * std::size_t(io::gltf::component_bytes(a.componentType));
   std::vector<unsigned char> g(source_vertex.size() * elem);
   for (std::size_t i = 0; i < source_vertex.size(); ++i) std::memcpy(&g[i * elem], &raw[source_vertex[i] * elem], elem);
@@ -305,7 +305,8 @@ bool same_vertex_data(const std::vector<double>& a, const std::vector<double>& b
 
 struct PrimitiveWriter {
   OutBuffer& out;
-  const tinygltf::Model* model;  // null for a fresh document
+  const GltfSource* source;       // null for a fresh document
+  const tinygltf::Model* model;  // source's model, or null
   const std::string& name;
   GltfWriteResult& result;
 
@@ -332,13 +333,13 @@ struct PrimitiveWriter {
     if (!identity && out_vertices > mesh.num_vertices()) result.split_vertices += out_vertices - mesh.num_vertices();
 
     // POSITION
-    if (!keep_all || !io::gltf::accessor_equals(*model, source_attribute("POSITION"), mesh.positions, name))
+    if (!keep_all || !io::gltf::accessor_equals(*source, source_attribute("POSITION"), mesh.positions, name))
       attrs["POSITION"] = add_float_accessor(out, gather(mesh.positions, 3, split.source_vertex), 3, true, true);
 
     // NORMAL: per vertex, per corner (pool) or per face, all as vertex normals of the output.
     if (mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals()) {
       const bool unchanged = keep_all && mesh.has_vertex_normals() && source_attribute("NORMAL") >= 0 &&
-                             io::gltf::accessor_equals(*model, source_attribute("NORMAL"), mesh.vertex_normals, name);
+                             io::gltf::accessor_equals(*source, source_attribute("NORMAL"), mesh.vertex_normals, name);
       if (!unchanged) {
         std::vector<double> n(3 * out_vertices, 0.0);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
@@ -364,7 +365,7 @@ struct PrimitiveWriter {
       const int color = source_attribute("COLOR_0");
       const bool unchanged = keep_all && mesh.has_vertex_colors() && color >= 0 &&
                              io::gltf::type_components(model->accessors[std::size_t(color)].type) == mesh.color_channels &&
-                             io::gltf::accessor_equals(*model, color, mesh.vertex_colors, name);
+                             io::gltf::accessor_equals(*source, color, mesh.vertex_colors, name);
       if (!unchanged) {
         std::vector<float> col(std::size_t(channels) * out_vertices, 1.0f);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
@@ -438,7 +439,7 @@ struct PrimitiveWriter {
           attrs.erase(attr);
           continue;
         }
-        attrs[attr] = add_gathered_accessor(out, *model, index, split.source_vertex, name);
+        attrs[attr] = add_gathered_accessor(out, *source, index, split.source_vertex, name);
       }
       write_targets(gp, jprim, prim, split, keep_all, same_vertices, dropped);
     }
@@ -454,7 +455,7 @@ struct PrimitiveWriter {
 
     // Indices: as read while the faces and vertices are; else a new TRIANGLES list.
     const bool faces_same = keep_all && mesh.all_triangles() &&
-                            io::gltf::primitive_corners_equal(*model, src->indices, src->mode, gp.read_vertices,
+                            io::gltf::primitive_corners_equal(*source, src->indices, src->mode, gp.read_vertices,
                                                               mesh.corner_vertex, gp.json_path, name);
     if (!faces_same) {
       std::vector<std::uint32_t> idx;
@@ -499,7 +500,7 @@ struct PrimitiveWriter {
         } else if (decoded && !before->empty()) {
           targets[t].erase(attr);  // the command removed them (normals dropped)
         } else if (!keep_all) {
-          targets[t][attr] = add_gathered_accessor(out, *model, index, split.source_vertex, name);
+          targets[t][attr] = add_gathered_accessor(out, *source, index, split.source_vertex, name);
         }
       }
       // Deltas the command added (NORMAL deltas computed for a target that had none).
@@ -601,7 +602,7 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
   if (model) {
     std::vector<std::size_t> base(model->buffers.size());
     std::size_t total = 28 + (std::size_t(1) << 20);  // GLB headers and room for the JSON in front
-    for (const auto& b : model->buffers) total += b.data.size() + 8;
+    for (std::size_t b = 0; b < model->buffers.size(); ++b) total += src->buffer_bytes(b).size() + 8;
     for (const auto& im : model->images) total += im.image.size() + 4;
     for (const GltfPrimitive& p : doc.primitives)  // room for what a command adds (position, normal, colour, indices)
       total += p.mesh.num_vertices() * 40 + p.mesh.num_corners() * 4 + 64;
@@ -609,7 +610,7 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
     for (std::size_t b = 0; b < model->buffers.size(); ++b) {
       out.align(8);
       base[b] = out.bytes.size();
-      out.bytes.append(reinterpret_cast<const char*>(model->buffers[b].data.data()), model->buffers[b].data.size());
+      out.bytes.append(src->buffer_bytes(b));
     }
     for (json& v : j["bufferViews"]) {
       const std::size_t b = v.value("buffer", 0);
@@ -635,7 +636,7 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
       }
   }
 
-  PrimitiveWriter writer{out, model, name, result};
+  PrimitiveWriter writer{out, src, model, name, result};
   for (const GltfPrimitive& gp : doc.primitives) {
     json& jprim = j["meshes"][gp.mesh_index]["primitives"][gp.primitive_index];
     writer.write(gp, jprim);
