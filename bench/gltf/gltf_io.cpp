@@ -126,6 +126,7 @@ int main(int argc, char** argv) {
   std::printf("| glb read+write, %zu triangles, %.1f MB, %s memory, process CPU time (wall) | %.1f ms (wall %.1f; last rep: read %.1f, write %.1f) | fread+fwrite %.1f ms (wall %.1f) | %.2fx |\n",
               m.num_faces(), bytes / 1e6, warm && std::string(warm) == "1" ? "recycled" : "fresh", oc, ow, read_ms, write_ms,
               fc, fw, oc / fc);
-  std::printf("(%d reps interleaved; wall-time ratio %.2fx; load average %s)\n", reps, ow / fw, load_average().c_str());
+  std::fprintf(stderr, "(%s memory: %d reps each, interleaved; wall-time ratio %.2fx; load average %s)\n",
+               warm && std::string(warm) == "1" ? "recycled" : "fresh", reps, ow / fw, load_average().c_str());
   return 0;
 }
