@@ -253,7 +253,7 @@ def gltf(args):
             continue
         m = re.match(r"(\d+(?:\.\d+)?)x", c[3])
         if c[0].startswith("glb read+write") and "fresh memory" in c[0] and m:
-            out.append(judged("gltf.io_over_fread", "glTF", "glb read + write in process / `fread` + `fwrite` of its bytes (1M triangles, fresh memory)",
+            out.append(judged("gltf.io_over_fread", "glTF", "glb read + write in process / `fread` + `fwrite` of its bytes (1M triangles, fresh memory, process CPU time, alternating reps)",
                               float(m.group(1)), 2, src, higher_is_better=False))
         elif "assimp" in c[0] and m:
             out.append(judged("gltf.assimp", "glTF", "`assimp export -gsn` time / `shadetool normals`, 1M-triangle glb end to end",
@@ -294,7 +294,7 @@ def python(args):
     for line in txt.splitlines():
         c = [x.strip() for x in line.strip().strip("|").split("|")]
         if len(c) == 4 and c[0] == "shadetool.vertex_normals(V, F) area (arrays)":
-            out.append(judged("python.open3d", "Python", "Open3D `compute_vertex_normals` / `shadetool.vertex_normals` from the same NumPy arrays (1M triangles, conversions included)",
+            out.append(judged("python.open3d", "Python", "Open3D `compute_vertex_normals` / `shadetool.vertex_normals` from the same NumPy arrays (1M triangles, area weighting both, conversions included, memory recycled)",
                               float(c[3].rstrip("x")), 2, src))
         m = re.match(r"area: Python \(arrays\) / C\+\+ call = (\d+(?:\.\d+)?)x", line)
         if m:

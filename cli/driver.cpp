@@ -462,8 +462,7 @@ std::unique_ptr<shadetool::GltfDocument> read_gltf_input(const IoOptions& io, co
     if (bytes.empty()) shadetool::fail("stdin", 0, "file is empty");
     doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes, "stdin"));
   } else {
-    const shadetool::io::FileBytes bytes = shadetool::io::read_file_bytes(input);
-    doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(bytes.view(), input));
+    doc = std::make_unique<shadetool::GltfDocument>(shadetool::read_gltf(shadetool::io::read_file_bytes(input), input));
   }
   for (const std::string& n : doc->notes) result.notes.push_back(n);  // compressed geometry decoded
   if (doc->primitives.empty()) {

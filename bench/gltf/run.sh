@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # bench/gltf/run.sh [REPS]: glTF speed, every contender in the same run, medians of REPS runs.
-#  1. bench_gltf_io: read + write of a 1M-triangle .glb in one process vs fread + fwrite of its bytes.
+#  1. bench_gltf_io: read + write of a 1M-triangle .glb in one process vs fread + fwrite of its bytes,
+#     the two alternating rep by rep; the ratio is of process CPU time (wall time printed beside it).
 #  2. End to end, the same file: `shadetool normals` (vertex normals computed, NORMAL added, GLB
 #     written) vs `assimp export -gsn` (assimp-utils: smooth normals, glb2) vs `gltf-transform copy`
 #     (npm @gltf-transform/cli 4.x has no normals command; `copy` is its read + write with no
@@ -16,8 +17,9 @@ cmake -S "$root" -B "$build" -DSHADETOOL_BUILD_BENCH=ON > /dev/null
 cmake --build "$build" -j2 --target bench_gltf_io shadetool_cli > /dev/null
 echo "| measurement | shadetool | reference | ratio |"
 echo "|---|---:|---:|---:|"
-"$build/bench/bench_gltf_io" 708 707 7 "$work"                     # fresh memory, as in one CLI run
-BENCH_GLTF_WARM=1 "$build/bench/bench_gltf_io" 708 707 7 "$work"   # glibc recycling memory between repetitions
+notes=$work/notes.txt
+"$build/bench/bench_gltf_io" 708 707 9 "$work" 2> "$notes"                       # fresh memory, as in one CLI run
+BENCH_GLTF_WARM=1 "$build/bench/bench_gltf_io" 708 707 9 "$work" 2>> "$notes"   # glibc recycling memory between repetitions
 glb=$work/torus_1m.glb
 
 gt_dir=$build/gltf-transform-node
@@ -49,4 +51,6 @@ if [ -x "$gt_dir/node_modules/.bin/gltf-transform" ]; then
 else
   echo "(gltf-transform skipped: npm install @gltf-transform/cli failed)"
 fi
+echo
+cat "$notes"
 rm -rf "$work"

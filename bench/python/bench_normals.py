@@ -19,6 +19,16 @@ noisy), medians and minima over the rounds; conversion included wherever a metho
                           on a Mesh built beforehand; median of 3 calls per round
   C++ view call           shadetool::vertex_normals(MeshView::triangles(V, F), weight) on the same arrays
                           in place (no index check); median of 3 calls per round
+Memory (--memory): glibc's dynamic mmap threshold otherwise decides, from round to round, whether
+a method's big blocks (Open3D allocates about 60 MB per call, we 12 MB) are fresh pages to fault in or
+recycled ones, which made Open3D's time bimodal (about 15 or 37 ms in one run). The policy is fixed
+for the whole process before it starts (the script re-executes itself with glibc's tunables set):
+  recycled (default)  MALLOC_MMAP_THRESHOLD_=32 MiB, MALLOC_TRIM_THRESHOLD_=4 GiB: every block of
+                      these sizes is reused, no page faults for anyone (Open3D at its fastest; a
+                      script calling in a loop)
+  fresh               MALLOC_MMAP_THRESHOLD_=1 MiB: every big block is a fresh mapping (one call
+                      in a fresh process)
+  as-is               glibc's defaults (the bimodal case)
 Checks: Python's and C++'s normals are the same bits; Open3D's (area) agree with ours within 1e-9 deg.
 Goals (issue 20): shadetool >= 2x Open3D; Python within 1.1x of the C++ call.
 """
@@ -61,6 +71,13 @@ def irregular_uv_sphere(n_theta, n_phi, jitter=0.3, seed=1):
     return np.ascontiguousarray(V), np.ascontiguousarray(F)
 
 
+MEMORY_POLICIES = {
+    "recycled": {"MALLOC_MMAP_THRESHOLD_": str(32 << 20), "MALLOC_TRIM_THRESHOLD_": str(4 << 30)},
+    "fresh": {"MALLOC_MMAP_THRESHOLD_": str(1 << 20)},
+    "as-is": {},
+}
+
+
 def timed(fn):
     t0 = time.perf_counter()
     out = fn()
@@ -82,7 +99,14 @@ def main():
     ap.add_argument("--rounds", type=int, default=11)
     ap.add_argument("--theta", type=int, default=500, help="rings (triangles = 2 * theta * phi - 2 * phi)")
     ap.add_argument("--phi", type=int, default=1000)
+    ap.add_argument("--memory", choices=MEMORY_POLICIES, default="recycled",
+                    help="glibc memory policy for the whole run (see the module doc)")
     args = ap.parse_args()
+    policy = MEMORY_POLICIES[args.memory]
+    if any(os.environ.get(k) != v for k, v in policy.items()):  # set before the process starts: re-execute
+        env = {k: v for k, v in os.environ.items() if not k.startswith("MALLOC_")}
+        env.update(policy)
+        os.execve(sys.executable, [sys.executable] + sys.argv, env)
     import open3d as o3d
 
     V, F = irregular_uv_sphere(args.theta, args.phi)
@@ -138,7 +162,7 @@ def main():
           f"load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; Python {platform.python_version()}, "
           f"NumPy {np.__version__}, Open3D {o3d.__version__}")
     print(f"mesh: irregular UV sphere, {len(V)} vertices, {len(F)} triangles (V float64, F int32); "
-          f"{args.rounds} rounds, methods interleaved; C++: median of 3 calls per round\n")
+          f"{args.rounds} rounds, methods interleaved; C++: median of 3 calls per round; memory {args.memory}\n")
     print("| method | median ms | min ms | Open3D time / this |")
     print("|---|---:|---:|---:|")
     for name, v in rows.items():

@@ -208,30 +208,26 @@ bool contiguous_aligned(const py::array& a, std::size_t cols) {
 }
 
 // The rows x cols indices of `a` in place, as uint32, when the layout allows: int32 or uint32,
-// C-contiguous, aligned, every value in [0, limit) (one min/max pass, GIL released; an int32 in
-// that range has the bits of the same uint32). Null otherwise (also when empty): the caller copies
+// C-contiguous, aligned, every value in [0, limit) (one counting pass over the threads, GIL
+// released; an int32 in that range has the bits of the same uint32). Null otherwise (also when empty): the caller copies
 // (copy_indices converts any integer type and names a bad index).
 const std::uint32_t* indices_in_place(const py::array& a, std::size_t rows, std::size_t cols, std::uint64_t limit) {
   const char kind = a.dtype().kind();
   const std::size_t total = rows * cols;
   if (total == 0 || a.itemsize() != 4 || (kind != 'i' && kind != 'u') || !contiguous_aligned(a, cols)) return nullptr;
-  bool in_range = false;
-  {
+  // Counted over the threads: one comparison per index on its uint32 bits (a negative int32 is
+  // >= 2^31 there, and an int32 is in range only below 2^31).
+  const std::uint64_t below = kind == 'i' ? std::min<std::uint64_t>(limit, std::uint64_t(1) << 31) : limit;
+  bool in_range = true;
+  if (below <= 0xFFFFFFFFull) {
     py::gil_scoped_release nogil;
-    if (kind == 'i') {
-      const std::int32_t* p = static_cast<const std::int32_t*>(a.data());
-      std::int32_t lo = p[0], hi = p[0];
-      for (std::size_t i = 0; i < total; ++i) {
-        lo = p[i] < lo ? p[i] : lo;
-        hi = p[i] > hi ? p[i] : hi;
-      }
-      in_range = lo >= 0 && std::uint64_t(hi) < limit;
-    } else {
-      const std::uint32_t* p = static_cast<const std::uint32_t*>(a.data());
-      std::uint32_t hi = p[0];
-      for (std::size_t i = 0; i < total; ++i) hi = p[i] > hi ? p[i] : hi;
-      in_range = std::uint64_t(hi) < limit;
-    }
+    const std::uint32_t* p = static_cast<const std::uint32_t*>(a.data());
+    const std::uint32_t lim = std::uint32_t(below);
+    in_range = shadetool::engine::count_over_ranges(total, [p, lim](std::size_t b, std::size_t e) {
+                 std::size_t out = 0;
+                 for (std::size_t i = b; i < e; ++i) out += p[i] >= lim;
+                 return out;
+               }, std::size_t(1) << 16) == 0;
   }
   return in_range ? static_cast<const std::uint32_t*>(a.data()) : nullptr;
 }

@@ -292,3 +292,103 @@ TEST_CASE("glTF morph targets: NORMAL deltas from displaced positions", "[gltf][
   p.mesh.corner_normals = {0, 0, 1};
   CHECK(recompute_morph_normal_deltas(p, face_normal) == 0);
 }
+
+namespace {
+
+// A GLB of an n x n grid of vertices in z = 0 (2 (n-1)^2 triangles, uint32 indices), with a
+// TEXCOORD_0 that only passes through; over 1 MiB for n = 300, so read_file_bytes maps it.
+std::string grid_glb(int n) {
+  Built b = base_doc();
+  std::vector<float> p, uv;
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n; ++k) {
+      p.insert(p.end(), {float(k), float(i) * 0.5f, 0.0f});
+      uv.insert(uv.end(), {float(k) / float(n), float(i) / float(n)});
+    }
+  std::vector<std::uint32_t> idx;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int k = 0; k + 1 < n; ++k) {
+      const std::uint32_t a = std::uint32_t(i * n + k), c = a + std::uint32_t(n);
+      idx.insert(idx.end(), {a, a + 1, c + 1, a, c + 1, c});
+    }
+  const int pos = float_accessor(b, p, "VEC3", 3, true);
+  const int tex = float_accessor(b, uv, "VEC2", 2);
+  const int ind = b.accessor({{"bufferView", b.view(bytes_of(idx))}, {"componentType", 5125}, {"count", idx.size()}, {"type", "SCALAR"}});
+  const json primitive = {{"attributes", {{"POSITION", pos}, {"TEXCOORD_0", tex}}}, {"indices", ind}};
+  b.doc["meshes"] = json::array({{{"primitives", json::array({primitive})}}});
+  return b.glb();
+}
+
+// What a document is, for comparing two reads: its meshes, and what the writer makes of it
+// unchanged and with the positions moved (new accessors appended after the buffers as read).
+std::vector<std::string> written(GltfDocument d) {
+  std::vector<std::string> out;
+  GltfWriteResult r;
+  out.push_back(write_gltf(d, true, "o.glb", r));
+  out.push_back(write_gltf(d, false, "o.gltf", r));
+  for (GltfPrimitive& p : d.primitives)
+    for (double& x : p.mesh.positions) x += 0.25;
+  out.push_back(write_gltf(d, true, "o.glb", r));
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("glTF read from a file: the BIN chunk read in place gives the document tinygltf's copy gives", "[gltf]") {
+  // Truth: read_gltf(string_view), where tinygltf copies every buffer into its model as it always
+  // has. read_gltf(FileBytes&&) reads buffer 0 where it lies in the file; the meshes and every
+  // byte written from them must be the same, for a mapped file and for a small one read into memory.
+  ScratchDir dir;
+  for (int n : {3, 300}) {
+    INFO("grid " << n << " x " << n);
+    const std::string glb = grid_glb(n);
+    const std::string path = dir / ("grid" + std::to_string(n) + ".glb");
+    write_file(path, glb);
+    const GltfDocument copied = read_gltf(glb, path);
+    const GltfDocument in_place = read_gltf(io::read_file_bytes(path), path);
+    REQUIRE(in_place.primitives.size() == 1);
+    CHECK(in_place.primitives[0].mesh.positions == copied.primitives[0].mesh.positions);
+    CHECK(in_place.primitives[0].mesh.corner_vertex == copied.primitives[0].mesh.corner_vertex);
+    CHECK(in_place.primitives[0].mesh.num_faces() == std::size_t(2 * (n - 1) * (n - 1)));
+    CHECK(written(in_place) == written(copied));
+  }
+}
+
+TEST_CASE("glTF read from a file: a bad BIN chunk or index gives tinygltf's message either way", "[gltf][bad]") {
+  // Cases the in-place read must not accept or word differently: it leaves them to tinygltf.
+  ScratchDir dir;
+  const std::string glb = quad_glb(5123);
+  const json j = glb_json(glb);
+  const std::string bin = glb.substr(20 + u32_at(glb, 12) + 8);
+  std::vector<std::pair<std::string, std::string>> cases;
+  {
+    json k = j;
+    k["buffers"][0]["byteLength"] = bin.size() + 64;  // longer than the BIN chunk
+    cases.emplace_back("byteLength beyond the chunk", make_glb(k, bin));
+  }
+  {
+    std::string g = glb;  // the BIN chunk's type is not BIN
+    g[20 + u32_at(glb, 12) + 4] = 'X';
+    cases.emplace_back("chunk type", g);
+  }
+  {
+    std::string b = bin;  // index 9 of 4 vertices
+    const std::uint16_t nine = 9;
+    std::memcpy(&b[48 + 10], &nine, 2);
+    cases.emplace_back("index out of range", make_glb(j, b));
+  }
+  {
+    json k = j;  // a second buffer without a uri: tinygltf gives it the BIN chunk too
+    k["buffers"].push_back({{"byteLength", 4}});
+    cases.emplace_back("two buffers in the BIN chunk", make_glb(k, bin));
+  }
+  for (const auto& [what, bytes] : cases) {
+    INFO(what);
+    const std::string path = dir / "bad.glb";
+    write_file(path, bytes);
+    const std::string expected = error_of([&] { read_gltf(bytes, path); });
+    const std::string got = error_of([&] { read_gltf(io::read_file_bytes(path), path); });
+    CHECK(got == expected);
+    if (what == "index out of range") CHECK_THAT(expected, Catch::Contains("index 9"));
+  }
+}

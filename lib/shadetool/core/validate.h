@@ -20,34 +20,9 @@ namespace shadetool {
 // Throws Error `NAME: K vertices have NaN or Inf coordinates (first: vertex I)` if any, followed by
 // `; no face uses them: `shadetool repair --remove-unreferenced` removes them` when no face uses
 // any of them, `; K of them used by no face (...)` when some face uses some. The one rule for the
-// command line and for Python (which holds a MeshView of the caller's arrays).
-inline void require_finite_positions(const MeshView& mesh, const std::string& name) {
-  std::size_t bad = 0, first = 0;
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    const double* p = mesh.positions + 3 * v;
-    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
-      if (bad++ == 0) first = v;
-    }
-  }
-  if (bad == 0) return;
-  // Which of them a face uses: when none does (Open3D writes NaN into the vertices its subdivision
-  // left unused), the way out is to remove them, and the message says how.
-  std::vector<char> used(mesh.num_vertices(), 0);
-  for (std::size_t c = 0; c < mesh.corner_count; ++c)
-    if (mesh.corner_vertex[c] < used.size()) used[mesh.corner_vertex[c]] = 1;
-  std::size_t bad_used = 0;
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    const double* p = mesh.positions + 3 * v;
-    bad_used += used[v] && !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
-  }
-  const std::string fix = bad_used == 0 ? std::string("; no face uses ") + (bad == 1 ? "it" : "them") +
-                                              ": `shadetool repair --remove-unreferenced` removes them"
-                          : bad_used < bad ? "; " + std::to_string(bad - bad_used) + " of them used by no face" +
-                                                 " (`shadetool repair --remove-unreferenced` removes those)"
-                                           : std::string();
-  fail(name, 0, std::to_string(bad) + (bad == 1 ? " vertex has" : " vertices have") +
-                    " NaN or Inf coordinates (first: vertex " + std::to_string(first) + ")" + fix);
-}
+// command line and for Python (which holds a MeshView of the caller's arrays). The check is one
+// pass over the positions split over the threads (validate.cpp).
+void require_finite_positions(const MeshView& mesh, const std::string& name);
 inline void require_finite_positions(const Mesh& mesh, const std::string& name) {
   require_finite_positions(MeshView(mesh), name);
 }

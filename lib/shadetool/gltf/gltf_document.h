@@ -42,6 +42,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/io/file_bytes.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
@@ -89,6 +90,10 @@ struct GltfDocument {
 // Parses a .glb or .gltf (told apart by the bytes: "glTF" magic). `name` is the file's path:
 // external buffers and images are resolved relative to its directory; messages name it.
 GltfDocument read_gltf(std::string_view bytes, const std::string& name);
+// The same from a file read whole (io/file_bytes.h), which the document then keeps: a GLB's
+// binary chunk is read where it lies in the file's bytes instead of being copied (a mapped file
+// stays mapped while the document lives). Same document, same errors.
+GltfDocument read_gltf(io::FileBytes&& file, const std::string& name);
 
 // A one-primitive document holding `mesh` (positions, normals, colours, texture coordinates;
 // polygons as triangle fans) for writing a non-glTF mesh as glTF: corner and face normals, face

@@ -142,8 +142,9 @@ const AttributeRule kColor{"COLOR_0", color_ok, "VEC3/VEC4 of FLOAT or normalize
 const AttributeRule kDelta{"delta", delta_ok, "FLOAT VEC3 (or BYTE/SHORT VEC3 with KHR_mesh_quantization)"};
 
 // Decodes attribute `index` of a primitive after checking its type against `rule` and its count.
-std::vector<double> decode_attribute(const tinygltf::Model& model, int index, const AttributeRule& rule, bool quantized,
+std::vector<double> decode_attribute(const GltfSource& source, int index, const AttributeRule& rule, bool quantized,
                                      std::size_t expected_count, const std::string& path, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   if (index < 0 || std::size_t(index) >= model.accessors.size())
     fail(name, 0, path + ": " + std::to_string(index) + " is not an accessor index");
   const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
@@ -154,26 +155,27 @@ std::vector<double> decode_attribute(const tinygltf::Model& model, int index, co
   if (expected_count != std::size_t(-1) && a.count != expected_count)
     fail(name, 0, path + ": accessors[" + std::to_string(index) + "] has " + std::to_string(a.count) +
                       " elements, POSITION has " + std::to_string(expected_count));
-  return accessor_doubles(model, index, name);
+  return accessor_doubles(source, index, name);
 }
 
-void decode_primitive(const tinygltf::Model& model, bool quantized, GltfPrimitive& gp, const std::string& name) {
+void decode_primitive(const GltfSource& source, bool quantized, GltfPrimitive& gp, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   const tinygltf::Primitive& prim = model.meshes[gp.mesh_index].primitives[gp.primitive_index];
   const std::string path = gp.json_path;
   auto pos = prim.attributes.find("POSITION");
   if (pos == prim.attributes.end()) fail(name, 0, path + ".attributes: no POSITION");
   Mesh& mesh = gp.mesh;
-  mesh.positions = decode_attribute(model, pos->second, kPosition, quantized, std::size_t(-1), path + ".attributes.POSITION", name);
+  mesh.positions = decode_attribute(source, pos->second, kPosition, quantized, std::size_t(-1), path + ".attributes.POSITION", name);
   const std::size_t V = mesh.num_vertices();
   for (std::size_t i = 0; i < mesh.positions.size(); ++i)
     if (!std::isfinite(mesh.positions[i]))
       fail(name, 0, path + ".attributes.POSITION: vertex " + std::to_string(i / 3) + " has a NaN or infinite coordinate");
   if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end())
-    mesh.vertex_normals = decode_attribute(model, it->second, kNormal, quantized, V, path + ".attributes.NORMAL", name);
+    mesh.vertex_normals = decode_attribute(source, it->second, kNormal, quantized, V, path + ".attributes.NORMAL", name);
   if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end())
-    gp.tangents = decode_attribute(model, it->second, kTangent, quantized, V, path + ".attributes.TANGENT", name);
+    gp.tangents = decode_attribute(source, it->second, kTangent, quantized, V, path + ".attributes.TANGENT", name);
   if (auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end()) {
-    const std::vector<double> c = decode_attribute(model, it->second, kColor, quantized, V, path + ".attributes.COLOR_0", name);
+    const std::vector<double> c = decode_attribute(source, it->second, kColor, quantized, V, path + ".attributes.COLOR_0", name);
     const tinygltf::Accessor& a = model.accessors[std::size_t(it->second)];
     mesh.color_channels = a.type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
     mesh.colors_are_float = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
@@ -193,15 +195,15 @@ void decode_primitive(const tinygltf::Model& model, bool quantized, GltfPrimitiv
     GltfMorphTarget target;
     const std::string tp = path + ".targets[" + std::to_string(t) + "].";
     for (auto& [attr, index] : prim.targets[t]) {
-      if (attr == "POSITION") target.position_deltas = decode_attribute(model, index, kDelta, quantized, V, tp + attr, name);
-      else if (attr == "NORMAL") target.normal_deltas = decode_attribute(model, index, kDelta, quantized, V, tp + attr, name);
-      else if (attr == "TANGENT") target.tangent_deltas = decode_attribute(model, index, kDelta, quantized, V, tp + attr, name);
+      if (attr == "POSITION") target.position_deltas = decode_attribute(source, index, kDelta, quantized, V, tp + attr, name);
+      else if (attr == "NORMAL") target.normal_deltas = decode_attribute(source, index, kDelta, quantized, V, tp + attr, name);
+      else if (attr == "TANGENT") target.tangent_deltas = decode_attribute(source, index, kDelta, quantized, V, tp + attr, name);
     }
     gp.targets.push_back(std::move(target));
   }
 
   // Corners: the indices (or 0..V-1), strips and fans unrolled (spec 3.7.2.1).
-  mesh.corner_vertex = io::gltf::primitive_corners(model, prim.indices, prim.mode, V, path, name);
+  mesh.corner_vertex = io::gltf::primitive_corners(source, prim.indices, prim.mode, V, path, name);
   const std::vector<std::uint32_t>& cv = mesh.corner_vertex;
   const std::size_t F = cv.size() / 3;
   reserve_bulk(mesh.face_start, F + 1);
@@ -213,9 +215,42 @@ void decode_primitive(const tinygltf::Model& model, bool quantized, GltfPrimitiv
   gp.read_targets = gp.targets;
 }
 
-}  // namespace
+// The BIN chunk of a GLB, to be read in place instead of copied into tinygltf's buffer, when
+// tinygltf would load it without a complaint and nothing else needs it in the model: buffer 0 has
+// no uri (it is the BIN chunk: glTF 2.0 4.4.3.3) and a byteLength within the chunk, every other
+// buffer has a uri, no image lies in a bufferView (tinygltf reads those from the loaded buffer),
+// nothing is compressed (the decoders write into the model's buffers), and the chunks pass
+// tinygltf's own checks (JSON chunk padded to 4 bytes; a BIN chunk of at least 4 bytes, a multiple
+// of 4, within the file). Empty otherwise: tinygltf loads the file as it is.
+std::string_view bin_in_place(std::string_view bytes, std::size_t json_chunk, const json& j) {
+  if (json_chunk % 4 != 0) return {};
+  if (!j.contains("buffers") || !j["buffers"].is_array() || j["buffers"].empty()) return {};
+  const json& buffers = j["buffers"];
+  if (!buffers[0].is_object() || buffers[0].contains("uri") || !buffers[0].contains("byteLength") ||
+      !buffers[0]["byteLength"].is_number_integer() || buffers[0]["byteLength"].get<long long>() <= 0)
+    return {};
+  for (std::size_t b = 1; b < buffers.size(); ++b)
+    if (!buffers[b].is_object() || !buffers[b].contains("uri") || !buffers[b]["uri"].is_string() ||
+        buffers[b]["uri"].get<std::string>().empty())
+      return {};
+  if (j.contains("images") && j["images"].is_array())
+    for (const json& image : j["images"])
+      if (!image.is_object() || image.contains("bufferView")) return {};
+  const std::string_view text = bytes.substr(20, json_chunk);
+  for (const char* compressed : {"meshopt_compression", "draco_mesh_compression"})
+    if (text.find(compressed) != std::string_view::npos) return {};
+  const std::uint64_t length = le32(bytes.data() + 8), bin_header = 20 + std::uint64_t(json_chunk);
+  if (bin_header + 8 > length) return {};
+  const std::uint64_t chunk = le32(bytes.data() + bin_header);
+  if (chunk < 4 || chunk % 4 != 0 || bin_header + 8 + chunk > length || le32(bytes.data() + bin_header + 4) != 0x004E4942u)
+    return {};
+  const std::uint64_t byte_length = buffers[0]["byteLength"].get<std::uint64_t>();
+  if (byte_length > chunk) return {};
+  return bytes.substr(std::size_t(bin_header + 8), std::size_t(byte_length));
+}
 
-GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
+// `file`: the bytes' owner when the reader may keep them (the BIN chunk is then read in place), or null.
+GltfDocument read_document(std::string_view bytes, const std::string& name, io::FileBytes* file) {
   const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
   const std::string_view json_text = binary ? glb_json(bytes, name) : bytes;
   auto source = std::make_shared<GltfSource>();
@@ -240,7 +275,21 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
   std::string base = fs::path(name).parent_path().string();
   if (base.empty()) base = ".";
   std::string glb;  // a GLB whose JSON chunk was edited: header, the edited chunk, the rest as read
-  if (binary && !edited_json.empty()) {
+  // The BIN chunk in place: tinygltf is given the JSON with buffer 0 as 4 bytes in a data URI (it
+  // refuses a buffer without bytes), and no BIN chunk; the model's buffer 0 is emptied after.
+  const std::string_view bin = binary && file && edited_json.empty() ? bin_in_place(bytes, json_text.size(), source->json)
+                                                                   : std::string_view();
+  if (!bin.empty()) {
+    json for_loader = source->json;
+    for_loader["buffers"][0]["uri"] = "data:application/octet-stream;base64,AAAAAA==";
+    for_loader["buffers"][0]["byteLength"] = 4;
+    edited_json = for_loader.dump();
+    while (edited_json.size() % 4) edited_json += ' ';
+    const std::uint32_t header[5] = {0x46546C67u, 2, std::uint32_t(20 + edited_json.size()), std::uint32_t(edited_json.size()),
+                                     0x4E4F534Au};
+    glb.append(reinterpret_cast<const char*>(header), sizeof header);
+    glb += edited_json;
+  } else if (binary && !edited_json.empty()) {
     while (edited_json.size() % 4) edited_json += ' ';
     const std::string_view rest = bytes.substr(20 + json_text.size());
     const std::uint32_t header[5] = {0x46546C67u, 2, std::uint32_t(20 + edited_json.size() + rest.size()),
@@ -261,6 +310,14 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
       if (c == '\n' || c == '\r') c = ' ';
     while (!line.empty() && line.back() == ' ') line.pop_back();
     fail(name, 0, line);
+  }
+
+  if (!bin.empty()) {
+    source->model.buffers[0].data = std::vector<unsigned char>();
+    source->model.buffers[0].uri.clear();
+    source->file = std::move(*file);  // the view `bin` stays valid: the bytes do not move
+    source->bin_buffer = 0;
+    source->bin = bin;
   }
 
   GltfDocument doc;
@@ -284,11 +341,20 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name) {
       gp.mesh_index = m;
       gp.primitive_index = p;
       gp.json_path = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
-      decode_primitive(model, quantized, gp, name);
+      decode_primitive(*source, quantized, gp, name);
       doc.primitives.push_back(std::move(gp));
     }
   doc.source = std::move(source);
   return doc;
+}
+
+}  // namespace
+
+GltfDocument read_gltf(std::string_view bytes, const std::string& name) { return read_document(bytes, name, nullptr); }
+
+GltfDocument read_gltf(io::FileBytes&& file, const std::string& name) {
+  io::FileBytes owned = std::move(file);
+  return read_document(owned.view(), name, &owned);
 }
 
 std::string gltf_source_name(const GltfDocument& document) {

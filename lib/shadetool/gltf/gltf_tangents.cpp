@@ -21,7 +21,7 @@ std::vector<double> gltf_texcoords(const GltfDocument& doc, const GltfPrimitive&
     changed = true;
     return {};
   }
-  std::vector<double> uv = io::gltf::accessor_doubles(model, it->second, doc.source->name);
+  std::vector<double> uv = io::gltf::accessor_doubles(*doc.source, it->second, doc.source->name);
   if (uv.size() != 2 * p.read_vertices)
     fail(doc.source->name, 0, p.json_path + ".attributes.TEXCOORD_0: not one VEC2 per vertex");
   return uv;

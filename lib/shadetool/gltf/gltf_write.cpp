@@ -125,10 +125,10 @@ int add_color_accessor(OutBuffer& out, const std::vector<float>& colors, int cha
 
 // An attribute passed through, its elements gathered through `source_vertex` (output vertex ->
 // input vertex); same component type, type and normalisation as the original accessor.
-int add_gathered_accessor(OutBuffer& out, const tinygltf::Model& model, int index, const std::vector<std::uint32_t>& source_vertex,
+int add_gathered_accessor(OutBuffer& out, const GltfSource& source, int index, const std::vector<std::uint32_t>& source_vertex,
                           const std::string& name) {
-  const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
-  const std::vector<unsigned char> raw = io::gltf::accessor_bytes(model, index, name);
+  const tinygltf::Accessor& a = source.model.accessors[std::size_t(index)];
+  const std::vector<unsigned char> raw = io::gltf::accessor_bytes(source, index, name);
   const std::size_t elem = std::size_t(io::gltf::type_components(a.type)) * std::size_t(io::gltf::component_bytes(a.componentType));
   std::vector<unsigned char> g(source_vertex.size() * elem);
   for (std::size_t i = 0; i < source_vertex.size(); ++i) std::memcpy(&g[i * elem], &raw[source_vertex[i] * elem], elem);
@@ -218,7 +218,8 @@ std::string mime_for(const std::string& uri, const std::string& given) {
 // normal-or-face, texture coordinate) triple, in order of first use.
 struct Split {
   std::vector<std::uint32_t> source_vertex;  // output vertex -> mesh vertex
-  std::vector<std::uint32_t> corner_output;  // corner -> output vertex
+  std::vector<std::uint32_t> corner_output;  // corner -> output vertex; empty when corners_kept
+  bool corners_kept = false;                 // no split: corner -> mesh.corner_vertex (not copied)
 };
 
 struct CornerKey {
@@ -260,13 +261,13 @@ Split split_vertices(const Mesh& mesh, bool texcoords, const std::vector<std::ui
   const bool per_face = mesh.has_face_normals() || mesh.has_face_colors();
   const bool per_corner = mesh.has_corner_normals();
   const bool per_tangent = !tangent_class.empty();
-  s.corner_output.resize(mesh.num_corners());
   if (!per_face && !per_corner && !texcoords && !per_tangent) {
     s.source_vertex.resize(mesh.num_vertices());
     for (std::size_t v = 0; v < s.source_vertex.size(); ++v) s.source_vertex[v] = std::uint32_t(v);
-    s.corner_output = mesh.corner_vertex;
+    s.corners_kept = true;
     return s;
   }
+  s.corner_output.resize(mesh.num_corners());
   // Split by tangent frames only (the rest is per vertex already): every vertex keeps its index
   // for the first frame its corners use, the vertices split off are appended, so that a primitive
   // whose frames agree at every vertex keeps its vertex order, and the accessors as read stay
@@ -304,7 +305,8 @@ bool same_vertex_data(const std::vector<double>& a, const std::vector<double>& b
 
 struct PrimitiveWriter {
   OutBuffer& out;
-  const tinygltf::Model* model;  // null for a fresh document
+  const GltfSource* source;       // null for a fresh document
+  const tinygltf::Model* model;  // source's model, or null
   const std::string& name;
   GltfWriteResult& result;
 
@@ -321,27 +323,28 @@ struct PrimitiveWriter {
     const bool corner_tangents = gp.corner_tangents.size() == 4 * mesh.num_corners() && mesh.num_corners() > 0;
     const Split split = split_vertices(mesh, texcoords, corner_tangents ? tangent_classes(mesh, gp.corner_tangents)
                                                                         : std::vector<std::uint32_t>());
+    const std::uint32_t* corner_output = split.corners_kept ? mesh.corner_vertex.data() : split.corner_output.data();
     const bool identity = split.source_vertex.size() == mesh.num_vertices() && !mesh.has_corner_normals() &&
                           !mesh.has_face_normals() && !mesh.has_face_colors() && !texcoords &&
-                          std::equal(split.corner_output.begin(), split.corner_output.end(), mesh.corner_vertex.begin());
+                          (split.corners_kept || std::equal(split.corner_output.begin(), split.corner_output.end(), mesh.corner_vertex.begin()));
     const std::size_t out_vertices = split.source_vertex.size();
     const bool same_vertices = model && mesh.num_vertices() == gp.read_vertices;
     const bool keep_all = identity && same_vertices;  // accessors as read stay valid
     if (!identity && out_vertices > mesh.num_vertices()) result.split_vertices += out_vertices - mesh.num_vertices();
 
     // POSITION
-    if (!keep_all || !io::gltf::accessor_equals(*model, source_attribute("POSITION"), mesh.positions, name))
+    if (!keep_all || !io::gltf::accessor_equals(*source, source_attribute("POSITION"), mesh.positions, name))
       attrs["POSITION"] = add_float_accessor(out, gather(mesh.positions, 3, split.source_vertex), 3, true, true);
 
     // NORMAL: per vertex, per corner (pool) or per face, all as vertex normals of the output.
     if (mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals()) {
       const bool unchanged = keep_all && mesh.has_vertex_normals() && source_attribute("NORMAL") >= 0 &&
-                             io::gltf::accessor_equals(*model, source_attribute("NORMAL"), mesh.vertex_normals, name);
+                             io::gltf::accessor_equals(*source, source_attribute("NORMAL"), mesh.vertex_normals, name);
       if (!unchanged) {
         std::vector<double> n(3 * out_vertices, 0.0);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
           for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-            const std::size_t o = split.corner_output[c];
+            const std::size_t o = corner_output[c];
             const double* src = mesh.has_face_normals()     ? &mesh.face_normals[3 * f]
                                 : mesh.has_corner_normals() ? &mesh.corner_normals[3 * std::size_t(mesh.corner_normal_index[c])]
                                                             : &mesh.vertex_normals[3 * std::size_t(mesh.corner_vertex[c])];
@@ -362,12 +365,12 @@ struct PrimitiveWriter {
       const int color = source_attribute("COLOR_0");
       const bool unchanged = keep_all && mesh.has_vertex_colors() && color >= 0 &&
                              io::gltf::type_components(model->accessors[std::size_t(color)].type) == mesh.color_channels &&
-                             io::gltf::accessor_equals(*model, color, mesh.vertex_colors, name);
+                             io::gltf::accessor_equals(*source, color, mesh.vertex_colors, name);
       if (!unchanged) {
         std::vector<float> col(std::size_t(channels) * out_vertices, 1.0f);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
           for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-            const std::size_t o = split.corner_output[c];
+            const std::size_t o = corner_output[c];
             const float* src = mesh.has_face_colors() ? &mesh.face_colors[std::size_t(channels) * f]
                                                       : &mesh.vertex_colors[std::size_t(channels) * mesh.corner_vertex[c]];
             std::copy(src, src + channels, &col[std::size_t(channels) * o]);
@@ -394,8 +397,8 @@ struct PrimitiveWriter {
           ++missing;
           continue;
         }
-        uv[2 * std::size_t(split.corner_output[c])] = mesh.texcoords[dims * t];
-        uv[2 * std::size_t(split.corner_output[c]) + 1] = 1 - mesh.texcoords[dims * t + 1];
+        uv[2 * std::size_t(corner_output[c])] = mesh.texcoords[dims * t];
+        uv[2 * std::size_t(corner_output[c]) + 1] = 1 - mesh.texcoords[dims * t + 1];
         w_dropped += dims > 2 && mesh.texcoords[dims * t + 2] != 0;
       }
       attrs["TEXCOORD_0"] = add_float_accessor(out, uv, 2, false, true);
@@ -409,7 +412,7 @@ struct PrimitiveWriter {
     if (corner_tangents) {
       std::vector<double> t(4 * out_vertices, 0.0);
       for (std::size_t c = 0; c < mesh.num_corners(); ++c)
-        std::copy(&gp.corner_tangents[4 * c], &gp.corner_tangents[4 * c] + 4, &t[4 * std::size_t(split.corner_output[c])]);
+        std::copy(&gp.corner_tangents[4 * c], &gp.corner_tangents[4 * c] + 4, &t[4 * std::size_t(corner_output[c])]);
       for (std::size_t v = 0; v < out_vertices; ++v)
         if (t[4 * v + 3] == 0.0) { t[4 * v] = 1.0; t[4 * v + 3] = 1.0; }  // a vertex no corner uses: any unit frame
       attrs["TANGENT"] = add_float_accessor(out, t, 4, false, true);
@@ -436,7 +439,7 @@ struct PrimitiveWriter {
           attrs.erase(attr);
           continue;
         }
-        attrs[attr] = add_gathered_accessor(out, *model, index, split.source_vertex, name);
+        attrs[attr] = add_gathered_accessor(out, *source, index, split.source_vertex, name);
       }
       write_targets(gp, jprim, prim, split, keep_all, same_vertices, dropped);
     }
@@ -452,7 +455,7 @@ struct PrimitiveWriter {
 
     // Indices: as read while the faces and vertices are; else a new TRIANGLES list.
     const bool faces_same = keep_all && mesh.all_triangles() &&
-                            io::gltf::primitive_corners_equal(*model, src->indices, src->mode, gp.read_vertices,
+                            io::gltf::primitive_corners_equal(*source, src->indices, src->mode, gp.read_vertices,
                                                               mesh.corner_vertex, gp.json_path, name);
     if (!faces_same) {
       std::vector<std::uint32_t> idx;
@@ -460,9 +463,9 @@ struct PrimitiveWriter {
       for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
         const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
         for (std::uint32_t c = b + 1; c + 1 < e; ++c) {  // polygons as fans (triangles: one)
-          idx.push_back(split.corner_output[b]);
-          idx.push_back(split.corner_output[c]);
-          idx.push_back(split.corner_output[c + 1]);
+          idx.push_back(corner_output[b]);
+          idx.push_back(corner_output[c]);
+          idx.push_back(corner_output[c + 1]);
         }
       }
       jprim["indices"] = add_index_accessor(out, idx, out_vertices);
@@ -497,7 +500,7 @@ struct PrimitiveWriter {
         } else if (decoded && !before->empty()) {
           targets[t].erase(attr);  // the command removed them (normals dropped)
         } else if (!keep_all) {
-          targets[t][attr] = add_gathered_accessor(out, *model, index, split.source_vertex, name);
+          targets[t][attr] = add_gathered_accessor(out, *source, index, split.source_vertex, name);
         }
       }
       // Deltas the command added (NORMAL deltas computed for a target that had none).
@@ -599,7 +602,7 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
   if (model) {
     std::vector<std::size_t> base(model->buffers.size());
     std::size_t total = 28 + (std::size_t(1) << 20);  // GLB headers and room for the JSON in front
-    for (const auto& b : model->buffers) total += b.data.size() + 8;
+    for (std::size_t b = 0; b < model->buffers.size(); ++b) total += src->buffer_bytes(b).size() + 8;
     for (const auto& im : model->images) total += im.image.size() + 4;
     for (const GltfPrimitive& p : doc.primitives)  // room for what a command adds (position, normal, colour, indices)
       total += p.mesh.num_vertices() * 40 + p.mesh.num_corners() * 4 + 64;
@@ -607,7 +610,7 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
     for (std::size_t b = 0; b < model->buffers.size(); ++b) {
       out.align(8);
       base[b] = out.bytes.size();
-      out.bytes.append(reinterpret_cast<const char*>(model->buffers[b].data.data()), model->buffers[b].data.size());
+      out.bytes.append(src->buffer_bytes(b));
     }
     for (json& v : j["bufferViews"]) {
       const std::size_t b = v.value("buffer", 0);
@@ -633,7 +636,7 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
       }
   }
 
-  PrimitiveWriter writer{out, model, name, result};
+  PrimitiveWriter writer{out, src, model, name, result};
   for (const GltfPrimitive& gp : doc.primitives) {
     json& jprim = j["meshes"][gp.mesh_index]["primitives"][gp.primitive_index];
     writer.write(gp, jprim);

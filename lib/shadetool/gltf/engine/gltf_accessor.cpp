@@ -1,5 +1,6 @@
 // gltf_accessor.cpp: checked reads of glTF accessors (see gltf_accessor.h).
 #include "gltf_accessor.h"
+#include "gltf_source.h"
 
 #include <cmath>
 #include <cstring>
@@ -39,8 +40,9 @@ namespace {
 std::string at(int index) { return "accessors[" + std::to_string(index) + "]"; }
 
 // The bytes [offset, offset + length) of bufferView `view`, checked against its buffer.
-const unsigned char* view_span(const tinygltf::Model& model, int view, std::size_t offset, std::size_t length,
+const unsigned char* view_span(const GltfSource& source, int view, std::size_t offset, std::size_t length,
                                const std::string& name, const std::string& path, std::size_t* stride) {
+  const tinygltf::Model& model = source.model;
   if (view < 0 || std::size_t(view) >= model.bufferViews.size())
     fail(name, 0, path + ".bufferView: " + std::to_string(view) + " is not a bufferView index (the file has " +
                       std::to_string(model.bufferViews.size()) + ")");
@@ -48,7 +50,7 @@ const unsigned char* view_span(const tinygltf::Model& model, int view, std::size
   const std::string vpath = "bufferViews[" + std::to_string(view) + "]";
   if (bv.buffer < 0 || std::size_t(bv.buffer) >= model.buffers.size())
     fail(name, 0, vpath + ".buffer: " + std::to_string(bv.buffer) + " is not a buffer index");
-  const std::size_t buffer_size = model.buffers[std::size_t(bv.buffer)].data.size();
+  const std::size_t buffer_size = source.buffer_bytes(std::size_t(bv.buffer)).size();
   if (bv.byteOffset > buffer_size || bv.byteLength > buffer_size - bv.byteOffset)
     fail(name, 0, vpath + ": bytes " + std::to_string(bv.byteOffset) + ".." + std::to_string(bv.byteOffset + bv.byteLength) +
                       " overrun buffers[" + std::to_string(bv.buffer) + "] (" + std::to_string(buffer_size) + " bytes)");
@@ -56,12 +58,13 @@ const unsigned char* view_span(const tinygltf::Model& model, int view, std::size
     fail(name, 0, path + ": needs bytes " + std::to_string(offset) + ".." + std::to_string(offset + length) + " of " + vpath +
                       ", which has " + std::to_string(bv.byteLength) + ": the accessor overruns its buffer view");
   if (stride) *stride = bv.byteStride;
-  return model.buffers[std::size_t(bv.buffer)].data.data() + bv.byteOffset + offset;
+  return reinterpret_cast<const unsigned char*>(source.buffer_bytes(std::size_t(bv.buffer)).data()) + bv.byteOffset + offset;
 }
 
 }  // namespace
 
-std::vector<unsigned char> accessor_bytes(const tinygltf::Model& model, int index, const std::string& name) {
+std::vector<unsigned char> accessor_bytes(const GltfSource& source, int index, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   if (index < 0 || std::size_t(index) >= model.accessors.size())
     fail(name, 0, at(index) + ": no such accessor (the file has " + std::to_string(model.accessors.size()) + ")");
   const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
@@ -84,7 +87,7 @@ std::vector<unsigned char> accessor_bytes(const tinygltf::Model& model, int inde
                                     " is smaller than one element of " + at(index) + " (" + std::to_string(elem) + " bytes)");
     if (a.byteOffset % std::size_t(cbytes) != 0)
       fail(name, 0, at(index) + ".byteOffset: " + std::to_string(a.byteOffset) + " is not a multiple of the component size");
-    const unsigned char* src = view_span(model, a.bufferView, a.byteOffset, (a.count - 1) * s + elem, name, at(index), &stride);
+    const unsigned char* src = view_span(source, a.bufferView, a.byteOffset, (a.count - 1) * s + elem, name, at(index), &stride);
     if (s == elem) {
       std::memcpy(out.data(), src, out.size());
     } else {
@@ -100,9 +103,9 @@ std::vector<unsigned char> accessor_bytes(const tinygltf::Model& model, int inde
     if (!(icomp == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || icomp == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
           icomp == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
       fail(name, 0, sp + ".indices.componentType: must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
-    const unsigned char* idx = view_span(model, a.sparse.indices.bufferView, std::size_t(a.sparse.indices.byteOffset),
+    const unsigned char* idx = view_span(source, a.sparse.indices.bufferView, std::size_t(a.sparse.indices.byteOffset),
                                          n * std::size_t(ib), name, sp + ".indices", nullptr);
-    const unsigned char* val = view_span(model, a.sparse.values.bufferView, std::size_t(a.sparse.values.byteOffset),
+    const unsigned char* val = view_span(source, a.sparse.values.bufferView, std::size_t(a.sparse.values.byteOffset),
                                          n * elem, name, sp + ".values", nullptr);
     for (std::size_t k = 0; k < n; ++k) {
       std::uint32_t i = 0;
@@ -122,7 +125,8 @@ namespace {
 
 // Plain FLOAT data (no sparse values) in a buffer view: its first element and stride, after every
 // check accessor_bytes makes; nullptr when the accessor is not of that kind.
-const unsigned char* plain_float(const tinygltf::Model& model, int index, const std::string& name, std::size_t& stride) {
+const unsigned char* plain_float(const GltfSource& source, int index, const std::string& name, std::size_t& stride) {
+  const tinygltf::Model& model = source.model;
   if (index < 0 || std::size_t(index) >= model.accessors.size()) return nullptr;
   const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
   if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.sparse.isSparse || a.bufferView < 0 || a.count == 0) return nullptr;
@@ -132,14 +136,15 @@ const unsigned char* plain_float(const tinygltf::Model& model, int index, const 
   const tinygltf::BufferView& bv = model.bufferViews[std::size_t(a.bufferView)];
   stride = bv.byteStride ? bv.byteStride : elem;
   if (stride < elem || a.byteOffset % 4 != 0) return nullptr;  // accessor_bytes reports these
-  return view_span(model, a.bufferView, a.byteOffset, (a.count - 1) * stride + elem, name, at(index), nullptr);
+  return view_span(source, a.bufferView, a.byteOffset, (a.count - 1) * stride + elem, name, at(index), nullptr);
 }
 
 }  // namespace
 
-std::vector<double> accessor_doubles(const tinygltf::Model& model, int index, const std::string& name) {
+std::vector<double> accessor_doubles(const GltfSource& source, int index, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   std::size_t stride = 0;
-  if (const unsigned char* src = plain_float(model, index, name, stride)) {  // no intermediate copy
+  if (const unsigned char* src = plain_float(source, index, name, stride)) {  // no intermediate copy
     const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
     const std::size_t comps = std::size_t(type_components(a.type));
     std::vector<double> out;
@@ -152,7 +157,7 @@ std::vector<double> accessor_doubles(const tinygltf::Model& model, int index, co
     }
     return out;
   }
-  const std::vector<unsigned char> raw = accessor_bytes(model, index, name);
+  const std::vector<unsigned char> raw = accessor_bytes(source, index, name);
   const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
   const std::size_t n = a.count * std::size_t(type_components(a.type));
   std::vector<double> out(n);
@@ -193,7 +198,8 @@ std::vector<double> accessor_doubles(const tinygltf::Model& model, int index, co
   return out;
 }
 
-std::vector<std::uint32_t> accessor_indices(const tinygltf::Model& model, int index, const std::string& name) {
+std::vector<std::uint32_t> accessor_indices(const GltfSource& source, int index, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   if (index < 0 || std::size_t(index) >= model.accessors.size())
     fail(name, 0, at(index) + ": no such accessor (the file has " + std::to_string(model.accessors.size()) + ")");
   const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
@@ -208,7 +214,7 @@ std::vector<std::uint32_t> accessor_indices(const tinygltf::Model& model, int in
       model.bufferViews[std::size_t(a.bufferView)].byteStride == 0 && a.byteOffset % std::size_t(component_bytes(ct)) == 0) {
     // Packed indices read straight from the buffer (no intermediate copy).
     const std::size_t cb = std::size_t(component_bytes(ct));
-    const unsigned char* src = view_span(model, a.bufferView, a.byteOffset, a.count * cb, name, at(index), nullptr);
+    const unsigned char* src = view_span(source, a.bufferView, a.byteOffset, a.count * cb, name, at(index), nullptr);
     std::vector<std::uint32_t> out;
     reserve_bulk(out, a.count);
     out.resize(a.count);
@@ -217,7 +223,7 @@ std::vector<std::uint32_t> accessor_indices(const tinygltf::Model& model, int in
     else for (std::size_t i = 0; i < a.count; ++i) out[i] = src[i];
     return out;
   }
-  const std::vector<unsigned char> raw = accessor_bytes(model, index, name);
+  const std::vector<unsigned char> raw = accessor_bytes(source, index, name);
   std::vector<std::uint32_t> out(a.count);
   if (ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
     for (std::size_t i = 0; i < a.count; ++i) out[i] = raw[i];
@@ -229,13 +235,14 @@ std::vector<std::uint32_t> accessor_indices(const tinygltf::Model& model, int in
   return out;
 }
 
-bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<double>& values, const std::string& name) {
+bool accessor_equals(const GltfSource& source, int index, const std::vector<double>& values, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   if (index < 0 || std::size_t(index) >= model.accessors.size()) return false;
   const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
   const std::size_t comps = std::size_t(type_components(a.type));
   if (values.size() != a.count * comps) return false;
   std::size_t stride = 0;
-  if (const unsigned char* src = plain_float(model, index, name, stride)) {
+  if (const unsigned char* src = plain_float(source, index, name, stride)) {
     for (std::size_t i = 0; i < a.count; ++i) {
       float f[16];
       std::memcpy(f, src + i * stride, 4 * comps);
@@ -244,25 +251,27 @@ bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<
     }
     return true;
   }
-  const std::vector<double> d = accessor_doubles(model, index, name);
+  const std::vector<double> d = accessor_doubles(source, index, name);
   return d == values;
 }
 
-bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<float>& values, const std::string& name) {
+bool accessor_equals(const GltfSource& source, int index, const std::vector<float>& values, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   if (index < 0 || std::size_t(index) >= model.accessors.size()) return false;
   const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
   if (values.size() != a.count * std::size_t(type_components(a.type))) return false;
-  const std::vector<double> d = accessor_doubles(model, index, name);
+  const std::vector<double> d = accessor_doubles(source, index, name);
   for (std::size_t i = 0; i < d.size(); ++i)
     if (!(float(d[i]) == values[i])) return false;
   return true;
 }
 
-std::vector<std::uint32_t> primitive_corners(const tinygltf::Model& model, int indices, int mode, std::size_t vertices,
+std::vector<std::uint32_t> primitive_corners(const GltfSource& source, int indices, int mode, std::size_t vertices,
                                              const std::string& path, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   std::vector<std::uint32_t> idx;
   if (indices >= 0) {
-    idx = accessor_indices(model, indices, name);
+    idx = accessor_indices(source, indices, name);
     for (std::size_t i = 0; i < idx.size(); ++i)
       if (idx[i] >= vertices)
         fail(name, 0, path + ".indices: index " + std::to_string(idx[i]) + " (element " + std::to_string(i) +
@@ -294,19 +303,20 @@ std::vector<std::uint32_t> primitive_corners(const tinygltf::Model& model, int i
   return cv;
 }
 
-bool primitive_corners_equal(const tinygltf::Model& model, int indices, int mode, std::size_t vertices,
+bool primitive_corners_equal(const GltfSource& source, int indices, int mode, std::size_t vertices,
                              const std::vector<std::uint32_t>& corners, const std::string& path, const std::string& name) {
+  const tinygltf::Model& model = source.model;
   if ((mode < 0 || mode == TINYGLTF_MODE_TRIANGLES) && indices >= 0 && std::size_t(indices) < model.accessors.size()) {
     const tinygltf::Accessor& a = model.accessors[std::size_t(indices)];
     const int ct = a.componentType;
     if (a.count != corners.size()) return false;
     if (ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && !a.sparse.isSparse && a.bufferView >= 0 && a.count > 0 &&
         std::size_t(a.bufferView) < model.bufferViews.size() && model.bufferViews[std::size_t(a.bufferView)].byteStride == 0) {
-      const unsigned char* src = view_span(model, a.bufferView, a.byteOffset, a.count * 4, name, at(indices), nullptr);
+      const unsigned char* src = view_span(source, a.bufferView, a.byteOffset, a.count * 4, name, at(indices), nullptr);
       return std::memcmp(src, corners.data(), a.count * 4) == 0;
     }
   }
-  return primitive_corners(model, indices, mode, vertices, path, name) == corners;
+  return primitive_corners(source, indices, mode, vertices, path, name) == corners;
 }
 
 }  // namespace shadetool::io::gltf

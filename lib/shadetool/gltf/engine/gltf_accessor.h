@@ -20,6 +20,7 @@
 #include <vector>
 
 namespace tinygltf { class Model; }
+namespace shadetool { struct GltfSource; }
 
 namespace shadetool::io::gltf {
 
@@ -30,29 +31,29 @@ int component_bytes(int component_type);
 
 // The raw element bytes of accessor `index`, tightly packed (count * components * component
 // bytes), sparse substitutions applied. `name` is the file, for messages.
-std::vector<unsigned char> accessor_bytes(const tinygltf::Model& model, int index, const std::string& name);
+std::vector<unsigned char> accessor_bytes(const GltfSource& source, int index, const std::string& name);
 
 // Accessor `index` as doubles, count * components, normalized integers mapped as in the spec.
-std::vector<double> accessor_doubles(const tinygltf::Model& model, int index, const std::string& name);
+std::vector<double> accessor_doubles(const GltfSource& source, int index, const std::string& name);
 
 // Accessor `index` as unsigned indices (SCALAR of UNSIGNED_BYTE/SHORT/INT; Error otherwise).
-std::vector<std::uint32_t> accessor_indices(const tinygltf::Model& model, int index, const std::string& name);
+std::vector<std::uint32_t> accessor_indices(const GltfSource& source, int index, const std::string& name);
 
 // True when accessor `index` decodes (as accessor_doubles would) to exactly `values`; compares
 // in place, without a copy, for tightly or stride-packed FLOAT data without sparse values.
-bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<double>& values, const std::string& name);
+bool accessor_equals(const GltfSource& source, int index, const std::vector<double>& values, const std::string& name);
 // The same for colours held as float: each decoded value rounded to float equals values[i].
-bool accessor_equals(const tinygltf::Model& model, int index, const std::vector<float>& values, const std::string& name);
+bool accessor_equals(const GltfSource& source, int index, const std::vector<float>& values, const std::string& name);
 
 // The triangle corners of a TRIANGLES / TRIANGLE_STRIP / TRIANGLE_FAN primitive: its indices (or
 // 0..count-1), strips and fans unrolled (glTF 2.0, 3.7.2.1: strip i -> {i, i+1+i%2, i+2-i%2},
 // fan i -> {i+1, i+2, 0}). `vertices` is POSITION's count (indices are checked against it);
 // `path` names the primitive in messages.
-std::vector<std::uint32_t> primitive_corners(const tinygltf::Model& model, int indices, int mode, std::size_t vertices,
+std::vector<std::uint32_t> primitive_corners(const GltfSource& source, int indices, int mode, std::size_t vertices,
                                              const std::string& path, const std::string& name);
 // True when primitive_corners(...) would equal `corners` (TRIANGLES with plain indices: compared
 // in place).
-bool primitive_corners_equal(const tinygltf::Model& model, int indices, int mode, std::size_t vertices,
+bool primitive_corners_equal(const GltfSource& source, int indices, int mode, std::size_t vertices,
                              const std::vector<std::uint32_t>& corners, const std::string& path, const std::string& name);
 
 }  // namespace shadetool::io::gltf

@@ -218,45 +218,72 @@ double raw_component(const unsigned char* p, int component_type) {
   }
 }
 
-// Reads the `count` elements of accessor `a` (values, count * comps); false when its data is not
-// all in buffer 0 within bounds, or it is a matrix whose columns are padded (glTF 2.0 3.6.2.4:
-// MAT2 of bytes, MAT3 of bytes or shorts; left alone).
-bool accessor_values(const json& j, const json& a, const std::string& bytes, std::vector<double>& out) {
-  const int comps = components_of(a.value("type", std::string()));
-  const int ct = a.value("componentType", 0), cb = bytes_of(ct);
-  const std::size_t count = a.value("count", std::size_t(0));
-  if (comps == 0 || cb == 0) return false;
-  const std::string type = a.value("type", std::string());
-  if ((type == "MAT2" && cb == 1) || (type == "MAT3" && cb <= 2)) return false;  // padded columns
-  const std::size_t elem = std::size_t(comps) * std::size_t(cb);
-  out.assign(count * std::size_t(comps), 0.0);
+// Where the dense elements of accessor `a` are in `bytes` (its bufferView's; `first` null when it
+// has no bufferView: zeros); false when they are not all in buffer 0 within bounds, or it is a
+// matrix whose columns are padded (glTF 2.0 3.6.2.4: MAT2 of bytes, MAT3 of bytes or shorts; left
+// alone).
+struct DenseLayout {
+  const unsigned char* first = nullptr;
+  std::size_t count = 0, stride = 0, elem = 0;
+  int comps = 0, component_type = 0, component_bytes = 0;
+};
+
+// The bytes [offset, offset + length) and byteStride of bufferView `ref` when it is in buffer 0
+// within `bytes`.
+bool view_span(const json& j, const json& ref, const std::string& bytes, std::size_t& offset, std::size_t& length,
+               std::size_t& stride) {
   const json& views = j["bufferViews"];
-  auto view_span = [&](const json& ref, std::size_t& offset, std::size_t& length, std::size_t& stride) {
-    if (!is_index(ref) || ref.get<std::size_t>() >= views.size()) return false;
-    const json& v = views[ref.get<std::size_t>()];
-    if (!v.is_object() || v.value("buffer", 0) != 0) return false;
-    offset = v.value("byteOffset", std::size_t(0));
-    length = v.value("byteLength", std::size_t(0));
-    stride = v.value("byteStride", std::size_t(0));
-    return offset + length <= bytes.size();
-  };
+  if (!is_index(ref) || ref.get<std::size_t>() >= views.size()) return false;
+  const json& v = views[ref.get<std::size_t>()];
+  if (!v.is_object() || v.value("buffer", 0) != 0) return false;
+  offset = v.value("byteOffset", std::size_t(0));
+  length = v.value("byteLength", std::size_t(0));
+  stride = v.value("byteStride", std::size_t(0));
+  return offset + length <= bytes.size();
+}
+
+bool dense_layout(const json& j, const json& a, const std::string& bytes, DenseLayout& d) {
+  d = DenseLayout();
+  d.comps = components_of(a.value("type", std::string()));
+  d.component_type = a.value("componentType", 0);
+  d.component_bytes = bytes_of(d.component_type);
+  d.count = a.value("count", std::size_t(0));
+  if (d.comps == 0 || d.component_bytes == 0) return false;
+  const std::string type = a.value("type", std::string());
+  if ((type == "MAT2" && d.component_bytes == 1) || (type == "MAT3" && d.component_bytes <= 2)) return false;  // padded columns
+  d.elem = std::size_t(d.comps) * std::size_t(d.component_bytes);
+  if (!a.contains("bufferView")) return true;
+  std::size_t offset, length, stride;
+  if (!view_span(j, a["bufferView"], bytes, offset, length, stride)) return false;
+  d.stride = stride == 0 ? d.elem : stride;
+  const std::size_t start = a.value("byteOffset", std::size_t(0));
+  if (d.count > 0 && start + (d.count - 1) * d.stride + d.elem > length) return false;
+  d.first = reinterpret_cast<const unsigned char*>(bytes.data()) + offset + start;
+  return true;
+}
+
+bool has_sparse(const json& a) { return a.contains("sparse") && a["sparse"].is_object(); }
+
+// Reads the `count` elements of accessor `a` (values, count * comps); false as dense_layout, or
+// when its sparse substitutions are out of bounds.
+bool accessor_values(const json& j, const json& a, const std::string& bytes, std::vector<double>& out) {
+  DenseLayout d;
+  if (!dense_layout(j, a, bytes, d)) return false;
+  const int comps = d.comps, ct = d.component_type, cb = d.component_bytes;
+  const std::size_t count = d.count, elem = d.elem;
+  out.assign(count * std::size_t(comps), 0.0);
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-  if (a.contains("bufferView")) {
-    std::size_t offset, length, stride;
-    if (!view_span(a["bufferView"], offset, length, stride)) return false;
-    if (stride == 0) stride = elem;
-    const std::size_t start = a.value("byteOffset", std::size_t(0));
-    if (count > 0 && start + (count - 1) * stride + elem > length) return false;
+  if (d.first)
     for (std::size_t i = 0; i < count; ++i)
       for (int k = 0; k < comps; ++k)
-        out[i * std::size_t(comps) + std::size_t(k)] = raw_component(data + offset + start + i * stride + std::size_t(k * cb), ct);
-  }
-  if (a.contains("sparse") && a["sparse"].is_object()) {
+        out[i * std::size_t(comps) + std::size_t(k)] = raw_component(d.first + i * d.stride + std::size_t(k * cb), ct);
+  if (has_sparse(a)) {
     const json& s = a["sparse"];
     const std::size_t n = s.value("count", std::size_t(0));
     if (!s.contains("indices") || !s.contains("values") || !s["indices"].is_object() || !s["values"].is_object()) return false;
     std::size_t io, il, is, vo, vl, vs;
-    if (!view_span(s["indices"].value("bufferView", json()), io, il, is) || !view_span(s["values"].value("bufferView", json()), vo, vl, vs))
+    if (!view_span(j, s["indices"].value("bufferView", json()), bytes, io, il, is) ||
+        !view_span(j, s["values"].value("bufferView", json()), bytes, vo, vl, vs))
       return false;
     const int ict = s["indices"].value("componentType", 0), icb = bytes_of(ict);
     const std::size_t ioff = io + s["indices"].value("byteOffset", std::size_t(0));
@@ -332,19 +359,26 @@ std::size_t exact_bounds(json& j, const std::string& bytes, std::vector<std::str
   for (std::size_t i = 0; i < j["accessors"].size(); ++i) {
     json& a = j["accessors"][i];
     if (!a.is_object() || (!a.contains("min") && !a.contains("max"))) continue;
-    if (!accessor_values(j, a, bytes, values)) continue;
-    const int comps = components_of(a.value("type", std::string()));
-    const int ct = a.value("componentType", 0);
-    const std::size_t count = values.size() / std::size_t(comps);
+    DenseLayout d;
+    if (!dense_layout(j, a, bytes, d)) continue;
+    const int comps = d.comps, ct = d.component_type;
+    const std::size_t count = d.count;
     if (count == 0) continue;
     std::vector<double> lo(std::size_t(comps), std::numeric_limits<double>::infinity()), hi(std::size_t(comps), -lo[0]);
-    for (std::size_t e = 0; e < count; ++e)
-      for (std::size_t k = 0; k < std::size_t(comps); ++k) {
-        const double v = values[e * std::size_t(comps) + k];
-        if (std::isnan(v)) continue;  // NaN takes no part in a bound
-        lo[k] = std::min(lo[k], v);
-        hi[k] = std::max(hi[k], v);
-      }
+    auto bound = [&](std::size_t k, double v) {
+      if (std::isnan(v)) return;  // NaN takes no part in a bound
+      lo[k] = std::min(lo[k], v);
+      hi[k] = std::max(hi[k], v);
+    };
+    if (d.first && !has_sparse(a)) {  // read in place (no copy of the values)
+      for (std::size_t e = 0; e < count; ++e)
+        for (std::size_t k = 0; k < std::size_t(comps); ++k)
+          bound(k, raw_component(d.first + e * d.stride + k * std::size_t(d.component_bytes), ct));
+    } else {
+      if (!accessor_values(j, a, bytes, values)) continue;
+      for (std::size_t e = 0; e < count; ++e)
+        for (std::size_t k = 0; k < std::size_t(comps); ++k) bound(k, values[e * std::size_t(comps) + k]);
+    }
     bool same = a.contains("min") && a.contains("max") && a["min"].is_array() && a["max"].is_array() &&
                 a["min"].size() == std::size_t(comps) && a["max"].size() == std::size_t(comps);
     for (std::size_t k = 0; same && k < std::size_t(comps); ++k)
