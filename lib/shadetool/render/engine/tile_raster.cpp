@@ -2,6 +2,7 @@
 // shading, and the box filter. The formulas it calls live in lib/shadetool/render/*.h by name:
 // fill_rule.h (coverage), perspective_barycentrics.h, inverse_bilinear.h, lighting_adapter.h.
 #include <shadetool/render/engine/screen_triangle.h>
+#include <shadetool/render/engine/depth_row_lanes.h>
 #include <shadetool/render/engine/phong_point_lanes.h>
 
 #include <algorithm>
@@ -365,9 +366,26 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
     std::int64_t row1 = orient(X2, Y2, X0, Y0, px, py) + bias1 - 1;
     std::int64_t row2 = orient(X0, Y0, X1, Y1, px, py) + bias2 - 1;
     const double z0 = t.z[0], z1 = t.z[1], z2 = t.z[2];  // locals: the stores below cannot change them
+    // Four samples at a time where exact (depth_row_lanes.h: the same bits as the loop below).
+    const bool lanes = !count_coverage && depth_row_lanes_exact(t);
+    DepthRow lane_row{{0, 0, 0},
+                      {double(step_x0), double(step_x1), double(step_x2)},
+                      {bias0, bias1, bias2},
+                      inv_area,
+                      {z0, z1, z2}};
     for (int sy = by0; sy <= by1; ++sy) {
       std::int64_t e0 = row0, e1 = row1, e2 = row2;
       std::size_t s = std::size_t(sy - sy0) * std::size_t(tw) + std::size_t(bx0 - sx0);
+      if (lanes) {
+        lane_row.edge[0] = double(e0 + 1 - bias0);
+        lane_row.edge[1] = double(e1 + 1 - bias1);
+        lane_row.edge[2] = double(e2 + 1 - bias2);
+        depth_row_lanes(lane_row, bx1 - bx0 + 1, tp, depth + s, owner + s, lambda1 + s, lambda2 + s);
+        row0 += step_y0;
+        row1 += step_y1;
+        row2 += step_y2;
+        continue;
+      }
       int sx = bx0;
       // The covered samples of a row are one interval (the triangle is convex): skip to it, walk
       // it, and stop at its end.
