@@ -3,6 +3,7 @@
 // fill_rule.h (coverage), perspective_barycentrics.h, inverse_bilinear.h, lighting_adapter.h.
 #include <shadetool/render/engine/screen_triangle.h>
 #include <shadetool/render/engine/depth_row_lanes.h>
+#include <shadetool/render/engine/gouraud_run_lanes.h>
 #include <shadetool/render/engine/phong_point_lanes.h>
 
 #include <algorithm>
@@ -159,11 +160,12 @@ struct GouraudCorners {
 // One sample per pixel, Gouraud, a run of n pixels that one direct triangle owns (GouraudCorners).
 // The scalar loop is the definition: per pixel the operations of the general loop in the same
 // order (lambda, perspective_barycentrics, blend_vertex_colors, the box filter's sum and scale).
-// With SSE2 two pixels go through the very same IEEE operations side by side (no fused
-// multiply-add, same order, the same selects), so the floats are bitwise the scalar loop's.
+// With AVX2 four pixels (gouraud_run_lanes.h), then with SSE2 two, go through the very same IEEE
+// operations side by side (no fused multiply-add, same order, the same selects), so the floats are
+// bitwise the scalar loop's.
 void gouraud_run(const Vec3d corner_rgb[3], const double inv_w[3], const double* lambda1, const double* lambda2,
                  int n, double inv_samples, float* out) {
-  int i = 0;
+  int i = gouraud_run_lanes(corner_rgb, inv_w, lambda1, lambda2, n, inv_samples, out);  // four at a time (AVX2)
 #if defined(__SSE2__)
   const __m128d one = _mm_set1_pd(1.0), zero = _mm_setzero_pd(), scale = _mm_set1_pd(inv_samples);
   const __m128d iw0 = _mm_set1_pd(inv_w[0]), iw1 = _mm_set1_pd(inv_w[1]), iw2 = _mm_set1_pd(inv_w[2]);
