@@ -16,13 +16,6 @@
 namespace shadetool {
 namespace lighting_engine {
 
-namespace {
-
-// An exponent the double-double power takes: an integer in [0, 2^20] (0: x^0 = 1, as std::pow).
-bool integer_exponent(double e) { return e >= 0 && e <= 0x1p20 && e == std::floor(e); }
-
-}  // namespace
-
 bool point_lanes_support(const PointLighting& lighting) {
   for (const SpaceLight& light : lighting.frame.lights) switch (light.type) {
       case LightType::Directional:
@@ -48,6 +41,9 @@ bool point_lanes_available() {
 #define LANES_TARGET __attribute__((target("avx2,fma")))
 
 namespace {
+
+// An exponent the double-double power takes: an integer in [0, 2^20] (0: x^0 = 1, as std::pow).
+bool integer_exponent(double e) { return e >= 0 && e <= 0x1p20 && e == std::floor(e); }
 
 struct V3 {
   __m256d x, y, z;
