@@ -2,6 +2,7 @@
 #include <shadetool/lighting/shade_point.h>
 
 #include <shadetool/lighting/engine/shade_point.h>
+#include <shadetool/lighting/engine/shade_point_lanes.h>
 
 namespace shadetool {
 
@@ -46,6 +47,21 @@ Vec3d shade_point_shadowed(const PointLighting& lighting, const Vec3d& position_
   return lighting_engine::shade_point_in_space<true, true>(lighting_engine::IdentityMetric{}, lighting.frame, eq,
                                                           position_world, normal_world, counters ? *counters : local,
                                                           visibility);
+}
+
+void shade_point_block(const PointLighting& lighting, const PointBlock& block, double* rgb_out, ShadeCounters* counters) {
+  ShadeCounters local;
+  ShadeCounters& count = counters ? *counters : local;
+  auto scalar_point = [&](std::size_t i) {
+    const Vec3d c = shade_point(lighting, {block.px[i], block.py[i], block.pz[i]}, {block.nx[i], block.ny[i], block.nz[i]},
+                                &count);
+    rgb_out[3 * i] = c.x, rgb_out[3 * i + 1] = c.y, rgb_out[3 * i + 2] = c.z;
+  };
+  if (!lighting_engine::point_lanes_available() || !lighting_engine::point_lanes_support(lighting)) {
+    for (std::size_t i = 0; i < block.count; ++i) scalar_point(i);
+    return;
+  }
+  lighting_engine::shade_point_lanes(lighting, block, rgb_out, count);
 }
 
 }  // namespace shadetool

@@ -15,6 +15,7 @@
 // world space); shade_point only reads it, so any number of threads may call it at once.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 
 #include <shadetool/lighting/lighting_plan.h>
@@ -45,6 +46,22 @@ Vec3d shade_point(const PointLighting& lighting, const Vec3d& position_world, co
 // shade_point's bits.
 Vec3d shade_point_shadowed(const PointLighting& lighting, const Vec3d& position_world, const Vec3d& normal_world,
                            const double* visibility, ShadeCounters* counters = nullptr);
+
+// count points at once, as structure of arrays (world space; each pointer #count).
+struct PointBlock {
+  std::size_t count = 0;
+  const double *px = nullptr, *py = nullptr, *pz = nullptr;
+  const double *nx = nullptr, *ny = nullptr, *nz = nullptr;
+};
+
+// shade_point for every point of block, into rgb_out (#count by 3). Where the CPU has AVX2 and FMA
+// and every light is directional, point or spot, four points at a time (engine/shade_point_lanes.h):
+// the same bits as shade_point except that an integer power (shininess, spot exponent) is
+// computed correctly rounded where glibc's pow is within 0.52 ulp, so a power can differ from
+// shade_point's by one ulp, rarely (measured in tests/lighting/shade_point.cpp); otherwise
+// shade_point point by point.
+void shade_point_block(const PointLighting& lighting, const PointBlock& block, double* rgb_out,
+                       ShadeCounters* counters = nullptr);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

@@ -9,7 +9,8 @@
 //                         (lighting/lit_normals.h, the one home of that choice), #V by 3 object
 //                         space, so that Phong at a vertex equals the baked colour there
 //   PointShader           Phong: lighting/shade_point.h (the lighting equation at one world-space
-//                         point with a world-space normal; every light kind lighting supports);
+//                         point with a world-space normal, or a block of them; every light kind
+//                         lighting supports);
 //                         with shadows, lighting/light_visibility.h over the mesh in world space
 //                         (lighting/world_occluders.h), the visibility multiplying each light's terms
 //   shadows (all three)   RenderLightingOptions::shadows: flat and Gouraud take bake_lighting's own
@@ -57,6 +58,12 @@ class PointShader {
   // The linear colour at p_world with normal n_world (any length; zero: ambient terms only).
   Vec3d shade(const Vec3d& p_world, const Vec3d& n_world, ShadeCounters& count) const {
     return shade_point(lighting_, p_world, n_world, &count);
+  }
+
+  // Many points at once (lighting/shade_point.h's shade_point_block: four at a time in vector
+  // lanes where it can), rgb_out #count by 3.
+  void shade_block(const PointBlock& block, double* rgb_out, ShadeCounters& count) const {
+    shade_point_block(lighting_, block, rgb_out, &count);
   }
 
   // Shadows: whether they are on, the visibility rows of points (world space, #P by 3 each; ids

@@ -2,6 +2,9 @@
 // shading, and the box filter. The formulas it calls live in lib/shadetool/render/*.h by name:
 // fill_rule.h (coverage), perspective_barycentrics.h, inverse_bilinear.h, lighting_adapter.h.
 #include <shadetool/render/engine/screen_triangle.h>
+#include <shadetool/render/engine/depth_row_lanes.h>
+#include <shadetool/render/engine/gouraud_run_lanes.h>
+#include <shadetool/render/engine/phong_point_lanes.h>
 
 #include <algorithm>
 #include <cmath>
@@ -127,11 +130,7 @@ void phong_point(const RasterInput& in, const ScreenTriangle& t, const double la
     p += get3(s.positions_world, w.vertex[k]) * w.weight[k];
     n += get3(s.normals_world, w.vertex[k]) * w.weight[k];
   }
-  // Renormalised. Vertex normals are finite (checked on input) and usually unit, so the plain
-  // squared length is safe; outside [2^-1000, 2^1000] (opposite normals cancelling, absurd
-  // input lengths) the normal counts as zero and the equation keeps only the ambient terms.
-  const double n2 = dot(n, n);
-  n = n2 > 0x1p-1000 && n2 <= 0x1p1000 ? n * (1.0 / std::sqrt(n2)) : Vec3d{0, 0, 0};  // divisor checked
+  n = unit_or_zero_normal(n);  // phong_point_lanes.h
 }
 
 // Gouraud's colour at a sample: the corners' colours blended by the sample's weights, summed in
@@ -161,11 +160,12 @@ struct GouraudCorners {
 // One sample per pixel, Gouraud, a run of n pixels that one direct triangle owns (GouraudCorners).
 // The scalar loop is the definition: per pixel the operations of the general loop in the same
 // order (lambda, perspective_barycentrics, blend_vertex_colors, the box filter's sum and scale).
-// With SSE2 two pixels go through the very same IEEE operations side by side (no fused
-// multiply-add, same order, the same selects), so the floats are bitwise the scalar loop's.
+// With AVX2 four pixels (gouraud_run_lanes.h), then with SSE2 two, go through the very same IEEE
+// operations side by side (no fused multiply-add, same order, the same selects), so the floats are
+// bitwise the scalar loop's.
 void gouraud_run(const Vec3d corner_rgb[3], const double inv_w[3], const double* lambda1, const double* lambda2,
                  int n, double inv_samples, float* out) {
-  int i = 0;
+  int i = gouraud_run_lanes(corner_rgb, inv_w, lambda1, lambda2, n, inv_samples, out);  // four at a time (AVX2)
 #if defined(__SSE2__)
   const __m128d one = _mm_set1_pd(1.0), zero = _mm_setzero_pd(), scale = _mm_set1_pd(inv_samples);
   const __m128d iw0 = _mm_set1_pd(inv_w[0]), iw1 = _mm_set1_pd(inv_w[1]), iw2 = _mm_set1_pd(inv_w[2]);
@@ -227,6 +227,64 @@ Vec3d shade_sample(const RasterInput& in, const ScreenTriangle& t, const double 
     }
   }
   return {0, 0, 0};
+}
+
+// One sample per pixel, Phong, no shadows: pixels [px0, px1) of one tile row (owner, lambda1 and
+// lambda2 indexed by pixel x), into out (3 floats a pixel, from px0). The visible samples' points
+// and normals (phong_point's: a run of pixels that one unclipped triangle owns by
+// phong_points_run, four at a time in vector lanes, others one by one) are shaded as one block
+// (PointShader::shade_block: four at a time in vector lanes), then written as the general loop
+// writes them (0 + colour, scaled). Returns the number of covered pixels.
+std::size_t phong_row(const RasterInput& in, const ScreenTriangle* const* owner, const double* lambda1,
+                      const double* lambda2, int px0, int px1, double inv_samples, ShadeCounters& counters,
+                      std::size_t& fallbacks, float* out) {
+  double px[kMaxTilePixels], py[kMaxTilePixels], pz[kMaxTilePixels];
+  double nx[kMaxTilePixels], ny[kMaxTilePixels], nz[kMaxTilePixels];
+  double rgb[3 * kMaxTilePixels];
+  int pixel[kMaxTilePixels];
+  std::size_t k = 0;
+  const Vec3d background = in.surface->background;
+  for (int x = px0; x < px1; ++x) {
+    const ScreenTriangle* t = owner[x];
+    if (t == nullptr) {
+      Vec3d sum{0, 0, 0};
+      sum += background;
+      float* o = out + 3 * (x - px0);
+      o[0] = float(sum.x * inv_samples), o[1] = float(sum.y * inv_samples), o[2] = float(sum.z * inv_samples);
+      continue;
+    }
+    if (!t->quad && t->clip_index < 0) {  // sample_weights' fast path: the run this triangle owns
+      int end = x + 1;
+      while (end < px1 && owner[end] == t) ++end;
+      const SurfaceInputs& s = *in.surface;
+      Vec3d corner_p[3], corner_n[3];
+      for (int i = 0; i < 3; ++i) {
+        corner_p[i] = get3(s.positions_world, t->vertex[t->perm[i]]);
+        corner_n[i] = get3(s.normals_world, t->vertex[t->perm[i]]);
+      }
+      phong_points_run(corner_p, corner_n, t->inv_w, lambda1 + x, lambda2 + x, std::size_t(end - x),
+                       {px + k, py + k, pz + k, nx + k, ny + k, nz + k});
+      for (; x < end; ++x) pixel[k++] = x - px0;
+      --x;  // the loop's ++x
+      continue;
+    }
+    const double lambda[3] = {1.0 - lambda1[x] - lambda2[x], lambda1[x], lambda2[x]};
+    Vec3d p, n;
+    phong_point(in, *t, lambda, fallbacks, p, n);
+    px[k] = p.x, py[k] = p.y, pz[k] = p.z, nx[k] = n.x, ny[k] = n.y, nz[k] = n.z;
+    pixel[k++] = x - px0;
+  }
+  PointBlock block;
+  block.count = k;
+  block.px = px, block.py = py, block.pz = pz, block.nx = nx, block.ny = ny, block.nz = nz;
+  in.surface->shader->shade_block(block, rgb, counters);
+  for (std::size_t j = 0; j < k; ++j) {
+    Vec3d sum{0, 0, 0};
+    sum += Vec3d{rgb[3 * j], rgb[3 * j + 1], rgb[3 * j + 2]};
+    float* o = out + 3 * pixel[j];
+    o[0] = float(sum.x * inv_samples), o[1] = float(sum.y * inv_samples), o[2] = float(sum.z * inv_samples);
+  }
+  return k;
 }
 
 struct TileResult {
@@ -310,9 +368,26 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
     std::int64_t row1 = orient(X2, Y2, X0, Y0, px, py) + bias1 - 1;
     std::int64_t row2 = orient(X0, Y0, X1, Y1, px, py) + bias2 - 1;
     const double z0 = t.z[0], z1 = t.z[1], z2 = t.z[2];  // locals: the stores below cannot change them
+    // Four samples at a time where exact (depth_row_lanes.h: the same bits as the loop below).
+    const bool lanes = !count_coverage && depth_row_lanes_exact(t);
+    DepthRow lane_row{{0, 0, 0},
+                      {double(step_x0), double(step_x1), double(step_x2)},
+                      {bias0, bias1, bias2},
+                      inv_area,
+                      {z0, z1, z2}};
     for (int sy = by0; sy <= by1; ++sy) {
       std::int64_t e0 = row0, e1 = row1, e2 = row2;
       std::size_t s = std::size_t(sy - sy0) * std::size_t(tw) + std::size_t(bx0 - sx0);
+      if (lanes) {
+        lane_row.edge[0] = double(e0 + 1 - bias0);
+        lane_row.edge[1] = double(e1 + 1 - bias1);
+        lane_row.edge[2] = double(e2 + 1 - bias2);
+        depth_row_lanes(lane_row, bx1 - bx0 + 1, tp, depth + s, owner + s, lambda1 + s, lambda2 + s);
+        row0 += step_y0;
+        row1 += step_y1;
+        row2 += step_y2;
+        continue;
+      }
       int sx = bx0;
       // The covered samples of a row are one interval (the triangle is convex): skip to it, walk
       // it, and stop at its end.
@@ -370,6 +445,12 @@ TileResult raster_tile(const RasterInput& in, const std::vector<const ScreenTria
     GouraudCorners corners;
     for (int py = py0; py < py1; ++py) {
       const std::size_t s_row = std::size_t(py - py0) * std::size_t(tw) - std::size_t(px0);
+      if (in.surface->shading == RenderShading::Phong) {
+        r.covered += phong_row(in, owner + s_row, lambda1 + s_row, lambda2 + s_row, px0, px1, inv_samples, counters,
+                               r.fallbacks, tile_row);
+        write_image_row(out.image.pixel(px0, py), tile_row, row_floats);
+        continue;
+      }
       for (int pxl = px0; pxl < px1;) {
         const std::size_t s = s_row + std::size_t(pxl);
         const ScreenTriangle* t = owner[s];
