@@ -6,8 +6,6 @@
 #include <cmath>
 #include <string>
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCore>
 
 #include <shadetool/core/error.h>
 #include <shadetool/fit/triangle_quadrature.h>
@@ -16,9 +14,6 @@
 namespace shadetool {
 
 namespace {
-
-using SparseMatrix = Eigen::SparseMatrix<double>;
-using Triplet = Eigen::Triplet<double>;
 
 Vec3d vertex_position(const std::vector<double>& positions, std::uint32_t v) { return get3(positions, v); }
 
@@ -72,6 +67,246 @@ bool edge_kink(const Vec3d& pa, const Vec3d& pb, const Vec3d& pw1, const Vec3d& 
   const double area_sum = 0.5 * L * (y1 + y2);
   weight = area_sum * area_sum;
   return true;
+}
+
+// M + lambda R as element data (least_squares_fit.h), applied to a block of channels without
+// assembling a sparse matrix: each CG step is one pass over the elements, and building the
+// matrix (Eigen's setFromTriplets) cost more than the whole solve (bench/fit/results.md).
+struct FitOperator {
+  std::vector<std::uint32_t> tri_node;   // 3 per triangle of positive area
+  std::vector<double> tri_scale;         // 1 per triangle: area / 12
+  std::vector<std::uint32_t> quad_node;  // 4 per quad with mass
+  std::vector<double> quad_mass;         // 16 per quad: its 4 x 4 block of M
+  std::vector<std::uint32_t> edge_node;  // 4 per regularised edge: a, b, wing 1, wing 2
+  std::vector<double> edge_d;            // 4 per edge: d sqrt(lambda (A1 + A2)^2), R_e = (d . c)^2
+  std::vector<double> diagonal;          // #nodes: of M + lambda R
+};
+
+// y = A x for x, y #nodes by W (W = 0: `width` channels). Sequential in element order: the same
+// bits for any thread count.
+template <std::size_t W>
+void apply_operator(const FitOperator& A, const double* x, double* y, std::size_t width) {
+  const std::size_t w = W ? W : width;
+  std::fill(y, y + A.diagonal.size() * w, 0.0);
+  const std::size_t T = A.tri_scale.size();
+  for (std::size_t t = 0; t < T; ++t) {  // area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T)
+    const std::size_t n0 = A.tri_node[3 * t] * w, n1 = A.tri_node[3 * t + 1] * w, n2 = A.tri_node[3 * t + 2] * w;
+    const double s = A.tri_scale[t];
+    for (std::size_t k = 0; k < w; ++k) {
+      const double x0 = x[n0 + k], x1 = x[n1 + k], x2 = x[n2 + k], sum = x0 + x1 + x2;
+      y[n0 + k] += s * (x0 + sum);
+      y[n1 + k] += s * (x1 + sum);
+      y[n2 + k] += s * (x2 + sum);
+    }
+  }
+  for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
+    const std::uint32_t* n = &A.quad_node[4 * k];
+    const double* m = &A.quad_mass[16 * k];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (std::size_t c = 0; c < w; ++c) y[n[i] * w + c] += m[4 * i + j] * x[n[j] * w + c];
+  }
+  for (std::size_t k = 0; k < A.edge_d.size() / 4; ++k) {
+    const std::uint32_t* n = &A.edge_node[4 * k];
+    const double* d = &A.edge_d[4 * k];
+    for (std::size_t c = 0; c < w; ++c) {
+      const double dx = d[0] * x[n[0] * w + c] + d[1] * x[n[1] * w + c] + d[2] * x[n[2] * w + c] + d[3] * x[n[3] * w + c];
+      for (int i = 0; i < 4; ++i) y[n[i] * w + c] += d[i] * dx;
+    }
+  }
+}
+
+// The elements' M (and lambda R) as FitOperator, M's diagonal, R's edge counts in `fit`.
+void build_fit_operator(const FitElements& e, const std::vector<double>& positions, double lambda, FitOperator& A,
+                        std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
+  const std::size_t N = e.nodes, T = e.tri_face.size();
+  A.diagonal.assign(N, 0.0);
+  A.tri_node.reserve(3 * T);
+  A.tri_scale.reserve(T);
+  std::vector<RegTriangle> reg;
+  if (lambda > 0) reg.reserve(T + 2 * e.quad_face.size());
+  // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
+  for (std::size_t t = 0; t < T; ++t) {
+    const std::uint32_t* n = &e.tri_node[3 * t];
+    const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
+    if (!(area > 0)) continue;
+    A.tri_node.insert(A.tri_node.end(), n, n + 3);
+    A.tri_scale.push_back(area / 12);
+    for (int i = 0; i < 3; ++i) A.diagonal[n[i]] += area / 6;
+    if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {e.tri_vertex[3 * t], e.tri_vertex[3 * t + 1], e.tri_vertex[3 * t + 2]}});
+  }
+  // M, quads: 3x3 Gauss-Legendre on the bilinear map.
+  const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
+  for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
+    const std::uint32_t* n = &e.quad_node[4 * k];
+    const std::uint32_t* v = &e.quad_vertex[4 * k];
+    Vec3d c[4];
+    quad_corners(e, positions, k, c);
+    double m[16] = {};
+    for (const GaussPoint& gu : gauss)
+      for (const GaussPoint& gv : gauss) {
+        const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
+        const double w = gu.weight * gv.weight * b.area_element;
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j) m[4 * i + j] += w * b.phi[i] * b.phi[j];
+      }
+    if (!(m[0] + m[5] + m[10] + m[15] > 0)) continue;
+    A.quad_node.insert(A.quad_node.end(), n, n + 4);
+    A.quad_mass.insert(A.quad_mass.end(), m, m + 16);
+    for (int i = 0; i < 4; ++i) A.diagonal[n[i]] += m[5 * i];
+    if (lambda > 0) {
+      reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
+      reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
+    }
+  }
+  mass_diagonal = A.diagonal;
+  if (!(lambda > 0)) return;
+
+  // R: the interior edges (exactly two triangles of positive area), found by sorting the sides.
+  struct Side {
+    std::uint64_t key;  // (min node, max node)
+    std::uint32_t triangle;
+    std::uint8_t opposite;  // local index of the wing
+  };
+  std::vector<Side> sides;
+  sides.reserve(3 * reg.size());
+  for (std::size_t t = 0; t < reg.size(); ++t) {
+    if (!(triangle_area(positions, reg[t].vertex) > 0)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = reg[t].node[(k + 1) % 3], b = reg[t].node[(k + 2) % 3];
+      sides.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), std::uint32_t(t), std::uint8_t(k)});
+    }
+  }
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
+    return x.key != y.key ? x.key < y.key : x.triangle < y.triangle;
+  });
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i;
+    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
+    if (j - i == 2) {
+      const RegTriangle& t1 = reg[sides[i].triangle];
+      const RegTriangle& t2 = reg[sides[i + 1].triangle];
+      const int k1 = sides[i].opposite, k2 = sides[i + 1].opposite;
+      const std::uint32_t a = t1.node[(k1 + 1) % 3], b = t1.node[(k1 + 2) % 3];
+      const std::uint32_t va = t1.vertex[(k1 + 1) % 3], vb = t1.vertex[(k1 + 2) % 3];
+      const std::uint32_t nodes[4] = {a, b, t1.node[k1], t2.node[k2]};
+      double d[4], weight = 0;
+      if (edge_kink(get3(positions, va), get3(positions, vb), get3(positions, t1.vertex[k1]),
+                    get3(positions, t2.vertex[k2]), d, weight)) {
+        const double root = std::sqrt(lambda * weight);
+        for (int r = 0; r < 4; ++r) {
+          A.edge_node.push_back(nodes[r]);
+          A.edge_d.push_back(root * d[r]);
+        }
+        for (int r = 0; r < 4; ++r) A.diagonal[nodes[r]] += lambda * weight * d[r] * d[r];
+        ++fit.regularized_edges;
+      } else {
+        ++fit.skipped_edges;
+      }
+    }
+    i = j;
+  }
+}
+
+struct BlockCgOptions {
+  double tolerance = 1e-10;        // relative residual per channel
+  double accuracy_residual = 0;    // > 0: also stop a channel once |A c - b|_2 <= this
+  int max_iterations = 0;
+};
+
+// Jacobi-preconditioned conjugate gradient (Hestenes & Stiefel; the loop of Eigen's
+// ConjugateGradient) on every channel of the block at once: one operator pass per step serves all
+// channels, each with its own step lengths and its own stop. x: #nodes by width, the first guess in,
+// the solution out; rows in off_system stay 0. Counts into fit (iterations: operator passes, the
+// most over channels; residual: the largest relative residual; converged). W = 0: `width` channels.
+template <std::size_t W>
+void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
+                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b,
+                              std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
+  const std::size_t w = W ? W : width, N = inverse_diagonal.size(), n = N * w;
+  std::vector<double> r(n), z(n), p(n), Ap(n);
+  const auto apply = [&](const std::vector<double>& in, std::vector<double>& out) {
+    apply_operator<W>(A, in.data(), out.data(), w);
+    for (std::uint32_t i : off_system)
+      for (std::size_t k = 0; k < w; ++k) out[i * w + k] = 0;
+  };
+  std::vector<double> rhs2(w, 0.0), res2(w, 0.0), threshold(w), abs_new(w, 0.0), abs_old(w), pAp(w), alpha(w), beta(w);
+  std::vector<char> active(w, 1);
+  apply(x, Ap);
+  for (std::size_t i = 0; i < n; i += w)
+    for (std::size_t k = 0; k < w; ++k) {
+      r[i + k] = b[i + k] - Ap[i + k];
+      rhs2[k] += b[i + k] * b[i + k];
+      res2[k] += r[i + k] * r[i + k];
+    }
+  std::size_t running = 0;
+  for (std::size_t k = 0; k < w; ++k) {
+    threshold[k] = std::max({o.tolerance * o.tolerance * rhs2[k], o.accuracy_residual * o.accuracy_residual,
+                             std::numeric_limits<double>::min()});
+    if (rhs2[k] == 0) {  // b = 0: the solution is 0
+      for (std::size_t i = k; i < n; i += w) x[i] = 0;
+      res2[k] = 0;
+      active[k] = 0;
+    } else if (res2[k] < threshold[k]) {
+      active[k] = 0;
+    } else {
+      ++running;
+    }
+  }
+  for (std::size_t i = 0, node = 0; i < n; i += w, ++node)
+    for (std::size_t k = 0; k < w; ++k) {
+      p[i + k] = r[i + k] * inverse_diagonal[node];
+      abs_new[k] += r[i + k] * p[i + k];
+    }
+  int iterations = 0;
+  while (running > 0 && iterations < o.max_iterations) {
+    apply(p, Ap);
+    ++iterations;
+    std::fill(pAp.begin(), pAp.end(), 0.0);
+    for (std::size_t i = 0; i < n; i += w)
+      for (std::size_t k = 0; k < w; ++k) pAp[k] += p[i + k] * Ap[i + k];
+    for (std::size_t k = 0; k < w; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
+      alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
+    std::fill(res2.begin(), res2.end(), 0.0);
+    for (std::size_t i = 0; i < n; i += w)
+      for (std::size_t k = 0; k < w; ++k) {
+        x[i + k] += alpha[k] * p[i + k];
+        r[i + k] -= alpha[k] * Ap[i + k];
+        res2[k] += r[i + k] * r[i + k];
+      }
+    for (std::size_t k = 0; k < w; ++k)
+      if (active[k] && (res2[k] < threshold[k] || !(pAp[k] > 0))) {
+        active[k] = 0;
+        --running;
+      }
+    if (running == 0) break;
+    abs_old = abs_new;
+    std::fill(abs_new.begin(), abs_new.end(), 0.0);
+    for (std::size_t i = 0, node = 0; i < n; i += w, ++node)
+      for (std::size_t k = 0; k < w; ++k) {
+        z[i + k] = r[i + k] * inverse_diagonal[node];
+        abs_new[k] += r[i + k] * z[i + k];
+      }
+    for (std::size_t k = 0; k < w; ++k)  // divisor checked
+      beta[k] = abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
+    for (std::size_t i = 0; i < n; i += w)
+      for (std::size_t k = 0; k < w; ++k)
+        if (active[k]) p[i + k] = z[i + k] + beta[k] * p[i + k];
+  }
+  fit.iterations = iterations;
+  for (std::size_t k = 0; k < w; ++k) {
+    const double relative = rhs2[k] > 0 ? std::sqrt(res2[k] / rhs2[k]) : 0.0;  // divisor checked
+    fit.residual = std::max(fit.residual, relative);
+    fit.converged = fit.converged && res2[k] < threshold[k];
+  }
+}
+
+void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
+                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b,
+                              std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
+  if (width == 1) block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, width, o, x, fit);
+  else if (width == 3) block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b, width, o, x, fit);
+  else block_conjugate_gradient<0>(A, inverse_diagonal, off_system, b, width, o, x, fit);
 }
 
 }  // namespace
@@ -188,154 +423,43 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   if (!(options.regularization >= 0) || !std::isfinite(options.regularization))
     throw Error("least_squares_fit: the regularization weight must be finite and >= 0");
   LeastSquaresFit fit;
-  std::vector<Triplet> triplets;
-  triplets.reserve(9 * e.tri_face.size() + 16 * e.quad_face.size() +
-                   (options.regularization > 0 ? 16 * 3 * (e.tri_face.size() + 2 * e.quad_face.size()) / 2 : 0));
-  std::vector<double> diagonal(N, 0.0), mass_diagonal(N, 0.0);  // of M + lambda R, of M
-  const auto add = [&](std::uint32_t i, std::uint32_t j, double v) {
-    triplets.emplace_back(int(i), int(j), v);
-    if (i == j) diagonal[i] += v;
-  };
-  const auto add_mass = [&](std::uint32_t i, std::uint32_t j, double v) {
-    add(i, j, v);
-    if (i == j) mass_diagonal[i] += v;
-  };
-
-  // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
-  const std::size_t T = e.tri_face.size();
-  std::vector<RegTriangle> reg;
-  reg.reserve(T + 2 * e.quad_face.size());
-  for (std::size_t t = 0; t < T; ++t) {
-    const std::uint32_t* n = &e.tri_node[3 * t];
-    const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
-    if (!(area > 0)) continue;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) add_mass(n[i], n[j], area / 12 * (i == j ? 2 : 1));
-    if (options.regularization > 0)
-      reg.push_back({{n[0], n[1], n[2]}, {e.tri_vertex[3 * t], e.tri_vertex[3 * t + 1], e.tri_vertex[3 * t + 2]}});
-  }
-  // M, quads: 3x3 Gauss-Legendre on the bilinear map.
-  const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
-  for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
-    const std::uint32_t* n = &e.quad_node[4 * k];
-    const std::uint32_t* v = &e.quad_vertex[4 * k];
-    Vec3d c[4];
-    quad_corners(e, positions, k, c);
-    double m[4][4] = {};
-    for (const GaussPoint& gu : gauss)
-      for (const GaussPoint& gv : gauss) {
-        const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
-        const double w = gu.weight * gv.weight * b.area_element;
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j) m[i][j] += w * b.phi[i] * b.phi[j];
-      }
-    if (!(m[0][0] + m[1][1] + m[2][2] + m[3][3] > 0)) continue;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) add_mass(n[i], n[j], m[i][j]);
-    if (options.regularization > 0) {
-      reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
-      reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
-    }
-  }
-
-  // R: the interior edges (exactly two triangles of positive area), found by sorting the sides.
-  if (options.regularization > 0) {
-    struct Side {
-      std::uint64_t key;  // (min node, max node)
-      std::uint32_t triangle;
-      std::uint8_t opposite;  // local index of the wing
-    };
-    std::vector<Side> sides;
-    sides.reserve(3 * reg.size());
-    for (std::size_t t = 0; t < reg.size(); ++t) {
-      if (!(triangle_area(positions, reg[t].vertex) > 0)) continue;
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t a = reg[t].node[(k + 1) % 3], b = reg[t].node[(k + 2) % 3];
-        sides.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), std::uint32_t(t), std::uint8_t(k)});
-      }
-    }
-    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-      return x.key != y.key ? x.key < y.key : x.triangle < y.triangle;
-    });
-    for (std::size_t i = 0; i < sides.size();) {
-      std::size_t j = i;
-      while (j < sides.size() && sides[j].key == sides[i].key) ++j;
-      if (j - i == 2) {
-        const RegTriangle& t1 = reg[sides[i].triangle];
-        const RegTriangle& t2 = reg[sides[i + 1].triangle];
-        const int k1 = sides[i].opposite, k2 = sides[i + 1].opposite;
-        const std::uint32_t a = t1.node[(k1 + 1) % 3], b = t1.node[(k1 + 2) % 3];
-        const std::uint32_t va = t1.vertex[(k1 + 1) % 3], vb = t1.vertex[(k1 + 2) % 3];
-        const std::uint32_t nodes[4] = {a, b, t1.node[k1], t2.node[k2]};
-        double d[4], weight = 0;
-        if (edge_kink(get3(positions, va), get3(positions, vb), get3(positions, t1.vertex[k1]),
-                      get3(positions, t2.vertex[k2]), d, weight)) {
-          const double s = options.regularization * weight;
-          for (int r = 0; r < 4; ++r)
-            for (int c = 0; c < 4; ++c) add(nodes[r], nodes[c], s * d[r] * d[c]);
-          ++fit.regularized_edges;
-        } else {
-          ++fit.skipped_edges;
-        }
-      }
-      i = j;
-    }
-  }
+  FitOperator A;
+  std::vector<double> mass_diagonal;
+  build_fit_operator(e, positions, options.regularization, A, mass_diagonal, fit);
 
   // The system over the nodes with mass; the others keep their point value.
-  std::vector<int> index(N, -1);
-  int n_active = 0;
+  std::vector<double> inverse_diagonal(N, 0.0);  // Jacobi preconditioner; 0 off the system
+  std::vector<std::uint32_t> off_system;
+  double min_mass = std::numeric_limits<double>::infinity();  // over the nodes of the system
   for (std::size_t i = 0; i < N; ++i) {
-    if (diagonal[i] > 0) index[i] = n_active++;
-    else ++fit.fallback_nodes;
+    if (A.diagonal[i] > 0) {
+      inverse_diagonal[i] = 1 / A.diagonal[i];  // divisor checked
+      min_mass = std::min(min_mass, mass_diagonal[i]);
+    } else {
+      off_system.push_back(std::uint32_t(i));
+      ++fit.fallback_nodes;
+    }
   }
   fit.values = point_values;
-  if (n_active > 0) {
-    std::vector<Triplet> mapped;
-    mapped.reserve(triplets.size());
-    for (const Triplet& t : triplets) {
-      const int r = index[std::size_t(t.row())], c = index[std::size_t(t.col())];
-      if (r >= 0 && c >= 0) mapped.emplace_back(r, c, t.value());
-    }
-    triplets.clear();
-    triplets.shrink_to_fit();
-    SparseMatrix A(n_active, n_active);
-    A.setFromTriplets(mapped.begin(), mapped.end());
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
-    cg.setTolerance(options.tolerance);
-    if (options.max_iterations > 0) cg.setMaxIterations(options.max_iterations);
-    cg.compute(A);
-    double min_mass = std::numeric_limits<double>::infinity();  // over the active nodes
-    for (std::size_t i = 0; i < N; ++i)
-      if (index[i] >= 0) min_mass = std::min(min_mass, mass_diagonal[i]);
-    // b for every channel in one pass over the points (each entry summed in point order, as one
-    // pass per channel would).
-    std::vector<double> b_all(std::size_t(n_active) * width, 0.0);
+  if (off_system.size() < N) {
+    // b for every channel in one pass over the points.
+    std::vector<double> b(N * width, 0.0);
     for (std::size_t s = 0; s < S; ++s)
       for (int j = 0; j < 4; ++j) {
-        const int r = index[q.node[4 * s + j]];
-        if (r < 0) continue;
+        const std::size_t r = q.node[4 * s + j];
         const double w = q.weight[s] * q.phi[4 * s + j];
-        for (std::size_t k = 0; k < width; ++k) b_all[std::size_t(r) * width + k] += w * f[s * width + k];
+        if (w == 0 || inverse_diagonal[r] == 0) continue;
+        for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * f[s * width + k];
       }
-    for (std::size_t k = 0; k < width; ++k) {
-      Eigen::VectorXd b(n_active), x0(n_active);
-      for (int r = 0; r < n_active; ++r) b[r] = b_all[std::size_t(r) * width + k];
-      for (std::size_t i = 0; i < N; ++i)
-        if (index[i] >= 0) x0[index[i]] = point_values[i * width + k];
-      // accuracy: |A c - b|_2 <= accuracy min M_ii / 4 bounds every value's error (header, Solver).
-      const double b_norm = b.norm();
-      double tolerance = options.tolerance;
-      if (options.accuracy > 0 && b_norm > 0 && min_mass > 0 && std::isfinite(min_mass))
-        tolerance = std::max(tolerance, options.accuracy * min_mass / 4 / b_norm);  // divisor checked
-      cg.setTolerance(tolerance);
-      const Eigen::VectorXd x = cg.solveWithGuess(b, x0);
-      fit.iterations = std::max(fit.iterations, int(cg.iterations()));
-      fit.residual = std::max(fit.residual, double(cg.error()));
-      fit.converged = fit.converged && cg.info() == Eigen::Success;
-      for (std::size_t i = 0; i < N; ++i)
-        if (index[i] >= 0) fit.values[i * width + k] = x[index[i]];
-    }
+    for (std::uint32_t i : off_system)
+      for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = 0;  // out of the system during CG
+    BlockCgOptions cg;
+    cg.tolerance = options.tolerance;
+    cg.accuracy_residual = options.accuracy > 0 && min_mass > 0 && std::isfinite(min_mass) ? options.accuracy * min_mass / 4 : 0;
+    cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b, width, cg, fit.values, fit);
+    for (std::uint32_t i : off_system)
+      for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = point_values[i * width + k];
   }
   for (double& v : fit.values) {
     if (v < options.lower) {

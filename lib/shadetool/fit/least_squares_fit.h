@@ -28,9 +28,12 @@
 // corner group split at a crease or seam: then no edge joins the two sides, M and R never couple
 // them, and the fitted values keep the discontinuity).
 //
-// Solver: Eigen's ConjugateGradient (Jacobi preconditioner) on M + lambda R, symmetric positive
-// definite when every node touches a face of positive area; stopped when |A c - b| <= tolerance
-// |b| (default 1e-10), from the point values as the first guess, one solve per channel. With
+// Solver: Jacobi-preconditioned conjugate gradient on M + lambda R (symmetric positive definite
+// when every node touches a face of positive area), matrix-free: A is kept as its elements (area/12
+// per triangle, a 4 x 4 block per quad, a vector d per regularised edge) and applied by one pass
+// over them per step, so no sparse matrix is assembled; all channels in one block (one pass serves
+// them all; each channel has its own step lengths and stop). Stopped per channel when
+// |A c - b| <= tolerance |b| (default 1e-10), from the point values as the first guess. With
 // accuracy a > 0 (8-bit outputs: kEightBitFitAccuracy, a quarter of a step) it also stops once
 // every value is provably within a of the exact solution: |c - c*|_inf <= |c - c*|_2 <=
 // |A c - b|_2 / lambda_min(A), and lambda_min(A) >= lambda_min(M) >= min_i M_ii / 4 (R is positive
