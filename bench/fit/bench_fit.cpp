@@ -9,7 +9,8 @@
 //          written) to the per-point colour render --shading phong computes (clamped likewise),
 //          measured with the 12-point degree-6 rule: finer than any fit's own rule, so no fit is
 //          scored by its own objective
-// Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES]   (default 7, 200000, 0)
+// Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window]
+//                  (default 7, 200000, 0, both scenes)
 //        bench_fit breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window]
 //                  (the least-squares time per stage)
 //        bench_fit errors SRC_DIR [MAX_TRIANGLES]   (error at several λ, with and without 8-bit bounds)
@@ -55,7 +56,8 @@ std::vector<double> bake(const Mesh& mesh, const Scene& scene, int samples) {
 // The four methods (point, least squares at 1, 3, 6 points) timed round-robin: each repetition runs
 // every method once, so that the load of the machine falls on all of them alike. Wall and process
 // CPU time, medians.
-int table(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles) {
+int table(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles,
+          const std::string& only_scene) {
   std::printf("| mesh | scene | method | wall ms | CPU ms | x point (CPU) | relative L2 error | vs point |\n"
               "|---|---|---|---|---|---|---|---|\n");
   const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
@@ -65,6 +67,7 @@ int table(const std::string& src, int repeats, std::size_t max_triangles, std::s
     if (triangles > max_triangles || triangles < min_triangles) continue;
     const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
     for (const char* name : {"studio", "window"}) {
+      if (!only_scene.empty() && only_scene != name) continue;
       const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
       double error[4] = {};
       {
@@ -249,5 +252,5 @@ int main(int argc, char** argv) {
     return breakdown(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000,
                      argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 ? argv[6] : "");
   return table(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000,
-               argc > 5 ? std::size_t(std::atoll(argv[5])) : 0);
+               argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 ? argv[6] : "");
 }

@@ -69,6 +69,57 @@ bool edge_kink(const Vec3d& pa, const Vec3d& pb, const Vec3d& pw1, const Vec3d& 
   return true;
 }
 
+// q.site and q.site_point (least_squares_fit.h, Sites). An edge midpoint is a point with exactly
+// two weights of 1/2; its key is its two vertices (lower, higher), bucketed by the lower one
+// (counts, offsets, entries in point order: two passes, no map), and it joins the site of the first
+// point with the same key. V: the vertex count.
+void assign_sites(FitQuadrature& q, std::size_t V) {
+  const std::size_t S = q.size();
+  q.site.assign(S, 0);
+  q.site_point.clear();
+  q.site_point.reserve(S);
+  const auto midpoint_edge = [&q](std::size_t s, std::uint32_t& lo, std::uint32_t& hi) {
+    std::uint32_t ends[2];
+    int halves = 0;
+    for (int j = 0; j < 4; ++j) {
+      const double phi = q.phi[4 * s + j];
+      if (phi == 0) continue;
+      if (phi != 0.5 || halves == 2) return false;
+      ends[halves++] = q.vertex[4 * s + j];
+    }
+    if (halves != 2 || ends[0] == ends[1]) return false;
+    lo = std::min(ends[0], ends[1]);
+    hi = std::max(ends[0], ends[1]);
+    return true;
+  };
+  std::vector<std::uint32_t> offset(V + 1, 0);
+  std::uint32_t lo = 0, hi = 0;
+  for (std::size_t s = 0; s < S; ++s)
+    if (midpoint_edge(s, lo, hi)) ++offset[lo + 1];
+  for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
+  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_point(offset[V]);
+  for (std::size_t s = 0; s < S; ++s)
+    if (midpoint_edge(s, lo, hi)) {
+      entry_hi[fill[lo]] = hi;
+      entry_point[fill[lo]++] = std::uint32_t(s);
+    }
+  for (std::size_t s = 0; s < S; ++s) {
+    std::size_t first = s;
+    if (midpoint_edge(s, lo, hi))
+      for (std::uint32_t k = offset[lo]; k < offset[lo + 1]; ++k)
+        if (entry_hi[k] == hi) {
+          first = entry_point[k];  // entries are in point order: the first match is the earliest
+          break;
+        }
+    if (first == s) {
+      q.site[s] = std::uint32_t(q.site_point.size());
+      q.site_point.push_back(std::uint32_t(s));
+    } else {
+      q.site[s] = q.site[first];
+    }
+  }
+}
+
 // M + lambda R as element data (least_squares_fit.h), applied to a block of channels without
 // assembling a sparse matrix: each CG step is one pass over the elements, and building the
 // matrix (Eigen's setFromTriplets) cost more than the whole solve (bench/fit/results.md).
@@ -117,8 +168,8 @@ void apply_operator(const FitOperator& A, const double* x, double* y, std::size_
 }
 
 // The elements' M (and lambda R) as FitOperator, M's diagonal, R's edge counts in `fit`.
-void build_fit_operator(const FitElements& e, const std::vector<double>& positions, double lambda, FitOperator& A,
-                        std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
+void build_fit_operator(const FitElements& e, const std::vector<double>& positions, const std::vector<double>& areas,
+                        double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
   const std::size_t N = e.nodes, T = e.tri_face.size();
   A.diagonal.assign(N, 0.0);
   A.tri_node.reserve(3 * T);
@@ -128,7 +179,7 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
   for (std::size_t t = 0; t < T; ++t) {
     const std::uint32_t* n = &e.tri_node[3 * t];
-    const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
+    const double area = areas[t];
     if (!(area > 0)) continue;
     A.tri_node.insert(A.tri_node.end(), n, n + 3);
     A.tri_scale.push_back(area / 12);
@@ -209,8 +260,11 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
 }
 
 struct BlockCgOptions {
-  double tolerance = 1e-10;        // relative residual per channel
-  double accuracy_residual = 0;    // > 0: also stop a channel once |A c - b|_2 <= this
+  double tolerance = 1e-10;   // relative residual per channel
+  // > 0: also stop a channel once sum_i r_i^2 / inverse_mass_i <= accuracy_bound (least_squares_fit.h,
+  // Solver: then every value is within the accuracy of the exact solution)
+  double accuracy_bound = 0;
+  const std::vector<double>* inverse_mass = nullptr;  // #nodes: 1 / M_ii (0 off the system)
   int max_iterations = 0;
 };
 
@@ -230,24 +284,27 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::uint32_t i : off_system)
       for (std::size_t k = 0; k < w; ++k) out[i * w + k] = 0;
   };
-  std::vector<double> rhs2(w, 0.0), res2(w, 0.0), threshold(w), abs_new(w, 0.0), abs_old(w), pAp(w), alpha(w), beta(w);
+  std::vector<double> rhs2(w, 0.0), res2(w, 0.0), res_mass(w, 0.0), threshold(w), abs_new(w, 0.0), abs_old(w), pAp(w),
+      alpha(w), beta(w);
   std::vector<char> active(w, 1);
+  const bool bounded = o.accuracy_bound > 0 && o.inverse_mass;
+  const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
   apply(x, Ap);
-  for (std::size_t i = 0; i < n; i += w)
+  for (std::size_t i = 0, node = 0; i < n; i += w, ++node)
     for (std::size_t k = 0; k < w; ++k) {
       r[i + k] = b[i + k] - Ap[i + k];
       rhs2[k] += b[i + k] * b[i + k];
       res2[k] += r[i + k] * r[i + k];
+      if (bounded) res_mass[k] += r[i + k] * r[i + k] * (*o.inverse_mass)[node];
     }
   std::size_t running = 0;
   for (std::size_t k = 0; k < w; ++k) {
-    threshold[k] = std::max({o.tolerance * o.tolerance * rhs2[k], o.accuracy_residual * o.accuracy_residual,
-                             std::numeric_limits<double>::min()});
+    threshold[k] = std::max(o.tolerance * o.tolerance * rhs2[k], std::numeric_limits<double>::min());
     if (rhs2[k] == 0) {  // b = 0: the solution is 0
       for (std::size_t i = k; i < n; i += w) x[i] = 0;
       res2[k] = 0;
       active[k] = 0;
-    } else if (res2[k] < threshold[k]) {
+    } else if (res2[k] < threshold[k] || accurate(k)) {
       active[k] = 0;
     } else {
       ++running;
@@ -268,14 +325,16 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::size_t k = 0; k < w; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
     std::fill(res2.begin(), res2.end(), 0.0);
-    for (std::size_t i = 0; i < n; i += w)
+    std::fill(res_mass.begin(), res_mass.end(), 0.0);
+    for (std::size_t i = 0, node = 0; i < n; i += w, ++node)
       for (std::size_t k = 0; k < w; ++k) {
         x[i + k] += alpha[k] * p[i + k];
         r[i + k] -= alpha[k] * Ap[i + k];
         res2[k] += r[i + k] * r[i + k];
+        if (bounded) res_mass[k] += r[i + k] * r[i + k] * (*o.inverse_mass)[node];
       }
     for (std::size_t k = 0; k < w; ++k)
-      if (active[k] && (res2[k] < threshold[k] || !(pAp[k] > 0))) {
+      if (active[k] && (res2[k] < threshold[k] || accurate(k) || !(pAp[k] > 0))) {
         active[k] = 0;
         --running;
       }
@@ -297,7 +356,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   for (std::size_t k = 0; k < w; ++k) {
     const double relative = rhs2[k] > 0 ? std::sqrt(res2[k] / rhs2[k]) : 0.0;  // divisor checked
     fit.residual = std::max(fit.residual, relative);
-    fit.converged = fit.converged && res2[k] < threshold[k];
+    fit.converged = fit.converged && (res2[k] < threshold[k] || accurate(k));
   }
 }
 
@@ -349,32 +408,43 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
     throw Error("fit_quadrature: " + std::to_string(samples) + " points per triangle is not a rule (1, 3, 6 or 12)");
   FitQuadrature q;
   q.samples = samples;
-  const auto push = [&q](const std::uint32_t* nodes, const std::uint32_t* vertices, const double* phi, int n,
-                         double weight, std::uint32_t face) {
-    for (int j = 0; j < 4; ++j) {
-      q.node.push_back(nodes[j < n ? j : 0]);
-      q.vertex.push_back(vertices[j < n ? j : 0]);
-      q.phi.push_back(j < n ? phi[j] : 0.0);
-    }
-    q.weight.push_back(weight);
-    q.face.push_back(face);
-  };
   const std::vector<QuadraturePoint> rule = triangle_quadrature(samples);
-  const std::size_t T = e.tri_face.size();
+  const std::size_t T = e.tri_face.size(), R = rule.size();
   const int g = quad_gauss_points(samples);
-  const std::size_t most = T * rule.size() + e.quad_face.size() * std::size_t(g * g);
-  q.node.reserve(4 * most);
-  q.vertex.reserve(4 * most);
-  q.phi.reserve(4 * most);
-  q.weight.reserve(most);
-  q.face.reserve(most);
+  q.triangle_area.resize(T);
+  std::size_t kept = 0;
   for (std::size_t t = 0; t < T; ++t) {
     const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
-    if (!(area > 0)) continue;  // no area, no part of the integral
-    for (const QuadraturePoint& p : rule)
-      push(&e.tri_node[3 * t], &e.tri_vertex[3 * t], p.barycentric.data(), 3, p.weight * area, e.tri_face[t]);
+    q.triangle_area[t] = area > 0 ? area : 0.0;  // no area, no part of the integral
+    kept += area > 0;
   }
-  const std::vector<GaussPoint> gauss = gauss_legendre_unit(quad_gauss_points(samples));
+  const std::size_t most = kept * R + e.quad_face.size() * std::size_t(g * g);
+  q.node.resize(4 * most);
+  q.vertex.resize(4 * most);
+  q.phi.resize(4 * most);
+  q.weight.resize(most);
+  q.face.resize(most);
+  std::size_t s = 0;
+  for (std::size_t t = 0; t < T; ++t) {
+    const double area = q.triangle_area[t];
+    if (!(area > 0)) continue;
+    const std::uint32_t* n = &e.tri_node[3 * t];
+    const std::uint32_t* v = &e.tri_vertex[3 * t];
+    for (const QuadraturePoint& p : rule) {
+      for (int j = 0; j < 3; ++j) {
+        q.node[4 * s + j] = n[j];
+        q.vertex[4 * s + j] = v[j];
+        q.phi[4 * s + j] = p.barycentric[std::size_t(j)];
+      }
+      q.node[4 * s + 3] = n[0];
+      q.vertex[4 * s + 3] = v[0];
+      q.phi[4 * s + 3] = 0;
+      q.weight[s] = p.weight * area;
+      q.face[s] = e.tri_face[t];
+      ++s;
+    }
+  }
+  const std::vector<GaussPoint> gauss = gauss_legendre_unit(g);
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
     Vec3d c[4];
     quad_corners(e, positions, k, c);
@@ -382,10 +452,45 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
       for (const GaussPoint& gv : gauss) {
         const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
         if (!(b.area_element > 0)) continue;
-        push(&e.quad_node[4 * k], &e.quad_vertex[4 * k], b.phi, 4, gu.weight * gv.weight * b.area_element, e.quad_face[k]);
+        for (int j = 0; j < 4; ++j) {
+          q.node[4 * s + std::size_t(j)] = e.quad_node[4 * k + std::size_t(j)];
+          q.vertex[4 * s + std::size_t(j)] = e.quad_vertex[4 * k + std::size_t(j)];
+          q.phi[4 * s + std::size_t(j)] = b.phi[j];
+        }
+        q.weight[s] = gu.weight * gv.weight * b.area_element;
+        q.face[s] = e.quad_face[k];
+        ++s;
       }
   }
+  q.node.resize(4 * s);
+  q.vertex.resize(4 * s);
+  q.phi.resize(4 * s);
+  q.weight.resize(s);
+  q.face.resize(s);
+  assign_sites(q, positions.size() / 3);
   return q;
+}
+
+std::vector<double> interpolate_vertex_data_at_sites(const FitQuadrature& q, const std::vector<double>& data,
+                                                     std::size_t width) {
+  std::vector<double> out(q.sites() * width, 0.0);
+  for (std::size_t i = 0; i < q.sites(); ++i) {
+    const std::size_t s = q.site_point[i];
+    for (int j = 0; j < 4; ++j) {
+      const double phi = q.phi[4 * s + j];
+      if (phi == 0) continue;
+      const std::size_t v = q.vertex[4 * s + j];
+      for (std::size_t k = 0; k < width; ++k) out[i * width + k] += phi * data[v * width + k];
+    }
+  }
+  return out;
+}
+
+std::vector<double> site_values_at_points(const FitQuadrature& q, const std::vector<double>& values, std::size_t width) {
+  std::vector<double> out(q.size() * width);
+  for (std::size_t s = 0; s < q.size(); ++s)
+    for (std::size_t k = 0; k < width; ++k) out[s * width + k] = values[q.site[s] * width + k];
+  return out;
 }
 
 std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& data, std::size_t width) {
@@ -425,15 +530,19 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   LeastSquaresFit fit;
   FitOperator A;
   std::vector<double> mass_diagonal;
-  build_fit_operator(e, positions, options.regularization, A, mass_diagonal, fit);
+  if (q.triangle_area.size() != e.tri_face.size())
+    throw Error("least_squares_fit: the quadrature is not of these elements (" + std::to_string(q.triangle_area.size()) +
+                " triangle areas for " + std::to_string(e.tri_face.size()) + " triangles)");
+  build_fit_operator(e, positions, q.triangle_area, options.regularization, A, mass_diagonal, fit);
 
   // The system over the nodes with mass; the others keep their point value.
-  std::vector<double> inverse_diagonal(N, 0.0);  // Jacobi preconditioner; 0 off the system
+  std::vector<double> inverse_diagonal(N, 0.0), inverse_mass(N, 0.0);  // Jacobi preconditioner, 1 / M_ii; 0 off the system
   std::vector<std::uint32_t> off_system;
   double min_mass = std::numeric_limits<double>::infinity();  // over the nodes of the system
   for (std::size_t i = 0; i < N; ++i) {
     if (A.diagonal[i] > 0) {
       inverse_diagonal[i] = 1 / A.diagonal[i];  // divisor checked
+      if (mass_diagonal[i] > 0) inverse_mass[i] = 1 / mass_diagonal[i];  // divisor checked
       min_mass = std::min(min_mass, mass_diagonal[i]);
     } else {
       off_system.push_back(std::uint32_t(i));
@@ -455,7 +564,13 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = 0;  // out of the system during CG
     BlockCgOptions cg;
     cg.tolerance = options.tolerance;
-    cg.accuracy_residual = options.accuracy > 0 && min_mass > 0 && std::isfinite(min_mass) ? options.accuracy * min_mass / 4 : 0;
+    // accuracy a: stop at sum r_i^2 / M_ii <= (a mu)^2 min M_ii (header, Solver); mu = 1/2 with
+    // triangles only, 1/4 with quads (Wathen's lower eigenvalue bounds of diag(M)^-1 M)
+    const double mu = e.quad_face.empty() ? 0.5 : 0.25;
+    if (options.accuracy > 0 && min_mass > 0 && std::isfinite(min_mass)) {
+      cg.accuracy_bound = options.accuracy * mu * options.accuracy * mu * min_mass;
+      cg.inverse_mass = &inverse_mass;
+    }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
     block_conjugate_gradient(A, inverse_diagonal, off_system, b, width, cg, fit.values, fit);
     for (std::uint32_t i : off_system)
@@ -475,11 +590,12 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
 
 double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f, const std::vector<double>& node_values,
                          std::size_t width) {
-  const std::vector<double> g = interpolate_node_values(q, node_values, width);
   double num = 0, den = 0;
   for (std::size_t s = 0; s < q.size(); ++s)
     for (std::size_t k = 0; k < width; ++k) {
-      const double d = g[s * width + k] - f[s * width + k];
+      double g = 0;
+      for (int j = 0; j < 4; ++j) g += q.phi[4 * s + j] * node_values[q.node[4 * s + j] * width + k];
+      const double d = g - f[s * width + k];
       num += q.weight[s] * d * d;
       den += q.weight[s] * f[s * width + k] * f[s * width + k];
     }

@@ -26,10 +26,11 @@ std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene,
   std::vector<double> normals_world(vertex_normals_object.size());
   for (std::size_t v = 0; v < vertex_normals_object.size() / 3; ++v)
     set3(normals_world, v, Vec3d(transform_normal(cof, Normal3d(get3(vertex_normals_object, v)))));
-  const std::vector<double> p = interpolate_vertex_data(q, positions_world, 3);
-  const std::vector<double> n = interpolate_vertex_data(q, normals_world, 3);  // renormalised by shade_point
+  // f at each site (shared edge midpoints once), then copied to the site's points
+  const std::vector<double> p = interpolate_vertex_data_at_sites(q, positions_world, 3);
+  const std::vector<double> n = interpolate_vertex_data_at_sites(q, normals_world, 3);  // renormalised by shade_point
   const PointLighting lit = prepare_point_lighting(scene, options.model);
-  const std::size_t S = q.size();
+  const std::size_t S = q.sites();
 
   std::vector<double> visibility;
   std::size_t row = 0;
@@ -56,7 +57,7 @@ std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene,
       set3(f, s, c);
     }
   });
-  return f;
+  return site_values_at_points(q, f, 3);
 }
 
 VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, const BakeResult& point,
