@@ -92,8 +92,17 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     hi = std::max(ends[0], ends[1]);
     return true;
   };
-  std::vector<std::uint32_t> offset(V + 1, 0);
   std::uint32_t lo = 0, hi = 0;
+  std::size_t midpoints = 0;
+  for (std::size_t s = 0; s < S; ++s) midpoints += midpoint_edge(s, lo, hi);
+  if (midpoints == 0) {  // every point its own site
+    for (std::size_t s = 0; s < S; ++s) {
+      q.site[s] = std::uint32_t(s);
+      q.site_point.push_back(std::uint32_t(s));
+    }
+    return;
+  }
+  std::vector<std::uint32_t> offset(V + 1, 0);
   for (std::size_t s = 0; s < S; ++s)
     if (midpoint_edge(s, lo, hi)) ++offset[lo + 1];
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
@@ -269,103 +278,119 @@ struct BlockCgOptions {
 };
 
 // Jacobi-preconditioned conjugate gradient (Hestenes & Stiefel; the loop of Eigen's
-// ConjugateGradient) on every channel of the block at once: one operator pass per step serves all
-// channels, each with its own step lengths and its own stop. x: #nodes by width, the first guess in,
+// ConjugateGradient) on W channels at once (W = 1 or 3): one operator pass per step serves all
+// channels, each with its own step lengths and its own stop. x: #nodes by W, the first guess in,
 // the solution out; rows in off_system stay 0. Counts into fit (iterations: operator passes, the
-// most over channels; residual: the largest relative residual; converged). W = 0: `width` channels.
+// most over channels; residual: the largest relative residual; converged).
 template <std::size_t W>
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
-                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b,
-                              std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
-  const std::size_t w = W ? W : width, N = inverse_diagonal.size(), n = N * w;
-  std::vector<double> r(n), z(n), p(n), Ap(n);
-  const auto apply = [&](const std::vector<double>& in, std::vector<double>& out) {
-    apply_operator<W>(A, in.data(), out.data(), w);
+                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b_in,
+                              const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
+  using Channels = std::array<double, W>;
+  const std::size_t N = inverse_diagonal.size(), n = N * W;
+  std::vector<double> r_v(n), z_v(n), p_v(n), Ap_v(n);
+  double* const r = r_v.data();
+  double* const z = z_v.data();
+  double* const p = p_v.data();
+  double* const Ap = Ap_v.data();
+  const double* const b = b_in.data();
+  const double* const inv_d = inverse_diagonal.data();
+  const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
+  const auto apply = [&](const double* in, double* out) {
+    apply_operator<W>(A, in, out, W);
     for (std::uint32_t i : off_system)
-      for (std::size_t k = 0; k < w; ++k) out[i * w + k] = 0;
+      for (std::size_t k = 0; k < W; ++k) out[i * W + k] = 0;
   };
-  std::vector<double> rhs2(w, 0.0), res2(w, 0.0), res_mass(w, 0.0), threshold(w), abs_new(w, 0.0), abs_old(w), pAp(w),
-      alpha(w), beta(w);
-  std::vector<char> active(w, 1);
-  const bool bounded = o.accuracy_bound > 0 && o.inverse_mass;
+  Channels rhs2{}, res2{}, res_mass{}, threshold{}, abs_new{}, abs_old{}, pAp{}, alpha{}, beta{};
+  std::array<bool, W> active{};
+  const bool bounded = o.accuracy_bound > 0 && inv_m;
   const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
   apply(x, Ap);
-  for (std::size_t i = 0, node = 0; i < n; i += w, ++node)
-    for (std::size_t k = 0; k < w; ++k) {
+  for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+    for (std::size_t k = 0; k < W; ++k) {
       r[i + k] = b[i + k] - Ap[i + k];
       rhs2[k] += b[i + k] * b[i + k];
       res2[k] += r[i + k] * r[i + k];
-      if (bounded) res_mass[k] += r[i + k] * r[i + k] * (*o.inverse_mass)[node];
+      if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
     }
   std::size_t running = 0;
-  for (std::size_t k = 0; k < w; ++k) {
+  for (std::size_t k = 0; k < W; ++k) {
     threshold[k] = std::max(o.tolerance * o.tolerance * rhs2[k], std::numeric_limits<double>::min());
+    active[k] = false;
     if (rhs2[k] == 0) {  // b = 0: the solution is 0
-      for (std::size_t i = k; i < n; i += w) x[i] = 0;
+      for (std::size_t i = k; i < n; i += W) x[i] = 0;
       res2[k] = 0;
-      active[k] = 0;
-    } else if (res2[k] < threshold[k] || accurate(k)) {
-      active[k] = 0;
-    } else {
+    } else if (!(res2[k] < threshold[k] || accurate(k))) {
+      active[k] = true;
       ++running;
     }
   }
-  for (std::size_t i = 0, node = 0; i < n; i += w, ++node)
-    for (std::size_t k = 0; k < w; ++k) {
-      p[i + k] = r[i + k] * inverse_diagonal[node];
+  for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+    for (std::size_t k = 0; k < W; ++k) {
+      p[i + k] = r[i + k] * inv_d[node];
       abs_new[k] += r[i + k] * p[i + k];
     }
   int iterations = 0;
   while (running > 0 && iterations < o.max_iterations) {
     apply(p, Ap);
     ++iterations;
-    std::fill(pAp.begin(), pAp.end(), 0.0);
-    for (std::size_t i = 0; i < n; i += w)
-      for (std::size_t k = 0; k < w; ++k) pAp[k] += p[i + k] * Ap[i + k];
-    for (std::size_t k = 0; k < w; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
+    pAp.fill(0.0);
+    for (std::size_t i = 0; i < n; i += W)
+      for (std::size_t k = 0; k < W; ++k) pAp[k] += p[i + k] * Ap[i + k];
+    for (std::size_t k = 0; k < W; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
-    std::fill(res2.begin(), res2.end(), 0.0);
-    std::fill(res_mass.begin(), res_mass.end(), 0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += w, ++node)
-      for (std::size_t k = 0; k < w; ++k) {
+    res2.fill(0.0);
+    res_mass.fill(0.0);
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) {
         x[i + k] += alpha[k] * p[i + k];
-        r[i + k] -= alpha[k] * Ap[i + k];
-        res2[k] += r[i + k] * r[i + k];
-        if (bounded) res_mass[k] += r[i + k] * r[i + k] * (*o.inverse_mass)[node];
+        const double ri = r[i + k] - alpha[k] * Ap[i + k];
+        r[i + k] = ri;
+        res2[k] += ri * ri;
+        if (bounded) res_mass[k] += ri * ri * inv_m[node];
       }
-    for (std::size_t k = 0; k < w; ++k)
+    for (std::size_t k = 0; k < W; ++k)
       if (active[k] && (res2[k] < threshold[k] || accurate(k) || !(pAp[k] > 0))) {
-        active[k] = 0;
+        active[k] = false;
         --running;
       }
     if (running == 0) break;
     abs_old = abs_new;
-    std::fill(abs_new.begin(), abs_new.end(), 0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += w, ++node)
-      for (std::size_t k = 0; k < w; ++k) {
-        z[i + k] = r[i + k] * inverse_diagonal[node];
+    abs_new.fill(0.0);
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) {
+        z[i + k] = r[i + k] * inv_d[node];
         abs_new[k] += r[i + k] * z[i + k];
       }
-    for (std::size_t k = 0; k < w; ++k)  // divisor checked
-      beta[k] = abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
-    for (std::size_t i = 0; i < n; i += w)
-      for (std::size_t k = 0; k < w; ++k)
-        if (active[k]) p[i + k] = z[i + k] + beta[k] * p[i + k];
+    for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel keeps its p (alpha 0)
+      beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
+    for (std::size_t i = 0; i < n; i += W)
+      for (std::size_t k = 0; k < W; ++k) p[i + k] = z[i + k] + beta[k] * p[i + k];
   }
-  fit.iterations = iterations;
-  for (std::size_t k = 0; k < w; ++k) {
+  fit.iterations = std::max(fit.iterations, iterations);
+  for (std::size_t k = 0; k < W; ++k) {
     const double relative = rhs2[k] > 0 ? std::sqrt(res2[k] / rhs2[k]) : 0.0;  // divisor checked
     fit.residual = std::max(fit.residual, relative);
     fit.converged = fit.converged && (res2[k] < threshold[k] || accurate(k));
   }
 }
 
+// Widths other than 1 and 3: one channel at a time.
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                               const std::vector<std::uint32_t>& off_system, const std::vector<double>& b,
                               std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
-  if (width == 1) block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, width, o, x, fit);
-  else if (width == 3) block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b, width, o, x, fit);
-  else block_conjugate_gradient<0>(A, inverse_diagonal, off_system, b, width, o, x, fit);
+  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, o, x.data(), fit);
+  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b, o, x.data(), fit);
+  const std::size_t N = inverse_diagonal.size();
+  std::vector<double> bk(N), xk(N);
+  for (std::size_t k = 0; k < width; ++k) {
+    for (std::size_t i = 0; i < N; ++i) {
+      bk[i] = b[i * width + k];
+      xk[i] = x[i * width + k];
+    }
+    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk, o, xk.data(), fit);
+    for (std::size_t i = 0; i < N; ++i) x[i * width + k] = xk[i];
+  }
 }
 
 }  // namespace
@@ -419,30 +444,26 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
     kept += area > 0;
   }
   const std::size_t most = kept * R + e.quad_face.size() * std::size_t(g * g);
-  q.node.resize(4 * most);
-  q.vertex.resize(4 * most);
-  q.phi.resize(4 * most);
-  q.weight.resize(most);
-  q.face.resize(most);
-  std::size_t s = 0;
+  q.node.reserve(4 * most);
+  q.vertex.reserve(4 * most);
+  q.phi.reserve(4 * most);
+  q.weight.reserve(most);
+  q.face.reserve(most);
+  const auto push = [&q](const std::uint32_t* nodes, const std::uint32_t* vertices, const double* phi, int n,
+                         double weight, std::uint32_t face) {
+    for (int j = 0; j < 4; ++j) {
+      q.node.push_back(nodes[j < n ? j : 0]);
+      q.vertex.push_back(vertices[j < n ? j : 0]);
+      q.phi.push_back(j < n ? phi[j] : 0.0);
+    }
+    q.weight.push_back(weight);
+    q.face.push_back(face);
+  };
   for (std::size_t t = 0; t < T; ++t) {
     const double area = q.triangle_area[t];
     if (!(area > 0)) continue;
-    const std::uint32_t* n = &e.tri_node[3 * t];
-    const std::uint32_t* v = &e.tri_vertex[3 * t];
-    for (const QuadraturePoint& p : rule) {
-      for (int j = 0; j < 3; ++j) {
-        q.node[4 * s + j] = n[j];
-        q.vertex[4 * s + j] = v[j];
-        q.phi[4 * s + j] = p.barycentric[std::size_t(j)];
-      }
-      q.node[4 * s + 3] = n[0];
-      q.vertex[4 * s + 3] = v[0];
-      q.phi[4 * s + 3] = 0;
-      q.weight[s] = p.weight * area;
-      q.face[s] = e.tri_face[t];
-      ++s;
-    }
+    for (const QuadraturePoint& p : rule)
+      push(&e.tri_node[3 * t], &e.tri_vertex[3 * t], p.barycentric.data(), 3, p.weight * area, e.tri_face[t]);
   }
   const std::vector<GaussPoint> gauss = gauss_legendre_unit(g);
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
@@ -452,41 +473,23 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
       for (const GaussPoint& gv : gauss) {
         const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
         if (!(b.area_element > 0)) continue;
-        for (int j = 0; j < 4; ++j) {
-          q.node[4 * s + std::size_t(j)] = e.quad_node[4 * k + std::size_t(j)];
-          q.vertex[4 * s + std::size_t(j)] = e.quad_vertex[4 * k + std::size_t(j)];
-          q.phi[4 * s + std::size_t(j)] = b.phi[j];
-        }
-        q.weight[s] = gu.weight * gv.weight * b.area_element;
-        q.face[s] = e.quad_face[k];
-        ++s;
+        push(&e.quad_node[4 * k], &e.quad_vertex[4 * k], b.phi, 4, gu.weight * gv.weight * b.area_element, e.quad_face[k]);
       }
   }
-  q.node.resize(4 * s);
-  q.vertex.resize(4 * s);
-  q.phi.resize(4 * s);
-  q.weight.resize(s);
-  q.face.resize(s);
   assign_sites(q, positions.size() / 3);
   return q;
 }
 
 std::vector<double> interpolate_vertex_data_at_sites(const FitQuadrature& q, const std::vector<double>& data,
                                                      std::size_t width) {
-  std::vector<double> out(q.sites() * width, 0.0);
-  for (std::size_t i = 0; i < q.sites(); ++i) {
-    const std::size_t s = q.site_point[i];
-    for (int j = 0; j < 4; ++j) {
-      const double phi = q.phi[4 * s + j];
-      if (phi == 0) continue;
-      const std::size_t v = q.vertex[4 * s + j];
-      for (std::size_t k = 0; k < width; ++k) out[i * width + k] += phi * data[v * width + k];
-    }
-  }
+  std::vector<double> out(q.sites() * width);
+  for (std::size_t i = 0; i < q.sites(); ++i) interpolate_vertex_data_at_site(q, i, data.data(), width, &out[i * width]);
   return out;
 }
 
+
 std::vector<double> site_values_at_points(const FitQuadrature& q, const std::vector<double>& values, std::size_t width) {
+  if (q.sites() == q.size()) return values;  // every point its own site, numbered in point order
   std::vector<double> out(q.size() * width);
   for (std::size_t s = 0; s < q.size(); ++s)
     for (std::size_t k = 0; k < width; ++k) out[s * width + k] = values[q.site[s] * width + k];

@@ -103,6 +103,19 @@ FitQuadrature fit_quadrature(const FitElements& elements, const std::vector<doub
 // Per-vertex data (#V by width) at the quadrature points (#points by width): sum phi_k data[vertex_k].
 std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& vertex_data,
                                             std::size_t width);
+// The same at one site i: out[0..width) = sum phi_k data[vertex_k] at q.site_point[i] (inline: the
+// shading loops call it per site).
+inline void interpolate_vertex_data_at_site(const FitQuadrature& q, std::size_t i, const double* vertex_data,
+                                            std::size_t width, double* out) {
+  const std::size_t s = q.site_point[i];
+  for (std::size_t k = 0; k < width; ++k) out[k] = 0;
+  for (std::size_t j = 0; j < 4; ++j) {
+    const double phi = q.phi[4 * s + j];
+    if (phi == 0) continue;
+    const std::size_t v = q.vertex[4 * s + j];
+    for (std::size_t k = 0; k < width; ++k) out[k] += phi * vertex_data[v * width + k];
+  }
+}
 // The same at the sites (#sites by width), and values at the sites copied to their points.
 std::vector<double> interpolate_vertex_data_at_sites(const FitQuadrature& q, const std::vector<double>& vertex_data,
                                                      std::size_t width);
