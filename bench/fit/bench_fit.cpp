@@ -15,13 +15,21 @@
 //                  (the least-squares time per stage)
 //        bench_fit errors SRC_DIR [MAX_TRIANGLES]   (error at several λ, with and without 8-bit bounds)
 //        bench_fit variants SRC_DIR   (error of each objective and bound handling for 8-bit output)
+// FIT_THREADS=N in the environment: at most N threads (1: no thread pool spin in the CPU times).
+// FIT_MALLOC_KEEP=1: freed memory kept by the allocator (no page faults of first touch after the
+// first repetition).
 //        bench_fit picture SRC_DIR OUT.png   (point Gouraud | least-squares Gouraud | Phong, coarse)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include <malloc.h>
+
+#include <tbb/global_control.h>
 
 #include <shadetool/fit/least_squares_fit.h>
 #include <shadetool/io/image_png.h>
@@ -334,6 +342,20 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string mode = argv[1], src = argv[2];
+  // FIT_THREADS=1: every stage on one thread. Process CPU time then holds no thread pool's spin
+  // after a parallel stage (TBB's workers wait busily for more work, and that CPU time falls on
+  // whatever stage or method runs next).
+  // FIT_MALLOC_KEEP=1: glibc keeps freed memory (no trimming, no mmap per large block), so a
+  // repetition reuses the pages of the one before: the CPU time without the page faults of first
+  // touch (an experiment: a one-shot CLI run touches its memory first, as the default measures).
+  if (const char* keep = std::getenv("FIT_MALLOC_KEEP"); keep && std::atoi(keep) > 0) {
+    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  }
+  const char* threads = std::getenv("FIT_THREADS");
+  tbb::global_control pool(tbb::global_control::max_allowed_parallelism,
+                           threads && std::atoi(threads) > 0 ? std::size_t(std::atoi(threads))
+                                                              : tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   if (mode == "picture" && argc > 3) return picture(src, argv[3]);
   if (mode == "variants") return variants(src);
   if (mode == "repeat" && argc > 4) {  // bench_fit repeat SRC SAMPLES N: N bakes of the 10k torus, studio (for perf)

@@ -340,6 +340,18 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     std::vector<int> points_per_site(q3.sites(), 0);
     for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site[s]];
     CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
+    // f given once per site is f at every point of the site: the same fit and error, bit for bit
+    std::vector<double> f_sites(q3.sites()), point(mesh.num_vertices());
+    const std::vector<double> x = interpolate_vertex_data_at_sites(q3, mesh.positions, 3);
+    for (std::size_t i = 0; i < q3.sites(); ++i) f_sites[i] = std::exp(x[3 * i]) * (1 + x[3 * i + 1] * x[3 * i + 2]);
+    const std::vector<double> f_points = site_values_at_points(q3, f_sites, 1);
+    REQUIRE(f_points.size() == q3.size());
+    LeastSquaresFitOptions o;
+    o.lower = -1e300;
+    const LeastSquaresFit by_site = least_squares_fit(e, mesh.positions, q3, f_sites, point, 1, o);
+    const LeastSquaresFit by_point = least_squares_fit(e, mesh.positions, q3, f_points, point, 1, o);
+    CHECK(by_site.values == by_point.values);
+    CHECK(relative_l2_error(q3, f_sites, by_site.values, 1) == relative_l2_error(q3, f_points, by_site.values, 1));
     for (int samples : {1, 6, 12}) {  // interior points: each its own site
       const FitQuadrature q = fit_quadrature(e, mesh.positions, samples);
       CHECK(q.sites() == q.size());

@@ -133,8 +133,9 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
 // assembling a sparse matrix: each CG step is one pass over the elements, and building the
 // matrix (Eigen's setFromTriplets) cost more than the whole solve (bench/fit/results.md).
 struct FitOperator {
-  std::vector<std::uint32_t> tri_node;   // 3 per triangle of positive area
-  std::vector<double> tri_scale;         // 1 per triangle: area / 12
+  const std::uint32_t* tri_node = nullptr;  // 3 per triangle (the elements')
+  const double* tri_area = nullptr;         // 1 per triangle (the quadrature's; 0: left out)
+  std::size_t triangles = 0;
   std::vector<std::uint32_t> quad_node;  // 4 per quad with mass
   std::vector<double> quad_mass;         // 16 per quad: its 4 x 4 block of M
   std::vector<std::uint32_t> edge_node;  // 4 per regularised edge: a, b, wing 1, wing 2
@@ -148,10 +149,10 @@ template <std::size_t W>
 void apply_operator(const FitOperator& A, const double* x, double* y, std::size_t width) {
   const std::size_t w = W ? W : width;
   std::fill(y, y + A.diagonal.size() * w, 0.0);
-  const std::size_t T = A.tri_scale.size();
-  for (std::size_t t = 0; t < T; ++t) {  // area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T)
+  for (std::size_t t = 0; t < A.triangles; ++t) {  // area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T)
+    const double s = A.tri_area[t] / 12;
+    if (s == 0) continue;
     const std::size_t n0 = A.tri_node[3 * t] * w, n1 = A.tri_node[3 * t + 1] * w, n2 = A.tri_node[3 * t + 2] * w;
-    const double s = A.tri_scale[t];
     for (std::size_t k = 0; k < w; ++k) {
       const double x0 = x[n0 + k], x1 = x[n1 + k], x2 = x[n2 + k], sum = x0 + x1 + x2;
       y[n0 + k] += s * (x0 + sum);
@@ -181,8 +182,9 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
                         double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
   const std::size_t N = e.nodes, T = e.tri_face.size();
   A.diagonal.assign(N, 0.0);
-  A.tri_node.reserve(3 * T);
-  A.tri_scale.reserve(T);
+  A.tri_node = e.tri_node.data();
+  A.tri_area = areas.data();
+  A.triangles = T;
   std::vector<RegTriangle> reg;
   if (lambda > 0) reg.reserve(T + 2 * e.quad_face.size());
   // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
@@ -190,8 +192,6 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
     const std::uint32_t* n = &e.tri_node[3 * t];
     const double area = areas[t];
     if (!(area > 0)) continue;
-    A.tri_node.insert(A.tri_node.end(), n, n + 3);
-    A.tri_scale.push_back(area / 12);
     for (int i = 0; i < 3; ++i) A.diagonal[n[i]] += area / 6;
     if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {e.tri_vertex[3 * t], e.tri_vertex[3 * t + 1], e.tri_vertex[3 * t + 2]}});
   }
@@ -288,9 +288,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
                               const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
-  std::vector<double> r_v(n), z_v(n), p_v(n), Ap_v(n);
+  std::vector<double> r_v(n), p_v(n), Ap_v(n);
   double* const r = r_v.data();
-  double* const z = z_v.data();
   double* const p = p_v.data();
   double* const Ap = Ap_v.data();
   const double* const b = b_in.data();
@@ -357,15 +356,12 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     if (running == 0) break;
     abs_old = abs_new;
     abs_new.fill(0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
-      for (std::size_t k = 0; k < W; ++k) {
-        z[i + k] = r[i + k] * inv_d[node];
-        abs_new[k] += r[i + k] * z[i + k];
-      }
-    for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel keeps its p (alpha 0)
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
+      for (std::size_t k = 0; k < W; ++k) abs_new[k] += r[i + k] * r[i + k] * inv_d[node];
+    for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
-    for (std::size_t i = 0; i < n; i += W)
-      for (std::size_t k = 0; k < W; ++k) p[i + k] = z[i + k] + beta[k] * p[i + k];
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) p[i + k] = r[i + k] * inv_d[node] + beta[k] * p[i + k];
   }
   fit.iterations = std::max(fit.iterations, iterations);
   for (std::size_t k = 0; k < W; ++k) {
@@ -524,7 +520,8 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
                                   const std::vector<double>& f, const std::vector<double>& point_values,
                                   std::size_t width, const LeastSquaresFitOptions& options) {
   const std::size_t N = e.nodes, S = q.size();
-  if (f.size() != S * width || point_values.size() != N * width)
+  const bool per_site = f.size() != S * width && f.size() == q.sites() * width;  // f at the sites
+  if ((f.size() != S * width && !per_site) || point_values.size() != N * width)
     throw Error("least_squares_fit: " + std::to_string(f.size()) + " signal values for " + std::to_string(S) +
                 " points and " + std::to_string(point_values.size()) + " point values for " + std::to_string(N) +
                 " nodes (width " + std::to_string(width) + ")");
@@ -539,13 +536,15 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   build_fit_operator(e, positions, q.triangle_area, options.regularization, A, mass_diagonal, fit);
 
   // The system over the nodes with mass; the others keep their point value.
-  std::vector<double> inverse_diagonal(N, 0.0), inverse_mass(N, 0.0);  // Jacobi preconditioner, 1 / M_ii; 0 off the system
+  // Jacobi preconditioner and 1 / M_ii (the same with lambda = 0); 0 off the system
+  const bool regularized = options.regularization > 0;
+  std::vector<double> inverse_diagonal(N, 0.0), inverse_mass(regularized ? N : 0, 0.0);
   std::vector<std::uint32_t> off_system;
   double min_mass = std::numeric_limits<double>::infinity();  // over the nodes of the system
   for (std::size_t i = 0; i < N; ++i) {
     if (A.diagonal[i] > 0) {
       inverse_diagonal[i] = 1 / A.diagonal[i];  // divisor checked
-      if (mass_diagonal[i] > 0) inverse_mass[i] = 1 / mass_diagonal[i];  // divisor checked
+      if (regularized && mass_diagonal[i] > 0) inverse_mass[i] = 1 / mass_diagonal[i];  // divisor checked
       min_mass = std::min(min_mass, mass_diagonal[i]);
     } else {
       off_system.push_back(std::uint32_t(i));
@@ -561,7 +560,8 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
         const std::size_t r = q.node[4 * s + j];
         const double w = q.weight[s] * q.phi[4 * s + j];
         if (w == 0 || inverse_diagonal[r] == 0) continue;
-        for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * f[s * width + k];
+        const double* fs = &f[(per_site ? q.site[s] : s) * width];
+        for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * fs[k];
       }
     for (std::uint32_t i : off_system)
       for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = 0;  // out of the system during CG
@@ -572,7 +572,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     const double mu = e.quad_face.empty() ? 0.5 : 0.25;
     if (options.accuracy > 0 && min_mass > 0 && std::isfinite(min_mass)) {
       cg.accuracy_bound = options.accuracy * mu * options.accuracy * mu * min_mass;
-      cg.inverse_mass = &inverse_mass;
+      cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
     block_conjugate_gradient(A, inverse_diagonal, off_system, b, width, cg, fit.values, fit);
@@ -593,15 +593,18 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
 
 double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f, const std::vector<double>& node_values,
                          std::size_t width) {
+  const bool per_site = f.size() != q.size() * width && f.size() == q.sites() * width;  // f at the sites
   double num = 0, den = 0;
-  for (std::size_t s = 0; s < q.size(); ++s)
+  for (std::size_t s = 0; s < q.size(); ++s) {
+    const double* fs = &f[(per_site ? q.site[s] : s) * width];
     for (std::size_t k = 0; k < width; ++k) {
       double g = 0;
       for (int j = 0; j < 4; ++j) g += q.phi[4 * s + j] * node_values[q.node[4 * s + j] * width + k];
-      const double d = g - f[s * width + k];
+      const double d = g - fs[k];
       num += q.weight[s] * d * d;
-      den += q.weight[s] * f[s * width + k] * f[s * width + k];
+      den += q.weight[s] * fs[k] * fs[k];
     }
+  }
   if (!(den > 0)) return num > 0 ? std::numeric_limits<double>::infinity() : 0.0;
   return std::sqrt(num / den);  // divisor checked
 }

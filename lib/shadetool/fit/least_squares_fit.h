@@ -156,14 +156,16 @@ struct LeastSquaresFit {
   bool converged = true;
 };
 
-// f: #points by width, the signal at q's points. point_values: #nodes by width (first guess and
+// f: #points by width, the signal at q's points, or #sites by width, its value at each site (one
+// value for all the points of a site; the two are the same when every point is its own site). point_values: #nodes by width (first guess and
 // fallback). Error for mismatched sizes.
 LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
                                   const FitQuadrature& q, const std::vector<double>& f,
                                   const std::vector<double>& point_values, std::size_t width,
                                   const LeastSquaresFitOptions& options = {});
 
-// The relative L2 distance between the interpolated node values and f, by the quadrature q:
+// The relative L2 distance between the interpolated node values and f (per point or per site, as
+// least_squares_fit takes it), by the quadrature q:
 //   sqrt( sum_k w_k |g(x_k) - f_k|^2 / sum_k w_k |f_k|^2 )   (0 when f is zero everywhere and g is).
 double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f,
                          const std::vector<double>& node_values, std::size_t width);

@@ -22,11 +22,19 @@ std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene,
                                            const std::vector<double>& vertex_normals_object,
                                            const ShadeOptions& options, const ShadowOptions& shadows,
                                            ShadowStats* shadow_stats) {
+  return site_values_at_points(
+      q, lighting_at_sites(mesh, scene, q, positions_world, vertex_normals_object, options, shadows, shadow_stats), 3);
+}
+
+std::vector<double> lighting_at_sites(const Mesh& mesh, const Scene& scene, const FitQuadrature& q,
+                                      const std::vector<double>& positions_world,
+                                      const std::vector<double>& vertex_normals_object, const ShadeOptions& options,
+                                      const ShadowOptions& shadows, ShadowStats* shadow_stats) {
   const Mat3d cof = signed_cofactor(scene.world_from_object.A);
   std::vector<double> normals_world(vertex_normals_object.size());
   for (std::size_t v = 0; v < vertex_normals_object.size() / 3; ++v)
     set3(normals_world, v, Vec3d(transform_normal(cof, Normal3d(get3(vertex_normals_object, v)))));
-  // f at each site (shared edge midpoints once), then copied to the site's points
+  // f at each site (shared edge midpoints once)
   const PointLighting lit = prepare_point_lighting(scene, options.model);
   const std::size_t S = q.sites();
   std::vector<double> f(3 * S);
@@ -40,8 +48,7 @@ std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene,
         set3(f, s, shade_point(lit, Vec3d(p[0], p[1], p[2]), Vec3d(n[0], n[1], n[2]), &counters));
       }
     });
-    if (q.sites() == q.size()) return f;  // every point its own site
-    return site_values_at_points(q, f, 3);
+    return f;
   }
   const std::vector<double> p = interpolate_vertex_data_at_sites(q, positions_world, 3);
   const std::vector<double> n = interpolate_vertex_data_at_sites(q, normals_world, 3);  // renormalised by shade_point
@@ -61,7 +68,7 @@ std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene,
     for (std::size_t s = r.begin(); s < r.end(); ++s)
       set3(f, s, shade_point_shadowed(lit, get3(p, s), get3(n, s), visibility.data() + s * row, &counters));
   });
-  return site_values_at_points(q, f, 3);
+  return f;
 }
 
 VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, const BakeResult& point,
@@ -78,8 +85,8 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   const FitElements elements = fit_elements(mesh);
   const FitQuadrature q = fit_quadrature(elements, positions_world, fit.samples);
   out.quadrature_points = q.size();
-  std::vector<double> f =
-      lighting_at_quadrature(mesh, scene, q, positions_world, point.vertex_normals, options, shadows, &out.shadows);
+  std::vector<double> f =  // at the sites: least_squares_fit and relative_l2_error read it per site
+      lighting_at_sites(mesh, scene, q, positions_world, point.vertex_normals, options, shadows, &out.shadows);
   // The target is the colour as it will be shown: clamped to the bounds (8-bit: [0, 1], as a
   // renderer's per-pixel Phong is stored), so that light above 1 is not fitted with a slope that
   // the clamp then cuts.

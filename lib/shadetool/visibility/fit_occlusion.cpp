@@ -19,7 +19,7 @@ OcclusionFit fit_against(const VisibilityScene* given, const Mesh& mesh, const s
   const std::vector<double> axes = occlusion_vertex_axes(mesh, source, computed);
   const FitElements elements = fit_elements(mesh);
   const FitQuadrature q = fit_quadrature(elements, mesh.positions, fit.samples);
-  // rays from each site (shared edge midpoints once), the open fraction copied to its points
+  // rays from each site (shared edge midpoints once)
   const std::vector<double> points = interpolate_vertex_data_at_sites(q, mesh.positions, 3);
   const std::vector<double> normals = interpolate_vertex_data_at_sites(q, axes, 3);  // normalised by the ray code
   std::vector<std::uint64_t> ids(q.sites());
@@ -41,7 +41,7 @@ OcclusionFit fit_against(const VisibilityScene* given, const Mesh& mesh, const s
       out.rays = r.rays;
     }
   }
-  const std::vector<double> f = site_values_at_points(q, std::vector<double>(open.begin(), open.end()), 1);
+  const std::vector<double> f(open.begin(), open.end());  // at the sites, as least_squares_fit takes it
   const std::vector<double> point(point_open.begin(), point_open.end());
   LeastSquaresFitOptions solve = fit.solve;
   solve.lower = 0;
