@@ -35,7 +35,8 @@ inline void add_fit_options(CLI::App& sub, FitCliOptions& o, const std::string& 
       ->type_name("λ");
   sub.add_option("--fit-samples", o.samples,
                  "With --fit least-squares: quadrature points per triangle, 1, 3 (default) or 6 (exact to degree 1, 2, 4; "
-                 "quads 1x1, 2x2, 3x3 Gauss points)")
+                 "3: the edge midpoints, each computed once for the two triangles of its edge; quads 1x1, 2x2, 3x3 "
+                 "Gauss points)")
       ->check(CLI::IsMember({1, 3, 6}))
       ->type_name("N");
 }

@@ -4,6 +4,7 @@
 // the hat functions reproduce exactly.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -321,6 +322,41 @@ TEST_CASE("Corner groups: a node per side of a crease keeps the discontinuity", 
   for (int n = 0; n < 3; ++n) CHECK(fit.values[n] == Approx(0.25).epsilon(1e-9));
   for (int n = 3; n < 6; ++n) CHECK(fit.values[n] == Approx(0.75).epsilon(1e-9));
   CHECK(relative_l2_error(q, f, fit.values, 1) < 1e-9);
+}
+
+TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the place of all its points",
+          "[fit][quadrature]") {
+  // Truth: a closed triangle mesh has E = 3T/2 edges (each shared by two triangles), and a site's
+  // points must be one place (the signal is evaluated once for all of them).
+  for (const Mesh& mesh : {shadetool::testing::icosphere(2).mesh, shadetool::testing::torus(12, 7, 1.0, 0.4, 0.1).mesh}) {
+    const FitElements e = fit_elements(mesh);
+    const std::size_t T = e.tri_face.size();
+    const FitQuadrature q3 = fit_quadrature(e, mesh.positions, 3);
+    REQUIRE(q3.size() == 3 * T);
+    CHECK(q3.sites() == 3 * T / 2);
+    const std::vector<double> at_points = interpolate_vertex_data(q3, mesh.positions, 3);
+    const std::vector<double> at_sites = site_values_at_points(q3, interpolate_vertex_data_at_sites(q3, mesh.positions, 3), 3);
+    CHECK(at_points == at_sites);
+    std::vector<int> points_per_site(q3.sites(), 0);
+    for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site[s]];
+    CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
+    // f given once per site is f at every point of the site: the same fit and error, bit for bit
+    std::vector<double> f_sites(q3.sites()), point(mesh.num_vertices());
+    const std::vector<double> x = interpolate_vertex_data_at_sites(q3, mesh.positions, 3);
+    for (std::size_t i = 0; i < q3.sites(); ++i) f_sites[i] = std::exp(x[3 * i]) * (1 + x[3 * i + 1] * x[3 * i + 2]);
+    const std::vector<double> f_points = site_values_at_points(q3, f_sites, 1);
+    REQUIRE(f_points.size() == q3.size());
+    LeastSquaresFitOptions o;
+    o.lower = -1e300;
+    const LeastSquaresFit by_site = least_squares_fit(e, mesh.positions, q3, f_sites, point, 1, o);
+    const LeastSquaresFit by_point = least_squares_fit(e, mesh.positions, q3, f_points, point, 1, o);
+    CHECK(by_site.values == by_point.values);
+    CHECK(relative_l2_error(q3, f_sites, by_site.values, 1) == relative_l2_error(q3, f_points, by_site.values, 1));
+    for (int samples : {1, 6, 12}) {  // interior points: each its own site
+      const FitQuadrature q = fit_quadrature(e, mesh.positions, samples);
+      CHECK(q.sites() == q.size());
+    }
+  }
 }
 
 TEST_CASE("The --fit vocabulary round-trips through its names", "[fit][vocabulary]") {

@@ -6,8 +6,6 @@
 #include <cmath>
 #include <string>
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCore>
 
 #include <shadetool/core/error.h>
 #include <shadetool/fit/triangle_quadrature.h>
@@ -16,9 +14,6 @@
 namespace shadetool {
 
 namespace {
-
-using SparseMatrix = Eigen::SparseMatrix<double>;
-using Triplet = Eigen::Triplet<double>;
 
 Vec3d vertex_position(const std::vector<double>& positions, std::uint32_t v) { return get3(positions, v); }
 
@@ -74,6 +69,326 @@ bool edge_kink(const Vec3d& pa, const Vec3d& pb, const Vec3d& pw1, const Vec3d& 
   return true;
 }
 
+// q.site and q.site_point (least_squares_fit.h, Sites). An edge midpoint is a point with exactly
+// two weights of 1/2; its key is its two vertices (lower, higher), bucketed by the lower one
+// (counts, offsets, entries in point order: two passes, no map), and it joins the site of the first
+// point with the same key. V: the vertex count.
+void assign_sites(FitQuadrature& q, std::size_t V) {
+  const std::size_t S = q.size();
+  q.site.assign(S, 0);
+  q.site_point.clear();
+  q.site_point.reserve(S);
+  const auto midpoint_edge = [&q](std::size_t s, std::uint32_t& lo, std::uint32_t& hi) {
+    std::uint32_t ends[2];
+    int halves = 0;
+    for (int j = 0; j < 4; ++j) {
+      const double phi = q.phi[4 * s + j];
+      if (phi == 0) continue;
+      if (phi != 0.5 || halves == 2) return false;
+      ends[halves++] = q.vertex[4 * s + j];
+    }
+    if (halves != 2 || ends[0] == ends[1]) return false;
+    lo = std::min(ends[0], ends[1]);
+    hi = std::max(ends[0], ends[1]);
+    return true;
+  };
+  std::uint32_t lo = 0, hi = 0;
+  std::size_t midpoints = 0;
+  for (std::size_t s = 0; s < S; ++s) midpoints += midpoint_edge(s, lo, hi);
+  if (midpoints == 0) {  // every point its own site
+    for (std::size_t s = 0; s < S; ++s) {
+      q.site[s] = std::uint32_t(s);
+      q.site_point.push_back(std::uint32_t(s));
+    }
+    return;
+  }
+  std::vector<std::uint32_t> offset(V + 1, 0);
+  for (std::size_t s = 0; s < S; ++s)
+    if (midpoint_edge(s, lo, hi)) ++offset[lo + 1];
+  for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
+  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_point(offset[V]);
+  for (std::size_t s = 0; s < S; ++s)
+    if (midpoint_edge(s, lo, hi)) {
+      entry_hi[fill[lo]] = hi;
+      entry_point[fill[lo]++] = std::uint32_t(s);
+    }
+  for (std::size_t s = 0; s < S; ++s) {
+    std::size_t first = s;
+    if (midpoint_edge(s, lo, hi))
+      for (std::uint32_t k = offset[lo]; k < offset[lo + 1]; ++k)
+        if (entry_hi[k] == hi) {
+          first = entry_point[k];  // entries are in point order: the first match is the earliest
+          break;
+        }
+    if (first == s) {
+      q.site[s] = std::uint32_t(q.site_point.size());
+      q.site_point.push_back(std::uint32_t(s));
+    } else {
+      q.site[s] = q.site[first];
+    }
+  }
+}
+
+// M + lambda R as element data (least_squares_fit.h), applied to a block of channels without
+// assembling a sparse matrix: each CG step is one pass over the elements, and building the
+// matrix (Eigen's setFromTriplets) cost more than the whole solve (bench/fit/results.md).
+struct FitOperator {
+  const std::uint32_t* tri_node = nullptr;  // 3 per triangle (the elements')
+  const double* tri_area = nullptr;         // 1 per triangle (the quadrature's; 0: left out)
+  std::size_t triangles = 0;
+  std::vector<std::uint32_t> quad_node;  // 4 per quad with mass
+  std::vector<double> quad_mass;         // 16 per quad: its 4 x 4 block of M
+  std::vector<std::uint32_t> edge_node;  // 4 per regularised edge: a, b, wing 1, wing 2
+  std::vector<double> edge_d;            // 4 per edge: d sqrt(lambda (A1 + A2)^2), R_e = (d . c)^2
+  std::vector<double> diagonal;          // #nodes: of M + lambda R
+};
+
+// y = A x for x, y #nodes by W (W = 0: `width` channels). Sequential in element order: the same
+// bits for any thread count.
+template <std::size_t W>
+void apply_operator(const FitOperator& A, const double* x, double* y, std::size_t width) {
+  const std::size_t w = W ? W : width;
+  std::fill(y, y + A.diagonal.size() * w, 0.0);
+  for (std::size_t t = 0; t < A.triangles; ++t) {  // area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T)
+    const double s = A.tri_area[t] / 12;
+    if (s == 0) continue;
+    const std::size_t n0 = A.tri_node[3 * t] * w, n1 = A.tri_node[3 * t + 1] * w, n2 = A.tri_node[3 * t + 2] * w;
+    for (std::size_t k = 0; k < w; ++k) {
+      const double x0 = x[n0 + k], x1 = x[n1 + k], x2 = x[n2 + k], sum = x0 + x1 + x2;
+      y[n0 + k] += s * (x0 + sum);
+      y[n1 + k] += s * (x1 + sum);
+      y[n2 + k] += s * (x2 + sum);
+    }
+  }
+  for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
+    const std::uint32_t* n = &A.quad_node[4 * k];
+    const double* m = &A.quad_mass[16 * k];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (std::size_t c = 0; c < w; ++c) y[n[i] * w + c] += m[4 * i + j] * x[n[j] * w + c];
+  }
+  for (std::size_t k = 0; k < A.edge_d.size() / 4; ++k) {
+    const std::uint32_t* n = &A.edge_node[4 * k];
+    const double* d = &A.edge_d[4 * k];
+    for (std::size_t c = 0; c < w; ++c) {
+      const double dx = d[0] * x[n[0] * w + c] + d[1] * x[n[1] * w + c] + d[2] * x[n[2] * w + c] + d[3] * x[n[3] * w + c];
+      for (int i = 0; i < 4; ++i) y[n[i] * w + c] += d[i] * dx;
+    }
+  }
+}
+
+// The elements' M (and lambda R) as FitOperator, M's diagonal, R's edge counts in `fit`.
+void build_fit_operator(const FitElements& e, const std::vector<double>& positions, const std::vector<double>& areas,
+                        double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
+  const std::size_t N = e.nodes, T = e.tri_face.size();
+  A.diagonal.assign(N, 0.0);
+  A.tri_node = e.tri_node.data();
+  A.tri_area = areas.data();
+  A.triangles = T;
+  std::vector<RegTriangle> reg;
+  if (lambda > 0) reg.reserve(T + 2 * e.quad_face.size());
+  // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
+  for (std::size_t t = 0; t < T; ++t) {
+    const std::uint32_t* n = &e.tri_node[3 * t];
+    const double area = areas[t];
+    if (!(area > 0)) continue;
+    for (int i = 0; i < 3; ++i) A.diagonal[n[i]] += area / 6;
+    if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {e.tri_vertex[3 * t], e.tri_vertex[3 * t + 1], e.tri_vertex[3 * t + 2]}});
+  }
+  // M, quads: 3x3 Gauss-Legendre on the bilinear map.
+  const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
+  for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
+    const std::uint32_t* n = &e.quad_node[4 * k];
+    const std::uint32_t* v = &e.quad_vertex[4 * k];
+    Vec3d c[4];
+    quad_corners(e, positions, k, c);
+    double m[16] = {};
+    for (const GaussPoint& gu : gauss)
+      for (const GaussPoint& gv : gauss) {
+        const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
+        const double w = gu.weight * gv.weight * b.area_element;
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j) m[4 * i + j] += w * b.phi[i] * b.phi[j];
+      }
+    if (!(m[0] + m[5] + m[10] + m[15] > 0)) continue;
+    A.quad_node.insert(A.quad_node.end(), n, n + 4);
+    A.quad_mass.insert(A.quad_mass.end(), m, m + 16);
+    for (int i = 0; i < 4; ++i) A.diagonal[n[i]] += m[5 * i];
+    if (lambda > 0) {
+      reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
+      reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
+    }
+  }
+  mass_diagonal = A.diagonal;
+  if (!(lambda > 0)) return;
+
+  // R: the interior edges (exactly two triangles of positive area), found by sorting the sides.
+  struct Side {
+    std::uint64_t key;  // (min node, max node)
+    std::uint32_t triangle;
+    std::uint8_t opposite;  // local index of the wing
+  };
+  std::vector<Side> sides;
+  sides.reserve(3 * reg.size());
+  for (std::size_t t = 0; t < reg.size(); ++t) {
+    if (!(triangle_area(positions, reg[t].vertex) > 0)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = reg[t].node[(k + 1) % 3], b = reg[t].node[(k + 2) % 3];
+      sides.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), std::uint32_t(t), std::uint8_t(k)});
+    }
+  }
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
+    return x.key != y.key ? x.key < y.key : x.triangle < y.triangle;
+  });
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i;
+    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
+    if (j - i == 2) {
+      const RegTriangle& t1 = reg[sides[i].triangle];
+      const RegTriangle& t2 = reg[sides[i + 1].triangle];
+      const int k1 = sides[i].opposite, k2 = sides[i + 1].opposite;
+      const std::uint32_t a = t1.node[(k1 + 1) % 3], b = t1.node[(k1 + 2) % 3];
+      const std::uint32_t va = t1.vertex[(k1 + 1) % 3], vb = t1.vertex[(k1 + 2) % 3];
+      const std::uint32_t nodes[4] = {a, b, t1.node[k1], t2.node[k2]};
+      double d[4], weight = 0;
+      if (edge_kink(get3(positions, va), get3(positions, vb), get3(positions, t1.vertex[k1]),
+                    get3(positions, t2.vertex[k2]), d, weight)) {
+        const double root = std::sqrt(lambda * weight);
+        for (int r = 0; r < 4; ++r) {
+          A.edge_node.push_back(nodes[r]);
+          A.edge_d.push_back(root * d[r]);
+        }
+        for (int r = 0; r < 4; ++r) A.diagonal[nodes[r]] += lambda * weight * d[r] * d[r];
+        ++fit.regularized_edges;
+      } else {
+        ++fit.skipped_edges;
+      }
+    }
+    i = j;
+  }
+}
+
+struct BlockCgOptions {
+  double tolerance = 1e-10;   // relative residual per channel
+  // > 0: also stop a channel once sum_i r_i^2 / inverse_mass_i <= accuracy_bound (least_squares_fit.h,
+  // Solver: then every value is within the accuracy of the exact solution)
+  double accuracy_bound = 0;
+  const std::vector<double>* inverse_mass = nullptr;  // #nodes: 1 / M_ii (0 off the system)
+  int max_iterations = 0;
+};
+
+// Jacobi-preconditioned conjugate gradient (Hestenes & Stiefel; the loop of Eigen's
+// ConjugateGradient) on W channels at once (W = 1 or 3): one operator pass per step serves all
+// channels, each with its own step lengths and its own stop. x: #nodes by W, the first guess in,
+// the solution out; rows in off_system stay 0. Counts into fit (iterations: operator passes, the
+// most over channels; residual: the largest relative residual; converged).
+template <std::size_t W>
+void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
+                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b_in,
+                              const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
+  using Channels = std::array<double, W>;
+  const std::size_t N = inverse_diagonal.size(), n = N * W;
+  std::vector<double> r_v(n), p_v(n), Ap_v(n);
+  double* const r = r_v.data();
+  double* const p = p_v.data();
+  double* const Ap = Ap_v.data();
+  const double* const b = b_in.data();
+  const double* const inv_d = inverse_diagonal.data();
+  const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
+  const auto apply = [&](const double* in, double* out) {
+    apply_operator<W>(A, in, out, W);
+    for (std::uint32_t i : off_system)
+      for (std::size_t k = 0; k < W; ++k) out[i * W + k] = 0;
+  };
+  Channels rhs2{}, res2{}, res_mass{}, threshold{}, abs_new{}, abs_old{}, pAp{}, alpha{}, beta{};
+  std::array<bool, W> active{};
+  const bool bounded = o.accuracy_bound > 0 && inv_m;
+  const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
+  apply(x, Ap);
+  for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+    for (std::size_t k = 0; k < W; ++k) {
+      r[i + k] = b[i + k] - Ap[i + k];
+      rhs2[k] += b[i + k] * b[i + k];
+      res2[k] += r[i + k] * r[i + k];
+      if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
+    }
+  std::size_t running = 0;
+  for (std::size_t k = 0; k < W; ++k) {
+    threshold[k] = std::max(o.tolerance * o.tolerance * rhs2[k], std::numeric_limits<double>::min());
+    active[k] = false;
+    if (rhs2[k] == 0) {  // b = 0: the solution is 0
+      for (std::size_t i = k; i < n; i += W) x[i] = 0;
+      res2[k] = 0;
+    } else if (!(res2[k] < threshold[k] || accurate(k))) {
+      active[k] = true;
+      ++running;
+    }
+  }
+  for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+    for (std::size_t k = 0; k < W; ++k) {
+      p[i + k] = r[i + k] * inv_d[node];
+      abs_new[k] += r[i + k] * p[i + k];
+    }
+  int iterations = 0;
+  while (running > 0 && iterations < o.max_iterations) {
+    apply(p, Ap);
+    ++iterations;
+    pAp.fill(0.0);
+    for (std::size_t i = 0; i < n; i += W)
+      for (std::size_t k = 0; k < W; ++k) pAp[k] += p[i + k] * Ap[i + k];
+    for (std::size_t k = 0; k < W; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
+      alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
+    res2.fill(0.0);
+    res_mass.fill(0.0);
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) {
+        x[i + k] += alpha[k] * p[i + k];
+        const double ri = r[i + k] - alpha[k] * Ap[i + k];
+        r[i + k] = ri;
+        res2[k] += ri * ri;
+        if (bounded) res_mass[k] += ri * ri * inv_m[node];
+      }
+    for (std::size_t k = 0; k < W; ++k)
+      if (active[k] && (res2[k] < threshold[k] || accurate(k) || !(pAp[k] > 0))) {
+        active[k] = false;
+        --running;
+      }
+    if (running == 0) break;
+    abs_old = abs_new;
+    abs_new.fill(0.0);
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
+      for (std::size_t k = 0; k < W; ++k) abs_new[k] += r[i + k] * r[i + k] * inv_d[node];
+    for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
+      beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) p[i + k] = r[i + k] * inv_d[node] + beta[k] * p[i + k];
+  }
+  fit.iterations = std::max(fit.iterations, iterations);
+  for (std::size_t k = 0; k < W; ++k) {
+    const double relative = rhs2[k] > 0 ? std::sqrt(res2[k] / rhs2[k]) : 0.0;  // divisor checked
+    fit.residual = std::max(fit.residual, relative);
+    fit.converged = fit.converged && (res2[k] < threshold[k] || accurate(k));
+  }
+}
+
+// Widths other than 1 and 3: one channel at a time.
+void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
+                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b,
+                              std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
+  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, o, x.data(), fit);
+  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b, o, x.data(), fit);
+  const std::size_t N = inverse_diagonal.size();
+  std::vector<double> bk(N), xk(N);
+  for (std::size_t k = 0; k < width; ++k) {
+    for (std::size_t i = 0; i < N; ++i) {
+      bk[i] = b[i * width + k];
+      xk[i] = x[i * width + k];
+    }
+    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk, o, xk.data(), fit);
+    for (std::size_t i = 0; i < N; ++i) x[i * width + k] = xk[i];
+  }
+}
+
 }  // namespace
 
 FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& corner_node, std::size_t nodes) {
@@ -114,6 +429,22 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
     throw Error("fit_quadrature: " + std::to_string(samples) + " points per triangle is not a rule (1, 3, 6 or 12)");
   FitQuadrature q;
   q.samples = samples;
+  const std::vector<QuadraturePoint> rule = triangle_quadrature(samples);
+  const std::size_t T = e.tri_face.size(), R = rule.size();
+  const int g = quad_gauss_points(samples);
+  q.triangle_area.resize(T);
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < T; ++t) {
+    const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
+    q.triangle_area[t] = area > 0 ? area : 0.0;  // no area, no part of the integral
+    kept += area > 0;
+  }
+  const std::size_t most = kept * R + e.quad_face.size() * std::size_t(g * g);
+  q.node.reserve(4 * most);
+  q.vertex.reserve(4 * most);
+  q.phi.reserve(4 * most);
+  q.weight.reserve(most);
+  q.face.reserve(most);
   const auto push = [&q](const std::uint32_t* nodes, const std::uint32_t* vertices, const double* phi, int n,
                          double weight, std::uint32_t face) {
     for (int j = 0; j < 4; ++j) {
@@ -124,22 +455,13 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
     q.weight.push_back(weight);
     q.face.push_back(face);
   };
-  const std::vector<QuadraturePoint> rule = triangle_quadrature(samples);
-  const std::size_t T = e.tri_face.size();
-  const int g = quad_gauss_points(samples);
-  const std::size_t most = T * rule.size() + e.quad_face.size() * std::size_t(g * g);
-  q.node.reserve(4 * most);
-  q.vertex.reserve(4 * most);
-  q.phi.reserve(4 * most);
-  q.weight.reserve(most);
-  q.face.reserve(most);
   for (std::size_t t = 0; t < T; ++t) {
-    const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
-    if (!(area > 0)) continue;  // no area, no part of the integral
+    const double area = q.triangle_area[t];
+    if (!(area > 0)) continue;
     for (const QuadraturePoint& p : rule)
       push(&e.tri_node[3 * t], &e.tri_vertex[3 * t], p.barycentric.data(), 3, p.weight * area, e.tri_face[t]);
   }
-  const std::vector<GaussPoint> gauss = gauss_legendre_unit(quad_gauss_points(samples));
+  const std::vector<GaussPoint> gauss = gauss_legendre_unit(g);
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
     Vec3d c[4];
     quad_corners(e, positions, k, c);
@@ -150,7 +472,24 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
         push(&e.quad_node[4 * k], &e.quad_vertex[4 * k], b.phi, 4, gu.weight * gv.weight * b.area_element, e.quad_face[k]);
       }
   }
+  assign_sites(q, positions.size() / 3);
   return q;
+}
+
+std::vector<double> interpolate_vertex_data_at_sites(const FitQuadrature& q, const std::vector<double>& data,
+                                                     std::size_t width) {
+  std::vector<double> out(q.sites() * width);
+  for (std::size_t i = 0; i < q.sites(); ++i) interpolate_vertex_data_at_site(q, i, data.data(), width, &out[i * width]);
+  return out;
+}
+
+
+std::vector<double> site_values_at_points(const FitQuadrature& q, const std::vector<double>& values, std::size_t width) {
+  if (q.sites() == q.size()) return values;  // every point its own site, numbered in point order
+  std::vector<double> out(q.size() * width);
+  for (std::size_t s = 0; s < q.size(); ++s)
+    for (std::size_t k = 0; k < width; ++k) out[s * width + k] = values[q.site[s] * width + k];
+  return out;
 }
 
 std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& data, std::size_t width) {
@@ -181,161 +520,64 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
                                   const std::vector<double>& f, const std::vector<double>& point_values,
                                   std::size_t width, const LeastSquaresFitOptions& options) {
   const std::size_t N = e.nodes, S = q.size();
-  if (f.size() != S * width || point_values.size() != N * width)
+  const bool per_site = f.size() != S * width && f.size() == q.sites() * width;  // f at the sites
+  if ((f.size() != S * width && !per_site) || point_values.size() != N * width)
     throw Error("least_squares_fit: " + std::to_string(f.size()) + " signal values for " + std::to_string(S) +
                 " points and " + std::to_string(point_values.size()) + " point values for " + std::to_string(N) +
                 " nodes (width " + std::to_string(width) + ")");
   if (!(options.regularization >= 0) || !std::isfinite(options.regularization))
     throw Error("least_squares_fit: the regularization weight must be finite and >= 0");
   LeastSquaresFit fit;
-  std::vector<Triplet> triplets;
-  triplets.reserve(9 * e.tri_face.size() + 16 * e.quad_face.size() +
-                   (options.regularization > 0 ? 16 * 3 * (e.tri_face.size() + 2 * e.quad_face.size()) / 2 : 0));
-  std::vector<double> diagonal(N, 0.0), mass_diagonal(N, 0.0);  // of M + lambda R, of M
-  const auto add = [&](std::uint32_t i, std::uint32_t j, double v) {
-    triplets.emplace_back(int(i), int(j), v);
-    if (i == j) diagonal[i] += v;
-  };
-  const auto add_mass = [&](std::uint32_t i, std::uint32_t j, double v) {
-    add(i, j, v);
-    if (i == j) mass_diagonal[i] += v;
-  };
-
-  // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
-  const std::size_t T = e.tri_face.size();
-  std::vector<RegTriangle> reg;
-  reg.reserve(T + 2 * e.quad_face.size());
-  for (std::size_t t = 0; t < T; ++t) {
-    const std::uint32_t* n = &e.tri_node[3 * t];
-    const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
-    if (!(area > 0)) continue;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) add_mass(n[i], n[j], area / 12 * (i == j ? 2 : 1));
-    if (options.regularization > 0)
-      reg.push_back({{n[0], n[1], n[2]}, {e.tri_vertex[3 * t], e.tri_vertex[3 * t + 1], e.tri_vertex[3 * t + 2]}});
-  }
-  // M, quads: 3x3 Gauss-Legendre on the bilinear map.
-  const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
-  for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
-    const std::uint32_t* n = &e.quad_node[4 * k];
-    const std::uint32_t* v = &e.quad_vertex[4 * k];
-    Vec3d c[4];
-    quad_corners(e, positions, k, c);
-    double m[4][4] = {};
-    for (const GaussPoint& gu : gauss)
-      for (const GaussPoint& gv : gauss) {
-        const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
-        const double w = gu.weight * gv.weight * b.area_element;
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j) m[i][j] += w * b.phi[i] * b.phi[j];
-      }
-    if (!(m[0][0] + m[1][1] + m[2][2] + m[3][3] > 0)) continue;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) add_mass(n[i], n[j], m[i][j]);
-    if (options.regularization > 0) {
-      reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
-      reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
-    }
-  }
-
-  // R: the interior edges (exactly two triangles of positive area), found by sorting the sides.
-  if (options.regularization > 0) {
-    struct Side {
-      std::uint64_t key;  // (min node, max node)
-      std::uint32_t triangle;
-      std::uint8_t opposite;  // local index of the wing
-    };
-    std::vector<Side> sides;
-    sides.reserve(3 * reg.size());
-    for (std::size_t t = 0; t < reg.size(); ++t) {
-      if (!(triangle_area(positions, reg[t].vertex) > 0)) continue;
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t a = reg[t].node[(k + 1) % 3], b = reg[t].node[(k + 2) % 3];
-        sides.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), std::uint32_t(t), std::uint8_t(k)});
-      }
-    }
-    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-      return x.key != y.key ? x.key < y.key : x.triangle < y.triangle;
-    });
-    for (std::size_t i = 0; i < sides.size();) {
-      std::size_t j = i;
-      while (j < sides.size() && sides[j].key == sides[i].key) ++j;
-      if (j - i == 2) {
-        const RegTriangle& t1 = reg[sides[i].triangle];
-        const RegTriangle& t2 = reg[sides[i + 1].triangle];
-        const int k1 = sides[i].opposite, k2 = sides[i + 1].opposite;
-        const std::uint32_t a = t1.node[(k1 + 1) % 3], b = t1.node[(k1 + 2) % 3];
-        const std::uint32_t va = t1.vertex[(k1 + 1) % 3], vb = t1.vertex[(k1 + 2) % 3];
-        const std::uint32_t nodes[4] = {a, b, t1.node[k1], t2.node[k2]};
-        double d[4], weight = 0;
-        if (edge_kink(get3(positions, va), get3(positions, vb), get3(positions, t1.vertex[k1]),
-                      get3(positions, t2.vertex[k2]), d, weight)) {
-          const double s = options.regularization * weight;
-          for (int r = 0; r < 4; ++r)
-            for (int c = 0; c < 4; ++c) add(nodes[r], nodes[c], s * d[r] * d[c]);
-          ++fit.regularized_edges;
-        } else {
-          ++fit.skipped_edges;
-        }
-      }
-      i = j;
-    }
-  }
+  FitOperator A;
+  std::vector<double> mass_diagonal;
+  if (q.triangle_area.size() != e.tri_face.size())
+    throw Error("least_squares_fit: the quadrature is not of these elements (" + std::to_string(q.triangle_area.size()) +
+                " triangle areas for " + std::to_string(e.tri_face.size()) + " triangles)");
+  build_fit_operator(e, positions, q.triangle_area, options.regularization, A, mass_diagonal, fit);
 
   // The system over the nodes with mass; the others keep their point value.
-  std::vector<int> index(N, -1);
-  int n_active = 0;
+  // Jacobi preconditioner and 1 / M_ii (the same with lambda = 0); 0 off the system
+  const bool regularized = options.regularization > 0;
+  std::vector<double> inverse_diagonal(N, 0.0), inverse_mass(regularized ? N : 0, 0.0);
+  std::vector<std::uint32_t> off_system;
+  double min_mass = std::numeric_limits<double>::infinity();  // over the nodes of the system
   for (std::size_t i = 0; i < N; ++i) {
-    if (diagonal[i] > 0) index[i] = n_active++;
-    else ++fit.fallback_nodes;
+    if (A.diagonal[i] > 0) {
+      inverse_diagonal[i] = 1 / A.diagonal[i];  // divisor checked
+      if (regularized && mass_diagonal[i] > 0) inverse_mass[i] = 1 / mass_diagonal[i];  // divisor checked
+      min_mass = std::min(min_mass, mass_diagonal[i]);
+    } else {
+      off_system.push_back(std::uint32_t(i));
+      ++fit.fallback_nodes;
+    }
   }
   fit.values = point_values;
-  if (n_active > 0) {
-    std::vector<Triplet> mapped;
-    mapped.reserve(triplets.size());
-    for (const Triplet& t : triplets) {
-      const int r = index[std::size_t(t.row())], c = index[std::size_t(t.col())];
-      if (r >= 0 && c >= 0) mapped.emplace_back(r, c, t.value());
-    }
-    triplets.clear();
-    triplets.shrink_to_fit();
-    SparseMatrix A(n_active, n_active);
-    A.setFromTriplets(mapped.begin(), mapped.end());
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
-    cg.setTolerance(options.tolerance);
-    if (options.max_iterations > 0) cg.setMaxIterations(options.max_iterations);
-    cg.compute(A);
-    double min_mass = std::numeric_limits<double>::infinity();  // over the active nodes
-    for (std::size_t i = 0; i < N; ++i)
-      if (index[i] >= 0) min_mass = std::min(min_mass, mass_diagonal[i]);
-    // b for every channel in one pass over the points (each entry summed in point order, as one
-    // pass per channel would).
-    std::vector<double> b_all(std::size_t(n_active) * width, 0.0);
+  if (off_system.size() < N) {
+    // b for every channel in one pass over the points.
+    std::vector<double> b(N * width, 0.0);
     for (std::size_t s = 0; s < S; ++s)
       for (int j = 0; j < 4; ++j) {
-        const int r = index[q.node[4 * s + j]];
-        if (r < 0) continue;
+        const std::size_t r = q.node[4 * s + j];
         const double w = q.weight[s] * q.phi[4 * s + j];
-        for (std::size_t k = 0; k < width; ++k) b_all[std::size_t(r) * width + k] += w * f[s * width + k];
+        if (w == 0 || inverse_diagonal[r] == 0) continue;
+        const double* fs = &f[(per_site ? q.site[s] : s) * width];
+        for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * fs[k];
       }
-    for (std::size_t k = 0; k < width; ++k) {
-      Eigen::VectorXd b(n_active), x0(n_active);
-      for (int r = 0; r < n_active; ++r) b[r] = b_all[std::size_t(r) * width + k];
-      for (std::size_t i = 0; i < N; ++i)
-        if (index[i] >= 0) x0[index[i]] = point_values[i * width + k];
-      // accuracy: |A c - b|_2 <= accuracy min M_ii / 4 bounds every value's error (header, Solver).
-      const double b_norm = b.norm();
-      double tolerance = options.tolerance;
-      if (options.accuracy > 0 && b_norm > 0 && min_mass > 0 && std::isfinite(min_mass))
-        tolerance = std::max(tolerance, options.accuracy * min_mass / 4 / b_norm);  // divisor checked
-      cg.setTolerance(tolerance);
-      const Eigen::VectorXd x = cg.solveWithGuess(b, x0);
-      fit.iterations = std::max(fit.iterations, int(cg.iterations()));
-      fit.residual = std::max(fit.residual, double(cg.error()));
-      fit.converged = fit.converged && cg.info() == Eigen::Success;
-      for (std::size_t i = 0; i < N; ++i)
-        if (index[i] >= 0) fit.values[i * width + k] = x[index[i]];
+    for (std::uint32_t i : off_system)
+      for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = 0;  // out of the system during CG
+    BlockCgOptions cg;
+    cg.tolerance = options.tolerance;
+    // accuracy a: stop at sum r_i^2 / M_ii <= (a mu)^2 min M_ii (header, Solver); mu = 1/2 with
+    // triangles only, 1/4 with quads (Wathen's lower eigenvalue bounds of diag(M)^-1 M)
+    const double mu = e.quad_face.empty() ? 0.5 : 0.25;
+    if (options.accuracy > 0 && min_mass > 0 && std::isfinite(min_mass)) {
+      cg.accuracy_bound = options.accuracy * mu * options.accuracy * mu * min_mass;
+      cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
+    cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b, width, cg, fit.values, fit);
+    for (std::uint32_t i : off_system)
+      for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = point_values[i * width + k];
   }
   for (double& v : fit.values) {
     if (v < options.lower) {
@@ -351,14 +593,18 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
 
 double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f, const std::vector<double>& node_values,
                          std::size_t width) {
-  const std::vector<double> g = interpolate_node_values(q, node_values, width);
+  const bool per_site = f.size() != q.size() * width && f.size() == q.sites() * width;  // f at the sites
   double num = 0, den = 0;
-  for (std::size_t s = 0; s < q.size(); ++s)
+  for (std::size_t s = 0; s < q.size(); ++s) {
+    const double* fs = &f[(per_site ? q.site[s] : s) * width];
     for (std::size_t k = 0; k < width; ++k) {
-      const double d = g[s * width + k] - f[s * width + k];
+      double g = 0;
+      for (int j = 0; j < 4; ++j) g += q.phi[4 * s + j] * node_values[q.node[4 * s + j] * width + k];
+      const double d = g - fs[k];
       num += q.weight[s] * d * d;
-      den += q.weight[s] * f[s * width + k] * f[s * width + k];
+      den += q.weight[s] * fs[k] * fs[k];
     }
+  }
   if (!(den > 0)) return num > 0 ? std::numeric_limits<double>::infinity() : 0.0;
   return std::sqrt(num / den);  // divisor checked
 }

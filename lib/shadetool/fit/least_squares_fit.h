@@ -28,16 +28,21 @@
 // corner group split at a crease or seam: then no edge joins the two sides, M and R never couple
 // them, and the fitted values keep the discontinuity).
 //
-// Solver: Eigen's ConjugateGradient (Jacobi preconditioner) on M + lambda R, symmetric positive
-// definite when every node touches a face of positive area; stopped when |A c - b| <= tolerance
-// |b| (default 1e-10), from the point values as the first guess, one solve per channel. With
-// accuracy a > 0 (8-bit outputs: kEightBitFitAccuracy, a quarter of a step) it also stops once
-// every value is provably within a of the exact solution: |c - c*|_inf <= |c - c*|_2 <=
-// |A c - b|_2 / lambda_min(A), and lambda_min(A) >= lambda_min(M) >= min_i M_ii / 4 (R is positive
-// semi-definite; Wathen, "Realistic eigenvalue bounds for the Galerkin mass matrix", IMA J. Numer.
-// Anal. 7, 1987: the eigenvalues of diag(M)^-1 M lie in [1/2, 2] for linear triangles and in
-// [1/4, 9/4] for bilinear rectangles; distorted quads stay near it, tests/fit checks jittered
-// ones), so CG stops at |A c - b|_2 <= a min_i M_ii / 4. The 8-bit bytes
+// Solver: Jacobi-preconditioned conjugate gradient on M + lambda R (symmetric positive definite
+// when every node touches a face of positive area), matrix-free: A is kept as its elements (area/12
+// per triangle, a 4 x 4 block per quad, a vector d per regularised edge) and applied by one pass
+// over them per step, so no sparse matrix is assembled; all channels in one block (one pass serves
+// them all; each channel has its own step lengths and stop). Stopped per channel when
+// |A c - b| <= tolerance |b| (default 1e-10), from the point values as the first guess. With
+// accuracy a > 0 (8-bit outputs: kEightBitFitAccuracy, a quarter of a step) a channel also stops
+// once every value is provably within a of the exact solution. With e = c - c*, r = A c - b = A e,
+// D = diag(M) and mu a lower bound of the eigenvalues of D^-1 M (Wathen, "Realistic eigenvalue
+// bounds for the Galerkin mass matrix", IMA J. Numer. Anal. 7, 1987: they lie in [1/2, 2] for
+// linear triangles of any shape and in [1/4, 9/4] for bilinear rectangles; distorted quads stay
+// near it, tests/fit checks jittered ones; so mu = 1/2 without quads, 1/4 with), and R positive
+// semi-definite:  mu |D^1/2 e|^2 <= e^T M e <= e^T A e = e^T r <= |D^1/2 e| |D^-1/2 r|,  so
+//     |e|_inf <= |e|_2 <= |D^1/2 e|_2 / sqrt(min D) <= |D^-1/2 r|_2 / (mu sqrt(min D)),
+// and CG stops at sum_i r_i^2 / M_ii <= (a mu)^2 min_i M_ii. The 8-bit bytes
 // written then differ from the exact solution's only where that value lies within a of a rounding
 // boundary (bench/fit/results.md: on the 10k torus 8 CG iterations instead of 17 under the studio
 // scene, 3 instead of 13 under the window). Nodes
@@ -74,14 +79,22 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
 // The quadrature points: triangles' first, then quads', in element order. Per point up to 4
 // (node, phi) pairs (unused: phi 0), its weight w_k dA (units of `positions`, squared), its face,
 // and its element's vertices and their weights (to interpolate per-vertex data: positions, normals).
+// Sites: where the signal is evaluated. A point at the midpoint of an edge (the 3-point rule's) is
+// the same place, with the same interpolated per-vertex data, in both triangles of the edge (those
+// that share its two vertices), so the two points share one site; every other point is its own
+// site. Sites are numbered in the order of their first point.
 struct FitQuadrature {
   int samples = 3;
-  std::vector<std::uint32_t> node;     // 4 per point
-  std::vector<std::uint32_t> vertex;   // 4 per point
-  std::vector<double> phi;             // 4 per point
-  std::vector<double> weight;          // 1 per point
-  std::vector<std::uint32_t> face;     // 1 per point
+  std::vector<std::uint32_t> node;        // 4 per point
+  std::vector<std::uint32_t> vertex;      // 4 per point
+  std::vector<double> phi;                // 4 per point
+  std::vector<double> weight;             // 1 per point
+  std::vector<std::uint32_t> face;        // 1 per point
+  std::vector<std::uint32_t> site;        // 1 per point
+  std::vector<std::uint32_t> site_point;  // 1 per site: its first point
+  std::vector<double> triangle_area;      // 1 per triangle of the elements (0: no area, no points)
   std::size_t size() const { return weight.size(); }
+  std::size_t sites() const { return site_point.size(); }
 };
 // positions: #V by 3 (the space the area is measured in: world, for lighting). samples: 1, 3, 6, 12
 // (Error otherwise).
@@ -90,6 +103,24 @@ FitQuadrature fit_quadrature(const FitElements& elements, const std::vector<doub
 // Per-vertex data (#V by width) at the quadrature points (#points by width): sum phi_k data[vertex_k].
 std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& vertex_data,
                                             std::size_t width);
+// The same at one site i: out[0..width) = sum phi_k data[vertex_k] at q.site_point[i] (inline: the
+// shading loops call it per site).
+inline void interpolate_vertex_data_at_site(const FitQuadrature& q, std::size_t i, const double* vertex_data,
+                                            std::size_t width, double* out) {
+  const std::size_t s = q.site_point[i];
+  for (std::size_t k = 0; k < width; ++k) out[k] = 0;
+  for (std::size_t j = 0; j < 4; ++j) {
+    const double phi = q.phi[4 * s + j];
+    if (phi == 0) continue;
+    const std::size_t v = q.vertex[4 * s + j];
+    for (std::size_t k = 0; k < width; ++k) out[k] += phi * vertex_data[v * width + k];
+  }
+}
+// The same at the sites (#sites by width), and values at the sites copied to their points.
+std::vector<double> interpolate_vertex_data_at_sites(const FitQuadrature& q, const std::vector<double>& vertex_data,
+                                                     std::size_t width);
+std::vector<double> site_values_at_points(const FitQuadrature& q, const std::vector<double>& site_values,
+                                          std::size_t width);
 // Per-node values (#nodes by width) interpolated at the quadrature points, as Gouraud shows them.
 std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::vector<double>& node_values,
                                             std::size_t width);
@@ -125,14 +156,16 @@ struct LeastSquaresFit {
   bool converged = true;
 };
 
-// f: #points by width, the signal at q's points. point_values: #nodes by width (first guess and
+// f: #points by width, the signal at q's points, or #sites by width, its value at each site (one
+// value for all the points of a site; the two are the same when every point is its own site). point_values: #nodes by width (first guess and
 // fallback). Error for mismatched sizes.
 LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
                                   const FitQuadrature& q, const std::vector<double>& f,
                                   const std::vector<double>& point_values, std::size_t width,
                                   const LeastSquaresFitOptions& options = {});
 
-// The relative L2 distance between the interpolated node values and f, by the quadrature q:
+// The relative L2 distance between the interpolated node values and f (per point or per site, as
+// least_squares_fit takes it), by the quadrature q:
 //   sqrt( sum_k w_k |g(x_k) - f_k|^2 / sum_k w_k |f_k|^2 )   (0 when f is zero everywhere and g is).
 double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f,
                          const std::vector<double>& node_values, std::size_t width);

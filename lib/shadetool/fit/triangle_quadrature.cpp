@@ -43,7 +43,7 @@ std::vector<QuadraturePoint> triangle_quadrature(int points) {
   if (points == 1) {
     rule.push_back({{1.0 / 3, 1.0 / 3, 1.0 / 3}, 1.0});
   } else if (points == 3) {
-    add_orbit3(rule, 2.0 / 3, 1.0 / 6, 1.0 / 3);
+    add_orbit3(rule, 0.0, 0.5, 1.0 / 3);  // the edge midpoints
   } else if (points == 6) {  // Dunavant degree 4
     add_orbit3(rule, 0.108103018168070, 0.445948490915965, 0.223381589678011);
     add_orbit3(rule, 0.816847572980459, 0.091576213509771, 0.109951743655322);

@@ -4,7 +4,11 @@
 //
 //   points  degree (exact for polynomials up to)   rule
 //   1       1                                       centroid
-//   3       2                                       Strang & Fix (1973): (2/3, 1/6, 1/6), w = 1/3
+//   3       2                                       the edge midpoints (0, 1/2, 1/2), w = 1/3 (Strang
+//                                                   & Fix 1973, table 4.1): on a mesh each midpoint
+//                                                   is shared by the two triangles of its edge, so
+//                                                   the signal is evaluated about 1.5 times per
+//                                                   triangle (fit_quadrature's sites)
 //   6       4                                       Dunavant (1985), "High degree efficient symmetrical
 //                                                   Gaussian quadrature rules for the triangle", IJNME
 //                                                   21, table degree 4

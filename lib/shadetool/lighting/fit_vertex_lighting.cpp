@@ -22,39 +22,51 @@ std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene,
                                            const std::vector<double>& vertex_normals_object,
                                            const ShadeOptions& options, const ShadowOptions& shadows,
                                            ShadowStats* shadow_stats) {
+  return site_values_at_points(
+      q, lighting_at_sites(mesh, scene, q, positions_world, vertex_normals_object, options, shadows, shadow_stats), 3);
+}
+
+std::vector<double> lighting_at_sites(const Mesh& mesh, const Scene& scene, const FitQuadrature& q,
+                                      const std::vector<double>& positions_world,
+                                      const std::vector<double>& vertex_normals_object, const ShadeOptions& options,
+                                      const ShadowOptions& shadows, ShadowStats* shadow_stats) {
   const Mat3d cof = signed_cofactor(scene.world_from_object.A);
   std::vector<double> normals_world(vertex_normals_object.size());
   for (std::size_t v = 0; v < vertex_normals_object.size() / 3; ++v)
     set3(normals_world, v, Vec3d(transform_normal(cof, Normal3d(get3(vertex_normals_object, v)))));
-  const std::vector<double> p = interpolate_vertex_data(q, positions_world, 3);
-  const std::vector<double> n = interpolate_vertex_data(q, normals_world, 3);  // renormalised by shade_point
+  // f at each site (shared edge midpoints once)
   const PointLighting lit = prepare_point_lighting(scene, options.model);
-  const std::size_t S = q.size();
-
-  std::vector<double> visibility;
-  std::size_t row = 0;
-  if (shadows.enabled) {
-    Mesh world;  // the mesh's own occluders, unless the caller built the scene's
-    std::unique_ptr<VisibilityScene> own;
-    if (!shadows.occluders) {
-      world.positions = positions_world;
-      world.face_start = mesh.face_start;
-      world.corner_vertex = mesh.corner_vertex;
-      own = std::make_unique<VisibilityScene>(world);
-    }
-    const VisibilityScene& bvh = shadows.occluders ? *shadows.occluders : *own;
-    visibility = light_visibility(bvh, scene, lit.plan, p, n, {}, shadows.samples, shadow_stats);
-    row = 2 * lit.plan.lights.size();
-  }
-
+  const std::size_t S = q.sites();
   std::vector<double> f(3 * S);
+  if (!shadows.enabled) {  // p and n interpolated where they are shaded: no arrays of them
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, S, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
+      ShadeCounters counters;  // the point bake reports the counts; these are not summed
+      for (std::size_t s = r.begin(); s < r.end(); ++s) {
+        double p[3], n[3];  // n renormalised by shade_point
+        interpolate_vertex_data_at_site(q, s, positions_world.data(), 3, p);
+        interpolate_vertex_data_at_site(q, s, normals_world.data(), 3, n);
+        set3(f, s, shade_point(lit, Vec3d(p[0], p[1], p[2]), Vec3d(n[0], n[1], n[2]), &counters));
+      }
+    });
+    return f;
+  }
+  const std::vector<double> p = interpolate_vertex_data_at_sites(q, positions_world, 3);
+  const std::vector<double> n = interpolate_vertex_data_at_sites(q, normals_world, 3);  // renormalised by shade_point
+  Mesh world;  // the mesh's own occluders, unless the caller built the scene's
+  std::unique_ptr<VisibilityScene> own;
+  if (!shadows.occluders) {
+    world.positions = positions_world;
+    world.face_start = mesh.face_start;
+    world.corner_vertex = mesh.corner_vertex;
+    own = std::make_unique<VisibilityScene>(world);
+  }
+  const VisibilityScene& bvh = shadows.occluders ? *shadows.occluders : *own;
+  const std::vector<double> visibility = light_visibility(bvh, scene, lit.plan, p, n, {}, shadows.samples, shadow_stats);
+  const std::size_t row = 2 * lit.plan.lights.size();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, S, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
-    ShadeCounters counters;  // the point bake reports the counts; these are not summed
-    for (std::size_t s = r.begin(); s < r.end(); ++s) {
-      const Vec3d c = shadows.enabled ? shade_point_shadowed(lit, get3(p, s), get3(n, s), visibility.data() + s * row, &counters)
-                                      : shade_point(lit, get3(p, s), get3(n, s), &counters);
-      set3(f, s, c);
-    }
+    ShadeCounters counters;
+    for (std::size_t s = r.begin(); s < r.end(); ++s)
+      set3(f, s, shade_point_shadowed(lit, get3(p, s), get3(n, s), visibility.data() + s * row, &counters));
   });
   return f;
 }
@@ -73,8 +85,8 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   const FitElements elements = fit_elements(mesh);
   const FitQuadrature q = fit_quadrature(elements, positions_world, fit.samples);
   out.quadrature_points = q.size();
-  std::vector<double> f =
-      lighting_at_quadrature(mesh, scene, q, positions_world, point.vertex_normals, options, shadows, &out.shadows);
+  std::vector<double> f =  // at the sites: least_squares_fit and relative_l2_error read it per site
+      lighting_at_sites(mesh, scene, q, positions_world, point.vertex_normals, options, shadows, &out.shadows);
   // The target is the colour as it will be shown: clamped to the bounds (8-bit: [0, 1], as a
   // renderer's per-pixel Phong is stored), so that light above 1 is not fitted with a slope that
   // the clamp then cuts.

@@ -46,8 +46,13 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
                                       const ShadeOptions& options, const ShadowOptions& shadows,
                                       const VertexFitOptions& fit);
 
-// f at the quadrature points of q (#points by 3): the per-point lighting described above. Used by
-// fit_vertex_lighting, and by benchmarks and tests to measure any colours against the same f.
+// f at the sites of q (#sites by 3: a shared edge midpoint once), the per-point lighting described
+// above, as fit_vertex_lighting fits it; lighting_at_quadrature: the same at every point (#points
+// by 3), for benchmarks and tests to measure any colours against the same f.
+std::vector<double> lighting_at_sites(const Mesh& mesh, const Scene& scene, const FitQuadrature& q,
+                                      const std::vector<double>& positions_world,
+                                      const std::vector<double>& vertex_normals_object, const ShadeOptions& options,
+                                      const ShadowOptions& shadows, ShadowStats* shadow_stats = nullptr);
 std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene, const FitQuadrature& q,
                                            const std::vector<double>& positions_world,
                                            const std::vector<double>& vertex_normals_object,

@@ -19,9 +19,10 @@ OcclusionFit fit_against(const VisibilityScene* given, const Mesh& mesh, const s
   const std::vector<double> axes = occlusion_vertex_axes(mesh, source, computed);
   const FitElements elements = fit_elements(mesh);
   const FitQuadrature q = fit_quadrature(elements, mesh.positions, fit.samples);
-  const std::vector<double> points = interpolate_vertex_data(q, mesh.positions, 3);
-  const std::vector<double> normals = interpolate_vertex_data(q, axes, 3);  // normalised by the ray code
-  std::vector<std::uint64_t> ids(q.size());
+  // rays from each site (shared edge midpoints once)
+  const std::vector<double> points = interpolate_vertex_data_at_sites(q, mesh.positions, 3);
+  const std::vector<double> normals = interpolate_vertex_data_at_sites(q, axes, 3);  // normalised by the ray code
+  std::vector<std::uint64_t> ids(q.sites());
   for (std::size_t s = 0; s < ids.size(); ++s) ids[s] = V + s;
   OcclusionFit out;
   out.quadrature_points = q.size();
@@ -40,7 +41,7 @@ OcclusionFit fit_against(const VisibilityScene* given, const Mesh& mesh, const s
       out.rays = r.rays;
     }
   }
-  const std::vector<double> f(open.begin(), open.end());
+  const std::vector<double> f(open.begin(), open.end());  // at the sites, as least_squares_fit takes it
   const std::vector<double> point(point_open.begin(), point_open.end());
   LeastSquaresFitOptions solve = fit.solve;
   solve.lower = 0;

@@ -3,14 +3,15 @@
 //
 // f at a point x of a face: the open fraction (ambient_occlusion.h) at x about the interpolated
 // vertex axis (occlusion_vertex_axes, renormalised), with the same fixed ray count as the vertices
-// (ambient_occlusion_at_points) or to the same target error (occlusion_to_error.h); the points'
-// seeds are V + their index, so they are independent of the vertices'. The quadrature, normal
+// (ambient_occlusion_at_points) or to the same target error (occlusion_to_error.h), cast once per
+// quadrature site (least_squares_fit.h: an edge midpoint of the 3-point rule serves both its
+// triangles); the sites' seeds are V + their index, so they are independent of the vertices'. The quadrature, normal
 // equations, regulariser and clamp to [0, 1] are fit/least_squares_fit.h's, in the mesh's space.
 //
 // Inputs:  mesh, point_open (#V, the per-vertex result: first guess and fallback), the ray options
 //          (adaptive null: fixed), fit (samples, regularisation), source (for errors)
 // Output:  open_fraction #V; error_fit, error_point (relative L2 to f by the same quadrature);
-//          rays cast at the quadrature points; the solve's counts.
+//          rays cast at the quadrature sites; the solve's counts.
 #pragma once
 
 #include <cstdint>
