@@ -51,21 +51,26 @@ bool adjacent(double a, double b) { return std::nextafter(a, b) == b; }
 
 }  // namespace
 
-TEST_CASE("integer_power_lanes is x^e correctly rounded: where it differs from std::pow, by one ulp and "
-          "nearer to x^e in long double",
+TEST_CASE("lighting_power is x^e correctly rounded: where it differs from std::pow, by one ulp and "
+          "nearer to x^e in long double; the lanes give its bits",
           "[lighting][shade_point][lanes]") {
-  if (!lighting_engine::point_lanes_available()) {
-    WARN("no AVX2+FMA here: shade_point_block takes the scalar loop, nothing to test");
-    return;
-  }
   std::mt19937_64 rng(31);
   std::uniform_real_distribution<double> u(0, 1.0000001);
-  std::vector<double> x(200000), got(x.size());
+  std::vector<double> x(200000), got(x.size()), lanes(x.size());
   for (double& v : x) v = u(rng);
   x[0] = 0, x[1] = 1, x[2] = 0x1p-60, x[3] = 1e-300, x[4] = 0x1p-1074, x[5] = std::nextafter(1.0, 2.0);
+  const bool have_lanes = lighting_engine::point_lanes_available();
+  if (!have_lanes) WARN("no AVX2+FMA here: the four-at-a-time power is not built, only the scalar one is tested");
   std::size_t differ = 0, total = 0;
   for (std::uint32_t e : {0u, 1u, 2u, 3u, 8u, 16u, 24u, 32u, 77u, 128u, 1000u}) {
-    lighting_engine::integer_power_lanes(x.data(), x.size(), e, got.data());
+    for (std::size_t i = 0; i < x.size(); ++i) got[i] = lighting_power(x[i], double(e));
+    if (have_lanes) {
+      lighting_engine::integer_power_lanes(x.data(), x.size(), e, lanes.data());
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        INFO("x = " << x[i] << ", e = " << e);
+        if (lanes[i] != got[i]) REQUIRE(lanes[i] == got[i]);  // one power, two widths, the same bits
+      }
+    }
     for (std::size_t i = 0; i < x.size(); ++i) {
       const double ref = std::pow(x[i], double(e));
       ++total;
@@ -82,7 +87,13 @@ TEST_CASE("integer_power_lanes is x^e correctly rounded: where it differs from s
     }
   }
   INFO(differ << " of " << total << " powers differ from std::pow by one ulp");
+  CHECK(differ > 0);           // glibc's pow is not always correctly rounded: the test sees both
   CHECK(differ * 1000 < total);  // rare (1407 of 2.2M when written): glibc's pow is within 0.52 ulp
+  // a fractional exponent and the edge cases are std::pow's
+  CHECK(lighting_power(0.5, 12.5) == std::pow(0.5, 12.5));
+  CHECK(lighting_power(-0.25, 3) == 0.0);
+  CHECK(lighting_power(0.0, 0) == 1.0);
+  CHECK(lighting_power(std::nan(""), 2) == 0.0);
 }
 
 TEST_CASE("shade_point_block gives shade_point's colours and counts, four points at a time",
@@ -141,11 +152,8 @@ TEST_CASE("shade_point_block gives shade_point's colours and counts, four points
         for (int k = 0; k < 3; ++k) {
           ++channels;
           if (rgb[3 * i + k] == c[k]) continue;
-          // only through a power that differs by one ulp (integer_power_lanes above): a few ulps of
-          // the colour at most
-          ++differ;
+          ++differ;  // none: the lanes compute the scalar loop's operations, powers included
           INFO("point " << i << " channel " << k << ": " << rgb[3 * i + k] << " against " << c[k]);
-          REQUIRE(std::fabs(rgb[3 * i + k] - c[k]) <= 4 * std::numeric_limits<double>::epsilon() * std::fabs(c[k]));
         }
       }
       CHECK(block_counts.points == point_counts.points);
@@ -156,5 +164,5 @@ TEST_CASE("shade_point_block gives shade_point's colours and counts, four points
       CHECK(block_counts.zero_normals == point_counts.zero_normals);
     }
   INFO(differ << " of " << channels << " channels differ");
-  CHECK(differ * 1000 < channels);
+  CHECK(differ == 0);
 }

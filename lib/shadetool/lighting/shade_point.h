@@ -56,9 +56,8 @@ struct PointBlock {
 
 // shade_point for every point of block, into rgb_out (#count by 3). Where the CPU has AVX2 and FMA
 // and every light is directional, point or spot, four points at a time (engine/shade_point_lanes.h):
-// the same bits as shade_point except that an integer power (shininess, spot exponent) is
-// computed correctly rounded where glibc's pow is within 0.52 ulp, so a power can differ from
-// shade_point's by one ulp, rarely (measured in tests/lighting/shade_point.cpp); otherwise
+// the same bits as shade_point, powers included (lighting_equation.h's lighting_power, whose
+// four-wide form the lanes compute; tested in tests/lighting/shade_point.cpp); otherwise
 // shade_point point by point.
 void shade_point_block(const PointLighting& lighting, const PointBlock& block, double* rgb_out,
                        ShadeCounters* counters = nullptr);

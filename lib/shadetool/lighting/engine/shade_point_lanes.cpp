@@ -79,7 +79,7 @@ LANES_TARGET inline void renormalise(__m256d& h, __m256d& l) {
   h = s;
 }
 
-// x^e, e in [1, 2^20], in double-double: left-to-right binary exponentiation, each product's
+// lighting_equation.h's lighting_integer_power four at a time (the same operations, same order): x^e, e in [1, 2^20], in double-double: left-to-right binary exponentiation, each product's
 // rounding error kept by an FMA (h*h - fl(h*h) is exact); l*l (below 2^-106 h^2) dropped.
 LANES_TARGET inline __m256d integer_power(__m256d x, std::uint32_t e) {
   __m256d h = x, l = _mm256_setzero_pd();
