@@ -75,10 +75,10 @@ inline bool has_normal(const double* fn, std::uint32_t f) {
 // count, fill): fan[offset[v] .. offset[v+1]) are the FanCorners of vertex v in ascending corner
 // order. The grouping then reads each vertex's fan as one sequential run instead of fetching every
 // corner's face from anywhere in the face arrays.
-// cone_smooth[v]: every face at v is valid and within half the crease angle of the first one
+// cone_smooth[v]: every face at v is valid and within half the crease angle of its last one
 // (SmoothCone), so no crease can split v: its edges are tested for topology only.
 // Scratch in BulkVectors (core/bulk_reserve.h: unzeroed, huge pages): every entry is written.
-constexpr std::uint32_t kFanPadding = 4;  // records after the last fan, so that groups of 4 can be loaded
+constexpr std::uint32_t kFanPadding = 8;  // records after the last fan: ring tests load 8 whatever the fan size
 struct VertexFans {
   std::vector<std::uint32_t> offset;
   BulkVector<FanCorner> fan;
@@ -164,51 +164,59 @@ struct SmoothCone {
   }
 };
 
-// Vertex fans (VertexFans) in two passes in face order: (a) count the corners of each vertex and
-// run SmoothCone against its first face, (b) fill each vertex's run with its FanCorners.
+// Vertex fans (VertexFans) in two passes in face order, each touching one 16-byte record per
+// vertex (FanBuild) at every corner: (a) count the corners of each vertex and keep the normal of
+// its last face as its cone axis r (rounded to float); a prefix sum turns the counts into the first
+// slot of each run; (b) fill each vertex's run with its FanCorners and run SmoothCone on every face
+// against r: a face that fails (or is degenerate) sets r.x to NaN, which no later face passes.
+// Neither pass branches on the data.
 VertexFans vertex_fans(const MeshView& mesh, const double* fn, const SmoothCone& cone) {
   const std::size_t V = mesh.num_vertices(), F = mesh.num_faces();
   const std::uint32_t* cv = mesh.corner_vertex;
   const bool triangles = mesh.all_triangles();
-  VertexFans vf;
-  vf.offset.assign(V + 1, 0);
-  vf.cone_smooth.assign(V, 0);  // 0 no face yet, 1 every face so far within the cone, 2 not
-  struct alignas(16) ConeAxis { float x, y, z, unused; };
-  BulkVector<ConeAxis> axis(V);  // the first face's normal, written before it is read
+  struct alignas(16) FanBuild {
+    float x, y, z;    // cone axis; x NaN once a face fails
+    std::uint32_t n;  // (a) corners counted; (b) next free slot of the run
+  };
+  BulkVector<FanBuild> build(V);
+  std::fill(build.begin(), build.end(), FanBuild{0.0f, 0.0f, 0.0f, 0});
   for (std::size_t f = 0; f < F; ++f) {
     const FaceCorners fc = face_corners(mesh, triangles, f);
     const double* n = fn + 3 * f;
-    const bool valid = has_normal(fn, std::uint32_t(f)) && cone.usable;
+    const float x = float(n[0]), y = float(n[1]), z = float(n[2]);
     for (std::uint32_t c = fc.begin; c < fc.end; ++c) {
-      const std::uint32_t v = cv[c];
-      ++vf.offset[v + 1];
-      std::uint8_t& state = vf.cone_smooth[v];
-      if (!valid) {
-        state = 2;
-      } else if (state == 0) {
-        axis[v] = {float(n[0]), float(n[1]), float(n[2]), 0.0f};
-        state = 1;
-      } else if (state == 1) {
-        const ConeAxis& r = axis[v];
-        if (!(n[0] * double(r.x) + n[1] * double(r.y) + n[2] * double(r.z) > cone.min_dot)) state = 2;
-      }
+      FanBuild& b = build[cv[c]];
+      b = {x, y, z, b.n + 1};
     }
   }
-  for (std::size_t v = 0; v < V; ++v) vf.offset[v + 1] += vf.offset[v];
+  VertexFans vf;
+  vf.offset.resize(V + 1);
+  std::uint32_t slots = 0;
+  for (std::size_t v = 0; v < V; ++v) {
+    vf.offset[v] = slots;
+    slots += build[v].n;
+    build[v].n = vf.offset[v];
+  }
+  vf.offset[V] = slots;
   vf.fan.resize(mesh.num_corners() + kFanPadding);
   for (std::size_t k = 0; k < kFanPadding; ++k) vf.fan[mesh.num_corners() + k] = {0, 0, 0, 0};
-  BulkVector<std::uint32_t> fill(vf.offset.begin(), vf.offset.end() - 1);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
   for (std::size_t f = 0; f < F; ++f) {
     const FaceCorners fc = face_corners(mesh, triangles, f);
+    const double* n = fn + 3 * f;
     const bool valid = has_normal(fn, std::uint32_t(f));
     for (std::uint32_t c = fc.begin; c < fc.end; ++c) {
       const std::uint32_t v = cv[c];
       const std::uint32_t next = valid ? cv[c + 1 < fc.end ? c + 1 : fc.begin] : v;
       const std::uint32_t prev = valid ? cv[c > fc.begin ? c - 1 : fc.end - 1] : v;
-      vf.fan[fill[v]++] = {c, std::uint32_t(f), next, prev};
+      FanBuild& b = build[v];
+      vf.fan[b.n++] = {c, std::uint32_t(f), next, prev};
+      const bool inside = valid & (n[0] * double(b.x) + n[1] * double(b.y) + n[2] * double(b.z) > cone.min_dot);
+      b.x = inside ? b.x : nan;
     }
   }
-  for (std::size_t v = 0; v < V; ++v) vf.cone_smooth[v] = vf.cone_smooth[v] == 1;
+  vf.cone_smooth.resize(V);
+  for (std::size_t v = 0; v < V; ++v) vf.cone_smooth[v] = cone.usable && !std::isnan(build[v].x);
   return vf;
 }
 
@@ -301,6 +309,51 @@ bool closed_smooth_ring(std::uint32_t v, const FanCorner* fan, std::uint32_t d, 
     k = j;
   }
   return true;
+}
+
+// closed_smooth_ring for a triangle fan of 1..8 corners with every face valid and no smoothing
+// groups (so every link is smooth: two corners of v in different valid triangles), without a
+// branch on the data: 8 lanes whatever d, each corner's successor (the first corner arriving from
+// the vertex it leaves to) found by two 4-lane compares, and the cycle by walking the successor
+// map 8 steps and asking that the first return to corner 0 be step d. Such a walk visits all d
+// corners once, so the successor map is a permutation of them; then no far vertex is left twice
+// (two corners leaving to w would have the same successor) nor reached twice (the successor is
+// the first arriving corner, and every corner is some corner's successor): every link is a
+// manifold edge, and the d links join all corners in one group, as link_small_fan would.
+constexpr std::uint32_t kRing8 = 8;
+inline bool closed_triangle_ring8(std::uint32_t v, const FanCorner* fan, std::uint32_t d) {
+#if defined(__SSE2__)
+  const __m128i vv = _mm_set1_epi32(int(v)), count = _mm_set1_epi32(int(d));
+  const __m128i* r = reinterpret_cast<const __m128i*>(fan);  // {corner, face, next, prev}
+  alignas(16) std::uint32_t nxt[kRing8];
+  __m128i prev[2];
+  for (int q = 0; q < 2; ++q) {
+    const __m128i hi01 = _mm_unpackhi_epi32(_mm_loadu_si128(r + 4 * q), _mm_loadu_si128(r + 4 * q + 1));
+    const __m128i hi23 = _mm_unpackhi_epi32(_mm_loadu_si128(r + 4 * q + 2), _mm_loadu_si128(r + 4 * q + 3));
+    const __m128i index = _mm_add_epi32(_mm_set1_epi32(4 * q), _mm_setr_epi32(0, 1, 2, 3));
+    const __m128i in_fan = _mm_cmplt_epi32(index, count);
+    prev[q] = _mm_or_si128(_mm_and_si128(in_fan, _mm_unpackhi_epi64(hi01, hi23)), _mm_andnot_si128(in_fan, vv));
+    _mm_store_si128(reinterpret_cast<__m128i*>(nxt + 4 * q), _mm_unpacklo_epi64(hi01, hi23));
+  }
+  std::uint32_t succ[kRing8];
+  bool linked = true;  // every corner leaves to a far vertex that some corner arrives from
+  for (std::uint32_t i = 0; i < kRing8; ++i) {
+    const std::uint32_t w = nxt[i];
+    const __m128i x = _mm_set1_epi32(int(w));
+    const std::uint32_t m = std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(prev[0], x)))) |
+                            std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(prev[1], x)))) << 4;
+    linked &= (i >= d) | ((w != v) & (m != 0));
+    succ[i] = std::uint32_t(__builtin_ctz(m | 0x100u)) & (kRing8 - 1);
+  }
+  std::uint32_t k = 0, returns = 0;  // bit s: the walk is at corner 0 after s steps
+  for (std::uint32_t step = 1; step <= kRing8; ++step) {
+    k = succ[k];
+    returns |= std::uint32_t(k == 0) << step;
+  }
+  return linked & (std::uint32_t(__builtin_ctz(returns | 0x200u)) == d);
+#else
+  return closed_smooth_ring(v, fan, d, [](std::uint32_t, std::uint32_t) { return true; });
+#endif
 }
 
 // Linking the corners of vertex v (corners[0 .. d), ascending; local index i) across its smooth
@@ -462,6 +515,7 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
   auto smooth = [&](std::uint32_t fa, std::uint32_t fb) {
     return same_group(fa, fb) && crease.smooth(get3(fn, fa), get3(fn, fb));
   };
+  const bool plain_triangles = mesh.all_triangles() && !face_group;
   parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
     FanScratch scratch;  // reused across the range's vertices
     for (std::size_t v = v_begin; v < v_end; ++v) {
@@ -471,7 +525,8 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
       // A vertex inside its smooth cone has only valid faces and no crease: its edges join by
       // topology (and smoothing group) alone, with the same verdicts as `smooth` (SmoothCone).
       const bool cone = vf.cone_smooth[v];
-      if (cone && closed_smooth_ring(std::uint32_t(v), fan, d, same_group)) {
+      if (cone && (plain_triangles && d <= kRing8 ? closed_triangle_ring8(std::uint32_t(v), fan, d)
+                                                  : closed_smooth_ring(std::uint32_t(v), fan, d, same_group))) {
         groups[v] = 1;
         continue;
       }
