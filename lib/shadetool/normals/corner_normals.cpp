@@ -493,7 +493,8 @@ template <class T, Weighting W>
 CornerNormals compute(const MeshView& mesh, double crease_angle, Precision precision, const std::uint32_t* face_group) {
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
   // (1) face normals: zero for degenerate faces.
-  const std::vector<double> fn = face_normals(mesh, precision);
+  BulkVector<double> fn(3 * mesh.num_faces());  // every entry written
+  face_normals(mesh, precision, fn.data());
   auto face_valid = [&](std::uint32_t f) { return has_normal(fn.data(), f); };
   // (2) the vertex fans, and which vertices no crease can split.
   const VertexFans vf = vertex_fans(mesh, fn.data(), SmoothCone(crease_angle));
@@ -513,7 +514,8 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
     return fa != fb && (!face_group || (face_group[fa] == face_group[fb] && face_group[fa] != 0));
   };
   auto smooth = [&](std::uint32_t fa, std::uint32_t fb) {
-    return same_group(fa, fb) && crease.smooth(get3(fn, fa), get3(fn, fb));
+    auto normal = [&](std::uint32_t f) { return Vec3d{fn[3 * std::size_t(f)], fn[3 * std::size_t(f) + 1], fn[3 * std::size_t(f) + 2]}; };
+    return same_group(fa, fb) && crease.smooth(normal(fa), normal(fb));
   };
   const bool plain_triangles = mesh.all_triangles() && !face_group;
   parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
