@@ -133,11 +133,12 @@ struct CreaseTest {
 };
 
 // SmoothCone: a sufficient test, face by face, that no crease can split a vertex. Every face at
-// v valid and within an angle alpha of the first face's normal r puts every pair of faces at v
+// v valid and within an angle alpha of one face's normal r (vertex_fans: the vertex's last face)
+// puts every pair of faces at v
 // within 2 alpha of each other (triangle inequality for angles on the sphere); alpha is chosen
 // so that 2 alpha clears the crease angle by a margin that covers every rounding, so CreaseTest
 // calls each such pair smooth by its fast path: with cos(2 alpha) = cos(crease_angle) + 5e-5 and
-// |n| within 1e-6 of 1 (as CreaseTest assumes; r is the first normal rounded to float, within
+// |n| within 1e-6 of 1 (as CreaseTest assumes; r is that face's normal rounded to float, within
 // 1e-7 of it), a face passes when its computed n . r > cos(alpha) + 1e-5, which gives the true
 // cos of its angle to r above cos(alpha) - 2e-6 - 1e-15 + 1e-5 > cos(alpha); the computed
 // n_a . n_b of two passing faces then exceeds cos(crease_angle) + 5e-5 - 2e-6 - 1e-15 >
@@ -220,6 +221,8 @@ VertexFans vertex_fans(const MeshView& mesh, const double* fn, const SmoothCone&
   return vf;
 }
 
+constexpr std::size_t kPrefetchVertices = 16;
+
 // Per-range scratch for the vertex fans (grown to the largest fan seen, never shrunk).
 constexpr std::uint32_t kSmallFan = 32;
 struct FanScratch {
@@ -248,55 +251,41 @@ struct FanScratch {
 // searched corner by corner: link_small_fan's pairwise scan cost ~60 ns per vertex.
 constexpr std::uint32_t kRingFan = 16;
 
-// The previous vertices of a fan's corners, kRingFan lanes, lanes >= d set to v (which no corner
-// of a ring leaves to); bit j of arriving(w): lane j equals w.
-struct FanPrevious {
-#if defined(__SSE2__)
-  __m128i lanes[kRingFan / 4];
-  FanPrevious(std::uint32_t v, const FanCorner* fan, std::uint32_t d) {
-    static_assert(sizeof(FanCorner) == 16, "one record per 128-bit load");
-    const __m128i vv = _mm_set1_epi32(int(v)), count = _mm_set1_epi32(int(d));
-    for (std::uint32_t q = 0; q < kRingFan / 4; ++q) {
-      if (4 * q >= d) { lanes[q] = vv; continue; }
-      const __m128i* r = reinterpret_cast<const __m128i*>(fan + 4 * q);  // {corner, face, next, prev}
-      const __m128i hi01 = _mm_unpackhi_epi32(_mm_loadu_si128(r), _mm_loadu_si128(r + 1));     // n0 n1 p0 p1
-      const __m128i hi23 = _mm_unpackhi_epi32(_mm_loadu_si128(r + 2), _mm_loadu_si128(r + 3)); // n2 n3 p2 p3
-      const __m128i prev = _mm_unpackhi_epi64(hi01, hi23);                                     // p0 p1 p2 p3
-      const __m128i index = _mm_add_epi32(_mm_set1_epi32(int(4 * q)), _mm_setr_epi32(0, 1, 2, 3));
-      const __m128i in_fan = _mm_cmplt_epi32(index, count);
-      lanes[q] = _mm_or_si128(_mm_and_si128(in_fan, prev), _mm_andnot_si128(in_fan, vv));
-    }
+// One vertex id per corner of a fan (its next or its previous vertex), kRingFan lanes, lanes >= d
+// set to v (which no edge end of the fan leads to); equal(w): bit j set where lane j is w, all lanes
+// compared at once (SSE2: four 4-lane compares), no search.
+struct FanLanes {
+  alignas(16) std::uint32_t lanes[kRingFan];
+  FanLanes(std::uint32_t v, const FanCorner* fan, std::uint32_t d, std::uint32_t FanCorner::*end) {
+    for (std::uint32_t k = 0; k < kRingFan; ++k) lanes[k] = k < d ? fan[k].*end : v;
   }
-  std::uint32_t arriving(std::uint32_t w) const {
+  std::uint32_t equal(std::uint32_t w) const {
+#if defined(__SSE2__)
     const __m128i x = _mm_set1_epi32(int(w));
     std::uint32_t m = 0;
-    for (std::uint32_t q = 0; q < kRingFan / 4; ++q)
-      m |= std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(lanes[q], x)))) << (4 * q);
+    for (std::uint32_t q = 0; q < kRingFan / 4; ++q) {
+      const __m128i l = _mm_load_si128(reinterpret_cast<const __m128i*>(lanes + 4 * q));
+      m |= std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(l, x)))) << (4 * q);
+    }
     return m;
-  }
 #else
-  std::uint32_t lanes[kRingFan];
-  FanPrevious(std::uint32_t v, const FanCorner* fan, std::uint32_t d) {
-    for (std::uint32_t k = 0; k < kRingFan; ++k) lanes[k] = k < d ? fan[k].prev : v;
-  }
-  std::uint32_t arriving(std::uint32_t w) const {
     std::uint32_t m = 0;
     for (std::uint32_t q = 0; q < kRingFan; ++q) m |= std::uint32_t(lanes[q] == w) << q;
     return m;
-  }
 #endif
+  }
 };
 
 template <class Smooth>
 bool closed_smooth_ring(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Smooth& smooth) {
   if (d > kRingFan) return false;
-  const FanPrevious prv(v, fan, d);
+  const FanLanes prv(v, fan, d, &FanCorner::prev);
   std::uint32_t succ[kRingFan];
   std::uint32_t covered = 0;
   bool single = true;
   for (std::uint32_t i = 0; i < d; ++i) {
     const std::uint32_t w = fan[i].next;
-    const std::uint32_t m = prv.arriving(w);
+    const std::uint32_t m = prv.equal(w);
     single &= (w != v) & (m != 0) & ((m & (m - 1)) == 0);
     covered |= m;
     succ[i] = std::uint32_t(__builtin_ctz(m | (1u << 31)));
@@ -389,6 +378,38 @@ bool link_small_fan(std::uint32_t v, const FanCorner* fan, std::uint32_t d, cons
   if (links == d) {
     // Every corner has its leaving edge linked, to distinct corners (each far vertex is left and
     // reached once): to is a permutation. One cycle through all d corners is one group.
+    std::uint32_t k = 0, steps = 0;
+    do {
+      k = to[k];
+      ++steps;
+    } while (k != 0 && steps <= d);
+    if (steps == d) return true;
+  }
+  for (std::uint32_t i = 0; i < d; ++i)
+    if (to[i] != kNoLink) union_find_unite(parent, i, to[i]);
+  return false;
+}
+
+// link_small_fan for fans of up to kRingFan corners, the same links and result: each corner's
+// leaving and arriving ends at w counted by FanLanes masks instead of a scan over the fan.
+template <class Smooth>
+bool link_fan16(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Smooth& smooth, std::uint32_t* parent) {
+  const FanLanes nxt(v, fan, d, &FanCorner::next), prv(v, fan, d, &FanCorner::prev);
+  std::uint32_t to[kRingFan];
+  std::uint32_t links = 0;
+  for (std::uint32_t i = 0; i < d; ++i) {
+    to[i] = kNoLink;
+    const std::uint32_t w = fan[i].next;
+    if (w == v) continue;  // no edge end (a degenerate face, or a face that repeats v)
+    const std::uint32_t leaving = nxt.equal(w), arriving = prv.equal(w);
+    if (__builtin_popcount(leaving) != 1 || __builtin_popcount(arriving) != 1) continue;
+    const std::uint32_t j = std::uint32_t(__builtin_ctz(arriving));
+    if (smooth(fan[i].face, fan[j].face)) {
+      to[i] = j;
+      ++links;
+    }
+  }
+  if (links == d) {
     std::uint32_t k = 0, steps = 0;
     do {
       k = to[k];
@@ -523,6 +544,15 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
     for (std::size_t v = v_begin; v < v_end; ++v) {
       const std::uint32_t begin = vf.offset[v], d = vf.offset[v + 1] - begin;
       if (d == 0) continue;
+      // A vertex that is not inside its smooth cone reads the normals of its faces and writes its
+      // corners' groups, anywhere in those arrays: fetch them kPrefetchVertices ahead (measured:
+      // without it the grouping of a CAD mesh, most of whose vertices lie on creases, took 1.3x
+      // as long; bench/normals/results/notes.md).
+      if (v + kPrefetchVertices < v_end && !vf.cone_smooth[v + kPrefetchVertices])
+        for (std::uint32_t i = vf.offset[v + kPrefetchVertices], e = vf.offset[v + kPrefetchVertices + 1]; i < e; ++i) {
+          __builtin_prefetch(fn.data() + 3 * std::size_t(vf.fan[i].face));
+          __builtin_prefetch(out.corner_index.data() + vf.fan[i].corner, 1);
+        }
       const FanCorner* fan = vf.fan.data() + begin;
       // A vertex inside its smooth cone has only valid faces and no crease: its edges join by
       // topology (and smoothing group) alone, with the same verdicts as `smooth` (SmoothCone).
@@ -534,8 +564,10 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
       }
       std::uint32_t* parent = scratch.parent(d);
       if (d <= kSmallFan) {
-        const bool ring = cone ? link_small_fan(std::uint32_t(v), fan, d, same_group, parent)
-                               : link_small_fan(std::uint32_t(v), fan, d, smooth, parent);
+        const bool ring = d <= kRingFan ? (cone ? link_fan16(std::uint32_t(v), fan, d, same_group, parent)
+                                                : link_fan16(std::uint32_t(v), fan, d, smooth, parent))
+                                        : (cone ? link_small_fan(std::uint32_t(v), fan, d, same_group, parent)
+                                                : link_small_fan(std::uint32_t(v), fan, d, smooth, parent));
         if (ring) {  // one group, no degenerate face
           groups[v] = 1;
           continue;
