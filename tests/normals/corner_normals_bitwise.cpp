@@ -242,8 +242,8 @@ TEST_CASE("corner_normals: smoothing groups, tiny and huge scales, irregular sph
 
 TEST_CASE("corner_normals: the in-order (1 thread) and parallel (2 threads) groupings both equal the frozen copy",
           "[corner_normals][reference][parallel]") {
-  // 40401 vertices: above kSerialBelow, so 2 threads take the parallel ranges and the pass that
-  // adds each vertex's first row afterwards; 1 thread numbers rows in vertex order at once.
+  // 40401 vertices: above kSerialBelow, so 2 threads split the grouping and the row pass into
+  // parallel ranges; 1 thread runs each as one range.
   const Mesh m = random_terrain(200, 0.4, 23);
   REQUIRE(m.num_vertices() > 32768);
   const CornerNormals old = reference_crease::corner_normals_reference(MeshView(m), 30 * kDeg, Weighting::Angle, Precision::Double);
