@@ -1,15 +1,19 @@
 // bench_crease: crease normals (corner_normals, angle weighting, crease 30 degrees) against
 // angle-weighted vertex normals on the same mesh, one thread (issue 31 goal 3: at most 2x).
 //
-// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference]
+// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor]
 // Meshes: the irregular UV sphere of bench_normals (about N triangles, default 1M; no edge above
 // 30 degrees, so every group is a whole vertex fan), a faceted icosahedron (its 20 flat faces
 // subdivided 4^7 times each: 1.3M triangles, real 41.8-degree creases along the 30 edges and
 // exactly flat fans elsewhere), and any --file (e.g. CAD models of the corpus).
 // Rows per mesh: vertex_normals(mesh, Angle) (fresh call), corner_normals(mesh, 30 deg, Angle),
 // and the frozen copy of the crease path before issue 31 (tests/support/corner_normals_reference.h;
-// --no-reference drops it). Repetitions interleaved round-robin (rep 1 of every row, then rep 2,
-// ...) after one warm-up, inside one TBB arena of 1 thread; medians of wall and process CPU time.
+// --no-reference drops it); then three rows whose sum is the floor of a crease path built like
+// ours (--no-floor drops them): face_normals (the crease test needs them), the vertex -> corner
+// adjacency alone (count + fill of 4-byte corner ids, the cheapest vertex-major gathering of the
+// fans), and corner_group_normals given corner_normals' own groups (the weighted sums and
+// normalisation alone, the same kernel as vertex_normals). Repetitions interleaved round-robin
+// (rep 1 of every row, then rep 2, ...) after one warm-up, inside one TBB arena of 1 thread; medians of wall and process CPU time.
 // The new and old crease outputs are compared bit for bit once per mesh (a mismatch is reported
 // and the exit code is 1).
 #include <algorithm>
@@ -25,8 +29,10 @@
 
 #include <tbb/task_arena.h>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 #include "load_average.h"
 #include "support/analytic_meshes.h"
@@ -85,15 +91,16 @@ double cpu_now() {
 int main(int argc, char** argv) {
   std::size_t faces = 1000000;
   int reps = 15;
-  bool reference = true;
+  bool reference = true, floor = true;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::stoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--faces") && i + 1 < argc) faces = std::stoul(argv[++i]);
     else if (!std::strcmp(argv[i], "--file") && i + 1 < argc) files.push_back(argv[++i]);
     else if (!std::strcmp(argv[i], "--no-reference")) reference = false;
+    else if (!std::strcmp(argv[i], "--no-floor")) floor = false;
     else {
-      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference]\n");
+      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor]\n");
       return 2;
     }
   }
@@ -129,6 +136,28 @@ int main(int argc, char** argv) {
       rows.push_back({"crease path before issue 31 (frozen copy)", [&] {
                         old = reference_crease::corner_normals_reference(MeshView(mesh), crease, Weighting::Angle);
                       }, {}, {}});
+    std::vector<double> fn;
+    std::vector<std::uint32_t> offset;
+    BulkVector<std::uint32_t> corners;
+    GroupNormals gn;
+    if (floor) {
+      const CornerNormals own = corner_normals(mesh, crease, Weighting::Angle);
+      const std::vector<std::uint32_t> groups = own.corner_index;
+      const std::size_t num_groups = own.normals.size() / 3;
+      rows.push_back({"floor: face_normals", [&] { fn = face_normals(mesh); }, {}, {}});
+      rows.push_back({"floor: vertex -> corner adjacency (count, fill)", [&, V = mesh.num_vertices(), C = mesh.num_corners()] {
+                        const std::uint32_t* cv = mesh.corner_vertex.data();
+                        offset.assign(V + 1, 0);
+                        for (std::size_t c = 0; c < C; ++c) ++offset[cv[c] + 1];
+                        for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
+                        BulkVector<std::uint32_t> next(C), fill(offset.begin(), offset.end() - 1);
+                        for (std::size_t c = 0; c < C; ++c) next[fill[cv[c]]++] = std::uint32_t(c);
+                        corners.swap(next);
+                      }, {}, {}});
+      rows.push_back({"floor: corner_group_normals, the same groups", [&, groups, num_groups] {
+                        gn = corner_group_normals(mesh, groups, num_groups, Weighting::Angle);
+                      }, {}, {}});
+    }
     arena.execute([&] {
       for (int rep = -1; rep < reps; ++rep)
         for (Row& r : rows) {

@@ -3,6 +3,7 @@
 // degenerate edges.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -13,7 +14,9 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <tbb/task_arena.h>
 
+#include <shadetool/geometry/interior_angle.h>
 #include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 #include "normals_test_util.h"
 
@@ -270,4 +273,120 @@ TEST_CASE("corner_group_normals: given corner_normals' own groups it returns its
   group[5] = 7;
   CHECK_THROWS(corner_group_normals(m, group, 2));
   CHECK_THROWS(corner_group_normals(m, std::vector<std::uint32_t>(3, 0), 1));
+}
+
+namespace {
+
+// A regular pyramid fan: apex 0 at height h over `sides` base points on the unit circle, closed
+// underneath by apex sides + 1 at depth `below`; faces listed apex fan first.
+Mesh regular_pyramid(int sides, double h, double below = -1.0, Vec3d shift = {0, 0, 0}) {
+  Mesh m;
+  m.add_vertex(Vec3d{0, 0, h} + shift);
+  for (int i = 0; i < sides; ++i) m.add_vertex(Vec3d{std::cos(2 * kPi * i / sides), std::sin(2 * kPi * i / sides), 0} + shift);
+  m.add_vertex(Vec3d{0, 0, below} + shift);
+  for (int i = 0; i < sides; ++i) m.add_face({0, 1 + std::uint32_t(i), 1 + std::uint32_t((i + 1) % sides)});
+  for (int i = 0; i < sides; ++i)
+    m.add_face({std::uint32_t(sides + 1), 1 + std::uint32_t((i + 1) % sides), 1 + std::uint32_t(i)});
+  m.precision = ValuePrecision::Double;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("corner_normals: a cone apex whose faces lie within half the crease angle is one group along the axis",
+          "[corner_normals]") {
+  // Apex face normals 5 degrees from the axis: any two within 10 degrees, all within 15 of any
+  // one, so crease 30 cannot split the apex (the smooth-cone shortcut); by symmetry its normal is
+  // the axis. Fans of 3 to 17 corners cross the 8- and 16-corner ring paths. A threshold half a
+  // degree either side of the angle between neighbouring faces (which alone decides, not the
+  // larger angles across the fan) keeps the apex whole or splits it into every face.
+  for (int sides : {3, 5, 8, 9, 12, 16, 17}) {
+    const double h = std::tan(5 * kDeg) * std::cos(kPi / sides);  // face normals 5 degrees from the axis
+    const Mesh m = regular_pyramid(sides, h);
+    for (Weighting w : kAll) {
+      INFO(sides << " sides, " << weighting_name(w));
+      const CornerNormals cn = corner_normals(m, 30 * kDeg, w);
+      CHECK(distinct_at_vertex(m, cn, 0) == 1);
+      CHECK(angle_degrees(corner_normal(cn, 0), {0, 0, 1}) < 1e-12);
+      const double neighbours = angle_degrees(normalized_or(cross(m.position(1) - m.position(0), m.position(2) - m.position(0)), Vec3d{}),
+                                              normalized_or(cross(m.position(2) - m.position(0), m.position(3) - m.position(0)), Vec3d{}));
+      CHECK(distinct_at_vertex(m, corner_normals(m, (neighbours + 0.5) * kDeg, w), 0) == 1);
+      CHECK(distinct_at_vertex(m, corner_normals(m, (neighbours - 0.5) * kDeg, w), 0) == std::size_t(sides));
+    }
+  }
+}
+
+TEST_CASE("corner_normals: two closed fans that share only a vertex are two groups, each its own fan's vertex normal",
+          "[corner_normals]") {
+  // A pinch: pyramid A and pyramid B (upside down, above A) meet at one apex vertex. No crease
+  // (crease 179 degrees, both fans flat enough for the smooth-cone shortcut), but no edge joins the
+  // fans: two groups. Each must equal vertex_normals of its pyramid alone at the apex, bit for bit
+  // (same corners, same order).
+  const int sides = 6;
+  const Mesh a = regular_pyramid(sides, 0.05);
+  Mesh b = regular_pyramid(sides, -0.05, 1.0, {0, 0, 0.1});  // apex at z = 0.05, base above it
+  for (std::uint32_t f = 0; f < b.num_faces(); ++f) std::swap(b.corner_vertex[3 * f + 1], b.corner_vertex[3 * f + 2]);
+  Mesh both = a;
+  const std::uint32_t shift = std::uint32_t(a.num_vertices()) - 1;  // b's apex becomes vertex 0
+  for (std::size_t v = 1; v < b.num_vertices(); ++v) both.add_vertex(b.position(v));
+  auto map = [&](std::uint32_t v) { return v == 0 ? 0u : v + shift; };
+  for (std::size_t f = 0; f < b.num_faces(); ++f)
+    both.add_face({map(b.corner_vertex[3 * f]), map(b.corner_vertex[3 * f + 1]), map(b.corner_vertex[3 * f + 2])});
+  REQUIRE(b.position(0) == both.position(0));
+  for (Weighting w : kAll) {
+    INFO(weighting_name(w));
+    const CornerNormals cn = corner_normals(both, 179 * kDeg, w);
+    CHECK(distinct_at_vertex(both, cn, 0) == 2);
+    const Vec3d na = get3(vertex_normals(a, w).normals, 0), nb = get3(vertex_normals(b, w).normals, 0);
+    CHECK(corner_normal(cn, 0) == na);                     // A's apex corner: face 0
+    CHECK(corner_normal(cn, 3 * a.num_faces()) == nb);     // B's first apex corner: its face 0
+    CHECK(na.z > 0.99);
+    CHECK(nb.z < -0.99);
+  }
+}
+
+TEST_CASE("corner_normals: a vertex on a fold (two crease edges) splits into the two planes' normals; a threshold "
+          "equal to the fold's angle keeps it whole", "[corner_normals]") {
+  // A 4 x 2 grid of unit squares folded along x = 2 by phi: left half in z = 0, right half rising
+  // at phi. Vertex (2, 1) lies on the fold: its fan has two crease edges (along the fold line).
+  for (double phi_deg : {10.0, 41.8, 90.0, 135.0}) {
+    const double phi = phi_deg * kDeg;
+    Mesh m;
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 4; ++i) {
+        const double x = i <= 2 ? double(i) : 2 + (i - 2) * std::cos(phi), z = i <= 2 ? 0.0 : (i - 2) * std::sin(phi);
+        m.add_vertex({x, double(j), z});
+      }
+    auto id = [](int i, int j) { return std::uint32_t(j * 5 + i); };
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 4; ++i) {
+        m.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        m.add_face({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+    m.precision = ValuePrecision::Double;
+    const std::uint32_t v = id(2, 1);
+    const Vec3d left{0, 0, 1}, right{-std::sin(phi), 0, std::cos(phi)};
+    INFO("fold " << phi_deg << " degrees");
+    const CornerNormals split = corner_normals(m, phi - 1e-6, Weighting::Angle);
+    CHECK(distinct_at_vertex(m, split, v) == 2);
+    for (std::size_t c = 0; c < m.num_corners(); ++c) {
+      if (m.corner_vertex[c] != v) continue;
+      const bool on_left = m.position(m.corner_vertex[3 * (c / 3)]).z + m.position(m.corner_vertex[3 * (c / 3) + 1]).z +
+                               m.position(m.corner_vertex[3 * (c / 3) + 2]).z == 0.0;  // in the plane z = 0
+      CHECK(angle_degrees(corner_normal(split, c), on_left ? left : right) < 1e-12);
+    }
+    // The threshold equal to the fold's angle as the rule measures it (interior_angle of the two
+    // unit face normals): smooth (<=), one group; the next double below: split.
+    // The fold's two edges at v: faces 2 | 5 (row 0) and 10 | 13 (row 1); one smooth edge joins
+    // the fan, so the smaller angle is the threshold that keeps it whole.
+    const std::vector<double> fn = face_normals(m);
+    auto edge_angle = [&](std::size_t fa, std::size_t fb) {
+      const Vec3d na = get3(fn, fa), nb = get3(fn, fb), x = cross(na, nb);
+      return interior_angle(std::sqrt(dot(x, x)), dot(na, nb));
+    };
+    const double fold = std::min(edge_angle(2, 5), edge_angle(10, 13));
+    CHECK(std::fabs(fold - phi) < 1e-12);
+    CHECK(distinct_at_vertex(m, corner_normals(m, fold, Weighting::Angle), v) == 1);
+    CHECK(distinct_at_vertex(m, corner_normals(m, std::nextafter(fold, 0.0), Weighting::Angle), v) == 2);
+  }
 }

@@ -242,8 +242,8 @@ TEST_CASE("corner_normals: smoothing groups, tiny and huge scales, irregular sph
 
 TEST_CASE("corner_normals: the in-order (1 thread) and parallel (2 threads) groupings both equal the frozen copy",
           "[corner_normals][reference][parallel]") {
-  // 40401 vertices: above kSerialBelow, so 2 threads take the parallel ranges and the pass that
-  // adds each vertex's first row afterwards; 1 thread numbers rows in vertex order at once.
+  // 40401 vertices: above kSerialBelow, so 2 threads split the grouping and the row pass into
+  // parallel ranges; 1 thread runs each as one range.
   const Mesh m = random_terrain(200, 0.4, 23);
   REQUIRE(m.num_vertices() > 32768);
   const CornerNormals old = reference_crease::corner_normals_reference(MeshView(m), 30 * kDeg, Weighting::Angle, Precision::Double);
@@ -253,4 +253,87 @@ TEST_CASE("corner_normals: the in-order (1 thread) and parallel (2 threads) grou
     INFO(threads << " threads");
     CHECK(difference(now, old) == "");
   }
+}
+
+namespace {
+
+// A pyramid fan around the apex 0 at height h over a regular base of `sides` points (radius 1,
+// alternate points pulled in by `pinch` so that neighbouring faces differ), closed underneath by
+// a second apex. Every apex face is tilted from the axis by about atan(1 / h).
+Mesh pyramid_fan(int sides, double h, double pinch) {
+  Mesh m;
+  m.add_vertex({0, 0, h});
+  for (int i = 0; i < sides; ++i) {
+    const double a = 2 * kPi * i / sides, r = (i % 2) ? 1.0 - pinch : 1.0;
+    m.add_vertex({r * std::cos(a), r * std::sin(a), 0});
+  }
+  m.add_vertex({0, 0, -1});
+  for (int i = 0; i < sides; ++i) {
+    const std::uint32_t a = 1 + std::uint32_t(i), b = 1 + std::uint32_t((i + 1) % sides);
+    m.add_face({0, a, b});
+    m.add_face({std::uint32_t(sides + 1), b, a});
+  }
+  m.precision = ValuePrecision::Double;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("corner_normals: the smooth-cone shortcut and the ring paths never change a verdict (apex fans of 3-18 "
+          "corners, open, pinched, flipped, two fans on one vertex; thresholds swept through every edge's angle)",
+          "[corner_normals][reference]") {
+  // Fans across closed_triangle_ring8 (<= 8 corners), closed_smooth_ring (<= 16) and link_small_fan;
+  // steep apexes (faces far apart: the cone test fails, CreaseTest decides) and flat ones (the cone
+  // holds for large thresholds, topology alone decides).
+  for (int sides = 3; sides <= 18; ++sides)
+    for (double h : {0.05, 0.4, 3.0}) {
+      std::vector<std::pair<std::string, Mesh>> cases;
+      const Mesh closed = pyramid_fan(sides, h, 0.3);
+      cases.emplace_back("closed", closed);
+      {  // one apex face removed: an open fan (two boundary edges at the apex)
+        Mesh m = closed;
+        m.corner_vertex.erase(m.corner_vertex.begin(), m.corner_vertex.begin() + 3);
+        Mesh open;
+        for (std::size_t v = 0; v < m.num_vertices(); ++v) open.add_vertex(m.position(v));
+        for (std::size_t c = 0; c < m.corner_vertex.size(); c += 3)
+          open.add_face({m.corner_vertex[c], m.corner_vertex[c + 1], m.corner_vertex[c + 2]});
+        open.precision = ValuePrecision::Double;
+        cases.emplace_back("open", open);
+      }
+      {  // one apex face reversed: two edges whose faces disagree in orientation
+        Mesh m;
+        for (std::size_t v = 0; v < closed.num_vertices(); ++v) m.add_vertex(closed.position(v));
+        for (std::size_t f = 0; f < closed.num_faces(); ++f) {
+          const std::uint32_t* c = &closed.corner_vertex[3 * f];
+          if (f == 2) m.add_face({c[0], c[2], c[1]});
+          else m.add_face({c[0], c[1], c[2]});
+        }
+        m.precision = ValuePrecision::Double;
+        cases.emplace_back("flipped", m);
+      }
+      {  // two closed fans sharing the apex (a pinch: no crease, two groups) and a fan whose ring
+         // visits one far vertex twice (the apex fan of a double-covered base)
+        Mesh m = closed;
+        const std::uint32_t shift = std::uint32_t(m.num_vertices()) - 1;
+        for (std::size_t v = 1; v < closed.num_vertices(); ++v) {
+          const Vec3d p = closed.position(v);
+          m.add_vertex({p.x + 0.01, p.y, 2 * h - p.z});  // mirrored above the apex
+        }
+        for (std::size_t f = 0; f < closed.num_faces(); ++f) {
+          auto map = [&](std::uint32_t v) { return v == 0 ? 0u : v + shift; };
+          const std::uint32_t* c = &closed.corner_vertex[3 * f];
+          m.add_face({map(c[0]), map(c[2]), map(c[1])});
+        }
+        cases.emplace_back("pinched", m);
+      }
+      for (auto& [name, m] : cases) {
+        std::vector<double> thresholds = {0.0, 5 * kDeg, 30 * kDeg, 90 * kDeg, 150 * kDeg, 179 * kDeg, kPi};
+        for (double a : edge_angles(m, Precision::Double))
+          for (double t : {a, std::nextafter(a, -1.0), std::nextafter(a, 10.0), 2 * a, std::nextafter(2 * a, 10.0)})
+            thresholds.push_back(t);
+        const std::string what = name + " fan of " + std::to_string(sides) + ", height " + std::to_string(h);
+        for (double t : thresholds) check_same(m, t, Weighting::Angle, Precision::Double, what);
+        check_same(m, 60 * kDeg, Weighting::Area, Precision::Float, what);
+      }
+    }
 }

@@ -1,16 +1,18 @@
 // corner_normals.cpp: see corner_normals.h.
 //
 // Steps: (1) unit face normals (crease test, degenerate faces; face_normals.h, vectorised for
-// triangles); (2) vertex -> corners adjacency as flat arrays (offsets + corners in ascending
-// corner order; two passes: count, fill); (3) in parallel over vertices: link the two corners
-// across each smooth manifold edge of the vertex's fan (link_small_fan: every pair of the fan's
-// edge ends compared, no sort, for fans of up to kSmallFan corners, and a fan that is one closed
-// ring of smooth edges is one group at once; link_large_fan: ends sorted by far vertex, for poles
-// and cone apexes; union-find over the vertex's corners, no allocation per vertex), number groups
-// by first corner. The faces around a vertex lie anywhere in the face arrays, so this pass waits
-// on memory: the fans kPrefetchVertices ahead are prefetched. (4) prefix sum of group counts gives
-// each vertex's rows in the pool, and every corner its row (corner_index; on one thread the
-// vertices go in order and (3) writes the rows directly); (5) the corners'
+// triangles); (2) the fan of every vertex as flat arrays (VertexFans: offsets + one record per
+// corner {corner, face, next vertex, previous vertex}, in ascending corner order), built in two
+// passes in face order (count, fill), the first also running SmoothCone: a vertex whose faces are
+// all valid and within half the crease angle of its first face cannot be split by a crease;
+// (3) in parallel over vertices, reading each fan as one sequential run: a cone vertex whose fan
+// is one closed ring (closed_smooth_ring) is one group at once; any other vertex links the two
+// corners across each smooth manifold edge of its fan (link_small_fan: every pair of edge ends
+// compared, no sort, for fans of up to kSmallFan corners; link_large_fan: ends sorted by far
+// vertex, for poles and cone apexes; union-find over the vertex's corners, no allocation per
+// vertex), CreaseTest deciding only where SmoothCone could not, and numbers its groups by first
+// corner; (4) prefix sum of group counts gives each vertex's rows in the pool, and one pass in
+// corner order gives every corner its row (corner_index); (5) the corners'
 // weighted contributions (corner_contributions.h) are summed into their rows by the same
 // deterministic parallel scatter as vertex_normals (accumulate_by_vertex.h), so a group's sum adds
 // its corners in ascending corner order: with no crease in the way the result is vertex_normals'
@@ -30,6 +32,10 @@
 #include <type_traits>
 
 #include <tbb/parallel_invoke.h>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
@@ -51,27 +57,7 @@ namespace {
 using namespace normals_detail;
 using namespace engine;
 
-// Corners of each vertex: corners[offset[v] .. offset[v+1]), ascending (two passes over the
-// corners: count, fill).
-// Scratch in BulkVectors (core/bulk_reserve.h: unzeroed, huge pages): every entry is written.
-struct VertexCorners {
-  std::vector<std::uint32_t> offset;
-  BulkVector<std::uint32_t> corners;
-};
-
-VertexCorners vertex_corners(const MeshView& mesh) {
-  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
-  VertexCorners vc;
-  vc.offset.assign(V + 1, 0);
-  for (std::size_t c = 0; c < C; ++c) ++vc.offset[mesh.corner_vertex[c] + 1];
-  for (std::size_t v = 0; v < V; ++v) vc.offset[v + 1] += vc.offset[v];
-  vc.corners.resize(C);
-  BulkVector<std::uint32_t> fill(vc.offset.begin(), vc.offset.end() - 1);
-  for (std::size_t c = 0; c < C; ++c) vc.corners[fill[mesh.corner_vertex[c]]++] = std::uint32_t(c);
-  return vc;
-}
-
-// What the fan grouping reads of a corner: its face, and the vertices before and after it in the
+// What the fan grouping reads of a corner: its face, and the vertices after and before it in the
 // face; in a degenerate face (whose edges are creases) both are the corner's own vertex, which no
 // edge end of the fan leads to.
 constexpr std::uint32_t kNoLink = 0xffffffffu;  // link_small_fan: a corner linked to none
@@ -85,34 +71,28 @@ inline bool has_normal(const double* fn, std::uint32_t f) {
   return !(n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0);
 }
 
-// Face of each corner and its neighbours in the face; triangles by arithmetic (corner = 3 f + k),
-// polygons through a corner -> face table.
-struct CornerTopology {
-  MeshView mesh;
-  bool triangles;
-  std::vector<std::uint32_t> face_of;  // polygons only
-
-  explicit CornerTopology(const MeshView& m) : mesh(m), triangles(m.all_triangles()) {
-    if (triangles) return;
-    face_of.resize(m.num_corners());
-    parallel_ranges(m.num_faces(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t f = b; f < e; ++f)
-        for (std::uint32_t c = m.face_begin(f), end = m.face_end(f); c < end; ++c) face_of[c] = std::uint32_t(f);
-    });
-  }
-  FanCorner fan_corner(std::uint32_t c, const double* fn) const {
-    const std::uint32_t* cv = mesh.corner_vertex;
-    if (triangles) {
-      const std::uint32_t f = c / 3, k = c - 3 * f;
-      if (!has_normal(fn, f)) return {c, f, cv[c], cv[c]};
-      return {c, f, cv[k == 2 ? c - 2 : c + 1], cv[k == 0 ? c + 2 : c - 1]};
-    }
-    const std::uint32_t f = face_of[c];
-    if (!has_normal(fn, f)) return {c, f, cv[c], cv[c]};
-    const std::uint32_t begin = mesh.face_begin(f), end = mesh.face_end(f);
-    return {c, f, cv[c + 1 < end ? c + 1 : begin], cv[c > begin ? c - 1 : end - 1]};
-  }
+// The fans of all vertices as flat arrays, built in face order (two passes over the corners:
+// count, fill): fan[offset[v] .. offset[v+1]) are the FanCorners of vertex v in ascending corner
+// order. The grouping then reads each vertex's fan as one sequential run instead of fetching every
+// corner's face from anywhere in the face arrays.
+// cone_smooth[v]: every face at v is valid and within half the crease angle of its last one
+// (SmoothCone), so no crease can split v: its edges are tested for topology only.
+// Scratch in BulkVectors (core/bulk_reserve.h: unzeroed, huge pages): every entry is written.
+constexpr std::uint32_t kFanPadding = 8;  // records after the last fan: ring tests load 8 whatever the fan size
+struct VertexFans {
+  std::vector<std::uint32_t> offset;
+  BulkVector<FanCorner> fan;
+  std::vector<std::uint8_t> cone_smooth;
 };
+
+// Face order of the corners of face f: [begin, end), triangles by arithmetic.
+struct FaceCorners {
+  std::uint32_t begin, end;
+};
+inline FaceCorners face_corners(const MeshView& mesh, bool triangles, std::size_t f) {
+  if (triangles) return {std::uint32_t(3 * f), std::uint32_t(3 * f + 3)};
+  return {mesh.face_begin(f), mesh.face_end(f)};
+}
 
 // The crease test: the edge between unit face normals na, nb is smooth when
 // interior_angle(|na x nb|, na . nb) <= crease_angle (geometry/interior_angle.h), as it always was.
@@ -152,17 +132,102 @@ struct CreaseTest {
   }
 };
 
+// SmoothCone: a sufficient test, face by face, that no crease can split a vertex. Every face at
+// v valid and within an angle alpha of one face's normal r (vertex_fans: the vertex's last face)
+// puts every pair of faces at v
+// within 2 alpha of each other (triangle inequality for angles on the sphere); alpha is chosen
+// so that 2 alpha clears the crease angle by a margin that covers every rounding, so CreaseTest
+// calls each such pair smooth by its fast path: with cos(2 alpha) = cos(crease_angle) + 5e-5 and
+// |n| within 1e-6 of 1 (as CreaseTest assumes; r is that face's normal rounded to float, within
+// 1e-7 of it), a face passes when its computed n . r > cos(alpha) + 1e-5, which gives the true
+// cos of its angle to r above cos(alpha) - 2e-6 - 1e-15 + 1e-5 > cos(alpha); the computed
+// n_a . n_b of two passing faces then exceeds cos(crease_angle) + 5e-5 - 2e-6 - 1e-15 >
+// CreaseTest's `above` (= cos(crease_angle) + 1e-5). Crease_angle >= pi: every edge is smooth,
+// every valid face passes. Negative or NaN crease_angle (every edge a crease) and angles below
+// ~0.6 degrees (cos(crease_angle) + 5e-5 >= 1): no face passes, every vertex is grouped by
+// CreaseTest. A vertex that fails the test is not a crease vertex: it is grouped edge by edge.
+struct SmoothCone {
+  static constexpr double kAngleMargin = 5e-5, kDotMargin = 1e-5;
+  bool usable = false;
+  double min_dot = 0.0;  // a valid face passes when n . r > min_dot
+
+  explicit SmoothCone(double crease_angle) {
+    if (!(crease_angle >= 0.0)) return;
+    if (crease_angle >= kPi) {
+      usable = true;
+      min_dot = -std::numeric_limits<double>::infinity();
+      return;
+    }
+    const double cos_2alpha = std::cos(crease_angle) + kAngleMargin;
+    if (!(cos_2alpha < 1.0)) return;
+    usable = true;
+    min_dot = std::cos(0.5 * std::acos(cos_2alpha)) + kDotMargin;
+  }
+};
+
+// Vertex fans (VertexFans) in two passes in face order, each touching one 16-byte record per
+// vertex (FanBuild) at every corner: (a) count the corners of each vertex and keep the normal of
+// its last face as its cone axis r (rounded to float); a prefix sum turns the counts into the first
+// slot of each run; (b) fill each vertex's run with its FanCorners and run SmoothCone on every face
+// against r: a face that fails (or is degenerate) sets r.x to NaN, which no later face passes.
+// Neither pass branches on the data.
+VertexFans vertex_fans(const MeshView& mesh, const double* fn, const SmoothCone& cone) {
+  const std::size_t V = mesh.num_vertices(), F = mesh.num_faces();
+  const std::uint32_t* cv = mesh.corner_vertex;
+  const bool triangles = mesh.all_triangles();
+  struct alignas(16) FanBuild {
+    float x, y, z;    // cone axis; x NaN once a face fails
+    std::uint32_t n;  // (a) corners counted; (b) next free slot of the run
+  };
+  BulkVector<FanBuild> build(V);
+  std::fill(build.begin(), build.end(), FanBuild{0.0f, 0.0f, 0.0f, 0});
+  for (std::size_t f = 0; f < F; ++f) {
+    const FaceCorners fc = face_corners(mesh, triangles, f);
+    const double* n = fn + 3 * f;
+    const float x = float(n[0]), y = float(n[1]), z = float(n[2]);
+    for (std::uint32_t c = fc.begin; c < fc.end; ++c) {
+      FanBuild& b = build[cv[c]];
+      b = {x, y, z, b.n + 1};
+    }
+  }
+  VertexFans vf;
+  vf.offset.resize(V + 1);
+  std::uint32_t slots = 0;
+  for (std::size_t v = 0; v < V; ++v) {
+    vf.offset[v] = slots;
+    slots += build[v].n;
+    build[v].n = vf.offset[v];
+  }
+  vf.offset[V] = slots;
+  vf.fan.resize(mesh.num_corners() + kFanPadding);
+  for (std::size_t k = 0; k < kFanPadding; ++k) vf.fan[mesh.num_corners() + k] = {0, 0, 0, 0};
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t f = 0; f < F; ++f) {
+    const FaceCorners fc = face_corners(mesh, triangles, f);
+    const double* n = fn + 3 * f;
+    const bool valid = has_normal(fn, std::uint32_t(f));
+    for (std::uint32_t c = fc.begin; c < fc.end; ++c) {
+      const std::uint32_t v = cv[c];
+      const std::uint32_t next = valid ? cv[c + 1 < fc.end ? c + 1 : fc.begin] : v;
+      const std::uint32_t prev = valid ? cv[c > fc.begin ? c - 1 : fc.end - 1] : v;
+      FanBuild& b = build[v];
+      vf.fan[b.n++] = {c, std::uint32_t(f), next, prev};
+      const bool inside = valid & (n[0] * double(b.x) + n[1] * double(b.y) + n[2] * double(b.z) > cone.min_dot);
+      b.x = inside ? b.x : nan;
+    }
+  }
+  vf.cone_smooth.resize(V);
+  for (std::size_t v = 0; v < V; ++v) vf.cone_smooth[v] = cone.usable && !std::isnan(build[v].x);
+  return vf;
+}
+
+constexpr std::size_t kPrefetchVertices = 16;
+
 // Per-range scratch for the vertex fans (grown to the largest fan seen, never shrunk).
 constexpr std::uint32_t kSmallFan = 32;
-constexpr std::size_t kPrefetchVertices = 16;
 struct FanScratch {
   std::vector<std::uint64_t> ends;
   std::vector<std::uint32_t> parent_, number_;
-  std::vector<FanCorner> fan_;
-  FanCorner* fan(std::uint32_t d) {
-    if (fan_.size() < d) fan_.resize(d);
-    return fan_.data();
-  }
   std::uint32_t* parent(std::uint32_t d) {
     if (parent_.size() < d) parent_.resize(d);
     for (std::uint32_t i = 0; i < d; ++i) parent_[i] = i;
@@ -174,6 +239,111 @@ struct FanScratch {
     return number_.data();
   }
 };
+
+// Whether the fan of vertex v is one closed ring of smooth manifold edges through all its d
+// corners (d <= kRingFan). Every corner i needs exactly one corner j arriving from the vertex it
+// leaves to (prev[j] == next[i], next[i] != v); when each of these matches is a single corner and
+// together they cover all d corners, the successor map i -> j is a permutation, so every far vertex
+// is left once and reached once: every edge of the fan is manifold and links exactly the two
+// corners link_small_fan would link. Then the ring is one group when the permutation is one cycle
+// (walked from corner 0) and each of its links is smooth. Any other fan returns false (the caller
+// links it edge by edge). The matches are found all at once (SSE2: four 4-lane compares), not
+// searched corner by corner: link_small_fan's pairwise scan cost ~60 ns per vertex.
+constexpr std::uint32_t kRingFan = 16;
+
+// One vertex id per corner of a fan (its next or its previous vertex), kRingFan lanes, lanes >= d
+// set to v (which no edge end of the fan leads to); equal(w): bit j set where lane j is w, all lanes
+// compared at once (SSE2: four 4-lane compares), no search.
+struct FanLanes {
+  alignas(16) std::uint32_t lanes[kRingFan];
+  FanLanes(std::uint32_t v, const FanCorner* fan, std::uint32_t d, std::uint32_t FanCorner::*end) {
+    for (std::uint32_t k = 0; k < kRingFan; ++k) lanes[k] = k < d ? fan[k].*end : v;
+  }
+  std::uint32_t equal(std::uint32_t w) const {
+#if defined(__SSE2__)
+    const __m128i x = _mm_set1_epi32(int(w));
+    std::uint32_t m = 0;
+    for (std::uint32_t q = 0; q < kRingFan / 4; ++q) {
+      const __m128i l = _mm_load_si128(reinterpret_cast<const __m128i*>(lanes + 4 * q));
+      m |= std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(l, x)))) << (4 * q);
+    }
+    return m;
+#else
+    std::uint32_t m = 0;
+    for (std::uint32_t q = 0; q < kRingFan; ++q) m |= std::uint32_t(lanes[q] == w) << q;
+    return m;
+#endif
+  }
+};
+
+template <class Smooth>
+bool closed_smooth_ring(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Smooth& smooth) {
+  if (d > kRingFan) return false;
+  const FanLanes prv(v, fan, d, &FanCorner::prev);
+  std::uint32_t succ[kRingFan];
+  std::uint32_t covered = 0;
+  bool single = true;
+  for (std::uint32_t i = 0; i < d; ++i) {
+    const std::uint32_t w = fan[i].next;
+    const std::uint32_t m = prv.equal(w);
+    single &= (w != v) & (m != 0) & ((m & (m - 1)) == 0);
+    covered |= m;
+    succ[i] = std::uint32_t(__builtin_ctz(m | (1u << 31)));
+  }
+  if (!single || covered != (1u << d) - 1) return false;
+  std::uint32_t k = 0;
+  for (std::uint32_t step = 1; step <= d; ++step) {
+    const std::uint32_t j = succ[k];
+    if (!smooth(fan[k].face, fan[j].face) || (j == 0) != (step == d)) return false;
+    k = j;
+  }
+  return true;
+}
+
+// closed_smooth_ring for a triangle fan of 1..8 corners with every face valid and no smoothing
+// groups (so every link is smooth: two corners of v in different valid triangles), without a
+// branch on the data: 8 lanes whatever d, each corner's successor (the first corner arriving from
+// the vertex it leaves to) found by two 4-lane compares, and the cycle by walking the successor
+// map 8 steps and asking that the first return to corner 0 be step d. Such a walk visits all d
+// corners once, so the successor map is a permutation of them; then no far vertex is left twice
+// (two corners leaving to w would have the same successor) nor reached twice (the successor is
+// the first arriving corner, and every corner is some corner's successor): every link is a
+// manifold edge, and the d links join all corners in one group, as link_small_fan would.
+constexpr std::uint32_t kRing8 = 8;
+inline bool closed_triangle_ring8(std::uint32_t v, const FanCorner* fan, std::uint32_t d) {
+#if defined(__SSE2__)
+  const __m128i vv = _mm_set1_epi32(int(v)), count = _mm_set1_epi32(int(d));
+  const __m128i* r = reinterpret_cast<const __m128i*>(fan);  // {corner, face, next, prev}
+  alignas(16) std::uint32_t nxt[kRing8];
+  __m128i prev[2];
+  for (int q = 0; q < 2; ++q) {
+    const __m128i hi01 = _mm_unpackhi_epi32(_mm_loadu_si128(r + 4 * q), _mm_loadu_si128(r + 4 * q + 1));
+    const __m128i hi23 = _mm_unpackhi_epi32(_mm_loadu_si128(r + 4 * q + 2), _mm_loadu_si128(r + 4 * q + 3));
+    const __m128i index = _mm_add_epi32(_mm_set1_epi32(4 * q), _mm_setr_epi32(0, 1, 2, 3));
+    const __m128i in_fan = _mm_cmplt_epi32(index, count);
+    prev[q] = _mm_or_si128(_mm_and_si128(in_fan, _mm_unpackhi_epi64(hi01, hi23)), _mm_andnot_si128(in_fan, vv));
+    _mm_store_si128(reinterpret_cast<__m128i*>(nxt + 4 * q), _mm_unpacklo_epi64(hi01, hi23));
+  }
+  std::uint32_t succ[kRing8];
+  bool linked = true;  // every corner leaves to a far vertex that some corner arrives from
+  for (std::uint32_t i = 0; i < kRing8; ++i) {
+    const std::uint32_t w = nxt[i];
+    const __m128i x = _mm_set1_epi32(int(w));
+    const std::uint32_t m = std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(prev[0], x)))) |
+                            std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(prev[1], x)))) << 4;
+    linked &= (i >= d) | ((w != v) & (m != 0));
+    succ[i] = std::uint32_t(__builtin_ctz(m | 0x100u)) & (kRing8 - 1);
+  }
+  std::uint32_t k = 0, returns = 0;  // bit s: the walk is at corner 0 after s steps
+  for (std::uint32_t step = 1; step <= kRing8; ++step) {
+    k = succ[k];
+    returns |= std::uint32_t(k == 0) << step;
+  }
+  return linked & (std::uint32_t(__builtin_ctz(returns | 0x200u)) == d);
+#else
+  return closed_smooth_ring(v, fan, d, [](std::uint32_t, std::uint32_t) { return true; });
+#endif
+}
 
 // Linking the corners of vertex v (corners[0 .. d), ascending; local index i) across its smooth
 // manifold edges: edge {v, w} joins corners i and j when exactly two edge ends at v lead to w, one
@@ -208,6 +378,38 @@ bool link_small_fan(std::uint32_t v, const FanCorner* fan, std::uint32_t d, cons
   if (links == d) {
     // Every corner has its leaving edge linked, to distinct corners (each far vertex is left and
     // reached once): to is a permutation. One cycle through all d corners is one group.
+    std::uint32_t k = 0, steps = 0;
+    do {
+      k = to[k];
+      ++steps;
+    } while (k != 0 && steps <= d);
+    if (steps == d) return true;
+  }
+  for (std::uint32_t i = 0; i < d; ++i)
+    if (to[i] != kNoLink) union_find_unite(parent, i, to[i]);
+  return false;
+}
+
+// link_small_fan for fans of up to kRingFan corners, the same links and result: each corner's
+// leaving and arriving ends at w counted by FanLanes masks instead of a scan over the fan.
+template <class Smooth>
+bool link_fan16(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Smooth& smooth, std::uint32_t* parent) {
+  const FanLanes nxt(v, fan, d, &FanCorner::next), prv(v, fan, d, &FanCorner::prev);
+  std::uint32_t to[kRingFan];
+  std::uint32_t links = 0;
+  for (std::uint32_t i = 0; i < d; ++i) {
+    to[i] = kNoLink;
+    const std::uint32_t w = fan[i].next;
+    if (w == v) continue;  // no edge end (a degenerate face, or a face that repeats v)
+    const std::uint32_t leaving = nxt.equal(w), arriving = prv.equal(w);
+    if (__builtin_popcount(leaving) != 1 || __builtin_popcount(arriving) != 1) continue;
+    const std::uint32_t j = std::uint32_t(__builtin_ctz(arriving));
+    if (smooth(fan[i].face, fan[j].face)) {
+      to[i] = j;
+      ++links;
+    }
+  }
+  if (links == d) {
     std::uint32_t k = 0, steps = 0;
     do {
       k = to[k];
@@ -312,15 +514,15 @@ template <class T, Weighting W>
 CornerNormals compute(const MeshView& mesh, double crease_angle, Precision precision, const std::uint32_t* face_group) {
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
   // (1) face normals: zero for degenerate faces.
-  const std::vector<double> fn = face_normals(mesh, precision);
+  BulkVector<double> fn(3 * mesh.num_faces());  // every entry written
+  face_normals(mesh, precision, fn.data());
   auto face_valid = [&](std::uint32_t f) { return has_normal(fn.data(), f); };
-  // (2) adjacency.
-  const CornerTopology topo(mesh);
-  const VertexCorners vc = vertex_corners(mesh);
+  // (2) the vertex fans, and which vertices no crease can split.
+  const VertexFans vf = vertex_fans(mesh, fn.data(), SmoothCone(crease_angle));
 
-  // (3) groups per vertex. On one thread the vertices go in order and each corner gets its pool
-  // row at once (first_row: the rows of the vertices before); in parallel ranges it gets the
-  // group number within its vertex, and (4) adds the vertex's first row afterwards.
+  // (3) groups per vertex, numbered within the vertex (0 .. groups[v]). The corners of a vertex
+  // that is one ring (one group, by far the most) are not written here: corner_index starts at 0
+  // and (4) adds each vertex's first pool row in one pass in corner order.
   CornerNormals out;
   reserve_bulk(out.corner_index, C);  // huge pages for the fresh array (core/bulk_reserve.h)
   out.corner_index.resize(C);
@@ -329,39 +531,49 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
   const CreaseTest crease(crease_angle);
   // Whether the two faces of a manifold edge join: not the same face, the same smoothing group
   // (not 0: flat), and no crease between their normals.
-  auto smooth = [&](std::uint32_t fa, std::uint32_t fb) {
-    return fa != fb && (!face_group || (face_group[fa] == face_group[fb] && face_group[fa] != 0)) &&
-           crease.smooth(get3(fn, fa), get3(fn, fb));
+  auto same_group = [&](std::uint32_t fa, std::uint32_t fb) {
+    return fa != fb && (!face_group || (face_group[fa] == face_group[fb] && face_group[fa] != 0));
   };
-  const bool in_order = V < kSerialBelow || usable_threads() < 2;
-  std::uint32_t first_row = 0;  // in_order only
-  auto group_range = [&](std::size_t v_begin, std::size_t v_end) {
+  auto smooth = [&](std::uint32_t fa, std::uint32_t fb) {
+    auto normal = [&](std::uint32_t f) { return Vec3d{fn[3 * std::size_t(f)], fn[3 * std::size_t(f) + 1], fn[3 * std::size_t(f) + 2]}; };
+    return same_group(fa, fb) && crease.smooth(normal(fa), normal(fb));
+  };
+  const bool plain_triangles = mesh.all_triangles() && !face_group;
+  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
     FanScratch scratch;  // reused across the range's vertices
-    for (std::size_t v = v_begin; v < v_end; first_row += in_order ? groups[v] : 0, ++v) {
-      const std::uint32_t row = in_order ? first_row : 0;
-      // The faces around a vertex lie anywhere in the face arrays: fetch what the vertex
-      // kPrefetchVertices ahead will read (its corners' faces and face normals) and write
-      // (corner_index). Measured: without it the pass took 1.2x (sphere) to 1.7x (faceted
-      // icosahedron) as long (bench/normals/results/notes.md).
-      if (v + kPrefetchVertices < v_end) {
-        for (std::uint32_t i = vc.offset[v + kPrefetchVertices], e = vc.offset[v + kPrefetchVertices + 1]; i < e; ++i) {
-          const std::uint32_t c = vc.corners[i];
-          __builtin_prefetch(mesh.corner_vertex + c);
-          __builtin_prefetch(fn.data() + 3 * std::size_t(topo.triangles ? c / 3 : topo.face_of[c]));
-          __builtin_prefetch(out.corner_index.data() + c, 1);
-        }
-      }
-      const std::uint32_t begin = vc.offset[v], d = vc.offset[v + 1] - begin;
+    for (std::size_t v = v_begin; v < v_end; ++v) {
+      const std::uint32_t begin = vf.offset[v], d = vf.offset[v + 1] - begin;
       if (d == 0) continue;
-      FanCorner* fan = scratch.fan(d);
-      for (std::uint32_t i = 0; i < d; ++i) fan[i] = topo.fan_corner(vc.corners[begin + i], fn.data());
+      // A vertex that is not inside its smooth cone reads the normals of its faces and writes its
+      // corners' groups, anywhere in those arrays: fetch them kPrefetchVertices ahead (measured:
+      // without it the grouping of a CAD mesh, most of whose vertices lie on creases, took 1.3x
+      // as long; bench/normals/results/notes.md).
+      if (v + kPrefetchVertices < v_end && !vf.cone_smooth[v + kPrefetchVertices])
+        for (std::uint32_t i = vf.offset[v + kPrefetchVertices], e = vf.offset[v + kPrefetchVertices + 1]; i < e; ++i) {
+          __builtin_prefetch(fn.data() + 3 * std::size_t(vf.fan[i].face));
+          __builtin_prefetch(out.corner_index.data() + vf.fan[i].corner, 1);
+        }
+      const FanCorner* fan = vf.fan.data() + begin;
+      // A vertex inside its smooth cone has only valid faces and no crease: its edges join by
+      // topology (and smoothing group) alone, with the same verdicts as `smooth` (SmoothCone).
+      const bool cone = vf.cone_smooth[v];
+      if (cone && (plain_triangles && d <= kRing8 ? closed_triangle_ring8(std::uint32_t(v), fan, d)
+                                                  : closed_smooth_ring(std::uint32_t(v), fan, d, same_group))) {
+        groups[v] = 1;
+        continue;
+      }
       std::uint32_t* parent = scratch.parent(d);
       if (d <= kSmallFan) {
-        if (link_small_fan(std::uint32_t(v), fan, d, smooth, parent)) {  // one group, no degenerate face
-          for (std::uint32_t i = 0; i < d; ++i) out.corner_index[fan[i].corner] = row;
+        const bool ring = d <= kRingFan ? (cone ? link_fan16(std::uint32_t(v), fan, d, same_group, parent)
+                                                : link_fan16(std::uint32_t(v), fan, d, smooth, parent))
+                                        : (cone ? link_small_fan(std::uint32_t(v), fan, d, same_group, parent)
+                                                : link_small_fan(std::uint32_t(v), fan, d, smooth, parent));
+        if (ring) {  // one group, no degenerate face
           groups[v] = 1;
           continue;
         }
+      } else if (cone) {
+        link_large_fan(std::uint32_t(v), fan, d, same_group, parent, scratch.ends);
       } else {
         link_large_fan(std::uint32_t(v), fan, d, smooth, parent, scratch.ends);
       }
@@ -371,31 +583,28 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
       std::uint32_t g = 0;
       bool any_degenerate = false;
       for (std::uint32_t i = 0; i < d; ++i) {
-        if (!face_valid(fan[i].face)) { any_degenerate = true; continue; }
+        if (!cone && !face_valid(fan[i].face)) { any_degenerate = true; continue; }
         const std::uint32_t r = union_find_root(parent, i);
         if (number[r] == ~0u) number[r] = g++;
-        out.corner_index[fan[i].corner] = row + number[r];
+        out.corner_index[fan[i].corner] = number[r];
       }
       if (any_degenerate) {
         std::uint32_t dg = 0;
         if (g != 1) { dg = g++; has_degenerate_group[v] = 1; }
         for (std::uint32_t i = 0; i < d; ++i)
-          if (!face_valid(fan[i].face)) out.corner_index[fan[i].corner] = row + dg;
+          if (!face_valid(fan[i].face)) out.corner_index[fan[i].corner] = dg;
       }
       groups[v] = g;
     }
-  };
-  if (in_order) group_range(0, V);
-  else parallel_ranges(V, group_range);
+  });
 
   // (4) pool rows: vertex v owns rows base[v] .. base[v] + groups[v].
   std::vector<std::uint32_t> base(V + 1, 0);
   for (std::size_t v = 0; v < V; ++v) base[v + 1] = base[v] + groups[v];
   const std::size_t N = base[V];
-  if (!in_order)
-    parallel_ranges(C, [&](std::size_t b, std::size_t e) {
-      for (std::size_t c = b; c < e; ++c) out.corner_index[c] += base[mesh.corner_vertex[c]];
-    });
+  parallel_ranges(C, [&](std::size_t b, std::size_t e) {
+    for (std::size_t c = b; c < e; ++c) out.corner_index[c] += base[mesh.corner_vertex[c]];
+  });
 
   // (5) sums: in the output array itself in double, else in a float accumulator.
   std::vector<float> float_sum;
@@ -426,8 +635,8 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
           continue;
         std::uint32_t in_group = ~0u, any = ~0u;
         std::size_t corners_in_row = 0;
-        for (std::uint32_t i = vc.offset[v]; i < vc.offset[v + 1]; ++i) {
-          const std::uint32_t c = vc.corners[i], f = topo.fan_corner(c, fn.data()).face;
+        for (std::uint32_t i = vf.offset[v]; i < vf.offset[v + 1]; ++i) {
+          const std::uint32_t c = vf.fan[i].corner, f = vf.fan[i].face;
           const bool mine = out.corner_index[c] == r;
           corners_in_row += mine;
           if (face_valid(f)) {

@@ -92,23 +92,26 @@ void face_normals_triangle_blocks(const MeshView& mesh, std::size_t f_begin, std
 
 }  // namespace
 
-std::vector<double> face_normals(const MeshView& mesh, Precision precision) {
+void face_normals(const MeshView& mesh, Precision precision, double* out) {
   std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
   const MeshView in_range = normals_detail::in_kernel_range(mesh, storage);
-  const std::size_t F = mesh.num_faces();
-  std::vector<double> out;
-  reserve_bulk(out, 3 * F);  // huge pages for the fresh array (core/bulk_reserve.h)
-  out.resize(3 * F);
-  engine::parallel_ranges(F, [&](std::size_t b, std::size_t e) {
+  engine::parallel_ranges(mesh.num_faces(), [&](std::size_t b, std::size_t e) {
     const bool triangles = in_range.all_triangles();
     if (precision == Precision::Float) {
-      if (triangles) face_normals_triangle_blocks<float>(in_range, b, e, out.data());
-      else face_normals_range<float>(in_range, b, e, out.data());
+      if (triangles) face_normals_triangle_blocks<float>(in_range, b, e, out);
+      else face_normals_range<float>(in_range, b, e, out);
     } else {
-      if (triangles) face_normals_triangle_blocks<double>(in_range, b, e, out.data());
-      else face_normals_range<double>(in_range, b, e, out.data());
+      if (triangles) face_normals_triangle_blocks<double>(in_range, b, e, out);
+      else face_normals_range<double>(in_range, b, e, out);
     }
   });
+}
+
+std::vector<double> face_normals(const MeshView& mesh, Precision precision) {
+  std::vector<double> out;
+  reserve_bulk(out, 3 * mesh.num_faces());  // huge pages for the fresh array (core/bulk_reserve.h)
+  out.resize(3 * mesh.num_faces());
+  face_normals(mesh, precision, out.data());
   return out;
 }
 

@@ -20,6 +20,9 @@ namespace shadetool {
 
 std::vector<double> face_normals(const Mesh& mesh, Precision precision = Precision::Double);
 std::vector<double> face_normals(const MeshView& mesh, Precision precision = Precision::Double);
+// The same normals written into out (#F by 3 doubles, every entry written): for a caller that
+// holds scratch memory of its own (corner_normals: unzeroed huge pages, core/bulk_reserve.h).
+void face_normals(const MeshView& mesh, Precision precision, double* out);
 
 }  // namespace shadetool
 #pragma GCC visibility pop
