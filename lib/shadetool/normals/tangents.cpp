@@ -3,12 +3,15 @@
 #include <shadetool/normals/tangents.h>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
+#include <shadetool/normals/engine/tangent_corner_terms.h>
 
 namespace shadetool {
 namespace {
@@ -30,12 +33,6 @@ bool not_zero(F3 v) { return not_zero(v.x) || not_zero(v.y) || not_zero(v.z); }
 F3 normalize(F3 v) {
   const float len = length(v);
   return len > 0.0f ? scale(1.0f / len, v) : v;  // divisor checked
-}
-// v minus its component along the unit normal n, made unit when not zero.
-F3 project_unit(F3 v, F3 n) {
-  F3 p = v - scale(dot(n, v), n);
-  if (not_zero(p)) p = normalize(p);
-  return p;
 }
 
 // Triangle flags, as the reference's.
@@ -109,67 +106,135 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
   tris.flag.assign(tris.face.size(), 0);
 }
 
-// Step 2: welded vertex of every corner: the first corner with the same (position, normal,
-// texture coordinate) as float ==. An open-addressing table keyed by the values (-0 as +0);
-// a corner with a NaN equals nothing. The corners go in in order; the slot of the corner 8 places
-// ahead is hashed and prefetched meanwhile (the table is larger than the caches and its slots
-// random: the wait for memory is the cost).
-[[gnu::always_inline]] inline void weld_key(const Corners& in, std::uint32_t c, float* k) {
-  const F3 p = in.position(c), n = in.normal_of(c), t = in.texcoord_of(c);
-  const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
-  for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
+// Step 2: welded vertex of every corner taken: corners with the same (position, normal, texture
+// coordinate) as float == are one vertex (-0 equals +0; a value with a NaN equals nothing), numbered
+// densely. From the mesh's own indices: each position value gets a canonical vertex (the first
+// vertex with that value, by an open-addressing table over the vertices, not the corners); the
+// corners are bucketed by it (a counting sort: buckets in vertex order, corners ascending) and a
+// bucket's few distinct (normal, texture coordinate) values found by a linear search (a bucket of
+// more than kLinear vertices: by sorting its keys).
+struct WeldedVertex {
+  F3 p, n;
+  float u = 0, v = 0;
+};
+bool same_values(const WeldedVertex& a, const WeldedVertex& b) {
+  return a.p == b.p && a.n == b.n && a.u == b.u && a.v == b.v;  // float ==: -0 == +0, NaN never
+}
+WeldedVertex welded_values(const Corners& in, std::uint32_t c) {
+  const F3 t = in.texcoord_of(c);
+  return {in.position(c), in.normal_of(c), t.x, t.y};
+}
+std::uint32_t float_bits(float x) {
+  x += 0.0f;  // -0 + 0 = +0
+  std::uint32_t b;
+  std::memcpy(&b, &x, 4);
+  return b;
 }
 
-std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32_t>& corners) {
-  const std::size_t C = in.num_corners, N = corners.size();
-  std::vector<std::uint32_t> rep(C, 0);
+// The first vertex with each vertex's position (itself when the position has a NaN).
+std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions) {
+  const std::size_t V = positions.size();
+  std::vector<std::uint32_t> first(V);
   std::size_t cap = 16;
-  while (cap < 2 * N) cap *= 2;
+  while (cap < 2 * V) cap *= 2;
   std::vector<std::uint32_t> table(cap, ~0u);
-  constexpr std::uint64_t kNaN = ~0ull;  // a key with a NaN: not hashed (a slot is below cap)
-  auto slot_of = [&](std::uint32_t c) {
-    float k[8];
-    weld_key(in, c, k);
-    bool nan = false;
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (float x : k) {
-      nan = nan || x != x;
-      std::uint32_t bits;
-      std::memcpy(&bits, &x, 4);
-      h = (h ^ bits) * 0xff51afd7ed558ccdull;
-      h ^= h >> 32;
-    }
-    return nan ? kNaN : (h & (cap - 1));
-  };
-  constexpr std::size_t kAhead = 8;  // the slots of the next kAhead corners, in a ring
-  std::uint64_t ahead[kAhead];
-  for (std::size_t i = 0; i < kAhead && i < N; ++i) ahead[i] = slot_of(corners[i]);
-  for (std::size_t i = 0; i < N; ++i) {
-    const std::uint64_t first_slot = ahead[i % kAhead];
-    if (i + kAhead < N) {
-      ahead[i % kAhead] = slot_of(corners[i + kAhead]);
-      if (ahead[i % kAhead] != kNaN) __builtin_prefetch(&table[ahead[i % kAhead]]);
-    }
-    const std::uint32_t c = corners[i];
-    if (first_slot == kNaN) { rep[c] = c; continue; }
-    float k[8];
-    weld_key(in, c, k);
-    for (std::size_t slot = first_slot;; slot = (slot + 1) & (cap - 1)) {
-      if (table[slot] == ~0u) { table[slot] = c; rep[c] = c; break; }
-      float o[8];
-      weld_key(in, table[slot], o);
-      if (std::memcmp(o, k, sizeof k) == 0) { rep[c] = table[slot]; break; }
+  for (std::size_t v = 0; v < V; ++v) {
+    const F3 p = positions[v];
+    first[v] = std::uint32_t(v);
+    if (p.x != p.x || p.y != p.y || p.z != p.z) continue;
+    std::uint64_t h = (std::uint64_t(float_bits(p.x)) * 0x9E3779B97F4A7C15ull) ^ float_bits(p.y);
+    h = (h * 0xff51afd7ed558ccdull) ^ float_bits(p.z);
+    h *= 0xc4ceb9fe1a85ec53ull;
+    for (std::size_t slot = (h >> 32) & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+      if (table[slot] == ~0u) { table[slot] = std::uint32_t(v); break; }
+      if (positions[table[slot]] == p) { first[v] = table[slot]; break; }
     }
   }
-  return rep;
+  return first;
+}
+
+struct Welded {
+  std::vector<std::uint32_t> id;        // #C: the welded vertex of each corner taken
+  std::vector<WeldedVertex> vertex;     // #U: its values
+};
+
+Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken) {
+  const std::size_t V = in.positions.size(), F = mesh.num_faces();
+  const std::vector<std::uint32_t> first = canonical_positions(in.positions);
+  std::vector<std::uint32_t> start(V + 1, 0);
+  std::size_t N = 0;
+  for (std::size_t f = 0; f < F; ++f) {
+    if (!taken[f]) continue;
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) ++start[first[in.vertex[c]] + 1];
+    N += mesh.face_start[f + 1] - mesh.face_start[f];
+  }
+  for (std::size_t v = 0; v < V; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> bucket(N);
+  {
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < F; ++f) {
+      if (!taken[f]) continue;
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) bucket[next[first[in.vertex[c]]]++] = c;
+    }
+  }
+  Welded w;
+  w.id.resize(in.num_corners);
+  w.vertex.reserve(V + V / 4);
+  constexpr std::size_t kLinear = 16;
+  std::uint32_t found[kLinear];  // this bucket's welded vertices so far
+  std::vector<std::pair<std::array<std::uint32_t, 8>, std::uint32_t>> keys;  // a large bucket: (values, corner)
+  for (std::size_t b = 0; b < V; ++b) {
+    const std::uint32_t* c = &bucket[start[b]];
+    const std::size_t n = start[b + 1] - start[b];
+    std::size_t k = 0, i = 0;
+    for (; i < n; ++i) {  // linear search while the bucket has at most kLinear distinct values
+      const WeldedVertex x = welded_values(in, c[i]);
+      std::size_t j = 0;
+      while (j < k && !same_values(w.vertex[found[j]], x)) ++j;
+      if (j == k) {
+        if (k == kLinear) break;
+        found[k++] = std::uint32_t(w.vertex.size());
+        w.vertex.push_back(x);
+      }
+      w.id[c[i]] = found[j];
+    }
+    if (i == n) continue;
+    // The rest by sorting: the first corner of each run of equal values is a new vertex unless one
+    // of the k found has its values; a value with a NaN is its own.
+    keys.clear();
+    for (; i < n; ++i) {
+      const WeldedVertex x = welded_values(in, c[i]);
+      const float v[8] = {x.p.x, x.p.y, x.p.z, x.n.x, x.n.y, x.n.z, x.u, x.v};
+      bool nan = false;
+      std::array<std::uint32_t, 8> key;
+      for (int q = 0; q < 8; ++q) { nan = nan || v[q] != v[q]; key[q] = float_bits(v[q]); }
+      if (nan) {
+        w.id[c[i]] = std::uint32_t(w.vertex.size());
+        w.vertex.push_back(x);
+      } else {
+        keys.push_back({key, c[i]});
+      }
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t r = 0; r < keys.size(); ++r) {
+      if (r > 0 && keys[r].first == keys[r - 1].first) { w.id[keys[r].second] = w.id[keys[r - 1].second]; continue; }
+      const WeldedVertex x = welded_values(in, keys[r].second);
+      std::size_t j = 0;
+      while (j < k && !same_values(w.vertex[found[j]], x)) ++j;
+      if (j < k) { w.id[keys[r].second] = found[j]; continue; }
+      w.id[keys[r].second] = std::uint32_t(w.vertex.size());
+      w.vertex.push_back(x);
+    }
+  }
+  return w;
 }
 
 // Step 3: degenerate triangles marked (a quad with exactly one of them marked too) and moved after
 // the healthy ones, which keep their order.
-void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) {
+void set_aside_degenerate(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris) {
   const std::size_t T = tris.face.size();
   for (std::size_t t = 0; t < T; ++t) {
-    const F3 p0 = in.position(tris.index[3 * t]), p1 = in.position(tris.index[3 * t + 1]), p2 = in.position(tris.index[3 * t + 2]);
+    const F3 p0 = wv[tris.index[3 * t]].p, p1 = wv[tris.index[3 * t + 1]].p, p2 = wv[tris.index[3 * t + 2]].p;
     if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate;
   }
   for (std::size_t t = 0; t + 1 < T;) {
@@ -204,22 +269,22 @@ void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) 
   tris = std::move(sorted);
 }
 
-float texture_area(const Corners& in, const std::uint32_t* idx) {
-  const F3 t1 = in.texcoord_of(idx[0]), t2 = in.texcoord_of(idx[1]), t3 = in.texcoord_of(idx[2]);
-  const float a = (t2.x - t1.x) * (t3.y - t1.y) - (t2.y - t1.y) * (t3.x - t1.x);
+float texture_area(const std::vector<WeldedVertex>& wv, const std::uint32_t* idx) {
+  const WeldedVertex &t1 = wv[idx[0]], &t2 = wv[idx[1]], &t3 = wv[idx[2]];
+  const float a = (t2.u - t1.u) * (t3.v - t1.v) - (t2.v - t1.v) * (t3.u - t1.u);
   return a < 0 ? -a : a;
 }
 
 // Step 4: derivatives, magnitudes and orientation of each healthy triangle (eq. 18, 19).
-void triangle_derivatives(const Mesh& mesh, const Corners& in, Triangles& tris, std::vector<TriInfo>& info) {
+void triangle_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, std::vector<TriInfo>& info) {
   const std::size_t T = tris.good;
   for (std::size_t f = 0; f < T; ++f) {
     std::uint8_t& flag = tris.flag[f];
     flag |= kGroupWithAny;  // assumed bad
     const std::uint32_t* idx = &tris.index[3 * f];
-    const F3 v1 = in.position(idx[0]), v2 = in.position(idx[1]), v3 = in.position(idx[2]);
-    const F3 t1 = in.texcoord_of(idx[0]), t2 = in.texcoord_of(idx[1]), t3 = in.texcoord_of(idx[2]);
-    const float t21x = t2.x - t1.x, t21y = t2.y - t1.y, t31x = t3.x - t1.x, t31y = t3.y - t1.y;
+    const WeldedVertex &w1 = wv[idx[0]], &w2 = wv[idx[1]], &w3 = wv[idx[2]];
+    const F3 v1 = w1.p, v2 = w2.p, v3 = w3.p;
+    const float t21x = w2.u - w1.u, t21y = w2.v - w1.v, t31x = w3.u - w1.u, t31y = w3.v - w1.v;
     const F3 d1 = v2 - v1, d2 = v3 - v1;
     const float signed_area2 = t21x * t31y - t21y * t31x;
     const F3 os = scale(t31y, d1) - scale(t21y, d2);   // eq. 18
@@ -241,7 +306,7 @@ void triangle_derivatives(const Mesh& mesh, const Corners& in, Triangles& tris, 
     if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kOrientPreserving) != 0) {
         const bool first = (tris.flag[t + 1] & kGroupWithAny) != 0 ||
-                           texture_area(in, &tris.index[3 * t]) >= texture_area(in, &tris.index[3 * (t + 1)]);
+                           texture_area(wv, &tris.index[3 * t]) >= texture_area(wv, &tris.index[3 * (t + 1)]);
         const std::size_t t0 = first ? t : t + 1, t1 = first ? t + 1 : t;
         tris.flag[t1] = std::uint8_t((tris.flag[t1] & ~kOrientPreserving) | (tris.flag[t0] & kOrientPreserving));
       }
@@ -349,13 +414,49 @@ void build_groups(Triangles& tris, std::vector<TriInfo>& info, std::vector<Group
     }
 }
 
-// The frame of one sub-group at vertex `rep`: members' projected derivatives (ps, pt: those of
-// the group's members onto the vertex normal, by position in the group) weighted by the corner
-// angle of the triangle projected onto the normal's plane. `sub`: positions in the group, in
-// ascending triangle order (the order of the sums).
-TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const std::uint32_t* tri, const std::vector<F3>& ps,
-                      const std::vector<F3>& pt, const Corners& in, const Triangles& tris,
-                      const std::vector<TriInfo>& info, std::uint32_t rep) {
+// Step 7a: per corner of each healthy triangle, the terms of its group's frame (the reference's
+// evaluation, in its arithmetic): the triangle's derivatives projected onto the corner's normal
+// (ps, pt) and the corner's angle in the normal's plane, in blocks through the vector pass
+// (engine/tangent_corner_terms.h); the arc cosine is the reference's, acos in double.
+struct CornerTerm {
+  F3 ps, pt;
+  float angle;
+};
+
+BulkVector<CornerTerm> corner_terms(const std::vector<WeldedVertex>& wv, const Triangles& tris, const std::vector<TriInfo>& info) {
+  using normals_detail::kTangentCornerBlock;
+  constexpr std::size_t B = kTangentCornerBlock;
+  const std::size_t n = 3 * tris.good;
+  BulkVector<CornerTerm> terms(n);
+  float in[15 * B], out[7 * B];
+  for (std::size_t begin = 0; begin < n; begin += B) {
+    const std::size_t count = std::min(B, n - begin);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t j = begin + i, t = j / 3, k = j % 3;
+      const std::uint32_t* idx = &tris.index[3 * t];
+      const WeldedVertex& w = wv[idx[k]];
+      const F3 e1 = wv[idx[k > 0 ? k - 1 : 2]].p - w.p, e2 = wv[idx[k < 2 ? k + 1 : 0]].p - w.p;
+      const TriInfo& ti = info[t];
+      const float v[15] = {w.n.x, w.n.y, w.n.z, ti.os.x, ti.os.y, ti.os.z, ti.ot.x, ti.ot.y, ti.ot.z,
+                           e1.x, e1.y, e1.z, e2.x, e2.y, e2.z};
+      for (int r = 0; r < 15; ++r) in[r * B + i] = v[r];
+    }
+    normals_detail::tangent_corner_terms(count, in, out);
+    for (std::size_t i = 0; i < count; ++i) {
+      CornerTerm& c = terms[begin + i];
+      c.ps = {out[i], out[B + i], out[2 * B + i]};
+      c.pt = {out[3 * B + i], out[4 * B + i], out[5 * B + i]};
+      c.angle = float(std::acos(double(out[6 * B + i])));
+    }
+  }
+  return terms;
+}
+
+// The frame of one sub-group: its members' projected derivatives weighted by their corners'
+// angles (term[j]: member j's corner term). `sub`: positions in the group, in ascending triangle
+// order (the order of the sums).
+TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const std::uint32_t* tri, const std::vector<const CornerTerm*>& term,
+                      const Triangles& tris, const std::vector<TriInfo>& info) {
   TSpace res;
   res.os = {0, 0, 0};
   res.ot = {0, 0, 0};
@@ -364,15 +465,9 @@ TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const std::uint32_t
   for (std::uint32_t j : sub) {
     const std::uint32_t f = tri[j];
     if (tris.flag[f] & kGroupWithAny) continue;
-    const std::uint32_t* idx = &tris.index[3 * f];
-    const int i = corner_at(idx, rep);
-    const F3 n = in.normal_of(idx[i]);
-    const F3 p0 = in.position(idx[i > 0 ? i - 1 : 2]), p1 = in.position(idx[i]), p2 = in.position(idx[i < 2 ? i + 1 : 0]);
-    const F3 v1 = project_unit(p0 - p1, n), v2 = project_unit(p2 - p1, n);
-    const float c = std::min(1.0f, std::max(-1.0f, dot(v1, v2)));
-    const float angle = float(std::acos(double(c)));
-    res.os = res.os + scale(angle, ps[j]);
-    res.ot = res.ot + scale(angle, pt[j]);
+    const float angle = term[j]->angle;
+    res.os = res.os + scale(angle, term[j]->ps);
+    res.ot = res.ot + scale(angle, term[j]->pt);
     res.mag_s += angle * info[f].mag_s;
     res.mag_t += angle * info[f].mag_t;
     angle_sum += angle;
@@ -420,12 +515,12 @@ struct CornerFrames {
 };
 
 // Step 7: sub-groups and their frames, written to each triangle's corner.
-void group_frames(const Corners& in, const Triangles& tris, const std::vector<TriInfo>& info,
+void group_frames(const BulkVector<CornerTerm>& terms, const Triangles& tris, const std::vector<TriInfo>& info,
                   const std::vector<Group>& groups, const std::vector<std::uint32_t>& members,
                   CornerFrames& out) {
   // The reference's angular threshold, 180 degrees: cos(float(pi)) rounded to float is exactly -1.
   const float threshold_cos = -1.0f;
-  std::vector<F3> ps, pt;
+  std::vector<const CornerTerm*> term;  // per member: its corner's term
   std::vector<std::uint32_t> sub;
   // This group's distinct sub-groups: members in one flat buffer (offsets); their frames are
   // out.frames[base, base + count).
@@ -433,13 +528,9 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const Group& group = groups[g];
     const std::uint32_t* tri = &members[group.offset];
-    const F3 n = in.normal_of(group.representative);  // every corner of the group has this normal
-    ps.resize(group.count);
-    pt.resize(group.count);
-    for (std::uint32_t j = 0; j < group.count; ++j) {
-      ps[j] = project_unit(info[tri[j]].os, n);
-      pt[j] = project_unit(info[tri[j]].ot, n);
-    }
+    term.resize(group.count);
+    for (std::uint32_t j = 0; j < group.count; ++j)
+      term[j] = &terms[3 * std::size_t(tri[j]) + std::size_t(corner_at(&tris.index[3 * tri[j]], group.representative))];
     // The common case: every pair of members joins (none antiparallel), so every member's
     // sub-group is the whole group: one frame, of the members in ascending order.
     bool whole = true;
@@ -448,14 +539,14 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
         const std::uint32_t f = tri[i], t = tri[j];
         const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
         const bool same_face = tris.face[f] == tris.face[t];
-        whole = any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos);
+        whole = any || same_face || (dot(term[i]->ps, term[j]->ps) > threshold_cos && dot(term[i]->pt, term[j]->pt) > threshold_cos);
       }
     auto by_triangle = [tri](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; };
     if (whole) {
       sub.resize(group.count);
       for (std::uint32_t j = 0; j < group.count; ++j) sub[j] = j;
       std::sort(sub.begin(), sub.end(), by_triangle);
-      out.frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+      out.frames.push_back(evaluate_frame(sub, tri, term, tris, info));
       out.frames.back().orient = group.orient;
       const auto frame = std::uint32_t(out.frames.size() - 1);
       for (std::uint32_t i = 0; i < group.count; ++i) {
@@ -476,7 +567,7 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
         const std::uint32_t t = tri[j];
         const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
         const bool same_face = tris.face[f] == tris.face[t];
-        if (any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos)) sub.push_back(j);
+        if (any || same_face || (dot(term[i]->ps, term[j]->ps) > threshold_cos && dot(term[i]->pt, term[j]->pt) > threshold_cos)) sub.push_back(j);
       }
       std::sort(sub.begin(), sub.end(), by_triangle);
       std::size_t l = 0;
@@ -487,7 +578,7 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
       if (l == known) {
         sub_members.insert(sub_members.end(), sub.begin(), sub.end());
         sub_offset.push_back(std::uint32_t(sub_members.size()));
-        out.frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+        out.frames.push_back(evaluate_frame(sub, tri, term, tris, info));
         out.frames.back().orient = group.orient;
       }
       out.receive(tris.corner[3 * f + index], std::uint32_t(base + l), group.orient);
@@ -496,9 +587,10 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
 }
 
 // Step 8: frames for the corners of degenerate triangles.
-void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tris, std::vector<std::uint32_t>& out) {
+void degenerate_frames(const Mesh& mesh, const Corners& in, std::size_t num_welded, const Triangles& tris,
+                       std::vector<std::uint32_t>& out) {
   const std::size_t T = tris.face.size(), good = tris.good;
-  std::vector<std::uint32_t> first(in.num_corners, ~0u);  // welded vertex -> first healthy corner slot
+  std::vector<std::uint32_t> first(num_welded, ~0u);  // welded vertex -> first healthy corner slot
   for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
   for (std::size_t t = good; t < T; ++t) {
     if (tris.flag[t] & kQuadOneDegenerate) continue;
@@ -573,25 +665,22 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   in.normal = mesh.has_corner_normals() ? mesh.corner_normal_index.data()
               : mesh.has_vertex_normals() ? mesh.corner_vertex.data() : corner_face.data();
   in.texcoord = mesh.corner_texcoord_index.data();
-  std::vector<std::uint32_t> corners;
-  corners.reserve(C);
   for (std::size_t f = 0; f < F; ++f) {
     bool ok = mesh.face_size(f) >= 3 && dims >= 2;
     for (std::uint32_t c = mesh.face_start[f]; ok && c < mesh.face_start[f + 1]; ++c)
       ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
     taken[f] = ok;
-    if (!ok) continue;
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) corners.push_back(std::uint32_t(c));
   }
   Triangles tris;
   make_triangles(mesh, in, taken, tris);
-  const std::vector<std::uint32_t> rep = weld(in, corners);
+  const Welded welded = weld(mesh, in, taken);
+  const std::vector<WeldedVertex>& wv = welded.vertex;
   tris.index.resize(tris.corner.size());
-  for (std::size_t k = 0; k < tris.corner.size(); ++k) tris.index[k] = rep[tris.corner[k]];
-  set_aside_degenerate(mesh, in, tris);
+  for (std::size_t k = 0; k < tris.corner.size(); ++k) tris.index[k] = welded.id[tris.corner[k]];
+  set_aside_degenerate(mesh, wv, tris);
   std::vector<TriInfo> info(tris.good);
-  triangle_derivatives(mesh, in, tris, info);
-  find_neighbours(tris, C, info);
+  triangle_derivatives(mesh, wv, tris, info);
+  find_neighbours(tris, wv.size(), info);
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
   members.reserve(3 * tris.good);
@@ -599,8 +688,8 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   CornerFrames frames;
   frames.frames.reserve(groups.size() + groups.size() / 8);
   frames.of.assign(C, ~0u);
-  group_frames(in, tris, info, groups, members, frames);
-  degenerate_frames(mesh, in, tris, frames.of);
+  group_frames(corner_terms(wv, tris, info), tris, info, groups, members, frames);
+  degenerate_frames(mesh, in, wv.size(), tris, frames.of);
   const TSpace none;  // the reference's default frame
 
   TangentFrames out;
