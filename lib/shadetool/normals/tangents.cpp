@@ -65,10 +65,12 @@ struct TriInfo {
   std::int32_t group[3] = {-1, -1, -1};
 };
 
+using TriInfos = BulkVector<TriInfo>;  // per healthy triangle (unzeroed, huge pages: bulk_reserve.h)
+
 struct Group {
   std::uint32_t representative;
   bool orient;
-  std::uint32_t offset, count;  // its triangles: group_triangles[offset, offset + count)
+  std::uint32_t offset, count;  // its corners: members[offset, offset + count), slots 3 t + k (corner k of triangle t)
 };
 
 struct TSpace {
@@ -79,6 +81,10 @@ struct TSpace {
 
 // Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners).
 void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken, Triangles& tris) {
+  std::size_t count = 0;
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) count += taken[f] ? mesh.face_size(f) - 2 : 0;
+  tris.corner.reserve(3 * count);
+  tris.face.reserve(count);
   auto add = [&](std::uint32_t f, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     tris.corner.insert(tris.corner.end(), {a, b, c});
     tris.face.push_back(f);
@@ -107,12 +113,12 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
 }
 
 // Step 2: welded vertex of every corner taken: corners with the same (position, normal, texture
-// coordinate) as float == are one vertex (-0 equals +0; a value with a NaN equals nothing), numbered
-// densely. From the mesh's own indices: each position value gets a canonical vertex (the first
-// vertex with that value, by an open-addressing table over the vertices, not the corners); the
-// corners are bucketed by it (a counting sort: buckets in vertex order, corners ascending) and a
-// bucket's few distinct (normal, texture coordinate) values found by a linear search (a bucket of
-// more than kLinear vertices: by sorting its keys).
+// coordinate) as float == are one vertex (-0 equals +0; a value with a NaN equals nothing),
+// numbered densely in the order of their first corners. From the mesh's own indices: each position
+// value gets a canonical vertex (the first vertex with that value, by an open-addressing table over
+// the vertices, not the corners); the corners, in order, look for their values among the welded
+// vertices already found at their canonical vertex (a short list; one with more than kLinear
+// welded vertices moves them to a table keyed by all eight values).
 struct WeldedVertex {
   F3 p, n;
   float u = 0, v = 0;
@@ -120,15 +126,20 @@ struct WeldedVertex {
 bool same_values(const WeldedVertex& a, const WeldedVertex& b) {
   return a.p == b.p && a.n == b.n && a.u == b.u && a.v == b.v;  // float ==: -0 == +0, NaN never
 }
-WeldedVertex welded_values(const Corners& in, std::uint32_t c) {
-  const F3 t = in.texcoord_of(c);
-  return {in.position(c), in.normal_of(c), t.x, t.y};
-}
+bool has_nan(const WeldedVertex& a) { return !same_values(a, a); }
 std::uint32_t float_bits(float x) {
   x += 0.0f;  // -0 + 0 = +0
   std::uint32_t b;
   std::memcpy(&b, &x, 4);
   return b;
+}
+std::uint64_t hash_floats(const float* x, int n) {
+  std::uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (int i = 0; i < n; ++i) {
+    h = (h ^ float_bits(x[i])) * 0xff51afd7ed558ccdull;
+    h ^= h >> 32;
+  }
+  return h;
 }
 
 // The first vertex with each vertex's position (itself when the position has a NaN).
@@ -141,11 +152,9 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
   for (std::size_t v = 0; v < V; ++v) {
     const F3 p = positions[v];
     first[v] = std::uint32_t(v);
-    if (p.x != p.x || p.y != p.y || p.z != p.z) continue;
-    std::uint64_t h = (std::uint64_t(float_bits(p.x)) * 0x9E3779B97F4A7C15ull) ^ float_bits(p.y);
-    h = (h * 0xff51afd7ed558ccdull) ^ float_bits(p.z);
-    h *= 0xc4ceb9fe1a85ec53ull;
-    for (std::size_t slot = (h >> 32) & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+    if (!(p == p)) continue;  // a NaN
+    const float x[3] = {p.x, p.y, p.z};
+    for (std::size_t slot = hash_floats(x, 3) & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
       if (table[slot] == ~0u) { table[slot] = std::uint32_t(v); break; }
       if (positions[table[slot]] == p) { first[v] = table[slot]; break; }
     }
@@ -154,76 +163,65 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
 }
 
 struct Welded {
-  std::vector<std::uint32_t> id;        // #C: the welded vertex of each corner taken
-  std::vector<WeldedVertex> vertex;     // #U: its values
+  std::vector<std::uint32_t> id;     // #C: the welded vertex of each corner taken
+  std::vector<WeldedVertex> vertex;  // #U: its values
 };
 
 Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken) {
   const std::size_t V = in.positions.size(), F = mesh.num_faces();
   const std::vector<std::uint32_t> first = canonical_positions(in.positions);
-  std::vector<std::uint32_t> start(V + 1, 0);
-  std::size_t N = 0;
-  for (std::size_t f = 0; f < F; ++f) {
-    if (!taken[f]) continue;
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) ++start[first[in.vertex[c]] + 1];
-    N += mesh.face_start[f + 1] - mesh.face_start[f];
-  }
-  for (std::size_t v = 0; v < V; ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t> bucket(N);
-  {
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < F; ++f) {
-      if (!taken[f]) continue;
-      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) bucket[next[first[in.vertex[c]]]++] = c;
-    }
-  }
   Welded w;
   w.id.resize(in.num_corners);
   w.vertex.reserve(V + V / 4);
-  constexpr std::size_t kLinear = 16;
-  std::uint32_t found[kLinear];  // this bucket's welded vertices so far
-  std::vector<std::pair<std::array<std::uint32_t, 8>, std::uint32_t>> keys;  // a large bucket: (values, corner)
-  for (std::size_t b = 0; b < V; ++b) {
-    const std::uint32_t* c = &bucket[start[b]];
-    const std::size_t n = start[b + 1] - start[b];
-    std::size_t k = 0, i = 0;
-    for (; i < n; ++i) {  // linear search while the bucket has at most kLinear distinct values
-      const WeldedVertex x = welded_values(in, c[i]);
-      std::size_t j = 0;
-      while (j < k && !same_values(w.vertex[found[j]], x)) ++j;
-      if (j == k) {
-        if (k == kLinear) break;
-        found[k++] = std::uint32_t(w.vertex.size());
-        w.vertex.push_back(x);
+  constexpr std::uint32_t kLinear = 16, kNone = ~0u;
+  std::vector<std::uint32_t> head(V, kNone);   // canonical vertex -> its latest welded vertex
+  std::vector<std::uint32_t> count(V, 0);      // how many welded vertices it has
+  std::vector<std::uint32_t> next;             // welded vertex -> the previous one at its position
+  next.reserve(V + V / 4);
+  // The table for positions with more than kLinear welded vertices: (all values) -> welded vertex.
+  std::vector<std::uint32_t> table;
+  auto table_slot = [&](const WeldedVertex& x) {
+    const float k[8] = {x.p.x, x.p.y, x.p.z, x.n.x, x.n.y, x.n.z, x.u, x.v};
+    std::size_t slot = hash_floats(k, 8) & (table.size() - 1);
+    while (table[slot] != kNone && !same_values(w.vertex[table[slot]], x)) slot = (slot + 1) & (table.size() - 1);
+    return slot;
+  };
+  auto grow_table = [&](std::size_t at_least) {
+    std::size_t cap = 1024;
+    while (cap < 2 * at_least) cap *= 2;
+    table.assign(cap, kNone);
+    std::size_t in_table = 0;
+    for (std::size_t b = 0; b < V; ++b)
+      if (count[b] > kLinear)
+        for (std::uint32_t k = head[b]; k != kNone; k = next[k]) table[table_slot(w.vertex[k])] = k, ++in_table;
+    return in_table;
+  };
+  std::size_t in_table = 0;
+  for (std::size_t f = 0; f < F; ++f) {
+    if (!taken[f]) continue;
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      const F3 t = in.texcoord_of(c);
+      const WeldedVertex x{in.position(c), in.normal_of(c), t.x, t.y};
+      const std::uint32_t b = first[in.vertex[c]];
+      std::uint32_t k = kNone;
+      if (count[b] <= kLinear) {
+        k = head[b];
+        while (k != kNone && !same_values(w.vertex[k], x)) k = next[k];
+      } else if (!has_nan(x)) {
+        k = table[table_slot(x)];
       }
-      w.id[c[i]] = found[j];
-    }
-    if (i == n) continue;
-    // The rest by sorting: the first corner of each run of equal values is a new vertex unless one
-    // of the k found has its values; a value with a NaN is its own.
-    keys.clear();
-    for (; i < n; ++i) {
-      const WeldedVertex x = welded_values(in, c[i]);
-      const float v[8] = {x.p.x, x.p.y, x.p.z, x.n.x, x.n.y, x.n.z, x.u, x.v};
-      bool nan = false;
-      std::array<std::uint32_t, 8> key;
-      for (int q = 0; q < 8; ++q) { nan = nan || v[q] != v[q]; key[q] = float_bits(v[q]); }
-      if (nan) {
-        w.id[c[i]] = std::uint32_t(w.vertex.size());
+      if (k == kNone) {  // a new welded vertex
+        k = std::uint32_t(w.vertex.size());
         w.vertex.push_back(x);
-      } else {
-        keys.push_back({key, c[i]});
+        next.push_back(head[b]);
+        head[b] = k;
+        if (++count[b] == kLinear + 1) in_table = grow_table(in_table + kLinear + 1);  // this position's move in
+        else if (count[b] > kLinear && !has_nan(x)) {
+          if (2 * (++in_table) > table.size()) in_table = grow_table(in_table);
+          else table[table_slot(x)] = k;
+        }
       }
-    }
-    std::sort(keys.begin(), keys.end());
-    for (std::size_t r = 0; r < keys.size(); ++r) {
-      if (r > 0 && keys[r].first == keys[r - 1].first) { w.id[keys[r].second] = w.id[keys[r - 1].second]; continue; }
-      const WeldedVertex x = welded_values(in, keys[r].second);
-      std::size_t j = 0;
-      while (j < k && !same_values(w.vertex[found[j]], x)) ++j;
-      if (j < k) { w.id[keys[r].second] = found[j]; continue; }
-      w.id[keys[r].second] = std::uint32_t(w.vertex.size());
-      w.vertex.push_back(x);
+      w.id[c] = k;
     }
   }
   return w;
@@ -276,7 +274,7 @@ float texture_area(const std::vector<WeldedVertex>& wv, const std::uint32_t* idx
 }
 
 // Step 4: derivatives, magnitudes and orientation of each healthy triangle (eq. 18, 19).
-void triangle_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, std::vector<TriInfo>& info) {
+void triangle_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, TriInfos& info) {
   const std::size_t T = tris.good;
   for (std::size_t f = 0; f < T; ++f) {
     std::uint8_t& flag = tris.flag[f];
@@ -332,7 +330,7 @@ int edge_of(const std::uint32_t* idx, std::uint32_t a, std::uint32_t b, std::uin
 // higher vertex, triangle) order, the first unpaired match wins. The order: a counting sort by the
 // lower vertex (stable: triangles stay ascending), then each vertex's few edges sorted by
 // (higher vertex, triangle).
-void find_neighbours(const Triangles& tris, std::size_t num_welded, std::vector<TriInfo>& info) {
+void find_neighbours(const Triangles& tris, std::size_t num_welded, TriInfos& info) {
   struct Edge { std::uint32_t i1, f; };
   const std::size_t T = tris.good;
   std::vector<std::uint32_t> start(num_welded + 1, 0);
@@ -379,7 +377,7 @@ int corner_at(const std::uint32_t* idx, std::uint32_t vertex) {
 
 // Step 6: groups of triangles around each welded vertex (the reference's four rules), depth first
 // through neighbours, left (the edge leaving the vertex) before right.
-void build_groups(Triangles& tris, std::vector<TriInfo>& info, std::vector<Group>& groups,
+void build_groups(Triangles& tris, TriInfos& info, std::vector<Group>& groups,
                   std::vector<std::uint32_t>& members) {
   const std::size_t T = tris.good;
   std::vector<std::int32_t> stack;
@@ -388,7 +386,7 @@ void build_groups(Triangles& tris, std::vector<TriInfo>& info, std::vector<Group
       if ((tris.flag[f] & kGroupWithAny) || info[f].group[i] != -1) continue;
       const auto g = std::int32_t(groups.size());
       Group group{tris.index[3 * f + i], (tris.flag[f] & kOrientPreserving) != 0, std::uint32_t(members.size()), 0};
-      members.push_back(std::uint32_t(f));
+      members.push_back(std::uint32_t(3 * f + i));
       info[f].group[i] = g;
       stack.assign({info[f].neighbour[i > 0 ? i - 1 : 2], info[f].neighbour[i]});
       while (!stack.empty()) {
@@ -404,7 +402,7 @@ void build_groups(Triangles& tris, std::vector<TriInfo>& info, std::vector<Group
         if ((flag & kGroupWithAny) && ti.group[0] == -1 && ti.group[1] == -1 && ti.group[2] == -1)
           flag = std::uint8_t((flag & ~kOrientPreserving) | (group.orient ? kOrientPreserving : 0));
         if (((flag & kOrientPreserving) != 0) != group.orient) continue;
-        members.push_back(std::uint32_t(t));
+        members.push_back(std::uint32_t(3 * t + k));
         ti.group[k] = g;
         stack.push_back(ti.neighbour[k > 0 ? k - 1 : 2]);
         stack.push_back(ti.neighbour[k]);
@@ -423,7 +421,7 @@ struct CornerTerm {
   float angle;
 };
 
-BulkVector<CornerTerm> corner_terms(const std::vector<WeldedVertex>& wv, const Triangles& tris, const std::vector<TriInfo>& info) {
+BulkVector<CornerTerm> corner_terms(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info) {
   using normals_detail::kTangentCornerBlock;
   constexpr std::size_t B = kTangentCornerBlock;
   const std::size_t n = 3 * tris.good;
@@ -452,24 +450,32 @@ BulkVector<CornerTerm> corner_terms(const std::vector<WeldedVertex>& wv, const T
   return terms;
 }
 
+// A group's member as group_frames reads it: its slot (3 t + k: corner k of triangle t), its
+// triangle's face and whether that groups with any, and its corner's term.
+struct Member {
+  std::uint32_t slot, face;
+  bool any;
+  const CornerTerm* term;
+};
+
 // The frame of one sub-group: its members' projected derivatives weighted by their corners'
-// angles (term[j]: member j's corner term). `sub`: positions in the group, in ascending triangle
-// order (the order of the sums).
-TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const std::uint32_t* tri, const std::vector<const CornerTerm*>& term,
-                      const Triangles& tris, const std::vector<TriInfo>& info) {
+// angles. `sub`: the n members' positions in `m`, in ascending triangle order (the order of the
+// sums); null: all of m[0, n).
+TSpace evaluate_frame(const Member* m, const std::uint32_t* sub, std::size_t n, const TriInfos& info) {
   TSpace res;
   res.os = {0, 0, 0};
   res.ot = {0, 0, 0};
   res.mag_s = res.mag_t = 0;
   float angle_sum = 0;
-  for (std::uint32_t j : sub) {
-    const std::uint32_t f = tri[j];
-    if (tris.flag[f] & kGroupWithAny) continue;
-    const float angle = term[j]->angle;
-    res.os = res.os + scale(angle, term[j]->ps);
-    res.ot = res.ot + scale(angle, term[j]->pt);
-    res.mag_s += angle * info[f].mag_s;
-    res.mag_t += angle * info[f].mag_t;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Member& x = m[sub ? sub[i] : i];
+    if (x.any) continue;
+    const float angle = x.term->angle;
+    const TriInfo& ti = info[x.slot / 3];
+    res.os = res.os + scale(angle, x.term->ps);
+    res.ot = res.ot + scale(angle, x.term->pt);
+    res.mag_s += angle * ti.mag_s;
+    res.mag_t += angle * ti.mag_t;
     angle_sum += angle;
   }
   if (not_zero(res.os)) res.os = normalize(res.os);
@@ -514,62 +520,56 @@ struct CornerFrames {
   }
 };
 
-// Step 7: sub-groups and their frames, written to each triangle's corner.
-void group_frames(const BulkVector<CornerTerm>& terms, const Triangles& tris, const std::vector<TriInfo>& info,
+// Step 7: sub-groups and their frames, written to each member's corner. A group's members are
+// taken in ascending triangle order (slots ascend with triangles: one corner per triangle at a
+// vertex), the order of the reference's sums.
+void group_frames(const BulkVector<CornerTerm>& terms, const Triangles& tris, const TriInfos& info,
                   const std::vector<Group>& groups, const std::vector<std::uint32_t>& members,
                   CornerFrames& out) {
   // The reference's angular threshold, 180 degrees: cos(float(pi)) rounded to float is exactly -1.
   const float threshold_cos = -1.0f;
-  std::vector<const CornerTerm*> term;  // per member: its corner's term
+  auto joins = [threshold_cos](const Member& a, const Member& b) {
+    return a.any || b.any || a.face == b.face ||
+           (dot(a.term->ps, b.term->ps) > threshold_cos && dot(a.term->pt, b.term->pt) > threshold_cos);
+  };
+  std::vector<Member> m;
   std::vector<std::uint32_t> sub;
   // This group's distinct sub-groups: members in one flat buffer (offsets); their frames are
   // out.frames[base, base + count).
   std::vector<std::uint32_t> sub_members, sub_offset;
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    const Group& group = groups[g];
-    const std::uint32_t* tri = &members[group.offset];
-    term.resize(group.count);
-    for (std::uint32_t j = 0; j < group.count; ++j)
-      term[j] = &terms[3 * std::size_t(tri[j]) + std::size_t(corner_at(&tris.index[3 * tri[j]], group.representative))];
+  for (const Group& group : groups) {
+    const std::uint32_t n = group.count;
+    m.resize(n);
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const std::uint32_t slot = members[group.offset + j], t = slot / 3;
+      Member x{slot, tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[slot]};
+      std::uint32_t i = j;  // insertion sort by slot
+      for (; i > 0 && m[i - 1].slot > slot; --i) m[i] = m[i - 1];
+      m[i] = x;
+    }
     // The common case: every pair of members joins (none antiparallel), so every member's
-    // sub-group is the whole group: one frame, of the members in ascending order.
+    // sub-group is the whole group: one frame.
     bool whole = true;
-    for (std::uint32_t i = 0; i < group.count && whole; ++i)
-      for (std::uint32_t j = i + 1; j < group.count && whole; ++j) {
-        const std::uint32_t f = tri[i], t = tri[j];
-        const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
-        const bool same_face = tris.face[f] == tris.face[t];
-        whole = any || same_face || (dot(term[i]->ps, term[j]->ps) > threshold_cos && dot(term[i]->pt, term[j]->pt) > threshold_cos);
-      }
-    auto by_triangle = [tri](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; };
+    for (std::uint32_t i = 0; i < n && whole; ++i)
+      for (std::uint32_t j = i + 1; j < n && whole; ++j) whole = joins(m[i], m[j]);
     if (whole) {
-      sub.resize(group.count);
-      for (std::uint32_t j = 0; j < group.count; ++j) sub[j] = j;
-      std::sort(sub.begin(), sub.end(), by_triangle);
-      out.frames.push_back(evaluate_frame(sub, tri, term, tris, info));
+      out.frames.push_back(evaluate_frame(m.data(), nullptr, n, info));
       out.frames.back().orient = group.orient;
       const auto frame = std::uint32_t(out.frames.size() - 1);
-      for (std::uint32_t i = 0; i < group.count; ++i) {
-        const std::uint32_t f = tri[i];
-        const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
-        out.receive(tris.corner[3 * f + index], frame, group.orient);
-      }
+      for (std::uint32_t i = 0; i < n; ++i) out.receive(tris.corner[m[i].slot], frame, group.orient);
       continue;
     }
     sub_members.clear();
     sub_offset.assign(1, 0);
     const std::size_t base = out.frames.size();
-    for (std::uint32_t i = 0; i < group.count; ++i) {
-      const std::uint32_t f = tri[i];
-      const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
+    for (std::uint32_t d = 0; d < n; ++d) {
+      // Members in the order the group reached them (a corner that several triangles of a polygon
+      // share averages their frames in that order).
+      std::uint32_t i = 0;
+      while (m[i].slot != members[group.offset + d]) ++i;
       sub.clear();
-      for (std::uint32_t j = 0; j < group.count; ++j) {
-        const std::uint32_t t = tri[j];
-        const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
-        const bool same_face = tris.face[f] == tris.face[t];
-        if (any || same_face || (dot(term[i]->ps, term[j]->ps) > threshold_cos && dot(term[i]->pt, term[j]->pt) > threshold_cos)) sub.push_back(j);
-      }
-      std::sort(sub.begin(), sub.end(), by_triangle);
+      for (std::uint32_t j = 0; j < n; ++j)
+        if (j == i || joins(m[i], m[j])) sub.push_back(j);  // ascending, as m
       std::size_t l = 0;
       const std::size_t known = sub_offset.size() - 1;
       while (l < known && !(sub_offset[l + 1] - sub_offset[l] == sub.size() &&
@@ -578,10 +578,10 @@ void group_frames(const BulkVector<CornerTerm>& terms, const Triangles& tris, co
       if (l == known) {
         sub_members.insert(sub_members.end(), sub.begin(), sub.end());
         sub_offset.push_back(std::uint32_t(sub_members.size()));
-        out.frames.push_back(evaluate_frame(sub, tri, term, tris, info));
+        out.frames.push_back(evaluate_frame(m.data(), sub.data(), sub.size(), info));
         out.frames.back().orient = group.orient;
       }
-      out.receive(tris.corner[3 * f + index], std::uint32_t(base + l), group.orient);
+      out.receive(tris.corner[m[i].slot], std::uint32_t(base + l), group.orient);
     }
   }
 }
@@ -678,7 +678,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   tris.index.resize(tris.corner.size());
   for (std::size_t k = 0; k < tris.corner.size(); ++k) tris.index[k] = welded.id[tris.corner[k]];
   set_aside_degenerate(mesh, wv, tris);
-  std::vector<TriInfo> info(tris.good);
+  TriInfos info(tris.good);
   triangle_derivatives(mesh, wv, tris, info);
   find_neighbours(tris, wv.size(), info);
   std::vector<Group> groups;
@@ -693,20 +693,19 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   const TSpace none;  // the reference's default frame
 
   TangentFrames out;
-  out.tangents.resize(4 * C);
+  reserve_bulk(out.tangents, 4 * C);  // filled in corner order below: no zeroing first
+  std::vector<double>& o = out.tangents;
   for (std::size_t f = 0; f < F; ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      double* o = &out.tangents[4 * std::size_t(c)];
       if (!taken[f]) {
         const Vec3d t = perpendicular_unit(corner_normal(c, f));
-        o[0] = t.x; o[1] = t.y; o[2] = t.z; o[3] = 1.0;
+        o.push_back(t.x), o.push_back(t.y), o.push_back(t.z), o.push_back(1.0);
         ++out.fallback_corners;
         continue;
       }
       const std::uint32_t k = frames.of[c];
       const TSpace& s = k != ~0u ? frames.frames[k] : none;
-      o[0] = s.os.x; o[1] = s.os.y; o[2] = s.os.z;
-      o[3] = s.orient ? 1.0 : -1.0;
+      o.push_back(s.os.x), o.push_back(s.os.y), o.push_back(s.os.z), o.push_back(s.orient ? 1.0 : -1.0);
       if (k == ~0u) ++out.default_corners;
     }
   return out;
