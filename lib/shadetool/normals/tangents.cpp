@@ -163,7 +163,7 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
 }
 
 struct Welded {
-  std::vector<std::uint32_t> id;     // #C: the welded vertex of each corner taken
+  BulkVector<std::uint32_t> id;      // #C: the welded vertex of each corner taken
   std::vector<WeldedVertex> vertex;  // #U: its values
 };
 
@@ -412,25 +412,26 @@ void build_groups(Triangles& tris, TriInfos& info, std::vector<Group>& groups,
     }
 }
 
-// Step 7a: per corner of each healthy triangle, the terms of its group's frame (the reference's
-// evaluation, in its arithmetic): the triangle's derivatives projected onto the corner's normal
-// (ps, pt) and the corner's angle in the normal's plane, in blocks through the vector pass
-// (engine/tangent_corner_terms.h); the arc cosine is the reference's, acos in double.
+// Step 7a: per group member (a corner of a healthy triangle), the terms of its group's frame (the
+// reference's evaluation, in its arithmetic): the triangle's derivatives projected onto the
+// corner's normal (ps, pt) and the corner's angle in the normal's plane, in blocks through the
+// vector pass (engine/tangent_corner_terms.h); the arc cosine is the reference's, acos in double.
 struct CornerTerm {
   F3 ps, pt;
   float angle;
+  float mag_s, mag_t;  // the triangle's (TriInfo), beside the rest
 };
 
-BulkVector<CornerTerm> corner_terms(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info) {
+// slots: n corner slots (3 t + k: corner k of triangle t); terms: n, written.
+void corner_terms(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info,
+                  const std::uint32_t* slots, std::size_t n, CornerTerm* terms) {
   using normals_detail::kTangentCornerBlock;
   constexpr std::size_t B = kTangentCornerBlock;
-  const std::size_t n = 3 * tris.good;
-  BulkVector<CornerTerm> terms(n);
   float in[15 * B], out[7 * B];
   for (std::size_t begin = 0; begin < n; begin += B) {
     const std::size_t count = std::min(B, n - begin);
     for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t j = begin + i, t = j / 3, k = j % 3;
+      const std::size_t t = slots[begin + i] / 3, k = slots[begin + i] % 3;
       const std::uint32_t* idx = &tris.index[3 * t];
       const WeldedVertex& w = wv[idx[k]];
       const F3 e1 = wv[idx[k > 0 ? k - 1 : 2]].p - w.p, e2 = wv[idx[k < 2 ? k + 1 : 0]].p - w.p;
@@ -445,9 +446,11 @@ BulkVector<CornerTerm> corner_terms(const std::vector<WeldedVertex>& wv, const T
       c.ps = {out[i], out[B + i], out[2 * B + i]};
       c.pt = {out[3 * B + i], out[4 * B + i], out[5 * B + i]};
       c.angle = float(std::acos(double(out[6 * B + i])));
+      const TriInfo& ti = info[slots[begin + i] / 3];
+      c.mag_s = ti.mag_s;
+      c.mag_t = ti.mag_t;
     }
   }
-  return terms;
 }
 
 // A group's member as group_frames reads it: its slot (3 t + k: corner k of triangle t), its
@@ -461,7 +464,7 @@ struct Member {
 // The frame of one sub-group: its members' projected derivatives weighted by their corners'
 // angles. `sub`: the n members' positions in `m`, in ascending triangle order (the order of the
 // sums); null: all of m[0, n).
-TSpace evaluate_frame(const Member* m, const std::uint32_t* sub, std::size_t n, const TriInfos& info) {
+TSpace evaluate_frame(const Member* m, const std::uint32_t* sub, std::size_t n) {
   TSpace res;
   res.os = {0, 0, 0};
   res.ot = {0, 0, 0};
@@ -471,11 +474,10 @@ TSpace evaluate_frame(const Member* m, const std::uint32_t* sub, std::size_t n, 
     const Member& x = m[sub ? sub[i] : i];
     if (x.any) continue;
     const float angle = x.term->angle;
-    const TriInfo& ti = info[x.slot / 3];
     res.os = res.os + scale(angle, x.term->ps);
     res.ot = res.ot + scale(angle, x.term->pt);
-    res.mag_s += angle * ti.mag_s;
-    res.mag_t += angle * ti.mag_t;
+    res.mag_s += angle * x.term->mag_s;
+    res.mag_t += angle * x.term->mag_t;
     angle_sum += angle;
   }
   if (not_zero(res.os)) res.os = normalize(res.os);
@@ -523,9 +525,14 @@ struct CornerFrames {
 // Step 7: sub-groups and their frames, written to each member's corner. A group's members are
 // taken in ascending triangle order (slots ascend with triangles: one corner per triangle at a
 // vertex), the order of the reference's sums.
-void group_frames(const BulkVector<CornerTerm>& terms, const Triangles& tris, const TriInfos& info,
+// The terms are computed for batches of consecutive groups (their members are consecutive), about
+// kBatch corners at a time, so that they stay in cache between the two.
+void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info,
                   const std::vector<Group>& groups, const std::vector<std::uint32_t>& members,
                   CornerFrames& out) {
+  constexpr std::size_t kBatch = 512;
+  std::vector<CornerTerm> terms;
+  std::size_t batch_begin = 0, batch_end = 0;  // members whose terms are in `terms`
   // The reference's angular threshold, 180 degrees: cos(float(pi)) rounded to float is exactly -1.
   const float threshold_cos = -1.0f;
   auto joins = [threshold_cos](const Member& a, const Member& b) {
@@ -537,12 +544,21 @@ void group_frames(const BulkVector<CornerTerm>& terms, const Triangles& tris, co
   // This group's distinct sub-groups: members in one flat buffer (offsets); their frames are
   // out.frames[base, base + count).
   std::vector<std::uint32_t> sub_members, sub_offset;
-  for (const Group& group : groups) {
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const Group& group = groups[g];
     const std::uint32_t n = group.count;
+    if (group.offset + n > batch_end) {
+      std::size_t h = g + 1;
+      while (h < groups.size() && groups[h].offset + groups[h].count - group.offset <= kBatch) ++h;
+      batch_begin = group.offset;
+      batch_end = groups[h - 1].offset + groups[h - 1].count;
+      terms.resize(batch_end - batch_begin);
+      corner_terms(wv, tris, info, &members[batch_begin], batch_end - batch_begin, terms.data());
+    }
     m.resize(n);
     for (std::uint32_t j = 0; j < n; ++j) {
       const std::uint32_t slot = members[group.offset + j], t = slot / 3;
-      Member x{slot, tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[slot]};
+      Member x{slot, tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
       std::uint32_t i = j;  // insertion sort by slot
       for (; i > 0 && m[i - 1].slot > slot; --i) m[i] = m[i - 1];
       m[i] = x;
@@ -553,7 +569,7 @@ void group_frames(const BulkVector<CornerTerm>& terms, const Triangles& tris, co
     for (std::uint32_t i = 0; i < n && whole; ++i)
       for (std::uint32_t j = i + 1; j < n && whole; ++j) whole = joins(m[i], m[j]);
     if (whole) {
-      out.frames.push_back(evaluate_frame(m.data(), nullptr, n, info));
+      out.frames.push_back(evaluate_frame(m.data(), nullptr, n));
       out.frames.back().orient = group.orient;
       const auto frame = std::uint32_t(out.frames.size() - 1);
       for (std::uint32_t i = 0; i < n; ++i) out.receive(tris.corner[m[i].slot], frame, group.orient);
@@ -578,7 +594,7 @@ void group_frames(const BulkVector<CornerTerm>& terms, const Triangles& tris, co
       if (l == known) {
         sub_members.insert(sub_members.end(), sub.begin(), sub.end());
         sub_offset.push_back(std::uint32_t(sub_members.size()));
-        out.frames.push_back(evaluate_frame(m.data(), sub.data(), sub.size(), info));
+        out.frames.push_back(evaluate_frame(m.data(), sub.data(), sub.size()));
         out.frames.back().orient = group.orient;
       }
       out.receive(tris.corner[m[i].slot], std::uint32_t(base + l), group.orient);
@@ -684,11 +700,12 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
   members.reserve(3 * tris.good);
+  groups.reserve(wv.size() + wv.size() / 8);  // about one per welded vertex
   build_groups(tris, info, groups, members);
   CornerFrames frames;
   frames.frames.reserve(groups.size() + groups.size() / 8);
   frames.of.assign(C, ~0u);
-  group_frames(corner_terms(wv, tris, info), tris, info, groups, members, frames);
+  group_frames(wv, tris, info, groups, members, frames);
   degenerate_frames(mesh, in, wv.size(), tris, frames.of);
   const TSpace none;  // the reference's default frame
 
