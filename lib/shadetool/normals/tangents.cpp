@@ -37,6 +37,8 @@ F3 normalize(F3 v) {
 
 // Triangle flags, as the reference's.
 constexpr std::uint8_t kDegenerate = 1, kQuadOneDegenerate = 2, kGroupWithAny = 4, kOrientPreserving = 8;
+// Corner k of the triangle is in a group (step 6): bit kGrouped << k.
+constexpr std::uint8_t kGrouped = 16, kGroupedAny = 16 | 32 | 64;
 
 // The algorithm's view of the mesh: per corner of the faces it takes, the float inputs.
 // The algorithm's view of the mesh: float copies of the values corners refer to (positions,
@@ -56,13 +58,14 @@ struct Triangles {
   std::vector<std::uint32_t> face;    // the mesh face it came from
   std::vector<std::uint8_t> flag;
   std::size_t good = 0;               // triangles [0, good) are healthy, in order; the rest degenerate
+  // Per corner slot 3 t + k of a healthy triangle: the triangle across its edge k (corner k to
+  // k + 1), -1 where none.
+  std::vector<std::int32_t> neighbour;
 };
 
 struct TriInfo {
   F3 os, ot;  // unit derivatives (or zero)
   float mag_s = 0, mag_t = 0;
-  std::int32_t neighbour[3] = {-1, -1, -1};
-  std::int32_t group[3] = {-1, -1, -1};
 };
 
 using TriInfos = BulkVector<TriInfo>;  // per healthy triangle (unzeroed, huge pages: bulk_reserve.h)
@@ -149,12 +152,25 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
   std::size_t cap = 16;
   while (cap < 2 * V) cap *= 2;
   std::vector<std::uint32_t> table(cap, ~0u);
+  // The table is larger than the caches and its slots random: the slot of the vertex kAhead
+  // places ahead is hashed and prefetched meanwhile.
+  constexpr std::size_t kAhead = 8;
+  auto slot_of = [&](std::size_t v) {
+    const float x[3] = {positions[v].x, positions[v].y, positions[v].z};
+    return hash_floats(x, 3) & (cap - 1);
+  };
+  std::size_t ahead[kAhead];
+  for (std::size_t v = 0; v < kAhead && v < V; ++v) ahead[v] = slot_of(v);
   for (std::size_t v = 0; v < V; ++v) {
     const F3 p = positions[v];
+    const std::size_t first_slot = ahead[v % kAhead];
+    if (v + kAhead < V) {
+      ahead[v % kAhead] = slot_of(v + kAhead);
+      __builtin_prefetch(&table[ahead[v % kAhead]]);
+    }
     first[v] = std::uint32_t(v);
     if (!(p == p)) continue;  // a NaN
-    const float x[3] = {p.x, p.y, p.z};
-    for (std::size_t slot = hash_floats(x, 3) & (cap - 1);; slot = (slot + 1) & (cap - 1)) {
+    for (std::size_t slot = first_slot;; slot = (slot + 1) & (cap - 1)) {
       if (table[slot] == ~0u) { table[slot] = std::uint32_t(v); break; }
       if (positions[table[slot]] == p) { first[v] = table[slot]; break; }
     }
@@ -315,58 +331,46 @@ void triangle_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv,
   }
 }
 
-// Which edge (0: 0-1, 1: 1-2, 2: 2-0) of triangle `idx` joins a and b, and its direction there.
-int edge_of(const std::uint32_t* idx, std::uint32_t a, std::uint32_t b, std::uint32_t& from, std::uint32_t& to) {
-  if (idx[0] == a || idx[0] == b) {
-    if (idx[1] == a || idx[1] == b) { from = idx[0]; to = idx[1]; return 0; }
-    from = idx[2]; to = idx[0];
-    return 2;
-  }
-  from = idx[1]; to = idx[2];
-  return 1;
-}
-
 // Step 5: neighbours across welded edges used in opposite directions; edges in (lower vertex,
 // higher vertex, triangle) order, the first unpaired match wins. The order: a counting sort by the
 // lower vertex (stable: triangles stay ascending), then each vertex's few edges sorted by
-// (higher vertex, triangle).
-void find_neighbours(const Triangles& tris, std::size_t num_welded, TriInfos& info) {
-  struct Edge { std::uint32_t i1, f; };
-  const std::size_t T = tris.good;
+// (higher vertex, corner slot), the slot's order being the triangle's.
+void find_neighbours(Triangles& tris, std::size_t num_welded) {
+  struct Edge { std::uint32_t hi, slot; };  // slot 3 t + k: edge k of triangle t
+  const std::size_t S = 3 * tris.good;
+  const std::uint32_t* index = tris.index.data();
+  auto other_end = [index](std::size_t j) { return index[j % 3 < 2 ? j + 1 : j - 2]; };
   std::vector<std::uint32_t> start(num_welded + 1, 0);
-  for (std::size_t k = 0; k < 3 * T; ++k) {
-    const std::uint32_t a = tris.index[k], b = tris.index[k % 3 < 2 ? k + 1 : k - 2];
-    ++start[std::min(a, b) + 1];
-  }
+  for (std::size_t j = 0; j < S; ++j) ++start[std::min(index[j], other_end(j)) + 1];
   for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
-  std::vector<Edge> edges(3 * T);
+  std::vector<Edge> edges(S);
   {
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t k = 0; k < 3 * T; ++k) {
-      const std::uint32_t a = tris.index[k], b = tris.index[k % 3 < 2 ? k + 1 : k - 2];
-      edges[next[std::min(a, b)]++] = {std::max(a, b), std::uint32_t(k / 3)};
+    for (std::size_t j = 0; j < S; ++j) {
+      const std::uint32_t a = index[j], b = other_end(j);
+      edges[next[std::min(a, b)]++] = {std::max(a, b), std::uint32_t(j)};
     }
   }
-  for (std::size_t v = 0; v < num_welded; ++v)
-    std::sort(edges.begin() + start[v], edges.begin() + start[v + 1],
-              [](const Edge& a, const Edge& b) { return a.i1 != b.i1 ? a.i1 < b.i1 : a.f < b.f; });
+  tris.neighbour.assign(S, -1);
+  std::int32_t* neighbour = tris.neighbour.data();
   for (std::size_t v = 0; v < num_welded; ++v) {
-    const auto i0 = std::uint32_t(v);
-    for (std::size_t i = start[v]; i < start[v + 1]; ++i) {
-      const Edge& e = edges[i];
-      std::uint32_t from_a, to_a;
-      const int edge_a = edge_of(&tris.index[3 * e.f], i0, e.i1, from_a, to_a);
-      if (info[e.f].neighbour[edge_a] != -1) continue;
-      for (std::size_t j = i + 1; j < start[v + 1] && edges[j].i1 == e.i1; ++j) {
-        const std::uint32_t t = edges[j].f;
-        std::uint32_t from_b, to_b;
-        const int edge_b = edge_of(&tris.index[3 * t], i0, e.i1, from_b, to_b);
-        if (from_a == to_b && to_a == from_b && info[t].neighbour[edge_b] == -1) {
-          info[e.f].neighbour[edge_a] = std::int32_t(t);
-          info[t].neighbour[edge_b] = std::int32_t(e.f);
+    Edge* e = edges.data() + start[v];
+    const std::size_t n = start[v + 1] - start[v];
+    for (std::size_t i = 1; i < n; ++i) {  // insertion sort: a vertex has few edges
+      const Edge x = e[i];
+      std::size_t k = i;
+      for (; k > 0 && (e[k - 1].hi > x.hi || (e[k - 1].hi == x.hi && e[k - 1].slot > x.slot)); --k) e[k] = e[k - 1];
+      e[k] = x;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (neighbour[e[i].slot] != -1) continue;
+      const bool from_v = index[e[i].slot] == v;  // its direction: from v, or to v
+      for (std::size_t j = i + 1; j < n && e[j].hi == e[i].hi; ++j)
+        if ((index[e[j].slot] == v) != from_v && neighbour[e[j].slot] == -1) {
+          neighbour[e[i].slot] = std::int32_t(e[j].slot / 3);
+          neighbour[e[j].slot] = std::int32_t(e[i].slot / 3);
           break;
         }
-      }
     }
   }
 }
@@ -377,35 +381,33 @@ int corner_at(const std::uint32_t* idx, std::uint32_t vertex) {
 
 // Step 6: groups of triangles around each welded vertex (the reference's four rules), depth first
 // through neighbours, left (the edge leaving the vertex) before right.
-void build_groups(Triangles& tris, TriInfos& info, std::vector<Group>& groups,
-                  std::vector<std::uint32_t>& members) {
+void build_groups(Triangles& tris, std::vector<Group>& groups, std::vector<std::uint32_t>& members) {
   const std::size_t T = tris.good;
+  const std::int32_t* neighbour = tris.neighbour.data();
   std::vector<std::int32_t> stack;
   for (std::size_t f = 0; f < T; ++f)
     for (int i = 0; i < 3; ++i) {
-      if ((tris.flag[f] & kGroupWithAny) || info[f].group[i] != -1) continue;
-      const auto g = std::int32_t(groups.size());
+      if (tris.flag[f] & (kGroupWithAny | (kGrouped << i))) continue;
       Group group{tris.index[3 * f + i], (tris.flag[f] & kOrientPreserving) != 0, std::uint32_t(members.size()), 0};
       members.push_back(std::uint32_t(3 * f + i));
-      info[f].group[i] = g;
-      stack.assign({info[f].neighbour[i > 0 ? i - 1 : 2], info[f].neighbour[i]});
+      tris.flag[f] |= std::uint8_t(kGrouped << i);
+      stack.assign({neighbour[3 * f + (i > 0 ? i - 1 : 2)], neighbour[3 * f + i]});
       while (!stack.empty()) {
         const std::int32_t t = stack.back();
         stack.pop_back();
         if (t < 0) continue;
-        const int k = corner_at(&tris.index[3 * t], group.representative);
-        TriInfo& ti = info[t];
-        if (ti.group[k] != -1) continue;  // this group's already, or another's
+        const int k = corner_at(&tris.index[3 * std::size_t(t)], group.representative);
         std::uint8_t& flag = tris.flag[t];
+        if (flag & (kGrouped << k)) continue;  // this group's already, or another's
         // The first group to reach a group-with-any triangle sets its orientation (the
         // reference's one order dependency).
-        if ((flag & kGroupWithAny) && ti.group[0] == -1 && ti.group[1] == -1 && ti.group[2] == -1)
+        if ((flag & kGroupWithAny) && !(flag & kGroupedAny))
           flag = std::uint8_t((flag & ~kOrientPreserving) | (group.orient ? kOrientPreserving : 0));
         if (((flag & kOrientPreserving) != 0) != group.orient) continue;
         members.push_back(std::uint32_t(3 * t + k));
-        ti.group[k] = g;
-        stack.push_back(ti.neighbour[k > 0 ? k - 1 : 2]);
-        stack.push_back(ti.neighbour[k]);
+        flag |= std::uint8_t(kGrouped << k);
+        stack.push_back(neighbour[3 * std::size_t(t) + (k > 0 ? k - 1 : 2)]);
+        stack.push_back(neighbour[3 * std::size_t(t) + k]);
       }
       group.count = std::uint32_t(members.size() - group.offset);
       groups.push_back(group);
@@ -696,12 +698,12 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   set_aside_degenerate(mesh, wv, tris);
   TriInfos info(tris.good);
   triangle_derivatives(mesh, wv, tris, info);
-  find_neighbours(tris, wv.size(), info);
+  find_neighbours(tris, wv.size());
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
   members.reserve(3 * tris.good);
   groups.reserve(wv.size() + wv.size() / 8);  // about one per welded vertex
-  build_groups(tris, info, groups, members);
+  build_groups(tris, groups, members);
   CornerFrames frames;
   frames.frames.reserve(groups.size() + groups.size() / 8);
   frames.of.assign(C, ~0u);
