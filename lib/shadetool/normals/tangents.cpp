@@ -566,10 +566,22 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
       m[i] = x;
     }
     // The common case: every pair of members joins (none antiparallel), so every member's
-    // sub-group is the whole group: one frame.
+    // sub-group is the whole group: one frame. Sure without the pairs when the projected
+    // derivatives of the members that do not group with any all lie within 60 degrees (dot > 0.5)
+    // of the first one's: any two of them are then within 120 degrees, their dot below -0.5 never
+    // near the threshold -1 whatever the float rounding; else every pair is tested.
     bool whole = true;
-    for (std::uint32_t i = 0; i < n && whole; ++i)
-      for (std::uint32_t j = i + 1; j < n && whole; ++j) whole = joins(m[i], m[j]);
+    {
+      std::uint32_t a = 0;
+      while (a < n && m[a].any) ++a;
+      for (std::uint32_t j = a + 1; j < n && whole; ++j)
+        whole = m[j].any || (dot(m[a].term->ps, m[j].term->ps) > 0.5f && dot(m[a].term->pt, m[j].term->pt) > 0.5f);
+    }
+    if (!whole) {
+      whole = true;
+      for (std::uint32_t i = 0; i < n && whole; ++i)
+        for (std::uint32_t j = i + 1; j < n && whole; ++j) whole = joins(m[i], m[j]);
+    }
     if (whole) {
       out.frames.push_back(evaluate_frame(m.data(), nullptr, n));
       out.frames.back().orient = group.orient;
