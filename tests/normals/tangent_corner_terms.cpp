@@ -1,7 +1,7 @@
 // The vector pass of MikkTSpace (normals/engine/tangent_corner_terms.h) against the reference's
 // scalar arithmetic written out here from mikktspace.c (EvalTspace: vsub, vscale, vdot,
-// NormalizeSafe, the clamped cosine), bit for bit, on random, tiny, zero and non-finite inputs and
-// every block length.
+// NormalizeSafe, the clamped cosine, (float) acos of it in double, here glibc's), bit for bit, on
+// random, tiny, zero and non-finite inputs and every block length.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -69,7 +69,7 @@ TEST_CASE("MikkTSpace's corner terms: the vector pass gives the scalar arithmeti
       const V3 ps = project_unit(row(3), nn), pt = project_unit(row(6), nn);
       const V3 a = project_unit(row(9), nn), b = project_unit(row(12), nn);
       const float c = std::min(1.0f, std::max(-1.0f, vdot(a, b)));
-      const float expected[7] = {ps.x, ps.y, ps.z, pt.x, pt.y, pt.z, c};
+      const float expected[7] = {ps.x, ps.y, ps.z, pt.x, pt.y, pt.z, float(std::acos(double(c)))};
       for (int r = 0; r < 7; ++r) {
         INFO("round " << round << " lane " << i << " output row " << r);
         CHECK(same_bits(out[r * B + i], expected[r]));
@@ -78,4 +78,42 @@ TEST_CASE("MikkTSpace's corner terms: the vector pass gives the scalar arithmeti
     }
   }
   CHECK(checked > 5000);
+}
+
+// The angle's arc cosine (fdlibm's method, tangent_corner_terms.h) is glibc's acos rounded to float
+// for every float cosine: a cosine near each c of a sweep over [-1, 1] (every 4099th float, the
+// ends, and around +-0.5, where the method changes branch) from edges e1 = x and e2 = (c, s, 0) in
+// the plane of N = z; the expected angle is glibc's acos of the cosine the scalar arithmetic
+// gives for them. (All 2130706434 floats in [-1, 1] were checked once, tangent_corner_terms.h.)
+TEST_CASE("MikkTSpace's corner angle: the pass's arc cosine equals float(acos(double)) across [-1, 1]", "[tangents]") {
+  constexpr std::size_t B = kTangentCornerBlock;
+  std::vector<float> cosines = {1.0f, -1.0f, 0.0f, -0.0f, 0.5f, -0.5f, std::nextafter(0.5f, 0.0f), std::nextafter(-0.5f, 0.0f),
+                                std::nextafter(1.0f, 0.0f), std::nextafter(-1.0f, 0.0f), 1e-30f, -1e-30f};
+  for (std::uint32_t bits = 0; bits <= 0x3f800000u; bits += 4099) {
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    cosines.push_back(f);
+    cosines.push_back(-f);
+  }
+  std::size_t mismatches = 0;
+  std::vector<float> in(15 * B, 0.0f), out(7 * B);
+  for (std::size_t begin = 0; begin < cosines.size(); begin += B) {
+    const std::size_t n = std::min(B, cosines.size() - begin);
+    for (std::size_t i = 0; i < n; ++i) {
+      const float c = cosines[begin + i];
+      const float s = std::sqrt(std::max(0.0f, 1.0f - c * c));
+      const float v[15] = {0, 0, 1, 1, 0, 0, 0, 1, 0, 1, 0, 0, c, s, 0};
+      for (int r = 0; r < 15; ++r) in[r * B + i] = v[r];
+    }
+    tangent_corner_terms(n, in.data(), out.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      auto row = [&](int r) { return V3{in[r * B + i], in[(r + 1) * B + i], in[(r + 2) * B + i]}; };
+      const V3 a = project_unit(row(9), row(0)), b = project_unit(row(12), row(0));
+      const float c = std::min(1.0f, std::max(-1.0f, vdot(a, b)));
+      if (!same_bits(out[6 * B + i], float(std::acos(double(c))))) ++mismatches;
+    }
+  }
+  INFO(cosines.size() << " cosines");
+  CHECK(mismatches == 0);
+  CHECK(cosines.size() > 500000);
 }

@@ -417,7 +417,7 @@ void build_groups(Triangles& tris, std::vector<Group>& groups, std::vector<std::
 // Step 7a: per group member (a corner of a healthy triangle), the terms of its group's frame (the
 // reference's evaluation, in its arithmetic): the triangle's derivatives projected onto the
 // corner's normal (ps, pt) and the corner's angle in the normal's plane, in blocks through the
-// vector pass (engine/tangent_corner_terms.h); the arc cosine is the reference's, acos in double.
+// vector pass (engine/tangent_corner_terms.h; its arc cosine gives the reference's float(acos(double))).
 struct CornerTerm {
   F3 ps, pt;
   float angle;
@@ -447,7 +447,7 @@ void corner_terms(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
       CornerTerm& c = terms[begin + i];
       c.ps = {out[i], out[B + i], out[2 * B + i]};
       c.pt = {out[3 * B + i], out[4 * B + i], out[5 * B + i]};
-      c.angle = float(std::acos(double(out[6 * B + i])));
+      c.angle = out[6 * B + i];
       const TriInfo& ti = info[slots[begin + i] / 3];
       c.mag_s = ti.mag_s;
       c.mag_t = ti.mag_t;

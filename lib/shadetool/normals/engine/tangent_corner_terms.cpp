@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace shadetool::normals_detail {
 
@@ -34,6 +36,38 @@ inline __attribute__((always_inline)) void project_unit(float vx, float vy, floa
   pz = unit ? inv * pz : pz;
 }
 
+// arc_cosine of tangent_corner_terms.h (fdlibm's e_acos.c), every branch computed, then selected.
+inline __attribute__((always_inline)) double arc_cosine(double x) {
+  constexpr double pio2_hi = 1.57079632679489655800e+00, pio2_lo = 6.12323399573676603587e-17;
+  constexpr double pi = 3.14159265358979311600e+00;
+  constexpr double pS0 = 1.66666666666666657415e-01, pS1 = -3.25565818622400915405e-01,
+                   pS2 = 2.01212532134862925881e-01, pS3 = -4.00555345006794114027e-02,
+                   pS4 = 7.91534994289814532176e-04, pS5 = 3.47933107596021167570e-05;
+  constexpr double qS1 = -2.40339491173441421878e+00, qS2 = 2.02094576023350569471e+00,
+                   qS3 = -6.88283971605453293030e-01, qS4 = 7.70381505559019352791e-02;
+  const double ax = std::fabs(x);
+  const bool middle = ax < 0.5;
+  const double z = middle ? x * x : (1.0 - ax) * 0.5;
+  const double p = z * (pS0 + z * (pS1 + z * (pS2 + z * (pS3 + z * (pS4 + z * pS5)))));
+  const double q = 1.0 + z * (qS1 + z * (qS2 + z * (qS3 + z * qS4)));  // in [0.4, 1]: no zero
+  const double r = p / q;
+  const double s = std::sqrt(z);
+  // |x| < 0.5: pi/2 - asin(x).
+  const double a_middle = pio2_hi - (x - (pio2_lo - x * r));
+  // x <= -0.5: pi - 2 asin(sqrt(z)).
+  const double a_negative = pi - 2.0 * (s + (r * s - pio2_lo));
+  // x >= 0.5: 2 asin(sqrt(z)), sqrt(z) = df + c with df its high 32 bits.
+  std::uint64_t bits;
+  std::memcpy(&bits, &s, sizeof bits);
+  bits &= 0xffffffff00000000ull;
+  double df;
+  std::memcpy(&df, &bits, sizeof df);
+  const double sum = s + df;
+  const double c = sum > 0.0 ? (z - df * df) / sum : 0.0;  // x = 1: z = s = 0, c = 0; else divisor > 0
+  const double a_positive = 2.0 * (df + (r * s + c));
+  return middle ? a_middle : x < 0.0 ? a_negative : a_positive;
+}
+
 }  // namespace
 
 SHADETOOL_TANGENT_CLONES
@@ -45,7 +79,8 @@ void tangent_corner_terms(std::size_t n, const float* __restrict in, float* __re
   const float *e1x = in + 9 * B, *e1y = in + 10 * B, *e1z = in + 11 * B;
   const float *e2x = in + 12 * B, *e2y = in + 13 * B, *e2z = in + 14 * B;
   float *psx = out, *psy = out + B, *psz = out + 2 * B, *ptx = out + 3 * B, *pty = out + 4 * B, *ptz = out + 5 * B;
-  float* cosine = out + 6 * B;
+  float cosine[B];
+  float* angle = out + 6 * B;
   for (std::size_t i = 0; i < n; ++i) {
     float sx, sy, sz, tx, ty, tz, ax, ay, az, bx, by, bz;
     project_unit(osx[i], osy[i], osz[i], nx[i], ny[i], nz[i], sx, sy, sz);
@@ -56,6 +91,7 @@ void tangent_corner_terms(std::size_t n, const float* __restrict in, float* __re
     ptx[i] = tx, pty[i] = ty, ptz[i] = tz;
     cosine[i] = std::min(1.0f, std::max(-1.0f, ax * bx + ay * by + az * bz));
   }
+  for (std::size_t i = 0; i < n; ++i) angle[i] = float(arc_cosine(double(cosine[i])));
 }
 
 }  // namespace shadetool::normals_detail
