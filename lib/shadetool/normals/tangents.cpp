@@ -126,8 +126,9 @@ struct WeldedVertex {
   F3 p, n;
   float u = 0, v = 0;
 };
-bool same_values(const WeldedVertex& a, const WeldedVertex& b) {
-  return a.p == b.p && a.n == b.n && a.u == b.u && a.v == b.v;  // float ==: -0 == +0, NaN never
+bool same_values(const WeldedVertex& a, const WeldedVertex& b) {  // float ==: -0 == +0, NaN never
+  return (a.p.x == b.p.x) & (a.p.y == b.p.y) & (a.p.z == b.p.z) & (a.n.x == b.n.x) & (a.n.y == b.n.y) &
+         (a.n.z == b.n.z) & (a.u == b.u) & (a.v == b.v);  // no short cut: one branch, not eight
 }
 bool has_nan(const WeldedVertex& a) { return !same_values(a, a); }
 std::uint32_t float_bits(float x) {
@@ -213,11 +214,12 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
     return in_table;
   };
   std::size_t in_table = 0;
+  const F3 *positions = in.positions.data(), *normals = in.normals.data(), *texcoords = in.texcoords.data();
   for (std::size_t f = 0; f < F; ++f) {
     if (!taken[f]) continue;
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      const F3 t = in.texcoord_of(c);
-      const WeldedVertex x{in.position(c), in.normal_of(c), t.x, t.y};
+      const F3 t = texcoords[in.texcoord[c]];
+      const WeldedVertex x{positions[in.vertex[c]], normals[in.normal[c]], t.x, t.y};
       const std::uint32_t b = first[in.vertex[c]];
       std::uint32_t k = kNone;
       if (count[b] <= kLinear) {
