@@ -3,7 +3,6 @@
 #include <shadetool/normals/tangents.h>
 
 #include <algorithm>
-#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -40,7 +39,6 @@ constexpr std::uint8_t kDegenerate = 1, kQuadOneDegenerate = 2, kGroupWithAny = 
 // Corner k of the triangle is in a group (step 6): bit kGrouped << k.
 constexpr std::uint8_t kGrouped = 16, kGroupedAny = 16 | 32 | 64;
 
-// The algorithm's view of the mesh: per corner of the faces it takes, the float inputs.
 // The algorithm's view of the mesh: float copies of the values corners refer to (positions,
 // normals, texture coordinates: each converted once), and per corner the index of each.
 struct Corners {
@@ -54,7 +52,7 @@ struct Corners {
 
 struct Triangles {
   std::vector<std::uint32_t> corner;  // 3 per triangle: the global corner (the output slot)
-  std::vector<std::uint32_t> index;   // 3 per triangle: the welded vertex (a representative corner)
+  std::vector<std::uint32_t> index;   // 3 per triangle: the welded vertex (step 2's dense number)
   std::vector<std::uint32_t> face;    // the mesh face it came from
   std::vector<std::uint8_t> flag;
   std::size_t good = 0;               // triangles [0, good) are healthy, in order; the rest degenerate
@@ -71,7 +69,7 @@ struct TriInfo {
 using TriInfos = BulkVector<TriInfo>;  // per healthy triangle (unzeroed, huge pages: bulk_reserve.h)
 
 struct Group {
-  std::uint32_t representative;
+  std::uint32_t representative;  // the welded vertex
   bool orient;
   std::uint32_t offset, count;  // its corners: members[offset, offset + count), slots 3 t + k (corner k of triangle t)
 };
@@ -82,14 +80,18 @@ struct TSpace {
   bool orient = false;
 };
 
-// Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners).
-void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken, Triangles& tris) {
+// Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners), with
+// their corners' welded vertices (`welded`: step 2's, per corner).
+void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
+                    const std::uint32_t* welded, Triangles& tris) {
   std::size_t count = 0;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) count += taken[f] ? mesh.face_size(f) - 2 : 0;
   tris.corner.reserve(3 * count);
+  tris.index.reserve(3 * count);
   tris.face.reserve(count);
   auto add = [&](std::uint32_t f, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    tris.corner.insert(tris.corner.end(), {a, b, c});
+    tris.corner.push_back(a), tris.corner.push_back(b), tris.corner.push_back(c);
+    tris.index.push_back(welded[a]), tris.index.push_back(welded[b]), tris.index.push_back(welded[c]);
     tris.face.push_back(f);
   };
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
@@ -249,10 +251,13 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
 // the healthy ones, which keep their order.
 void set_aside_degenerate(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris) {
   const std::size_t T = tris.face.size();
+  std::size_t degenerate = 0;
   for (std::size_t t = 0; t < T; ++t) {
     const F3 p0 = wv[tris.index[3 * t]].p, p1 = wv[tris.index[3 * t + 1]].p, p2 = wv[tris.index[3 * t + 2]].p;
-    if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate;
+    if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate, ++degenerate;
   }
+  tris.good = T - degenerate;
+  if (degenerate == 0) return;  // nothing to mark or move
   for (std::size_t t = 0; t + 1 < T;) {
     if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kDegenerate) != 0) {
@@ -268,8 +273,6 @@ void set_aside_degenerate(const Mesh& mesh, const std::vector<WeldedVertex>& wv,
   order.reserve(T);
   for (std::size_t t = 0; t < T; ++t)
     if (!(tris.flag[t] & kDegenerate)) order.push_back(t);
-  tris.good = order.size();
-  if (tris.good == T) return;  // nothing to move
   for (std::size_t t = 0; t < T; ++t)
     if (tris.flag[t] & kDegenerate) order.push_back(t);
   Triangles sorted;
@@ -386,17 +389,25 @@ int corner_at(const std::uint32_t* idx, std::uint32_t vertex) {
 void build_groups(Triangles& tris, std::vector<Group>& groups, std::vector<std::uint32_t>& members) {
   const std::size_t T = tris.good;
   const std::int32_t* neighbour = tris.neighbour.data();
-  std::vector<std::int32_t> stack;
+  members.resize(3 * T);  // a corner is in one group at most
+  std::size_t count = 0;
+  std::vector<std::int32_t> stack(64);
+  std::size_t top = 0;
+  auto push = [&](std::int32_t t) {
+    if (top == stack.size()) stack.resize(2 * top);
+    stack[top++] = t;
+  };
   for (std::size_t f = 0; f < T; ++f)
     for (int i = 0; i < 3; ++i) {
       if (tris.flag[f] & (kGroupWithAny | (kGrouped << i))) continue;
-      Group group{tris.index[3 * f + i], (tris.flag[f] & kOrientPreserving) != 0, std::uint32_t(members.size()), 0};
-      members.push_back(std::uint32_t(3 * f + i));
+      Group group{tris.index[3 * f + i], (tris.flag[f] & kOrientPreserving) != 0, std::uint32_t(count), 0};
+      members[count++] = std::uint32_t(3 * f + i);
       tris.flag[f] |= std::uint8_t(kGrouped << i);
-      stack.assign({neighbour[3 * f + (i > 0 ? i - 1 : 2)], neighbour[3 * f + i]});
-      while (!stack.empty()) {
-        const std::int32_t t = stack.back();
-        stack.pop_back();
+      top = 0;
+      push(neighbour[3 * f + (i > 0 ? i - 1 : 2)]);
+      push(neighbour[3 * f + i]);
+      while (top > 0) {
+        const std::int32_t t = stack[--top];
         if (t < 0) continue;
         const int k = corner_at(&tris.index[3 * std::size_t(t)], group.representative);
         std::uint8_t& flag = tris.flag[t];
@@ -406,14 +417,15 @@ void build_groups(Triangles& tris, std::vector<Group>& groups, std::vector<std::
         if ((flag & kGroupWithAny) && !(flag & kGroupedAny))
           flag = std::uint8_t((flag & ~kOrientPreserving) | (group.orient ? kOrientPreserving : 0));
         if (((flag & kOrientPreserving) != 0) != group.orient) continue;
-        members.push_back(std::uint32_t(3 * t + k));
+        members[count++] = std::uint32_t(3 * t + k);
         flag |= std::uint8_t(kGrouped << k);
-        stack.push_back(neighbour[3 * std::size_t(t) + (k > 0 ? k - 1 : 2)]);
-        stack.push_back(neighbour[3 * std::size_t(t) + k]);
+        push(neighbour[3 * std::size_t(t) + (k > 0 ? k - 1 : 2)]);
+        push(neighbour[3 * std::size_t(t) + k]);
       }
-      group.count = std::uint32_t(members.size() - group.offset);
+      group.count = std::uint32_t(count - group.offset);
       groups.push_back(group);
     }
+  members.resize(count);
 }
 
 // Step 7a: per group member (a corner of a healthy triangle), the terms of its group's frame (the
@@ -622,6 +634,7 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
 void degenerate_frames(const Mesh& mesh, const Corners& in, std::size_t num_welded, const Triangles& tris,
                        std::vector<std::uint32_t>& out) {
   const std::size_t T = tris.face.size(), good = tris.good;
+  if (good == T) return;  // no degenerate triangle (nor, then, a quad with one)
   std::vector<std::uint32_t> first(num_welded, ~0u);  // welded vertex -> first healthy corner slot
   for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
   for (std::size_t t = good; t < T; ++t) {
@@ -703,19 +716,16 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
       ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
     taken[f] = ok;
   }
-  Triangles tris;
-  make_triangles(mesh, in, taken, tris);
   const Welded welded = weld(mesh, in, taken);
   const std::vector<WeldedVertex>& wv = welded.vertex;
-  tris.index.resize(tris.corner.size());
-  for (std::size_t k = 0; k < tris.corner.size(); ++k) tris.index[k] = welded.id[tris.corner[k]];
+  Triangles tris;
+  make_triangles(mesh, in, taken, welded.id.data(), tris);
   set_aside_degenerate(mesh, wv, tris);
   TriInfos info(tris.good);
   triangle_derivatives(mesh, wv, tris, info);
   find_neighbours(tris, wv.size());
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
-  members.reserve(3 * tris.good);
   groups.reserve(wv.size() + wv.size() / 8);  // about one per welded vertex
   build_groups(tris, groups, members);
   CornerFrames frames;
