@@ -348,7 +348,7 @@ void find_neighbours(Triangles& tris, std::size_t num_welded) {
   std::vector<std::uint32_t> start(num_welded + 1, 0);
   for (std::size_t j = 0; j < S; ++j) ++start[std::min(index[j], other_end(j)) + 1];
   for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
-  std::vector<Edge> edges(S);
+  BulkVector<Edge> edges(S);  // filled in full below: not zeroed first
   {
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
     for (std::size_t j = 0; j < S; ++j) {
