@@ -361,11 +361,16 @@ void find_neighbours(Triangles& tris, std::size_t num_welded) {
   for (std::size_t v = 0; v < num_welded; ++v) {
     Edge* e = edges.data() + start[v];
     const std::size_t n = start[v + 1] - start[v];
-    for (std::size_t i = 1; i < n; ++i) {  // insertion sort: a vertex has few edges
-      const Edge x = e[i];
-      std::size_t k = i;
-      for (; k > 0 && (e[k - 1].hi > x.hi || (e[k - 1].hi == x.hi && e[k - 1].slot > x.slot)); --k) e[k] = e[k - 1];
-      e[k] = x;
+    auto before = [](const Edge& a, const Edge& b) { return a.hi != b.hi ? a.hi < b.hi : a.slot < b.slot; };
+    if (n > 16) {
+      std::sort(e, e + n, before);
+    } else {
+      for (std::size_t i = 1; i < n; ++i) {  // insertion sort: most vertices have few edges
+        const Edge x = e[i];
+        std::size_t k = i;
+        for (; k > 0 && before(x, e[k - 1]); --k) e[k] = e[k - 1];
+        e[k] = x;
+      }
     }
     for (std::size_t i = 0; i < n; ++i) {
       if (neighbour[e[i].slot] != -1) continue;
@@ -574,10 +579,18 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
     m.resize(n);
     for (std::uint32_t j = 0; j < n; ++j) {
       const std::uint32_t slot = members[group.offset + j], t = slot / 3;
-      Member x{slot, tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
-      std::uint32_t i = j;  // insertion sort by slot
-      for (; i > 0 && m[i - 1].slot > slot; --i) m[i] = m[i - 1];
-      m[i] = x;
+      m[j] = {slot, tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
+    }
+    auto by_slot = [](const Member& a, const Member& b) { return a.slot < b.slot; };
+    if (n > 16) {
+      std::sort(m.begin(), m.end(), by_slot);
+    } else {
+      for (std::uint32_t j = 1; j < n; ++j) {  // insertion sort: most groups are small
+        const Member x = m[j];
+        std::uint32_t i = j;
+        for (; i > 0 && by_slot(x, m[i - 1]); --i) m[i] = m[i - 1];
+        m[i] = x;
+      }
     }
     // The common case: every pair of members joins (none antiparallel), so every member's
     // sub-group is the whole group: one frame. Sure without the pairs when the projected
