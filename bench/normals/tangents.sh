@@ -22,4 +22,6 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
   else
     echo "skipped: npm mikktspace (no node, npm or registry)"
   fi
+  echo
+  echo "where the time goes, step by step: tangents_steps.md"
 } | tee "$out"

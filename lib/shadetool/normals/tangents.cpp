@@ -8,7 +8,9 @@
 #include <cstdint>
 #include <cstring>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
+#include <shadetool/normals/engine/tangent_corner_terms.h>
 
 namespace shadetool {
 namespace {
@@ -31,17 +33,12 @@ F3 normalize(F3 v) {
   const float len = length(v);
   return len > 0.0f ? scale(1.0f / len, v) : v;  // divisor checked
 }
-// v minus its component along the unit normal n, made unit when not zero.
-F3 project_unit(F3 v, F3 n) {
-  F3 p = v - scale(dot(n, v), n);
-  if (not_zero(p)) p = normalize(p);
-  return p;
-}
 
 // Triangle flags, as the reference's.
 constexpr std::uint8_t kDegenerate = 1, kQuadOneDegenerate = 2, kGroupWithAny = 4, kOrientPreserving = 8;
+// Corner k of the triangle is in a group (step 6): bit kGrouped << k.
+constexpr std::uint8_t kGrouped = 16, kGroupedAny = 16 | 32 | 64;
 
-// The algorithm's view of the mesh: per corner of the faces it takes, the float inputs.
 // The algorithm's view of the mesh: float copies of the values corners refer to (positions,
 // normals, texture coordinates: each converted once), and per corner the index of each.
 struct Corners {
@@ -55,23 +52,26 @@ struct Corners {
 
 struct Triangles {
   std::vector<std::uint32_t> corner;  // 3 per triangle: the global corner (the output slot)
-  std::vector<std::uint32_t> index;   // 3 per triangle: the welded vertex (a representative corner)
+  std::vector<std::uint32_t> index;   // 3 per triangle: the welded vertex (step 2's dense number)
   std::vector<std::uint32_t> face;    // the mesh face it came from
   std::vector<std::uint8_t> flag;
   std::size_t good = 0;               // triangles [0, good) are healthy, in order; the rest degenerate
+  // Per corner slot 3 t + k of a healthy triangle: the triangle across its edge k (corner k to
+  // k + 1), -1 where none.
+  std::vector<std::int32_t> neighbour;
 };
 
 struct TriInfo {
   F3 os, ot;  // unit derivatives (or zero)
   float mag_s = 0, mag_t = 0;
-  std::int32_t neighbour[3] = {-1, -1, -1};
-  std::int32_t group[3] = {-1, -1, -1};
 };
 
+using TriInfos = BulkVector<TriInfo>;  // per healthy triangle (unzeroed, huge pages: bulk_reserve.h)
+
 struct Group {
-  std::uint32_t representative;
+  std::uint32_t representative;  // the welded vertex
   bool orient;
-  std::uint32_t offset, count;  // its triangles: group_triangles[offset, offset + count)
+  std::uint32_t offset, count;  // its corners: members[offset, offset + count), slots 3 t + k (corner k of triangle t)
 };
 
 struct TSpace {
@@ -80,10 +80,18 @@ struct TSpace {
   bool orient = false;
 };
 
-// Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners).
-void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken, Triangles& tris) {
+// Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners), with
+// their corners' welded vertices (`welded`: step 2's, per corner).
+void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
+                    const std::uint32_t* welded, Triangles& tris) {
+  std::size_t count = 0;
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) count += taken[f] ? mesh.face_size(f) - 2 : 0;
+  tris.corner.reserve(3 * count);
+  tris.index.reserve(3 * count);
+  tris.face.reserve(count);
   auto add = [&](std::uint32_t f, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    tris.corner.insert(tris.corner.end(), {a, b, c});
+    tris.corner.push_back(a), tris.corner.push_back(b), tris.corner.push_back(c);
+    tris.index.push_back(welded[a]), tris.index.push_back(welded[b]), tris.index.push_back(welded[c]);
     tris.face.push_back(f);
   };
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
@@ -109,69 +117,147 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
   tris.flag.assign(tris.face.size(), 0);
 }
 
-// Step 2: welded vertex of every corner: the first corner with the same (position, normal,
-// texture coordinate) as float ==. An open-addressing table keyed by the values (-0 as +0);
-// a corner with a NaN equals nothing. The corners go in in order; the slot of the corner 8 places
-// ahead is hashed and prefetched meanwhile (the table is larger than the caches and its slots
-// random: the wait for memory is the cost).
-[[gnu::always_inline]] inline void weld_key(const Corners& in, std::uint32_t c, float* k) {
-  const F3 p = in.position(c), n = in.normal_of(c), t = in.texcoord_of(c);
-  const float v[8] = {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y};
-  for (int i = 0; i < 8; ++i) k[i] = v[i] + 0.0f;  // -0 + 0 = +0; NaN stays NaN
+// Step 2: welded vertex of every corner taken: corners with the same (position, normal, texture
+// coordinate) as float == are one vertex (-0 equals +0; a value with a NaN equals nothing),
+// numbered densely in the order of their first corners. From the mesh's own indices: each position
+// value gets a canonical vertex (the first vertex with that value, by an open-addressing table over
+// the vertices, not the corners); the corners, in order, look for their values among the welded
+// vertices already found at their canonical vertex (a short list; one with more than kLinear
+// welded vertices moves them to a table keyed by all eight values).
+struct WeldedVertex {
+  F3 p, n;
+  float u = 0, v = 0;
+};
+bool same_values(const WeldedVertex& a, const WeldedVertex& b) {  // float ==: -0 == +0, NaN never
+  return (a.p.x == b.p.x) & (a.p.y == b.p.y) & (a.p.z == b.p.z) & (a.n.x == b.n.x) & (a.n.y == b.n.y) &
+         (a.n.z == b.n.z) & (a.u == b.u) & (a.v == b.v);  // no short cut: one branch, not eight
+}
+bool has_nan(const WeldedVertex& a) { return !same_values(a, a); }
+std::uint32_t float_bits(float x) {
+  x += 0.0f;  // -0 + 0 = +0
+  std::uint32_t b;
+  std::memcpy(&b, &x, 4);
+  return b;
+}
+std::uint64_t hash_floats(const float* x, int n) {
+  std::uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (int i = 0; i < n; ++i) {
+    h = (h ^ float_bits(x[i])) * 0xff51afd7ed558ccdull;
+    h ^= h >> 32;
+  }
+  return h;
 }
 
-std::vector<std::uint32_t> weld(const Corners& in, const std::vector<std::uint32_t>& corners) {
-  const std::size_t C = in.num_corners, N = corners.size();
-  std::vector<std::uint32_t> rep(C, 0);
+// The first vertex with each vertex's position (itself when the position has a NaN).
+std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions) {
+  const std::size_t V = positions.size();
+  std::vector<std::uint32_t> first(V);
   std::size_t cap = 16;
-  while (cap < 2 * N) cap *= 2;
+  while (cap < 2 * V) cap *= 2;
   std::vector<std::uint32_t> table(cap, ~0u);
-  constexpr std::uint64_t kNaN = ~0ull;  // a key with a NaN: not hashed (a slot is below cap)
-  auto slot_of = [&](std::uint32_t c) {
-    float k[8];
-    weld_key(in, c, k);
-    bool nan = false;
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (float x : k) {
-      nan = nan || x != x;
-      std::uint32_t bits;
-      std::memcpy(&bits, &x, 4);
-      h = (h ^ bits) * 0xff51afd7ed558ccdull;
-      h ^= h >> 32;
-    }
-    return nan ? kNaN : (h & (cap - 1));
+  // The table is larger than the caches and its slots random: the slot of the vertex kAhead
+  // places ahead is hashed and prefetched meanwhile.
+  constexpr std::size_t kAhead = 8;
+  auto slot_of = [&](std::size_t v) {
+    const float x[3] = {positions[v].x, positions[v].y, positions[v].z};
+    return hash_floats(x, 3) & (cap - 1);
   };
-  constexpr std::size_t kAhead = 8;  // the slots of the next kAhead corners, in a ring
-  std::uint64_t ahead[kAhead];
-  for (std::size_t i = 0; i < kAhead && i < N; ++i) ahead[i] = slot_of(corners[i]);
-  for (std::size_t i = 0; i < N; ++i) {
-    const std::uint64_t first_slot = ahead[i % kAhead];
-    if (i + kAhead < N) {
-      ahead[i % kAhead] = slot_of(corners[i + kAhead]);
-      if (ahead[i % kAhead] != kNaN) __builtin_prefetch(&table[ahead[i % kAhead]]);
+  std::size_t ahead[kAhead];
+  for (std::size_t v = 0; v < kAhead && v < V; ++v) ahead[v] = slot_of(v);
+  for (std::size_t v = 0; v < V; ++v) {
+    const F3 p = positions[v];
+    const std::size_t first_slot = ahead[v % kAhead];
+    if (v + kAhead < V) {
+      ahead[v % kAhead] = slot_of(v + kAhead);
+      __builtin_prefetch(&table[ahead[v % kAhead]]);
     }
-    const std::uint32_t c = corners[i];
-    if (first_slot == kNaN) { rep[c] = c; continue; }
-    float k[8];
-    weld_key(in, c, k);
+    first[v] = std::uint32_t(v);
+    if (!(p == p)) continue;  // a NaN
     for (std::size_t slot = first_slot;; slot = (slot + 1) & (cap - 1)) {
-      if (table[slot] == ~0u) { table[slot] = c; rep[c] = c; break; }
-      float o[8];
-      weld_key(in, table[slot], o);
-      if (std::memcmp(o, k, sizeof k) == 0) { rep[c] = table[slot]; break; }
+      if (table[slot] == ~0u) { table[slot] = std::uint32_t(v); break; }
+      if (positions[table[slot]] == p) { first[v] = table[slot]; break; }
     }
   }
-  return rep;
+  return first;
+}
+
+struct Welded {
+  BulkVector<std::uint32_t> id;      // #C: the welded vertex of each corner taken
+  std::vector<WeldedVertex> vertex;  // #U: its values
+};
+
+Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken) {
+  const std::size_t V = in.positions.size(), F = mesh.num_faces();
+  const std::vector<std::uint32_t> first = canonical_positions(in.positions);
+  Welded w;
+  w.id.resize(in.num_corners);
+  w.vertex.reserve(V + V / 4);
+  constexpr std::uint32_t kLinear = 16, kNone = ~0u;
+  std::vector<std::uint32_t> head(V, kNone);   // canonical vertex -> its latest welded vertex
+  std::vector<std::uint32_t> count(V, 0);      // how many welded vertices it has
+  std::vector<std::uint32_t> next;             // welded vertex -> the previous one at its position
+  next.reserve(V + V / 4);
+  // The table for positions with more than kLinear welded vertices: (all values) -> welded vertex.
+  std::vector<std::uint32_t> table;
+  auto table_slot = [&](const WeldedVertex& x) {
+    const float k[8] = {x.p.x, x.p.y, x.p.z, x.n.x, x.n.y, x.n.z, x.u, x.v};
+    std::size_t slot = hash_floats(k, 8) & (table.size() - 1);
+    while (table[slot] != kNone && !same_values(w.vertex[table[slot]], x)) slot = (slot + 1) & (table.size() - 1);
+    return slot;
+  };
+  auto grow_table = [&](std::size_t at_least) {
+    std::size_t cap = 1024;
+    while (cap < 2 * at_least) cap *= 2;
+    table.assign(cap, kNone);
+    std::size_t in_table = 0;
+    for (std::size_t b = 0; b < V; ++b)
+      if (count[b] > kLinear)
+        for (std::uint32_t k = head[b]; k != kNone; k = next[k]) table[table_slot(w.vertex[k])] = k, ++in_table;
+    return in_table;
+  };
+  std::size_t in_table = 0;
+  const F3 *positions = in.positions.data(), *normals = in.normals.data(), *texcoords = in.texcoords.data();
+  for (std::size_t f = 0; f < F; ++f) {
+    if (!taken[f]) continue;
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      const F3 t = texcoords[in.texcoord[c]];
+      const WeldedVertex x{positions[in.vertex[c]], normals[in.normal[c]], t.x, t.y};
+      const std::uint32_t b = first[in.vertex[c]];
+      std::uint32_t k = kNone;
+      if (count[b] <= kLinear) {
+        k = head[b];
+        while (k != kNone && !same_values(w.vertex[k], x)) k = next[k];
+      } else if (!has_nan(x)) {
+        k = table[table_slot(x)];
+      }
+      if (k == kNone) {  // a new welded vertex
+        k = std::uint32_t(w.vertex.size());
+        w.vertex.push_back(x);
+        next.push_back(head[b]);
+        head[b] = k;
+        if (++count[b] == kLinear + 1) in_table = grow_table(in_table + kLinear + 1);  // this position's move in
+        else if (count[b] > kLinear && !has_nan(x)) {
+          if (2 * (++in_table) > table.size()) in_table = grow_table(in_table);
+          else table[table_slot(x)] = k;
+        }
+      }
+      w.id[c] = k;
+    }
+  }
+  return w;
 }
 
 // Step 3: degenerate triangles marked (a quad with exactly one of them marked too) and moved after
 // the healthy ones, which keep their order.
-void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) {
+void set_aside_degenerate(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris) {
   const std::size_t T = tris.face.size();
+  std::size_t degenerate = 0;
   for (std::size_t t = 0; t < T; ++t) {
-    const F3 p0 = in.position(tris.index[3 * t]), p1 = in.position(tris.index[3 * t + 1]), p2 = in.position(tris.index[3 * t + 2]);
-    if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate;
+    const F3 p0 = wv[tris.index[3 * t]].p, p1 = wv[tris.index[3 * t + 1]].p, p2 = wv[tris.index[3 * t + 2]].p;
+    if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate, ++degenerate;
   }
+  tris.good = T - degenerate;
+  if (degenerate == 0) return;  // nothing to mark or move
   for (std::size_t t = 0; t + 1 < T;) {
     if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kDegenerate) != 0) {
@@ -187,8 +273,6 @@ void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) 
   order.reserve(T);
   for (std::size_t t = 0; t < T; ++t)
     if (!(tris.flag[t] & kDegenerate)) order.push_back(t);
-  tris.good = order.size();
-  if (tris.good == T) return;  // nothing to move
   for (std::size_t t = 0; t < T; ++t)
     if (tris.flag[t] & kDegenerate) order.push_back(t);
   Triangles sorted;
@@ -204,22 +288,22 @@ void set_aside_degenerate(const Mesh& mesh, const Corners& in, Triangles& tris) 
   tris = std::move(sorted);
 }
 
-float texture_area(const Corners& in, const std::uint32_t* idx) {
-  const F3 t1 = in.texcoord_of(idx[0]), t2 = in.texcoord_of(idx[1]), t3 = in.texcoord_of(idx[2]);
-  const float a = (t2.x - t1.x) * (t3.y - t1.y) - (t2.y - t1.y) * (t3.x - t1.x);
+float texture_area(const std::vector<WeldedVertex>& wv, const std::uint32_t* idx) {
+  const WeldedVertex &t1 = wv[idx[0]], &t2 = wv[idx[1]], &t3 = wv[idx[2]];
+  const float a = (t2.u - t1.u) * (t3.v - t1.v) - (t2.v - t1.v) * (t3.u - t1.u);
   return a < 0 ? -a : a;
 }
 
 // Step 4: derivatives, magnitudes and orientation of each healthy triangle (eq. 18, 19).
-void triangle_derivatives(const Mesh& mesh, const Corners& in, Triangles& tris, std::vector<TriInfo>& info) {
+void triangle_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, TriInfos& info) {
   const std::size_t T = tris.good;
   for (std::size_t f = 0; f < T; ++f) {
     std::uint8_t& flag = tris.flag[f];
     flag |= kGroupWithAny;  // assumed bad
     const std::uint32_t* idx = &tris.index[3 * f];
-    const F3 v1 = in.position(idx[0]), v2 = in.position(idx[1]), v3 = in.position(idx[2]);
-    const F3 t1 = in.texcoord_of(idx[0]), t2 = in.texcoord_of(idx[1]), t3 = in.texcoord_of(idx[2]);
-    const float t21x = t2.x - t1.x, t21y = t2.y - t1.y, t31x = t3.x - t1.x, t31y = t3.y - t1.y;
+    const WeldedVertex &w1 = wv[idx[0]], &w2 = wv[idx[1]], &w3 = wv[idx[2]];
+    const F3 v1 = w1.p, v2 = w2.p, v3 = w3.p;
+    const float t21x = w2.u - w1.u, t21y = w2.v - w1.v, t31x = w3.u - w1.u, t31y = w3.v - w1.v;
     const F3 d1 = v2 - v1, d2 = v3 - v1;
     const float signed_area2 = t21x * t31y - t21y * t31x;
     const F3 os = scale(t31y, d1) - scale(t21y, d2);   // eq. 18
@@ -241,7 +325,7 @@ void triangle_derivatives(const Mesh& mesh, const Corners& in, Triangles& tris, 
     if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kOrientPreserving) != 0) {
         const bool first = (tris.flag[t + 1] & kGroupWithAny) != 0 ||
-                           texture_area(in, &tris.index[3 * t]) >= texture_area(in, &tris.index[3 * (t + 1)]);
+                           texture_area(wv, &tris.index[3 * t]) >= texture_area(wv, &tris.index[3 * (t + 1)]);
         const std::size_t t0 = first ? t : t + 1, t1 = first ? t + 1 : t;
         tris.flag[t1] = std::uint8_t((tris.flag[t1] & ~kOrientPreserving) | (tris.flag[t0] & kOrientPreserving));
       }
@@ -252,58 +336,51 @@ void triangle_derivatives(const Mesh& mesh, const Corners& in, Triangles& tris, 
   }
 }
 
-// Which edge (0: 0-1, 1: 1-2, 2: 2-0) of triangle `idx` joins a and b, and its direction there.
-int edge_of(const std::uint32_t* idx, std::uint32_t a, std::uint32_t b, std::uint32_t& from, std::uint32_t& to) {
-  if (idx[0] == a || idx[0] == b) {
-    if (idx[1] == a || idx[1] == b) { from = idx[0]; to = idx[1]; return 0; }
-    from = idx[2]; to = idx[0];
-    return 2;
-  }
-  from = idx[1]; to = idx[2];
-  return 1;
-}
-
 // Step 5: neighbours across welded edges used in opposite directions; edges in (lower vertex,
 // higher vertex, triangle) order, the first unpaired match wins. The order: a counting sort by the
 // lower vertex (stable: triangles stay ascending), then each vertex's few edges sorted by
-// (higher vertex, triangle).
-void find_neighbours(const Triangles& tris, std::size_t num_welded, std::vector<TriInfo>& info) {
-  struct Edge { std::uint32_t i1, f; };
-  const std::size_t T = tris.good;
+// (higher vertex, corner slot), the slot's order being the triangle's.
+void find_neighbours(Triangles& tris, std::size_t num_welded) {
+  struct Edge { std::uint32_t hi, slot; };  // slot 3 t + k: edge k of triangle t
+  const std::size_t S = 3 * tris.good;
+  const std::uint32_t* index = tris.index.data();
+  auto other_end = [index](std::size_t j) { return index[j % 3 < 2 ? j + 1 : j - 2]; };
   std::vector<std::uint32_t> start(num_welded + 1, 0);
-  for (std::size_t k = 0; k < 3 * T; ++k) {
-    const std::uint32_t a = tris.index[k], b = tris.index[k % 3 < 2 ? k + 1 : k - 2];
-    ++start[std::min(a, b) + 1];
-  }
+  for (std::size_t j = 0; j < S; ++j) ++start[std::min(index[j], other_end(j)) + 1];
   for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
-  std::vector<Edge> edges(3 * T);
+  BulkVector<Edge> edges(S);  // filled in full below: not zeroed first
   {
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t k = 0; k < 3 * T; ++k) {
-      const std::uint32_t a = tris.index[k], b = tris.index[k % 3 < 2 ? k + 1 : k - 2];
-      edges[next[std::min(a, b)]++] = {std::max(a, b), std::uint32_t(k / 3)};
+    for (std::size_t j = 0; j < S; ++j) {
+      const std::uint32_t a = index[j], b = other_end(j);
+      edges[next[std::min(a, b)]++] = {std::max(a, b), std::uint32_t(j)};
     }
   }
-  for (std::size_t v = 0; v < num_welded; ++v)
-    std::sort(edges.begin() + start[v], edges.begin() + start[v + 1],
-              [](const Edge& a, const Edge& b) { return a.i1 != b.i1 ? a.i1 < b.i1 : a.f < b.f; });
+  tris.neighbour.assign(S, -1);
+  std::int32_t* neighbour = tris.neighbour.data();
   for (std::size_t v = 0; v < num_welded; ++v) {
-    const auto i0 = std::uint32_t(v);
-    for (std::size_t i = start[v]; i < start[v + 1]; ++i) {
-      const Edge& e = edges[i];
-      std::uint32_t from_a, to_a;
-      const int edge_a = edge_of(&tris.index[3 * e.f], i0, e.i1, from_a, to_a);
-      if (info[e.f].neighbour[edge_a] != -1) continue;
-      for (std::size_t j = i + 1; j < start[v + 1] && edges[j].i1 == e.i1; ++j) {
-        const std::uint32_t t = edges[j].f;
-        std::uint32_t from_b, to_b;
-        const int edge_b = edge_of(&tris.index[3 * t], i0, e.i1, from_b, to_b);
-        if (from_a == to_b && to_a == from_b && info[t].neighbour[edge_b] == -1) {
-          info[e.f].neighbour[edge_a] = std::int32_t(t);
-          info[t].neighbour[edge_b] = std::int32_t(e.f);
+    Edge* e = edges.data() + start[v];
+    const std::size_t n = start[v + 1] - start[v];
+    auto before = [](const Edge& a, const Edge& b) { return a.hi != b.hi ? a.hi < b.hi : a.slot < b.slot; };
+    if (n > 16) {
+      std::sort(e, e + n, before);
+    } else {
+      for (std::size_t i = 1; i < n; ++i) {  // insertion sort: most vertices have few edges
+        const Edge x = e[i];
+        std::size_t k = i;
+        for (; k > 0 && before(x, e[k - 1]); --k) e[k] = e[k - 1];
+        e[k] = x;
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (neighbour[e[i].slot] != -1) continue;
+      const bool from_v = index[e[i].slot] == v;  // its direction: from v, or to v
+      for (std::size_t j = i + 1; j < n && e[j].hi == e[i].hi; ++j)
+        if ((index[e[j].slot] == v) != from_v && neighbour[e[j].slot] == -1) {
+          neighbour[e[i].slot] = std::int32_t(e[j].slot / 3);
+          neighbour[e[j].slot] = std::int32_t(e[i].slot / 3);
           break;
         }
-      }
     }
   }
 }
@@ -314,67 +391,114 @@ int corner_at(const std::uint32_t* idx, std::uint32_t vertex) {
 
 // Step 6: groups of triangles around each welded vertex (the reference's four rules), depth first
 // through neighbours, left (the edge leaving the vertex) before right.
-void build_groups(Triangles& tris, std::vector<TriInfo>& info, std::vector<Group>& groups,
-                  std::vector<std::uint32_t>& members) {
+void build_groups(Triangles& tris, std::vector<Group>& groups, std::vector<std::uint32_t>& members) {
   const std::size_t T = tris.good;
-  std::vector<std::int32_t> stack;
+  const std::int32_t* neighbour = tris.neighbour.data();
+  members.resize(3 * T);  // a corner is in one group at most
+  std::size_t count = 0;
+  std::vector<std::int32_t> stack(64);
+  std::size_t top = 0;
+  auto push = [&](std::int32_t t) {
+    if (top == stack.size()) stack.resize(2 * top);
+    stack[top++] = t;
+  };
   for (std::size_t f = 0; f < T; ++f)
     for (int i = 0; i < 3; ++i) {
-      if ((tris.flag[f] & kGroupWithAny) || info[f].group[i] != -1) continue;
-      const auto g = std::int32_t(groups.size());
-      Group group{tris.index[3 * f + i], (tris.flag[f] & kOrientPreserving) != 0, std::uint32_t(members.size()), 0};
-      members.push_back(std::uint32_t(f));
-      info[f].group[i] = g;
-      stack.assign({info[f].neighbour[i > 0 ? i - 1 : 2], info[f].neighbour[i]});
-      while (!stack.empty()) {
-        const std::int32_t t = stack.back();
-        stack.pop_back();
+      if (tris.flag[f] & (kGroupWithAny | (kGrouped << i))) continue;
+      Group group{tris.index[3 * f + i], (tris.flag[f] & kOrientPreserving) != 0, std::uint32_t(count), 0};
+      members[count++] = std::uint32_t(3 * f + i);
+      tris.flag[f] |= std::uint8_t(kGrouped << i);
+      top = 0;
+      push(neighbour[3 * f + (i > 0 ? i - 1 : 2)]);
+      push(neighbour[3 * f + i]);
+      while (top > 0) {
+        const std::int32_t t = stack[--top];
         if (t < 0) continue;
-        const int k = corner_at(&tris.index[3 * t], group.representative);
-        TriInfo& ti = info[t];
-        if (ti.group[k] != -1) continue;  // this group's already, or another's
+        const int k = corner_at(&tris.index[3 * std::size_t(t)], group.representative);
         std::uint8_t& flag = tris.flag[t];
+        if (flag & (kGrouped << k)) continue;  // this group's already, or another's
         // The first group to reach a group-with-any triangle sets its orientation (the
         // reference's one order dependency).
-        if ((flag & kGroupWithAny) && ti.group[0] == -1 && ti.group[1] == -1 && ti.group[2] == -1)
+        if ((flag & kGroupWithAny) && !(flag & kGroupedAny))
           flag = std::uint8_t((flag & ~kOrientPreserving) | (group.orient ? kOrientPreserving : 0));
         if (((flag & kOrientPreserving) != 0) != group.orient) continue;
-        members.push_back(std::uint32_t(t));
-        ti.group[k] = g;
-        stack.push_back(ti.neighbour[k > 0 ? k - 1 : 2]);
-        stack.push_back(ti.neighbour[k]);
+        members[count++] = std::uint32_t(3 * t + k);
+        flag |= std::uint8_t(kGrouped << k);
+        push(neighbour[3 * std::size_t(t) + (k > 0 ? k - 1 : 2)]);
+        push(neighbour[3 * std::size_t(t) + k]);
       }
-      group.count = std::uint32_t(members.size() - group.offset);
+      group.count = std::uint32_t(count - group.offset);
       groups.push_back(group);
     }
+  members.resize(count);
 }
 
-// The frame of one sub-group at vertex `rep`: members' projected derivatives (ps, pt: those of
-// the group's members onto the vertex normal, by position in the group) weighted by the corner
-// angle of the triangle projected onto the normal's plane. `sub`: positions in the group, in
-// ascending triangle order (the order of the sums).
-TSpace evaluate_frame(const std::vector<std::uint32_t>& sub, const std::uint32_t* tri, const std::vector<F3>& ps,
-                      const std::vector<F3>& pt, const Corners& in, const Triangles& tris,
-                      const std::vector<TriInfo>& info, std::uint32_t rep) {
+// Step 7a: per group member (a corner of a healthy triangle), the terms of its group's frame (the
+// reference's evaluation, in its arithmetic): the triangle's derivatives projected onto the
+// corner's normal (ps, pt) and the corner's angle in the normal's plane, in blocks through the
+// vector pass (engine/tangent_corner_terms.h; its arc cosine gives the reference's float(acos(double))).
+struct CornerTerm {
+  F3 ps, pt;
+  float angle;
+  float mag_s, mag_t;  // the triangle's (TriInfo), beside the rest
+};
+
+// slots: n corner slots (3 t + k: corner k of triangle t); terms: n, written.
+void corner_terms(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info,
+                  const std::uint32_t* slots, std::size_t n, CornerTerm* terms) {
+  using normals_detail::kTangentCornerBlock;
+  constexpr std::size_t B = kTangentCornerBlock;
+  float in[15 * B], out[7 * B];
+  for (std::size_t begin = 0; begin < n; begin += B) {
+    const std::size_t count = std::min(B, n - begin);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t t = slots[begin + i] / 3, k = slots[begin + i] % 3;
+      const std::uint32_t* idx = &tris.index[3 * t];
+      const WeldedVertex& w = wv[idx[k]];
+      const F3 e1 = wv[idx[k > 0 ? k - 1 : 2]].p - w.p, e2 = wv[idx[k < 2 ? k + 1 : 0]].p - w.p;
+      const TriInfo& ti = info[t];
+      const float v[15] = {w.n.x, w.n.y, w.n.z, ti.os.x, ti.os.y, ti.os.z, ti.ot.x, ti.ot.y, ti.ot.z,
+                           e1.x, e1.y, e1.z, e2.x, e2.y, e2.z};
+      for (int r = 0; r < 15; ++r) in[r * B + i] = v[r];
+    }
+    normals_detail::tangent_corner_terms(count, in, out);
+    for (std::size_t i = 0; i < count; ++i) {
+      CornerTerm& c = terms[begin + i];
+      c.ps = {out[i], out[B + i], out[2 * B + i]};
+      c.pt = {out[3 * B + i], out[4 * B + i], out[5 * B + i]};
+      c.angle = out[6 * B + i];
+      const TriInfo& ti = info[slots[begin + i] / 3];
+      c.mag_s = ti.mag_s;
+      c.mag_t = ti.mag_t;
+    }
+  }
+}
+
+// A group's member as group_frames reads it: its slot (3 t + k: corner k of triangle t), its
+// triangle's face and whether that groups with any, and its corner's term.
+struct Member {
+  std::uint32_t slot, face;
+  bool any;
+  const CornerTerm* term;
+};
+
+// The frame of one sub-group: its members' projected derivatives weighted by their corners'
+// angles. `sub`: the n members' positions in `m`, in ascending triangle order (the order of the
+// sums); null: all of m[0, n).
+TSpace evaluate_frame(const Member* m, const std::uint32_t* sub, std::size_t n) {
   TSpace res;
   res.os = {0, 0, 0};
   res.ot = {0, 0, 0};
   res.mag_s = res.mag_t = 0;
   float angle_sum = 0;
-  for (std::uint32_t j : sub) {
-    const std::uint32_t f = tri[j];
-    if (tris.flag[f] & kGroupWithAny) continue;
-    const std::uint32_t* idx = &tris.index[3 * f];
-    const int i = corner_at(idx, rep);
-    const F3 n = in.normal_of(idx[i]);
-    const F3 p0 = in.position(idx[i > 0 ? i - 1 : 2]), p1 = in.position(idx[i]), p2 = in.position(idx[i < 2 ? i + 1 : 0]);
-    const F3 v1 = project_unit(p0 - p1, n), v2 = project_unit(p2 - p1, n);
-    const float c = std::min(1.0f, std::max(-1.0f, dot(v1, v2)));
-    const float angle = float(std::acos(double(c)));
-    res.os = res.os + scale(angle, ps[j]);
-    res.ot = res.ot + scale(angle, pt[j]);
-    res.mag_s += angle * info[f].mag_s;
-    res.mag_t += angle * info[f].mag_t;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Member& x = m[sub ? sub[i] : i];
+    if (x.any) continue;
+    const float angle = x.term->angle;
+    res.os = res.os + scale(angle, x.term->ps);
+    res.ot = res.ot + scale(angle, x.term->pt);
+    res.mag_s += angle * x.term->mag_s;
+    res.mag_t += angle * x.term->mag_t;
     angle_sum += angle;
   }
   if (not_zero(res.os)) res.os = normalize(res.os);
@@ -419,66 +543,90 @@ struct CornerFrames {
   }
 };
 
-// Step 7: sub-groups and their frames, written to each triangle's corner.
-void group_frames(const Corners& in, const Triangles& tris, const std::vector<TriInfo>& info,
+// Step 7: sub-groups and their frames, written to each member's corner. A group's members are
+// taken in ascending triangle order (slots ascend with triangles: one corner per triangle at a
+// vertex), the order of the reference's sums.
+// The terms are computed for batches of consecutive groups (their members are consecutive), about
+// kBatch corners at a time, so that they stay in cache between the two.
+void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info,
                   const std::vector<Group>& groups, const std::vector<std::uint32_t>& members,
                   CornerFrames& out) {
+  constexpr std::size_t kBatch = 512;
+  std::vector<CornerTerm> terms;
+  std::size_t batch_begin = 0, batch_end = 0;  // members whose terms are in `terms`
   // The reference's angular threshold, 180 degrees: cos(float(pi)) rounded to float is exactly -1.
   const float threshold_cos = -1.0f;
-  std::vector<F3> ps, pt;
+  auto joins = [threshold_cos](const Member& a, const Member& b) {
+    return a.any || b.any || a.face == b.face ||
+           (dot(a.term->ps, b.term->ps) > threshold_cos && dot(a.term->pt, b.term->pt) > threshold_cos);
+  };
+  std::vector<Member> m;
   std::vector<std::uint32_t> sub;
   // This group's distinct sub-groups: members in one flat buffer (offsets); their frames are
   // out.frames[base, base + count).
   std::vector<std::uint32_t> sub_members, sub_offset;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const Group& group = groups[g];
-    const std::uint32_t* tri = &members[group.offset];
-    const F3 n = in.normal_of(group.representative);  // every corner of the group has this normal
-    ps.resize(group.count);
-    pt.resize(group.count);
-    for (std::uint32_t j = 0; j < group.count; ++j) {
-      ps[j] = project_unit(info[tri[j]].os, n);
-      pt[j] = project_unit(info[tri[j]].ot, n);
+    const std::uint32_t n = group.count;
+    if (group.offset + n > batch_end) {
+      std::size_t h = g + 1;
+      while (h < groups.size() && groups[h].offset + groups[h].count - group.offset <= kBatch) ++h;
+      batch_begin = group.offset;
+      batch_end = groups[h - 1].offset + groups[h - 1].count;
+      terms.resize(batch_end - batch_begin);
+      corner_terms(wv, tris, info, &members[batch_begin], batch_end - batch_begin, terms.data());
+    }
+    m.resize(n);
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const std::uint32_t slot = members[group.offset + j], t = slot / 3;
+      m[j] = {slot, tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
+    }
+    auto by_slot = [](const Member& a, const Member& b) { return a.slot < b.slot; };
+    if (n > 16) {
+      std::sort(m.begin(), m.end(), by_slot);
+    } else {
+      for (std::uint32_t j = 1; j < n; ++j) {  // insertion sort: most groups are small
+        const Member x = m[j];
+        std::uint32_t i = j;
+        for (; i > 0 && by_slot(x, m[i - 1]); --i) m[i] = m[i - 1];
+        m[i] = x;
+      }
     }
     // The common case: every pair of members joins (none antiparallel), so every member's
-    // sub-group is the whole group: one frame, of the members in ascending order.
+    // sub-group is the whole group: one frame. Sure without the pairs when the projected
+    // derivatives of the members that do not group with any all lie within 60 degrees (dot > 0.5)
+    // of the first one's: any two of them are then within 120 degrees, their dot below -0.5 never
+    // near the threshold -1 whatever the float rounding; else every pair is tested.
     bool whole = true;
-    for (std::uint32_t i = 0; i < group.count && whole; ++i)
-      for (std::uint32_t j = i + 1; j < group.count && whole; ++j) {
-        const std::uint32_t f = tri[i], t = tri[j];
-        const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
-        const bool same_face = tris.face[f] == tris.face[t];
-        whole = any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos);
-      }
-    auto by_triangle = [tri](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; };
+    {
+      std::uint32_t a = 0;
+      while (a < n && m[a].any) ++a;
+      for (std::uint32_t j = a + 1; j < n && whole; ++j)
+        whole = m[j].any || (dot(m[a].term->ps, m[j].term->ps) > 0.5f && dot(m[a].term->pt, m[j].term->pt) > 0.5f);
+    }
+    if (!whole) {
+      whole = true;
+      for (std::uint32_t i = 0; i < n && whole; ++i)
+        for (std::uint32_t j = i + 1; j < n && whole; ++j) whole = joins(m[i], m[j]);
+    }
     if (whole) {
-      sub.resize(group.count);
-      for (std::uint32_t j = 0; j < group.count; ++j) sub[j] = j;
-      std::sort(sub.begin(), sub.end(), by_triangle);
-      out.frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+      out.frames.push_back(evaluate_frame(m.data(), nullptr, n));
       out.frames.back().orient = group.orient;
       const auto frame = std::uint32_t(out.frames.size() - 1);
-      for (std::uint32_t i = 0; i < group.count; ++i) {
-        const std::uint32_t f = tri[i];
-        const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
-        out.receive(tris.corner[3 * f + index], frame, group.orient);
-      }
+      for (std::uint32_t i = 0; i < n; ++i) out.receive(tris.corner[m[i].slot], frame, group.orient);
       continue;
     }
     sub_members.clear();
     sub_offset.assign(1, 0);
     const std::size_t base = out.frames.size();
-    for (std::uint32_t i = 0; i < group.count; ++i) {
-      const std::uint32_t f = tri[i];
-      const int index = info[f].group[0] == std::int32_t(g) ? 0 : info[f].group[1] == std::int32_t(g) ? 1 : 2;
+    for (std::uint32_t d = 0; d < n; ++d) {
+      // Members in the order the group reached them (a corner that several triangles of a polygon
+      // share averages their frames in that order).
+      std::uint32_t i = 0;
+      while (m[i].slot != members[group.offset + d]) ++i;
       sub.clear();
-      for (std::uint32_t j = 0; j < group.count; ++j) {
-        const std::uint32_t t = tri[j];
-        const bool any = ((tris.flag[f] | tris.flag[t]) & kGroupWithAny) != 0;
-        const bool same_face = tris.face[f] == tris.face[t];
-        if (any || same_face || (dot(ps[i], ps[j]) > threshold_cos && dot(pt[i], pt[j]) > threshold_cos)) sub.push_back(j);
-      }
-      std::sort(sub.begin(), sub.end(), by_triangle);
+      for (std::uint32_t j = 0; j < n; ++j)
+        if (j == i || joins(m[i], m[j])) sub.push_back(j);  // ascending, as m
       std::size_t l = 0;
       const std::size_t known = sub_offset.size() - 1;
       while (l < known && !(sub_offset[l + 1] - sub_offset[l] == sub.size() &&
@@ -487,18 +635,20 @@ void group_frames(const Corners& in, const Triangles& tris, const std::vector<Tr
       if (l == known) {
         sub_members.insert(sub_members.end(), sub.begin(), sub.end());
         sub_offset.push_back(std::uint32_t(sub_members.size()));
-        out.frames.push_back(evaluate_frame(sub, tri, ps, pt, in, tris, info, group.representative));
+        out.frames.push_back(evaluate_frame(m.data(), sub.data(), sub.size()));
         out.frames.back().orient = group.orient;
       }
-      out.receive(tris.corner[3 * f + index], std::uint32_t(base + l), group.orient);
+      out.receive(tris.corner[m[i].slot], std::uint32_t(base + l), group.orient);
     }
   }
 }
 
 // Step 8: frames for the corners of degenerate triangles.
-void degenerate_frames(const Mesh& mesh, const Corners& in, const Triangles& tris, std::vector<std::uint32_t>& out) {
+void degenerate_frames(const Mesh& mesh, const Corners& in, std::size_t num_welded, const Triangles& tris,
+                       std::vector<std::uint32_t>& out) {
   const std::size_t T = tris.face.size(), good = tris.good;
-  std::vector<std::uint32_t> first(in.num_corners, ~0u);  // welded vertex -> first healthy corner slot
+  if (good == T) return;  // no degenerate triangle (nor, then, a quad with one)
+  std::vector<std::uint32_t> first(num_welded, ~0u);  // welded vertex -> first healthy corner slot
   for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
   for (std::size_t t = good; t < T; ++t) {
     if (tris.flag[t] & kQuadOneDegenerate) continue;
@@ -573,51 +723,45 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   in.normal = mesh.has_corner_normals() ? mesh.corner_normal_index.data()
               : mesh.has_vertex_normals() ? mesh.corner_vertex.data() : corner_face.data();
   in.texcoord = mesh.corner_texcoord_index.data();
-  std::vector<std::uint32_t> corners;
-  corners.reserve(C);
   for (std::size_t f = 0; f < F; ++f) {
     bool ok = mesh.face_size(f) >= 3 && dims >= 2;
     for (std::uint32_t c = mesh.face_start[f]; ok && c < mesh.face_start[f + 1]; ++c)
       ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
     taken[f] = ok;
-    if (!ok) continue;
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) corners.push_back(std::uint32_t(c));
   }
+  const Welded welded = weld(mesh, in, taken);
+  const std::vector<WeldedVertex>& wv = welded.vertex;
   Triangles tris;
-  make_triangles(mesh, in, taken, tris);
-  const std::vector<std::uint32_t> rep = weld(in, corners);
-  tris.index.resize(tris.corner.size());
-  for (std::size_t k = 0; k < tris.corner.size(); ++k) tris.index[k] = rep[tris.corner[k]];
-  set_aside_degenerate(mesh, in, tris);
-  std::vector<TriInfo> info(tris.good);
-  triangle_derivatives(mesh, in, tris, info);
-  find_neighbours(tris, C, info);
+  make_triangles(mesh, in, taken, welded.id.data(), tris);
+  set_aside_degenerate(mesh, wv, tris);
+  TriInfos info(tris.good);
+  triangle_derivatives(mesh, wv, tris, info);
+  find_neighbours(tris, wv.size());
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
-  members.reserve(3 * tris.good);
-  build_groups(tris, info, groups, members);
+  groups.reserve(wv.size() + wv.size() / 8);  // about one per welded vertex
+  build_groups(tris, groups, members);
   CornerFrames frames;
   frames.frames.reserve(groups.size() + groups.size() / 8);
   frames.of.assign(C, ~0u);
-  group_frames(in, tris, info, groups, members, frames);
-  degenerate_frames(mesh, in, tris, frames.of);
+  group_frames(wv, tris, info, groups, members, frames);
+  degenerate_frames(mesh, in, wv.size(), tris, frames.of);
   const TSpace none;  // the reference's default frame
 
   TangentFrames out;
-  out.tangents.resize(4 * C);
+  reserve_bulk(out.tangents, 4 * C);  // filled in corner order below: no zeroing first
+  std::vector<double>& o = out.tangents;
   for (std::size_t f = 0; f < F; ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      double* o = &out.tangents[4 * std::size_t(c)];
       if (!taken[f]) {
         const Vec3d t = perpendicular_unit(corner_normal(c, f));
-        o[0] = t.x; o[1] = t.y; o[2] = t.z; o[3] = 1.0;
+        o.push_back(t.x), o.push_back(t.y), o.push_back(t.z), o.push_back(1.0);
         ++out.fallback_corners;
         continue;
       }
       const std::uint32_t k = frames.of[c];
       const TSpace& s = k != ~0u ? frames.frames[k] : none;
-      o[0] = s.os.x; o[1] = s.os.y; o[2] = s.os.z;
-      o[3] = s.orient ? 1.0 : -1.0;
+      o.push_back(s.os.x), o.push_back(s.os.y), o.push_back(s.os.z), o.push_back(s.orient ? 1.0 : -1.0);
       if (k == ~0u) ++out.default_corners;
     }
   return out;
