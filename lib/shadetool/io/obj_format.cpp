@@ -19,6 +19,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/io/engine/newell_normal.h>
+#include <shadetool/io/engine/obj_statement_counts.h>
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/split_face_colors.h>
 #include <shadetool/io/engine/text_encoding.h>
@@ -54,12 +55,9 @@ void fail_index(std::int64_t idx, std::size_t count, const char* what, const std
 }
 
 // Where one chunk of lines puts what it reads. Serial reading (one chunk) appends to the mesh's
-// vectors; parallel reading writes each chunk's share at the offsets the counting pass gave it
-// (`at` = the chunk's first element of each kind, counted over all chunks before it).
-struct ObjCounts {
-  std::size_t v = 0, vt = 0, vn = 0, faces = 0, corners = 0, lines = 0;
-};
-
+// vectors; parallel reading writes each chunk's share at the offsets the counting pass
+// (io/engine/obj_statement_counts.h) gave it (`at` = the chunk's first element of each kind,
+// counted over all chunks before it).
 // What one chunk of lines gathers besides the arrays it writes in place: the lazily allocated
 // per-vertex colours and per-corner vn/vt indices (chunk-local: merged after all chunks), the
 // grouping statements with the number of the chunk's faces before each, and what was skipped.
@@ -259,27 +257,6 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   ++s.read.faces;
 }
 
-// Which statement a line starts with; the keyword is the line's first token.
-enum class ObjKeyword { V, Vn, Vt, F, Grouping, L, P, Other };
-
-inline ObjKeyword obj_keyword(const char* kw, std::size_t kwlen) {
-  if (kwlen == 1) {
-    switch (kw[0]) {
-      case 'v': return ObjKeyword::V;
-      case 'f': return ObjKeyword::F;
-      case 'o': case 'g': case 's': return ObjKeyword::Grouping;
-      case 'l': return ObjKeyword::L;
-      case 'p': return ObjKeyword::P;
-    }
-    return ObjKeyword::Other;
-  }
-  if (kwlen == 2 && kw[0] == 'v' && kw[1] == 'n') return ObjKeyword::Vn;
-  if (kwlen == 2 && kw[0] == 'v' && kw[1] == 't') return ObjKeyword::Vt;
-  const std::string_view k(kw, kwlen);
-  if (k == "usemtl" || k == "mtllib") return ObjKeyword::Grouping;
-  return ObjKeyword::Other;
-}
-
 // Step 1, read: every line of [p, end), in order, into `s` and the arrays.
 template <bool kPlaced>
 void read_lines(const char* p, const char* const end, const std::string& name, ObjChunk& s, ObjArrays& a) {
@@ -339,66 +316,6 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
     p = eol + 1;
   }
   s.read.lines = line - s.at.lines;
-}
-
-// Step 1 in parallel, the counting pass: how many v, vt, vn, faces, corners and lines [p, end)
-// holds, by the tokens read_lines will read (a face's corners are its tokens before a comment).
-// Malformed lines are counted as tokens here and refused by read_lines with their line number.
-// What the counting pass tells apart: is_space's bytes, the line feed, `#`, anything else.
-enum class CharClass : unsigned char { Other, Space, LineFeed, Hash };
-constexpr std::array<CharClass, 256> make_char_class() {
-  std::array<CharClass, 256> t{};
-  for (int c = 0; c < 256; ++c)
-    t[std::size_t(c)] = c == '\n' ? CharClass::LineFeed : c == '#' ? CharClass::Hash : is_space(char(c)) ? CharClass::Space : CharClass::Other;
-  return t;
-}
-constexpr std::array<CharClass, 256> kCharClass = make_char_class();
-
-ObjCounts count_lines(const char* p, const char* const end) {
-  ObjCounts c;
-  auto line_feed = [end](const char* q) {
-    if (q == end || *q == '\n') return q;
-    const void* lf = std::memchr(q, '\n', std::size_t(end - q));
-    return lf ? static_cast<const char*>(lf) : end;
-  };
-  while (p < end) {
-    ++c.lines;
-    const char* q = skip_spaces(p, end);
-    if (!at_line_end(q, end) && *q != '#') {
-      const char* kw = q;
-      while (q < end && !is_space_or_newline(*q)) ++q;
-      switch (obj_keyword(kw, std::size_t(q - kw))) {
-        case ObjKeyword::V: ++c.v; break;
-        case ObjKeyword::Vn: ++c.vn; break;
-        case ObjKeyword::Vt: ++c.vt; break;
-        case ObjKeyword::F: {  // its tokens up to the line feed or a comment: one scan, no search
-          // A token starts where a byte that is not a space follows a space; a `#` starting a
-          // token starts a comment (read_f's rule). Byte classes from a table: one load a byte.
-          std::size_t n = 0;
-          bool after_space = true;
-          for (; q < end; ++q) {
-            const CharClass k = kCharClass[static_cast<unsigned char>(*q)];
-            if (k == CharClass::LineFeed || (k == CharClass::Hash && after_space)) break;
-            n += after_space && k != CharClass::Space;
-            after_space = k == CharClass::Space;
-          }
-          if (n > 0) {
-            ++c.faces;
-            c.corners += n;
-          }
-          break;
-        }
-        case ObjKeyword::Grouping:
-        case ObjKeyword::L:
-        case ObjKeyword::P:
-        case ObjKeyword::Other: break;
-      }
-    }
-    const char* eol = line_feed(q);
-    if (eol == end) break;
-    p = eol + 1;
-  }
-  return c;
 }
 
 // What the chunks gathered, merged in file order into one ObjLines for the build steps.
@@ -583,7 +500,7 @@ void read_all_lines(std::string_view bytes, const std::string& name, const ObjRe
   } else {
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
       find_nul(i);
-      counts[i] = count_lines(bytes.data() + starts[i], bytes.data() + starts[i + 1]);
+      counts[i] = count_obj_statements(bytes.data() + starts[i], bytes.data() + starts[i + 1]);
     });
     refuse_nul();
     std::size_t v = 0, corners = 0;
