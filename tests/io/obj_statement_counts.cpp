@@ -17,12 +17,14 @@ using namespace shadetool::io;
 namespace {
 
 bool same(const ObjCounts& a, const ObjCounts& b) {
-  return a.v == b.v && a.vt == b.vt && a.vn == b.vn && a.faces == b.faces && a.corners == b.corners && a.lines == b.lines;
+  return a.v == b.v && a.vt == b.vt && a.vn == b.vn && a.faces == b.faces && a.corners == b.corners && a.lines == b.lines &&
+         a.cr == b.cr && a.nul == b.nul;
 }
 
 std::string show(const ObjCounts& c) {
   return "v " + std::to_string(c.v) + " vt " + std::to_string(c.vt) + " vn " + std::to_string(c.vn) + " faces " +
-         std::to_string(c.faces) + " corners " + std::to_string(c.corners) + " lines " + std::to_string(c.lines);
+         std::to_string(c.faces) + " corners " + std::to_string(c.corners) + " lines " + std::to_string(c.lines) +
+         (c.cr ? " CR" : "") + (c.nul ? " NUL" : "");
 }
 
 void require_all_agree(const std::string& text, std::size_t begin, std::size_t end) {
@@ -78,7 +80,7 @@ TEST_CASE("OBJ statement counts: the mask counter gives the byte rule's counts o
       "f\t1\t2\t3", "# v 1 2 3", "", "   ", "g group", "usemtl m", "vtx 1", "fo 1 2", "v\t1 2 3", "vn\t1 2 3",
       "f 1 2 3   ", "f 1 2 3\r", "o object", "s 1", "l 1 2", "p 1", "v", "vn", "vt",
       "f 10/20/30 11/21/31 12/22/32 13/23/33 14/24/34 15/25/35 16/26/36 17/27/37 18/28/38 19/29/39 20/30/40",
-      "v 0.123456789012345 0.98765432109876 -0.55555555555555555 1 1 1"};
+      "v 0.123456789012345 0.98765432109876 -0.55555555555555555 1 1 1", std::string("v 1 2\0 3", 9), "v 1\r2 3"};
   std::mt19937 rng(31);
   for (int round = 0; round < 60; ++round) {
     // Mostly well-formed lines (the mask path), in some rounds any kind (the scalar fallback).

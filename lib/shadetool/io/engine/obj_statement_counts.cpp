@@ -28,9 +28,9 @@ constexpr std::array<CharClass, 256> make_char_class() {
 constexpr std::array<CharClass, 256> kCharClass = make_char_class();
 
 // One 64-byte block as bit masks, bit i for byte i: line feeds, is_space's bytes (not the line
-// feed), `#`, and the letters the keywords v, vn, vt, f are made of.
+// feed), `#`, the letters the keywords v, vn, vt, f are made of, and CR or NUL bytes.
 struct BlockMasks {
-  std::uint64_t lf = 0, sp = 0, hash = 0, v = 0, f = 0, n = 0, t = 0;
+  std::uint64_t lf = 0, sp = 0, hash = 0, v = 0, f = 0, n = 0, t = 0, cr_or_nul = 0;
 };
 
 struct PlainMasks {
@@ -46,6 +46,7 @@ struct PlainMasks {
       m.f |= c == 'f' ? bit : 0;
       m.n |= c == 'n' ? bit : 0;
       m.t |= c == 't' ? bit : 0;
+      m.cr_or_nul |= c == '\r' || c == '\0' ? bit : 0;
     }
     return m;
   }
@@ -72,6 +73,7 @@ struct Sse2Masks {
       m.f |= eq('f');
       m.n |= eq('n');
       m.t |= eq('t');
+      m.cr_or_nul |= eq('\r') | eq('\0');
     }
     return m;
   }
@@ -97,6 +99,7 @@ struct Avx2Masks {
       m.f |= eq('f');
       m.n |= eq('n');
       m.t |= eq('t');
+      m.cr_or_nul |= eq('\r') | eq('\0');
     }
     return m;
   }
@@ -111,7 +114,7 @@ __attribute__((always_inline)) inline bool count_blocks(const char* p, const cha
   std::uint64_t line_start_in = 1;  // the run starts at a line start, as after a separator
   std::uint64_t sep_in = 1;
   std::uint64_t span_in = 0;        // an `f` line's span continues from the block before
-  std::uint64_t odd = 0;
+  std::uint64_t odd = 0, cr_or_nul = 0;
   char pad[64];
   for (const char* b = p; b < end; b += 64) {
     const std::size_t left = std::size_t(end - b);
@@ -156,9 +159,14 @@ __attribute__((always_inline)) inline bool count_blocks(const char* p, const cha
     c.lines += ones(lf);
     // Lines the masks do not read as the rule does: leading spaces, a `#` token in an `f` line,
     // an `f` whose next bytes are not a space and a token (`f` alone, `f  1`, `f\t`).
+    cr_or_nul |= m.cr_or_nul;
     odd |= (line_start & m.sp) | (token & span & m.hash) | (f & ~token_next2) | (f & lf_next);
   }
   if (p < end && end[-1] != '\n') ++c.lines;
+  if (cr_or_nul != 0) {  // rare: which of the two, by the byte rule
+    c.cr = std::memchr(p, '\r', std::size_t(end - p)) != nullptr;
+    c.nul = std::memchr(p, '\0', std::size_t(end - p)) != nullptr;
+  }
   return odd == 0;
 }
 
@@ -182,6 +190,8 @@ ObjCounts count_sse2(const char* p, const char* end) { return count_with<Sse2Mas
 
 ObjCounts count_obj_statements_scalar(const char* p, const char* const end) {
   ObjCounts c;
+  c.cr = std::memchr(p, '\r', std::size_t(end - p)) != nullptr;
+  c.nul = std::memchr(p, '\0', std::size_t(end - p)) != nullptr;
   auto line_feed = [end](const char* q) {
     if (q == end || *q == '\n') return q;
     const void* lf = std::memchr(q, '\n', std::size_t(end - q));

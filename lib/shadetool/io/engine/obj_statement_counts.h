@@ -8,7 +8,7 @@
 // Output:  ObjCounts: v, vt, vn (lines whose keyword is that word), faces (`f` lines with at
 //          least one corner), corners (the tokens of `f` lines after the keyword, up to the line
 //          feed or a `#` that starts a token), lines (line feeds, plus one for a last line without
-//          one). Malformed lines are counted by their tokens; the parser refuses them with their
+//          one); cr, nul: whether the run holds a CR byte, a NUL byte. Malformed lines are counted by their tokens; the parser refuses them with their
 //          line number. The counts are a forecast the parser checks: a chunk whose parse finds other
 //          counts is read again in one pass (obj_format.cpp), so a miscount costs time, never a
 //          wrong mesh.
@@ -32,6 +32,9 @@ namespace shadetool::io {
 
 struct ObjCounts {
   std::size_t v = 0, vt = 0, vn = 0, faces = 0, corners = 0, lines = 0;
+  // Bytes the reader looks for before parsing, found in the same pass: a CR (the text's line
+  // endings are converted to LF first, and counted again) and a NUL (binary data: refused).
+  bool cr = false, nul = false;
 };
 
 // Which statement a line starts with; the keyword is the line's first token.
