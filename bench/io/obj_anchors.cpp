@@ -20,12 +20,20 @@
 // fresh mapping in every repetition as in a one-shot process (no contender is flattered by glibc
 // recycling its last block).
 //
-// Usage: bench_obj_anchors [--reps N] [--only TEXT] FILE.obj...   (--only: rows whose name contains
-// TEXT, for profiling one reader under perf)
+// --floors adds rows that bound what any reader of the file can take (not readers; the goal's
+// floors, bench/io/results.md): mapping the file's cached pages (io/file_bytes.h, as read_mesh
+// does); that plus every number converted, summed: fast_float on v, vt, vn lines, a plain digit
+// loop on the others (the numbers' conversion alone: no storage, no checks; faces: corners are
+// counted as numbers); that plus the fresh output arrays of the mesh
+// (positions, face_start, corner_vertex of the sizes shadetool read), allocated and zero-filled.
+//
+// Usage: bench_obj_anchors [--reps N] [--only TEXT] [--floors] FILE.obj...   (--only: rows whose name
+// contains TEXT, for profiling one reader under perf)
 #include <malloc.h>
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -38,7 +46,11 @@
 
 #include <tbb/task_arena.h>
 
+#include <fast_float/fast_float.h>
+
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/files/mesh_files.h>
+#include <shadetool/io/file_bytes.h>
 
 // rapidobj asks std::thread::hardware_concurrency() how many threads to use; the vendored copy asks
 // this instead (third_party/README.md), so its 1-thread row is one thread on any machine.
@@ -89,12 +101,14 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int reps = 9;
+  bool floors = false;
   std::string only;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--reps" && i + 1 < argc) reps = std::atoi(argv[++i]);
     else if (a == "--only" && i + 1 < argc) only = argv[++i];
+    else if (a == "--floors") floors = true;
     else files.push_back(a);
   }
   if (files.empty()) {
@@ -105,11 +119,13 @@ int main(int argc, char** argv) {
   for (const std::string& path : files) {
     std::vector<Contender> rows;
     auto ours = std::make_shared<std::unique_ptr<shadetool::Mesh>>();
+    auto sizes = std::make_shared<std::array<std::size_t, 3>>();  // the arrays shadetool read (floor rows)
     for (int t : {1, 2}) {
       auto arena = std::make_shared<tbb::task_arena>(t);
       rows.push_back({"shadetool read_mesh, " + std::to_string(t) + " thread" + (t > 1 ? "s" : ""),
-                      [ours, arena, path] {
+                      [ours, arena, path, sizes] {
                         arena->execute([&] { *ours = std::make_unique<shadetool::Mesh>(shadetool::read_mesh(path)); });
+                        *sizes = {(*ours)->positions.size(), (*ours)->corner_vertex.size(), (*ours)->face_start.size()};
                         return (*ours)->num_faces();
                       },
                       [ours] { ours->reset(); }});
@@ -137,6 +153,57 @@ int main(int argc, char** argv) {
                         return faces;
                       },
                       [ro] { ro->reset(); }});
+    }
+    if (floors) {
+      rows.push_back({"floor: map the file", [path] { return shadetool::io::read_file_bytes(path).size(); }, [] {}});
+      rows.push_back({"floor: map, convert every number",
+                      [path] {
+                        const shadetool::io::FileBytes f = shadetool::io::read_file_bytes(path);
+                        const char* p = f.view().data();
+                        const char* const end = p + f.size();
+                        double sum = 0;
+                        std::uint64_t isum = 0;
+                        std::size_t n = 0;
+                        bool v_line = false;  // numbers of v/vt/vn lines: fast_float; of others (f): integers
+                        for (bool line_start = true; p < end;) {
+                          const char c = *p;
+                          if (line_start) v_line = c == 'v';
+                          line_start = c == '\n';
+                          if ((c >= '0' && c <= '9') || c == '-' || c == '.') {
+                            ++n;
+                            if (v_line) {
+                              double x = 0;
+                              const auto r = fast_float::from_chars(p, end, x);
+                              sum += x;
+                              p = r.ptr > p ? r.ptr : p + 1;
+                            } else {
+                              std::uint64_t k = 0;
+                              for (++p; p < end && *p >= '0' && *p <= '9'; ++p) k = k * 10 + std::uint64_t(*p - '0');
+                              isum += k;
+                            }
+                          } else {
+                            ++p;
+                          }
+                        }
+                        return n + (sum == 0.5 ? 1 : 0) + (isum == 1 ? 1 : 0);
+                      },
+                      [] {}});
+      auto arrays = std::make_shared<std::unique_ptr<shadetool::Mesh>>();
+      rows.push_back({"floor: map, fresh output arrays",
+                      [path, sizes, arrays] {
+                        const shadetool::io::FileBytes f = shadetool::io::read_file_bytes(path);
+                        *arrays = std::make_unique<shadetool::Mesh>();
+                        shadetool::Mesh& m = **arrays;
+                        const std::array<std::size_t, 3> n = *sizes;
+                        shadetool::reserve_bulk(m.positions, n[0]);
+                        shadetool::reserve_bulk(m.corner_vertex, n[1]);
+                        shadetool::reserve_bulk(m.face_start, n[2]);
+                        m.positions.resize(n[0]);
+                        m.corner_vertex.resize(n[1]);
+                        m.face_start.resize(n[2]);
+                        return m.face_start.size() - 1 + (f.size() == 0 ? 1 : 0);
+                      },
+                      [arrays] { arrays->reset(); }});
     }
     if (!only.empty())
       rows.erase(std::remove_if(rows.begin(), rows.end(), [&](const Contender& c) { return c.name.find(only) == std::string::npos; }),
