@@ -15,7 +15,8 @@
 // machine the CPU time of a 1-thread row is the steadier measure; a 2-thread row is judged by wall
 // time) and the ratios of medians to the first row (below 1: faster) are printed with
 // /proc/loadavg before and after.
-// Destroying a result is outside the timed region.
+// Destroying a result is outside the timed region. After each table, the median minor page faults of
+// each row's runs (getrusage: 4 KiB faults, or one per 2 MiB huge page).
 // Memory: M_MMAP_THRESHOLD is fixed at 1 MiB, as in io_read.cpp, so that every large block is a
 // fresh mapping in every repetition as in a one-shot process (no contender is flattered by glibc
 // recycling its last block).
@@ -27,8 +28,8 @@
 // counted as numbers); that plus the fresh output arrays of the mesh
 // (positions, face_start, corner_vertex of the sizes shadetool read), allocated and zero-filled.
 //
-// Usage: bench_obj_anchors [--reps N] [--only TEXT] [--floors] FILE.obj...   (--only: rows whose name
-// contains TEXT, for profiling one reader under perf)
+// Usage: bench_obj_anchors [--reps N] [--only TEXT[,TEXT...]] [--floors] FILE.obj...   (--only: rows
+// whose name contains one of the TEXTs, for profiling one reader under perf)
 #include <malloc.h>
 #include <sys/resource.h>
 
@@ -80,11 +81,17 @@ struct Contender {
   std::string name;
   std::function<std::size_t()> run;  // returns a count (faces) so the work is not optimised away
   std::function<void()> reset;       // frees the result, untimed
-  std::vector<double> ms, cpu_ms;
+  std::vector<double> ms, cpu_ms, faults;  // faults: minor page faults of the process during the run
   std::size_t count = 0;
 };
 
 // User + system CPU time of the whole process (every thread), in ms.
+double process_minor_faults() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_minflt);
+}
+
 double process_cpu_ms() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
@@ -206,7 +213,13 @@ int main(int argc, char** argv) {
                       [arrays] { arrays->reset(); }});
     }
     if (!only.empty())
-      rows.erase(std::remove_if(rows.begin(), rows.end(), [&](const Contender& c) { return c.name.find(only) == std::string::npos; }),
+      rows.erase(std::remove_if(rows.begin(), rows.end(),
+                                [&](const Contender& c) {
+                                  std::stringstream list(only);
+                                  for (std::string part; std::getline(list, part, ',');)
+                                    if (c.name.find(part) != std::string::npos) return false;
+                                  return true;
+                                }),
                  rows.end());
     if (rows.empty()) continue;
     // Warm: one untimed run of each (page cache, lazy library initialisation).
@@ -217,11 +230,13 @@ int main(int argc, char** argv) {
     const std::string load_before = loadavg();
     for (int r = 0; r < reps; ++r)
       for (Contender& c : rows) {
+        const double faults0 = process_minor_faults();
         const double cpu0 = process_cpu_ms();
         const auto t0 = std::chrono::steady_clock::now();
         c.count = c.run();
         const auto t1 = std::chrono::steady_clock::now();
         c.cpu_ms.push_back(process_cpu_ms() - cpu0);
+        c.faults.push_back(process_minor_faults() - faults0);
         c.ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
         c.reset();
       }
@@ -240,6 +255,9 @@ int main(int argc, char** argv) {
       std::printf("| %-30s | %9.1f | %8.0f | %8.1f | %21.2f | %12.1f | %21.2f | %10zu |\n", c.name.c_str(), m, mb * 1e3 / m,
                   *std::min_element(c.ms.begin(), c.ms.end()), m / base, cpu, cpu / base_cpu, c.count);
     }
+    std::printf("minor page faults per run (medians):");
+    for (const Contender& c : rows) std::printf(" %s %.0f;", c.name.c_str(), median(c.faults));
+    std::printf("\n");
     std::printf("\n");
   }
   return 0;
