@@ -10,7 +10,8 @@
 //
 // Every contender reads the same file from its path (so file reading is inside every row), warm in
 // the page cache (one untimed read of each first). The rows are interleaved run by run
-// (round-robin over contenders in every repetition), so load changes hit every row alike; each
+// (every contender once in every repetition, in an order shuffled per repetition), so load
+// changes and what the previous row left behind hit every row alike; each
 // row's median wall time and median process CPU time (user + system, all threads: on a loaded
 // machine the CPU time of a 1-thread row is the steadier measure; a 2-thread row is judged by wall
 // time) and the ratios of medians to the first row (below 1: faster) are printed with
@@ -41,6 +42,8 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -228,8 +231,16 @@ int main(int argc, char** argv) {
       c.reset();
     }
     const std::string load_before = loadavg();
-    for (int r = 0; r < reps; ++r)
-      for (Contender& c : rows) {
+    // Each repetition runs the rows in its own order (a shuffle seeded by the repetition's number):
+    // what a row leaves behind (memory it freed in 4 KiB pages, worker threads still spinning) is
+    // charged to a different next row each time, not always to the same one.
+    std::vector<std::size_t> order(rows.size());
+    for (int r = 0; r < reps; ++r) {
+      std::iota(order.begin(), order.end(), std::size_t(0));
+      std::mt19937 shuffle_rng(static_cast<unsigned>(r));
+      std::shuffle(order.begin(), order.end(), shuffle_rng);
+      for (const std::size_t k : order) {
+        Contender& c = rows[k];
         const double faults0 = process_minor_faults();
         const double cpu0 = process_cpu_ms();
         const auto t0 = std::chrono::steady_clock::now();
@@ -240,6 +251,7 @@ int main(int argc, char** argv) {
         c.ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
         c.reset();
       }
+    }
     const std::string load_after = loadavg();
     const double mb = file_size(path) / 1e6;
     std::printf("%s: %.1f MB, %d runs per row interleaved, medians; load %s before, %s after\n", path.c_str(), mb, reps,
