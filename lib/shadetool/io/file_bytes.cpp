@@ -2,6 +2,8 @@
 // (in growing chunks when the size is unknown: pipes, /dev/stdin).
 #include <shadetool/io/file_bytes.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -10,6 +12,9 @@
 #include <unistd.h>
 #include <utility>
 
+#include <tbb/parallel_for.h>
+
+#include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/core/error.h>
 
 namespace shadetool::io {
@@ -17,6 +22,32 @@ namespace shadetool::io {
 namespace {
 
 constexpr std::size_t kMapAtLeast = std::size_t(1) << 20;
+// Mapping a file's cached pages into the process costs about as much as copying them with read(2)
+// (bench/io/results.md); with more than one thread and at least this many bytes it is done in
+// blocks of kPopulateBlock by the threads at once (MADV_POPULATE_READ, Linux 5.14), else by
+// MAP_POPULATE in the mmap call.
+constexpr std::size_t kPopulateInParallelAtLeast = std::size_t(8) << 20;
+constexpr std::size_t kPopulateBlock = std::size_t(2) << 20;
+
+// Maps [0, size) of fd read-only, its pages present; MAP_FAILED when mmap refuses.
+void* map_populated(int fd, std::size_t size) {
+#if defined(__linux__)
+  constexpr int kPopulateRead = 22;  // MADV_POPULATE_READ; glibc 2.36's headers may lack it
+  if (size >= kPopulateInParallelAtLeast && usable_threads() > 1) {
+    void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    if (p == MAP_FAILED) return p;
+    char* const base = static_cast<char*>(p);
+    std::atomic<bool> refused{false};  // an older kernel: the first page faults in every page as it is read
+    tbb::parallel_for(std::size_t(0), (size + kPopulateBlock - 1) / kPopulateBlock, [&](std::size_t b) {
+      const std::size_t at = b * kPopulateBlock;
+      if (::madvise(base + at, std::min(kPopulateBlock, size - at), kPopulateRead) != 0) refused.store(true, std::memory_order_relaxed);
+    });
+    if (!refused) return p;
+    ::munmap(p, size);
+  }
+#endif
+  return ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+}
 
 // Reads up to `n` bytes; returns how many (fewer only at the end of the file); -1 on error.
 ssize_t read_fully(int fd, char* p, std::size_t n) {
@@ -61,7 +92,7 @@ FileBytes read_file_bytes(const std::string& path) {
 
   FileBytes f;
   if (S_ISREG(st.st_mode) && std::size_t(st.st_size) >= kMapAtLeast) {
-    void* p = ::mmap(nullptr, std::size_t(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    void* p = map_populated(fd, std::size_t(st.st_size));
     if (p != MAP_FAILED) {
       ::close(fd);
       f.data_ = static_cast<char*>(p);

@@ -3,7 +3,8 @@
 // Inputs:  path  file to read
 // Outputs: FileBytes, the file's bytes. Regular files of 1 MiB or more are mapped (mmap,
 //          MAP_POPULATE: no copy, and no fresh pages to fault in, which is most of the cost of
-//          reading a binary mesh); smaller files and pipes are read into a buffer that is not
+//          reading a binary mesh; files of 8 MiB or more, read with more than one thread, have
+//          their pages mapped in 2 MiB blocks by the threads at once); smaller files and pipes are read into a buffer that is not
 //          zero-filled first. A mapped file that another process truncates while it is being
 //          parsed raises SIGBUS, as with any mmap-based reader (ripgrep, git); it does not
 //          happen to files that are only read or replaced by rename, as shadetool writes them.

@@ -9,8 +9,10 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <optional>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -19,6 +21,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/io/engine/newell_normal.h>
+#include <shadetool/io/engine/obj_statement_counts.h>
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/split_face_colors.h>
 #include <shadetool/io/engine/text_encoding.h>
@@ -54,12 +57,9 @@ void fail_index(std::int64_t idx, std::size_t count, const char* what, const std
 }
 
 // Where one chunk of lines puts what it reads. Serial reading (one chunk) appends to the mesh's
-// vectors; parallel reading writes each chunk's share at the offsets the counting pass gave it
-// (`at` = the chunk's first element of each kind, counted over all chunks before it).
-struct ObjCounts {
-  std::size_t v = 0, vt = 0, vn = 0, faces = 0, corners = 0, lines = 0;
-};
-
+// vectors; parallel reading writes each chunk's share at the offsets the counting pass
+// (io/engine/obj_statement_counts.h) gave it (`at` = the chunk's first element of each kind,
+// counted over all chunks before it).
 // What one chunk of lines gathers besides the arrays it writes in place: the lazily allocated
 // per-vertex colours and per-corner vn/vt indices (chunk-local: merged after all chunks), the
 // grouping statements with the number of the chunk's faces before each, and what was skipped.
@@ -259,27 +259,6 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   ++s.read.faces;
 }
 
-// Which statement a line starts with; the keyword is the line's first token.
-enum class ObjKeyword { V, Vn, Vt, F, Grouping, L, P, Other };
-
-inline ObjKeyword obj_keyword(const char* kw, std::size_t kwlen) {
-  if (kwlen == 1) {
-    switch (kw[0]) {
-      case 'v': return ObjKeyword::V;
-      case 'f': return ObjKeyword::F;
-      case 'o': case 'g': case 's': return ObjKeyword::Grouping;
-      case 'l': return ObjKeyword::L;
-      case 'p': return ObjKeyword::P;
-    }
-    return ObjKeyword::Other;
-  }
-  if (kwlen == 2 && kw[0] == 'v' && kw[1] == 'n') return ObjKeyword::Vn;
-  if (kwlen == 2 && kw[0] == 'v' && kw[1] == 't') return ObjKeyword::Vt;
-  const std::string_view k(kw, kwlen);
-  if (k == "usemtl" || k == "mtllib") return ObjKeyword::Grouping;
-  return ObjKeyword::Other;
-}
-
 // Step 1, read: every line of [p, end), in order, into `s` and the arrays.
 template <bool kPlaced>
 void read_lines(const char* p, const char* const end, const std::string& name, ObjChunk& s, ObjArrays& a) {
@@ -339,66 +318,6 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
     p = eol + 1;
   }
   s.read.lines = line - s.at.lines;
-}
-
-// Step 1 in parallel, the counting pass: how many v, vt, vn, faces, corners and lines [p, end)
-// holds, by the tokens read_lines will read (a face's corners are its tokens before a comment).
-// Malformed lines are counted as tokens here and refused by read_lines with their line number.
-// What the counting pass tells apart: is_space's bytes, the line feed, `#`, anything else.
-enum class CharClass : unsigned char { Other, Space, LineFeed, Hash };
-constexpr std::array<CharClass, 256> make_char_class() {
-  std::array<CharClass, 256> t{};
-  for (int c = 0; c < 256; ++c)
-    t[std::size_t(c)] = c == '\n' ? CharClass::LineFeed : c == '#' ? CharClass::Hash : is_space(char(c)) ? CharClass::Space : CharClass::Other;
-  return t;
-}
-constexpr std::array<CharClass, 256> kCharClass = make_char_class();
-
-ObjCounts count_lines(const char* p, const char* const end) {
-  ObjCounts c;
-  auto line_feed = [end](const char* q) {
-    if (q == end || *q == '\n') return q;
-    const void* lf = std::memchr(q, '\n', std::size_t(end - q));
-    return lf ? static_cast<const char*>(lf) : end;
-  };
-  while (p < end) {
-    ++c.lines;
-    const char* q = skip_spaces(p, end);
-    if (!at_line_end(q, end) && *q != '#') {
-      const char* kw = q;
-      while (q < end && !is_space_or_newline(*q)) ++q;
-      switch (obj_keyword(kw, std::size_t(q - kw))) {
-        case ObjKeyword::V: ++c.v; break;
-        case ObjKeyword::Vn: ++c.vn; break;
-        case ObjKeyword::Vt: ++c.vt; break;
-        case ObjKeyword::F: {  // its tokens up to the line feed or a comment: one scan, no search
-          // A token starts where a byte that is not a space follows a space; a `#` starting a
-          // token starts a comment (read_f's rule). Byte classes from a table: one load a byte.
-          std::size_t n = 0;
-          bool after_space = true;
-          for (; q < end; ++q) {
-            const CharClass k = kCharClass[static_cast<unsigned char>(*q)];
-            if (k == CharClass::LineFeed || (k == CharClass::Hash && after_space)) break;
-            n += after_space && k != CharClass::Space;
-            after_space = k == CharClass::Space;
-          }
-          if (n > 0) {
-            ++c.faces;
-            c.corners += n;
-          }
-          break;
-        }
-        case ObjKeyword::Grouping:
-        case ObjKeyword::L:
-        case ObjKeyword::P:
-        case ObjKeyword::Other: break;
-      }
-    }
-    const char* eol = line_feed(q);
-    if (eol == end) break;
-    p = eol + 1;
-  }
-  return c;
 }
 
 // What the chunks gathered, merged in file order into one ObjLines for the build steps.
@@ -556,48 +475,63 @@ void read_one_pass(std::string_view bytes, const std::string& name, ObjLines& s,
 // indices and checking ranges against the elements defined before it in the whole file; what the
 // chunks gathered besides the arrays is merged in file order. The first error in file order is
 // the one raised, with its line number, as in one pass.
-void read_all_lines(std::string_view bytes, const std::string& name, const ObjReadOptions& options, ObjLines& s,
+void read_all_lines(std::string_view text, const std::string& name, const ObjReadOptions& options, ObjLines& s,
                     ProgressCursor& progress) {
   Mesh& mesh = s.mesh;
   ObjArrays arrays{mesh, s.normals, s.tex};
   const std::size_t threads = usable_threads();
   std::size_t target = options.chunk_bytes;
-  if (target == 0) target = threads > 1 && bytes.size() >= kParallelMinBytes ? std::max(kChunkMinBytes, bytes.size() / (4 * threads)) : bytes.size();
-  std::vector<std::size_t> starts = chunk_starts(bytes, std::max<std::size_t>(target, 1));
-  std::size_t n = starts.size() - 1;
+  if (target == 0) target = threads > 1 && text.size() >= kParallelMinBytes ? std::max(kChunkMinBytes, text.size() / (4 * threads)) : text.size();
+  target = std::max<std::size_t>(target, 1);
+  // CR, LF, CRLF, mixed: all LF before any line is read. Text without a CR is read as it is (the
+  // counting pass looks for CRs in every chunk at once); text with one is converted (a copy) and
+  // counted again.
+  std::optional<LineEndings> lf_text;
+  std::string_view bytes = text;
+  auto to_lf = [&] {
+    if (lf_text) return;
+    lf_text.emplace(text);
+    bytes = lf_text->lf();
+  };
   // OBJ is text: a NUL byte means binary data (another format, or garbage), not lines to skip.
-  // Looked for before any line is read, in every chunk at once when there are several.
-  std::vector<const char*> nul(n, nullptr);
-  auto find_nul = [&](std::size_t i) {
-    nul[i] = static_cast<const char*>(std::memchr(bytes.data() + starts[i], '\0', starts[i + 1] - starts[i]));
-  };
+  // Looked for before any line is read (by the counting pass when there are several chunks).
   auto refuse_nul = [&] {
-    for (const char* at : nul)
-      if (at)
-        fail(name, 1 + std::size_t(std::count(bytes.data(), at, '\n')), "binary data (a NUL byte) in an OBJ file: not a text mesh");
+    const char* at = static_cast<const char*>(std::memchr(bytes.data(), '\0', bytes.size()));
+    if (at) fail(name, 1 + std::size_t(std::count(bytes.data(), at, '\n')), "binary data (a NUL byte) in an OBJ file: not a text mesh");
   };
-  std::vector<ObjCounts> counts(n);
-  if (n == 1) {
-    find_nul(0);
-    refuse_nul();
-  } else {
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-      find_nul(i);
-      counts[i] = count_lines(bytes.data() + starts[i], bytes.data() + starts[i + 1]);
+  std::vector<std::size_t> starts;
+  std::vector<ObjCounts> counts;
+  bool in_chunks = target < text.size();
+  while (in_chunks) {
+    starts = chunk_starts(bytes, target);
+    counts.assign(starts.size() - 1, ObjCounts{});
+    if (counts.size() < 2) {
+      in_chunks = false;
+      break;
+    }
+    tbb::parallel_for(std::size_t(0), counts.size(), [&](std::size_t i) {
+      counts[i] = count_obj_statements(bytes.data() + starts[i], bytes.data() + starts[i + 1]);
     });
-    refuse_nul();
+    if (lf_text || std::none_of(counts.begin(), counts.end(), [](const ObjCounts& c) { return c.cr; })) break;
+    to_lf();  // counted again: the converted text has no CR
+  }
+  if (in_chunks) {
+    if (std::any_of(counts.begin(), counts.end(), [](const ObjCounts& c) { return c.nul; })) refuse_nul();
     std::size_t v = 0, corners = 0;
     for (const ObjCounts& c : counts) {
       v += c.v;
       corners += c.corners;
     }
     // Beyond 32-bit indices: the one pass stops at the line where the count overflows.
-    if (v > std::numeric_limits<std::uint32_t>::max() || corners > std::numeric_limits<std::uint32_t>::max() - 1) n = 1;
+    if (v > std::numeric_limits<std::uint32_t>::max() || corners > std::numeric_limits<std::uint32_t>::max() - 1) in_chunks = false;
   }
-  if (n == 1) {
+  if (!in_chunks) {
+    to_lf();
+    refuse_nul();
     read_one_pass(bytes, name, s, progress);
     return;
   }
+  const std::size_t n = counts.size();
   std::vector<ObjChunk> chunks(n);
   ObjCounts total;
   for (std::size_t i = 0; i < n; ++i) {
@@ -616,11 +550,15 @@ void read_all_lines(std::string_view bytes, const std::string& name, const ObjRe
   populate_in_parallel(mesh.positions.data(), 3 * total.v);
   populate_in_parallel(mesh.corner_vertex.data(), total.corners);
   populate_in_parallel(mesh.face_start.data(), total.faces + 1);
-  mesh.positions.resize(3 * total.v);
-  mesh.corner_vertex.resize(total.corners);
-  mesh.face_start.resize(total.faces + 1);
-  s.normals.resize(3 * total.vn);
-  s.tex.resize(3 * total.vt);
+  // std::vector zero-fills what resize() adds: the arrays side by side, one per thread, not one
+  // after another.
+  tbb::parallel_invoke([&] { mesh.positions.resize(3 * total.v); },
+                       [&] {
+                         mesh.corner_vertex.resize(total.corners);
+                         mesh.face_start.resize(total.faces + 1);
+                         s.normals.resize(3 * total.vn);
+                         s.tex.resize(3 * total.vt);
+                       });
   std::vector<std::exception_ptr> errors(n);
   std::vector<char> miscounted(n, 0);
   std::mutex progress_mutex;  // the cursor is serial: chunks report their bytes as they finish
@@ -762,10 +700,8 @@ Mesh read_obj(std::string_view file_bytes, const std::string& name, ReadInfo& in
 
 Mesh read_obj(std::string_view file_bytes, const std::string& name, ReadInfo& info, const ObjReadOptions& options) {
   refuse_utf16(file_bytes, name);
-  const LineEndings lines(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
-  const std::string_view bytes = lines.lf();
   ObjLines s;
-  read_all_lines(bytes, name, options, s, info.progress);
+  read_all_lines(skip_utf8_bom(file_bytes), name, options, s, info.progress);
   validate_lines(s, name);
   build_corner_normals(s, info);
   build_texcoords(s);

@@ -9,7 +9,9 @@
 // (OpenSubdiv's shapes write `f v/vt/vn` with neither) is ignored, counted in one note, as assimp
 // does; an index beyond a pool that does have entries is still an error naming the line.
 // Reading in parallel: files of 4 MiB or more are cut into chunks at line feeds; a counting pass
-// gives each chunk the number of v, vt, vn, faces, corners and lines before it, then every chunk is
+// (io/engine/obj_statement_counts.h: bit masks of 64-byte blocks, which also find CR and NUL bytes:
+// text with a CR is converted to LF and counted again, a NUL refused with its line) gives each
+// chunk the number of v, vt, vn, faces, corners and lines before it, then every chunk is
 // parsed into its place in the mesh's arrays at once, relative (negative) indices and ranges
 // resolved against the whole file's counts; grouping statements, colours and per-corner vn/vt are
 // merged in file order. The mesh is the same bit for bit as one pass gives, and so is the error
