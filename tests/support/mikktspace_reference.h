@@ -2,8 +2,8 @@
 // mikktspace.c built to WebAssembly, run by tests/normals/mikktspace_reference.js under node) for
 // the tests that check tangents against it (tests/normals/tangents.cpp, tests/gltf/gltf_tangents.cpp).
 //
-// mikktspace_reference_dir(): the npm prefix in the build tree (the tests' working directory),
-//   installed on first use under flock(1), since two test executables may ask at once; empty when
+// mikktspace_reference_dir(): the npm prefix in the build tree (tests/ of the build directory,
+//   wherever the test executable is started from), installed on first use under flock(1), since two test executables may ask at once; empty when
 //   node, npm or the registry is missing (the caller skips loudly).
 // mikktspace_reference(corners, scratch): the reference's frames of unindexed triangles.
 //   Input:  8 floats per triangle corner (px py pz nx ny nz u v), 3 corners per triangle
@@ -26,9 +26,7 @@ namespace shadetool_test {
 
 inline std::string mikktspace_reference_dir() {
   static const std::string dir = [] {
-    char cwd[4096];
-    if (!::getcwd(cwd, sizeof cwd)) return std::string();
-    const std::string prefix = std::string(cwd) + "/mikktspace-node";
+    const std::string prefix = std::string(SHADETOOL_TEST_BINARY_DIR) + "/mikktspace-node";
     struct stat st;
     if (::stat((prefix + "/node_modules/mikktspace").c_str(), &st) != 0) {
       if (std::system("command -v node > /dev/null && command -v npm > /dev/null && command -v flock > /dev/null") != 0)
