@@ -3,11 +3,13 @@
 // notes and the same first error (file and line) as the one pass; relative (negative) indices and
 // the statements whose meaning depends on order (o, g, s, usemtl, mtllib, colours, partial vt/vn)
 // cross chunk boundaries.
+#include <cstdio>
 #include <cstring>
 #include <random>
 
 #include <tbb/task_arena.h>
 
+#include <shadetool/files/mesh_files.h>
 #include <shadetool/io/obj_format.h>
 
 #include "io_test_util.h"
@@ -249,5 +251,37 @@ TEST_CASE("OBJ in chunks: mutated files (bytes inserted, deleted, replaced) read
     }
     INFO("text: '" << text << "'");
     require_chunk_independent(text, {1, 3, 16});
+  }
+}
+
+TEST_CASE("OBJ in chunks from a mapped file: pages released behind the parser do not change the mesh", "[obj][parallel]") {
+  // read_mesh maps a file of 1 MiB or more; above 4 MiB on two threads it is read in chunks and
+  // every chunk's pages are released once it is parsed (io/file_bytes.h release_mapped_pages).
+  // The mesh must equal the one pass over the same text held in a string (no mapping); so must a
+  // file whose last line makes the chunked read fall back to the one pass (`1/ 2`: counting and
+  // reading split it differently) after chunks were parsed and their pages released.
+  ScratchDir dir;
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> coord(-1, 1);
+  std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 1\n";
+  char line[128];
+  while (text.size() < (std::size_t(6) << 20)) {
+    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\nf -1 -2 -3\n", coord(rng), coord(rng), coord(rng));
+    text += line;
+  }
+  for (const bool fallback : {false, true}) {
+    INFO((fallback ? "with" : "without") << " a `1/ 2` corner at the end");
+    const std::string bytes = fallback ? text + "f 1/ 2 2/1 3/1\n" : text;
+    const std::string path = dir / (fallback ? "fallback.obj" : "plain.obj");
+    write_file(path, bytes);
+    const Read one = read_with(bytes, 0, 1);
+    REQUIRE(one.error.empty());
+    for (int threads : {1, 2}) {
+      INFO(threads << " threads");
+      Mesh m;
+      tbb::task_arena arena(threads);
+      arena.execute([&] { m = read_mesh(path); });
+      require_same_mesh(m, one.mesh);
+    }
   }
 }

@@ -8,6 +8,10 @@
 //          zero-filled first. A mapped file that another process truncates while it is being
 //          parsed raises SIGBUS, as with any mmap-based reader (ripgrep, git); it does not
 //          happen to files that are only read or replaced by rename, as shadetool writes them.
+//          A mapping is released page table by page table: with more than one thread the
+//          threads drop its pages in 2 MiB blocks at once (madvise MADV_DONTNEED) before the
+//          munmap, and a reader may drop the pages of what it has parsed as it goes
+//          (release_mapped_pages).
 // Errors (shadetool::Error, `PATH: what`): missing file, a directory, unreadable, empty file.
 #pragma once
 
@@ -33,6 +37,15 @@ class FileBytes {
 
  private:
   friend FileBytes read_file_bytes(const std::string& path);
+
+// A reader done with [begin, end) of a file's bytes (a chunk parsed on a worker thread) lets the
+// process drop the whole pages inside it now, in parallel with the other chunks, instead of all of
+// them in the one-threaded munmap when the FileBytes goes away (bench/io/results.md). Only pages of
+// a live mapping read_file_bytes made are dropped (madvise MADV_DONTNEED on a private read-only
+// file mapping: the bytes stay readable, a later read faults them in again from the page cache);
+// bytes anywhere else (a buffer, a converted copy, a string) are left alone. Never changes what
+// the bytes read as.
+void release_mapped_pages(const char* begin, const char* end) noexcept;
   std::unique_ptr<char[]> owned_;
   char* data_ = nullptr;
   std::size_t size_ = 0;
@@ -40,6 +53,15 @@ class FileBytes {
 };
 
 FileBytes read_file_bytes(const std::string& path);
+
+// A reader done with [begin, end) of a file's bytes (a chunk parsed on a worker thread) lets the
+// process drop the whole pages inside it now, in parallel with the other chunks, instead of all of
+// them in the one-threaded munmap when the FileBytes goes away (bench/io/results.md). Only pages of
+// a live mapping read_file_bytes made are dropped (madvise MADV_DONTNEED on a private read-only
+// file mapping: the bytes stay readable, a later read faults them in again from the page cache);
+// bytes anywhere else (a buffer, a converted copy, a string) are left alone. Never changes what
+// the bytes read as.
+void release_mapped_pages(const char* begin, const char* end) noexcept;
 
 }  // namespace shadetool::io
 #pragma GCC visibility pop
