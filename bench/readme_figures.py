@@ -213,15 +213,29 @@ def fit(args):
 
 
 def tangents(args):
-    txt = run(["bash", "bench/normals/tangents.sh"])
+    # Three processes, the median of their ratios: a process's tangents time is bimodal on this VM
+    # (43-48 ms, or 61-79 ms when the kernel zeroes its fresh pages: clear_page_erms 17% of the
+    # samples in perf), while the corner normals' is not; one process would quote either mode.
     src = "bench/normals/results/tangents.md"
-    m = re.search(r"tangents / normals: (\d+(?:\.\d+)?)x", txt + open(os.path.join(SRC, src)).read())
-    out = [judged("tangents.over_normals", "tangents", "MikkTSpace tangents / angle-weighted corner normals, same mesh, 1 thread",
-                  float(m.group(1)) if m else None, 3, src, higher_is_better=False)]
-    ours = re.search(r"MikkTSpace tangents \(ours\) \| (\d+(?:\.\d+)?)", txt)
-    npm = re.search(r"npm mikktspace[^|]*\| (\d+(?:\.\d+)?)", txt)
-    out.append(Figure("tangents.npm", "tangents", "npm `mikktspace` (the reference, WebAssembly) time / ours",
-                      ratio(float(npm.group(1)) / float(ours.group(1))) if ours and npm else "not measured", "", "", src))
+    ratios, ours_ms, npm_ms = [], [], []
+    for _ in range(3):
+        txt = run(["bash", "bench/normals/tangents.sh"])
+        txt += open(os.path.join(SRC, src)).read()
+        m = re.search(r"tangents / normals: (\d+(?:\.\d+)?)x", txt)
+        if m:
+            ratios.append(float(m.group(1)))
+        ours = re.search(r"MikkTSpace tangents \(ours\) \| (\d+(?:\.\d+)?)", txt)
+        npm = re.search(r"npm mikktspace[^|]*\| (\d+(?:\.\d+)?)", txt)
+        if ours:
+            ours_ms.append(float(ours.group(1)))
+        if npm:
+            npm_ms.append(float(npm.group(1)))
+    med = lambda xs: sorted(xs)[len(xs) // 2] if xs else None
+    out = [judged("tangents.over_normals", "tangents",
+                  "MikkTSpace tangents / angle-weighted corner normals, same mesh, 1 thread (median of 3 processes)",
+                  med(ratios), 3, src, higher_is_better=False)]
+    out.append(Figure("tangents.npm", "tangents", "npm `mikktspace` (the reference, WebAssembly) time / ours (medians of 3 processes)",
+                      ratio(med(npm_ms) / med(ours_ms)) if ours_ms and npm_ms else "not measured", "", "", src))
     return out
 
 
