@@ -345,6 +345,24 @@ inline bool closed_triangle_ring8(std::uint32_t v, const FanCorner* fan, std::ui
 #endif
 }
 
+// The end of link_small_fan and link_fan16: to[i] is the corner that corner i's leaving edge links
+// to (kNoLink: none), links how many are linked. When all d are, to is a permutation (each far
+// vertex is left and reached once), and one cycle through all d corners is one group: true. Else
+// the links unite their corners in parent: false.
+inline bool one_ring_or_unite(const std::uint32_t* to, std::uint32_t d, std::uint32_t links, std::uint32_t* parent) {
+  if (links == d) {
+    std::uint32_t k = 0, steps = 0;
+    do {
+      k = to[k];
+      ++steps;
+    } while (k != 0 && steps <= d);
+    if (steps == d) return true;
+  }
+  for (std::uint32_t i = 0; i < d; ++i)
+    if (to[i] != kNoLink) union_find_unite(parent, i, to[i]);
+  return false;
+}
+
 // Linking the corners of vertex v (corners[0 .. d), ascending; local index i) across its smooth
 // manifold edges: edge {v, w} joins corners i and j when exactly two edge ends at v lead to w, one
 // leaving v (corner i, next vertex w) and one arriving (corner j, previous vertex w), both in valid
@@ -375,19 +393,7 @@ bool link_small_fan(std::uint32_t v, const FanCorner* fan, std::uint32_t d, cons
       ++links;
     }
   }
-  if (links == d) {
-    // Every corner has its leaving edge linked, to distinct corners (each far vertex is left and
-    // reached once): to is a permutation. One cycle through all d corners is one group.
-    std::uint32_t k = 0, steps = 0;
-    do {
-      k = to[k];
-      ++steps;
-    } while (k != 0 && steps <= d);
-    if (steps == d) return true;
-  }
-  for (std::uint32_t i = 0; i < d; ++i)
-    if (to[i] != kNoLink) union_find_unite(parent, i, to[i]);
-  return false;
+  return one_ring_or_unite(to, d, links, parent);
 }
 
 // link_small_fan for fans of up to kRingFan corners, the same links and result: each corner's
@@ -409,17 +415,7 @@ bool link_fan16(std::uint32_t v, const FanCorner* fan, std::uint32_t d, const Sm
       ++links;
     }
   }
-  if (links == d) {
-    std::uint32_t k = 0, steps = 0;
-    do {
-      k = to[k];
-      ++steps;
-    } while (k != 0 && steps <= d);
-    if (steps == d) return true;
-  }
-  for (std::uint32_t i = 0; i < d; ++i)
-    if (to[i] != kNoLink) union_find_unite(parent, i, to[i]);
-  return false;
+  return one_ring_or_unite(to, d, links, parent);
 }
 
 // Large fans (a pole, a cone apex): the edge ends as one 64-bit key each: far vertex (high 32

@@ -5,6 +5,8 @@
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 
+#include <shadetool/render/engine/perspective_barycentrics_lanes.h>
+
 namespace shadetool::render_engine {
 
 namespace {
@@ -12,29 +14,21 @@ namespace {
 __attribute__((target("avx2"))) int gouraud_run_avx2(const Vec3d corner_rgb[3], const double inv_w[3],
                                                      const double* lambda1, const double* lambda2, int n,
                                                      double inv_samples, float* out) {
-  const __m256d one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd(), scale = _mm256_set1_pd(inv_samples);
-  const __m256d iw0 = _mm256_set1_pd(inv_w[0]), iw1 = _mm256_set1_pd(inv_w[1]), iw2 = _mm256_set1_pd(inv_w[2]);
+  const __m256d zero = _mm256_setzero_pd(), scale = _mm256_set1_pd(inv_samples);
+  const __m256d iw[3] = {_mm256_set1_pd(inv_w[0]), _mm256_set1_pd(inv_w[1]), _mm256_set1_pd(inv_w[2])};
   __m256d rgb[3][3];  // rgb[k][c]: corner k's channel c in every lane
   for (int k = 0; k < 3; ++k)
     for (int c = 0; c < 3; ++c) rgb[k][c] = _mm256_set1_pd(corner_rgb[k][c]);
   int i = 0;
   for (; i + 4 <= n; i += 4) {
-    const __m256d l1 = _mm256_loadu_pd(lambda1 + i), l2 = _mm256_loadu_pd(lambda2 + i);
-    const __m256d l0 = _mm256_sub_pd(_mm256_sub_pd(one, l1), l2);
-    // perspective_barycentrics
-    const __m256d m0 = _mm256_mul_pd(l0, iw0), m1 = _mm256_mul_pd(l1, iw1), m2 = _mm256_mul_pd(l2, iw2);
-    const __m256d sum = _mm256_add_pd(_mm256_add_pd(m0, m1), m2);
-    const __m256d positive = _mm256_cmp_pd(sum, zero, _CMP_GT_OQ);
-    const __m256d inv = _mm256_div_pd(one, sum);
-    const __m256d w0 = _mm256_blendv_pd(l0, _mm256_mul_pd(m0, inv), positive);
-    const __m256d w1 = _mm256_blendv_pd(l1, _mm256_mul_pd(m1, inv), positive);
-    const __m256d w2 = _mm256_blendv_pd(l2, _mm256_mul_pd(m2, inv), positive);
+    __m256d w[3];
+    perspective_barycentrics_lanes(_mm256_loadu_pd(lambda1 + i), _mm256_loadu_pd(lambda2 + i), iw, w);
     // blend_vertex_colors, then the box filter's 0 + c and scale, per channel
     alignas(16) float channel[3][4];
     for (int c = 0; c < 3; ++c) {
-      __m256d acc = _mm256_add_pd(zero, _mm256_mul_pd(rgb[0][c], w0));
-      acc = _mm256_add_pd(acc, _mm256_mul_pd(rgb[1][c], w1));
-      acc = _mm256_add_pd(acc, _mm256_mul_pd(rgb[2][c], w2));
+      __m256d acc = _mm256_add_pd(zero, _mm256_mul_pd(rgb[0][c], w[0]));
+      acc = _mm256_add_pd(acc, _mm256_mul_pd(rgb[1][c], w[1]));
+      acc = _mm256_add_pd(acc, _mm256_mul_pd(rgb[2][c], w[2]));
       _mm_store_ps(channel[c], _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_add_pd(zero, acc), scale)));
     }
     for (int k = 0; k < 4; ++k)

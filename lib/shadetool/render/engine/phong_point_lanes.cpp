@@ -7,6 +7,8 @@
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define SHADETOOL_PHONG_LANES 1
 #include <immintrin.h>
+
+#include <shadetool/render/engine/perspective_barycentrics_lanes.h>
 #endif
 
 namespace shadetool::render_engine {
@@ -39,19 +41,11 @@ __attribute__((target("avx2"))) std::size_t phong_points_avx2(const Vec3d corner
                                                                const PointRunOut& out) {
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
   const __m256d lo = _mm256_set1_pd(0x1p-1000), hi = _mm256_set1_pd(0x1p1000);
-  const __m256d iw0 = _mm256_set1_pd(inv_w[0]), iw1 = _mm256_set1_pd(inv_w[1]), iw2 = _mm256_set1_pd(inv_w[2]);
+  const __m256d iw[3] = {_mm256_set1_pd(inv_w[0]), _mm256_set1_pd(inv_w[1]), _mm256_set1_pd(inv_w[2])};
   std::size_t i = 0;
   for (; i + 4 <= count; i += 4) {
-    const __m256d l1 = _mm256_loadu_pd(lambda1 + i), l2 = _mm256_loadu_pd(lambda2 + i);
-    const __m256d l0 = _mm256_sub_pd(_mm256_sub_pd(one, l1), l2);
-    // perspective_barycentrics
-    const __m256d m0 = _mm256_mul_pd(l0, iw0), m1 = _mm256_mul_pd(l1, iw1), m2 = _mm256_mul_pd(l2, iw2);
-    const __m256d sum = _mm256_add_pd(_mm256_add_pd(m0, m1), m2);
-    const __m256d positive = _mm256_cmp_pd(sum, zero, _CMP_GT_OQ);
-    const __m256d inv = _mm256_div_pd(one, sum);
-    const __m256d w[3] = {_mm256_blendv_pd(l0, _mm256_mul_pd(m0, inv), positive),
-                          _mm256_blendv_pd(l1, _mm256_mul_pd(m1, inv), positive),
-                          _mm256_blendv_pd(l2, _mm256_mul_pd(m2, inv), positive)};
+    __m256d w[3];
+    perspective_barycentrics_lanes(_mm256_loadu_pd(lambda1 + i), _mm256_loadu_pd(lambda2 + i), iw, w);
     __m256d p[3], n[3];
     for (int c = 0; c < 3; ++c) {
       p[c] = n[c] = zero;
