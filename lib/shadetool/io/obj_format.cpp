@@ -266,7 +266,8 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
   std::size_t line = s.at.lines;
   // The line feed (or the end) at or after q.
   auto line_feed = [end](const char* q) {
-    if (q == end || *q == '\n') return q;
+    if (q >= end) return end;  // (q > end never happens; said so that the length below is seen positive)
+    if (*q == '\n') return q;
     const void* lf = std::memchr(q, '\n', std::size_t(end - q));
     return lf ? static_cast<const char*>(lf) : end;
   };

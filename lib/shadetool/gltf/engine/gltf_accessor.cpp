@@ -268,7 +268,6 @@ bool accessor_equals(const GltfSource& source, int index, const std::vector<floa
 
 std::vector<std::uint32_t> primitive_corners(const GltfSource& source, int indices, int mode, std::size_t vertices,
                                              const std::string& path, const std::string& name) {
-  const tinygltf::Model& model = source.model;
   std::vector<std::uint32_t> idx;
   if (indices >= 0) {
     idx = accessor_indices(source, indices, name);
