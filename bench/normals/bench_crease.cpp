@@ -12,7 +12,11 @@
 // ours (--no-floor drops them): face_normals (the crease test needs them), the vertex -> corner
 // adjacency alone (count + fill of 4-byte corner ids, the cheapest vertex-major gathering of the
 // fans), and corner_group_normals given corner_normals' own groups (the weighted sums and
-// normalisation alone, the same kernel as vertex_normals). Repetitions interleaved round-robin
+// normalisation alone, the same kernel as vertex_normals); on triangle meshes, with the floor rows,
+// the rows of the "new shape" experiment (crease_new_shape.h: no vertex-major gathering for smooth
+// vertices; one face-order pass with fixed per-vertex slots; its hard vertices are counted, not
+// computed, so those rows are a floor; a line says how many vertices were hard and checks the easy
+// ones' normals against corner_normals bit for bit). Repetitions interleaved round-robin
 // (rep 1 of every row, then rep 2, ...) after one warm-up, inside one TBB arena of 1 thread; medians of wall and process CPU time.
 // The new and old crease outputs are compared bit for bit once per mesh (a mismatch is reported
 // and the exit code is 1).
@@ -37,6 +41,7 @@
 #include "load_average.h"
 #include "support/analytic_meshes.h"
 #include "support/corner_normals_reference.h"
+#include "crease_new_shape.h"
 
 using namespace shadetool;
 using namespace shadetool::testing;
@@ -158,6 +163,31 @@ int main(int argc, char** argv) {
                         gn = corner_group_normals(mesh, groups, num_groups, Weighting::Angle);
                       }, {}, {}});
     }
+    BulkVector<crease_new_shape::Slot> slots;
+    BulkVector<crease_new_shape::SlotB> slots_b;
+    crease_new_shape::Result shape_b;
+    std::vector<double> slot_sums;
+    crease_new_shape::Result shape;
+    if (floor && mesh.all_triangles()) {
+      rows.push_back({"new shape: pass 1, sums only", [&] {
+                        crease_new_shape::run<0>(mesh, crease, 1, slots, slot_sums);
+                      }, {}, {}});
+      rows.push_back({"new shape: pass 1, sums and cone test", [&] {
+                        crease_new_shape::run<1>(mesh, crease, 1, slots, slot_sums);
+                      }, {}, {}});
+      rows.push_back({"new shape: pass 1 (sums, cone, 6 pair slots)", [&] {
+                        shape = crease_new_shape::run(mesh, crease, 1, slots, slot_sums);
+                      }, {}, {}});
+      rows.push_back({"new shape: passes 1-3 (hard vertices left out)", [&] {
+                        shape = crease_new_shape::run(mesh, crease, 3, slots, slot_sums);
+                      }, {}, {}});
+      rows.push_back({"new shape B: pass 1 (S, U, 9 pairs in 128 B)", [&] {
+                        crease_new_shape::run_b<1>(mesh, crease, slots_b);
+                      }, {}, {}});
+      rows.push_back({"new shape B: passes 1-3 (hard vertices left out)", [&] {
+                        shape_b = crease_new_shape::run_b<3>(mesh, crease, slots_b);
+                      }, {}, {}});
+    }
     arena.execute([&] {
       for (int rep = -1; rep < reps; ++rep)
         for (Row& r : rows) {
@@ -179,6 +209,20 @@ int main(int argc, char** argv) {
     for (Row& r : rows)
       std::printf("| %s | %zu | %s | %.2f | %.2f | %.2fx |\n", name.c_str(), mesh.num_faces(), r.name, median(r.wall), median(r.cpu),
                   median(r.cpu) / base);
+    for (const auto* sh : {&shape, &shape_b}) {
+      if (!sh->used) continue;
+      const crease_new_shape::Result& shape = *sh;
+      std::size_t differ = 0, easy = 0;
+      for (std::size_t c = 0; c < mesh.num_corners(); ++c) {
+        const std::uint32_t r = shape.corner_index[c];
+        if (r == ~0u) continue;
+        ++easy;
+        differ += std::memcmp(&shape.normals[3 * std::size_t(r)], &cn.normals[3 * std::size_t(cn.corner_index[c])], 24) != 0;
+      }
+      std::printf("| %s | | new shape: %zu of %zu vertices hard (%.1f%%); %zu easy corners, %zu differ from corner_normals | | | |\n",
+                  name.c_str(), shape.hard, shape.used, 100.0 * double(shape.hard) / double(shape.used), easy, differ);
+      if (differ) status = 1;
+    }
     if (reference && !same_bits(cn, old)) {
       std::printf("| %s | | MISMATCH: corner_normals differs from the frozen copy | | | |\n", name.c_str());
       status = 1;
