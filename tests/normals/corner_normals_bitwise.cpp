@@ -337,3 +337,79 @@ TEST_CASE("corner_normals: the smooth-cone shortcut and the ring paths never cha
       }
     }
 }
+
+namespace {
+
+// The crease angle at which SmoothCone (corner_normals.cpp) starts to accept a vertex whose d unit
+// face normals n_i have spread s = d - |sum n_i| (s < 0.5), margins left out: 2 (1 - cos(alpha)) = s
+// with cos(2 alpha) = cos(t) + 5e-5. Computed here from the closed form, not by the library.
+double cone_flip_threshold(double s) {
+  const double cos_alpha = 1.0 - 0.5 * s, cos_2alpha = 2.0 * cos_alpha * cos_alpha - 1.0;
+  return std::acos(std::max(-1.0, cos_2alpha - 5e-5));
+}
+
+// An apex fan of `sides` triangles: apex at the origin lifted by h, rim on the unit circle at z = 0,
+// rim vertex `lifted` raised by dz (two faces tilt more than the rest).
+Mesh apex_fan(int sides, double h, int lifted, double dz) {
+  Mesh m;
+  m.add_vertex({0.0, 0.0, h});
+  for (int k = 0; k < sides; ++k) {
+    const double a = 2 * kPi * k / sides;
+    m.add_vertex({std::cos(a), std::sin(a), k == lifted ? dz : 0.0});
+  }
+  for (int k = 0; k < sides; ++k)
+    m.add_face({0u, std::uint32_t(1 + k), std::uint32_t(1 + (k + 1) % sides)});
+  m.precision = ValuePrecision::Double;
+  return m;
+}
+
+}  // namespace
+
+// Two triangles hinged on the edge (0, 1) at a dihedral angle phi: both vertices of the hinge have
+// two faces at phi, the case where the cone bound is tight.
+Mesh hinge(double phi) {
+  Mesh m;
+  m.add_vertex({0.0, 0.0, 0.0});
+  m.add_vertex({1.0, 0.0, 0.0});
+  m.add_vertex({0.4, 1.0, 0.0});
+  m.add_vertex({0.7, -std::cos(phi), std::sin(phi)});
+  m.add_face({0u, 1u, 2u});
+  m.add_face({1u, 0u, 3u});
+  m.precision = ValuePrecision::Double;
+  return m;
+}
+
+TEST_CASE("corner_normals: around the smooth-cone test's own limit (the spread of the apex's face normals), "
+          "every verdict equals the frozen crease path",
+          "[corner_normals][reference]") {
+  // The cone test accepts the apex when d - |sum n_i| (plus rounding margins) is below
+  // 2 (1 - cos(alpha)); thresholds swept through a band around the angle where that flips, for
+  // symmetric cones (every face equally tilted), flat fans with one outlier pair of faces and
+  // two-face hinges (where the bound is tight: the shortcut's limit is the crease itself), so that
+  // the shortcut is taken on one side of the band and CreaseTest decides on the other.
+  std::vector<std::pair<std::string, Mesh>> cases;
+  for (int sides : {3, 5, 8, 12, 17, 40})
+    for (double h : {0.0, 0.01, 0.05, 0.2})
+      for (double dz : {0.0, 0.02, 0.1, 0.4})
+        cases.emplace_back("apex fan of " + std::to_string(sides) + ", h " + std::to_string(h) + ", dz " + std::to_string(dz),
+                           apex_fan(sides, h, 0, dz));
+  for (double phi_deg : {1.0, 5.0, 20.0, 29.0, 30.0, 31.0, 45.0, 60.0, 89.0})
+    cases.emplace_back("hinge at " + std::to_string(phi_deg) + " degrees", hinge(phi_deg * kDeg));
+  for (const auto& [what, m] : cases) {
+    const int sides = int(m.num_faces());  // the apex's (or the hinge edge's vertices') corner count
+    const std::vector<double> fn = face_normals(m);
+    double sx = 0, sy = 0, sz = 0;
+    for (std::size_t f = 0; f < m.num_faces(); ++f) {
+      sx += fn[3 * f];
+      sy += fn[3 * f + 1];
+      sz += fn[3 * f + 2];
+    }
+    const double spread = double(sides) - std::sqrt(sx * sx + sy * sy + sz * sz);
+    if (!(spread < 0.5)) continue;
+    const double flip = cone_flip_threshold(spread);
+    for (int j = -40; j <= 40; ++j) check_same(m, flip * (1.0 + 2e-4 * j), Weighting::Angle, Precision::Double, what);
+    for (double a : edge_angles(m, Precision::Double))
+      for (double t : {a, std::nextafter(a, -1.0), std::nextafter(a, 10.0)})
+        check_same(m, t, Weighting::Angle, Precision::Double, what);
+  }
+}

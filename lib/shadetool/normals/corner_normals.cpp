@@ -3,8 +3,9 @@
 // Steps: (1) unit face normals (crease test, degenerate faces; face_normals.h, vectorised for
 // triangles); (2) the fan of every vertex as flat arrays (VertexFans: offsets + one record per
 // corner {corner, face, next vertex, previous vertex}, in ascending corner order), built in two
-// passes in face order (count, fill), the first also running SmoothCone: a vertex whose faces are
-// all valid and within half the crease angle of its first face cannot be split by a crease;
+// passes in face order (count, fill), the first also adding up each vertex's unit face normals for
+// SmoothCone: a vertex whose faces are all valid and whose normals' sum shows them all within half
+// the crease angle of their mean cannot be split by a crease;
 // (3) in parallel over vertices, reading each fan as one sequential run: a cone vertex whose fan
 // is one closed ring (closed_smooth_ring) is one group at once; any other vertex links the two
 // corners across each smooth manifold edge of its fan (link_small_fan: every pair of edge ends
@@ -75,7 +76,7 @@ inline bool has_normal(const double* fn, std::uint32_t f) {
 // count, fill): fan[offset[v] .. offset[v+1]) are the FanCorners of vertex v in ascending corner
 // order. The grouping then reads each vertex's fan as one sequential run instead of fetching every
 // corner's face from anywhere in the face arrays.
-// cone_smooth[v]: every face at v is valid and within half the crease angle of its last one
+// cone_smooth[v]: every face at v is valid and within half the crease angle of their mean normal
 // (SmoothCone), so no crease can split v: its edges are tested for topology only.
 // Scratch in BulkVectors (core/bulk_reserve.h: unzeroed, huge pages): every entry is written.
 constexpr std::uint32_t kFanPadding = 8;  // records after the last fan: ring tests load 8 whatever the fan size
@@ -132,92 +133,113 @@ struct CreaseTest {
   }
 };
 
-// SmoothCone: a sufficient test, face by face, that no crease can split a vertex. Every face at
-// v valid and within an angle alpha of one face's normal r (vertex_fans: the vertex's last face)
-// puts every pair of faces at v
-// within 2 alpha of each other (triangle inequality for angles on the sphere); alpha is chosen
-// so that 2 alpha clears the crease angle by a margin that covers every rounding, so CreaseTest
-// calls each such pair smooth by its fast path: with cos(2 alpha) = cos(crease_angle) + 5e-5 and
-// |n| within 1e-6 of 1 (as CreaseTest assumes; r is that face's normal rounded to float, within
-// 1e-7 of it), a face passes when its computed n . r > cos(alpha) + 1e-5, which gives the true
-// cos of its angle to r above cos(alpha) - 2e-6 - 1e-15 + 1e-5 > cos(alpha); the computed
-// n_a . n_b of two passing faces then exceeds cos(crease_angle) + 5e-5 - 2e-6 - 1e-15 >
-// CreaseTest's `above` (= cos(crease_angle) + 1e-5). Crease_angle >= pi: every edge is smooth,
-// every valid face passes. Negative or NaN crease_angle (every edge a crease) and angles below
-// ~0.6 degrees (cos(crease_angle) + 5e-5 >= 1): no face passes, every vertex is grouped by
-// CreaseTest. A vertex that fails the test is not a crease vertex: it is grouped edge by edge.
+// SmoothCone: a sufficient test, per vertex, that no crease can split it, from two numbers
+// vertex_fans adds up in face order: d, the vertex's corners, and U = sum of their faces' unit
+// normals n_i (face_normals.h, rounded to float; a degenerate face adds NaN, so U is NaN).
+// Why it holds: for unit vectors u_i and m = (sum u_i) / |sum u_i|, sum_i (1 - u_i . m) =
+// d - |sum u_i|, every term >= 0, so any two faces a, b have (1 - cos beta_a) + (1 - cos beta_b)
+// <= d - |sum u_i| (beta: a face's angle to m). When that is below room = 2 (1 - cos alpha) <= 1,
+// each beta < pi/2, where 1 - cos is convex, so (Jensen) 2 (1 - cos((beta_a + beta_b) / 2)) <= room
+// gives beta_a + beta_b < 2 alpha: every pair of faces lies within 2 alpha of each other (triangle
+// inequality for angles on the sphere). (Where 2 (1 - cos alpha) > 1, room = 1 - cos alpha: every
+// face within alpha of m.) alpha is chosen so that 2 alpha clears the crease angle by a margin that
+// covers every rounding, so CreaseTest calls each such pair smooth by its fast path:
+// cos(2 alpha) = cos(crease_angle) + 5e-5, so the true cos between two faces exceeds it, and their
+// computed n_a . n_b (within 4e-7 of it, CreaseTest's bound for |n| within 1e-6 of 1) exceeds
+// cos(crease_angle) + 5e-5 - 4e-7 > CreaseTest's `above` (= cos(crease_angle) + 1e-5).
+// Roundings between the computed U and sum u_i: |n_i - u_i| <= 1e-6 (|n_i| within 1e-6 of 1),
+// float(n_i) adds 2^-24 |n_i| per component (<= 1.1e-7 in length), and the float sum of d terms
+// errs by at most (d - 1) 2^-24 sum_i |float(n_i)|_1 <= 1.1e-7 d^2 in length; so
+// |sum u_i| >= |U| - 1.2e-6 d - 1.1e-7 d^2, and the test asks
+// (d (1 + 2e-6 + 2e-7 d) - (1 - cos alpha))^2 < U . U in double (relative error ~1e-15 in either
+// side, far inside the slack of the margins), i.e. d - |U| + 2e-6 d + 2e-7 d^2 < room. The bound
+// is tight for two faces (d = 2, beta_a = beta_b: accepted up to a pair angle of 2 alpha).
+// Crease_angle >= pi: every edge is smooth, every vertex of valid faces passes (U not NaN).
+// Negative or NaN crease_angle (every edge a crease) and angles below ~0.6 degrees
+// (cos(crease_angle) + 5e-5 >= 1): no vertex passes, every vertex is grouped by CreaseTest.
+// Large fans pass only when the margin (quadratic in d) leaves room: a vertex that fails the test
+// is not a crease vertex: it is grouped edge by edge with the same verdicts.
+// (Until round 4 of issue 31 the test was face by face against the vertex's last face normal: a
+// compare and a select per corner in vertex_fans' fill pass; this one is three adds per corner in
+// its counting pass and one test per vertex. bench/normals/results/notes.md.)
 struct SmoothCone {
-  static constexpr double kAngleMargin = 5e-5, kDotMargin = 1e-5;
-  bool usable = false;
-  double min_dot = 0.0;  // a valid face passes when n . r > min_dot
+  static constexpr double kAngleMargin = 5e-5;
+  bool usable = false, every_valid = false;  // every_valid: crease_angle >= pi
+  double room = 0.0;                         // 2 (1 - cos(alpha)), or 1 - cos(alpha) where that is > 1
 
   explicit SmoothCone(double crease_angle) {
     if (!(crease_angle >= 0.0)) return;
     if (crease_angle >= kPi) {
-      usable = true;
-      min_dot = -std::numeric_limits<double>::infinity();
+      usable = every_valid = true;
       return;
     }
     const double cos_2alpha = std::cos(crease_angle) + kAngleMargin;
     if (!(cos_2alpha < 1.0)) return;
     usable = true;
-    min_dot = std::cos(0.5 * std::acos(cos_2alpha)) + kDotMargin;
+    const double one_face = 1.0 - std::cos(0.5 * std::acos(cos_2alpha));
+    room = 2.0 * one_face <= 1.0 ? 2.0 * one_face : one_face;
+  }
+  // d corners (>= 1) whose unit face normals, rounded to float, sum to (x, y, z) in float.
+  bool passes(std::uint32_t d, float x, float y, float z) const {
+    const double ux = x, uy = y, uz = z, n = d;
+    const double uu = ux * ux + uy * uy + uz * uz;  // NaN when a face is degenerate
+    if (!usable || std::isnan(uu)) return false;
+    if (every_valid) return true;
+    const double lhs = n * (1.0 + 2e-6 + 2e-7 * n) - room;  // > 0: d >= 1 and room < 1
+    return lhs * lhs < uu;
   }
 };
 
 // Vertex fans (VertexFans) in two passes in face order, each touching one 16-byte record per
-// vertex (FanBuild) at every corner: (a) count the corners of each vertex and keep the normal of
-// its last face as its cone axis r (rounded to float); a prefix sum turns the counts into the first
-// slot of each run; (b) fill each vertex's run with its FanCorners and run SmoothCone on every face
-// against r: a face that fails (or is degenerate) sets r.x to NaN, which no later face passes.
-// Neither pass branches on the data.
+// vertex (FanBuild) at every corner: (a) count the corners of each vertex and add up its faces'
+// unit normals (as float; NaN for a degenerate face) for SmoothCone; a prefix sum turns the counts
+// into the first slot of each run, and SmoothCone decides each vertex; (b) fill each vertex's run
+// with its FanCorners. Neither pass branches on the data.
 VertexFans vertex_fans(const MeshView& mesh, const double* fn, const SmoothCone& cone) {
   const std::size_t V = mesh.num_vertices(), F = mesh.num_faces();
   const std::uint32_t* cv = mesh.corner_vertex;
   const bool triangles = mesh.all_triangles();
   struct alignas(16) FanBuild {
-    float x, y, z;    // cone axis; x NaN once a face fails
+    float x, y, z;    // (a) sum of the faces' unit normals, NaN after a degenerate face
     std::uint32_t n;  // (a) corners counted; (b) next free slot of the run
   };
   BulkVector<FanBuild> build(V);
   std::fill(build.begin(), build.end(), FanBuild{0.0f, 0.0f, 0.0f, 0});
-  for (std::size_t f = 0; f < F; ++f) {
-    const FaceCorners fc = face_corners(mesh, triangles, f);
-    const double* n = fn + 3 * f;
-    const float x = float(n[0]), y = float(n[1]), z = float(n[2]);
-    for (std::uint32_t c = fc.begin; c < fc.end; ++c) {
-      FanBuild& b = build[cv[c]];
-      b = {x, y, z, b.n + 1};
-    }
-  }
-  VertexFans vf;
-  vf.offset.resize(V + 1);
-  std::uint32_t slots = 0;
-  for (std::size_t v = 0; v < V; ++v) {
-    vf.offset[v] = slots;
-    slots += build[v].n;
-    build[v].n = vf.offset[v];
-  }
-  vf.offset[V] = slots;
-  vf.fan.resize(mesh.num_corners() + kFanPadding);
-  for (std::size_t k = 0; k < kFanPadding; ++k) vf.fan[mesh.num_corners() + k] = {0, 0, 0, 0};
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (std::size_t f = 0; f < F; ++f) {
     const FaceCorners fc = face_corners(mesh, triangles, f);
     const double* n = fn + 3 * f;
     const bool valid = has_normal(fn, std::uint32_t(f));
+    const float x = valid ? float(n[0]) : nan, y = float(n[1]), z = float(n[2]);
+    for (std::uint32_t c = fc.begin; c < fc.end; ++c) {
+      FanBuild& b = build[cv[c]];
+      b = {b.x + x, b.y + y, b.z + z, b.n + 1};
+    }
+  }
+  VertexFans vf;
+  vf.offset.resize(V + 1);
+  vf.cone_smooth.resize(V);
+  std::uint32_t slots = 0;
+  for (std::size_t v = 0; v < V; ++v) {
+    const FanBuild b = build[v];
+    vf.offset[v] = slots;
+    vf.cone_smooth[v] = b.n != 0 && cone.passes(b.n, b.x, b.y, b.z);
+    slots += b.n;
+    build[v].n = vf.offset[v];
+  }
+  vf.offset[V] = slots;
+  vf.fan.resize(mesh.num_corners() + kFanPadding);
+  for (std::size_t k = 0; k < kFanPadding; ++k) vf.fan[mesh.num_corners() + k] = {0, 0, 0, 0};
+  for (std::size_t f = 0; f < F; ++f) {
+    const FaceCorners fc = face_corners(mesh, triangles, f);
+    const bool valid = has_normal(fn, std::uint32_t(f));
     for (std::uint32_t c = fc.begin; c < fc.end; ++c) {
       const std::uint32_t v = cv[c];
       const std::uint32_t next = valid ? cv[c + 1 < fc.end ? c + 1 : fc.begin] : v;
       const std::uint32_t prev = valid ? cv[c > fc.begin ? c - 1 : fc.end - 1] : v;
-      FanBuild& b = build[v];
-      vf.fan[b.n++] = {c, std::uint32_t(f), next, prev};
-      const bool inside = valid & (n[0] * double(b.x) + n[1] * double(b.y) + n[2] * double(b.z) > cone.min_dot);
-      b.x = inside ? b.x : nan;
+      vf.fan[build[v].n++] = {c, std::uint32_t(f), next, prev};
     }
   }
-  vf.cone_smooth.resize(V);
-  for (std::size_t v = 0; v < V; ++v) vf.cone_smooth[v] = cone.usable && !std::isnan(build[v].x);
   return vf;
 }
 
