@@ -187,6 +187,9 @@ int main(int argc, char** argv) {
       rows.push_back({"new shape B: passes 1-3 (hard vertices left out)", [&] {
                         shape_b = crease_new_shape::run_b<3>(mesh, crease, slots_b);
                       }, {}, {}});
+      rows.push_back({"new shape B: passes 1-3 with the ring test skipped", [&] {
+                        crease_new_shape::run_b<4>(mesh, crease, slots_b);
+                      }, {}, {}});
     }
     arena.execute([&] {
       for (int rep = -1; rep < reps; ++rep)
