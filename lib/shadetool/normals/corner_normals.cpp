@@ -556,7 +556,7 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
   auto same_group = [&](std::uint32_t fa, std::uint32_t fb) {
     return fa != fb && (!face_group || (face_group[fa] == face_group[fb] && face_group[fa] != 0));
   };
-  auto smooth = [&](std::uint32_t fa, std::uint32_t fb) {
+  auto smooth = [&](std::uint32_t fa, std::uint32_t fb) __attribute__((always_inline)) {
     auto normal = [&](std::uint32_t f) { return Vec3d{fn[3 * std::size_t(f)], fn[3 * std::size_t(f) + 1], fn[3 * std::size_t(f) + 2]}; };
     return same_group(fa, fb) && crease.smooth(normal(fa), normal(fb));
   };
