@@ -151,7 +151,7 @@ struct CreaseTest {
 // float(n_i) adds 2^-24 |n_i| per component (<= 1.1e-7 in length), and the float sum of d terms
 // errs by at most (d - 1) 2^-24 sum_i |float(n_i)|_1 <= 1.1e-7 d^2 in length; so
 // |sum u_i| >= |U| - 1.2e-6 d - 1.1e-7 d^2, and the test asks
-// (d (1 + 2e-6 + 2e-7 d) - (1 - cos alpha))^2 < U . U in double (relative error ~1e-15 in either
+// (d (1 + 2e-6 + 2e-7 d) - room)^2 < U . U in double (relative error ~1e-15 in either
 // side, far inside the slack of the margins), i.e. d - |U| + 2e-6 d + 2e-7 d^2 < room. The bound
 // is tight for two faces (d = 2, beta_a = beta_b: accepted up to a pair angle of 2 alpha).
 // Crease_angle >= pi: every edge is smooth, every vertex of valid faces passes (U not NaN).
