@@ -164,7 +164,9 @@ namespace crease_new_shape {
 // slot with up to 9 (next, prev) pairs. Afterwards, with m = U / |U|: sum_i (1 - u_i . m) =
 // d - |U| for unit u_i, every term >= 0, so every face is within alpha of m when d - |U| (plus a
 // rounding margin) < 1 - cos(alpha) -- SmoothCone's alpha: every pair of faces then lies within
-// 2 alpha, which CreaseTest's fast path calls smooth.
+// 2 alpha, which CreaseTest's fast path calls smooth. (The library's SmoothCone allows twice that
+// room by a sharper argument, corner_normals.cpp; here the simpler bound, which only makes a few
+// more vertices hard.)
 constexpr std::uint32_t kSlotPairsB = 9;
 struct alignas(64) SlotB {
   double s[3], u[3];
