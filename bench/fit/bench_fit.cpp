@@ -60,6 +60,7 @@ std::vector<double> bake(const Mesh& mesh, const Scene& scene, int samples) {
   fit.samples = samples;
   fit.solve.upper = 1;  // 8-bit, as bake-lighting writes it
   fit.solve.accuracy = kEightBitFitAccuracy;
+  fit.measure_error = false;  // as bake-lighting without --stats or --json (the table's error is measured apart)
   return fit_vertex_lighting(mesh, scene, point, {}, {}, fit).rgb;
 }
 

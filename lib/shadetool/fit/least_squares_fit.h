@@ -143,6 +143,9 @@ struct VertexFitOptions {
   VertexFit method = VertexFit::Point;
   int samples = 3;  // quadrature points per triangle (fit/triangle_quadrature.h)
   LeastSquaresFitOptions solve;
+  // The fitted and point-sampled errors (relative_l2_error, two passes over the points) are
+  // measured only when asked for (the CLI: --stats or --json); false: both reported as NaN.
+  bool measure_error = true;
 };
 
 struct LeastSquaresFit {

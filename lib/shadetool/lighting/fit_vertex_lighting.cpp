@@ -2,6 +2,7 @@
 #include <shadetool/lighting/fit_vertex_lighting.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 #include <tbb/blocked_range.h>
@@ -94,6 +95,10 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb, 3, fit.solve);
   out.rgb = std::move(out.solve.values);
   out.solve.values.clear();
+  if (!fit.measure_error) {
+    out.error_fit = out.error_point = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
   out.error_fit = relative_l2_error(q, f, out.rgb, 3);
   std::vector<double> point_clamped = point.rgb;  // as written: the same bounds as the fit's
   for (double& v : point_clamped) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
