@@ -317,7 +317,7 @@ TEST_CASE("Corner groups: a node per side of a crease keeps the discontinuity", 
   const FitElements e = fit_elements(m, corner_node, 6);
   const FitQuadrature q = fit_quadrature(e, m.positions, 3);
   std::vector<double> f(q.size());
-  for (std::size_t s = 0; s < q.size(); ++s) f[s] = q.face[s] == 0 ? 0.25 : 0.75;  // a step at the shared edge
+  for (std::size_t s = 0; s < q.size(); ++s) f[s] = q.point(s).face == 0 ? 0.25 : 0.75;  // a step at the shared edge
   const LeastSquaresFit fit = least_squares_fit(e, m.positions, q, f, std::vector<double>(6, 0.0), 1, {});
   for (int n = 0; n < 3; ++n) CHECK(fit.values[n] == Approx(0.25).epsilon(1e-9));
   for (int n = 3; n < 6; ++n) CHECK(fit.values[n] == Approx(0.75).epsilon(1e-9));
@@ -338,7 +338,7 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     const std::vector<double> at_sites = site_values_at_points(q3, interpolate_vertex_data_at_sites(q3, mesh.positions, 3), 3);
     CHECK(at_points == at_sites);
     std::vector<int> points_per_site(q3.sites(), 0);
-    for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site[s]];
+    for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site_of(s)];
     CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
     // f given once per site is f at every point of the site: the same fit and error, bit for bit
     std::vector<double> f_sites(q3.sites()), point(mesh.num_vertices());
