@@ -39,14 +39,27 @@ std::vector<double> lighting_at_sites(const Mesh& mesh, const Scene& scene, cons
   const PointLighting lit = prepare_point_lighting(scene, options.model);
   const std::size_t S = q.sites();
   std::vector<double> f(3 * S);
-  if (!shadows.enabled) {  // p and n interpolated where they are shaded: no arrays of them
+  if (!shadows.enabled) {  // p and n interpolated where they are shaded, a block at a time: no arrays of them
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, S, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
       ShadeCounters counters;  // the point bake reports the counts; these are not summed
-      for (std::size_t s = r.begin(); s < r.end(); ++s) {
-        double p[3], n[3];  // n renormalised by shade_point
-        interpolate_vertex_data_at_site(q, s, positions_world.data(), 3, p);
-        interpolate_vertex_data_at_site(q, s, normals_world.data(), 3, n);
-        set3(f, s, shade_point(lit, Vec3d(p[0], p[1], p[2]), Vec3d(n[0], n[1], n[2]), &counters));
+      constexpr std::size_t kBlock = 64;
+      double soa[6][kBlock];  // px, py, pz, nx, ny, nz
+      for (std::size_t begin = r.begin(); begin < r.end(); begin += kBlock) {
+        const std::size_t count = std::min(kBlock, r.end() - begin);
+        for (std::size_t i = 0; i < count; ++i) {
+          double p[3], n[3];  // n renormalised by shade_point_block
+          interpolate_vertex_data_at_site(q, begin + i, positions_world.data(), 3, p);
+          interpolate_vertex_data_at_site(q, begin + i, normals_world.data(), 3, n);
+          for (int k = 0; k < 3; ++k) {
+            soa[k][i] = p[k];
+            soa[3 + k][i] = n[k];
+          }
+        }
+        PointBlock block;  // shade_point's bits, four points at a time where the CPU allows
+        block.count = count;
+        block.px = soa[0], block.py = soa[1], block.pz = soa[2];
+        block.nx = soa[3], block.ny = soa[4], block.nz = soa[5];
+        shade_point_block(lit, block, &f[3 * begin], &counters);
       }
     });
     return f;
