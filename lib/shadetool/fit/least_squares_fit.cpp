@@ -100,6 +100,7 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     const std::uint32_t local[3] = {0, 1, 2};
     rule_midpoints = rule_midpoints || midpoint_edge(local, r.barycentric.data(), 3, lo, hi);
   }
+  if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
   std::vector<std::uint64_t> key(S, ~std::uint64_t(0));  // (lo, hi) of a midpoint; all ones: none
   std::size_t midpoints = 0;
   q.for_each_point([&](std::size_t p, const std::uint32_t*, const std::uint32_t* vertex, const double* phi, int corners,
@@ -187,7 +188,8 @@ void apply_operator(const FitOperator& A, const double* x, double* y, std::size_
   }
 }
 
-// The elements' M (and lambda R) as FitOperator, M's diagonal, R's edge counts in `fit`. The
+// The elements' M (and lambda R) as FitOperator, M's diagonal (only with lambda > 0: otherwise it
+// is A.diagonal), R's edge counts in `fit`. The
 // triangles are the quadrature's (those of positive area, in element order).
 void build_fit_operator(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
                         double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
@@ -230,8 +232,8 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
       reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
     }
   }
+  if (!(lambda > 0)) return;  // M's diagonal is A's
   mass_diagonal = A.diagonal;
-  if (!(lambda > 0)) return;
 
   // R: the interior edges (exactly two triangles of positive area), found by sorting the sides.
   struct Side {
@@ -291,19 +293,19 @@ struct BlockCgOptions {
 // Jacobi-preconditioned conjugate gradient (Hestenes & Stiefel; the loop of Eigen's
 // ConjugateGradient) on W channels at once (W = 1 or 3): one operator pass per step serves all
 // channels, each with its own step lengths and its own stop. x: #nodes by W, the first guess in,
-// the solution out; rows in off_system stay 0. Counts into fit (iterations: operator passes, the
+// the solution out; rows in off_system stay 0. b_then_r: b in, the residual after (its memory is
+// the residual's: one array fewer to fault in). Counts into fit (iterations: operator passes, the
 // most over channels; residual: the largest relative residual; converged).
 template <std::size_t W>
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
-                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b_in,
+                              const std::vector<std::uint32_t>& off_system, double* b_then_r,
                               const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
-  std::vector<double> r_v(n), p_v(n), Ap_v(n);
-  double* const r = r_v.data();
+  std::vector<double> p_v(n), Ap_v(n);
+  double* const r = b_then_r;
   double* const p = p_v.data();
   double* const Ap = Ap_v.data();
-  const double* const b = b_in.data();
   const double* const inv_d = inverse_diagonal.data();
   const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
   const auto apply = [&](const double* in, double* out) {
@@ -318,8 +320,9 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   apply(x, Ap);
   for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
     for (std::size_t k = 0; k < W; ++k) {
-      r[i + k] = b[i + k] - Ap[i + k];
-      rhs2[k] += b[i + k] * b[i + k];
+      const double bi = r[i + k];
+      r[i + k] = bi - Ap[i + k];
+      rhs2[k] += bi * bi;
       res2[k] += r[i + k] * r[i + k];
       if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
     }
@@ -382,12 +385,12 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   }
 }
 
-// Widths other than 1 and 3: one channel at a time.
+// Widths other than 1 and 3: one channel at a time. b: overwritten (the residual).
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
-                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b,
+                              const std::vector<std::uint32_t>& off_system, std::vector<double>& b,
                               std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
-  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, o, x.data(), fit);
-  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b, o, x.data(), fit);
+  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
+  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
   const std::size_t N = inverse_diagonal.size();
   std::vector<double> bk(N), xk(N);
   for (std::size_t k = 0; k < width; ++k) {
@@ -395,7 +398,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       bk[i] = b[i * width + k];
       xk[i] = x[i * width + k];
     }
-    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk, o, xk.data(), fit);
+    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk.data(), o, xk.data(), fit);
     for (std::size_t i = 0; i < N; ++i) x[i * width + k] = xk[i];
   }
 }
@@ -455,24 +458,31 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
   q.rule = triangle_quadrature(samples);
   const std::size_t T = e.tri_face.size();
   q.element_triangles = T;
+  // The areas in place, then the triangles of positive area kept (all of them, the common case: copies).
+  q.tri_area.resize(T);
   std::size_t kept = 0;
-  std::vector<double> area(T);
   for (std::size_t t = 0; t < T; ++t) {
-    area[t] = triangle_area(positions, &e.tri_vertex[3 * t]);
-    kept += area[t] > 0;  // no area, no part of the integral
+    q.tri_area[t] = triangle_area(positions, &e.tri_vertex[3 * t]);
+    kept += q.tri_area[t] > 0;  // no area, no part of the integral
   }
-  q.tri_node.resize(3 * kept);
-  q.tri_vertex.resize(3 * kept);
-  q.tri_area.resize(kept);
-  q.tri_face.resize(kept);
-  for (std::size_t t = 0, j = 0; t < T; ++t) {
-    if (!(area[t] > 0)) continue;
-    for (int i = 0; i < 3; ++i) {
-      q.tri_node[3 * j + i] = e.tri_node[3 * t + i];
-      q.tri_vertex[3 * j + i] = e.tri_vertex[3 * t + i];
+  if (kept == T) {
+    q.tri_node = e.tri_node;
+    q.tri_vertex = e.tri_vertex;
+    q.tri_face = e.tri_face;
+  } else {
+    q.tri_node.resize(3 * kept);
+    q.tri_vertex.resize(3 * kept);
+    q.tri_face.resize(kept);
+    for (std::size_t t = 0, j = 0; t < T; ++t) {
+      if (!(q.tri_area[t] > 0)) continue;
+      for (int i = 0; i < 3; ++i) {
+        q.tri_node[3 * j + i] = e.tri_node[3 * t + i];
+        q.tri_vertex[3 * j + i] = e.tri_vertex[3 * t + i];
+      }
+      q.tri_area[j] = q.tri_area[t];  // j <= t: in place
+      q.tri_face[j++] = e.tri_face[t];
     }
-    q.tri_area[j] = area[t];
-    q.tri_face[j++] = e.tri_face[t];
+    q.tri_area.resize(kept);
   }
   const int g = quad_gauss_points(samples);
   const std::vector<GaussPoint> gauss = gauss_legendre_unit(g);
@@ -592,7 +602,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     if (A.diagonal[i] > 0) {
       inverse_diagonal[i] = 1 / A.diagonal[i];  // divisor checked
       if (regularized && mass_diagonal[i] > 0) inverse_mass[i] = 1 / mass_diagonal[i];  // divisor checked
-      min_mass = std::min(min_mass, mass_diagonal[i]);
+      min_mass = std::min(min_mass, regularized ? mass_diagonal[i] : A.diagonal[i]);
     } else {
       off_system.push_back(std::uint32_t(i));
       ++fit.fallback_nodes;

@@ -31,10 +31,13 @@ std::vector<double> lighting_at_sites(const Mesh& mesh, const Scene& scene, cons
                                       const std::vector<double>& positions_world,
                                       const std::vector<double>& vertex_normals_object, const ShadeOptions& options,
                                       const ShadowOptions& shadows, ShadowStats* shadow_stats) {
+  // The normals into the world (not copied when the placement is the identity: the same bits).
+  const bool placed = !is_identity(scene.world_from_object);
   const Mat3d cof = signed_cofactor(scene.world_from_object.A);
-  std::vector<double> normals_world(vertex_normals_object.size());
-  for (std::size_t v = 0; v < vertex_normals_object.size() / 3; ++v)
-    set3(normals_world, v, Vec3d(transform_normal(cof, Normal3d(get3(vertex_normals_object, v)))));
+  std::vector<double> normals_placed(placed ? vertex_normals_object.size() : 0);
+  for (std::size_t v = 0; v < normals_placed.size() / 3; ++v)
+    set3(normals_placed, v, Vec3d(transform_normal(cof, Normal3d(get3(vertex_normals_object, v)))));
+  const std::vector<double>& normals_world = placed ? normals_placed : vertex_normals_object;
   // f at each site (shared edge midpoints once)
   const PointLighting lit = prepare_point_lighting(scene, options.model);
   const std::size_t S = q.sites();
@@ -95,7 +98,10 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
       return out;
     case VertexFit::LeastSquares: break;
   }
-  const std::vector<double> positions_world = world_positions(mesh, scene);
+  // World positions (the mesh's own when the placement is the identity: the same bits, no copy).
+  const bool placed = !is_identity(scene.world_from_object);
+  const std::vector<double> positions_placed = placed ? world_positions(mesh, scene) : std::vector<double>();
+  const std::vector<double>& positions_world = placed ? positions_placed : mesh.positions;
   const FitElements elements = fit_elements(mesh);
   const FitQuadrature q = fit_quadrature(elements, positions_world, fit.samples);
   out.quadrature_points = q.size();
