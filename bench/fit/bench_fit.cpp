@@ -378,6 +378,27 @@ int main(int argc, char** argv) {
     std::printf("elements %.3f ms, quadrature %.3f ms\n", median(t_el), median(t_q));
     return 0;
   }
+  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N: least_squares_fit alone, N times (10k torus, studio)
+    const Mesh mesh = testing::torus(100, 50, 1.0, 0.4).mesh;
+    const Scene scene = read_scene(src + "/data/scenes/studio.json");
+    const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+    const std::vector<double> world = world_positions(mesh, scene);
+    const FitElements e = fit_elements(mesh);
+    const FitQuadrature q = fit_quadrature(e, world, std::atoi(argv[3]));
+    const std::vector<double> f = clamped(lighting_at_sites(mesh, scene, q, world, point.vertex_normals, {}, {}));
+    LeastSquaresFitOptions o;
+    o.upper = 1;
+    o.accuracy = kEightBitFitAccuracy;
+    std::vector<double> t;
+    int iterations = 0;
+    for (int k = 0; k < std::atoi(argv[4]); ++k) {
+      const double t0 = cpu_ms();
+      iterations = least_squares_fit(e, world, q, f, point.rgb, 3, o).iterations;
+      t.push_back(cpu_ms() - t0);
+    }
+    std::printf("least_squares_fit %.3f ms (median of %zu, process CPU), %d CG iterations\n", median(t), t.size(), iterations);
+    return 0;
+  }
   if (mode == "errors") return errors(src, argc > 3 ? std::size_t(std::atoll(argv[3])) : 20000);
   if (mode == "breakdown")
     return breakdown(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000,
