@@ -124,3 +124,30 @@ TEST_CASE("Shadow edge on a ground plane: the fitted error is below the point er
   WARN("ground plane, shadow edge: relative L2 error, least squares " << e.fit << ", point " << e.point);
   CHECK(e.fit < e.point);
 }
+
+TEST_CASE("Skipping the error measure (no --stats) leaves the fitted colours bit for bit", "[lighting][fit]") {
+  // Truth: the same fit with the errors measured; the errors are NaN when not measured and finite
+  // (the fit's below the point colours') when they are.
+  const Mesh mesh = shadetool::testing::icosphere(2).mesh;
+  Scene scene = dark_scene(ShadingModel::Phong);  // the highlight of the sphere test above
+  scene.material.diffuse = {0.6, 0.6, 0.6};
+  scene.material.specular = {0.5, 0.5, 0.5};
+  scene.material.shininess = 40;
+  scene.lights.push_back(point_light({2.5, 1.5, 3}));
+  scene.camera_from_world = camera_at({0, 0, 4});
+  scene.has_camera = true;
+  const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+  VertexFitOptions fit;
+  fit.method = VertexFit::LeastSquares;
+  fit.solve.upper = 1;
+  fit.solve.accuracy = kEightBitFitAccuracy;
+  const VertexLightingFit measured = fit_vertex_lighting(mesh, scene, point, {}, {}, fit);
+  fit.measure_error = false;
+  const VertexLightingFit quiet = fit_vertex_lighting(mesh, scene, point, {}, {}, fit);
+  CHECK(quiet.rgb == measured.rgb);
+  CHECK(quiet.solve.iterations == measured.solve.iterations);
+  CHECK(std::isnan(quiet.error_fit));
+  CHECK(std::isnan(quiet.error_point));
+  CHECK(std::isfinite(measured.error_fit));
+  CHECK(measured.error_fit < measured.error_point);
+}
