@@ -267,7 +267,7 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
       shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
       // --fit least-squares (lighting/fit_vertex_lighting.h): the point colours replaced by the fit.
       if (fit_method(fit) == shadetool::VertexFit::LeastSquares && set.frequency == shadetool::ShadingFrequency::PerVertex) {
-        shadetool::VertexFitOptions vfit = vertex_fit_options(fit);
+        shadetool::VertexFitOptions vfit = vertex_fit_options(fit, io);
         if (!set.hdr) {  // 8-bit: [0, 1], and the solve to a quarter of a step
           vfit.solve.upper = 1;
           vfit.solve.accuracy = shadetool::kEightBitFitAccuracy;

@@ -133,9 +133,10 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
     if (colors) io.result_attributes.push_back(per_face ? &shadetool::FormatAttributes::face_colors : &shadetool::FormatAttributes::vertex_colors);
     if (quality) io.result_attributes.push_back(&shadetool::FormatAttributes::quality);
     io.result_name = std::string(colors && quality ? "grey colours and quality" : colors ? "grey colours" : "quality") + " per " + opt.per;
+    const shadetool::VertexFitOptions fit_options = vertex_fit_options(fit, io);
     return run_command(
         "occlusion", io,
-        [base_options = options, per_face, colors, quality, unlit = opt.unlit, linear = opt.linear, srgb = opt.srgb, fit, to_error, least_squares, error_options](
+        [base_options = options, per_face, colors, quality, unlit = opt.unlit, linear = opt.linear, srgb = opt.srgb, fit, fit_options, to_error, least_squares, error_options](
             shadetool::Mesh& mesh, const std::string& input, FileResult& r) {
           shadetool::AmbientOcclusionOptions options = base_options;
           options.progress = r.progress;
@@ -155,7 +156,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
             const std::size_t index = std::size_t(r.gltf - r.gltf_document->primitives.data());
             shadetool::GltfOcclusionMethod method;  // --error, --fit least-squares: per primitive, in world space
             if (to_error) method.to_error = error_options;
-            if (least_squares) method.fit = vertex_fit_options(fit);
+            if (least_squares) method.fit = fit_options;
             const auto& scene = r.gltf_document_state->get_or_make<shadetool::GltfSceneOcclusion>(
                 [&](shadetool::GltfSceneOcclusion& made) {
                   made = shadetool::gltf_scene_occlusion(*r.gltf_document, per_face, options,
@@ -203,7 +204,7 @@ RegisterCommand reg("occlusion", HelpSection::Shade, [](CLI::App& app) -> std::f
             shadetool::OcclusionFit lsq = scene_fit ? *scene_fit
                                                     : shadetool::fit_occlusion(mesh, job.ao.open_fraction, options,
                                                                                to_error ? &error_options : nullptr,
-                                                                               vertex_fit_options(fit), input);
+                                                                               fit_options, input);
             job.ao.open_fraction = std::move(lsq.open_fraction);
             report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
             r.stats["fit_rays"] = lsq.rays;

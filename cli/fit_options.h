@@ -45,12 +45,14 @@ inline shadetool::VertexFit fit_method(const FitCliOptions& o) {
   return shadetool::parse_vertex_fit(o.method).value_or(shadetool::VertexFit::Point);  // checked by IsMember
 }
 
-// The library's options of a least-squares fit (no clamp: each caller sets its bounds).
-inline shadetool::VertexFitOptions vertex_fit_options(const FitCliOptions& o) {
+// The library's options of a least-squares fit (no clamp: each caller sets its bounds). The errors
+// are measured only for --stats and --json, the only outputs that show them.
+inline shadetool::VertexFitOptions vertex_fit_options(const FitCliOptions& o, const IoOptions& io) {
   shadetool::VertexFitOptions v;
   v.method = fit_method(o);
   v.samples = o.samples;
   v.solve.regularization = o.regularization;
+  v.measure_error = io.stats || io.json;
   return v;
 }
 

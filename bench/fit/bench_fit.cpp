@@ -60,6 +60,7 @@ std::vector<double> bake(const Mesh& mesh, const Scene& scene, int samples) {
   fit.samples = samples;
   fit.solve.upper = 1;  // 8-bit, as bake-lighting writes it
   fit.solve.accuracy = kEightBitFitAccuracy;
+  fit.measure_error = false;  // as bake-lighting without --stats or --json (the table's error is measured apart)
   return fit_vertex_lighting(mesh, scene, point, {}, {}, fit).rgb;
 }
 
@@ -186,10 +187,10 @@ int errors(const std::string& src, std::size_t max_triangles) {
       for (bool eight_bit : {true, false}) {
         const std::vector<double> f = eight_bit ? clamped(f_raw) : f_raw;
         double saturated = 0, area = 0;
-        for (std::size_t k = 0; k < ref.size(); ++k) {
-          area += ref.weight[k];
-          if (std::max({f[3 * k], f[3 * k + 1], f[3 * k + 2]}) >= 1) saturated += ref.weight[k];
-        }
+        ref.for_each_point([&](std::size_t k, const std::uint32_t*, const std::uint32_t*, const double*, int, double w) {
+          area += w;
+          if (std::max({f[3 * k], f[3 * k + 1], f[3 * k + 2]}) >= 1) saturated += w;
+        });
         const double e_point = relative_l2_error(ref, f, eight_bit ? clamped(point.rgb) : point.rgb, 3);
         std::printf("| torus %zuk tri | %s | %s | %.5f |", mesh.num_faces() / 1000, name, eight_bit ? "8-bit" : "HDR", e_point);
         double e0 = 0;
@@ -224,16 +225,18 @@ std::vector<double> box_fit(const FitElements& e, const FitQuadrature& q, const 
                             std::vector<double> c, double& kkt) {
   const std::size_t N = e.nodes;
   std::vector<double> b(3 * N, 0.0), d(N, 0.0), g(3 * N);
-  for (std::size_t s = 0; s < q.size(); ++s)
-    for (int j = 0; j < 4; ++j)
-      for (int k = 0; k < 3; ++k) b[3 * q.node[4 * s + j] + k] += q.weight[s] * q.phi[4 * s + j] * f[3 * s + k];
-  for (std::size_t t = 0; t < e.tri_face.size(); ++t)
-    for (int i = 0; i < 3; ++i) d[e.tri_node[3 * t + i]] += q.triangle_area[t] / 6;
+  q.for_each_point([&](std::size_t s, const std::uint32_t* node, const std::uint32_t*, const double* phi, int corners,
+                       double w) {
+    for (int j = 0; j < corners; ++j)
+      for (int k = 0; k < 3; ++k) b[3 * node[j] + k] += w * phi[j] * f[3 * s + k];
+  });
+  for (std::size_t t = 0; t < q.tri_area.size(); ++t)
+    for (int i = 0; i < 3; ++i) d[q.tri_node[3 * t + i]] += q.tri_area[t] / 6;
   const auto gradient = [&]() {  // g = M c - b
     for (std::size_t i = 0; i < 3 * N; ++i) g[i] = -b[i];
-    for (std::size_t t = 0; t < e.tri_face.size(); ++t) {
-      const std::uint32_t* n = &e.tri_node[3 * t];
-      const double a = q.triangle_area[t] / 12;
+    for (std::size_t t = 0; t < q.tri_area.size(); ++t) {
+      const std::uint32_t* n = &q.tri_node[3 * t];
+      const double a = q.tri_area[t] / 12;
       for (int k = 0; k < 3; ++k) {
         const double sum = c[3 * n[0] + k] + c[3 * n[1] + k] + c[3 * n[2] + k];
         for (int i = 0; i < 3; ++i) g[3 * n[i] + k] += a * (c[3 * n[i] + k] + sum);
@@ -373,6 +376,27 @@ int main(int argc, char** argv) {
       t_q.push_back(cpu_ms() - t0);
     }
     std::printf("elements %.3f ms, quadrature %.3f ms\n", median(t_el), median(t_q));
+    return 0;
+  }
+  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N: least_squares_fit alone, N times (10k torus, studio)
+    const Mesh mesh = testing::torus(100, 50, 1.0, 0.4).mesh;
+    const Scene scene = read_scene(src + "/data/scenes/studio.json");
+    const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+    const std::vector<double> world = world_positions(mesh, scene);
+    const FitElements e = fit_elements(mesh);
+    const FitQuadrature q = fit_quadrature(e, world, std::atoi(argv[3]));
+    const std::vector<double> f = clamped(lighting_at_sites(mesh, scene, q, world, point.vertex_normals, {}, {}));
+    LeastSquaresFitOptions o;
+    o.upper = 1;
+    o.accuracy = kEightBitFitAccuracy;
+    std::vector<double> t;
+    int iterations = 0;
+    for (int k = 0; k < std::atoi(argv[4]); ++k) {
+      const double t0 = cpu_ms();
+      iterations = least_squares_fit(e, world, q, f, point.rgb, 3, o).iterations;
+      t.push_back(cpu_ms() - t0);
+    }
+    std::printf("least_squares_fit %.3f ms (median of %zu, process CPU), %d CG iterations\n", median(t), t.size(), iterations);
     return 0;
   }
   if (mode == "errors") return errors(src, argc > 3 ? std::size_t(std::atoll(argv[3])) : 20000);

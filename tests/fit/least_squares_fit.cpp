@@ -317,7 +317,7 @@ TEST_CASE("Corner groups: a node per side of a crease keeps the discontinuity", 
   const FitElements e = fit_elements(m, corner_node, 6);
   const FitQuadrature q = fit_quadrature(e, m.positions, 3);
   std::vector<double> f(q.size());
-  for (std::size_t s = 0; s < q.size(); ++s) f[s] = q.face[s] == 0 ? 0.25 : 0.75;  // a step at the shared edge
+  for (std::size_t s = 0; s < q.size(); ++s) f[s] = q.point(s).face == 0 ? 0.25 : 0.75;  // a step at the shared edge
   const LeastSquaresFit fit = least_squares_fit(e, m.positions, q, f, std::vector<double>(6, 0.0), 1, {});
   for (int n = 0; n < 3; ++n) CHECK(fit.values[n] == Approx(0.25).epsilon(1e-9));
   for (int n = 3; n < 6; ++n) CHECK(fit.values[n] == Approx(0.75).epsilon(1e-9));
@@ -338,7 +338,7 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     const std::vector<double> at_sites = site_values_at_points(q3, interpolate_vertex_data_at_sites(q3, mesh.positions, 3), 3);
     CHECK(at_points == at_sites);
     std::vector<int> points_per_site(q3.sites(), 0);
-    for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site[s]];
+    for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site_of(s)];
     CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
     // f given once per site is f at every point of the site: the same fit and error, bit for bit
     std::vector<double> f_sites(q3.sites()), point(mesh.num_vertices());
@@ -355,6 +355,63 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     for (int samples : {1, 6, 12}) {  // interior points: each its own site
       const FitQuadrature q = fit_quadrature(e, mesh.positions, samples);
       CHECK(q.sites() == q.size());
+    }
+  }
+}
+
+TEST_CASE("The compact quadrature integrates 1 and x over a planar mesh exactly, and skips triangles of no area",
+          "[fit][quadrature]") {
+  // Truth: the unit square [0, 2] x [0, 1] (area 2, integral of x = 2), as a triangle fan on the
+  // left half (with a zero-area triangle of three collinear vertices in it) and one planar quad on
+  // the right; every rule is exact for degree 1 on triangles, the quads' 2x2 and 3x3 Gauss rules
+  // for degree 3 in u and v (their 1x1 is not: left out). Each stored point's record (point(p))
+  // must agree with what for_each_point visits, and no point may lie on the zero-area face.
+  Mesh m;
+  m.add_vertex({0, 0, 0});      // 0
+  m.add_vertex({1, 0, 0});      // 1
+  m.add_vertex({1, 1, 0});      // 2
+  m.add_vertex({0, 1, 0});      // 3
+  m.add_vertex({0.3, 0.6, 0});  // 4 (interior)
+  m.add_vertex({2, 0, 0});      // 5
+  m.add_vertex({2, 1, 0});      // 6
+  m.add_vertex({0.5, 0, 0});    // 7 (on the bottom edge: 0, 7, 1 collinear)
+  m.add_face({0, 7, 4});
+  m.add_face({7, 1, 4});
+  m.add_face({1, 2, 4});
+  m.add_face({2, 3, 4});
+  m.add_face({3, 0, 4});
+  m.add_face({0, 1, 7});  // zero area: 0, 1, 7 on one line
+  m.add_face({1, 5, 6, 2});
+  const FitElements e = fit_elements(m);
+  for (int samples : {1, 3, 6, 12}) {
+    const FitQuadrature q = fit_quadrature(e, m.positions, samples);
+    const std::size_t R = triangle_quadrature(samples).size();
+    CHECK(q.triangle_points() == 5 * R);  // the zero-area triangle has no points
+    double area = 0, moment = 0;
+    std::size_t visited = 0;
+    bool records_agree = true;
+    q.for_each_point([&](std::size_t p, const std::uint32_t* node, const std::uint32_t* vertex, const double* phi,
+                         int corners, double weight) {
+      const FitPoint rec = q.point(p);
+      records_agree = records_agree && rec.corners == corners && rec.weight == weight && rec.face != 5;
+      double x = 0;
+      for (int j = 0; j < corners; ++j) {
+        records_agree = records_agree && rec.node[j] == node[j] && rec.vertex[j] == vertex[j] && rec.phi[j] == phi[j];
+        x += phi[j] * m.position(vertex[j]).x;
+      }
+      if (samples == 1 && corners == 4) return;  // the 1x1 Gauss point is exact for degree 1 only
+      area += weight;
+      moment += weight * x;
+      ++visited;
+    });
+    CHECK(records_agree);
+    CHECK(visited == (samples == 1 ? q.triangle_points() : q.size()));
+    if (samples == 1) {  // triangles only: the left half
+      CHECK(area == Approx(1.0).epsilon(1e-14));
+      CHECK(moment == Approx(0.5).epsilon(1e-14));
+    } else {
+      CHECK(area == Approx(2.0).epsilon(1e-14));
+      CHECK(moment == Approx(2.0).epsilon(1e-14));
     }
   }
 }

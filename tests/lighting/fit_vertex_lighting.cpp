@@ -3,6 +3,7 @@
 // the error is not the fit's own objective; and the case where both must agree (f linear).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <shadetool/lighting/fit_vertex_lighting.h>
@@ -29,16 +30,25 @@ Errors errors_of(const Mesh& mesh, const Scene& scene, bool shadows_on, const st
   const VertexLightingFit lsq = fit_vertex_lighting(mesh, scene, point, {}, shadows, fit);
   const std::vector<double> world = world_positions(mesh, scene);
   const FitElements e = fit_elements(mesh);
-  FitQuadrature q = fit_quadrature(e, world, 12);
-  if (only_faces) {  // keep the points of the listed faces (their weights zeroed elsewhere)
-    for (std::size_t s = 0; s < q.size(); ++s) {
-      bool keep = false;
-      for (std::uint32_t f : *only_faces) keep = keep || q.face[s] == f;
-      if (!keep) q.weight[s] = 0;
-    }
-  }
+  const FitQuadrature q = fit_quadrature(e, world, 12);
   const std::vector<double> f = lighting_at_quadrature(mesh, scene, q, world, point.vertex_normals, {}, shadows);
-  return {relative_l2_error(q, f, lsq.rgb, 3), relative_l2_error(q, f, point.rgb, 3)};
+  if (!only_faces) return {relative_l2_error(q, f, lsq.rgb, 3), relative_l2_error(q, f, point.rgb, 3)};
+  // The same relative L2 distance over the points of the listed faces only.
+  const auto error_over_faces = [&](const std::vector<double>& rgb) {
+    double num = 0, den = 0;
+    for (std::size_t s = 0; s < q.size(); ++s) {
+      const FitPoint p = q.point(s);
+      if (std::find(only_faces->begin(), only_faces->end(), p.face) == only_faces->end()) continue;
+      for (int k = 0; k < 3; ++k) {
+        double g = 0;
+        for (int j = 0; j < p.corners; ++j) g += p.phi[j] * rgb[3 * p.node[j] + k];
+        num += p.weight * (g - f[3 * s + k]) * (g - f[3 * s + k]);
+        den += p.weight * f[3 * s + k] * f[3 * s + k];
+      }
+    }
+    return den > 0 ? std::sqrt(num / den) : 0.0;  // divisor checked
+  };
+  return {error_over_faces(lsq.rgb), error_over_faces(point.rgb)};
 }
 
 }  // namespace
@@ -113,4 +123,31 @@ TEST_CASE("Shadow edge on a ground plane: the fitted error is below the point er
   const Errors e = errors_of(m, scene, true, &ground);
   WARN("ground plane, shadow edge: relative L2 error, least squares " << e.fit << ", point " << e.point);
   CHECK(e.fit < e.point);
+}
+
+TEST_CASE("Skipping the error measure (no --stats) leaves the fitted colours bit for bit", "[lighting][fit]") {
+  // Truth: the same fit with the errors measured; the errors are NaN when not measured and finite
+  // (the fit's below the point colours') when they are.
+  const Mesh mesh = shadetool::testing::icosphere(2).mesh;
+  Scene scene = dark_scene(ShadingModel::Phong);  // the highlight of the sphere test above
+  scene.material.diffuse = {0.6, 0.6, 0.6};
+  scene.material.specular = {0.5, 0.5, 0.5};
+  scene.material.shininess = 40;
+  scene.lights.push_back(point_light({2.5, 1.5, 3}));
+  scene.camera_from_world = camera_at({0, 0, 4});
+  scene.has_camera = true;
+  const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+  VertexFitOptions fit;
+  fit.method = VertexFit::LeastSquares;
+  fit.solve.upper = 1;
+  fit.solve.accuracy = kEightBitFitAccuracy;
+  const VertexLightingFit measured = fit_vertex_lighting(mesh, scene, point, {}, {}, fit);
+  fit.measure_error = false;
+  const VertexLightingFit quiet = fit_vertex_lighting(mesh, scene, point, {}, {}, fit);
+  CHECK(quiet.rgb == measured.rgb);
+  CHECK(quiet.solve.iterations == measured.solve.iterations);
+  CHECK(std::isnan(quiet.error_fit));
+  CHECK(std::isnan(quiet.error_point));
+  CHECK(std::isfinite(measured.error_fit));
+  CHECK(measured.error_fit < measured.error_point);
 }

@@ -69,62 +69,73 @@ bool edge_kink(const Vec3d& pa, const Vec3d& pb, const Vec3d& pw1, const Vec3d& 
   return true;
 }
 
-// q.site and q.site_point (least_squares_fit.h, Sites). An edge midpoint is a point with exactly
-// two weights of 1/2; its key is its two vertices (lower, higher), bucketed by the lower one
-// (counts, offsets, entries in point order: two passes, no map), and it joins the site of the first
-// point with the same key. V: the vertex count.
+// Whether a point with these corners and weights is the midpoint of an edge: exactly two weights
+// of 1/2 (the rest 0) on two distinct vertices; its key (lo, hi) is the two vertices, lower first.
+bool midpoint_edge(const std::uint32_t* vertex, const double* phi, int corners, std::uint32_t& lo, std::uint32_t& hi) {
+  std::uint32_t ends[2];
+  int halves = 0;
+  for (int j = 0; j < corners; ++j) {
+    if (phi[j] == 0) continue;
+    if (phi[j] != 0.5 || halves == 2) return false;
+    ends[halves++] = vertex[j];
+  }
+  if (halves != 2 || ends[0] == ends[1]) return false;
+  lo = std::min(ends[0], ends[1]);
+  hi = std::max(ends[0], ends[1]);
+  return true;
+}
+
+// q.site and q.site_point (least_squares_fit.h, Sites). A midpoint's key is its edge's two
+// vertices; keys are bucketed by the lower vertex (counts, offsets, entries in point order: two
+// passes, no map), and a midpoint joins the site of the first point with the same key. When no
+// point is a midpoint (the 1-, 6- and 12-point rules, quads' Gauss points) both stay empty:
+// every point its own site. V: the vertex count.
 void assign_sites(FitQuadrature& q, std::size_t V) {
   const std::size_t S = q.size();
-  q.site.assign(S, 0);
+  q.site.clear();
   q.site_point.clear();
-  q.site_point.reserve(S);
-  const auto midpoint_edge = [&q](std::size_t s, std::uint32_t& lo, std::uint32_t& hi) {
-    std::uint32_t ends[2];
-    int halves = 0;
-    for (int j = 0; j < 4; ++j) {
-      const double phi = q.phi[4 * s + j];
-      if (phi == 0) continue;
-      if (phi != 0.5 || halves == 2) return false;
-      ends[halves++] = q.vertex[4 * s + j];
-    }
-    if (halves != 2 || ends[0] == ends[1]) return false;
-    lo = std::min(ends[0], ends[1]);
-    hi = std::max(ends[0], ends[1]);
-    return true;
-  };
-  std::uint32_t lo = 0, hi = 0;
-  std::size_t midpoints = 0;
-  for (std::size_t s = 0; s < S; ++s) midpoints += midpoint_edge(s, lo, hi);
-  if (midpoints == 0) {  // every point its own site
-    for (std::size_t s = 0; s < S; ++s) {
-      q.site[s] = std::uint32_t(s);
-      q.site_point.push_back(std::uint32_t(s));
-    }
-    return;
+  bool rule_midpoints = false;  // a triangle rule point with two weights of 1/2
+  for (const QuadraturePoint& r : q.rule) {
+    std::uint32_t lo = 0, hi = 0;
+    const std::uint32_t local[3] = {0, 1, 2};
+    rule_midpoints = rule_midpoints || midpoint_edge(local, r.barycentric.data(), 3, lo, hi);
   }
+  if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
+  std::vector<std::uint64_t> key(S, ~std::uint64_t(0));  // (lo, hi) of a midpoint; all ones: none
+  std::size_t midpoints = 0;
+  q.for_each_point([&](std::size_t p, const std::uint32_t*, const std::uint32_t* vertex, const double* phi, int corners,
+                       double) {
+    if (corners == 3 && !rule_midpoints) return;
+    std::uint32_t lo = 0, hi = 0;
+    if (!midpoint_edge(vertex, phi, corners, lo, hi)) return;
+    key[p] = (std::uint64_t(lo) << 32) | hi;
+    ++midpoints;
+  });
+  if (midpoints == 0) return;  // every point its own site
+  q.site.assign(S, 0);
+  q.site_point.reserve(S);
   std::vector<std::uint32_t> offset(V + 1, 0);
-  for (std::size_t s = 0; s < S; ++s)
-    if (midpoint_edge(s, lo, hi)) ++offset[lo + 1];
+  for (std::size_t p = 0; p < S; ++p)
+    if (key[p] != ~std::uint64_t(0)) ++offset[(key[p] >> 32) + 1];
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
-  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_point(offset[V]);
-  for (std::size_t s = 0; s < S; ++s)
-    if (midpoint_edge(s, lo, hi)) {
-      entry_hi[fill[lo]] = hi;
-      entry_point[fill[lo]++] = std::uint32_t(s);
-    }
-  for (std::size_t s = 0; s < S; ++s) {
-    std::size_t first = s;
-    if (midpoint_edge(s, lo, hi))
+  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1), entry_point(offset[V]);
+  for (std::size_t p = 0; p < S; ++p)
+    if (key[p] != ~std::uint64_t(0)) entry_point[fill[key[p] >> 32]++] = std::uint32_t(p);
+  for (std::size_t p = 0; p < S; ++p) {
+    std::size_t first = p;
+    if (key[p] != ~std::uint64_t(0)) {
+      const std::size_t lo = key[p] >> 32;
       for (std::uint32_t k = offset[lo]; k < offset[lo + 1]; ++k)
-        if (entry_hi[k] == hi) {
+        if (key[entry_point[k]] == key[p]) {
           first = entry_point[k];  // entries are in point order: the first match is the earliest
           break;
         }
-    if (first == s) {
-      q.site[s] = std::uint32_t(q.site_point.size());
-      q.site_point.push_back(std::uint32_t(s));
+    }
+    if (first == p) {
+      q.site[p] = std::uint32_t(q.site_point.size());
+      q.site_point.push_back(std::uint32_t(p));
     } else {
-      q.site[s] = q.site[first];
+      q.site[p] = q.site[first];
     }
   }
 }
@@ -133,8 +144,8 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
 // assembling a sparse matrix: each CG step is one pass over the elements, and building the
 // matrix (Eigen's setFromTriplets) cost more than the whole solve (bench/fit/results.md).
 struct FitOperator {
-  const std::uint32_t* tri_node = nullptr;  // 3 per triangle (the elements')
-  const double* tri_area = nullptr;         // 1 per triangle (the quadrature's; 0: left out)
+  const std::uint32_t* tri_node = nullptr;  // 3 per triangle of positive area (the quadrature's)
+  const double* tri_area = nullptr;         // 1 per triangle of positive area
   std::size_t triangles = 0;
   std::vector<std::uint32_t> quad_node;  // 4 per quad with mass
   std::vector<double> quad_mass;         // 16 per quad: its 4 x 4 block of M
@@ -177,23 +188,25 @@ void apply_operator(const FitOperator& A, const double* x, double* y, std::size_
   }
 }
 
-// The elements' M (and lambda R) as FitOperator, M's diagonal, R's edge counts in `fit`.
-void build_fit_operator(const FitElements& e, const std::vector<double>& positions, const std::vector<double>& areas,
+// The elements' M (and lambda R) as FitOperator, M's diagonal (only with lambda > 0: otherwise it
+// is A.diagonal), R's edge counts in `fit`. The
+// triangles are the quadrature's (those of positive area, in element order).
+void build_fit_operator(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
                         double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
-  const std::size_t N = e.nodes, T = e.tri_face.size();
+  const std::size_t N = e.nodes, T = q.tri_area.size();
   A.diagonal.assign(N, 0.0);
-  A.tri_node = e.tri_node.data();
-  A.tri_area = areas.data();
+  A.tri_node = q.tri_node.data();
+  A.tri_area = q.tri_area.data();
   A.triangles = T;
   std::vector<RegTriangle> reg;
   if (lambda > 0) reg.reserve(T + 2 * e.quad_face.size());
   // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
   for (std::size_t t = 0; t < T; ++t) {
-    const std::uint32_t* n = &e.tri_node[3 * t];
-    const double area = areas[t];
+    const std::uint32_t* n = &q.tri_node[3 * t];
+    const double area = q.tri_area[t];
     if (!(area > 0)) continue;
     for (int i = 0; i < 3; ++i) A.diagonal[n[i]] += area / 6;
-    if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {e.tri_vertex[3 * t], e.tri_vertex[3 * t + 1], e.tri_vertex[3 * t + 2]}});
+    if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {q.tri_vertex[3 * t], q.tri_vertex[3 * t + 1], q.tri_vertex[3 * t + 2]}});
   }
   // M, quads: 3x3 Gauss-Legendre on the bilinear map.
   const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
@@ -219,8 +232,8 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
       reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
     }
   }
+  if (!(lambda > 0)) return;  // M's diagonal is A's
   mass_diagonal = A.diagonal;
-  if (!(lambda > 0)) return;
 
   // R: the interior edges (exactly two triangles of positive area), found by sorting the sides.
   struct Side {
@@ -280,19 +293,19 @@ struct BlockCgOptions {
 // Jacobi-preconditioned conjugate gradient (Hestenes & Stiefel; the loop of Eigen's
 // ConjugateGradient) on W channels at once (W = 1 or 3): one operator pass per step serves all
 // channels, each with its own step lengths and its own stop. x: #nodes by W, the first guess in,
-// the solution out; rows in off_system stay 0. Counts into fit (iterations: operator passes, the
+// the solution out; rows in off_system stay 0. b_then_r: b in, the residual after (its memory is
+// the residual's: one array fewer to fault in). Counts into fit (iterations: operator passes, the
 // most over channels; residual: the largest relative residual; converged).
 template <std::size_t W>
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
-                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b_in,
+                              const std::vector<std::uint32_t>& off_system, double* b_then_r,
                               const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
-  std::vector<double> r_v(n), p_v(n), Ap_v(n);
-  double* const r = r_v.data();
+  std::vector<double> p_v(n), Ap_v(n);
+  double* const r = b_then_r;
   double* const p = p_v.data();
   double* const Ap = Ap_v.data();
-  const double* const b = b_in.data();
   const double* const inv_d = inverse_diagonal.data();
   const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
   const auto apply = [&](const double* in, double* out) {
@@ -307,8 +320,9 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   apply(x, Ap);
   for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
     for (std::size_t k = 0; k < W; ++k) {
-      r[i + k] = b[i + k] - Ap[i + k];
-      rhs2[k] += b[i + k] * b[i + k];
+      const double bi = r[i + k];
+      r[i + k] = bi - Ap[i + k];
+      rhs2[k] += bi * bi;
       res2[k] += r[i + k] * r[i + k];
       if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
     }
@@ -371,12 +385,12 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   }
 }
 
-// Widths other than 1 and 3: one channel at a time.
+// Widths other than 1 and 3: one channel at a time. b: overwritten (the residual).
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
-                              const std::vector<std::uint32_t>& off_system, const std::vector<double>& b,
+                              const std::vector<std::uint32_t>& off_system, std::vector<double>& b,
                               std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
-  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, o, x.data(), fit);
-  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b, o, x.data(), fit);
+  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
+  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
   const std::size_t N = inverse_diagonal.size();
   std::vector<double> bk(N), xk(N);
   for (std::size_t k = 0; k < width; ++k) {
@@ -384,7 +398,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       bk[i] = b[i * width + k];
       xk[i] = x[i * width + k];
     }
-    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk, o, xk.data(), fit);
+    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk.data(), o, xk.data(), fit);
     for (std::size_t i = 0; i < N; ++i) x[i * width + k] = xk[i];
   }
 }
@@ -399,6 +413,18 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
                 std::to_string(mesh.num_corners()) + " corners");
   e.nodes = own_nodes ? nodes : mesh.num_vertices();
   const auto node_of = [&](std::size_t c) { return own_nodes ? corner_node[c] : mesh.corner_vertex[c]; };
+  std::size_t triangles = 0, quads = 0;  // to size the arrays once
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const std::size_t size = mesh.face_size(f);
+    quads += size == 4;
+    triangles += size >= 3 && size != 4 ? size - 2 : 0;
+  }
+  e.tri_vertex.reserve(3 * triangles);
+  e.tri_node.reserve(3 * triangles);
+  e.tri_face.reserve(triangles);
+  e.quad_vertex.reserve(4 * quads);
+  e.quad_node.reserve(4 * quads);
+  e.quad_face.reserve(quads);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const std::size_t size = mesh.face_size(f), c0 = mesh.face_start[f];
     if (size < 3) {
@@ -429,38 +455,36 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
     throw Error("fit_quadrature: " + std::to_string(samples) + " points per triangle is not a rule (1, 3, 6 or 12)");
   FitQuadrature q;
   q.samples = samples;
-  const std::vector<QuadraturePoint> rule = triangle_quadrature(samples);
-  const std::size_t T = e.tri_face.size(), R = rule.size();
-  const int g = quad_gauss_points(samples);
-  q.triangle_area.resize(T);
+  q.rule = triangle_quadrature(samples);
+  const std::size_t T = e.tri_face.size();
+  q.element_triangles = T;
+  // The areas in place, then the triangles of positive area kept (all of them, the common case: copies).
+  q.tri_area.resize(T);
   std::size_t kept = 0;
   for (std::size_t t = 0; t < T; ++t) {
-    const double area = triangle_area(positions, &e.tri_vertex[3 * t]);
-    q.triangle_area[t] = area > 0 ? area : 0.0;  // no area, no part of the integral
-    kept += area > 0;
+    q.tri_area[t] = triangle_area(positions, &e.tri_vertex[3 * t]);
+    kept += q.tri_area[t] > 0;  // no area, no part of the integral
   }
-  const std::size_t most = kept * R + e.quad_face.size() * std::size_t(g * g);
-  q.node.reserve(4 * most);
-  q.vertex.reserve(4 * most);
-  q.phi.reserve(4 * most);
-  q.weight.reserve(most);
-  q.face.reserve(most);
-  const auto push = [&q](const std::uint32_t* nodes, const std::uint32_t* vertices, const double* phi, int n,
-                         double weight, std::uint32_t face) {
-    for (int j = 0; j < 4; ++j) {
-      q.node.push_back(nodes[j < n ? j : 0]);
-      q.vertex.push_back(vertices[j < n ? j : 0]);
-      q.phi.push_back(j < n ? phi[j] : 0.0);
+  if (kept == T) {
+    q.tri_node = e.tri_node;
+    q.tri_vertex = e.tri_vertex;
+    q.tri_face = e.tri_face;
+  } else {
+    q.tri_node.resize(3 * kept);
+    q.tri_vertex.resize(3 * kept);
+    q.tri_face.resize(kept);
+    for (std::size_t t = 0, j = 0; t < T; ++t) {
+      if (!(q.tri_area[t] > 0)) continue;
+      for (int i = 0; i < 3; ++i) {
+        q.tri_node[3 * j + i] = e.tri_node[3 * t + i];
+        q.tri_vertex[3 * j + i] = e.tri_vertex[3 * t + i];
+      }
+      q.tri_area[j] = q.tri_area[t];  // j <= t: in place
+      q.tri_face[j++] = e.tri_face[t];
     }
-    q.weight.push_back(weight);
-    q.face.push_back(face);
-  };
-  for (std::size_t t = 0; t < T; ++t) {
-    const double area = q.triangle_area[t];
-    if (!(area > 0)) continue;
-    for (const QuadraturePoint& p : rule)
-      push(&e.tri_node[3 * t], &e.tri_vertex[3 * t], p.barycentric.data(), 3, p.weight * area, e.tri_face[t]);
+    q.tri_area.resize(kept);
   }
+  const int g = quad_gauss_points(samples);
   const std::vector<GaussPoint> gauss = gauss_legendre_unit(g);
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
     Vec3d c[4];
@@ -469,11 +493,44 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
       for (const GaussPoint& gv : gauss) {
         const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
         if (!(b.area_element > 0)) continue;
-        push(&e.quad_node[4 * k], &e.quad_vertex[4 * k], b.phi, 4, gu.weight * gv.weight * b.area_element, e.quad_face[k]);
+        for (int j = 0; j < 4; ++j) {
+          q.quad_node.push_back(e.quad_node[4 * k + j]);
+          q.quad_vertex.push_back(e.quad_vertex[4 * k + j]);
+          q.quad_phi.push_back(b.phi[j]);
+        }
+        q.quad_weight.push_back(gu.weight * gv.weight * b.area_element);
+        q.quad_face.push_back(e.quad_face[k]);
       }
   }
   assign_sites(q, positions.size() / 3);
   return q;
+}
+
+FitPoint FitQuadrature::point(std::size_t p) const {
+  FitPoint out;
+  const std::size_t R = rule.size();
+  if (p < triangle_points()) {
+    const std::size_t j = p / R, k = p - j * R;  // divisor: R >= 1 when there are triangle points
+    for (int i = 0; i < 3; ++i) {
+      out.node[i] = tri_node[3 * j + i];
+      out.vertex[i] = tri_vertex[3 * j + i];
+      out.phi[i] = rule[k].barycentric[i];
+    }
+    out.corners = 3;
+    out.weight = rule[k].weight * tri_area[j];
+    out.face = tri_face[j];
+  } else {
+    const std::size_t m = p - triangle_points();
+    for (int i = 0; i < 4; ++i) {
+      out.node[i] = quad_node[4 * m + i];
+      out.vertex[i] = quad_vertex[4 * m + i];
+      out.phi[i] = quad_phi[4 * m + i];
+    }
+    out.corners = 4;
+    out.weight = quad_weight[m];
+    out.face = quad_face[m];
+  }
+  return out;
 }
 
 std::vector<double> interpolate_vertex_data_at_sites(const FitQuadrature& q, const std::vector<double>& data,
@@ -483,37 +540,37 @@ std::vector<double> interpolate_vertex_data_at_sites(const FitQuadrature& q, con
   return out;
 }
 
-
 std::vector<double> site_values_at_points(const FitQuadrature& q, const std::vector<double>& values, std::size_t width) {
-  if (q.sites() == q.size()) return values;  // every point its own site, numbered in point order
+  if (q.site.empty()) return values;  // every point its own site, numbered in point order
   std::vector<double> out(q.size() * width);
   for (std::size_t s = 0; s < q.size(); ++s)
     for (std::size_t k = 0; k < width; ++k) out[s * width + k] = values[q.site[s] * width + k];
   return out;
 }
 
-std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& data, std::size_t width) {
+namespace {
+// sum phi_j data[index_j] at every point (#points by width); index: the point's vertices or nodes.
+std::vector<double> interpolate_at_points(const FitQuadrature& q, const std::vector<double>& data, std::size_t width,
+                                          bool by_node) {
   std::vector<double> out(q.size() * width, 0.0);
-  for (std::size_t s = 0; s < q.size(); ++s)
-    for (int j = 0; j < 4; ++j) {
-      const double phi = q.phi[4 * s + j];
-      if (phi == 0) continue;
-      const std::size_t v = q.vertex[4 * s + j];
-      for (std::size_t k = 0; k < width; ++k) out[s * width + k] += phi * data[v * width + k];
+  q.for_each_point([&](std::size_t p, const std::uint32_t* node, const std::uint32_t* vertex, const double* phi,
+                       int corners, double) {
+    for (int j = 0; j < corners; ++j) {
+      if (phi[j] == 0) continue;
+      const std::size_t i = by_node ? node[j] : vertex[j];
+      for (std::size_t k = 0; k < width; ++k) out[p * width + k] += phi[j] * data[i * width + k];
     }
+  });
   return out;
+}
+}  // namespace
+
+std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& data, std::size_t width) {
+  return interpolate_at_points(q, data, width, false);
 }
 
 std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::vector<double>& values, std::size_t width) {
-  std::vector<double> out(q.size() * width, 0.0);
-  for (std::size_t s = 0; s < q.size(); ++s)
-    for (int j = 0; j < 4; ++j) {
-      const double phi = q.phi[4 * s + j];
-      if (phi == 0) continue;
-      const std::size_t n = q.node[4 * s + j];
-      for (std::size_t k = 0; k < width; ++k) out[s * width + k] += phi * values[n * width + k];
-    }
-  return out;
+  return interpolate_at_points(q, values, width, true);
 }
 
 LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
@@ -530,10 +587,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   LeastSquaresFit fit;
   FitOperator A;
   std::vector<double> mass_diagonal;
-  if (q.triangle_area.size() != e.tri_face.size())
-    throw Error("least_squares_fit: the quadrature is not of these elements (" + std::to_string(q.triangle_area.size()) +
-                " triangle areas for " + std::to_string(e.tri_face.size()) + " triangles)");
-  build_fit_operator(e, positions, q.triangle_area, options.regularization, A, mass_diagonal, fit);
+  if (q.element_triangles != e.tri_face.size())
+    throw Error("least_squares_fit: the quadrature is not of these elements (made for " +
+                std::to_string(q.element_triangles) + " triangles, given " + std::to_string(e.tri_face.size()) + ")");
+  build_fit_operator(e, positions, q, options.regularization, A, mass_diagonal, fit);
 
   // The system over the nodes with mass; the others keep their point value.
   // Jacobi preconditioner and 1 / M_ii (the same with lambda = 0); 0 off the system
@@ -545,7 +602,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     if (A.diagonal[i] > 0) {
       inverse_diagonal[i] = 1 / A.diagonal[i];  // divisor checked
       if (regularized && mass_diagonal[i] > 0) inverse_mass[i] = 1 / mass_diagonal[i];  // divisor checked
-      min_mass = std::min(min_mass, mass_diagonal[i]);
+      min_mass = std::min(min_mass, regularized ? mass_diagonal[i] : A.diagonal[i]);
     } else {
       off_system.push_back(std::uint32_t(i));
       ++fit.fallback_nodes;
@@ -555,14 +612,16 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   if (off_system.size() < N) {
     // b for every channel in one pass over the points.
     std::vector<double> b(N * width, 0.0);
-    for (std::size_t s = 0; s < S; ++s)
-      for (int j = 0; j < 4; ++j) {
-        const std::size_t r = q.node[4 * s + j];
-        const double w = q.weight[s] * q.phi[4 * s + j];
+    q.for_each_point([&](std::size_t s, const std::uint32_t* node, const std::uint32_t*, const double* phi, int corners,
+                         double weight) {
+      const double* fs = &f[(per_site ? q.site_of(s) : s) * width];
+      for (int j = 0; j < corners; ++j) {
+        const std::size_t r = node[j];
+        const double w = weight * phi[j];
         if (w == 0 || inverse_diagonal[r] == 0) continue;
-        const double* fs = &f[(per_site ? q.site[s] : s) * width];
         for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * fs[k];
       }
+    });
     for (std::uint32_t i : off_system)
       for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = 0;  // out of the system during CG
     BlockCgOptions cg;
@@ -595,16 +654,17 @@ double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f, c
                          std::size_t width) {
   const bool per_site = f.size() != q.size() * width && f.size() == q.sites() * width;  // f at the sites
   double num = 0, den = 0;
-  for (std::size_t s = 0; s < q.size(); ++s) {
-    const double* fs = &f[(per_site ? q.site[s] : s) * width];
+  q.for_each_point([&](std::size_t s, const std::uint32_t* node, const std::uint32_t*, const double* phi, int corners,
+                       double weight) {
+    const double* fs = &f[(per_site ? q.site_of(s) : s) * width];
     for (std::size_t k = 0; k < width; ++k) {
       double g = 0;
-      for (int j = 0; j < 4; ++j) g += q.phi[4 * s + j] * node_values[q.node[4 * s + j] * width + k];
+      for (int j = 0; j < corners; ++j) g += phi[j] * node_values[node[j] * width + k];
       const double d = g - fs[k];
-      num += q.weight[s] * d * d;
-      den += q.weight[s] * fs[k] * fs[k];
+      num += weight * d * d;
+      den += weight * fs[k] * fs[k];
     }
-  }
+  });
   if (!(den > 0)) return num > 0 ? std::numeric_limits<double>::infinity() : 0.0;
   return std::sqrt(num / den);  // divisor checked
 }

@@ -61,6 +61,7 @@
 #include <vector>
 
 #include <shadetool/core/mesh.h>
+#include <shadetool/fit/triangle_quadrature.h>
 #include <shadetool/fit/vertex_fit.h>
 
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
@@ -77,24 +78,60 @@ struct FitElements {
 FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& corner_node = {}, std::size_t nodes = 0);
 
 // The quadrature points: triangles' first, then quads', in element order. Per point up to 4
-// (node, phi) pairs (unused: phi 0), its weight w_k dA (units of `positions`, squared), its face,
-// and its element's vertices and their weights (to interpolate per-vertex data: positions, normals).
+// (node, phi) pairs, its weight w_k dA (units of `positions`, squared), its face, and its element's
+// vertices and their weights (to interpolate per-vertex data: positions, normals); point(p) gives
+// them, for_each_point visits them in order.
+// Storage: a triangle's points are its rule's (`rule`: barycentric phi and weight fraction) on its
+// corners, so only the triangles of positive area are stored (nodes, vertices, area, face: 36 bytes
+// each, whatever the rule), point j * R + k being point k of the j-th of them (R = rule.size()).
+// Quads' points (bilinear weights, area element) are stored one by one after them.
 // Sites: where the signal is evaluated. A point at the midpoint of an edge (the 3-point rule's) is
 // the same place, with the same interpolated per-vertex data, in both triangles of the edge (those
 // that share its two vertices), so the two points share one site; every other point is its own
-// site. Sites are numbered in the order of their first point.
+// site. Sites are numbered in the order of their first point; `site` and `site_point` are empty
+// when every point is its own site (site p is point p).
+struct FitPoint {
+  std::uint32_t node[4] = {}, vertex[4] = {};
+  double phi[4] = {};  // unused: 0
+  int corners = 0;     // 3 (triangle) or 4 (quad)
+  double weight = 0;
+  std::uint32_t face = 0;
+};
 struct FitQuadrature {
   int samples = 3;
-  std::vector<std::uint32_t> node;        // 4 per point
-  std::vector<std::uint32_t> vertex;      // 4 per point
-  std::vector<double> phi;                // 4 per point
-  std::vector<double> weight;             // 1 per point
-  std::vector<std::uint32_t> face;        // 1 per point
-  std::vector<std::uint32_t> site;        // 1 per point
-  std::vector<std::uint32_t> site_point;  // 1 per site: its first point
-  std::vector<double> triangle_area;      // 1 per triangle of the elements (0: no area, no points)
-  std::size_t size() const { return weight.size(); }
-  std::size_t sites() const { return site_point.size(); }
+  std::vector<QuadraturePoint> rule;        // the triangle rule (fit/triangle_quadrature.h)
+  std::size_t element_triangles = 0;        // the elements' triangle count (those of no area included)
+  std::vector<std::uint32_t> tri_node;      // 3 per triangle of positive area
+  std::vector<std::uint32_t> tri_vertex;    // 3 per triangle of positive area
+  std::vector<double> tri_area;             // 1 per triangle of positive area
+  std::vector<std::uint32_t> tri_face;      // 1 per triangle of positive area
+  std::vector<std::uint32_t> quad_node;     // 4 per quad point
+  std::vector<std::uint32_t> quad_vertex;   // 4 per quad point
+  std::vector<double> quad_phi;             // 4 per quad point
+  std::vector<double> quad_weight;          // 1 per quad point
+  std::vector<std::uint32_t> quad_face;     // 1 per quad point
+  std::vector<std::uint32_t> site;          // 1 per point, or empty (site p is point p)
+  std::vector<std::uint32_t> site_point;    // 1 per site: its first point, or empty (identity)
+
+  std::size_t triangle_points() const { return tri_area.size() * rule.size(); }
+  std::size_t size() const { return triangle_points() + quad_weight.size(); }
+  std::size_t sites() const { return site_point.empty() ? size() : site_point.size(); }
+  std::size_t site_of(std::size_t p) const { return site.empty() ? p : site[p]; }
+  std::size_t first_point(std::size_t i) const { return site_point.empty() ? i : site_point[i]; }
+  FitPoint point(std::size_t p) const;
+
+  // fn(p, node, vertex, phi, corners, weight) for every point p in order (node, vertex, phi:
+  // `corners` entries; weight w_k dA). Inline: the solve's and the error's loops call it.
+  template <class Fn>
+  void for_each_point(Fn&& fn) const {
+    const std::size_t R = rule.size(), T = tri_area.size();
+    std::size_t p = 0;
+    for (std::size_t j = 0; j < T; ++j)
+      for (std::size_t k = 0; k < R; ++k, ++p)
+        fn(p, &tri_node[3 * j], &tri_vertex[3 * j], rule[k].barycentric.data(), 3, rule[k].weight * tri_area[j]);
+    for (std::size_t m = 0; m < quad_weight.size(); ++m, ++p)
+      fn(p, &quad_node[4 * m], &quad_vertex[4 * m], &quad_phi[4 * m], 4, quad_weight[m]);
+  }
 };
 // positions: #V by 3 (the space the area is measured in: world, for lighting). samples: 1, 3, 6, 12
 // (Error otherwise).
@@ -103,17 +140,30 @@ FitQuadrature fit_quadrature(const FitElements& elements, const std::vector<doub
 // Per-vertex data (#V by width) at the quadrature points (#points by width): sum phi_k data[vertex_k].
 std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& vertex_data,
                                             std::size_t width);
-// The same at one site i: out[0..width) = sum phi_k data[vertex_k] at q.site_point[i] (inline: the
+// The same at one site i: out[0..width) = sum phi_k data[vertex_k] at its first point (inline: the
 // shading loops call it per site).
 inline void interpolate_vertex_data_at_site(const FitQuadrature& q, std::size_t i, const double* vertex_data,
                                             std::size_t width, double* out) {
-  const std::size_t s = q.site_point[i];
+  const std::size_t p = q.first_point(i), R = q.rule.size();
+  const std::uint32_t* vertex;
+  const double* phi;
+  int corners;
+  if (p < q.triangle_points()) {
+    const std::size_t j = R == 1 ? p : p / R;  // divisor: R >= 1 when there are triangle points
+    vertex = &q.tri_vertex[3 * j];
+    phi = q.rule[p - j * R].barycentric.data();
+    corners = 3;
+  } else {
+    const std::size_t m = p - q.triangle_points();
+    vertex = &q.quad_vertex[4 * m];
+    phi = &q.quad_phi[4 * m];
+    corners = 4;
+  }
   for (std::size_t k = 0; k < width; ++k) out[k] = 0;
-  for (std::size_t j = 0; j < 4; ++j) {
-    const double phi = q.phi[4 * s + j];
-    if (phi == 0) continue;
-    const std::size_t v = q.vertex[4 * s + j];
-    for (std::size_t k = 0; k < width; ++k) out[k] += phi * vertex_data[v * width + k];
+  for (int j = 0; j < corners; ++j) {
+    if (phi[j] == 0) continue;
+    const std::size_t v = vertex[j];
+    for (std::size_t k = 0; k < width; ++k) out[k] += phi[j] * vertex_data[v * width + k];
   }
 }
 // The same at the sites (#sites by width), and values at the sites copied to their points.
@@ -143,6 +193,9 @@ struct VertexFitOptions {
   VertexFit method = VertexFit::Point;
   int samples = 3;  // quadrature points per triangle (fit/triangle_quadrature.h)
   LeastSquaresFitOptions solve;
+  // The fitted and point-sampled errors (relative_l2_error, two passes over the points) are
+  // measured only when asked for (the CLI: --stats or --json); false: both reported as NaN.
+  bool measure_error = true;
 };
 
 struct LeastSquaresFit {

@@ -2,6 +2,7 @@
 #include <shadetool/lighting/fit_vertex_lighting.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 #include <tbb/blocked_range.h>
@@ -30,22 +31,38 @@ std::vector<double> lighting_at_sites(const Mesh& mesh, const Scene& scene, cons
                                       const std::vector<double>& positions_world,
                                       const std::vector<double>& vertex_normals_object, const ShadeOptions& options,
                                       const ShadowOptions& shadows, ShadowStats* shadow_stats) {
+  // The normals into the world (not copied when the placement is the identity: the same bits).
+  const bool placed = !is_identity(scene.world_from_object);
   const Mat3d cof = signed_cofactor(scene.world_from_object.A);
-  std::vector<double> normals_world(vertex_normals_object.size());
-  for (std::size_t v = 0; v < vertex_normals_object.size() / 3; ++v)
-    set3(normals_world, v, Vec3d(transform_normal(cof, Normal3d(get3(vertex_normals_object, v)))));
+  std::vector<double> normals_placed(placed ? vertex_normals_object.size() : 0);
+  for (std::size_t v = 0; v < normals_placed.size() / 3; ++v)
+    set3(normals_placed, v, Vec3d(transform_normal(cof, Normal3d(get3(vertex_normals_object, v)))));
+  const std::vector<double>& normals_world = placed ? normals_placed : vertex_normals_object;
   // f at each site (shared edge midpoints once)
   const PointLighting lit = prepare_point_lighting(scene, options.model);
   const std::size_t S = q.sites();
   std::vector<double> f(3 * S);
-  if (!shadows.enabled) {  // p and n interpolated where they are shaded: no arrays of them
+  if (!shadows.enabled) {  // p and n interpolated where they are shaded, a block at a time: no arrays of them
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, S, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
       ShadeCounters counters;  // the point bake reports the counts; these are not summed
-      for (std::size_t s = r.begin(); s < r.end(); ++s) {
-        double p[3], n[3];  // n renormalised by shade_point
-        interpolate_vertex_data_at_site(q, s, positions_world.data(), 3, p);
-        interpolate_vertex_data_at_site(q, s, normals_world.data(), 3, n);
-        set3(f, s, shade_point(lit, Vec3d(p[0], p[1], p[2]), Vec3d(n[0], n[1], n[2]), &counters));
+      constexpr std::size_t kBlock = 64;
+      double soa[6][kBlock];  // px, py, pz, nx, ny, nz
+      for (std::size_t begin = r.begin(); begin < r.end(); begin += kBlock) {
+        const std::size_t count = std::min(kBlock, r.end() - begin);
+        for (std::size_t i = 0; i < count; ++i) {
+          double p[3], n[3];  // n renormalised by shade_point_block
+          interpolate_vertex_data_at_site(q, begin + i, positions_world.data(), 3, p);
+          interpolate_vertex_data_at_site(q, begin + i, normals_world.data(), 3, n);
+          for (int k = 0; k < 3; ++k) {
+            soa[k][i] = p[k];
+            soa[3 + k][i] = n[k];
+          }
+        }
+        PointBlock block;  // shade_point's bits, four points at a time where the CPU allows
+        block.count = count;
+        block.px = soa[0], block.py = soa[1], block.pz = soa[2];
+        block.nx = soa[3], block.ny = soa[4], block.nz = soa[5];
+        shade_point_block(lit, block, &f[3 * begin], &counters);
       }
     });
     return f;
@@ -81,7 +98,10 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
       return out;
     case VertexFit::LeastSquares: break;
   }
-  const std::vector<double> positions_world = world_positions(mesh, scene);
+  // World positions (the mesh's own when the placement is the identity: the same bits, no copy).
+  const bool placed = !is_identity(scene.world_from_object);
+  const std::vector<double> positions_placed = placed ? world_positions(mesh, scene) : std::vector<double>();
+  const std::vector<double>& positions_world = placed ? positions_placed : mesh.positions;
   const FitElements elements = fit_elements(mesh);
   const FitQuadrature q = fit_quadrature(elements, positions_world, fit.samples);
   out.quadrature_points = q.size();
@@ -94,6 +114,10 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb, 3, fit.solve);
   out.rgb = std::move(out.solve.values);
   out.solve.values.clear();
+  if (!fit.measure_error) {
+    out.error_fit = out.error_point = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
   out.error_fit = relative_l2_error(q, f, out.rgb, 3);
   std::vector<double> point_clamped = point.rgb;  // as written: the same bounds as the fit's
   for (double& v : point_clamped) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);

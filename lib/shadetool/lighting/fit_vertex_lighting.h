@@ -18,7 +18,8 @@
 //                   samples per triangle (1, 3, 6, 12), the solve's options (lambda, tolerance, clamp)
 // Output:  rgb #V by 3 linear doubles; error_fit and error_point: relative L2 distance of the
 //          interpolated fitted and point colours (clamped to the same bounds, as written) to f, by the same quadrature (least_squares_fit.h's
-//          relative_l2_error); the solve's counts; shadow rays cast at the quadrature points.
+//          relative_l2_error; NaN unless fit.measure_error); the solve's counts; shadow rays cast at
+//          the quadrature points.
 // Threads: f is evaluated in parallel, each point independently: the same bits for any count.
 #pragma once
 

@@ -1,6 +1,7 @@
 // fit_occlusion.cpp: see fit_occlusion.h.
 #include <shadetool/visibility/fit_occlusion.h>
 
+#include <limits>
 #include <memory>
 
 #include <shadetool/core/error.h>
@@ -47,8 +48,12 @@ OcclusionFit fit_against(const VisibilityScene* given, const Mesh& mesh, const s
   solve.lower = 0;
   solve.upper = 1;
   out.solve = least_squares_fit(elements, mesh.positions, q, f, point, 1, solve);
-  out.error_fit = relative_l2_error(q, f, out.solve.values, 1);
-  out.error_point = relative_l2_error(q, f, point, 1);
+  if (fit.measure_error) {
+    out.error_fit = relative_l2_error(q, f, out.solve.values, 1);
+    out.error_point = relative_l2_error(q, f, point, 1);
+  } else {
+    out.error_fit = out.error_point = std::numeric_limits<double>::quiet_NaN();
+  }
   out.open_fraction.assign(out.solve.values.begin(), out.solve.values.end());
   out.solve.values.clear();
   return out;

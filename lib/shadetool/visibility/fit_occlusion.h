@@ -10,7 +10,8 @@
 //
 // Inputs:  mesh, point_open (#V, the per-vertex result: first guess and fallback), the ray options
 //          (adaptive null: fixed), fit (samples, regularisation), source (for errors)
-// Output:  open_fraction #V; error_fit, error_point (relative L2 to f by the same quadrature);
+// Output:  open_fraction #V; error_fit, error_point (relative L2 to f by the same quadrature;
+//          NaN unless fit.measure_error);
 //          rays cast at the quadrature sites; the solve's counts.
 #pragma once
 

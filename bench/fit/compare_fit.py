@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""compare_fit.py REF_BIN NEW_BIN [SRC]: `bake-lighting --fit least-squares` (studio and window,
+--fit-samples 1 and 3) and `occlusion --fit least-squares` (--samples 8, --fit-samples 1 and 3) over
+SRC/data and the real-file corpus (/work/shared/corpus) with both binaries, ASCII PLY out; prints
+per run the largest difference of any colour byte (and of any other number), and the --json stats
+keys of the fit whose values differ. Exit 0; the summary line says how many runs differ."""
+import glob, json, os, subprocess, sys, tempfile
+
+ref, new = sys.argv[1], sys.argv[2]
+src = sys.argv[3] if len(sys.argv) > 3 else os.path.join(os.path.dirname(__file__), "..", "..")
+files = sorted(glob.glob(f"{src}/data/*.obj") + glob.glob(f"{src}/data/*.ply") + glob.glob(f"{src}/data/*.off") +
+               glob.glob(f"{src}/data/*.stl") + glob.glob("/work/shared/corpus/*/*/*.obj") +
+               glob.glob("/work/shared/corpus/*/*/*.ply") + glob.glob("/work/shared/corpus/*/*/*.off") +
+               glob.glob("/work/shared/corpus/*/*/*.stl") + glob.glob("/work/shared/corpus/*/*/*.STL"))
+runs = []
+for scene in ("studio", "window"):
+    for n in (1, 3):
+        runs.append((f"bake-{scene}-{n}", ["bake-lighting", "--scene", f"{src}/data/scenes/{scene}.json",
+                                           "--fit", "least-squares", "--fit-samples", str(n)]))
+for n in (1, 3):
+    runs.append((f"occ-{n}", ["occlusion", "--samples", "8", "--fit", "least-squares", "--fit-samples", str(n)]))
+
+
+def run(binary, args, out):
+    p = subprocess.run([binary] + args + ["-o", out, "--ascii", "--json"], capture_output=True, text=True, timeout=300)
+    stats = {}
+    for line in p.stdout.splitlines():
+        try:
+            stats = json.loads(line).get("stats", {})
+        except ValueError:
+            pass
+    body = open(out).read().split("end_header", 1)[-1].split() if p.returncode == 0 and os.path.exists(out) else []
+    return p.returncode, stats, body
+
+
+tmp = tempfile.mkdtemp()
+worst, differ, total, numbers, failed = {}, 0, 0, 0, 0
+for f in files:
+    for name, args in runs:
+        total += 1
+        ra, sa, ba = run(ref, args[:1] + [f] + args[1:], f"{tmp}/a.ply")
+        rb, sb, bb = run(new, args[:1] + [f] + args[1:], f"{tmp}/b.ply")
+        diff = 0.0
+        numbers += len(bb)
+        failed += ra != 0
+        if ra != rb or len(ba) != len(bb):
+            diff = float("inf")
+        else:
+            for x, y in zip(ba, bb):
+                if x != y:
+                    diff = max(diff, abs(float(x) - float(y)))
+        keys = [k for k in sa if k.startswith("fit") or k == "point_error"]
+        changed = [k for k in keys if sa.get(k) != sb.get(k)]
+        worst[name] = max(worst.get(name, 0), diff)
+        if diff or changed:
+            differ += 1
+            print(f"{os.path.basename(f)} {name}: rc {ra}/{rb}, max number difference {diff:g}; stats differ: " +
+                  ", ".join(f"{k} {sa.get(k)} -> {sb.get(k)}" for k in changed))
+print(f"{total} runs over {len(files)} files ({failed} refused by the reference, {numbers} numbers compared), {differ} differ; largest difference per run kind: " +
+      ", ".join(f"{k} {v:g}" for k, v in worst.items()))
