@@ -1,6 +1,7 @@
 // Tests for fit/least_squares_fit.h. Truth the code did not produce: the normal equations
 // assembled here, independently, with a collapsed Gauss-Legendre rule of high order (triangles)
-// or a tensor rule (quads), and solved densely by Gaussian elimination; linear functions, which
+// or a tensor rule (quads), and solved densely by Gaussian elimination (or, for meshes too large
+// for that, by Eigen's sparse Cholesky, which the library does not use); linear functions, which
 // the hat functions reproduce exactly.
 #include <catch2/catch.hpp>
 
@@ -10,6 +11,9 @@
 #include <random>
 #include <tuple>
 #include <vector>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 #include <shadetool/fit/least_squares_fit.h>
 #include <shadetool/fit/vertex_fit.h>
@@ -68,12 +72,11 @@ std::vector<double> dense_solve(std::vector<std::vector<double>> A, std::vector<
 
 // (M, b) for f over a triangle mesh and planar quads, with the test's own rules: triangles by the
 // Duffy map of the square (l1 = u, l2 = v (1 - u), Jacobian (1 - u)), quads by 8 x 8 Gauss on
-// the bilinear map.
-void dense_normal_equations(const Mesh& mesh, const std::function<double(const Vec3d&)>& f,
-                            std::vector<std::vector<double>>& M, std::vector<double>& b) {
-  const std::size_t V = mesh.num_vertices();
-  M.assign(V, std::vector<double>(V, 0.0));
-  b.assign(V, 0.0);
+// the bilinear map. M's terms go to add_M(i, j, w), b's to b.
+void assemble_normal_equations(const Mesh& mesh, const std::function<double(const Vec3d&)>& f,
+                               const std::function<void(std::uint32_t, std::uint32_t, double)>& add_M,
+                               std::vector<double>& b) {
+  b.assign(mesh.num_vertices(), 0.0);
   const auto g = gauss8();
   for (std::size_t face = 0; face < mesh.num_faces(); ++face) {
     const std::uint32_t* c = mesh.corner_vertex.data() + mesh.face_start[face];
@@ -91,7 +94,7 @@ void dense_normal_equations(const Mesh& mesh, const std::function<double(const V
           const double fx = f(x);
           for (int i = 0; i < 4; ++i) {
             b[c[i]] += w * phi[i] * fx;
-            for (int j = 0; j < 4; ++j) M[c[i]][c[j]] += w * phi[i] * phi[j];
+            for (int j = 0; j < 4; ++j) add_M(c[i], c[j], w * phi[i] * phi[j]);
           }
         }
       continue;
@@ -108,11 +111,33 @@ void dense_normal_equations(const Mesh& mesh, const std::function<double(const V
           const double fx = f(x);
           for (int i = 0; i < 3; ++i) {
             b[v[i]] += w * l[i] * fx;
-            for (int j = 0; j < 3; ++j) M[v[i]][v[j]] += w * l[i] * l[j];
+            for (int j = 0; j < 3; ++j) add_M(v[i], v[j], w * l[i] * l[j]);
           }
         }
     }
   }
+}
+
+void dense_normal_equations(const Mesh& mesh, const std::function<double(const Vec3d&)>& f,
+                            std::vector<std::vector<double>>& M, std::vector<double>& b) {
+  M.assign(mesh.num_vertices(), std::vector<double>(mesh.num_vertices(), 0.0));
+  assemble_normal_equations(mesh, f, [&](std::uint32_t i, std::uint32_t j, double w) { M[i][j] += w; }, b);
+}
+
+// The same (M, b) as Eigen's sparse matrix, solved by Eigen's sparse Cholesky (SimplicialLDLT):
+// a reference solver the library does not use, for meshes too large for dense_solve.
+std::vector<double> eigen_sparse_solve(const Mesh& mesh, const std::function<double(const Vec3d&)>& f) {
+  std::vector<Eigen::Triplet<double>> terms;
+  std::vector<double> b;
+  assemble_normal_equations(mesh, f, [&](std::uint32_t i, std::uint32_t j, double w) { terms.emplace_back(int(i), int(j), w); }, b);
+  const int n = int(mesh.num_vertices());
+  Eigen::SparseMatrix<double> M(n, n);
+  M.setFromTriplets(terms.begin(), terms.end());  // duplicates summed
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(M);
+  REQUIRE(ldlt.info() == Eigen::Success);
+  const Eigen::VectorXd x = ldlt.solve(Eigen::Map<const Eigen::VectorXd>(b.data(), n));
+  REQUIRE(ldlt.info() == Eigen::Success);
+  return std::vector<double>(x.data(), x.data() + n);
 }
 
 std::vector<double> fit_of(const Mesh& mesh, const std::function<double(const Vec3d&)>& f, int samples, double lambda,
@@ -193,6 +218,36 @@ TEST_CASE("The fit equals the dense normal-equations solve on planar quads (bili
   const std::vector<double> expected = dense_solve(M, b);
   const std::vector<double> got = fit_of(mesh, f, 6, 0.0);
   CHECK(max_relative(got, expected) < 1e-6);
+}
+
+TEST_CASE("On meshes too large for a dense solve, the fit equals Eigen's sparse Cholesky solve (lambda = 0)",
+          "[fit][least_squares]") {
+  // 10,242 vertices of an irregular icosphere, and a torus grid with triangles about 16 times
+  // longer than wide (M's condition number grows with the aspect ratio: CG's hardest case here).
+  const auto quartic = [](const Vec3d& p) { return 1 + p.x * p.x * p.y * p.z + 0.5 * p.z * p.z * p.z - p.y; };
+  const Mesh sphere = shadetool::testing::icosphere(5, 0.2).mesh;
+  Mesh sliver;
+  const int nu = 1024, nv = 16;  // around the ring, around the tube: cells 2 pi 4 / 1024 by 2 pi / 16
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+      sliver.add_vertex({(4 + std::cos(v)) * std::cos(u), (4 + std::cos(v)) * std::sin(u), std::sin(v)});
+    }
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const auto at = [&](int a, int b) { return std::uint32_t((a % nu) * nv + (b % nv)); };
+      sliver.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      sliver.add_face({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  for (const Mesh* mesh : {&sphere, const_cast<const Mesh*>(&sliver)}) {
+    REQUIRE(mesh->num_vertices() > 2000);
+    const std::vector<double> expected = eigen_sparse_solve(*mesh, quartic);
+    LeastSquaresFit info;
+    const std::vector<double> got = fit_of(*mesh, quartic, 12, 0.0, &info);
+    INFO(mesh->num_vertices() << " vertices, CG iterations " << info.iterations << ", residual " << info.residual);
+    CHECK(info.converged);
+    CHECK(max_relative(got, expected) < 1e-6);
+  }
 }
 
 TEST_CASE("With an accuracy, CG stops early and every value is still within it of the dense solve (Wathen's bound)",
