@@ -52,9 +52,8 @@ Mesh sliver_mesh(bool with_quads, unsigned seed) {
     const double s = std::ldexp(1.0, int(120 * u(rng)) - 60);
     const Vec3d t{u(rng), u(rng), u(rng)};
     const bool quad = with_quads && i % 3 == 0;
-    std::vector<Vec3d> corners;
-    if (quad) corners = {{0, 0, 0}, {1, 0, 0}, {1, h, 0}, {0, h, 0}};
-    else corners = {{0, 0, 0}, {1, 0, 0}, {0.5, h, 0}};
+    const std::vector<Vec3d> corners = quad ? std::vector<Vec3d>{{0, 0, 0}, {1, 0, 0}, {1, h, 0}, {0, h, 0}}
+                                            : std::vector<Vec3d>{{0, 0, 0}, {1, 0, 0}, {0.5, h, 0}};
     const std::uint32_t first = std::uint32_t(m.num_vertices()), n = std::uint32_t(corners.size());
     const std::uint32_t shift = std::uint32_t(u(rng) * n) % n;
     std::vector<std::uint32_t> face;

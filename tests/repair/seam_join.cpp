@@ -39,10 +39,9 @@ Mesh seam_split_sphere(int columns, int rows, int band, const std::vector<int>& 
     for (int i = i0; i < i1; ++i)
       for (int j = 0; j < rows; ++j) {
         // Outward: (i, j) -> (i, j+1) -> (i+1, j+1) -> (i+1, j) seen from outside.
-        std::vector<std::uint32_t> f;
-        if (j == 0) f = {id(i, 0), id(i, 1), id(i + 1, 1)};
-        else if (j == rows - 1) f = {id(i, j), id(i, j + 1), id(i + 1, j)};
-        else f = {id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)};
+        std::vector<std::uint32_t> f = j == 0          ? std::vector<std::uint32_t>{id(i, 0), id(i, 1), id(i + 1, 1)}
+                                       : j == rows - 1 ? std::vector<std::uint32_t>{id(i, j), id(i, j + 1), id(i + 1, j)}
+                                                       : std::vector<std::uint32_t>{id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)};
         const bool sloppy = !flipped && m.num_faces() % 7 == 3;
         if (flipped != sloppy) std::reverse(f.begin(), f.end());
         m.add_face(f);
