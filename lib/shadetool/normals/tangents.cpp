@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 
-#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 #include <shadetool/normals/engine/tangent_corner_terms.h>
 
@@ -66,7 +66,12 @@ struct TriInfo {
   float mag_s = 0, mag_t = 0;
 };
 
-using TriInfos = BulkVector<TriInfo>;  // per healthy triangle (unzeroed, huge pages: bulk_reserve.h)
+// Scratch arrays are plain heap blocks (new T[n]: members without initialisers stay unwritten),
+// never advised as huge pages: a fresh huge page costs its first toucher either next to nothing or
+// far more than the 512 small pages it replaces, depending on whether the hypervisor still backs
+// that memory, so a call's time depended on the machine's history (bench/normals/results/
+// tangents_steps.md, "Bimodality"). Small pages cost the same every time.
+using TriInfos = std::unique_ptr<TriInfo[]>;  // per healthy triangle
 
 struct Group {
   std::uint32_t representative;  // the welded vertex
@@ -182,7 +187,7 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
 }
 
 struct Welded {
-  BulkVector<std::uint32_t> id;      // #C: the welded vertex of each corner taken
+  std::unique_ptr<std::uint32_t[]> id;  // #C: the welded vertex of each corner taken (unwritten elsewhere)
   std::vector<WeldedVertex> vertex;  // #U: its values
 };
 
@@ -190,7 +195,7 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
   const std::size_t V = in.positions.size(), F = mesh.num_faces();
   const std::vector<std::uint32_t> first = canonical_positions(in.positions);
   Welded w;
-  w.id.resize(in.num_corners);
+  w.id.reset(new std::uint32_t[in.num_corners]);
   w.vertex.reserve(V + V / 4);
   constexpr std::uint32_t kLinear = 16, kNone = ~0u;
   std::vector<std::uint32_t> head(V, kNone);   // canonical vertex -> its latest welded vertex
@@ -348,7 +353,7 @@ void find_neighbours(Triangles& tris, std::size_t num_welded) {
   std::vector<std::uint32_t> start(num_welded + 1, 0);
   for (std::size_t j = 0; j < S; ++j) ++start[std::min(index[j], other_end(j)) + 1];
   for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
-  BulkVector<Edge> edges(S);  // filled in full below: not zeroed first
+  const std::unique_ptr<Edge[]> edges(new Edge[S]);  // filled in full below: not zeroed first
   {
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
     for (std::size_t j = 0; j < S; ++j) {
@@ -359,7 +364,7 @@ void find_neighbours(Triangles& tris, std::size_t num_welded) {
   tris.neighbour.assign(S, -1);
   std::int32_t* neighbour = tris.neighbour.data();
   for (std::size_t v = 0; v < num_welded; ++v) {
-    Edge* e = edges.data() + start[v];
+    Edge* e = edges.get() + start[v];
     const std::size_t n = start[v + 1] - start[v];
     auto before = [](const Edge& a, const Edge& b) { return a.hi != b.hi ? a.hi < b.hi : a.slot < b.slot; };
     if (n > 16) {
@@ -732,9 +737,9 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   const Welded welded = weld(mesh, in, taken);
   const std::vector<WeldedVertex>& wv = welded.vertex;
   Triangles tris;
-  make_triangles(mesh, in, taken, welded.id.data(), tris);
+  make_triangles(mesh, in, taken, welded.id.get(), tris);
   set_aside_degenerate(mesh, wv, tris);
-  TriInfos info(tris.good);
+  TriInfos info(new TriInfo[tris.good]);  // TriInfo{}: zero derivatives
   triangle_derivatives(mesh, wv, tris, info);
   find_neighbours(tris, wv.size());
   std::vector<Group> groups;
@@ -749,7 +754,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   const TSpace none;  // the reference's default frame
 
   TangentFrames out;
-  reserve_bulk(out.tangents, 4 * C);  // filled in corner order below: no zeroing first
+  out.tangents.reserve(4 * C);  // filled in corner order below: no zeroing first; small pages (TriInfos)
   std::vector<double>& o = out.tangents;
   for (std::size_t f = 0; f < F; ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
