@@ -128,7 +128,8 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
 // value gets a canonical vertex (the first vertex with that value, by an open-addressing table over
 // the vertices, not the corners); the corners, in order, look for their values among the welded
 // vertices already found at their canonical vertex (a short list; one with more than kLinear
-// welded vertices moves them to a table keyed by all eight values).
+// welded vertices moves them to a table keyed by all eight values); a corner with the same vertex,
+// normal and texture-coordinate indices as its vertex's latest corner takes that one's directly.
 struct WeldedVertex {
   F3 p, n;
   float u = 0, v = 0;
@@ -222,9 +223,22 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
   };
   std::size_t in_table = 0;
   const F3 *positions = in.positions.data(), *normals = in.normals.data(), *texcoords = in.texcoords.data();
+  // Per vertex, the indices (normal, texture coordinate) of its latest corner and that corner's
+  // welded vertex: a corner with the same three indices has the same values, so the same welded
+  // vertex, found without reading or comparing them (most corners of an indexed mesh). Values with
+  // a NaN equal nothing, not even themselves: never recorded.
+  struct Recent {
+    std::uint32_t normal, texcoord, welded;
+  };
+  std::vector<Recent> recent(V, Recent{kNone, kNone, kNone});
   for (std::size_t f = 0; f < F; ++f) {
     if (!taken[f]) continue;
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      Recent& r = recent[in.vertex[c]];
+      if (r.welded != kNone && r.normal == in.normal[c] && r.texcoord == in.texcoord[c]) {
+        w.id[c] = r.welded;
+        continue;
+      }
       const F3 t = texcoords[in.texcoord[c]];
       const WeldedVertex x{positions[in.vertex[c]], normals[in.normal[c]], t.x, t.y};
       const std::uint32_t b = first[in.vertex[c]];
@@ -247,6 +261,7 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
         }
       }
       w.id[c] = k;
+      if (!has_nan(x)) r = {in.normal[c], in.texcoord[c], k};
     }
   }
   return w;
