@@ -406,7 +406,8 @@ void find_neighbours(Triangles& tris, std::size_t num_welded) {
 }
 
 int corner_at(const std::uint32_t* idx, std::uint32_t vertex) {
-  return idx[0] == vertex ? 0 : idx[1] == vertex ? 1 : 2;
+  // idx[0] == vertex ? 0 : idx[1] == vertex ? 1 : 2, without branches (which corner is random).
+  return (1 - int(idx[0] == vertex)) * (2 - int(idx[1] == vertex));
 }
 
 // Step 6: groups of triangles around each welded vertex (the reference's four rules), depth first
@@ -597,19 +598,21 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
       corner_terms(wv, tris, info, &members[batch_begin], batch_end - batch_begin, terms.data());
     }
     m.resize(n);
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const std::uint32_t slot = members[group.offset + j], t = slot / 3;
-      m[j] = {slot, tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
-    }
-    auto by_slot = [](const Member& a, const Member& b) { return a.slot < b.slot; };
+    const std::uint32_t* slots = &members[group.offset];
+    auto member = [&](std::uint32_t j) {
+      const std::uint32_t t = slots[j] / 3;
+      return Member{slots[j], tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
+    };
     if (n > 16) {
-      std::sort(m.begin(), m.end(), by_slot);
+      for (std::uint32_t j = 0; j < n; ++j) m[j] = member(j);
+      std::sort(m.begin(), m.end(), [](const Member& a, const Member& b) { return a.slot < b.slot; });
     } else {
-      for (std::uint32_t j = 1; j < n; ++j) {  // insertion sort: most groups are small
-        const Member x = m[j];
-        std::uint32_t i = j;
-        for (; i > 0 && by_slot(x, m[i - 1]); --i) m[i] = m[i - 1];
-        m[i] = x;
+      // Most groups are small: each member goes straight to its rank (slots are distinct), counted
+      // without branches.
+      for (std::uint32_t j = 0; j < n; ++j) {
+        std::uint32_t rank = 0;
+        for (std::uint32_t i = 0; i < n; ++i) rank += slots[i] < slots[j];
+        m[rank] = member(j);
       }
     }
     // The common case: every pair of members joins (none antiparallel), so every member's
