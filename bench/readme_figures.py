@@ -213,9 +213,9 @@ def fit(args):
 
 
 def tangents(args):
-    # Three processes, the median of their ratios: a process's tangents time is bimodal on this VM
-    # (43-48 ms, or 61-79 ms when the kernel zeroes its fresh pages: clear_page_erms 17% of the
-    # samples in perf), while the corner normals' is not; one process would quote either mode.
+    # Three processes, the median of their ratios. Until tangents4 a process's tangents time was
+    # bimodal on this VM (fresh huge pages the host had dropped: bench/normals/results/
+    # tangents_steps.md, "Bimodality"); the median of three is kept as a guard.
     src = "bench/normals/results/tangents.md"
     ratios, ours_ms, npm_ms = [], [], []
     for _ in range(3):

@@ -51,6 +51,49 @@ Mesh affine_grid(double a, double b, double c, double d, int n, bool quads) {
   return m;
 }
 
+// A torus (radii 1 and 0.35) as an n by n grid of triangles with its exact unit normals as vertex
+// normals and texture coordinates (i / n, j / n) split along the seams u = 1 and v = 1, as
+// bench/normals/bench_tangents.cpp builds it: positions, normals and texture coordinates shared
+// between corners by index.
+Mesh textured_torus(int n) {
+  Mesh m;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * kPi * i / n, v = 2 * kPi * j / n;
+      m.add_vertex({(1 + 0.35 * std::cos(v)) * std::cos(u), (1 + 0.35 * std::cos(v)) * std::sin(u), 0.35 * std::sin(v)});
+      m.vertex_normals.insert(m.vertex_normals.end(), {std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v)});
+    }
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.texcoords.insert(m.texcoords.end(), {double(i) / n, double(j) / n});
+  auto vid = [n](int i, int j) { return std::uint32_t((j % n) * n + (i % n)); };
+  auto tid = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.add_face({vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)});
+      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j), tid(i + 1, j + 1)});
+      m.add_face({vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)});
+      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j + 1), tid(i, j + 1)});
+    }
+  return m;
+}
+
+// The same mesh with nothing shared: every corner its own position, vertex normal and texture
+// coordinate (copies of its values).
+Mesh per_corner_copies(const Mesh& m) {
+  Mesh c = m;
+  c.positions.clear();
+  c.vertex_normals.clear();
+  c.texcoords.clear();
+  for (std::size_t k = 0; k < m.num_corners(); ++k) {
+    const std::uint32_t v = m.corner_vertex[k], t = m.corner_texcoord_index[k];
+    c.add_vertex(m.position(v));
+    c.vertex_normals.insert(c.vertex_normals.end(), m.vertex_normals.begin() + 3 * v, m.vertex_normals.begin() + 3 * v + 3);
+    c.texcoords.insert(c.texcoords.end(), m.texcoords.begin() + 2 * t, m.texcoords.begin() + 2 * t + 2);
+    c.corner_vertex[k] = c.corner_texcoord_index[k] = std::uint32_t(k);
+  }
+  return c;
+}
+
 double angle_deg(const double* t, Vec3d e) {
   const Vec3d a{t[0], t[1], t[2]};
   const Vec3d x = cross(a, e);
@@ -98,6 +141,31 @@ TEST_CASE("MikkTSpace: a mirrored texture seam keeps each side's handedness", "[
   for (std::size_t c = 6; c < 12; ++c) {
     CHECK(t.tangents[4 * c + 3] == -1.0);
     CHECK(angle_deg(&t.tangents[4 * c], {-1, 0, 0}) < 1e-4);
+  }
+}
+
+// tangents.h, step 2: corners weld by their values (float ==: -0 equals +0, a value with a NaN
+// equals nothing), the mesh's indices play no part; so sharing values by index or copying them
+// per corner cannot change a bit. With a NaN shared by index (a position, a normal, a texture
+// coordinate), its corners must stay apart as their copies do: welding them would join the groups
+// around their neighbours.
+TEST_CASE("MikkTSpace welds by value, not by index: shared and per-corner copies give the same bits, NaN included", "[tangents]") {
+  for (bool with_nan : {false, true}) {
+    Mesh shared = textured_torus(12);
+    if (with_nan) {
+      shared.positions[3 * 17 + 1] = std::nan("");
+      shared.vertex_normals[3 * 60 + 2] = std::nan("");
+      shared.texcoords[2 * 100] = std::nan("");
+    }
+    shared.positions[3 * 30] = -0.0;  // -0 and +0 are one value
+    const Mesh copied = per_corner_copies(shared);
+    const TangentFrames a = mikktspace_tangents(shared), b = mikktspace_tangents(copied);
+    INFO("NaN values: " << with_nan);
+    REQUIRE(a.tangents.size() == 4 * shared.num_corners());
+    REQUIRE(b.tangents.size() == a.tangents.size());
+    CHECK(std::memcmp(a.tangents.data(), b.tangents.data(), 8 * a.tangents.size()) == 0);
+    CHECK(a.default_corners == b.default_corners);
+    CHECK(a.fallback_corners == b.fallback_corners);
   }
 }
 

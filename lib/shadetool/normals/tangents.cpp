@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 
-#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 #include <shadetool/normals/engine/tangent_corner_terms.h>
 
@@ -66,7 +66,12 @@ struct TriInfo {
   float mag_s = 0, mag_t = 0;
 };
 
-using TriInfos = BulkVector<TriInfo>;  // per healthy triangle (unzeroed, huge pages: bulk_reserve.h)
+// Scratch arrays are plain heap blocks (new T[n]: members without initialisers stay unwritten),
+// never advised as huge pages: a fresh huge page costs its first toucher either next to nothing or
+// far more than the 512 small pages it replaces, depending on whether the hypervisor still backs
+// that memory, so a call's time depended on the machine's history (bench/normals/results/
+// tangents_steps.md, "Bimodality"). Small pages cost the same every time.
+using TriInfos = std::unique_ptr<TriInfo[]>;  // per healthy triangle
 
 struct Group {
   std::uint32_t representative;  // the welded vertex
@@ -123,7 +128,8 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
 // value gets a canonical vertex (the first vertex with that value, by an open-addressing table over
 // the vertices, not the corners); the corners, in order, look for their values among the welded
 // vertices already found at their canonical vertex (a short list; one with more than kLinear
-// welded vertices moves them to a table keyed by all eight values).
+// welded vertices moves them to a table keyed by all eight values); a corner with the same vertex,
+// normal and texture-coordinate indices as its vertex's latest corner takes that one's directly.
 struct WeldedVertex {
   F3 p, n;
   float u = 0, v = 0;
@@ -182,7 +188,7 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
 }
 
 struct Welded {
-  BulkVector<std::uint32_t> id;      // #C: the welded vertex of each corner taken
+  std::unique_ptr<std::uint32_t[]> id;  // #C: the welded vertex of each corner taken (unwritten elsewhere)
   std::vector<WeldedVertex> vertex;  // #U: its values
 };
 
@@ -190,7 +196,7 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
   const std::size_t V = in.positions.size(), F = mesh.num_faces();
   const std::vector<std::uint32_t> first = canonical_positions(in.positions);
   Welded w;
-  w.id.resize(in.num_corners);
+  w.id.reset(new std::uint32_t[in.num_corners]);
   w.vertex.reserve(V + V / 4);
   constexpr std::uint32_t kLinear = 16, kNone = ~0u;
   std::vector<std::uint32_t> head(V, kNone);   // canonical vertex -> its latest welded vertex
@@ -217,9 +223,22 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
   };
   std::size_t in_table = 0;
   const F3 *positions = in.positions.data(), *normals = in.normals.data(), *texcoords = in.texcoords.data();
+  // Per vertex, the indices (normal, texture coordinate) of its latest corner and that corner's
+  // welded vertex: a corner with the same three indices has the same values, so the same welded
+  // vertex, found without reading or comparing them (most corners of an indexed mesh). Values with
+  // a NaN equal nothing, not even themselves: never recorded.
+  struct Recent {
+    std::uint32_t normal, texcoord, welded;
+  };
+  std::vector<Recent> recent(V, Recent{kNone, kNone, kNone});
   for (std::size_t f = 0; f < F; ++f) {
     if (!taken[f]) continue;
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      Recent& r = recent[in.vertex[c]];
+      if (r.welded != kNone && r.normal == in.normal[c] && r.texcoord == in.texcoord[c]) {
+        w.id[c] = r.welded;
+        continue;
+      }
       const F3 t = texcoords[in.texcoord[c]];
       const WeldedVertex x{positions[in.vertex[c]], normals[in.normal[c]], t.x, t.y};
       const std::uint32_t b = first[in.vertex[c]];
@@ -242,6 +261,7 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
         }
       }
       w.id[c] = k;
+      if (!has_nan(x)) r = {in.normal[c], in.texcoord[c], k};
     }
   }
   return w;
@@ -348,7 +368,7 @@ void find_neighbours(Triangles& tris, std::size_t num_welded) {
   std::vector<std::uint32_t> start(num_welded + 1, 0);
   for (std::size_t j = 0; j < S; ++j) ++start[std::min(index[j], other_end(j)) + 1];
   for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
-  BulkVector<Edge> edges(S);  // filled in full below: not zeroed first
+  const std::unique_ptr<Edge[]> edges(new Edge[S]);  // filled in full below: not zeroed first
   {
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
     for (std::size_t j = 0; j < S; ++j) {
@@ -359,7 +379,7 @@ void find_neighbours(Triangles& tris, std::size_t num_welded) {
   tris.neighbour.assign(S, -1);
   std::int32_t* neighbour = tris.neighbour.data();
   for (std::size_t v = 0; v < num_welded; ++v) {
-    Edge* e = edges.data() + start[v];
+    Edge* e = edges.get() + start[v];
     const std::size_t n = start[v + 1] - start[v];
     auto before = [](const Edge& a, const Edge& b) { return a.hi != b.hi ? a.hi < b.hi : a.slot < b.slot; };
     if (n > 16) {
@@ -386,7 +406,8 @@ void find_neighbours(Triangles& tris, std::size_t num_welded) {
 }
 
 int corner_at(const std::uint32_t* idx, std::uint32_t vertex) {
-  return idx[0] == vertex ? 0 : idx[1] == vertex ? 1 : 2;
+  // idx[0] == vertex ? 0 : idx[1] == vertex ? 1 : 2, without branches (which corner is random).
+  return (1 - int(idx[0] == vertex)) * (2 - int(idx[1] == vertex));
 }
 
 // Step 6: groups of triangles around each welded vertex (the reference's four rules), depth first
@@ -577,19 +598,21 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
       corner_terms(wv, tris, info, &members[batch_begin], batch_end - batch_begin, terms.data());
     }
     m.resize(n);
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const std::uint32_t slot = members[group.offset + j], t = slot / 3;
-      m[j] = {slot, tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
-    }
-    auto by_slot = [](const Member& a, const Member& b) { return a.slot < b.slot; };
+    const std::uint32_t* slots = &members[group.offset];
+    auto member = [&](std::uint32_t j) {
+      const std::uint32_t t = slots[j] / 3;
+      return Member{slots[j], tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
+    };
     if (n > 16) {
-      std::sort(m.begin(), m.end(), by_slot);
+      for (std::uint32_t j = 0; j < n; ++j) m[j] = member(j);
+      std::sort(m.begin(), m.end(), [](const Member& a, const Member& b) { return a.slot < b.slot; });
     } else {
-      for (std::uint32_t j = 1; j < n; ++j) {  // insertion sort: most groups are small
-        const Member x = m[j];
-        std::uint32_t i = j;
-        for (; i > 0 && by_slot(x, m[i - 1]); --i) m[i] = m[i - 1];
-        m[i] = x;
+      // Most groups are small: each member goes straight to its rank (slots are distinct), counted
+      // without branches.
+      for (std::uint32_t j = 0; j < n; ++j) {
+        std::uint32_t rank = 0;
+        for (std::uint32_t i = 0; i < n; ++i) rank += slots[i] < slots[j];
+        m[rank] = member(j);
       }
     }
     // The common case: every pair of members joins (none antiparallel), so every member's
@@ -732,9 +755,9 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   const Welded welded = weld(mesh, in, taken);
   const std::vector<WeldedVertex>& wv = welded.vertex;
   Triangles tris;
-  make_triangles(mesh, in, taken, welded.id.data(), tris);
+  make_triangles(mesh, in, taken, welded.id.get(), tris);
   set_aside_degenerate(mesh, wv, tris);
-  TriInfos info(tris.good);
+  TriInfos info(new TriInfo[tris.good]);  // TriInfo{}: zero derivatives
   triangle_derivatives(mesh, wv, tris, info);
   find_neighbours(tris, wv.size());
   std::vector<Group> groups;
@@ -749,7 +772,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   const TSpace none;  // the reference's default frame
 
   TangentFrames out;
-  reserve_bulk(out.tangents, 4 * C);  // filled in corner order below: no zeroing first
+  out.tangents.reserve(4 * C);  // filled in corner order below: no zeroing first; small pages (TriInfos)
   std::vector<double>& o = out.tangents;
   for (std::size_t f = 0; f < F; ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
