@@ -21,30 +21,16 @@
 #include <shadetool/normals/tangents.h>
 #include <shadetool/normals/vertex_normals.h>
 
+#include "support/analytic_meshes.h"
+
 using namespace shadetool;
 
 namespace {
 
+// The textured torus of tests/support/analytic_meshes.h (radii 1 and 0.35, (n + 1)^2 texture
+// coordinates: the seam rows and columns repeat), with angle-weighted vertex normals.
 Mesh torus_grid(int n) {
-  Mesh m;
-  const double R = 1.0, r = 0.35, pi = 3.141592653589793;
-  // (n + 1)^2 texture coordinates (the seam rows/columns repeat), n^2 positions.
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double u = 2 * pi * i / n, v = 2 * pi * j / n;
-      m.add_vertex({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
-    }
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) m.texcoords.insert(m.texcoords.end(), {double(i) / n, double(j) / n});
-  auto vid = [n](int i, int j) { return std::uint32_t((j % n) * n + (i % n)); };
-  auto tid = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.add_face({vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)});
-      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j), tid(i + 1, j + 1)});
-      m.add_face({vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)});
-      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j + 1), tid(i, j + 1)});
-    }
+  Mesh m = shadetool::testing::textured_torus(n).mesh;
   m.vertex_normals = vertex_normals(m, Weighting::Angle, Precision::Double).normals;
   return m;
 }

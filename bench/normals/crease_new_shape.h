@@ -16,6 +16,7 @@
 // Pass 3, in corner order: corner_index[c] = row of its vertex.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -74,18 +75,18 @@ inline bool one_ring(std::uint32_t v, const std::uint32_t* pair, std::uint32_t d
   return true;
 }
 
-// passes: 1 = pass 1 only, 3 = all three. Parts (pass 1): 0 sums only, 1 sums + cone, 2 everything.
-template <int Parts = 2>
-inline Result run(const Mesh& mesh, double crease_angle, int passes, BulkVector<Slot>& slots, std::vector<double>& S) {
-  Result out;
-  const std::size_t V = mesh.num_vertices(), F = mesh.num_faces(), C = mesh.num_corners();
+// Pass 1's front, shared by both variants: the faces in blocks of kTriangleBlock, positions
+// gathered (prefetched kPrefetchFaces ahead, with the vertex records `rows` of `row_bytes` each),
+// the vectorised angle contributions w (triangle_blocks.h), then per face either
+// degenerate(v3) (scalar path or degenerate face: NaN weights) or
+// face(v3, w, i, nx, ny, nz) with the face's unit normal n = (w0 + w1 + w2) / pi (the three
+// angles sum to pi by construction).
+template <class Degenerate, class Face>
+inline void for_each_angle_face(const Mesh& mesh, const void* rows, std::size_t row_bytes, Degenerate&& degenerate,
+                                Face&& face) {
+  const std::size_t F = mesh.num_faces();
   const double* P = mesh.positions.data();
   const std::uint32_t* cv = mesh.corner_vertex.data();
-  const double min_dot = cone_min_dot(crease_angle);
-  slots.resize(V);
-  for (std::size_t v = 0; v < V; ++v) slots[v].d = 0;
-  S.assign(3 * V, 0.0);
-  const float nan = std::numeric_limits<float>::quiet_NaN();
   alignas(64) double xyz[9][kTriangleBlock];
   alignas(64) double w[9][kTriangleBlock];
   const double inv_pi = 1.0 / kPi;
@@ -103,33 +104,54 @@ inline Result run(const Mesh& mesh, double crease_angle, int passes, BulkVector<
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
       if (b + i + kPrefetchFaces < F)
-        prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{reinterpret_cast<const char*>(slots.data()), sizeof(Slot)});
+        prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{reinterpret_cast<const char*>(rows), row_bytes});
       const std::uint32_t v3[3] = {cv[c], cv[c + 1], cv[c + 2]};
-      if (std::isnan(w[0][i])) {  // scalar path or degenerate: the experiment marks its vertices hard
-        for (int k = 0; k < 3; ++k) { slots[v3[k]].ax = nan; slots[v3[k]].d = 99; }
+      if (std::isnan(w[0][i])) {
+        degenerate(v3);
         continue;
       }
       const double nx = (w[0][i] + w[3][i] + w[6][i]) * inv_pi, ny = (w[1][i] + w[4][i] + w[7][i]) * inv_pi,
                    nz = (w[2][i] + w[5][i] + w[8][i]) * inv_pi;
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t v = v3[k];
-        double* s = &S[3 * std::size_t(v)];
-        s[0] += w[3 * k][i]; s[1] += w[3 * k + 1][i]; s[2] += w[3 * k + 2][i];
-        if constexpr (Parts == 0) continue;
-        Slot& sl = slots[v];
-        const std::uint32_t d = sl.d;
-        const bool first = d == 0;
-        const float ax = first ? float(nx) : sl.ax, ay = first ? float(ny) : sl.ay, az = first ? float(nz) : sl.az;
-        const bool inside = nx * double(ax) + ny * double(ay) + nz * double(az) > min_dot;
-        sl.ax = inside ? ax : nan; sl.ay = ay; sl.az = az;
-        if constexpr (Parts == 1) { sl.d = d + 1; continue; }
-        const std::uint32_t slot = d < kSlotPairs ? d : kSlotPairs - 1;
-        sl.pair[2 * slot] = v3[(k + 1) % 3];
-        sl.pair[2 * slot + 1] = v3[(k + 2) % 3];
-        sl.d = d + 1;
-      }
+      face(v3, w, i, nx, ny, nz);
     }
   }
+}
+
+// passes: 1 = pass 1 only, 3 = all three. Parts (pass 1): 0 sums only, 1 sums + cone, 2 everything.
+template <int Parts = 2>
+inline Result run(const Mesh& mesh, double crease_angle, int passes, BulkVector<Slot>& slots, std::vector<double>& S) {
+  Result out;
+  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
+  const std::uint32_t* cv = mesh.corner_vertex.data();
+  const double min_dot = cone_min_dot(crease_angle);
+  slots.resize(V);
+  for (std::size_t v = 0; v < V; ++v) slots[v].d = 0;
+  S.assign(3 * V, 0.0);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for_each_angle_face(
+      mesh, slots.data(), sizeof(Slot),
+      [&](const std::uint32_t* v3) {  // the experiment marks a degenerate face's vertices hard
+        for (int k = 0; k < 3; ++k) { slots[v3[k]].ax = nan; slots[v3[k]].d = 99; }
+      },
+      [&](const std::uint32_t* v3, const double (*w)[kTriangleBlock], std::size_t i, double nx, double ny, double nz) {
+        for (int k = 0; k < 3; ++k) {
+          const std::uint32_t v = v3[k];
+          double* s = &S[3 * std::size_t(v)];
+          s[0] += w[3 * k][i]; s[1] += w[3 * k + 1][i]; s[2] += w[3 * k + 2][i];
+          if constexpr (Parts == 0) continue;
+          Slot& sl = slots[v];
+          const std::uint32_t d = sl.d;
+          const bool first = d == 0;
+          const float ax = first ? float(nx) : sl.ax, ay = first ? float(ny) : sl.ay, az = first ? float(nz) : sl.az;
+          const bool inside = nx * double(ax) + ny * double(ay) + nz * double(az) > min_dot;
+          sl.ax = inside ? ax : nan; sl.ay = ay; sl.az = az;
+          if constexpr (Parts == 1) { sl.d = d + 1; continue; }
+          const std::uint32_t slot = d < kSlotPairs ? d : kSlotPairs - 1;
+          sl.pair[2 * slot] = v3[(k + 1) % 3];
+          sl.pair[2 * slot + 1] = v3[(k + 2) % 3];
+          sl.d = d + 1;
+        }
+      });
   if (passes == 1) return out;
   std::vector<std::uint32_t> row(V, ~0u);
   reserve_bulk(out.normals, 3 * V);
@@ -180,49 +202,25 @@ static_assert(sizeof(SlotB) == 128, "two cache lines");
 template <int Passes>
 inline Result run_b(const Mesh& mesh, double crease_angle, BulkVector<SlotB>& slots) {
   Result out;
-  const std::size_t V = mesh.num_vertices(), F = mesh.num_faces(), C = mesh.num_corners();
-  const double* P = mesh.positions.data();
+  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
   const std::uint32_t* cv = mesh.corner_vertex.data();
   const double cos_alpha = cone_min_dot(crease_angle) - 1e-5;
   slots.resize(V);
   for (std::size_t v = 0; v < V; ++v) slots[v] = SlotB{};
-  alignas(64) double xyz[9][kTriangleBlock];
-  alignas(64) double w[9][kTriangleBlock];
-  const double inv_pi = 1.0 / kPi;
-  for (std::size_t b = 0; b < F; b += kTriangleBlock) {
-    const std::size_t count = std::min(kTriangleBlock, F - b);
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t c = 3 * (b + i);
-      if (b + i + kPrefetchFaces < F) prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{});
-      for (int k = 0; k < 3; ++k) {
-        const double* p = P + 3 * std::size_t(cv[c + k]);
-        xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
-      }
-    }
-    triangle_block_angle(count, &xyz[0][0], &w[0][0]);
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t c = 3 * (b + i);
-      if (b + i + kPrefetchFaces < F)
-        prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{reinterpret_cast<const char*>(slots.data()), sizeof(SlotB)});
-      const std::uint32_t v3[3] = {cv[c], cv[c + 1], cv[c + 2]};
-      if (std::isnan(w[0][i])) {
-        for (int k = 0; k < 3; ++k) slots[v3[k]].bad = 1;
-        continue;
-      }
-      const double nx = (w[0][i] + w[3][i] + w[6][i]) * inv_pi, ny = (w[1][i] + w[4][i] + w[7][i]) * inv_pi,
-                   nz = (w[2][i] + w[5][i] + w[8][i]) * inv_pi;
-      for (int k = 0; k < 3; ++k) {
-        SlotB& sl = slots[v3[k]];
-        sl.s[0] += w[3 * k][i]; sl.s[1] += w[3 * k + 1][i]; sl.s[2] += w[3 * k + 2][i];
-        sl.u[0] += nx; sl.u[1] += ny; sl.u[2] += nz;
-        const std::uint32_t d = sl.d;
-        const std::uint32_t slot = d < kSlotPairsB ? d : kSlotPairsB - 1;
-        sl.pair[2 * slot] = v3[k == 2 ? 0 : k + 1];
-        sl.pair[2 * slot + 1] = v3[k == 0 ? 2 : k - 1];
-        sl.d = d + 1;
-      }
-    }
-  }
+  for_each_angle_face(
+      mesh, slots.data(), sizeof(SlotB), [&](const std::uint32_t* v3) { for (int k = 0; k < 3; ++k) slots[v3[k]].bad = 1; },
+      [&](const std::uint32_t* v3, const double (*w)[kTriangleBlock], std::size_t i, double nx, double ny, double nz) {
+        for (int k = 0; k < 3; ++k) {
+          SlotB& sl = slots[v3[k]];
+          sl.s[0] += w[3 * k][i]; sl.s[1] += w[3 * k + 1][i]; sl.s[2] += w[3 * k + 2][i];
+          sl.u[0] += nx; sl.u[1] += ny; sl.u[2] += nz;
+          const std::uint32_t d = sl.d;
+          const std::uint32_t slot = d < kSlotPairsB ? d : kSlotPairsB - 1;
+          sl.pair[2 * slot] = v3[k == 2 ? 0 : k + 1];
+          sl.pair[2 * slot + 1] = v3[k == 0 ? 2 : k - 1];
+          sl.d = d + 1;
+        }
+      });
   if (Passes == 1) return out;
   std::vector<std::uint32_t> row(V, ~0u);
   reserve_bulk(out.normals, 3 * V);

@@ -17,6 +17,7 @@
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/tangents.h>
 #include <shadetool/normals/update_mesh_normals.h>
+#include "support/analytic_meshes.h"
 #include "support/mesh_file_list.h"
 #include "support/mikktspace_reference.h"
 #include "support/run_process.h"
@@ -52,29 +53,13 @@ Mesh affine_grid(double a, double b, double c, double d, int n, bool quads) {
 }
 
 // A torus (radii 1 and 0.35) as an n by n grid of triangles with its exact unit normals as vertex
-// normals and texture coordinates (i / n, j / n) split along the seams u = 1 and v = 1, as
-// bench/normals/bench_tangents.cpp builds it: positions, normals and texture coordinates shared
+// normals and texture coordinates split along the seams (support/analytic_meshes.h, the mesh
+// bench/normals/bench_tangents.cpp times): positions, normals and texture coordinates shared
 // between corners by index.
 Mesh textured_torus(int n) {
-  Mesh m;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double u = 2 * kPi * i / n, v = 2 * kPi * j / n;
-      m.add_vertex({(1 + 0.35 * std::cos(v)) * std::cos(u), (1 + 0.35 * std::cos(v)) * std::sin(u), 0.35 * std::sin(v)});
-      m.vertex_normals.insert(m.vertex_normals.end(), {std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v)});
-    }
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) m.texcoords.insert(m.texcoords.end(), {double(i) / n, double(j) / n});
-  auto vid = [n](int i, int j) { return std::uint32_t((j % n) * n + (i % n)); };
-  auto tid = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.add_face({vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)});
-      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j), tid(i + 1, j + 1)});
-      m.add_face({vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)});
-      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j + 1), tid(i, j + 1)});
-    }
-  return m;
+  shadetool::testing::AnalyticMesh am = shadetool::testing::textured_torus(n);
+  for (const Vec3d& e : am.exact_normals) am.mesh.vertex_normals.insert(am.mesh.vertex_normals.end(), {e.x, e.y, e.z});
+  return std::move(am.mesh);
 }
 
 // The same mesh with nothing shared: every corner its own position, vertex normal and texture

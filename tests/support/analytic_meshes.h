@@ -106,6 +106,33 @@ inline AnalyticMesh torus(int nu, int nv, double R = 1.0, double r = 0.4, double
   return am;
 }
 
+// A textured torus (radii R and r) as an n by n grid of triangles, each cell split along the same
+// diagonal, with texture coordinates (i / n, j / n) split along the seams u = 1 and v = 1 ((n + 1)^2
+// of them): positions and texture coordinates shared between corners by index, no normals in the
+// mesh (exact_normals beside it). The mesh of bench/normals/bench_tangents and tests/normals/tangents.
+inline AnalyticMesh textured_torus(int n, double R = 1.0, double r = 0.35) {
+  AnalyticMesh am;
+  Mesh& m = am.mesh;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * kPi * i / n, v = 2 * kPi * j / n;
+      m.add_vertex({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+      am.exact_normals.push_back({std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v)});
+    }
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.texcoords.insert(m.texcoords.end(), {double(i) / n, double(j) / n});
+  auto vid = [n](int i, int j) { return std::uint32_t((j % n) * n + (i % n)); };
+  auto tid = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.add_face({vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)});
+      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j), tid(i + 1, j + 1)});
+      m.add_face({vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)});
+      m.corner_texcoord_index.insert(m.corner_texcoord_index.end(), {tid(i, j), tid(i + 1, j + 1), tid(i, j + 1)});
+    }
+  return am;
+}
+
 // Ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1 as a UV grid: nu longitudes, nv latitude bands, single
 // pole vertices. Normal ∝ (x/a^2, y/b^2, z/c^2). a = b = c = 1 is the UV sphere.
 inline AnalyticMesh uv_ellipsoid(int nu, int nv, double a, double b, double c, double jitter = 0.0, std::uint32_t seed = 1) {
