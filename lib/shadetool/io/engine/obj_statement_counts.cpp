@@ -33,11 +33,28 @@ struct BlockMasks {
   std::uint64_t lf = 0, sp = 0, hash = 0, v = 0, f = 0, n = 0, t = 0, cr_or_nul = 0;
 };
 
-// The two byte tests block_masks is made of, at one width (kBytes bytes from b; bit i of the
-// result for byte i): equal(b, c), the bytes equal to c; control(b), the bytes 9..13 (tab, line
-// feed, vertical tab, form feed, CR). Pointers in, integers out: no vector value crosses a
-// function (so no ABI warning), and the AVX2 lanes (target("avx2"), not always_inline: a generic
-// function cannot inline them) are inlined only into count_avx2, which flattens its callees.
+// A set of bytes, as a type: the masks' tests are made of these.
+template <char... Cs>
+struct ByteSet {
+  static constexpr bool contains(char c) { return ((c == Cs) || ...); }
+};
+using LineFeed = ByteSet<'\n'>;
+using Spaces = ByteSet<' ', '\t', '\v', '\f', '\r'>;  // is_space's bytes (checked below)
+using CrOrNul = ByteSet<'\r', '\0'>;
+
+constexpr bool spaces_are_is_space() {
+  for (int c = 0; c < 256; ++c)
+    if (Spaces::contains(char(c)) != is_space(char(c))) return false;
+  return true;
+}
+static_assert(spaces_are_is_space(), "the masks' spaces are is_space's bytes");
+
+// The one byte test block_masks is made of, at one width: match(b, ByteSet<Cs...>{}), bit i set
+// when byte i of the kBytes bytes from b is one of Cs (one compare per byte of the set, or-ed,
+// one movemask: the movemasks, not the compares, bound the counting pass's speed). Pointers in,
+// integers out: no vector value crosses a function (so no ABI warning), and the AVX2 lanes
+// (target("avx2"), not always_inline: a generic function cannot inline them) are inlined only
+// into count_avx2, which flattens its callees.
 //
 // Plain C++: 8 bytes in one 64-bit word (SWAR). A byte's test leaves its high bit (0x80) set;
 // bits() gathers the 8 high bits into bits 0..7, byte i to bit i.
@@ -52,86 +69,66 @@ struct PlainLanes {
 #endif
     return w;
   }
+  // 0x80 in each byte of w equal to c. A byte is zero iff adding 0x7f to its low 7 bits, or-ed
+  // with itself, leaves the high bit clear (no carry crosses a byte: (x & 0x7f) + 0x7f <= 0xfe).
+  static inline std::uint64_t equal_high(std::uint64_t w, char c) {
+    const std::uint64_t x = w ^ (kOnes * static_cast<unsigned char>(c));
+    return ~(((x & kLow7) + kLow7) | x) & kHigh;
+  }
   // Flags 0x80 per byte -> bit i for byte i: each flag (0 or 1 at bit 8i) times the constant
   // lands at bit 56 + i, no two products overlapping.
   static inline std::uint64_t bits(std::uint64_t high) { return ((high >> 7) * 0x0102040810204080u) >> 56; }
-  // A byte is zero iff adding 0x7f to its low 7 bits, or-ed with itself, leaves the high bit clear
-  // (no carry crosses a byte: (x & 0x7f) + 0x7f <= 0xfe).
-  static inline std::uint64_t equal(const char* b, char c) {
-    const std::uint64_t x = word(b) ^ (kOnes * static_cast<unsigned char>(c));
-    return bits(~(((x & kLow7) + kLow7) | x) & kHigh);
-  }
-  // 9 <= byte <= 13: the low 7 bits plus 0x80 - 9 reach the high bit, plus 0x80 - 14 do not, and
-  // the byte's own high bit is clear.
-  static inline std::uint64_t control(const char* b) {
-    const std::uint64_t w = word(b), y = w & kLow7;
-    const std::uint64_t at_least_9 = y + kOnes * (0x80 - 9), at_least_14 = y + kOnes * (0x80 - 14);
-    return bits(at_least_9 & ~at_least_14 & ~w & kHigh);
+  template <char... Cs>
+  static inline std::uint64_t match(const char* b, ByteSet<Cs...>) {
+    const std::uint64_t w = word(b);
+    return bits((equal_high(w, Cs) | ...));
   }
 };
 
 #if defined(SHADETOOL_OBJ_COUNT_X86)
 struct Sse2Lanes {
   static constexpr int kBytes = 16;
-  static inline __m128i load(const char* b) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(b)); }
-  static inline std::uint64_t equal(const char* b, char c) {
-    return unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(load(b), _mm_set1_epi8(c))));
-  }
-  // byte - 9 <= 4, unsigned: min(d, 4) == d.
-  static inline std::uint64_t control(const char* b) {
-    const __m128i d = _mm_sub_epi8(load(b), _mm_set1_epi8(9));
-    return unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_min_epu8(d, _mm_set1_epi8(4)), d)));
+  template <char... Cs>
+  static inline std::uint64_t match(const char* b, ByteSet<Cs...>) {
+    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b));
+    const __m128i m = (_mm_cmpeq_epi8(x, _mm_set1_epi8(Cs)) | ...);
+    return unsigned(_mm_movemask_epi8(m));
   }
 };
 
 struct Avx2Lanes {
   static constexpr int kBytes = 32;
-  __attribute__((target("avx2"))) static inline __m256i load(const char* b) {
-    return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b));
-  }
-  __attribute__((target("avx2"))) static inline std::uint64_t equal(const char* b, char c) {
-    return unsigned(_mm256_movemask_epi8(_mm256_cmpeq_epi8(load(b), _mm256_set1_epi8(c))));
-  }
-  __attribute__((target("avx2"))) static inline std::uint64_t control(const char* b) {
-    const __m256i d = _mm256_sub_epi8(load(b), _mm256_set1_epi8(9));
-    return unsigned(_mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_min_epu8(d, _mm256_set1_epi8(4)), d)));
+  template <char... Cs>
+  __attribute__((target("avx2"))) static inline std::uint64_t match(const char* b, ByteSet<Cs...>) {
+    const __m256i x = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b));
+    const __m256i m = (_mm256_cmpeq_epi8(x, _mm256_set1_epi8(Cs)) | ...);
+    return unsigned(_mm256_movemask_epi8(m));
   }
 };
 #endif
 
-// The masks' space rule is is_space's: ' ' or a byte 9..13 other than the line feed.
-constexpr bool space_rule_is_is_space() {
-  for (int c = 0; c < 256; ++c)
-    if (is_space(char(c)) != (c == ' ' || (c != '\n' && unsigned(c - 9) <= 4))) return false;
-  return true;
-}
-static_assert(space_rule_is_is_space(), "block_masks' spaces are is_space's bytes");
-
-// The block's masks from Lanes' two tests, 64 / kBytes lanes at a time: the one home of which
-// byte goes into which mask (is_space's bytes: ' ' and 9..13 except the line feed).
+// The block's masks, 64 / kBytes lanes at a time: the one home of which byte goes into which mask.
 template <class Lanes>
 __attribute__((always_inline)) inline BlockMasks block_masks(const char* b) {
   BlockMasks m;
   for (int k = 0; k < 64 / Lanes::kBytes; ++k) {
     const char* const lane = b + Lanes::kBytes * k;
     const int at = Lanes::kBytes * k;
-    auto eq = [&](char c) { return Lanes::equal(lane, c) << at; };
-    const std::uint64_t control = Lanes::control(lane) << at;
-    const std::uint64_t lf = eq('\n');
-    m.lf |= lf;
-    m.sp |= eq(' ') | (control & ~lf);
-    m.hash |= eq('#');
-    m.v |= eq('v');
-    m.f |= eq('f');
-    m.n |= eq('n');
-    m.t |= eq('t');
-    m.cr_or_nul |= eq('\r') | eq('\0');
+    m.lf |= Lanes::match(lane, LineFeed{}) << at;
+    m.sp |= Lanes::match(lane, Spaces{}) << at;
+    m.hash |= Lanes::match(lane, ByteSet<'#'>{}) << at;
+    m.v |= Lanes::match(lane, ByteSet<'v'>{}) << at;
+    m.f |= Lanes::match(lane, ByteSet<'f'>{}) << at;
+    m.n |= Lanes::match(lane, ByteSet<'n'>{}) << at;
+    m.t |= Lanes::match(lane, ByteSet<'t'>{}) << at;
+    m.cr_or_nul |= Lanes::match(lane, CrOrNul{}) << at;
   }
   return m;
 }
 
 inline std::size_t ones(std::uint64_t x) { return std::size_t(__builtin_popcountll(x)); }
 
+// The counts of [p, end) from block masks; false when a line needs the scalar rule (see the header).
 // The counts of [p, end) from block masks; false when a line needs the scalar rule (see the header).
 template <class Lanes>
 __attribute__((always_inline)) inline bool count_blocks(const char* p, const char* const end, ObjCounts& c) {

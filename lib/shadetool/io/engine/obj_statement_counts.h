@@ -22,8 +22,8 @@
 // keyword. Lines the masks do not read as the rule does (leading spaces, a `#` token inside an
 // `f` line, an `f` not followed by one space and a token) send the whole run to the scalar
 // counter. AVX2 where the CPU has it (chosen at run time), SSE2 on other x86-64, plain C++ (8 bytes
-// per 64-bit word) on other machines: one mask builder over two byte tests (equal to c, in 9..13)
-// at each width, so the same masks and the same counts.
+// per 64-bit word) on other machines: one mask builder over one byte test (is the byte in a set:
+// one movemask per set) at each width, so the same masks and the same counts.
 #pragma once
 
 #include <cstddef>
