@@ -1,5 +1,5 @@
 // Tests of io/engine/obj_statement_counts: the counting pass of the parallel OBJ reader. The block
-// (bit mask) counter in each of its builds (Best = AVX2 here, SSE2, plain C++) gives the counts of
+// (bit mask) counter in each of its builds (Best, AVX-512BW, AVX2, SSE2, plain C++) gives the counts of
 // the byte-by-byte rule on every text, at every alignment; both give what a hand count and the
 // parser itself (read_obj's mesh) find.
 #include <random>
@@ -31,7 +31,7 @@ void require_all_agree(const std::string& text, std::size_t begin, std::size_t e
   const char* p = text.data() + begin;
   const char* e = text.data() + end;
   const ObjCounts rule = count_obj_statements_scalar(p, e);
-  for (ObjCountMasks m : {ObjCountMasks::Best, ObjCountMasks::Sse2, ObjCountMasks::Plain}) {
+  for (ObjCountMasks m : {ObjCountMasks::Best, ObjCountMasks::Avx512, ObjCountMasks::Avx2, ObjCountMasks::Sse2, ObjCountMasks::Plain}) {
     const ObjCounts c = count_obj_statements(p, e, m);
     INFO("masks " << int(m) << ", bytes [" << begin << ", " << end << "): " << show(c) << " against the rule's " << show(rule));
     REQUIRE(same(c, rule));
@@ -65,7 +65,7 @@ TEST_CASE("OBJ statement counts: a hand count of keywords, empty faces, comments
   const ObjCounts rule = count_obj_statements_scalar(text.data(), text.data() + text.size());
   INFO(show(rule));
   CHECK(same(rule, want));
-  for (ObjCountMasks m : {ObjCountMasks::Best, ObjCountMasks::Sse2, ObjCountMasks::Plain}) {
+  for (ObjCountMasks m : {ObjCountMasks::Best, ObjCountMasks::Avx512, ObjCountMasks::Avx2, ObjCountMasks::Sse2, ObjCountMasks::Plain}) {
     const ObjCounts c = count_obj_statements(text.data(), text.data() + text.size(), m);
     INFO(show(c));
     CHECK(same(c, want));

@@ -105,6 +105,16 @@ struct Avx2Lanes {
     return unsigned(_mm256_movemask_epi8(m));
   }
 };
+
+// AVX-512BW: a whole block per compare, the result straight into a 64-bit mask register.
+struct Avx512Lanes {
+  static constexpr int kBytes = 64;
+  template <char... Cs>
+  __attribute__((target("avx512f,avx512bw"))) static inline std::uint64_t match(const char* b, ByteSet<Cs...>) {
+    const __m512i x = _mm512_loadu_si512(b);
+    return (_mm512_cmpeq_epi8_mask(x, _mm512_set1_epi8(Cs)) | ...);
+  }
+};
 #endif
 
 // The block's masks, 64 / kBytes lanes at a time: the one home of which byte goes into which mask.
@@ -204,6 +214,9 @@ __attribute__((always_inline)) inline ObjCounts count_with(const char* p, const 
 __attribute__((target("avx2,popcnt"), flatten)) ObjCounts count_avx2(const char* p, const char* end) {
   return count_with<Avx2Lanes>(p, end);
 }
+__attribute__((target("avx512f,avx512bw,popcnt"), flatten)) ObjCounts count_avx512(const char* p, const char* end) {
+  return count_with<Avx512Lanes>(p, end);
+}
 ObjCounts count_sse2(const char* p, const char* end) { return count_with<Sse2Lanes>(p, end); }
 #endif
 
@@ -261,23 +274,26 @@ ObjCounts count_obj_statements_scalar(const char* p, const char* const end) {
 ObjCounts count_obj_statements(const char* p, const char* end) { return count_obj_statements(p, end, ObjCountMasks::Best); }
 
 ObjCounts count_obj_statements(const char* p, const char* end, ObjCountMasks masks) {
-  switch (masks) {
-    case ObjCountMasks::Best: {
 #if defined(SHADETOOL_OBJ_COUNT_X86)
-      static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("popcnt");
-      return avx2 ? count_avx2(p, end) : count_sse2(p, end);
-#else
-      return count_with<PlainLanes>(p, end);
-#endif
-    }
-    case ObjCountMasks::Sse2:
-#if defined(SHADETOOL_OBJ_COUNT_X86)
-      return count_sse2(p, end);
-#else
-      return count_with<PlainLanes>(p, end);
-#endif
+  static const bool popcnt = __builtin_cpu_supports("popcnt");
+  static const bool avx2 = popcnt && __builtin_cpu_supports("avx2");
+  static const bool avx512 = popcnt && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw");
+  switch (masks) {  // a width the CPU lacks: the widest below it
+    case ObjCountMasks::Best:
+    case ObjCountMasks::Avx512: return avx512 ? count_avx512(p, end) : avx2 ? count_avx2(p, end) : count_sse2(p, end);
+    case ObjCountMasks::Avx2: return avx2 ? count_avx2(p, end) : count_sse2(p, end);
+    case ObjCountMasks::Sse2: return count_sse2(p, end);
     case ObjCountMasks::Plain: return count_with<PlainLanes>(p, end);
   }
+#else
+  switch (masks) {
+    case ObjCountMasks::Best:
+    case ObjCountMasks::Avx512:
+    case ObjCountMasks::Avx2:
+    case ObjCountMasks::Sse2:
+    case ObjCountMasks::Plain: return count_with<PlainLanes>(p, end);
+  }
+#endif
   return count_obj_statements_scalar(p, end);
 }
 
