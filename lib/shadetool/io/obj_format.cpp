@@ -432,8 +432,13 @@ void populate_in_parallel(T* data, std::size_t n) {
   const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) & ~(std::uintptr_t(4095));
   const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(data + n);
   if (end - begin < 4 * kBlock) return;
-  tbb::parallel_for(begin, end, kBlock, [&](std::uintptr_t b) {
-    ::madvise(reinterpret_cast<void*>(b), std::min(kBlock, end - b), kPopulateWrite);
+  // Blocks on 2 MiB boundaries (the first and last clipped to the array): each huge page
+  // (reserve_bulk advises them) is faulted and zeroed by one call, not waited for by a second
+  // thread whose block starts inside it.
+  const std::uintptr_t first = begin & ~(kBlock - 1);
+  tbb::parallel_for(first, end, kBlock, [&](std::uintptr_t b) {
+    const std::uintptr_t from = std::max(b, begin), to = std::min(b + kBlock, end);
+    ::madvise(reinterpret_cast<void*>(from), to - from, kPopulateWrite);
   });
 #else
   (void)data;
