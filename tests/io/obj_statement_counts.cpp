@@ -2,6 +2,7 @@
 // (bit mask) counter in each of its builds (Best, AVX-512BW, AVX2, SSE2, plain C++) gives the counts of
 // the byte-by-byte rule on every text, at every alignment; both give what a hand count and the
 // parser itself (read_obj's mesh) find.
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -146,4 +147,28 @@ TEST_CASE("OBJ statement counts: the counts are what the parser reads from the s
   CHECK(c.faces == mesh.num_faces());
   CHECK(c.corners == mesh.num_corners());
   CHECK(c.lines == 3000);
+}
+
+TEST_CASE("OBJ statement counts: obj_text_has_cr_or_nul finds a CR or a NUL at every position, as memchr does",
+          "[io][obj]") {
+  // A text of 700 bytes (256-byte steps and a tail) with at most one CR or NUL, at every position
+  // and every starting offset: the answer must be memchr's.
+  std::string text;
+  for (int i = 0; text.size() < 700; ++i) text += i % 2 ? "f 1 2 3\n" : "v 1.5 -2 3e4\n";
+  for (std::size_t begin : {std::size_t(0), std::size_t(1), std::size_t(63), std::size_t(200)}) {
+    const char* b = text.data() + begin;
+    const char* e = text.data() + text.size();
+    CHECK(!obj_text_has_cr_or_nul(b, e));
+    for (char c : {'\r', '\0'}) {
+      for (std::size_t at = begin; at < text.size(); ++at) {
+        std::string t = text;
+        t[at] = c;
+        const char* tb = t.data() + begin;
+        const char* te = t.data() + t.size();
+        const bool want = std::memchr(tb, '\r', std::size_t(te - tb)) || std::memchr(tb, '\0', std::size_t(te - tb));
+        INFO("byte " << int(c) << " at " << at << ", run from " << begin);
+        REQUIRE(obj_text_has_cr_or_nul(tb, te) == want);
+      }
+    }
+  }
 }

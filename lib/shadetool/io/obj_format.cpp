@@ -570,8 +570,10 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
     if (v > std::numeric_limits<std::uint32_t>::max() || corners > std::numeric_limits<std::uint32_t>::max() - 1) in_chunks = false;
   }
   if (!in_chunks) {
-    to_lf();
-    refuse_nul();
+    if (lf_text || obj_text_has_cr_or_nul(bytes.data(), bytes.data() + bytes.size())) {  // else both find nothing
+      to_lf();
+      refuse_nul();
+    }
     read_one_pass(bytes, name, s, progress);
     return;
   }

@@ -220,7 +220,41 @@ __attribute__((target("avx512f,avx512bw,popcnt"), flatten)) ObjCounts count_avx5
 ObjCounts count_sse2(const char* p, const char* end) { return count_with<Sse2Lanes>(p, end); }
 #endif
 
+// Whether [p, end) holds a CR or a NUL byte: the CrOrNul masks of 256 bytes or-ed, one branch per
+// 256 bytes; the last bytes one by one.
+template <class Lanes>
+__attribute__((always_inline)) inline bool any_cr_or_nul(const char* p, const char* const end) {
+  const char* b = p;
+  for (; end - b >= 256; b += 256) {
+    std::uint64_t any = 0;
+    for (int k = 0; k < 256; k += Lanes::kBytes) any |= Lanes::match(b + k, CrOrNul{});
+    if (any != 0) return true;
+  }
+  for (; b < end; ++b)
+    if (CrOrNul::contains(*b)) return true;
+  return false;
+}
+
+#if defined(SHADETOOL_OBJ_COUNT_X86)
+__attribute__((target("avx2"), flatten)) bool any_cr_or_nul_avx2(const char* p, const char* end) {
+  return any_cr_or_nul<Avx2Lanes>(p, end);
+}
+__attribute__((target("avx512f,avx512bw"), flatten)) bool any_cr_or_nul_avx512(const char* p, const char* end) {
+  return any_cr_or_nul<Avx512Lanes>(p, end);
+}
+#endif
+
 }  // namespace
+
+bool obj_text_has_cr_or_nul(const char* p, const char* end) {
+#if defined(SHADETOOL_OBJ_COUNT_X86)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw");
+  return avx512 ? any_cr_or_nul_avx512(p, end) : avx2 ? any_cr_or_nul_avx2(p, end) : any_cr_or_nul<Sse2Lanes>(p, end);
+#else
+  return any_cr_or_nul<PlainLanes>(p, end);
+#endif
+}
 
 ObjCounts count_obj_statements_scalar(const char* p, const char* const end) {
   ObjCounts c;

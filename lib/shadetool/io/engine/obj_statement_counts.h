@@ -60,6 +60,11 @@ inline ObjKeyword obj_keyword(const char* kw, std::size_t kwlen) {
 }
 
 ObjCounts count_obj_statements_scalar(const char* p, const char* end);
+
+// Whether [p, end) holds a CR or a NUL byte (ObjCounts::cr || ObjCounts::nul without the counts):
+// the one-pass reader's test before it converts line endings or refuses binary data, one scan of
+// the same masks instead of a memchr for each byte.
+bool obj_text_has_cr_or_nul(const char* p, const char* end);
 ObjCounts count_obj_statements(const char* p, const char* end);
 
 // Which mask code count_obj_statements uses: Best (the widest the CPU has: AVX-512BW, AVX2, SSE2 on
