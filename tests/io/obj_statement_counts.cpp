@@ -1,7 +1,8 @@
 // Tests of io/engine/obj_statement_counts: the counting pass of the parallel OBJ reader. The block
-// (bit mask) counter in each of its builds (Best = AVX2 here, SSE2, plain C++) gives the counts of
+// (bit mask) counter in each of its builds (Best, AVX-512BW, AVX2, SSE2, plain C++) gives the counts of
 // the byte-by-byte rule on every text, at every alignment; both give what a hand count and the
 // parser itself (read_obj's mesh) find.
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -31,7 +32,7 @@ void require_all_agree(const std::string& text, std::size_t begin, std::size_t e
   const char* p = text.data() + begin;
   const char* e = text.data() + end;
   const ObjCounts rule = count_obj_statements_scalar(p, e);
-  for (ObjCountMasks m : {ObjCountMasks::Best, ObjCountMasks::Sse2, ObjCountMasks::Plain}) {
+  for (ObjCountMasks m : {ObjCountMasks::Best, ObjCountMasks::Avx512, ObjCountMasks::Avx2, ObjCountMasks::Sse2, ObjCountMasks::Plain}) {
     const ObjCounts c = count_obj_statements(p, e, m);
     INFO("masks " << int(m) << ", bytes [" << begin << ", " << end << "): " << show(c) << " against the rule's " << show(rule));
     REQUIRE(same(c, rule));
@@ -65,7 +66,7 @@ TEST_CASE("OBJ statement counts: a hand count of keywords, empty faces, comments
   const ObjCounts rule = count_obj_statements_scalar(text.data(), text.data() + text.size());
   INFO(show(rule));
   CHECK(same(rule, want));
-  for (ObjCountMasks m : {ObjCountMasks::Best, ObjCountMasks::Sse2, ObjCountMasks::Plain}) {
+  for (ObjCountMasks m : {ObjCountMasks::Best, ObjCountMasks::Avx512, ObjCountMasks::Avx2, ObjCountMasks::Sse2, ObjCountMasks::Plain}) {
     const ObjCounts c = count_obj_statements(text.data(), text.data() + text.size(), m);
     INFO(show(c));
     CHECK(same(c, want));
@@ -107,6 +108,23 @@ TEST_CASE("OBJ statement counts: the mask counter gives the byte rule's counts o
   }
 }
 
+TEST_CASE("OBJ statement counts: every byte value is classed by the masks as the byte rule classes it, in every lane",
+          "[io][obj]") {
+  // Each byte value inside a face's token list, after each keyword and before a corner, shifted
+  // through the 64 positions of a block by a comment line of 1..64 bytes: a byte the masks class
+  // otherwise than is_space (a high byte such as 0x89 = 0x80 | tab taken for a space, a byte
+  // taken for a line feed) changes the corner, keyword or line counts.
+  for (int c = 0; c < 256; ++c) {
+    const std::string b(1, char(c));
+    const std::string lines = "f 1" + b + "2 3\n" + "v" + b + "1 2 3\n" + "vn" + b + "0 0 1\n" + "vt" + b + "0 0\n" + "f" + b + "1 2\n" +
+                              "f 1 2 3" + b + "\n";
+    for (int k = 0; k < 64; ++k) {
+      const std::string text = "#" + std::string(std::size_t(k), 'x') + "\n" + lines;
+      require_all_agree(text, 0, text.size());
+    }
+  }
+}
+
 TEST_CASE("OBJ statement counts: the counts are what the parser reads from the same text", "[io][obj]") {
   std::string text;
   std::mt19937 rng(7);
@@ -129,4 +147,28 @@ TEST_CASE("OBJ statement counts: the counts are what the parser reads from the s
   CHECK(c.faces == mesh.num_faces());
   CHECK(c.corners == mesh.num_corners());
   CHECK(c.lines == 3000);
+}
+
+TEST_CASE("OBJ statement counts: obj_text_has_cr_or_nul finds a CR or a NUL at every position, as memchr does",
+          "[io][obj]") {
+  // A text of 700 bytes (256-byte steps and a tail) with at most one CR or NUL, at every position
+  // and every starting offset: the answer must be memchr's.
+  std::string text;
+  for (int i = 0; text.size() < 700; ++i) text += i % 2 ? "f 1 2 3\n" : "v 1.5 -2 3e4\n";
+  for (std::size_t begin : {std::size_t(0), std::size_t(1), std::size_t(63), std::size_t(200)}) {
+    const char* b = text.data() + begin;
+    const char* e = text.data() + text.size();
+    CHECK(!obj_text_has_cr_or_nul(b, e));
+    for (char c : {'\r', '\0'}) {
+      for (std::size_t at = begin; at < text.size(); ++at) {
+        std::string t = text;
+        t[at] = c;
+        const char* tb = t.data() + begin;
+        const char* te = t.data() + t.size();
+        const bool want = std::memchr(tb, '\r', std::size_t(te - tb)) || std::memchr(tb, '\0', std::size_t(te - tb));
+        INFO("byte " << int(c) << " at " << at << ", run from " << begin);
+        REQUIRE(obj_text_has_cr_or_nul(tb, te) == want);
+      }
+    }
+  }
 }

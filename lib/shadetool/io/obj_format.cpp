@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -12,6 +13,7 @@
 #include <optional>
 
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 #include <tbb/parallel_invoke.h>
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -34,7 +36,7 @@ namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 // Files smaller than this are read in one pass; larger ones in chunks of at least kChunkMinBytes,
-// about four per thread (chunks of unequal cost balance across threads).
+// large first and small last (chunk_starts_guided).
 constexpr std::size_t kParallelMinBytes = std::size_t(4) << 20;
 constexpr std::size_t kChunkMinBytes = std::size_t(1) << 20;
 
@@ -430,8 +432,13 @@ void populate_in_parallel(T* data, std::size_t n) {
   const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) & ~(std::uintptr_t(4095));
   const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(data + n);
   if (end - begin < 4 * kBlock) return;
-  tbb::parallel_for(begin, end, kBlock, [&](std::uintptr_t b) {
-    ::madvise(reinterpret_cast<void*>(b), std::min(kBlock, end - b), kPopulateWrite);
+  // Blocks on 2 MiB boundaries (the first and last clipped to the array): each huge page
+  // (reserve_bulk advises them) is faulted and zeroed by one call, not waited for by a second
+  // thread whose block starts inside it.
+  const std::uintptr_t first = begin & ~(kBlock - 1);
+  tbb::parallel_for(first, end, kBlock, [&](std::uintptr_t b) {
+    const std::uintptr_t from = std::max(b, begin), to = std::min(b + kBlock, end);
+    ::madvise(reinterpret_cast<void*>(from), to - from, kPopulateWrite);
   });
 #else
   (void)data;
@@ -453,6 +460,40 @@ std::vector<std::size_t> chunk_starts(std::string_view bytes, std::size_t target
   }
   starts.push_back(bytes.size());
   return starts;
+}
+
+// The chunks of [0, size) for `threads` threads taking them in file order (run_in_order): each a
+// 1 / (2 * threads) share of the bytes not yet cut, at least kChunkMinBytes, every cut just after a
+// line feed (guided self-scheduling, Polychronopoulos and Kuck 1987): the threads start on large
+// chunks and end on small ones, so one that was slowed down (another process on its core) leaves
+// the others at most a small chunk to wait for.
+std::vector<std::size_t> chunk_starts_guided(std::string_view bytes, std::size_t threads) {
+  std::vector<std::size_t> starts{0};
+  for (std::size_t at = 0;;) {
+    const std::size_t left = bytes.size() - at;
+    const std::size_t want = std::max(kChunkMinBytes, left / (2 * std::max<std::size_t>(threads, 1)));
+    if (want >= left) break;
+    const void* lf = std::memchr(bytes.data() + at + want - 1, '\n', left - want + 1);
+    if (!lf) break;
+    const std::size_t next = std::size_t(static_cast<const char*>(lf) - bytes.data()) + 1;
+    if (next >= bytes.size()) break;
+    starts.push_back(next);
+    at = next;
+  }
+  starts.push_back(bytes.size());
+  return starts;
+}
+
+// fn(0), ..., fn(n - 1) on the arena's threads, each thread taking the next index not yet taken.
+template <class F>
+void run_in_order(std::size_t n, std::size_t threads, const F& fn) {
+  std::atomic<std::size_t> next{0};
+  tbb::parallel_for(
+      std::size_t(0), std::max<std::size_t>(1, std::min(threads, n)),
+      [&](std::size_t) {
+        for (std::size_t i = next.fetch_add(1, std::memory_order_relaxed); i < n; i = next.fetch_add(1, std::memory_order_relaxed)) fn(i);
+      },
+      tbb::simple_partitioner());
 }
 
 // Step 1, read, in one pass: every line in order, appended to the mesh's vectors.
@@ -482,9 +523,10 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
   Mesh& mesh = s.mesh;
   ObjArrays arrays{mesh, s.normals, s.tex};
   const std::size_t threads = usable_threads();
-  std::size_t target = options.chunk_bytes;
-  if (target == 0) target = threads > 1 && text.size() >= kParallelMinBytes ? std::max(kChunkMinBytes, text.size() / (4 * threads)) : text.size();
-  target = std::max<std::size_t>(target, 1);
+  // Chunks: of options.chunk_bytes when given, else guided (large first) on more than one thread
+  // and 4 MiB, else none (the whole text in one pass).
+  const bool guided = options.chunk_bytes == 0 && threads > 1 && text.size() >= kParallelMinBytes;
+  const std::size_t target = std::max<std::size_t>(options.chunk_bytes == 0 ? text.size() : options.chunk_bytes, 1);
   // CR, LF, CRLF, mixed: all LF before any line is read. Text without a CR is read as it is (the
   // counting pass looks for CRs in every chunk at once); text with one is converted (a copy) and
   // counted again.
@@ -503,15 +545,15 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
   };
   std::vector<std::size_t> starts;
   std::vector<ObjCounts> counts;
-  bool in_chunks = target < text.size();
+  bool in_chunks = guided || target < text.size();
   while (in_chunks) {
-    starts = chunk_starts(bytes, target);
+    starts = guided ? chunk_starts_guided(bytes, threads) : chunk_starts(bytes, target);
     counts.assign(starts.size() - 1, ObjCounts{});
     if (counts.size() < 2) {
       in_chunks = false;
       break;
     }
-    tbb::parallel_for(std::size_t(0), counts.size(), [&](std::size_t i) {
+    run_in_order(counts.size(), threads, [&](std::size_t i) {
       counts[i] = count_obj_statements(bytes.data() + starts[i], bytes.data() + starts[i + 1]);
     });
     if (lf_text || std::none_of(counts.begin(), counts.end(), [](const ObjCounts& c) { return c.cr; })) break;
@@ -528,8 +570,10 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
     if (v > std::numeric_limits<std::uint32_t>::max() || corners > std::numeric_limits<std::uint32_t>::max() - 1) in_chunks = false;
   }
   if (!in_chunks) {
-    to_lf();
-    refuse_nul();
+    if (lf_text || obj_text_has_cr_or_nul(bytes.data(), bytes.data() + bytes.size())) {  // else both find nothing
+      to_lf();
+      refuse_nul();
+    }
     read_one_pass(bytes, name, s, progress);
     return;
   }
@@ -565,7 +609,7 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
   std::vector<char> miscounted(n, 0);
   std::mutex progress_mutex;  // the cursor is serial: chunks report their bytes as they finish
   std::uint64_t chunk_bytes_done = 0;
-  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+  run_in_order(n, threads, [&](std::size_t i) {
     try {
       read_lines<true>(bytes.data() + starts[i], bytes.data() + starts[i + 1], name, chunks[i], arrays);
       {

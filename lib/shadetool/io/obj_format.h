@@ -50,7 +50,8 @@ namespace shadetool::io {
 // every file with chunks forced small and compares).
 struct ObjReadOptions {
   // Bytes per chunk of lines read in parallel (cut at line feeds); 0: the file in one pass on one
-  // thread or below 4 MiB, else about four chunks per thread of the current TBB arena.
+  // thread or below 4 MiB, else chunks of decreasing size for the threads of the current TBB arena
+  // (each a 1 / (2 * threads) share of what is left, at least 1 MiB).
   std::size_t chunk_bytes = 0;
 };
 

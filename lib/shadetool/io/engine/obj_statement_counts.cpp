@@ -33,83 +33,114 @@ struct BlockMasks {
   std::uint64_t lf = 0, sp = 0, hash = 0, v = 0, f = 0, n = 0, t = 0, cr_or_nul = 0;
 };
 
-struct PlainMasks {
-  static inline BlockMasks of(const char* b) {
-    BlockMasks m;
-    for (int i = 0; i < 64; ++i) {
-      const char c = b[i];
-      const std::uint64_t bit = std::uint64_t(1) << i;
-      m.lf |= c == '\n' ? bit : 0;
-      m.sp |= is_space(c) ? bit : 0;
-      m.hash |= c == '#' ? bit : 0;
-      m.v |= c == 'v' ? bit : 0;
-      m.f |= c == 'f' ? bit : 0;
-      m.n |= c == 'n' ? bit : 0;
-      m.t |= c == 't' ? bit : 0;
-      m.cr_or_nul |= c == '\r' || c == '\0' ? bit : 0;
-    }
-    return m;
+// A set of bytes, as a type: the masks' tests are made of these.
+template <char... Cs>
+struct ByteSet {
+  static constexpr bool contains(char c) { return ((c == Cs) || ...); }
+};
+using LineFeed = ByteSet<'\n'>;
+using Spaces = ByteSet<' ', '\t', '\v', '\f', '\r'>;  // is_space's bytes (checked below)
+using CrOrNul = ByteSet<'\r', '\0'>;
+
+constexpr bool spaces_are_is_space() {
+  for (int c = 0; c < 256; ++c)
+    if (Spaces::contains(char(c)) != is_space(char(c))) return false;
+  return true;
+}
+static_assert(spaces_are_is_space(), "the masks' spaces are is_space's bytes");
+
+// The one byte test block_masks is made of, at one width: match(b, ByteSet<Cs...>{}), bit i set
+// when byte i of the kBytes bytes from b is one of Cs (one compare per byte of the set, or-ed,
+// one movemask: the movemasks, not the compares, bound the counting pass's speed). Pointers in,
+// integers out: no vector value crosses a function (so no ABI warning), and the AVX2 lanes
+// (target("avx2"), not always_inline: a generic function cannot inline them) are inlined only
+// into count_avx2, which flattens its callees.
+//
+// Plain C++: 8 bytes in one 64-bit word (SWAR). A byte's test leaves its high bit (0x80) set;
+// bits() gathers the 8 high bits into bits 0..7, byte i to bit i.
+struct PlainLanes {
+  static constexpr int kBytes = 8;
+  static constexpr std::uint64_t kOnes = 0x0101010101010101u, kLow7 = 0x7f7f7f7f7f7f7f7fu, kHigh = 0x8080808080808080u;
+  static inline std::uint64_t word(const char* b) {  // byte i of b in bits 8i..8i+7
+    std::uint64_t w;
+    std::memcpy(&w, b, 8);
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    w = __builtin_bswap64(w);
+#endif
+    return w;
+  }
+  // 0x80 in each byte of w equal to c. A byte is zero iff adding 0x7f to its low 7 bits, or-ed
+  // with itself, leaves the high bit clear (no carry crosses a byte: (x & 0x7f) + 0x7f <= 0xfe).
+  static inline std::uint64_t equal_high(std::uint64_t w, char c) {
+    const std::uint64_t x = w ^ (kOnes * static_cast<unsigned char>(c));
+    return ~(((x & kLow7) + kLow7) | x) & kHigh;
+  }
+  // Flags 0x80 per byte -> bit i for byte i: each flag (0 or 1 at bit 8i) times the constant
+  // lands at bit 56 + i, no two products overlapping.
+  static inline std::uint64_t bits(std::uint64_t high) { return ((high >> 7) * 0x0102040810204080u) >> 56; }
+  template <char... Cs>
+  static inline std::uint64_t match(const char* b, ByteSet<Cs...>) {
+    const std::uint64_t w = word(b);
+    return bits((equal_high(w, Cs) | ...));
   }
 };
 
 #if defined(SHADETOOL_OBJ_COUNT_X86)
-// is_space's bytes: ' ' and 9..13 except the line feed (10).
-struct Sse2Masks {
-  __attribute__((always_inline)) static inline BlockMasks of(const char* b) {
-    BlockMasks m;
-    for (int k = 0; k < 4; ++k) {
-      const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b + 16 * k));
-      auto eq = [&](char c) {
-        return std::uint64_t(unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(x, _mm_set1_epi8(c))))) << (16 * k);
-      };
-      const __m128i d = _mm_sub_epi8(x, _mm_set1_epi8(9));
-      const std::uint64_t ctl = std::uint64_t(unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_min_epu8(d, _mm_set1_epi8(4)), d))))
-                                << (16 * k);
-      const std::uint64_t lf = eq('\n');
-      m.lf |= lf;
-      m.sp |= eq(' ') | (ctl & ~lf);
-      m.hash |= eq('#');
-      m.v |= eq('v');
-      m.f |= eq('f');
-      m.n |= eq('n');
-      m.t |= eq('t');
-      m.cr_or_nul |= eq('\r') | eq('\0');
-    }
-    return m;
+struct Sse2Lanes {
+  static constexpr int kBytes = 16;
+  template <char... Cs>
+  static inline std::uint64_t match(const char* b, ByteSet<Cs...>) {
+    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b));
+    const __m128i m = (_mm_cmpeq_epi8(x, _mm_set1_epi8(Cs)) | ...);
+    return unsigned(_mm_movemask_epi8(m));
   }
 };
 
-struct Avx2Masks {
-  __attribute__((target("avx2"))) static inline BlockMasks of(const char* b) {
-    BlockMasks m;
-    for (int k = 0; k < 2; ++k) {
-      const __m256i x = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + 32 * k));
-      auto eq = [&](char c) __attribute__((target("avx2"))) {
-        return std::uint64_t(unsigned(_mm256_movemask_epi8(_mm256_cmpeq_epi8(x, _mm256_set1_epi8(c))))) << (32 * k);
-      };
-      const __m256i d = _mm256_sub_epi8(x, _mm256_set1_epi8(9));
-      const std::uint64_t ctl =
-          std::uint64_t(unsigned(_mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_min_epu8(d, _mm256_set1_epi8(4)), d))))
-          << (32 * k);
-      const std::uint64_t lf = eq('\n');
-      m.lf |= lf;
-      m.sp |= eq(' ') | (ctl & ~lf);
-      m.hash |= eq('#');
-      m.v |= eq('v');
-      m.f |= eq('f');
-      m.n |= eq('n');
-      m.t |= eq('t');
-      m.cr_or_nul |= eq('\r') | eq('\0');
-    }
-    return m;
+struct Avx2Lanes {
+  static constexpr int kBytes = 32;
+  template <char... Cs>
+  __attribute__((target("avx2"))) static inline std::uint64_t match(const char* b, ByteSet<Cs...>) {
+    const __m256i x = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b));
+    const __m256i m = (_mm256_cmpeq_epi8(x, _mm256_set1_epi8(Cs)) | ...);
+    return unsigned(_mm256_movemask_epi8(m));
+  }
+};
+
+// AVX-512BW: a whole block per compare, the result straight into a 64-bit mask register.
+struct Avx512Lanes {
+  static constexpr int kBytes = 64;
+  template <char... Cs>
+  __attribute__((target("avx512f,avx512bw"))) static inline std::uint64_t match(const char* b, ByteSet<Cs...>) {
+    const __m512i x = _mm512_loadu_si512(b);
+    return (_mm512_cmpeq_epi8_mask(x, _mm512_set1_epi8(Cs)) | ...);
   }
 };
 #endif
 
+// The block's masks, 64 / kBytes lanes at a time: the one home of which byte goes into which mask.
+template <class Lanes>
+__attribute__((always_inline)) inline BlockMasks block_masks(const char* b) {
+  BlockMasks m;
+  for (int k = 0; k < 64 / Lanes::kBytes; ++k) {
+    const char* const lane = b + Lanes::kBytes * k;
+    const int at = Lanes::kBytes * k;
+    m.lf |= Lanes::match(lane, LineFeed{}) << at;
+    m.sp |= Lanes::match(lane, Spaces{}) << at;
+    m.hash |= Lanes::match(lane, ByteSet<'#'>{}) << at;
+    m.v |= Lanes::match(lane, ByteSet<'v'>{}) << at;
+    m.f |= Lanes::match(lane, ByteSet<'f'>{}) << at;
+    m.n |= Lanes::match(lane, ByteSet<'n'>{}) << at;
+    m.t |= Lanes::match(lane, ByteSet<'t'>{}) << at;
+    m.cr_or_nul |= Lanes::match(lane, CrOrNul{}) << at;
+  }
+  return m;
+}
+
 inline std::size_t ones(std::uint64_t x) { return std::size_t(__builtin_popcountll(x)); }
 
 // The counts of [p, end) from block masks; false when a line needs the scalar rule (see the header).
-template <class Masks>
+// The counts of [p, end) from block masks; false when a line needs the scalar rule (see the header).
+template <class Lanes>
 __attribute__((always_inline)) inline bool count_blocks(const char* p, const char* const end, ObjCounts& c) {
   std::uint64_t line_start_in = 1;  // the run starts at a line start, as after a separator
   std::uint64_t sep_in = 1;
@@ -124,7 +155,7 @@ __attribute__((always_inline)) inline bool count_blocks(const char* p, const cha
       std::memset(pad + left, ' ', 64 - left);
       block = pad;
     }
-    const BlockMasks m = Masks::of(block);
+    const BlockMasks m = block_masks<Lanes>(block);
     // The two bytes after the block (a keyword's next bytes), spaces past the end.
     const char c64 = left > 64 ? b[64] : ' ', c65 = left > 65 ? b[65] : ' ';
     const std::uint64_t s64 = is_space_or_newline(c64), s65 = is_space_or_newline(c65);
@@ -170,10 +201,10 @@ __attribute__((always_inline)) inline bool count_blocks(const char* p, const cha
   return odd == 0;
 }
 
-template <class Masks>
+template <class Lanes>
 __attribute__((always_inline)) inline ObjCounts count_with(const char* p, const char* end) {
   ObjCounts c;
-  if (!count_blocks<Masks>(p, end, c)) return count_obj_statements_scalar(p, end);
+  if (!count_blocks<Lanes>(p, end, c)) return count_obj_statements_scalar(p, end);
   return c;
 }
 
@@ -181,12 +212,49 @@ __attribute__((always_inline)) inline ObjCounts count_with(const char* p, const 
 // flatten: the mask code and the loop are inlined into this AVX2 function (an always_inline
 // AVX2 callee cannot be inlined into the generic template).
 __attribute__((target("avx2,popcnt"), flatten)) ObjCounts count_avx2(const char* p, const char* end) {
-  return count_with<Avx2Masks>(p, end);
+  return count_with<Avx2Lanes>(p, end);
 }
-ObjCounts count_sse2(const char* p, const char* end) { return count_with<Sse2Masks>(p, end); }
+__attribute__((target("avx512f,avx512bw,popcnt"), flatten)) ObjCounts count_avx512(const char* p, const char* end) {
+  return count_with<Avx512Lanes>(p, end);
+}
+ObjCounts count_sse2(const char* p, const char* end) { return count_with<Sse2Lanes>(p, end); }
+#endif
+
+// Whether [p, end) holds a CR or a NUL byte: the CrOrNul masks of 256 bytes or-ed, one branch per
+// 256 bytes; the last bytes one by one.
+template <class Lanes>
+__attribute__((always_inline)) inline bool any_cr_or_nul(const char* p, const char* const end) {
+  const char* b = p;
+  for (; end - b >= 256; b += 256) {
+    std::uint64_t any = 0;
+    for (int k = 0; k < 256; k += Lanes::kBytes) any |= Lanes::match(b + k, CrOrNul{});
+    if (any != 0) return true;
+  }
+  for (; b < end; ++b)
+    if (CrOrNul::contains(*b)) return true;
+  return false;
+}
+
+#if defined(SHADETOOL_OBJ_COUNT_X86)
+__attribute__((target("avx2"), flatten)) bool any_cr_or_nul_avx2(const char* p, const char* end) {
+  return any_cr_or_nul<Avx2Lanes>(p, end);
+}
+__attribute__((target("avx512f,avx512bw"), flatten)) bool any_cr_or_nul_avx512(const char* p, const char* end) {
+  return any_cr_or_nul<Avx512Lanes>(p, end);
+}
 #endif
 
 }  // namespace
+
+bool obj_text_has_cr_or_nul(const char* p, const char* end) {
+#if defined(SHADETOOL_OBJ_COUNT_X86)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw");
+  return avx512 ? any_cr_or_nul_avx512(p, end) : avx2 ? any_cr_or_nul_avx2(p, end) : any_cr_or_nul<Sse2Lanes>(p, end);
+#else
+  return any_cr_or_nul<PlainLanes>(p, end);
+#endif
+}
 
 ObjCounts count_obj_statements_scalar(const char* p, const char* const end) {
   ObjCounts c;
@@ -240,23 +308,26 @@ ObjCounts count_obj_statements_scalar(const char* p, const char* const end) {
 ObjCounts count_obj_statements(const char* p, const char* end) { return count_obj_statements(p, end, ObjCountMasks::Best); }
 
 ObjCounts count_obj_statements(const char* p, const char* end, ObjCountMasks masks) {
-  switch (masks) {
-    case ObjCountMasks::Best: {
 #if defined(SHADETOOL_OBJ_COUNT_X86)
-      static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("popcnt");
-      return avx2 ? count_avx2(p, end) : count_sse2(p, end);
-#else
-      return count_with<PlainMasks>(p, end);
-#endif
-    }
-    case ObjCountMasks::Sse2:
-#if defined(SHADETOOL_OBJ_COUNT_X86)
-      return count_sse2(p, end);
-#else
-      return count_with<PlainMasks>(p, end);
-#endif
-    case ObjCountMasks::Plain: return count_with<PlainMasks>(p, end);
+  static const bool popcnt = __builtin_cpu_supports("popcnt");
+  static const bool avx2 = popcnt && __builtin_cpu_supports("avx2");
+  static const bool avx512 = popcnt && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw");
+  switch (masks) {  // a width the CPU lacks: the widest below it
+    case ObjCountMasks::Best:
+    case ObjCountMasks::Avx512: return avx512 ? count_avx512(p, end) : avx2 ? count_avx2(p, end) : count_sse2(p, end);
+    case ObjCountMasks::Avx2: return avx2 ? count_avx2(p, end) : count_sse2(p, end);
+    case ObjCountMasks::Sse2: return count_sse2(p, end);
+    case ObjCountMasks::Plain: return count_with<PlainLanes>(p, end);
   }
+#else
+  switch (masks) {
+    case ObjCountMasks::Best:
+    case ObjCountMasks::Avx512:
+    case ObjCountMasks::Avx2:
+    case ObjCountMasks::Sse2:
+    case ObjCountMasks::Plain: return count_with<PlainLanes>(p, end);
+  }
+#endif
   return count_obj_statements_scalar(p, end);
 }
 

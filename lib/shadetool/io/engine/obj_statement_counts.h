@@ -21,8 +21,9 @@
 // from an `f` to the next line feed), its corners are the token starts in the span less the
 // keyword. Lines the masks do not read as the rule does (leading spaces, a `#` token inside an
 // `f` line, an `f` not followed by one space and a token) send the whole run to the scalar
-// counter. AVX2 where the CPU has it (chosen at run time), SSE2 on other x86-64, plain C++ on
-// other machines: the same masks, so the same counts.
+// counter. AVX-512BW or AVX2 where the CPU has it (chosen at run time), SSE2 on other x86-64, plain C++ (8 bytes
+// per 64-bit word) on other machines: one mask builder over one byte test (is the byte in a set:
+// one movemask per set) at each width, so the same masks and the same counts.
 #pragma once
 
 #include <cstddef>
@@ -59,11 +60,17 @@ inline ObjKeyword obj_keyword(const char* kw, std::size_t kwlen) {
 }
 
 ObjCounts count_obj_statements_scalar(const char* p, const char* end);
+
+// Whether [p, end) holds a CR or a NUL byte (ObjCounts::cr || ObjCounts::nul without the counts):
+// the one-pass reader's test before it converts line endings or refuses binary data, one scan of
+// the same masks instead of a memchr for each byte.
+bool obj_text_has_cr_or_nul(const char* p, const char* end);
 ObjCounts count_obj_statements(const char* p, const char* end);
 
-// Which mask code count_obj_statements uses: Best (AVX2 when the CPU has it, else SSE2 on x86-64,
-// else Plain), or one forced, for tests that compare each with the scalar rule.
-enum class ObjCountMasks { Best, Sse2, Plain };
+// Which mask code count_obj_statements uses: Best (the widest the CPU has: AVX-512BW, AVX2, SSE2 on
+// x86-64; Plain elsewhere), or one forced, for tests that compare each with the scalar rule (a
+// forced width the CPU lacks runs the widest below it).
+enum class ObjCountMasks { Best, Sse2, Plain, Avx2, Avx512 };
 ObjCounts count_obj_statements(const char* p, const char* end, ObjCountMasks masks);
 
 }  // namespace shadetool::io
