@@ -119,8 +119,8 @@ TEST_CASE("info CLI: a glTF primitive's TEXCOORD_0 counts as texture coordinates
 
 TEST_CASE("info CLI: sizes print without the subtraction's rounding digits", "[cli][info][issue27]") {
   // issue 27, item 13: 0.036306 - (-0.036306) printed as 0.07261200000000001.
-  const std::string dir = std::filesystem::temp_directory_path() / "shadetool_info_sizes";
-  std::filesystem::create_directories(dir);
+  const shadetool::testing::TempDir tmp;
+  const std::string dir = tmp.path.string();
   std::ofstream(dir + "/d.obj") << "v -0.036306 0 0\nv 0.036306 0.1 0\nv 0 0.3 0.2\nf 1 2 3\n";
   const Run d = run("info " + dir + "/d.obj");
   CHECK(d.out.find("  size                   0.072612 x 0.3 x 0.2\n") != std::string::npos);

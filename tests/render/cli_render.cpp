@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/temp_dir.h"
 #include "support/run_process.h"
 
 using shadetool_test::run_shadetool;
@@ -16,8 +17,11 @@ const std::string src = SHADETOOL_SOURCE_DIR;
 const std::string torus = src + "/data/torus.obj";
 const std::string studio = src + "/data/scenes/studio.json";
 
+// A fresh directory per test inside this process's own TempDir (mkdtemp: test runs side by side,
+// from other checkouts too, never share one), removed when the process ends.
 fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("shadetool_render_" + name);
+  static const shadetool::testing::TempDir root;
+  const fs::path d = root.path / name;
   fs::remove_all(d);
   fs::create_directories(d);
   return d;
