@@ -161,7 +161,9 @@ int main(int argc, char** argv) {
   Mesh damaged = truth;
   flip_random_faces(damaged, 0.3, 1);
   const std::string path = (std::filesystem::path(tmp) / "bench_repair_torus.ply").string();
-  write_mesh(damaged, path, WriteOptions{Format::Ply, true});
+  WriteOptions ply;
+  ply.format = Format::Ply;  // binary (the default)
+  write_mesh(damaged, path, ply);
   const auto bytes = std::filesystem::file_size(path);
   std::printf("mesh: torus %d x %d%s: %zu triangles, %zu vertices, 30%% of faces flipped; binary PLY %.1f MB\n", nu, nv,
               shuffle ? " (vertices and faces shuffled)" : "",
