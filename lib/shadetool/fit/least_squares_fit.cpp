@@ -40,6 +40,23 @@ void quad_corners(const FitElements& e, const std::vector<double>& positions, st
   for (int j = 0; j < 4; ++j) q[j] = vertex_position(positions, e.quad_vertex[4 * k + j]);
 }
 
+// Quad k's 4 x 4 block of M by 3x3 Gauss-Legendre (`gauss`) on its bilinear map; false when it has
+// no mass (zero trace: every area element 0), and then it is no part of the system.
+bool quad_mass(const FitElements& e, const std::vector<double>& positions, const std::vector<GaussPoint>& gauss,
+               std::size_t k, double m[16]) {
+  Vec3d c[4];
+  quad_corners(e, positions, k, c);
+  std::fill(m, m + 16, 0.0);
+  for (const GaussPoint& gu : gauss)
+    for (const GaussPoint& gv : gauss) {
+      const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
+      const double w = gu.weight * gv.weight * b.area_element;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) m[4 * i + j] += w * b.phi[i] * b.phi[j];
+    }
+  return m[0] + m[5] + m[10] + m[15] > 0;
+}
+
 // One triangle of the regulariser's edge map: its nodes, vertices and area.
 struct RegTriangle {
   std::uint32_t node[3];
@@ -152,6 +169,7 @@ struct FitOperator {
   std::vector<std::uint32_t> edge_node;  // 4 per regularised edge: a, b, wing 1, wing 2
   std::vector<double> edge_d;            // 4 per edge: d sqrt(lambda (A1 + A2)^2), R_e = (d . c)^2
   std::vector<double> diagonal;          // #nodes: of M + lambda R
+  std::vector<double> lumped;            // #nodes: row sums of M (= of M + lambda R: R 1 = 0), the lumped mass
 };
 
 // y = A x for x, y #nodes by W (W = 0: `width` channels). Sequential in element order: the same
@@ -195,6 +213,7 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
                         double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
   const std::size_t N = e.nodes, T = q.tri_area.size();
   A.diagonal.assign(N, 0.0);
+  A.lumped.assign(N, 0.0);
   A.tri_node = q.tri_node.data();
   A.tri_area = q.tri_area.data();
   A.triangles = T;
@@ -205,7 +224,10 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
     const std::uint32_t* n = &q.tri_node[3 * t];
     const double area = q.tri_area[t];
     if (!(area > 0)) continue;
-    for (int i = 0; i < 3; ++i) A.diagonal[n[i]] += area / 6;
+    for (int i = 0; i < 3; ++i) {
+      A.diagonal[n[i]] += area / 6;
+      A.lumped[n[i]] += area / 3;  // row sum of area/12 [[2,1,1],...]: area/12 * 4
+    }
     if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {q.tri_vertex[3 * t], q.tri_vertex[3 * t + 1], q.tri_vertex[3 * t + 2]}});
   }
   // M, quads: 3x3 Gauss-Legendre on the bilinear map.
@@ -213,20 +235,14 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
     const std::uint32_t* n = &e.quad_node[4 * k];
     const std::uint32_t* v = &e.quad_vertex[4 * k];
-    Vec3d c[4];
-    quad_corners(e, positions, k, c);
-    double m[16] = {};
-    for (const GaussPoint& gu : gauss)
-      for (const GaussPoint& gv : gauss) {
-        const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
-        const double w = gu.weight * gv.weight * b.area_element;
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j) m[4 * i + j] += w * b.phi[i] * b.phi[j];
-      }
-    if (!(m[0] + m[5] + m[10] + m[15] > 0)) continue;
+    double m[16];
+    if (!quad_mass(e, positions, gauss, k, m)) continue;
     A.quad_node.insert(A.quad_node.end(), n, n + 4);
     A.quad_mass.insert(A.quad_mass.end(), m, m + 16);
-    for (int i = 0; i < 4; ++i) A.diagonal[n[i]] += m[5 * i];
+    for (int i = 0; i < 4; ++i) {
+      A.diagonal[n[i]] += m[5 * i];
+      A.lumped[n[i]] += m[4 * i] + m[4 * i + 1] + m[4 * i + 2] + m[4 * i + 3];
+    }
     if (lambda > 0) {
       reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
       reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
@@ -573,6 +589,24 @@ std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::v
   return interpolate_at_points(q, values, width, true);
 }
 
+std::vector<std::uint32_t> fit_fallback_nodes(const FitElements& e, const std::vector<double>& positions,
+                                              const FitQuadrature& q) {
+  // The same rule as least_squares_fit's system (a node is in it when M_ii > 0): on a triangle of
+  // the quadrature (positive area), or on a quad with mass (quad_mass).
+  std::vector<char> in_system(e.nodes, 0);
+  for (std::uint32_t n : q.tri_node) in_system[n] = 1;
+  const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
+  for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
+    double m[16];
+    if (quad_mass(e, positions, gauss, k, m))
+      for (int j = 0; j < 4; ++j) in_system[e.quad_node[4 * k + j]] = 1;
+  }
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i < e.nodes; ++i)
+    if (!in_system[i]) out.push_back(std::uint32_t(i));
+  return out;
+}
+
 LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
                                   const std::vector<double>& f, const std::vector<double>& point_values,
                                   std::size_t width, const LeastSquaresFitOptions& options) {
@@ -622,8 +656,14 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
         for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * fs[k];
       }
     });
-    for (std::uint32_t i : off_system)
-      for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = 0;  // out of the system during CG
+    // The first guess: the lumped-mass projection c0_i = b_i / sum_j M_ij (the L2 projection with M
+    // replaced by its row-sum diagonal; exact for a constant f). It needs only b, not the point
+    // values, so the result does not depend on whether the caller computed them. 0 off the system.
+    for (std::size_t i = 0; i < N; ++i) {
+      const double m = A.lumped[i];
+      for (std::size_t k = 0; k < width; ++k)  // divisor checked; off the system (no mass): 0 during CG
+        fit.values[i * width + k] = inverse_diagonal[i] != 0 && m > 0 ? b[i * width + k] / m : 0.0;
+    }
     BlockCgOptions cg;
     cg.tolerance = options.tolerance;
     // accuracy a: stop at sum r_i^2 / M_ii <= (a mu)^2 min M_ii (header, Solver); mu = 1/2 with

@@ -33,7 +33,12 @@
 // per triangle, a 4 x 4 block per quad, a vector d per regularised edge) and applied by one pass
 // over them per step, so no sparse matrix is assembled; all channels in one block (one pass serves
 // them all; each channel has its own step lengths and stop). Stopped per channel when
-// |A c - b| <= tolerance |b| (default 1e-10), from the point values as the first guess. With
+// |A c - b| <= tolerance |b| (default 1e-10), from the lumped-mass projection as the first guess:
+// c0_i = b_i / sum_j M_ij, the L2 projection with M replaced by the diagonal of its row sums
+// (mass lumping; Zienkiewicz & Taylor, The Finite Element Method, vol. 1, the lumped mass matrix;
+// R's rows sum to 0, so the row sums of M + lambda R are M's). It is exact for a constant f, needs
+// only b, and so does not depend on the point values (bench/fit/results.md: CG iterations against
+// the point values as the first guess). With
 // accuracy a > 0 (8-bit outputs: kEightBitFitAccuracy, a quarter of a step) a channel also stops
 // once every value is provably within a of the exact solution. With e = c - c*, r = A c - b = A e,
 // D = diag(M) and mu a lower bound of the eigenvalues of D^-1 M (Wathen, "Realistic eigenvalue
@@ -209,9 +214,15 @@ struct LeastSquaresFit {
   bool converged = true;
 };
 
+// The nodes that touch no face of positive area (no triangle of q, no quad with mass): they are no
+// part of the system and keep their point value (LeastSquaresFit::fallback_nodes counts them).
+// Ascending node ids. A caller without point values at every node computes them only here.
+std::vector<std::uint32_t> fit_fallback_nodes(const FitElements& elements, const std::vector<double>& positions,
+                                              const FitQuadrature& q);
+
 // f: #points by width, the signal at q's points, or #sites by width, its value at each site (one
-// value for all the points of a site; the two are the same when every point is its own site). point_values: #nodes by width (first guess and
-// fallback). Error for mismatched sizes.
+// value for all the points of a site; the two are the same when every point is its own site). point_values: #nodes by width, read only at the
+// fallback nodes (fit_fallback_nodes: the others may hold anything). Error for mismatched sizes.
 LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
                                   const FitQuadrature& q, const std::vector<double>& f,
                                   const std::vector<double>& point_values, std::size_t width,
