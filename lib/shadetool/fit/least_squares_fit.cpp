@@ -174,21 +174,30 @@ struct FitOperator {
 
 // y = A x for x, y #nodes by W (W = 0: `width` channels). Sequential in element order: the same
 // bits for any thread count.
+// y += M_t x for triangle t: area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T).
+template <std::size_t W>
+inline void add_triangle_product(const FitOperator& A, std::size_t t, const double* x, double* y, std::size_t w) {
+  const double s = A.tri_area[t] / 12;
+  if (s == 0) return;
+  const std::size_t n0 = A.tri_node[3 * t] * w, n1 = A.tri_node[3 * t + 1] * w, n2 = A.tri_node[3 * t + 2] * w;
+  for (std::size_t k = 0; k < (W ? W : w); ++k) {
+    const double x0 = x[n0 + k], x1 = x[n1 + k], x2 = x[n2 + k], sum = x0 + x1 + x2;
+    y[n0 + k] += s * (x0 + sum);
+    y[n1 + k] += s * (x1 + sum);
+    y[n2 + k] += s * (x2 + sum);
+  }
+}
+
 template <std::size_t W>
 void apply_operator(const FitOperator& A, const double* x, double* y, std::size_t width) {
   const std::size_t w = W ? W : width;
   std::fill(y, y + A.diagonal.size() * w, 0.0);
-  for (std::size_t t = 0; t < A.triangles; ++t) {  // area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T)
-    const double s = A.tri_area[t] / 12;
-    if (s == 0) continue;
-    const std::size_t n0 = A.tri_node[3 * t] * w, n1 = A.tri_node[3 * t + 1] * w, n2 = A.tri_node[3 * t + 2] * w;
-    for (std::size_t k = 0; k < w; ++k) {
-      const double x0 = x[n0 + k], x1 = x[n1 + k], x2 = x[n2 + k], sum = x0 + x1 + x2;
-      y[n0 + k] += s * (x0 + sum);
-      y[n1 + k] += s * (x1 + sum);
-      y[n2 + k] += s * (x2 + sum);
-    }
-  }
+  // The triangles taken from four quarters of the list in turn: neighbouring triangles of a mesh
+  // share nodes, so in list order each update of y waits for the store of the one before; four
+  // far-apart chains overlap (bench/fit/results.md). A fixed order: the same bits on every run.
+  const std::size_t T = A.triangles, Q = (T + 3) / 4;
+  for (std::size_t i = 0; i < Q; ++i)
+    for (std::size_t t = i; t < T; t += Q) add_triangle_product<W>(A, t, x, y, w);
   for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
     const std::uint32_t* n = &A.quad_node[4 * k];
     const double* m = &A.quad_mass[16 * k];
