@@ -381,6 +381,40 @@ TEST_CASE("Corner groups: a node per side of a crease keeps the discontinuity", 
   CHECK(relative_l2_error(q, f, fit.values, 1) < 1e-9);
 }
 
+TEST_CASE("The point values are read only at the fallback nodes: other point values, the same fit bits",
+          "[fit][least_squares]") {
+  // Truth: the fit given one set of point values, on the 3 x 3 grid below (they are not the first
+  // guess, so another set changes nothing); then the same grid plus an isolated vertex, which
+  // fit_fallback_nodes names and which keeps its point value.
+  Mesh m;
+  for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= 3; ++i) m.add_vertex({double(i), double(j) + 0.1 * i, 0});
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = std::uint32_t(j * 4 + i);
+      m.add_face({a, a + 1, a + 5});
+      m.add_face({a, a + 5, a + 4});
+    }
+  const auto fit_with = [](const Mesh& mesh, const std::vector<double>& point) {
+    const FitElements e = fit_elements(mesh);
+    const FitQuadrature q = fit_quadrature(e, mesh.positions, 3);
+    std::vector<double> f(q.size());
+    for (std::size_t s = 0; s < q.size(); ++s) f[s] = std::sin(double(s));  // anything not linear
+    return least_squares_fit(e, mesh.positions, q, f, point, 1, {});
+  };
+  std::vector<double> point(m.num_vertices());
+  for (std::size_t v = 0; v < point.size(); ++v) point[v] = 0.3 * double(v);
+  const LeastSquaresFit given = fit_with(m, point), other = fit_with(m, std::vector<double>(point.size(), -7.0));
+  CHECK(other.values == given.values);
+  CHECK(other.iterations == given.iterations);
+  CHECK(fit_fallback_nodes(fit_elements(m), m.positions, fit_quadrature(fit_elements(m), m.positions, 3)).empty());
+  m.add_vertex({9, 9, 0});  // isolated: on no face
+  const FitElements e = fit_elements(m);
+  CHECK(fit_fallback_nodes(e, m.positions, fit_quadrature(e, m.positions, 3)) == std::vector<std::uint32_t>{16});
+  point.push_back(0.5);
+  CHECK(fit_with(m, point).values[16] == 0.5);
+}
+
 TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the place of all its points",
           "[fit][quadrature]") {
   // Truth: a closed triangle mesh has E = 3T/2 edges (each shared by two triangles), and a site's
