@@ -279,7 +279,11 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
         }
         shadetool::VertexLightingFit lsq = shadetool::fit_vertex_lighting(mesh, scene, baked, set.shade, cast, vfit);
         baked.rgb = std::move(lsq.rgb);
-        baked.report.counters += lsq.fallback_counters;  // VertexColors::None: the vertices lit for the fit
+        if (point_colors == shadetool::VertexColors::None) {  // no point shading: the fit's counts stand in
+          baked.report.counters += lsq.fallback_counters;     // the fallback vertices it lit
+          baked.shadows.hard_lights = lsq.shadows.hard_lights;  // the lights its shadow rays were cast for
+          baked.shadows.sampled_lights = lsq.shadows.sampled_lights;
+        }
         report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
         if (set.shadows.enabled) r.stats["fit_shadow_rays"] = lsq.shadows.shadow_rays;
       } else if (fit_method(fit) == shadetool::VertexFit::LeastSquares) {
