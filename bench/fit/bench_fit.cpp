@@ -236,11 +236,11 @@ std::vector<double> box_fit(const FitElements& e, const FitQuadrature& q, const 
       for (int k = 0; k < 3; ++k) b[3 * node[j] + k] += w * phi[j] * f[3 * s + k];
   });
   for (std::size_t t = 0; t < q.tri_area.size(); ++t)
-    for (int i = 0; i < 3; ++i) d[q.tri_node[3 * t + i]] += q.tri_area[t] / 6;
+    for (int i = 0; i < 3; ++i) d[q.triangle_nodes()[3 * t + i]] += q.tri_area[t] / 6;
   const auto gradient = [&]() {  // g = M c - b
     for (std::size_t i = 0; i < 3 * N; ++i) g[i] = -b[i];
     for (std::size_t t = 0; t < q.tri_area.size(); ++t) {
-      const std::uint32_t* n = &q.tri_node[3 * t];
+      const std::uint32_t* n = &q.triangle_nodes()[3 * t];
       const double a = q.tri_area[t] / 12;
       for (int k = 0; k < 3; ++k) {
         const double sum = c[3 * n[0] + k] + c[3 * n[1] + k] + c[3 * n[2] + k];

@@ -223,14 +223,14 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   const std::size_t N = e.nodes, T = q.tri_area.size();
   A.diagonal.assign(N, 0.0);
   A.lumped.assign(N, 0.0);
-  A.tri_node = q.tri_node.data();
+  A.tri_node = q.triangle_nodes();
   A.tri_area = q.tri_area.data();
   A.triangles = T;
   std::vector<RegTriangle> reg;
   if (lambda > 0) reg.reserve(T + 2 * e.quad_face.size());
   // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
   for (std::size_t t = 0; t < T; ++t) {
-    const std::uint32_t* n = &q.tri_node[3 * t];
+    const std::uint32_t* n = &q.triangle_nodes()[3 * t];
     const double area = q.tri_area[t];
     if (!(area > 0)) continue;
     for (int i = 0; i < 3; ++i) {
@@ -445,7 +445,7 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
     triangles += size >= 3 && size != 4 ? size - 2 : 0;
   }
   e.tri_vertex.reserve(3 * triangles);
-  e.tri_node.reserve(3 * triangles);
+  if (own_nodes) e.tri_node.reserve(3 * triangles);  // else empty: the nodes are the vertices
   e.tri_face.reserve(triangles);
   e.quad_vertex.reserve(4 * quads);
   e.quad_node.reserve(4 * quads);
@@ -467,7 +467,7 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
     for (std::size_t i = 1; i + 1 < size; ++i) {  // fan from corner 0, as render draws it
       for (std::size_t c : {c0, c0 + i, c0 + i + 1}) {
         e.tri_vertex.push_back(mesh.corner_vertex[c]);
-        e.tri_node.push_back(node_of(c));
+        if (own_nodes) e.tri_node.push_back(corner_node[c]);
       }
       e.tri_face.push_back(std::uint32_t(f));
     }
@@ -495,13 +495,14 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
     q.tri_vertex = e.tri_vertex;
     q.tri_face = e.tri_face;
   } else {
-    q.tri_node.resize(3 * kept);
+    const bool own_nodes = !e.tri_node.empty();  // else q's stays empty too: the vertices
+    q.tri_node.resize(own_nodes ? 3 * kept : 0);
     q.tri_vertex.resize(3 * kept);
     q.tri_face.resize(kept);
     for (std::size_t t = 0, j = 0; t < T; ++t) {
       if (!(q.tri_area[t] > 0)) continue;
       for (int i = 0; i < 3; ++i) {
-        q.tri_node[3 * j + i] = e.tri_node[3 * t + i];
+        if (own_nodes) q.tri_node[3 * j + i] = e.tri_node[3 * t + i];
         q.tri_vertex[3 * j + i] = e.tri_vertex[3 * t + i];
       }
       q.tri_area[j] = q.tri_area[t];  // j <= t: in place
@@ -537,7 +538,7 @@ FitPoint FitQuadrature::point(std::size_t p) const {
   if (p < triangle_points()) {
     const std::size_t j = p / R, k = p - j * R;  // divisor: R >= 1 when there are triangle points
     for (int i = 0; i < 3; ++i) {
-      out.node[i] = tri_node[3 * j + i];
+      out.node[i] = triangle_nodes()[3 * j + i];
       out.vertex[i] = tri_vertex[3 * j + i];
       out.phi[i] = rule[k].barycentric[i];
     }
@@ -603,7 +604,8 @@ std::vector<std::uint32_t> fit_fallback_nodes(const FitElements& e, const std::v
   // The same rule as least_squares_fit's system (a node is in it when M_ii > 0): on a triangle of
   // the quadrature (positive area), or on a quad with mass (quad_mass).
   std::vector<char> in_system(e.nodes, 0);
-  for (std::uint32_t n : q.tri_node) in_system[n] = 1;
+  const std::uint32_t* tri_nodes = q.triangle_nodes();
+  for (std::size_t i = 0; i < 3 * q.tri_area.size(); ++i) in_system[tri_nodes[i]] = 1;
   const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
     double m[16];

@@ -74,11 +74,14 @@ namespace shadetool {
 
 // The faces as interpolation elements. Inputs: mesh (faces), corner_node (#C node ids; empty:
 // the corner's vertex), nodes (#nodes; ignored when corner_node is empty: #V).
+// tri_node is empty when the nodes are the vertices (no corner_node): triangle_nodes() is then
+// tri_vertex (one array fewer to fill and fault in; likewise in FitQuadrature).
 struct FitElements {
   std::size_t nodes = 0;
-  std::vector<std::uint32_t> tri_vertex, tri_node, tri_face;     // 3, 3, 1 per triangle
+  std::vector<std::uint32_t> tri_vertex, tri_node, tri_face;     // 3, 3 (or 0), 1 per triangle
   std::vector<std::uint32_t> quad_vertex, quad_node, quad_face;  // 4, 4, 1 per quad
   std::size_t skipped_faces = 0;                                 // fewer than 3 corners
+  const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? tri_vertex.data() : tri_node.data(); }
 };
 FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& corner_node = {}, std::size_t nodes = 0);
 
@@ -106,7 +109,7 @@ struct FitQuadrature {
   int samples = 3;
   std::vector<QuadraturePoint> rule;        // the triangle rule (fit/triangle_quadrature.h)
   std::size_t element_triangles = 0;        // the elements' triangle count (those of no area included)
-  std::vector<std::uint32_t> tri_node;      // 3 per triangle of positive area
+  std::vector<std::uint32_t> tri_node;      // 3 per triangle of positive area, or empty: the vertices
   std::vector<std::uint32_t> tri_vertex;    // 3 per triangle of positive area
   std::vector<double> tri_area;             // 1 per triangle of positive area
   std::vector<std::uint32_t> tri_face;      // 1 per triangle of positive area
@@ -119,6 +122,7 @@ struct FitQuadrature {
   std::vector<std::uint32_t> site_point;    // 1 per site: its first point, or empty (identity)
 
   std::size_t triangle_points() const { return tri_area.size() * rule.size(); }
+  const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? tri_vertex.data() : tri_node.data(); }
   std::size_t size() const { return triangle_points() + quad_weight.size(); }
   std::size_t sites() const { return site_point.empty() ? size() : site_point.size(); }
   std::size_t site_of(std::size_t p) const { return site.empty() ? p : site[p]; }
@@ -130,10 +134,11 @@ struct FitQuadrature {
   template <class Fn>
   void for_each_point(Fn&& fn) const {
     const std::size_t R = rule.size(), T = tri_area.size();
+    const std::uint32_t* const tri_nodes = triangle_nodes();
     std::size_t p = 0;
     for (std::size_t j = 0; j < T; ++j)
       for (std::size_t k = 0; k < R; ++k, ++p)
-        fn(p, &tri_node[3 * j], &tri_vertex[3 * j], rule[k].barycentric.data(), 3, rule[k].weight * tri_area[j]);
+        fn(p, &tri_nodes[3 * j], &tri_vertex[3 * j], rule[k].barycentric.data(), 3, rule[k].weight * tri_area[j]);
     for (std::size_t m = 0; m < quad_weight.size(); ++m, ++p)
       fn(p, &quad_node[4 * m], &quad_vertex[4 * m], &quad_phi[4 * m], 4, quad_weight[m]);
   }
