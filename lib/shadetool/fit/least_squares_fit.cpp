@@ -379,13 +379,16 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
     res2.fill(0.0);
     res_mass.fill(0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+    abs_old = abs_new;
+    abs_new.fill(0.0);
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
       for (std::size_t k = 0; k < W; ++k) {
         x[i + k] += alpha[k] * p[i + k];
         const double ri = r[i + k] - alpha[k] * Ap[i + k];
         r[i + k] = ri;
         res2[k] += ri * ri;
         if (bounded) res_mass[k] += ri * ri * inv_m[node];
+        abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
       }
     for (std::size_t k = 0; k < W; ++k)
       if (active[k] && (res2[k] < threshold[k] || accurate(k) || !(pAp[k] > 0))) {
@@ -393,10 +396,6 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
         --running;
       }
     if (running == 0) break;
-    abs_old = abs_new;
-    abs_new.fill(0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
-      for (std::size_t k = 0; k < W; ++k) abs_new[k] += r[i + k] * r[i + k] * inv_d[node];
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
