@@ -264,16 +264,26 @@ RegisterCommand reg("bake-lighting", HelpSection::Shade, [](CLI::App& app) -> st
         r.notes.push_back(std::to_string(added) + " vertices added so that each corner is lit with its own normal (corner "
                           "normals differ there); the output's vertex normals are those corner normals");
       }
-      shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast);
-      // --fit least-squares (lighting/fit_vertex_lighting.h): the point colours replaced by the fit.
-      if (fit_method(fit) == shadetool::VertexFit::LeastSquares && set.frequency == shadetool::ShadingFrequency::PerVertex) {
-        shadetool::VertexFitOptions vfit = vertex_fit_options(fit, io);
+      // --fit least-squares (lighting/fit_vertex_lighting.h): the point colours replaced by the fit;
+      // they are computed only when --stats or --json reports them (the point error, the counts).
+      const bool fitted = fit_method(fit) == shadetool::VertexFit::LeastSquares &&
+                          set.frequency == shadetool::ShadingFrequency::PerVertex;
+      shadetool::VertexFitOptions vfit = vertex_fit_options(fit, io);
+      const shadetool::VertexColors point_colors =
+          fitted && !vfit.measure_error ? shadetool::VertexColors::None : shadetool::VertexColors::All;
+      shadetool::BakeResult baked = shadetool::bake_lighting(mesh, scene, set.frequency, set.shade, cast, point_colors);
+      if (fitted) {
         if (!set.hdr) {  // 8-bit: [0, 1], and the solve to a quarter of a step
           vfit.solve.upper = 1;
           vfit.solve.accuracy = shadetool::kEightBitFitAccuracy;
         }
         shadetool::VertexLightingFit lsq = shadetool::fit_vertex_lighting(mesh, scene, baked, set.shade, cast, vfit);
         baked.rgb = std::move(lsq.rgb);
+        if (point_colors == shadetool::VertexColors::None) {  // no point shading: the fit's counts stand in
+          baked.report.counters += lsq.fallback_counters;     // the fallback vertices it lit
+          baked.shadows.hard_lights = lsq.shadows.hard_lights;  // the lights its shadow rays were cast for
+          baked.shadows.sampled_lights = lsq.shadows.sampled_lights;
+        }
         report_fit(r, lsq.solve, lsq.error_fit, lsq.error_point, lsq.quadrature_points, fit);
         if (set.shadows.enabled) r.stats["fit_shadow_rays"] = lsq.shadows.shadow_rays;
       } else if (fit_method(fit) == shadetool::VertexFit::LeastSquares) {

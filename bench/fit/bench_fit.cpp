@@ -53,7 +53,9 @@ std::vector<double> clamped(std::vector<double> v) {
 // One bake: the point colours (samples 0) or the least-squares fit at `samples` points per
 // triangle, 8-bit bounds as bake-lighting writes them. Returns the colours.
 std::vector<double> bake(const Mesh& mesh, const Scene& scene, int samples) {
-  BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+  // least squares without --stats or --json: the normals only (VertexColors::None), as bake-lighting
+  const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {},
+                                         samples == 0 ? VertexColors::All : VertexColors::None);
   if (samples == 0) return clamped(point.rgb);
   VertexFitOptions fit;
   fit.method = VertexFit::LeastSquares;
@@ -115,8 +117,8 @@ int table(const std::string& src, int repeats, std::size_t max_triangles, std::s
 // taken from the first guess), and the conjugate gradient (the full fit minus the assembly).
 int breakdown(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles,
               const std::string& only_scene) {
-  std::printf("| mesh | scene | pt | point bake | quadrature | f at points | assembly | CG | CG iterations | total LS | f evals / vertex |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | scene | pt | point bake | normals only | quadrature | f at points | assembly | CG | CG iterations | total LS | f evals / vertex |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
   for (const auto& s : sizes) {
     const std::size_t triangles = std::size_t(2 * s[0] * s[1]);
@@ -126,13 +128,16 @@ int breakdown(const std::string& src, int repeats, std::size_t max_triangles, st
       if (!only_scene.empty() && only_scene != name) continue;
       const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
       for (int samples : {1, 3, 6}) {
-        std::vector<double> t_point, t_quad, t_f, t_asm, t_cg;
+        std::vector<double> t_point, t_normals, t_quad, t_f, t_asm, t_cg;
         int iterations = 0;
         std::size_t points = 0;
         for (int k = 0; k < repeats; ++k) {
           double t0 = cpu_ms();
           const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
           t_point.push_back(cpu_ms() - t0);
+          t0 = cpu_ms();  // what least squares runs of the bake (bake-lighting without --stats or --json)
+          bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {}, VertexColors::None);
+          t_normals.push_back(cpu_ms() - t0);
           t0 = cpu_ms();
           const std::vector<double> world = world_positions(mesh, scene);
           const FitElements elements = fit_elements(mesh);
@@ -155,9 +160,9 @@ int breakdown(const std::string& src, int repeats, std::size_t max_triangles, st
           iterations = least_squares_fit(elements, world, q, f, point.rgb, 3, o).iterations;
           t_cg.push_back(std::max(0.0, cpu_ms() - t0 - assembly));
         }
-        const double total = median(t_point) + median(t_quad) + median(t_f) + median(t_asm) + median(t_cg);
-        std::printf("| torus %zuk tri | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.2f | %.1f |\n",
-                    mesh.num_faces() / 1000, name, samples, median(t_point), median(t_quad), median(t_f),
+        const double total = median(t_normals) + median(t_quad) + median(t_f) + median(t_asm) + median(t_cg);
+        std::printf("| torus %zuk tri | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.2f | %.1f |\n",
+                    mesh.num_faces() / 1000, name, samples, median(t_point), median(t_normals), median(t_quad), median(t_f),
                     median(t_asm), median(t_cg), iterations, total, double(points) / double(mesh.num_vertices()));
         std::fflush(stdout);
       }
@@ -231,11 +236,11 @@ std::vector<double> box_fit(const FitElements& e, const FitQuadrature& q, const 
       for (int k = 0; k < 3; ++k) b[3 * node[j] + k] += w * phi[j] * f[3 * s + k];
   });
   for (std::size_t t = 0; t < q.tri_area.size(); ++t)
-    for (int i = 0; i < 3; ++i) d[q.tri_node[3 * t + i]] += q.tri_area[t] / 6;
+    for (int i = 0; i < 3; ++i) d[q.triangle_nodes()[3 * t + i]] += q.tri_area[t] / 6;
   const auto gradient = [&]() {  // g = M c - b
     for (std::size_t i = 0; i < 3 * N; ++i) g[i] = -b[i];
     for (std::size_t t = 0; t < q.tri_area.size(); ++t) {
-      const std::uint32_t* n = &q.tri_node[3 * t];
+      const std::uint32_t* n = &q.triangle_nodes()[3 * t];
       const double a = q.tri_area[t] / 12;
       for (int k = 0; k < 3; ++k) {
         const double sum = c[3 * n[0] + k] + c[3 * n[1] + k] + c[3 * n[2] + k];

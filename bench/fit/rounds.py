@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""rounds.py BASE_BENCH_FIT NEW_BENCH_FIT SRC [ROUNDS] [REPEATS]: `bench_fit table SRC REPEATS 20000`
-(the 10k torus, studio and window) of two builds in alternating processes, ROUNDS rounds (default
+"""rounds.py BASE_BENCH_FIT NEW_BENCH_FIT SRC [ROUNDS] [REPEATS] [LABEL=BENCH_FIT ...]:
+`bench_fit table SRC REPEATS 20000` (the 10k torus, studio and window) of two builds (and any
+further LABEL=path builds, run in the same rotation, before "branch") in alternating processes, ROUNDS rounds (default
 7, REPEATS 7). Per round each build's rows give the CPU ratio to its own point bake (medians of
 REPEATS round-robin repetitions); printed: per (scene, method, build) the median and range of the
 rounds' ratios, the median CPU ms, and the error column (deterministic), with the load average."""
@@ -9,11 +10,12 @@ import subprocess, sys, statistics
 base, new, src = sys.argv[1], sys.argv[2], sys.argv[3]
 rounds = int(sys.argv[4]) if len(sys.argv) > 4 else 7
 reps = sys.argv[5] if len(sys.argv) > 5 else "7"
+builds = [("base", base)] + [tuple(a.split("=", 1)) for a in sys.argv[6:]] + [("branch", new)]
 load = lambda: open("/proc/loadavg").read().split()[0]
 print(f"load average at the start: {load()}")
 rows = {}  # (scene, method, build) -> list of (ratio, cpu, error, vs)
 for r in range(rounds):
-    for build, binary in (("base", base), ("branch", new)):
+    for build, binary in builds:
         out = subprocess.run([binary, "table", src, reps, "20000"], capture_output=True, text=True, check=True).stdout
         for line in out.splitlines():
             c = [x.strip() for x in line.strip().strip("|").split("|")]

@@ -302,15 +302,17 @@ TEST_CASE("A linear signal is reproduced exactly: fit = point values, with and w
       tri.add_face({a, a + 8, a + 7});
     }
   const auto linear = [](const Vec3d& p) { return 0.5 + 0.25 * p.x - 0.125 * p.y; };
+  // The first guess is the lumped projection, not these values: CG reaches them (to 1e-14 relative
+  // residual), so a value of 0 is met within a margin of 1e-12.
   for (const Mesh* m : {&tri}) {
     for (double lambda : {0.0, 0.1, 10.0}) {
       const std::vector<double> got = fit_of(*m, linear, 3, lambda);
-      for (std::size_t v = 0; v < m->num_vertices(); ++v) CHECK(got[v] == Approx(linear(m->position(v))).epsilon(1e-8));
+      for (std::size_t v = 0; v < m->num_vertices(); ++v) CHECK(got[v] == Approx(linear(m->position(v))).epsilon(1e-8).margin(1e-12));
     }
   }
   const Mesh quads = planar_quads(5, 5);  // bilinear interpolation of a linear function is exact too
   const std::vector<double> got = fit_of(quads, linear, 3, 0.0);
-  for (std::size_t v = 0; v < quads.num_vertices(); ++v) CHECK(got[v] == Approx(linear(quads.position(v))).epsilon(1e-8));
+  for (std::size_t v = 0; v < quads.num_vertices(); ++v) CHECK(got[v] == Approx(linear(quads.position(v))).epsilon(1e-8).margin(1e-12));
 }
 
 TEST_CASE("The regulariser pulls a kinked fit toward one plane; clamping is counted; isolated nodes keep their value",
@@ -377,6 +379,40 @@ TEST_CASE("Corner groups: a node per side of a crease keeps the discontinuity", 
   for (int n = 0; n < 3; ++n) CHECK(fit.values[n] == Approx(0.25).epsilon(1e-9));
   for (int n = 3; n < 6; ++n) CHECK(fit.values[n] == Approx(0.75).epsilon(1e-9));
   CHECK(relative_l2_error(q, f, fit.values, 1) < 1e-9);
+}
+
+TEST_CASE("The point values are read only at the fallback nodes: other point values, the same fit bits",
+          "[fit][least_squares]") {
+  // Truth: the fit given one set of point values, on the 3 x 3 grid below (they are not the first
+  // guess, so another set changes nothing); then the same grid plus an isolated vertex, which
+  // fit_fallback_nodes names and which keeps its point value.
+  Mesh m;
+  for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= 3; ++i) m.add_vertex({double(i), double(j) + 0.1 * i, 0});
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = std::uint32_t(j * 4 + i);
+      m.add_face({a, a + 1, a + 5});
+      m.add_face({a, a + 5, a + 4});
+    }
+  const auto fit_with = [](const Mesh& mesh, const std::vector<double>& point) {
+    const FitElements e = fit_elements(mesh);
+    const FitQuadrature q = fit_quadrature(e, mesh.positions, 3);
+    std::vector<double> f(q.size());
+    for (std::size_t s = 0; s < q.size(); ++s) f[s] = std::sin(double(s));  // anything not linear
+    return least_squares_fit(e, mesh.positions, q, f, point, 1, {});
+  };
+  std::vector<double> point(m.num_vertices());
+  for (std::size_t v = 0; v < point.size(); ++v) point[v] = 0.3 * double(v);
+  const LeastSquaresFit given = fit_with(m, point), other = fit_with(m, std::vector<double>(point.size(), -7.0));
+  CHECK(other.values == given.values);
+  CHECK(other.iterations == given.iterations);
+  CHECK(fit_fallback_nodes(fit_elements(m), m.positions, fit_quadrature(fit_elements(m), m.positions, 3)).empty());
+  m.add_vertex({9, 9, 0});  // isolated: on no face
+  const FitElements e = fit_elements(m);
+  CHECK(fit_fallback_nodes(e, m.positions, fit_quadrature(e, m.positions, 3)) == std::vector<std::uint32_t>{16});
+  point.push_back(0.5);
+  CHECK(fit_with(m, point).values[16] == 0.5);
 }
 
 TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the place of all its points",

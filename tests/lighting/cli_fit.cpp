@@ -93,3 +93,23 @@ TEST_CASE("occlusion --error reports rays per vertex as a histogram; --fit least
     CHECK(q <= 1.0f);
   }
 }
+
+TEST_CASE("bake-lighting --fit least-squares without --stats or --json (no point colours computed) writes the same "
+          "bytes and the same notes as with --json",
+          "[lighting][cli][fit]") {
+  // Truth: the run with --json, which computes the point colours (their error is reported). With
+  // shadows under window.json (an area light and a sky: sampled lights), the note about --samples
+  // must not claim that the scene has no sampled light.
+  TempDir dir;
+  const std::string src = SHADETOOL_SOURCE_DIR;
+  const std::string base = "bake-lighting " + src + "/data/icosphere.ply --scene " + src +
+                           "/data/scenes/window.json --shadows --samples 4 --fit least-squares --fit-samples 1";
+  const auto quiet = shadetool_test::run_shadetool(base + " -o " + dir.file("quiet.ply"));
+  const auto json = shadetool_test::run_shadetool(base + " -o " + dir.file("json.ply") + " --json");
+  INFO(quiet.err);
+  REQUIRE(quiet.code == 0);
+  REQUIRE(json.code == 0);
+  CHECK(shadetool_test::read_file(dir.file("quiet.ply")) == shadetool_test::read_file(dir.file("json.ply")));
+  CHECK(quiet.err.find("--samples ignored") == std::string::npos);
+  CHECK(std::isfinite(nlohmann::json::parse(json.out)["stats"]["point_error"].get<double>()));
+}

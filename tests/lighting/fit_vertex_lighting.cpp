@@ -151,3 +151,56 @@ TEST_CASE("Skipping the error measure (no --stats) leaves the fitted colours bit
   CHECK(std::isfinite(measured.error_fit));
   CHECK(measured.error_fit < measured.error_point);
 }
+
+TEST_CASE("Without the point colours (VertexColors::None) the fit is the same bits; its fallback vertices are lit as the "
+          "full bake lights them",
+          "[lighting][fit]") {
+  // Truth: the fit given the full point bake (every vertex shaded by shade_points), whose colours
+  // are also the fallback vertices' expected values. The mesh has two fallback vertices: an isolated
+  // one and one whose only face has no area (its three corners on a line).
+  Mesh mesh = shadetool::testing::icosphere(2).mesh;
+  mesh.add_vertex({0.1, 0.0, 1.2});  // isolated
+  const std::uint32_t a = std::uint32_t(mesh.num_vertices());
+  mesh.add_vertex({1.2, 0.0, 0.1});
+  mesh.add_vertex({1.3, 0.0, 0.1});
+  mesh.add_vertex({1.4, 0.0, 0.1});
+  mesh.add_face({a, a + 1, a + 2});  // collinear: no area
+  // The input's normals (the sphere's radial ones; the extra vertices' facing the sphere sideways):
+  // the fallback vertices are lit, and the sphere hides part of their sky (rays seeded with their ids).
+  mesh.vertex_normals = mesh.positions;
+  set3(mesh.vertex_normals, a - 1, {1, 0, 0.2});
+  for (std::uint32_t v = a; v < a + 3; ++v) set3(mesh.vertex_normals, v, {-1, 0, 0.5});
+  Scene scene = dark_scene(ShadingModel::Phong);
+  scene.material.diffuse = {0.6, 0.6, 0.6};
+  scene.material.specular = {0.5, 0.5, 0.5};
+  scene.material.shininess = 40;
+  scene.lights.push_back(point_light({2.5, 1.5, 3}));
+  scene.lights.push_back(directional({-0.3, 0.2, -1}));
+  scene.lights.push_back(sky_light({0, 0, 1}, {0.3, 0.3, 0.4}, {0.1, 0.1, 0.1}));  // sampled: its rays' seeds matter
+  scene.camera_from_world = camera_at({0, 0, 4});
+  scene.has_camera = true;
+  for (bool shadows_on : {false, true}) {
+    INFO("shadows " << shadows_on);
+    ShadowOptions shadows;
+    shadows.enabled = shadows_on;
+    const BakeResult full = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, shadows);
+    const BakeResult bare = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, shadows, VertexColors::None);
+    CHECK(bare.rgb.empty());
+    CHECK(bare.vertex_normals == full.vertex_normals);
+    CHECK(bare.report.plan.lights.size() == full.report.plan.lights.size());
+    VertexFitOptions fit;
+    fit.method = VertexFit::LeastSquares;
+    fit.solve.upper = 1;
+    fit.solve.accuracy = kEightBitFitAccuracy;
+    fit.measure_error = false;
+    const VertexLightingFit with = fit_vertex_lighting(mesh, scene, full, {}, shadows, fit);
+    const VertexLightingFit without = fit_vertex_lighting(mesh, scene, bare, {}, shadows, fit);
+    CHECK(with.solve.fallback_nodes == 4);  // the isolated vertex and the three of the flat face
+    CHECK(without.solve.fallback_nodes == 4);
+    CHECK(without.rgb == with.rgb);
+    CHECK(without.fallback_counters.points == 4);
+    if (shadows_on) CHECK(without.fallback_counters.shadowed > 0);  // the sky partly hidden: the seeds matter
+    for (std::uint32_t v : {a - 1, a, a + 1, a + 2})
+      for (int k = 0; k < 3; ++k) CHECK(without.rgb[3 * v + k] == std::min(std::max(full.rgb[3 * v + k], 0.0), 1.0));
+  }
+}

@@ -40,6 +40,23 @@ void quad_corners(const FitElements& e, const std::vector<double>& positions, st
   for (int j = 0; j < 4; ++j) q[j] = vertex_position(positions, e.quad_vertex[4 * k + j]);
 }
 
+// Quad k's 4 x 4 block of M by 3x3 Gauss-Legendre (`gauss`) on its bilinear map; false when it has
+// no mass (zero trace: every area element 0), and then it is no part of the system.
+bool quad_mass(const FitElements& e, const std::vector<double>& positions, const std::vector<GaussPoint>& gauss,
+               std::size_t k, double m[16]) {
+  Vec3d c[4];
+  quad_corners(e, positions, k, c);
+  std::fill(m, m + 16, 0.0);
+  for (const GaussPoint& gu : gauss)
+    for (const GaussPoint& gv : gauss) {
+      const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
+      const double w = gu.weight * gv.weight * b.area_element;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) m[4 * i + j] += w * b.phi[i] * b.phi[j];
+    }
+  return m[0] + m[5] + m[10] + m[15] > 0;
+}
+
 // One triangle of the regulariser's edge map: its nodes, vertices and area.
 struct RegTriangle {
   std::uint32_t node[3];
@@ -152,25 +169,35 @@ struct FitOperator {
   std::vector<std::uint32_t> edge_node;  // 4 per regularised edge: a, b, wing 1, wing 2
   std::vector<double> edge_d;            // 4 per edge: d sqrt(lambda (A1 + A2)^2), R_e = (d . c)^2
   std::vector<double> diagonal;          // #nodes: of M + lambda R
+  std::vector<double> lumped;            // #nodes: row sums of M (= of M + lambda R: R 1 = 0), the lumped mass
 };
 
 // y = A x for x, y #nodes by W (W = 0: `width` channels). Sequential in element order: the same
 // bits for any thread count.
+// y += M_t x for triangle t: area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T).
+template <std::size_t W>
+inline void add_triangle_product(const FitOperator& A, std::size_t t, const double* x, double* y, std::size_t w) {
+  const double s = A.tri_area[t] / 12;
+  if (s == 0) return;
+  const std::size_t n0 = A.tri_node[3 * t] * w, n1 = A.tri_node[3 * t + 1] * w, n2 = A.tri_node[3 * t + 2] * w;
+  for (std::size_t k = 0; k < (W ? W : w); ++k) {
+    const double x0 = x[n0 + k], x1 = x[n1 + k], x2 = x[n2 + k], sum = x0 + x1 + x2;
+    y[n0 + k] += s * (x0 + sum);
+    y[n1 + k] += s * (x1 + sum);
+    y[n2 + k] += s * (x2 + sum);
+  }
+}
+
 template <std::size_t W>
 void apply_operator(const FitOperator& A, const double* x, double* y, std::size_t width) {
   const std::size_t w = W ? W : width;
   std::fill(y, y + A.diagonal.size() * w, 0.0);
-  for (std::size_t t = 0; t < A.triangles; ++t) {  // area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T)
-    const double s = A.tri_area[t] / 12;
-    if (s == 0) continue;
-    const std::size_t n0 = A.tri_node[3 * t] * w, n1 = A.tri_node[3 * t + 1] * w, n2 = A.tri_node[3 * t + 2] * w;
-    for (std::size_t k = 0; k < w; ++k) {
-      const double x0 = x[n0 + k], x1 = x[n1 + k], x2 = x[n2 + k], sum = x0 + x1 + x2;
-      y[n0 + k] += s * (x0 + sum);
-      y[n1 + k] += s * (x1 + sum);
-      y[n2 + k] += s * (x2 + sum);
-    }
-  }
+  // The triangles taken from four quarters of the list in turn: neighbouring triangles of a mesh
+  // share nodes, so in list order each update of y waits for the store of the one before; four
+  // far-apart chains overlap (bench/fit/results.md). A fixed order: the same bits on every run.
+  const std::size_t T = A.triangles, Q = (T + 3) / 4;
+  for (std::size_t i = 0; i < Q; ++i)
+    for (std::size_t t = i; t < T; t += Q) add_triangle_product<W>(A, t, x, y, w);
   for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
     const std::uint32_t* n = &A.quad_node[4 * k];
     const double* m = &A.quad_mass[16 * k];
@@ -195,17 +222,21 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
                         double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
   const std::size_t N = e.nodes, T = q.tri_area.size();
   A.diagonal.assign(N, 0.0);
-  A.tri_node = q.tri_node.data();
+  A.lumped.assign(N, 0.0);
+  A.tri_node = q.triangle_nodes();
   A.tri_area = q.tri_area.data();
   A.triangles = T;
   std::vector<RegTriangle> reg;
   if (lambda > 0) reg.reserve(T + 2 * e.quad_face.size());
   // M, triangles: area/12 [[2,1,1],[1,2,1],[1,1,2]].
   for (std::size_t t = 0; t < T; ++t) {
-    const std::uint32_t* n = &q.tri_node[3 * t];
+    const std::uint32_t* n = &q.triangle_nodes()[3 * t];
     const double area = q.tri_area[t];
     if (!(area > 0)) continue;
-    for (int i = 0; i < 3; ++i) A.diagonal[n[i]] += area / 6;
+    for (int i = 0; i < 3; ++i) {
+      A.diagonal[n[i]] += area / 6;
+      A.lumped[n[i]] += area / 3;  // row sum of area/12 [[2,1,1],...]: area/12 * 4
+    }
     if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {q.tri_vertex[3 * t], q.tri_vertex[3 * t + 1], q.tri_vertex[3 * t + 2]}});
   }
   // M, quads: 3x3 Gauss-Legendre on the bilinear map.
@@ -213,20 +244,14 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
     const std::uint32_t* n = &e.quad_node[4 * k];
     const std::uint32_t* v = &e.quad_vertex[4 * k];
-    Vec3d c[4];
-    quad_corners(e, positions, k, c);
-    double m[16] = {};
-    for (const GaussPoint& gu : gauss)
-      for (const GaussPoint& gv : gauss) {
-        const BilinearPoint b = bilinear_point(c, gu.t, gv.t);
-        const double w = gu.weight * gv.weight * b.area_element;
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j) m[4 * i + j] += w * b.phi[i] * b.phi[j];
-      }
-    if (!(m[0] + m[5] + m[10] + m[15] > 0)) continue;
+    double m[16];
+    if (!quad_mass(e, positions, gauss, k, m)) continue;
     A.quad_node.insert(A.quad_node.end(), n, n + 4);
     A.quad_mass.insert(A.quad_mass.end(), m, m + 16);
-    for (int i = 0; i < 4; ++i) A.diagonal[n[i]] += m[5 * i];
+    for (int i = 0; i < 4; ++i) {
+      A.diagonal[n[i]] += m[5 * i];
+      A.lumped[n[i]] += m[4 * i] + m[4 * i + 1] + m[4 * i + 2] + m[4 * i + 3];
+    }
     if (lambda > 0) {
       reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
       reg.push_back({{n[0], n[2], n[3]}, {v[0], v[2], v[3]}});
@@ -354,13 +379,16 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
     res2.fill(0.0);
     res_mass.fill(0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+    abs_old = abs_new;
+    abs_new.fill(0.0);
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
       for (std::size_t k = 0; k < W; ++k) {
         x[i + k] += alpha[k] * p[i + k];
         const double ri = r[i + k] - alpha[k] * Ap[i + k];
         r[i + k] = ri;
         res2[k] += ri * ri;
         if (bounded) res_mass[k] += ri * ri * inv_m[node];
+        abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
       }
     for (std::size_t k = 0; k < W; ++k)
       if (active[k] && (res2[k] < threshold[k] || accurate(k) || !(pAp[k] > 0))) {
@@ -368,10 +396,6 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
         --running;
       }
     if (running == 0) break;
-    abs_old = abs_new;
-    abs_new.fill(0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
-      for (std::size_t k = 0; k < W; ++k) abs_new[k] += r[i + k] * r[i + k] * inv_d[node];
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -420,7 +444,7 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
     triangles += size >= 3 && size != 4 ? size - 2 : 0;
   }
   e.tri_vertex.reserve(3 * triangles);
-  e.tri_node.reserve(3 * triangles);
+  if (own_nodes) e.tri_node.reserve(3 * triangles);  // else empty: the nodes are the vertices
   e.tri_face.reserve(triangles);
   e.quad_vertex.reserve(4 * quads);
   e.quad_node.reserve(4 * quads);
@@ -442,7 +466,7 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
     for (std::size_t i = 1; i + 1 < size; ++i) {  // fan from corner 0, as render draws it
       for (std::size_t c : {c0, c0 + i, c0 + i + 1}) {
         e.tri_vertex.push_back(mesh.corner_vertex[c]);
-        e.tri_node.push_back(node_of(c));
+        if (own_nodes) e.tri_node.push_back(corner_node[c]);
       }
       e.tri_face.push_back(std::uint32_t(f));
     }
@@ -470,13 +494,14 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
     q.tri_vertex = e.tri_vertex;
     q.tri_face = e.tri_face;
   } else {
-    q.tri_node.resize(3 * kept);
+    const bool own_nodes = !e.tri_node.empty();  // else q's stays empty too: the vertices
+    q.tri_node.resize(own_nodes ? 3 * kept : 0);
     q.tri_vertex.resize(3 * kept);
     q.tri_face.resize(kept);
     for (std::size_t t = 0, j = 0; t < T; ++t) {
       if (!(q.tri_area[t] > 0)) continue;
       for (int i = 0; i < 3; ++i) {
-        q.tri_node[3 * j + i] = e.tri_node[3 * t + i];
+        if (own_nodes) q.tri_node[3 * j + i] = e.tri_node[3 * t + i];
         q.tri_vertex[3 * j + i] = e.tri_vertex[3 * t + i];
       }
       q.tri_area[j] = q.tri_area[t];  // j <= t: in place
@@ -512,7 +537,7 @@ FitPoint FitQuadrature::point(std::size_t p) const {
   if (p < triangle_points()) {
     const std::size_t j = p / R, k = p - j * R;  // divisor: R >= 1 when there are triangle points
     for (int i = 0; i < 3; ++i) {
-      out.node[i] = tri_node[3 * j + i];
+      out.node[i] = triangle_nodes()[3 * j + i];
       out.vertex[i] = tri_vertex[3 * j + i];
       out.phi[i] = rule[k].barycentric[i];
     }
@@ -573,6 +598,25 @@ std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::v
   return interpolate_at_points(q, values, width, true);
 }
 
+std::vector<std::uint32_t> fit_fallback_nodes(const FitElements& e, const std::vector<double>& positions,
+                                              const FitQuadrature& q) {
+  // The same rule as least_squares_fit's system (a node is in it when M_ii > 0): on a triangle of
+  // the quadrature (positive area), or on a quad with mass (quad_mass).
+  std::vector<char> in_system(e.nodes, 0);
+  const std::uint32_t* tri_nodes = q.triangle_nodes();
+  for (std::size_t i = 0; i < 3 * q.tri_area.size(); ++i) in_system[tri_nodes[i]] = 1;
+  const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
+  for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
+    double m[16];
+    if (quad_mass(e, positions, gauss, k, m))
+      for (int j = 0; j < 4; ++j) in_system[e.quad_node[4 * k + j]] = 1;
+  }
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i < e.nodes; ++i)
+    if (!in_system[i]) out.push_back(std::uint32_t(i));
+  return out;
+}
+
 LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
                                   const std::vector<double>& f, const std::vector<double>& point_values,
                                   std::size_t width, const LeastSquaresFitOptions& options) {
@@ -622,8 +666,14 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
         for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * fs[k];
       }
     });
-    for (std::uint32_t i : off_system)
-      for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = 0;  // out of the system during CG
+    // The first guess: the lumped-mass projection c0_i = b_i / sum_j M_ij (the L2 projection with M
+    // replaced by its row-sum diagonal; exact for a constant f). It needs only b, not the point
+    // values, so the result does not depend on whether the caller computed them. 0 off the system.
+    for (std::size_t i = 0; i < N; ++i) {
+      const double m = A.lumped[i];
+      for (std::size_t k = 0; k < width; ++k)  // divisor checked; off the system (no mass): 0 during CG
+        fit.values[i * width + k] = inverse_diagonal[i] != 0 && m > 0 ? b[i * width + k] / m : 0.0;
+    }
     BlockCgOptions cg;
     cg.tolerance = options.tolerance;
     // accuracy a: stop at sum r_i^2 / M_ii <= (a mu)^2 min M_ii (header, Solver); mu = 1/2 with

@@ -33,7 +33,12 @@
 // per triangle, a 4 x 4 block per quad, a vector d per regularised edge) and applied by one pass
 // over them per step, so no sparse matrix is assembled; all channels in one block (one pass serves
 // them all; each channel has its own step lengths and stop). Stopped per channel when
-// |A c - b| <= tolerance |b| (default 1e-10), from the point values as the first guess. With
+// |A c - b| <= tolerance |b| (default 1e-10), from the lumped-mass projection as the first guess:
+// c0_i = b_i / sum_j M_ij, the L2 projection with M replaced by the diagonal of its row sums
+// (mass lumping; Zienkiewicz & Taylor, The Finite Element Method, vol. 1, the lumped mass matrix;
+// R's rows sum to 0, so the row sums of M + lambda R are M's). It is exact for a constant f, needs
+// only b, and so does not depend on the point values (bench/fit/results.md: CG iterations against
+// the point values as the first guess). With
 // accuracy a > 0 (8-bit outputs: kEightBitFitAccuracy, a quarter of a step) a channel also stops
 // once every value is provably within a of the exact solution. With e = c - c*, r = A c - b = A e,
 // D = diag(M) and mu a lower bound of the eigenvalues of D^-1 M (Wathen, "Realistic eigenvalue
@@ -69,11 +74,14 @@ namespace shadetool {
 
 // The faces as interpolation elements. Inputs: mesh (faces), corner_node (#C node ids; empty:
 // the corner's vertex), nodes (#nodes; ignored when corner_node is empty: #V).
+// tri_node is empty when the nodes are the vertices (no corner_node): triangle_nodes() is then
+// tri_vertex (one array fewer to fill and fault in; likewise in FitQuadrature).
 struct FitElements {
   std::size_t nodes = 0;
-  std::vector<std::uint32_t> tri_vertex, tri_node, tri_face;     // 3, 3, 1 per triangle
+  std::vector<std::uint32_t> tri_vertex, tri_node, tri_face;     // 3, 3 (or 0), 1 per triangle
   std::vector<std::uint32_t> quad_vertex, quad_node, quad_face;  // 4, 4, 1 per quad
   std::size_t skipped_faces = 0;                                 // fewer than 3 corners
+  const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? tri_vertex.data() : tri_node.data(); }
 };
 FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& corner_node = {}, std::size_t nodes = 0);
 
@@ -101,7 +109,7 @@ struct FitQuadrature {
   int samples = 3;
   std::vector<QuadraturePoint> rule;        // the triangle rule (fit/triangle_quadrature.h)
   std::size_t element_triangles = 0;        // the elements' triangle count (those of no area included)
-  std::vector<std::uint32_t> tri_node;      // 3 per triangle of positive area
+  std::vector<std::uint32_t> tri_node;      // 3 per triangle of positive area, or empty: the vertices
   std::vector<std::uint32_t> tri_vertex;    // 3 per triangle of positive area
   std::vector<double> tri_area;             // 1 per triangle of positive area
   std::vector<std::uint32_t> tri_face;      // 1 per triangle of positive area
@@ -114,6 +122,7 @@ struct FitQuadrature {
   std::vector<std::uint32_t> site_point;    // 1 per site: its first point, or empty (identity)
 
   std::size_t triangle_points() const { return tri_area.size() * rule.size(); }
+  const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? tri_vertex.data() : tri_node.data(); }
   std::size_t size() const { return triangle_points() + quad_weight.size(); }
   std::size_t sites() const { return site_point.empty() ? size() : site_point.size(); }
   std::size_t site_of(std::size_t p) const { return site.empty() ? p : site[p]; }
@@ -125,10 +134,11 @@ struct FitQuadrature {
   template <class Fn>
   void for_each_point(Fn&& fn) const {
     const std::size_t R = rule.size(), T = tri_area.size();
+    const std::uint32_t* const tri_nodes = triangle_nodes();
     std::size_t p = 0;
     for (std::size_t j = 0; j < T; ++j)
       for (std::size_t k = 0; k < R; ++k, ++p)
-        fn(p, &tri_node[3 * j], &tri_vertex[3 * j], rule[k].barycentric.data(), 3, rule[k].weight * tri_area[j]);
+        fn(p, &tri_nodes[3 * j], &tri_vertex[3 * j], rule[k].barycentric.data(), 3, rule[k].weight * tri_area[j]);
     for (std::size_t m = 0; m < quad_weight.size(); ++m, ++p)
       fn(p, &quad_node[4 * m], &quad_vertex[4 * m], &quad_phi[4 * m], 4, quad_weight[m]);
   }
@@ -209,9 +219,15 @@ struct LeastSquaresFit {
   bool converged = true;
 };
 
+// The nodes that touch no face of positive area (no triangle of q, no quad with mass): they are no
+// part of the system and keep their point value (LeastSquaresFit::fallback_nodes counts them).
+// Ascending node ids. A caller without point values at every node computes them only here.
+std::vector<std::uint32_t> fit_fallback_nodes(const FitElements& elements, const std::vector<double>& positions,
+                                              const FitQuadrature& q);
+
 // f: #points by width, the signal at q's points, or #sites by width, its value at each site (one
-// value for all the points of a site; the two are the same when every point is its own site). point_values: #nodes by width (first guess and
-// fallback). Error for mismatched sizes.
+// value for all the points of a site; the two are the same when every point is its own site). point_values: #nodes by width, read only at the
+// fallback nodes (fit_fallback_nodes: the others may hold anything). Error for mismatched sizes.
 LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
                                   const FitQuadrature& q, const std::vector<double>& f,
                                   const std::vector<double>& point_values, std::size_t width,

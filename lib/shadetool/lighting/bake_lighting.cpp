@@ -2,6 +2,7 @@
 #include <shadetool/lighting/bake_lighting.h>
 
 #include <memory>
+#include <string>
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/validate.h>
@@ -29,9 +30,11 @@ namespace {
 
 // Shades object-space points and normals, with shadows when asked: the visibility is computed
 // from world-space copies (the lights' space) and handed to shade_points.
+// ids: the points' seeds (empty: their index).
 std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, const std::vector<double>& points,
                                        const std::vector<double>& normals, const ShadeOptions& options,
-                                       const ShadowOptions& shadows, BakeResult& result) {
+                                       const ShadowOptions& shadows, BakeResult& result,
+                                       const std::vector<std::uint64_t>& ids = {}) {
   if (!shadows.enabled) return shade_points(scene, points, normals, options, &result.report);
   const Affine3d& M = scene.world_from_object;
   const Mat3d cof = signed_cofactor(M.A);
@@ -47,7 +50,7 @@ std::vector<double> shade_with_shadows(const Mesh& mesh, const Scene& scene, con
   }
   const ShadingModel model = options.model ? *options.model : scene.model;
   const LightingPlan plan = plan_lighting(scene, model);
-  const std::vector<double> visibility = light_visibility(bvh, scene, plan, wp, wn, {}, shadows.samples, &result.shadows,
+  const std::vector<double> visibility = light_visibility(bvh, scene, plan, wp, wn, ids, shadows.samples, &result.shadows,
                                                                 shadows.progress);
   ShadeOptions with = options;
   with.visibility = &visibility;
@@ -69,14 +72,21 @@ void require_bakeable(const Mesh& mesh, ShadingFrequency frequency, const std::s
 }
 
 BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency, const ShadeOptions& options,
-                         const ShadowOptions& shadows) {
+                         const ShadowOptions& shadows, VertexColors colors) {
   check_shadow_options(shadows, "bake_lighting: shadow samples");
   BakeResult result;
   if (frequency == ShadingFrequency::PerVertex) {
     LitVertexNormals lit = lit_vertex_normals(mesh);
     result.normals_source = std::move(lit.source);
     result.normal_fallback_vertices = lit.fallback_vertices;
-    result.rgb = shade_with_shadows(mesh, scene, mesh.positions, lit.normals, options, shadows, result);
+    switch (colors) {
+      case VertexColors::All:
+        result.rgb = shade_with_shadows(mesh, scene, mesh.positions, lit.normals, options, shadows, result);
+        break;
+      case VertexColors::None:  // no point: the report's model, space and plan, no counts
+        shade_points(scene, {}, {}, options, &result.report);
+        break;
+    }
     result.vertex_normals = std::move(lit.normals);
     return result;
   }
@@ -104,6 +114,29 @@ BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency 
   }
   result.rgb = shade_with_shadows(mesh, scene, centroids, normals, options, shadows, result);
   return result;
+}
+
+std::vector<double> bake_vertex_colors(const Mesh& mesh, const Scene& scene, const BakeResult& normals_bake,
+                                       const std::vector<std::uint32_t>& vertices, const ShadeOptions& options,
+                                       const ShadowOptions& shadows, ShadeCounters& counters) {
+  check_shadow_options(shadows, "bake_lighting: shadow samples");
+  if (normals_bake.vertex_normals.size() != mesh.positions.size())
+    throw Error("bake_vertex_colors: " + std::to_string(normals_bake.vertex_normals.size() / 3) + " vertex normals for " +
+                std::to_string(mesh.num_vertices()) + " vertices");
+  if (vertices.empty()) return {};
+  std::vector<double> points(3 * vertices.size()), normals(3 * vertices.size());
+  std::vector<std::uint64_t> ids(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (vertices[i] >= mesh.num_vertices())
+      throw Error("bake_vertex_colors: vertex " + std::to_string(vertices[i]) + " of " + std::to_string(mesh.num_vertices()));
+    set3(points, i, mesh.position(vertices[i]));
+    set3(normals, i, get3(normals_bake.vertex_normals, vertices[i]));
+    ids[i] = vertices[i];  // the full bake's seed of this vertex: the same shadow rays
+  }
+  BakeResult part;
+  std::vector<double> rgb = shade_with_shadows(mesh, scene, points, normals, options, shadows, part, ids);
+  counters += part.report.counters;
+  return rgb;
 }
 
 std::vector<std::string> store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr) {

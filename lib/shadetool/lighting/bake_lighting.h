@@ -29,6 +29,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -61,8 +62,24 @@ struct BakeResult {
 // mesh of bare vertices has no normal to light). The CLI and Python call it before baking.
 void require_bakeable(const Mesh& mesh, ShadingFrequency frequency, const std::string& name);
 
+// What a per-vertex bake shades. All: every vertex (rgb #V by 3). None: no vertex (rgb empty;
+// report: model, space and plan, counters 0; shadows: none cast): the normals only, for a caller
+// whose output replaces the point colours and reports nothing of them (lighting/
+// fit_vertex_lighting.h's least squares without --stats or --json; it shades only its fallback
+// vertices, with bake_vertex_colors). PerFace bakes ignore it.
+enum class VertexColors { All, None };
+
 BakeResult bake_lighting(const Mesh& mesh, const Scene& scene, ShadingFrequency frequency,
-                         const ShadeOptions& options = {}, const ShadowOptions& shadows = {});
+                         const ShadeOptions& options = {}, const ShadowOptions& shadows = {},
+                         VertexColors colors = VertexColors::All);
+
+// The per-vertex colours of `vertices` (#vertices by 3, in their order) exactly as bake_lighting
+// (PerVertex, All) computes them there: lit with normals_bake.vertex_normals, shadow rays seeded
+// with the vertex ids. Their shading counts are added to `counters`. Error for a vertex id out of
+// range or normals of another mesh.
+std::vector<double> bake_vertex_colors(const Mesh& mesh, const Scene& scene, const BakeResult& normals_bake,
+                                       const std::vector<std::uint32_t>& vertices, const ShadeOptions& options,
+                                       const ShadowOptions& shadows, ShadeCounters& counters);
 
 std::vector<std::string> store_baked_colors(Mesh& mesh, std::vector<float> colors, ShadingFrequency frequency, bool hdr);
 

@@ -8,6 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <shadetool/core/error.h>
 #include <shadetool/lighting/shade_point.h>
 
 namespace shadetool {
@@ -94,6 +95,8 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   VertexLightingFit out;
   switch (fit.method) {
     case VertexFit::Point:
+      if (point.rgb.size() != mesh.positions.size())
+        throw Error("fit_vertex_lighting: the point fit needs the point colours (bake_lighting with VertexColors::All)");
       out.rgb = point.rgb;
       return out;
     case VertexFit::LeastSquares: break;
@@ -111,7 +114,17 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   // renderer's per-pixel Phong is stored), so that light above 1 is not fitted with a slope that
   // the clamp then cuts.
   for (double& v : f) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
-  out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb, 3, fit.solve);
+  // The point colours are read only at the fallback nodes (least_squares_fit.h); a bake without
+  // them (VertexColors::None) has them shaded there alone, as bake_lighting would.
+  std::vector<double> fallback_rgb;
+  if (point.rgb.empty()) {
+    const std::vector<std::uint32_t> fallback = fit_fallback_nodes(elements, positions_world, q);
+    const std::vector<double> lit = bake_vertex_colors(mesh, scene, point, fallback, options, shadows, out.fallback_counters);
+    fallback_rgb.assign(mesh.positions.size(), 0.0);
+    for (std::size_t i = 0; i < fallback.size(); ++i) set3(fallback_rgb, fallback[i], get3(lit, i));
+  }
+  out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb.empty() ? fallback_rgb : point.rgb, 3,
+                                fit.solve);
   out.rgb = std::move(out.solve.values);
   out.solve.values.clear();
   if (!fit.measure_error) {
@@ -119,6 +132,10 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
     return out;
   }
   out.error_fit = relative_l2_error(q, f, out.rgb, 3);
+  if (point.rgb.empty()) {  // no point colours to measure
+    out.error_point = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
   std::vector<double> point_clamped = point.rgb;  // as written: the same bounds as the fit's
   for (double& v : point_clamped) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
   out.error_point = relative_l2_error(q, f, point_clamped, 3);

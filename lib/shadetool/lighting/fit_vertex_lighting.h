@@ -12,8 +12,11 @@
 // as the scene places the mesh).
 //
 // Inputs:  mesh, scene, options, shadows  as lighting/bake_lighting.h
-//          point    bake_lighting(..., PerVertex, ...)'s result: its rgb (#V by 3) is the point
-//                   fit, the first guess and the fallback; its vertex_normals the normals
+//          point    bake_lighting(..., PerVertex, ...)'s result: its vertex_normals the normals; its
+//                   rgb (#V by 3) the point fit and the fallback nodes' values (least_squares_fit.h:
+//                   the first guess is the lumped-mass projection, not these). rgb may be empty
+//                   (VertexColors::None) for least squares: then the fallback nodes alone are lit
+//                   (bake_vertex_colors, counted in fallback_counters) and error_point is NaN.
 //          fit      method (point: the point colours returned unchanged, no error measured),
 //                   samples per triangle (1, 3, 6, 12), the solve's options (lambda, tolerance, clamp)
 // Output:  rgb #V by 3 linear doubles; error_fit and error_point: relative L2 distance of the
@@ -41,6 +44,7 @@ struct VertexLightingFit {
   double error_point = 0;
   std::size_t quadrature_points = 0;
   ShadowStats shadows;
+  ShadeCounters fallback_counters;  // point.rgb empty: the shading counts of the fallback vertices lit here
 };
 
 VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, const BakeResult& point,
