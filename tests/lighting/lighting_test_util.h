@@ -3,6 +3,8 @@
 
 #include <vector>
 
+#include <catch2/catch.hpp>
+
 #include <shadetool/core/vec3.h>
 #include <shadetool/lighting/scene.h>
 #include <shadetool/lighting/shade_points.h>
@@ -15,6 +17,19 @@ inline Vec3d shade_one(const Scene& scene, const Vec3d& p, const Vec3d& n, Shade
   const std::vector<double> P{p.x, p.y, p.z}, N{n.x, n.y, n.z};
   const std::vector<double> c = shade_points(scene, P, N, options, report);
   return {c[0], c[1], c[2]};
+}
+
+// Every counter of got equals want's (one CHECK per field, so a failure names the counter).
+inline void check_same_counters(const ShadeCounters& got, const ShadeCounters& want) {
+  CHECK(got.points == want.points);
+  CHECK(got.vertex_light_evaluations == want.vertex_light_evaluations);
+  CHECK(got.back_facing == want.back_facing);
+  CHECK(got.outside_cone == want.outside_cone);
+  CHECK(got.at_light == want.at_light);
+  CHECK(got.zero_normals == want.zero_normals);
+  CHECK(got.below_horizon == want.below_horizon);
+  CHECK(got.inside_light == want.inside_light);
+  CHECK(got.shadowed == want.shadowed);
 }
 
 // A scene with nothing in it: no ambient, no emission, black material ambient; tests add what

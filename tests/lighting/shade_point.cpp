@@ -156,12 +156,7 @@ TEST_CASE("shade_point_block gives shade_point's colours and counts, four points
           INFO("point " << i << " channel " << k << ": " << rgb[3 * i + k] << " against " << c[k]);
         }
       }
-      CHECK(block_counts.points == point_counts.points);
-      CHECK(block_counts.vertex_light_evaluations == point_counts.vertex_light_evaluations);
-      CHECK(block_counts.back_facing == point_counts.back_facing);
-      CHECK(block_counts.outside_cone == point_counts.outside_cone);
-      CHECK(block_counts.at_light == point_counts.at_light);
-      CHECK(block_counts.zero_normals == point_counts.zero_normals);
+      check_same_counters(block_counts, point_counts);
     }
   INFO(differ << " of " << channels << " channels differ");
   CHECK(differ == 0);
