@@ -105,6 +105,26 @@ std::vector<double> edge_angles(const Mesh& m, Precision p) {
   return out;
 }
 
+// Two apexes over one base ring of `sides` points in z = 0: the top apex (vertex 0) at height top,
+// base points at radius r_even / r_odd by the parity of their index (vertices 1..sides), the bottom
+// apex (vertex sides + 1) at height bottom; the top fan wound counter-clockwise seen from above,
+// the bottom fan the other way.
+Mesh double_cone(int sides, double top, double r_even, double r_odd, double bottom) {
+  Mesh m;
+  m.add_vertex({0, 0, top});
+  for (int i = 0; i < sides; ++i) {
+    const double a = 2 * kPi * i / sides, r = (i % 2) ? r_odd : r_even;
+    m.add_vertex({r * std::cos(a), r * std::sin(a), 0});
+  }
+  m.add_vertex({0, 0, bottom});
+  for (int i = 0; i < sides; ++i) {
+    const std::uint32_t a = 1 + std::uint32_t(i), b = 1 + std::uint32_t((i + 1) % sides);
+    m.add_face({0, a, b});
+    m.add_face({std::uint32_t(sides + 1), b, a});
+  }
+  return m;
+}
+
 }  // namespace
 
 TEST_CASE("corner_normals equals the frozen pre-issue-31 crease path bit for bit on every file in data/ and the corpus",
@@ -198,18 +218,7 @@ TEST_CASE("corner_normals: non-manifold, boundary, inconsistent, degenerate, pol
     cases.emplace_back("polygons", m);
   }
   for (int sides : {31, 32, 33, 200}) {  // cones: the apex fan crosses kSmallFan; a ridge every other side
-    Mesh m;
-    m.add_vertex({0, 0, 1});
-    for (int i = 0; i < sides; ++i) {
-      const double a = 2 * kPi * i / sides, r = (i % 2) ? 1.0 : 1.6;
-      m.add_vertex({r * std::cos(a), r * std::sin(a), 0});
-    }
-    m.add_vertex({0, 0, -0.2});
-    for (int i = 0; i < sides; ++i) {
-      const std::uint32_t a = 1 + std::uint32_t(i), b = 1 + std::uint32_t((i + 1) % sides);
-      m.add_face({0, a, b});
-      m.add_face({std::uint32_t(sides + 1), b, a});
-    }
+    Mesh m = double_cone(sides, 1.0, 1.6, 1.0, -0.2);
     m.add_face({0, 1, 2});  // one non-manifold fin at the apex
     cases.emplace_back("cone " + std::to_string(sides), m);
   }
@@ -261,18 +270,7 @@ namespace {
 // alternate points pulled in by `pinch` so that neighbouring faces differ), closed underneath by
 // a second apex. Every apex face is tilted from the axis by about atan(1 / h).
 Mesh pyramid_fan(int sides, double h, double pinch) {
-  Mesh m;
-  m.add_vertex({0, 0, h});
-  for (int i = 0; i < sides; ++i) {
-    const double a = 2 * kPi * i / sides, r = (i % 2) ? 1.0 - pinch : 1.0;
-    m.add_vertex({r * std::cos(a), r * std::sin(a), 0});
-  }
-  m.add_vertex({0, 0, -1});
-  for (int i = 0; i < sides; ++i) {
-    const std::uint32_t a = 1 + std::uint32_t(i), b = 1 + std::uint32_t((i + 1) % sides);
-    m.add_face({0, a, b});
-    m.add_face({std::uint32_t(sides + 1), b, a});
-  }
+  Mesh m = double_cone(sides, h, 1.0, 1.0 - pinch, -1.0);
   m.precision = ValuePrecision::Double;
   return m;
 }
