@@ -600,32 +600,44 @@ std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::v
 
 std::vector<std::uint32_t> fit_fallback_nodes(const FitElements& e, const std::vector<double>& positions,
                                               const FitQuadrature& q) {
-  // The same rule as least_squares_fit's system (a node is in it when M_ii > 0): on a triangle of
-  // the quadrature (positive area), or on a quad with mass (quad_mass).
-  std::vector<char> in_system(e.nodes, 0);
-  const std::uint32_t* tri_nodes = q.triangle_nodes();
-  for (std::size_t i = 0; i < 3 * q.tri_area.size(); ++i) in_system[tri_nodes[i]] = 1;
-  const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
-  for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
-    double m[16];
-    if (quad_mass(e, positions, gauss, k, m))
-      for (int j = 0; j < 4; ++j) in_system[e.quad_node[4 * k + j]] = 1;
-  }
+  // least_squares_fit's own rule: a node is in the system when its M_ii > 0.
+  FitOperator A;
+  std::vector<double> mass_diagonal;
+  LeastSquaresFit counts;
+  build_fit_operator(e, positions, q, 0.0, A, mass_diagonal, counts);
   std::vector<std::uint32_t> out;
   for (std::size_t i = 0; i < e.nodes; ++i)
-    if (!in_system[i]) out.push_back(std::uint32_t(i));
+    if (!(A.diagonal[i] > 0)) out.push_back(std::uint32_t(i));
   return out;
 }
 
 LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
                                   const std::vector<double>& f, const std::vector<double>& point_values,
                                   std::size_t width, const LeastSquaresFitOptions& options) {
+  const bool f_sized = f.size() == q.size() * width || f.size() == q.sites() * width;  // per point or per site
+  if (!f_sized || point_values.size() != e.nodes * width)
+    throw Error("least_squares_fit: " + std::to_string(f.size()) + " signal values for " + std::to_string(q.size()) +
+                " points and " + std::to_string(point_values.size()) + " point values for " + std::to_string(e.nodes) +
+                " nodes (width " + std::to_string(width) + ")");
+  return least_squares_fit(
+      e, positions, q, f,
+      [&](const std::vector<std::uint32_t>& nodes) {
+        std::vector<double> at(nodes.size() * width);
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+          for (std::size_t k = 0; k < width; ++k) at[i * width + k] = point_values[nodes[i] * width + k];
+        return at;
+      },
+      width, options);
+}
+
+LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
+                                  const std::vector<double>& f, const PointValuesAt& point_values_at,
+                                  std::size_t width, const LeastSquaresFitOptions& options) {
   const std::size_t N = e.nodes, S = q.size();
   const bool per_site = f.size() != S * width && f.size() == q.sites() * width;  // f at the sites
-  if ((f.size() != S * width && !per_site) || point_values.size() != N * width)
+  if (f.size() != S * width && !per_site)
     throw Error("least_squares_fit: " + std::to_string(f.size()) + " signal values for " + std::to_string(S) +
-                " points and " + std::to_string(point_values.size()) + " point values for " + std::to_string(N) +
-                " nodes (width " + std::to_string(width) + ")");
+                " points (width " + std::to_string(width) + ")");
   if (!(options.regularization >= 0) || !std::isfinite(options.regularization))
     throw Error("least_squares_fit: the regularization weight must be finite and >= 0");
   LeastSquaresFit fit;
@@ -652,7 +664,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       ++fit.fallback_nodes;
     }
   }
-  fit.values = point_values;
+  fit.values.assign(N * width, 0.0);
   if (off_system.size() < N) {
     // b for every channel in one pass over the points.
     std::vector<double> b(N * width, 0.0);
@@ -685,8 +697,14 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
     block_conjugate_gradient(A, inverse_diagonal, off_system, b, width, cg, fit.values, fit);
-    for (std::uint32_t i : off_system)
-      for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = point_values[i * width + k];
+  }
+  if (!off_system.empty()) {  // the nodes outside the system keep their point values
+    const std::vector<double> at = point_values_at(off_system);
+    if (at.size() != off_system.size() * width)
+      throw Error("least_squares_fit: " + std::to_string(at.size()) + " point values for " +
+                  std::to_string(off_system.size()) + " fallback nodes (width " + std::to_string(width) + ")");
+    for (std::size_t j = 0; j < off_system.size(); ++j)
+      for (std::size_t k = 0; k < width; ++k) fit.values[off_system[j] * width + k] = at[j * width + k];
   }
   for (double& v : fit.values) {
     if (v < options.lower) {

@@ -62,6 +62,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -221,7 +222,8 @@ struct LeastSquaresFit {
 
 // The nodes that touch no face of positive area (no triangle of q, no quad with mass): they are no
 // part of the system and keep their point value (LeastSquaresFit::fallback_nodes counts them).
-// Ascending node ids. A caller without point values at every node computes them only here.
+// Ascending node ids: the list least_squares_fit hands its PointValuesAt (built by the same
+// operator, so the same rule).
 std::vector<std::uint32_t> fit_fallback_nodes(const FitElements& elements, const std::vector<double>& positions,
                                               const FitQuadrature& q);
 
@@ -231,6 +233,15 @@ std::vector<std::uint32_t> fit_fallback_nodes(const FitElements& elements, const
 LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
                                   const FitQuadrature& q, const std::vector<double>& f,
                                   const std::vector<double>& point_values, std::size_t width,
+                                  const LeastSquaresFitOptions& options = {});
+
+// The same, for a caller that has no point values at every node: point_values_at(nodes) is called
+// once, after the solve and only when some node is outside the system, with the ascending fallback
+// nodes (fit_fallback_nodes), and returns their values, #nodes by width (Error otherwise).
+using PointValuesAt = std::function<std::vector<double>(const std::vector<std::uint32_t>& nodes)>;
+LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
+                                  const FitQuadrature& q, const std::vector<double>& f,
+                                  const PointValuesAt& point_values_at, std::size_t width,
                                   const LeastSquaresFitOptions& options = {});
 
 // The relative L2 distance between the interpolated node values and f (per point or per site, as

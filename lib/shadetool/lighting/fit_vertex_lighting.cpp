@@ -116,15 +116,15 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   for (double& v : f) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
   // The point colours are read only at the fallback nodes (least_squares_fit.h); a bake without
   // them (VertexColors::None) has them shaded there alone, as bake_lighting would.
-  std::vector<double> fallback_rgb;
-  if (point.rgb.empty()) {
-    const std::vector<std::uint32_t> fallback = fit_fallback_nodes(elements, positions_world, q);
-    const std::vector<double> lit = bake_vertex_colors(mesh, scene, point, fallback, options, shadows, out.fallback_counters);
-    fallback_rgb.assign(mesh.positions.size(), 0.0);
-    for (std::size_t i = 0; i < fallback.size(); ++i) set3(fallback_rgb, fallback[i], get3(lit, i));
-  }
-  out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb.empty() ? fallback_rgb : point.rgb, 3,
-                                fit.solve);
+  if (point.rgb.empty())
+    out.solve = least_squares_fit(
+        elements, positions_world, q, f,
+        [&](const std::vector<std::uint32_t>& fallback) {
+          return bake_vertex_colors(mesh, scene, point, fallback, options, shadows, out.fallback_counters);
+        },
+        3, fit.solve);
+  else
+    out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb, 3, fit.solve);
   out.rgb = std::move(out.solve.values);
   out.solve.values.clear();
   if (!fit.measure_error) {
