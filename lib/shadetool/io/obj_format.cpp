@@ -446,34 +446,15 @@ void populate_in_parallel(T* data, std::size_t n) {
 #endif
 }
 
-// The chunks of [0, size): about `target` bytes each, every cut just after a line feed, so every
-// line is whole in one chunk.
-std::vector<std::size_t> chunk_starts(std::string_view bytes, std::size_t target) {
-  std::vector<std::size_t> starts{0};
-  for (std::size_t at = target; at < bytes.size();) {
-    const void* lf = std::memchr(bytes.data() + at - 1, '\n', bytes.size() - at + 1);
-    if (!lf) break;
-    const std::size_t next = std::size_t(static_cast<const char*>(lf) - bytes.data()) + 1;
-    if (next >= bytes.size()) break;
-    starts.push_back(next);
-    at = next + target;
-  }
-  starts.push_back(bytes.size());
-  return starts;
-}
-
-// The chunks of [0, size) for `threads` threads taking them in file order (run_in_order): each a
-// 1 / (2 * threads) share of the bytes not yet cut, at least kChunkMinBytes, every cut just after a
-// line feed (guided self-scheduling, Polychronopoulos and Kuck 1987): the threads start on large
-// chunks and end on small ones, so one that was slowed down (another process on its core) leaves
-// the others at most a small chunk to wait for.
-std::vector<std::size_t> chunk_starts_guided(std::string_view bytes, std::size_t threads) {
+// The chunks of [0, size), every cut just after a line feed, so every line is whole in one chunk:
+// each chunk at least want(left) >= 1 bytes, left the bytes not yet cut; none once want(left) >= left.
+template <class Want>
+std::vector<std::size_t> chunk_starts_by(std::string_view bytes, const Want& want) {
   std::vector<std::size_t> starts{0};
   for (std::size_t at = 0;;) {
-    const std::size_t left = bytes.size() - at;
-    const std::size_t want = std::max(kChunkMinBytes, left / (2 * std::max<std::size_t>(threads, 1)));
-    if (want >= left) break;
-    const void* lf = std::memchr(bytes.data() + at + want - 1, '\n', left - want + 1);
+    const std::size_t left = bytes.size() - at, w = want(left);
+    if (w >= left) break;
+    const void* lf = std::memchr(bytes.data() + at + w - 1, '\n', left - w + 1);
     if (!lf) break;
     const std::size_t next = std::size_t(static_cast<const char*>(lf) - bytes.data()) + 1;
     if (next >= bytes.size()) break;
@@ -482,6 +463,21 @@ std::vector<std::size_t> chunk_starts_guided(std::string_view bytes, std::size_t
   }
   starts.push_back(bytes.size());
   return starts;
+}
+
+// Chunks of about `target` >= 1 bytes each.
+std::vector<std::size_t> chunk_starts(std::string_view bytes, std::size_t target) {
+  return chunk_starts_by(bytes, [target](std::size_t) { return target; });
+}
+
+// The chunks for `threads` threads taking them in file order (run_in_order): each a
+// 1 / (2 * threads) share of the bytes not yet cut, at least kChunkMinBytes (guided
+// self-scheduling, Polychronopoulos and Kuck 1987): the threads start on large chunks and end on
+// small ones, so one that was slowed down (another process on its core) leaves the others at most
+// a small chunk to wait for.
+std::vector<std::size_t> chunk_starts_guided(std::string_view bytes, std::size_t threads) {
+  const std::size_t share = 2 * std::max<std::size_t>(threads, 1);
+  return chunk_starts_by(bytes, [share](std::size_t left) { return std::max(kChunkMinBytes, left / share); });
 }
 
 // fn(0), ..., fn(n - 1) on the arena's threads, each thread taking the next index not yet taken.
