@@ -454,6 +454,89 @@ void build_groups(Triangles& tris, std::vector<Group>& groups, std::vector<std::
   members.resize(count);
 }
 
+// Steps 5 and 6 at once, vertex by vertex, for a mesh with no triangle that groups with any (the
+// only link between two vertices' groups: the first group to reach such a triangle sets its
+// orientation). The groups at welded vertex v depend on v's triangles alone: a neighbour across an
+// edge {v, w} shares v, and find_neighbours pairs the edges of {v, w} among themselves in triangle
+// order; so each vertex's corners (a counting sort of the corner slots by welded vertex, ascending)
+// are paired and searched here as find_neighbours and build_groups would, in local arrays. Same
+// groups, members in the same order; the groups come vertex by vertex instead of by first corner,
+// which changes no frame (a corner only receives frames from its own vertex's groups, and those
+// keep their order).
+void build_groups_by_vertex(const Triangles& tris, std::size_t num_welded, std::vector<Group>& groups,
+                            std::vector<std::uint32_t>& members) {
+  const std::size_t S = 3 * tris.good;
+  const std::uint32_t* index = tris.index.data();
+  std::vector<std::uint32_t> start(num_welded + 1, 0);
+  for (std::size_t j = 0; j < S; ++j) ++start[index[j] + 1];
+  for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
+  const std::unique_ptr<std::uint32_t[]> slots(new std::uint32_t[S]);  // filled in full below
+  {
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::size_t j = 0; j < S; ++j) slots[next[index[j]]++] = std::uint32_t(j);
+  }
+  members.resize(S);
+  std::size_t count = 0;
+  // One vertex's triangles i (ascending): the welded vertices after (n) and before (p) v, the
+  // triangles across the edges v -> n (out) and p -> v (in), -1 where none; grouped yet.
+  struct Local {
+    std::uint32_t slot, n, p;
+    std::int32_t out, in;
+    bool orient, grouped;
+  };
+  std::vector<Local> local(64);
+  std::vector<std::int32_t> stack(2 * local.size() + 2);  // a search pushes 2 + 2 per member
+  for (std::size_t v = 0; v < num_welded; ++v) {
+    const std::uint32_t b = start[v], k = start[v + 1] - b;
+    if (k > local.size()) local.resize(2 * k), stack.resize(4 * k + 2);
+    for (std::uint32_t i = 0; i < k; ++i) {
+      const std::uint32_t s = slots[b + i], t = s / 3, c = s % 3;
+      local[i] = {s, index[3 * t + (c < 2 ? c + 1 : 0)], index[3 * t + (c > 0 ? c - 1 : 2)], -1, -1,
+                  (tris.flag[t] & kOrientPreserving) != 0, false};
+    }
+    // find_neighbours' rule for each edge {v, w}: its edges in triangle order, each unpaired one
+    // paired with the first later unpaired one in the opposite direction.
+    for (std::uint32_t i = 0; i < k; ++i) {
+      Local& a = local[i];
+      if (a.out < 0)
+        for (std::uint32_t j = i + 1; j < k; ++j)
+          if (local[j].p == a.n && local[j].in < 0) {
+            a.out = std::int32_t(j), local[j].in = std::int32_t(i);
+            break;
+          }
+      if (a.in < 0)
+        for (std::uint32_t j = i + 1; j < k; ++j)
+          if (local[j].n == a.p && local[j].out < 0) {
+            a.in = std::int32_t(j), local[j].out = std::int32_t(i);
+            break;
+          }
+    }
+    // build_groups' search, through the local neighbours.
+    for (std::uint32_t i = 0; i < k; ++i) {
+      if (local[i].grouped) continue;
+      Group group{std::uint32_t(v), local[i].orient, std::uint32_t(count), 0};
+      members[count++] = local[i].slot;
+      local[i].grouped = true;
+      std::size_t top = 0;
+      stack[top++] = local[i].in;
+      stack[top++] = local[i].out;
+      while (top > 0) {
+        const std::int32_t j = stack[--top];
+        if (j < 0) continue;
+        Local& x = local[std::size_t(j)];
+        if (x.grouped || x.orient != group.orient) continue;
+        members[count++] = x.slot;
+        x.grouped = true;
+        stack[top++] = x.in;
+        stack[top++] = x.out;
+      }
+      group.count = std::uint32_t(count - group.offset);
+      groups.push_back(group);
+    }
+  }
+  members.resize(count);
+}
+
 // Step 7a: per group member (a corner of a healthy triangle), the terms of its group's frame (the
 // reference's evaluation, in its arithmetic): the triangle's derivatives projected onto the
 // corner's normal (ps, pt) and the corner's angle in the normal's plane, in blocks through the
@@ -759,11 +842,17 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   set_aside_degenerate(mesh, wv, tris);
   TriInfos info(new TriInfo[tris.good]);  // TriInfo{}: zero derivatives
   triangle_derivatives(mesh, wv, tris, info);
-  find_neighbours(tris, wv.size());
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
   groups.reserve(wv.size() + wv.size() / 8);  // about one per welded vertex
-  build_groups(tris, groups, members);
+  bool any = false;
+  for (std::size_t t = 0; t < tris.good; ++t) any |= (tris.flag[t] & kGroupWithAny) != 0;
+  if (any) {
+    find_neighbours(tris, wv.size());
+    build_groups(tris, groups, members);
+  } else {
+    build_groups_by_vertex(tris, wv.size(), groups, members);
+  }
   CornerFrames frames;
   frames.frames.reserve(groups.size() + groups.size() / 8);
   frames.of.assign(C, ~0u);
