@@ -454,89 +454,6 @@ void build_groups(Triangles& tris, std::vector<Group>& groups, std::vector<std::
   members.resize(count);
 }
 
-// Steps 5 and 6 at once, vertex by vertex, for a mesh with no triangle that groups with any (the
-// only link between two vertices' groups: the first group to reach such a triangle sets its
-// orientation). The groups at welded vertex v depend on v's triangles alone: a neighbour across an
-// edge {v, w} shares v, and find_neighbours pairs the edges of {v, w} among themselves in triangle
-// order; so each vertex's corners (a counting sort of the corner slots by welded vertex, ascending)
-// are paired and searched here as find_neighbours and build_groups would, in local arrays. Same
-// groups, members in the same order; the groups come vertex by vertex instead of by first corner,
-// which changes no frame (a corner only receives frames from its own vertex's groups, and those
-// keep their order).
-void build_groups_by_vertex(const Triangles& tris, std::size_t num_welded, std::vector<Group>& groups,
-                            std::vector<std::uint32_t>& members) {
-  const std::size_t S = 3 * tris.good;
-  const std::uint32_t* index = tris.index.data();
-  std::vector<std::uint32_t> start(num_welded + 1, 0);
-  for (std::size_t j = 0; j < S; ++j) ++start[index[j] + 1];
-  for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
-  const std::unique_ptr<std::uint32_t[]> slots(new std::uint32_t[S]);  // filled in full below
-  {
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t j = 0; j < S; ++j) slots[next[index[j]]++] = std::uint32_t(j);
-  }
-  members.resize(S);
-  std::size_t count = 0;
-  // One vertex's triangles i (ascending): the welded vertices after (n) and before (p) v, the
-  // triangles across the edges v -> n (out) and p -> v (in), -1 where none; grouped yet.
-  struct Local {
-    std::uint32_t slot, n, p;
-    std::int32_t out, in;
-    bool orient, grouped;
-  };
-  std::vector<Local> local(64);
-  std::vector<std::int32_t> stack(2 * local.size() + 2);  // a search pushes 2 + 2 per member
-  for (std::size_t v = 0; v < num_welded; ++v) {
-    const std::uint32_t b = start[v], k = start[v + 1] - b;
-    if (k > local.size()) local.resize(2 * k), stack.resize(4 * k + 2);
-    for (std::uint32_t i = 0; i < k; ++i) {
-      const std::uint32_t s = slots[b + i], t = s / 3, c = s % 3;
-      local[i] = {s, index[3 * t + (c < 2 ? c + 1 : 0)], index[3 * t + (c > 0 ? c - 1 : 2)], -1, -1,
-                  (tris.flag[t] & kOrientPreserving) != 0, false};
-    }
-    // find_neighbours' rule for each edge {v, w}: its edges in triangle order, each unpaired one
-    // paired with the first later unpaired one in the opposite direction.
-    for (std::uint32_t i = 0; i < k; ++i) {
-      Local& a = local[i];
-      if (a.out < 0)
-        for (std::uint32_t j = i + 1; j < k; ++j)
-          if (local[j].p == a.n && local[j].in < 0) {
-            a.out = std::int32_t(j), local[j].in = std::int32_t(i);
-            break;
-          }
-      if (a.in < 0)
-        for (std::uint32_t j = i + 1; j < k; ++j)
-          if (local[j].n == a.p && local[j].out < 0) {
-            a.in = std::int32_t(j), local[j].out = std::int32_t(i);
-            break;
-          }
-    }
-    // build_groups' search, through the local neighbours.
-    for (std::uint32_t i = 0; i < k; ++i) {
-      if (local[i].grouped) continue;
-      Group group{std::uint32_t(v), local[i].orient, std::uint32_t(count), 0};
-      members[count++] = local[i].slot;
-      local[i].grouped = true;
-      std::size_t top = 0;
-      stack[top++] = local[i].in;
-      stack[top++] = local[i].out;
-      while (top > 0) {
-        const std::int32_t j = stack[--top];
-        if (j < 0) continue;
-        Local& x = local[std::size_t(j)];
-        if (x.grouped || x.orient != group.orient) continue;
-        members[count++] = x.slot;
-        x.grouped = true;
-        stack[top++] = x.in;
-        stack[top++] = x.out;
-      }
-      group.count = std::uint32_t(count - group.offset);
-      groups.push_back(group);
-    }
-  }
-  members.resize(count);
-}
-
 // Step 7a: per group member (a corner of a healthy triangle), the terms of its group's frame (the
 // reference's evaluation, in its arithmetic): the triangle's derivatives projected onto the
 // corner's normal (ps, pt) and the corner's angle in the normal's plane, in blocks through the
@@ -614,6 +531,33 @@ TSpace evaluate_frame(const Member* m, const std::uint32_t* sub, std::size_t n) 
   return res;
 }
 
+// Whether two members of a group are in each other's sub-group: the reference's angular
+// threshold, 180 degrees (cos(float(pi)) rounded to float is exactly -1), or one of them groups with
+// any, or both come from one face.
+bool joins(const Member& a, const Member& b) {
+  const float threshold_cos = -1.0f;
+  return a.any || b.any || a.face == b.face ||
+         (dot(a.term->ps, b.term->ps) > threshold_cos && dot(a.term->pt, b.term->pt) > threshold_cos);
+}
+
+// Whether every pair of a group's n members joins (none antiparallel), so that every member's
+// sub-group is the whole group: one frame (the common case). Sure without the pairs when the
+// projected derivatives of the members that do not group with any all lie within 60 degrees
+// (dot > 0.5) of the first one's: any two of them are then within 120 degrees, their dot below
+// -0.5 never near the threshold -1 whatever the float rounding; else every pair is tested.
+bool whole_group(const Member* m, std::uint32_t n) {
+  bool whole = true;
+  std::uint32_t a = 0;
+  while (a < n && m[a].any) ++a;
+  for (std::uint32_t j = a + 1; j < n && whole; ++j)
+    whole = m[j].any || (dot(m[a].term->ps, m[j].term->ps) > 0.5f && dot(m[a].term->pt, m[j].term->pt) > 0.5f);
+  if (whole) return true;
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = i + 1; j < n; ++j)
+      if (!joins(m[i], m[j])) return false;
+  return true;
+}
+
 // Two frames meeting at one corner (the triangles of a quad): their mean, or the first when equal.
 TSpace average(const TSpace& a, const TSpace& b) {
   if (a.mag_s == b.mag_s && a.mag_t == b.mag_t && a.os == b.os && a.ot == b.ot) return a;
@@ -658,12 +602,6 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
   constexpr std::size_t kBatch = 512;
   std::vector<CornerTerm> terms;
   std::size_t batch_begin = 0, batch_end = 0;  // members whose terms are in `terms`
-  // The reference's angular threshold, 180 degrees: cos(float(pi)) rounded to float is exactly -1.
-  const float threshold_cos = -1.0f;
-  auto joins = [threshold_cos](const Member& a, const Member& b) {
-    return a.any || b.any || a.face == b.face ||
-           (dot(a.term->ps, b.term->ps) > threshold_cos && dot(a.term->pt, b.term->pt) > threshold_cos);
-  };
   std::vector<Member> m;
   std::vector<std::uint32_t> sub;
   // This group's distinct sub-groups: members in one flat buffer (offsets); their frames are
@@ -698,24 +636,7 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
         m[rank] = member(j);
       }
     }
-    // The common case: every pair of members joins (none antiparallel), so every member's
-    // sub-group is the whole group: one frame. Sure without the pairs when the projected
-    // derivatives of the members that do not group with any all lie within 60 degrees (dot > 0.5)
-    // of the first one's: any two of them are then within 120 degrees, their dot below -0.5 never
-    // near the threshold -1 whatever the float rounding; else every pair is tested.
-    bool whole = true;
-    {
-      std::uint32_t a = 0;
-      while (a < n && m[a].any) ++a;
-      for (std::uint32_t j = a + 1; j < n && whole; ++j)
-        whole = m[j].any || (dot(m[a].term->ps, m[j].term->ps) > 0.5f && dot(m[a].term->pt, m[j].term->pt) > 0.5f);
-    }
-    if (!whole) {
-      whole = true;
-      for (std::uint32_t i = 0; i < n && whole; ++i)
-        for (std::uint32_t j = i + 1; j < n && whole; ++j) whole = joins(m[i], m[j]);
-    }
-    if (whole) {
+    if (whole_group(m.data(), n)) {
       out.frames.push_back(evaluate_frame(m.data(), nullptr, n));
       out.frames.back().orient = group.orient;
       const auto frame = std::uint32_t(out.frames.size() - 1);
@@ -747,6 +668,193 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
       out.receive(tris.corner[m[i].slot], std::uint32_t(base + l), group.orient);
     }
   }
+}
+
+// One welded vertex's triangle i (ascending), for frames_by_vertex: its slot, the welded
+// vertices after (n) and before (p) the vertex, the triangles (local numbers) across the edges
+// vertex -> n (out) and p -> vertex (in), -1 where none; its orientation; grouped yet.
+struct LocalTriangle {
+  std::uint32_t slot, n, p;
+  std::int32_t out, in;
+  bool orient, grouped;
+};
+
+// find_neighbours' rule at one vertex: each edge {v, w}'s edges in triangle order, each unpaired
+// one paired with the first later unpaired one in the opposite direction.
+void pair_edges_in_order(LocalTriangle* x, std::uint32_t k) {
+  for (std::uint32_t i = 0; i < k; ++i) {
+    LocalTriangle& a = x[i];
+    if (a.out < 0)
+      for (std::uint32_t j = i + 1; j < k; ++j)
+        if (x[j].p == a.n && x[j].in < 0) {
+          a.out = std::int32_t(j), x[j].in = std::int32_t(i);
+          break;
+        }
+    if (a.in < 0)
+      for (std::uint32_t j = i + 1; j < k; ++j)
+        if (x[j].n == a.p && x[j].out < 0) {
+          a.in = std::int32_t(j), x[j].out = std::int32_t(i);
+          break;
+        }
+  }
+}
+
+// The common case of build_groups' search at one vertex: every triangle of one orientation and
+// linked into one ring or one fan. The search from triangle 0 then goes along the out links to the
+// end (or back to 0), then along the in links from 0: that order written to `members`, true.
+// False (nothing meant) otherwise.
+bool one_group_walk(const LocalTriangle* x, std::uint32_t k, std::uint32_t* members) {
+  bool same = true;
+  for (std::uint32_t i = 1; i < k; ++i) same &= x[i].orient == x[0].orient;
+  if (!same) return false;
+  std::uint32_t n = 0;
+  members[n++] = x[0].slot;
+  std::int32_t j = x[0].out;
+  for (; j > 0 && n < k; j = x[j].out) members[n++] = x[j].slot;
+  if (j < 0)
+    for (j = x[0].in; j >= 0 && n < k; j = x[j].in) members[n++] = x[j].slot;
+  return n == k;
+}
+
+// Step 7 for the groups build_groups_by_vertex finds as one walk (every triangle at a vertex,
+// of one orientation, in one ring or fan): their members are the vertex's corner slots in
+// ascending order, the order of the sums, so they need no sorting; their corner terms go through
+// the vector pass in batches of whole vertices (up to kTangentCornerBlock corners), from the
+// vertex's own values. A group that turns out not whole (some members antiparallel) is handed back
+// to group_frames (`others`), with its members in the walk's order.
+class OneGroupFrames {
+ public:
+  OneGroupFrames(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info,
+                 CornerFrames& out)
+      : wv_(wv), tris_(tris), info_(info), out_(out) {}
+
+  // Vertex v's k corners (x, ascending slots), walk: the same slots in the order the search
+  // reached them. k <= kTangentCornerBlock.
+  void add(std::uint32_t v, const LocalTriangle* x, std::uint32_t k, const std::uint32_t* walk,
+           std::vector<Group>& others, std::vector<std::uint32_t>& other_members) {
+    if (used_ + k > B) finish(others, other_members);
+    const WeldedVertex& w = wv_[v];
+    for (std::uint32_t i = 0; i < k; ++i) {
+      const std::size_t r = used_ + i;
+      const TriInfo& ti = info_[x[i].slot / 3];
+      const F3 e1 = wv_[x[i].p].p - w.p, e2 = wv_[x[i].n].p - w.p;
+      const float values[15] = {w.n.x, w.n.y, w.n.z, ti.os.x, ti.os.y, ti.os.z, ti.ot.x, ti.ot.y, ti.ot.z,
+                                e1.x, e1.y, e1.z, e2.x, e2.y, e2.z};
+      for (int row = 0; row < 15; ++row) in_[row * B + r] = values[row];
+      slot_[r] = x[i].slot;
+      walk_[r] = walk[i];
+    }
+    pending_[vertices_++] = {v, std::uint32_t(used_), k, x[0].orient};
+    used_ += k;
+  }
+
+  void finish(std::vector<Group>& others, std::vector<std::uint32_t>& other_members) {
+    if (used_ == 0) return;
+    normals_detail::tangent_corner_terms(used_, in_, terms_);
+    Member m[B];
+    CornerTerm term[B];
+    for (std::size_t r = 0; r < used_; ++r) {
+      const TriInfo& ti = info_[slot_[r] / 3];
+      term[r] = {{terms_[r], terms_[B + r], terms_[2 * B + r]},
+                 {terms_[3 * B + r], terms_[4 * B + r], terms_[5 * B + r]},
+                 terms_[6 * B + r], ti.mag_s, ti.mag_t};
+      m[r] = {slot_[r], tris_.face[slot_[r] / 3], false, &term[r]};
+    }
+    for (std::size_t g = 0; g < vertices_; ++g) {
+      const Pending& p = pending_[g];
+      if (!whole_group(m + p.first, p.count)) {
+        others.push_back(Group{p.vertex, p.orient, std::uint32_t(other_members.size()), p.count});
+        other_members.insert(other_members.end(), walk_ + p.first, walk_ + p.first + p.count);
+        continue;
+      }
+      out_.frames.push_back(evaluate_frame(m + p.first, nullptr, p.count));
+      out_.frames.back().orient = p.orient;
+      const auto frame = std::uint32_t(out_.frames.size() - 1);
+      for (std::uint32_t i = 0; i < p.count; ++i) out_.receive(tris_.corner[slot_[p.first + i]], frame, p.orient);
+    }
+    used_ = vertices_ = 0;
+  }
+
+ private:
+  static constexpr std::size_t B = normals_detail::kTangentCornerBlock;
+  struct Pending {
+    std::uint32_t vertex, first, count;
+    bool orient;
+  };
+  const std::vector<WeldedVertex>& wv_;
+  const Triangles& tris_;
+  const TriInfos& info_;
+  CornerFrames& out_;
+  float in_[15 * B], terms_[7 * B];
+  std::uint32_t slot_[B], walk_[B];
+  Pending pending_[B];
+  std::size_t used_ = 0, vertices_ = 0;
+};
+
+// Steps 5, 6 and 7 vertex by vertex, for a mesh with no triangle that groups with any (the only
+// link between two vertices' groups: the first group to reach such a triangle sets its
+// orientation). The groups at welded vertex v depend on v's triangles alone: a neighbour across an
+// edge {v, w} shares v, and find_neighbours pairs the edges of {v, w} among themselves in triangle
+// order; so each vertex's corners (a counting sort of the corner slots by welded vertex, ascending)
+// are paired and searched here as find_neighbours and build_groups would, in local arrays. Same
+// groups, members in the same order, taken vertex by vertex instead of by first corner, which
+// changes no frame (a corner only receives frames from its own vertex's groups, and those keep
+// their order). A vertex whose triangles form one group gets its frame at once (OneGroupFrames);
+// the other groups are returned (groups, members) for group_frames.
+void frames_by_vertex(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info,
+                      std::vector<Group>& groups, std::vector<std::uint32_t>& members, CornerFrames& out) {
+  const std::size_t S = 3 * tris.good, num_welded = wv.size();
+  const std::uint32_t* index = tris.index.data();
+  std::vector<std::uint32_t> start(num_welded + 1, 0);
+  for (std::size_t j = 0; j < S; ++j) ++start[index[j] + 1];
+  for (std::size_t v = 0; v < num_welded; ++v) start[v + 1] += start[v];
+  const std::unique_ptr<std::uint32_t[]> slots(new std::uint32_t[S]);  // filled in full below
+  {
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::size_t j = 0; j < S; ++j) slots[next[index[j]]++] = std::uint32_t(j);
+  }
+  const std::unique_ptr<OneGroupFrames> one_group(new OneGroupFrames(wv, tris, info, out));
+  std::vector<LocalTriangle> local(64);
+  std::vector<std::uint32_t> walk(64);
+  std::vector<std::int32_t> stack(2 * local.size() + 2);  // a search pushes 2 + 2 per member
+  for (std::size_t v = 0; v < num_welded; ++v) {
+    const std::uint32_t b = start[v], k = start[v + 1] - b;
+    if (k == 0) continue;  // a vertex of degenerate triangles only
+    if (k > local.size()) local.resize(2 * k), walk.resize(2 * k), stack.resize(4 * k + 2);
+    for (std::uint32_t i = 0; i < k; ++i) {
+      const std::uint32_t s = slots[b + i], t = s / 3, c = s % 3;
+      local[i] = {s, index[3 * t + (c < 2 ? c + 1 : 0)], index[3 * t + (c > 0 ? c - 1 : 2)], -1, -1,
+                  (tris.flag[t] & kOrientPreserving) != 0, false};
+    }
+    pair_edges_in_order(local.data(), k);
+    if (k <= normals_detail::kTangentCornerBlock && one_group_walk(local.data(), k, walk.data())) {
+      one_group->add(std::uint32_t(v), local.data(), k, walk.data(), groups, members);
+      continue;
+    }
+    // build_groups' search, through the local neighbours.
+    for (std::uint32_t i = 0; i < k; ++i) {
+      if (local[i].grouped) continue;
+      Group group{std::uint32_t(v), local[i].orient, std::uint32_t(members.size()), 0};
+      members.push_back(local[i].slot);
+      local[i].grouped = true;
+      std::size_t top = 0;
+      stack[top++] = local[i].in;
+      stack[top++] = local[i].out;
+      while (top > 0) {
+        const std::int32_t j = stack[--top];
+        if (j < 0) continue;
+        LocalTriangle& x = local[std::size_t(j)];
+        if (x.grouped || x.orient != group.orient) continue;
+        members.push_back(x.slot);
+        x.grouped = true;
+        stack[top++] = x.in;
+        stack[top++] = x.out;
+      }
+      group.count = std::uint32_t(members.size() - group.offset);
+      groups.push_back(group);
+    }
+  }
+  one_group->finish(groups, members);
 }
 
 // Step 8: frames for the corners of degenerate triangles.
@@ -844,18 +952,18 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   triangle_derivatives(mesh, wv, tris, info);
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
-  groups.reserve(wv.size() + wv.size() / 8);  // about one per welded vertex
+  CornerFrames frames;
+  frames.frames.reserve(wv.size() + wv.size() / 4);  // about one per welded vertex
+  frames.of.assign(C, ~0u);
   bool any = false;
   for (std::size_t t = 0; t < tris.good; ++t) any |= (tris.flag[t] & kGroupWithAny) != 0;
   if (any) {
+    groups.reserve(wv.size() + wv.size() / 8);  // about one per welded vertex
     find_neighbours(tris, wv.size());
     build_groups(tris, groups, members);
   } else {
-    build_groups_by_vertex(tris, wv.size(), groups, members);
+    frames_by_vertex(wv, tris, info, groups, members, frames);
   }
-  CornerFrames frames;
-  frames.frames.reserve(groups.size() + groups.size() / 8);
-  frames.of.assign(C, ~0u);
   group_frames(wv, tris, info, groups, members, frames);
   degenerate_frames(mesh, in, wv.size(), tris, frames.of);
   const TSpace none;  // the reference's default frame
