@@ -267,81 +267,89 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
   return w;
 }
 
-// Step 3: degenerate triangles marked (a quad with exactly one of them marked too) and moved after
-// the healthy ones, which keep their order.
-void set_aside_degenerate(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris) {
-  const std::size_t T = tris.face.size();
-  std::size_t degenerate = 0;
-  for (std::size_t t = 0; t < T; ++t) {
-    const F3 p0 = wv[tris.index[3 * t]].p, p1 = wv[tris.index[3 * t + 1]].p, p2 = wv[tris.index[3 * t + 2]].p;
-    if (p0 == p1 || p0 == p2 || p1 == p2) tris.flag[t] |= kDegenerate, ++degenerate;
-  }
-  tris.good = T - degenerate;
-  if (degenerate == 0) return;  // nothing to mark or move
-  for (std::size_t t = 0; t + 1 < T;) {
-    if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
-      if (((tris.flag[t] ^ tris.flag[t + 1]) & kDegenerate) != 0) {
-        tris.flag[t] |= kQuadOneDegenerate;
-        tris.flag[t + 1] |= kQuadOneDegenerate;
-      }
-      t += 2;
-    } else {
-      ++t;
-    }
-  }
-  std::vector<std::size_t> order;
-  order.reserve(T);
-  for (std::size_t t = 0; t < T; ++t)
-    if (!(tris.flag[t] & kDegenerate)) order.push_back(t);
-  for (std::size_t t = 0; t < T; ++t)
-    if (tris.flag[t] & kDegenerate) order.push_back(t);
-  Triangles sorted;
-  sorted.good = tris.good;
-  for (std::size_t t : order) {
-    for (int k = 0; k < 3; ++k) {
-      sorted.corner.push_back(tris.corner[3 * t + k]);
-      sorted.index.push_back(tris.index[3 * t + k]);
-    }
-    sorted.face.push_back(tris.face[t]);
-    sorted.flag.push_back(tris.flag[t]);
-  }
-  tris = std::move(sorted);
-}
-
 float texture_area(const std::vector<WeldedVertex>& wv, const std::uint32_t* idx) {
   const WeldedVertex &t1 = wv[idx[0]], &t2 = wv[idx[1]], &t3 = wv[idx[2]];
   const float a = (t2.u - t1.u) * (t3.v - t1.v) - (t2.v - t1.v) * (t3.u - t1.u);
   return a < 0 ? -a : a;
 }
 
-// Step 4: derivatives, magnitudes and orientation of each healthy triangle (eq. 18, 19).
-void triangle_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, TriInfos& info) {
-  const std::size_t T = tris.good;
-  for (std::size_t f = 0; f < T; ++f) {
-    std::uint8_t& flag = tris.flag[f];
-    flag |= kGroupWithAny;  // assumed bad
-    const std::uint32_t* idx = &tris.index[3 * f];
+// Step 4 for one healthy triangle (corners w1, w2, w3): its derivatives, magnitudes and
+// orientation (eq. 18, 19), into info (zero on entry) and flag.
+void triangle_derivatives(const WeldedVertex& w1, const WeldedVertex& w2, const WeldedVertex& w3, std::uint8_t& flag,
+                          TriInfo& info) {
+  flag |= kGroupWithAny;  // assumed bad
+  const F3 v1 = w1.p, v2 = w2.p, v3 = w3.p;
+  const float t21x = w2.u - w1.u, t21y = w2.v - w1.v, t31x = w3.u - w1.u, t31y = w3.v - w1.v;
+  const F3 d1 = v2 - v1, d2 = v3 - v1;
+  const float signed_area2 = t21x * t31y - t21y * t31x;
+  const F3 os = scale(t31y, d1) - scale(t21y, d2);   // eq. 18
+  const F3 ot = scale(-t31x, d1) + scale(t21x, d2);  // eq. 19
+  if (signed_area2 > 0) flag |= kOrientPreserving;
+  if (!not_zero(signed_area2)) return;
+  const float abs_area = std::fabs(signed_area2);
+  const float len_s = length(os), len_t = length(ot);
+  const float sign = (flag & kOrientPreserving) ? 1.0f : -1.0f;
+  if (not_zero(len_s)) info.os = scale(sign / len_s, os);  // divisor checked
+  if (not_zero(len_t)) info.ot = scale(sign / len_t, ot);  // divisor checked
+  info.mag_s = len_s / abs_area;  // divisor checked (not_zero above)
+  info.mag_t = len_t / abs_area;
+  if (not_zero(info.mag_s) && not_zero(info.mag_t)) flag &= std::uint8_t(~kGroupWithAny);
+}
+
+// Steps 3 and 4 in one pass over the triangles (each reads its three corners once): a degenerate
+// triangle (two equal positions) is marked, every other one gets its derivatives (info, #T, zero on
+// entry). Then, when there are degenerate triangles, a quad with exactly one of them is marked and
+// the degenerate ones are moved after the healthy ones (which keep their order, their info with
+// them); last, a quad whose two healthy triangles disagree in orientation takes the larger one's
+// (or the healthy one's when the other groups with any).
+void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, TriInfos& info) {
+  const std::size_t T = tris.face.size();
+  std::size_t degenerate = 0;
+  for (std::size_t t = 0; t < T; ++t) {
+    const std::uint32_t* idx = &tris.index[3 * t];
     const WeldedVertex &w1 = wv[idx[0]], &w2 = wv[idx[1]], &w3 = wv[idx[2]];
-    const F3 v1 = w1.p, v2 = w2.p, v3 = w3.p;
-    const float t21x = w2.u - w1.u, t21y = w2.v - w1.v, t31x = w3.u - w1.u, t31y = w3.v - w1.v;
-    const F3 d1 = v2 - v1, d2 = v3 - v1;
-    const float signed_area2 = t21x * t31y - t21y * t31x;
-    const F3 os = scale(t31y, d1) - scale(t21y, d2);   // eq. 18
-    const F3 ot = scale(-t31x, d1) + scale(t21x, d2);  // eq. 19
-    if (signed_area2 > 0) flag |= kOrientPreserving;
-    if (!not_zero(signed_area2)) continue;
-    const float abs_area = std::fabs(signed_area2);
-    const float len_s = length(os), len_t = length(ot);
-    const float sign = (flag & kOrientPreserving) ? 1.0f : -1.0f;
-    if (not_zero(len_s)) info[f].os = scale(sign / len_s, os);  // divisor checked
-    if (not_zero(len_t)) info[f].ot = scale(sign / len_t, ot);  // divisor checked
-    info[f].mag_s = len_s / abs_area;  // divisor checked (not_zero above)
-    info[f].mag_t = len_t / abs_area;
-    if (not_zero(info[f].mag_s) && not_zero(info[f].mag_t)) flag &= std::uint8_t(~kGroupWithAny);
+    if (w1.p == w2.p || w1.p == w3.p || w2.p == w3.p) {
+      tris.flag[t] |= kDegenerate, ++degenerate;
+      continue;
+    }
+    triangle_derivatives(w1, w2, w3, tris.flag[t], info[t]);
   }
-  // A quad whose two healthy triangles disagree in orientation takes the larger one's (or the
-  // healthy one's when the other groups with any).
-  for (std::size_t t = 0; t + 1 < T;) {
+  tris.good = T - degenerate;
+  if (degenerate > 0) {
+    for (std::size_t t = 0; t + 1 < T;) {
+      if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
+        if (((tris.flag[t] ^ tris.flag[t + 1]) & kDegenerate) != 0) {
+          tris.flag[t] |= kQuadOneDegenerate;
+          tris.flag[t + 1] |= kQuadOneDegenerate;
+        }
+        t += 2;
+      } else {
+        ++t;
+      }
+    }
+    std::vector<std::size_t> order;
+    order.reserve(T);
+    for (std::size_t t = 0; t < T; ++t)
+      if (!(tris.flag[t] & kDegenerate)) order.push_back(t);
+    for (std::size_t t = 0; t < T; ++t)
+      if (tris.flag[t] & kDegenerate) order.push_back(t);
+    Triangles sorted;
+    sorted.good = tris.good;
+    TriInfos sorted_info(new TriInfo[T]);
+    for (std::size_t t : order) {
+      for (int k = 0; k < 3; ++k) {
+        sorted.corner.push_back(tris.corner[3 * t + k]);
+        sorted.index.push_back(tris.index[3 * t + k]);
+      }
+      sorted_info[sorted.face.size()] = info[t];
+      sorted.face.push_back(tris.face[t]);
+      sorted.flag.push_back(tris.flag[t]);
+    }
+    tris = std::move(sorted);
+    info = std::move(sorted_info);
+  }
+  const std::size_t good = tris.good;
+  for (std::size_t t = 0; t + 1 < good;) {
     if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kOrientPreserving) != 0) {
         const bool first = (tris.flag[t + 1] & kGroupWithAny) != 0 ||
@@ -947,9 +955,8 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   const std::vector<WeldedVertex>& wv = welded.vertex;
   Triangles tris;
   make_triangles(mesh, in, taken, welded.id.get(), tris);
-  set_aside_degenerate(mesh, wv, tris);
-  TriInfos info(new TriInfo[tris.good]);  // TriInfo{}: zero derivatives
-  triangle_derivatives(mesh, wv, tris, info);
+  TriInfos info(new TriInfo[tris.face.size()]);  // TriInfo{}: zero derivatives
+  degenerate_and_derivatives(mesh, wv, tris, info);
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
   CornerFrames frames;
