@@ -117,3 +117,75 @@ TEST_CASE("MikkTSpace's corner angle: the pass's arc cosine equals float(acos(do
   CHECK(mismatches == 0);
   CHECK(cosines.size() > 500000);
 }
+
+// The lane pass's frames (tangent_lane_frames) against mikktspace.c's EvalTspace sums written out
+// here: per group, in member order, res.vOs = vadd(res.vOs, vscale(fAngle, vOs)) and so on, then
+// Normalize where VNotZero, the magnitudes divided by fAngleSum where it is > 0; and the 60-degree
+// test against the first member, all bit for bit, on random groups of 0 to 8 members with random,
+// tiny, zero and non-finite terms.
+using shadetool::normals_detail::kTangentLanes;
+using shadetool::normals_detail::tangent_lane_frames;
+
+TEST_CASE("MikkTSpace's group frames: the lane pass gives the scalar sums' bits", "[tangents]") {
+  constexpr std::size_t B = kTangentCornerBlock, L = kTangentLanes;
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), angle(0.0f, 3.2f);
+  const float specials[] = {0.0f, -0.0f, 1e-39f, -1e-39f, 1e-20f, 1.0f, NAN, INFINITY};
+  std::size_t checked = 0, near_seen = 0, far_seen = 0;
+  for (int round = 0; round < 2000; ++round) {
+    std::vector<float> terms(7 * B), mags(2 * B), out(9 * L);
+    int count[L];
+    std::size_t rows = 0;
+    for (std::size_t g = 0; g < L; ++g) count[g] = int(rng() % (B / L + 1)), rows = std::max(rows, std::size_t(count[g]));
+    // Nearly parallel members in most rounds (the common, surely whole case), random ones else.
+    const bool parallel = round % 3 != 0;
+    for (std::size_t c = 0; c < rows * L; ++c) {
+      const V3 s{1 + 0.2f * u(rng), 0.2f * u(rng), 0.2f * u(rng)}, t{0.2f * u(rng), 1 + 0.2f * u(rng), 0.2f * u(rng)};
+      const V3 ps = parallel ? vscale(1.0f / std::sqrt(vdot(s, s)), s) : V3{u(rng), u(rng), u(rng)};
+      const V3 pt = parallel ? vscale(1.0f / std::sqrt(vdot(t, t)), t) : V3{u(rng), u(rng), u(rng)};
+      float v[9] = {ps.x, ps.y, ps.z, pt.x, pt.y, pt.z, angle(rng), 10 * angle(rng), 10 * angle(rng)};
+      if (rng() % 50 == 0) v[rng() % 9] = specials[rng() % 8];
+      if (rng() % 50 == 0) v[6] = 0.0f;
+      for (int r = 0; r < 7; ++r) terms[r * B + c] = v[r];
+      mags[c] = v[7], mags[B + c] = v[8];
+    }
+    tangent_lane_frames(rows, count, terms.data(), mags.data(), out.data());
+    for (std::size_t g = 0; g < L; ++g) {
+      if (count[g] == 0) continue;
+      auto at = [&](int r, std::size_t j) { return terms[r * B + j * L + g]; };
+      V3 os{0, 0, 0}, ot{0, 0, 0};
+      float ms = 0, mt = 0, sum = 0;
+      bool near = true;
+      for (std::size_t j = 0; j < std::size_t(count[g]); ++j) {
+        const float a = at(6, j);
+        const V3 ps{at(0, j), at(1, j), at(2, j)}, pt{at(3, j), at(4, j), at(5, j)};
+        const V3 sa = vscale(a, ps), ta = vscale(a, pt);
+        os = {os.x + sa.x, os.y + sa.y, os.z + sa.z};
+        ot = {ot.x + ta.x, ot.y + ta.y, ot.z + ta.z};
+        ms += a * mags[j * L + g];
+        mt += a * mags[B + j * L + g];
+        sum += a;
+        const V3 ps0{at(0, 0), at(1, 0), at(2, 0)}, pt0{at(3, 0), at(4, 0), at(5, 0)};
+        if (j > 0) near = near && vdot(ps0, ps) > 0.5f && vdot(pt0, pt) > 0.5f;
+      }
+      auto normalize_safe = [](V3 v) {
+        if (!(not_zero(v.x) || not_zero(v.y) || not_zero(v.z))) return v;
+        const float len = std::sqrt(vdot(v, v));
+        return len > 0 ? vscale(1.0f / len, v) : v;
+      };
+      os = normalize_safe(os);
+      ot = normalize_safe(ot);
+      if (sum > 0) ms /= sum, mt /= sum;
+      const float expected[9] = {os.x, os.y, os.z, ot.x, ot.y, ot.z, ms, mt, near ? 1.0f : 0.0f};
+      for (int r = 0; r < 9; ++r) {
+        INFO("round " << round << " lane " << g << " members " << count[g] << " output row " << r);
+        CHECK(same_bits(out[r * L + g], expected[r]));
+      }
+      (near ? near_seen : far_seen) += 1;
+      ++checked;
+    }
+  }
+  CHECK(checked > 10000);
+  CHECK(near_seen > 1000);  // both answers of the 60-degree test occur
+  CHECK(far_seen > 1000);
+}

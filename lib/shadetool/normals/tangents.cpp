@@ -724,79 +724,106 @@ bool one_group_walk(const LocalTriangle* x, std::uint32_t k, std::uint32_t* memb
   return n == k;
 }
 
-// Step 7 for the groups build_groups_by_vertex finds as one walk (every triangle at a vertex,
-// of one orientation, in one ring or fan): their members are the vertex's corner slots in
-// ascending order, the order of the sums, so they need no sorting; their corner terms go through
-// the vector pass in batches of whole vertices (up to kTangentCornerBlock corners), from the
-// vertex's own values. A group that turns out not whole (some members antiparallel) is handed back
-// to group_frames (`others`), with its members in the walk's order.
+// Step 7 for the groups frames_by_vertex finds as one walk (every triangle at a vertex, of one
+// orientation, in one ring or fan) of up to kRows members: their members are the vertex's corner
+// slots in ascending order, the order of the sums, so they need no sorting. kTangentLanes such
+// vertices at a time, one per lane (member j of lane g in column j * kTangentLanes + g), go through
+// the vector pass for their corner terms (from the vertex's own values) and then for their frames
+// (tangent_lane_frames: evaluate_frame's sums). A lane not surely whole is checked member by
+// member (whole_group, evaluate_frame); a group that is not whole is handed back to group_frames
+// (`others`), with its members in the walk's order.
 class OneGroupFrames {
  public:
+  static constexpr std::size_t kRows = normals_detail::kTangentCornerBlock / normals_detail::kTangentLanes;
+
   OneGroupFrames(const std::vector<WeldedVertex>& wv, const Triangles& tris, const TriInfos& info,
                  CornerFrames& out)
       : wv_(wv), tris_(tris), info_(info), out_(out) {}
 
   // Vertex v's k corners (x, ascending slots), walk: the same slots in the order the search
-  // reached them. k <= kTangentCornerBlock.
+  // reached them. k <= kRows.
   void add(std::uint32_t v, const LocalTriangle* x, std::uint32_t k, const std::uint32_t* walk,
            std::vector<Group>& others, std::vector<std::uint32_t>& other_members) {
-    if (used_ + k > B) finish(others, other_members);
+    const std::size_t g = lanes_;
     const WeldedVertex& w = wv_[v];
     for (std::uint32_t i = 0; i < k; ++i) {
-      const std::size_t r = used_ + i;
+      const std::size_t c = i * L + g;
       const TriInfo& ti = info_[x[i].slot / 3];
       const F3 e1 = wv_[x[i].p].p - w.p, e2 = wv_[x[i].n].p - w.p;
       const float values[15] = {w.n.x, w.n.y, w.n.z, ti.os.x, ti.os.y, ti.os.z, ti.ot.x, ti.ot.y, ti.ot.z,
                                 e1.x, e1.y, e1.z, e2.x, e2.y, e2.z};
-      for (int row = 0; row < 15; ++row) in_[row * B + r] = values[row];
-      slot_[r] = x[i].slot;
-      walk_[r] = walk[i];
+      for (int row = 0; row < 15; ++row) in_[row * B + c] = values[row];
+      mags_[c] = ti.mag_s;
+      mags_[B + c] = ti.mag_t;
+      slot_[c] = x[i].slot;
+      walk_[c] = walk[i];
     }
-    pending_[vertices_++] = {v, std::uint32_t(used_), k, x[0].orient};
-    used_ += k;
+    lane_[g] = {v, k, x[0].orient};
+    count_[g] = int(k);
+    rows_ = std::max<std::size_t>(rows_, k);
+    if (++lanes_ == L) finish(others, other_members);
   }
 
   void finish(std::vector<Group>& others, std::vector<std::uint32_t>& other_members) {
-    if (used_ == 0) return;
-    normals_detail::tangent_corner_terms(used_, in_, terms_);
-    Member m[B];
-    CornerTerm term[B];
-    for (std::size_t r = 0; r < used_; ++r) {
-      const TriInfo& ti = info_[slot_[r] / 3];
-      term[r] = {{terms_[r], terms_[B + r], terms_[2 * B + r]},
-                 {terms_[3 * B + r], terms_[4 * B + r], terms_[5 * B + r]},
-                 terms_[6 * B + r], ti.mag_s, ti.mag_t};
-      m[r] = {slot_[r], tris_.face[slot_[r] / 3], false, &term[r]};
-    }
-    for (std::size_t g = 0; g < vertices_; ++g) {
-      const Pending& p = pending_[g];
-      if (!whole_group(m + p.first, p.count)) {
-        others.push_back(Group{p.vertex, p.orient, std::uint32_t(other_members.size()), p.count});
-        other_members.insert(other_members.end(), walk_ + p.first, walk_ + p.first + p.count);
+    if (lanes_ == 0) return;
+    for (std::size_t g = lanes_; g < L; ++g) count_[g] = 0;
+    // Columns past a lane's members: zero inputs (finite, quick), results unused.
+    for (std::size_t g = 0; g < L; ++g)
+      for (std::size_t j = std::size_t(count_[g]); j < rows_; ++j)
+        for (int row = 0; row < 15; ++row) in_[row * B + j * L + g] = 0.0f;
+    normals_detail::tangent_corner_terms(rows_ * L, in_, terms_);
+    normals_detail::tangent_lane_frames(rows_, count_, terms_, mags_, frames_);
+    for (std::size_t g = 0; g < lanes_; ++g) {
+      const Lane& lane = lane_[g];
+      TSpace frame;
+      frame.os = {frames_[g], frames_[L + g], frames_[2 * L + g]};
+      frame.ot = {frames_[3 * L + g], frames_[4 * L + g], frames_[5 * L + g]};
+      frame.mag_s = frames_[6 * L + g];
+      frame.mag_t = frames_[7 * L + g];
+      if (frames_[8 * L + g] == 0.0f && !whole_lane(g)) {
+        others.push_back(Group{lane.vertex, lane.orient, std::uint32_t(other_members.size()), lane.count});
+        for (std::size_t j = 0; j < lane.count; ++j) other_members.push_back(walk_[j * L + g]);
         continue;
       }
-      out_.frames.push_back(evaluate_frame(m + p.first, nullptr, p.count));
-      out_.frames.back().orient = p.orient;
-      const auto frame = std::uint32_t(out_.frames.size() - 1);
-      for (std::uint32_t i = 0; i < p.count; ++i) out_.receive(tris_.corner[slot_[p.first + i]], frame, p.orient);
+      frame.orient = lane.orient;
+      out_.frames.push_back(frame);
+      const auto f = std::uint32_t(out_.frames.size() - 1);
+      for (std::size_t j = 0; j < lane.count; ++j) out_.receive(tris_.corner[slot_[j * L + g]], f, lane.orient);
     }
-    used_ = vertices_ = 0;
+    lanes_ = rows_ = 0;
   }
 
  private:
-  static constexpr std::size_t B = normals_detail::kTangentCornerBlock;
-  struct Pending {
-    std::uint32_t vertex, first, count;
+  static constexpr std::size_t B = normals_detail::kTangentCornerBlock, L = normals_detail::kTangentLanes;
+  struct Lane {
+    std::uint32_t vertex, count;
     bool orient;
   };
+
+  // whole_group on lane g's members (the lane pass's first test failed: every pair tested).
+  bool whole_lane(std::size_t g) const {
+    const Lane& lane = lane_[g];
+    Member m[kRows];
+    CornerTerm term[kRows];
+    for (std::size_t j = 0; j < lane.count; ++j) {
+      const std::size_t c = j * L + g;
+      term[j] = {{terms_[c], terms_[B + c], terms_[2 * B + c]},
+                 {terms_[3 * B + c], terms_[4 * B + c], terms_[5 * B + c]},
+                 terms_[6 * B + c], mags_[c], mags_[B + c]};
+      m[j] = {slot_[c], tris_.face[slot_[c] / 3], false, &term[j]};
+    }
+    return whole_group(m, lane.count);
+  }
+
   const std::vector<WeldedVertex>& wv_;
   const Triangles& tris_;
   const TriInfos& info_;
   CornerFrames& out_;
-  float in_[15 * B], terms_[7 * B];
+  float in_[15 * B], terms_[7 * B], mags_[2 * B], frames_[9 * L];
   std::uint32_t slot_[B], walk_[B];
-  Pending pending_[B];
-  std::size_t used_ = 0, vertices_ = 0;
+  Lane lane_[L];
+  int count_[L];
+  std::size_t lanes_ = 0, rows_ = 0;
 };
 
 // Steps 5, 6 and 7 vertex by vertex, for a mesh with no triangle that groups with any (the only
@@ -835,7 +862,7 @@ void frames_by_vertex(const std::vector<WeldedVertex>& wv, const Triangles& tris
                   (tris.flag[t] & kOrientPreserving) != 0, false};
     }
     pair_edges_in_order(local.data(), k);
-    if (k <= normals_detail::kTangentCornerBlock && one_group_walk(local.data(), k, walk.data())) {
+    if (k <= OneGroupFrames::kRows && one_group_walk(local.data(), k, walk.data())) {
       one_group->add(std::uint32_t(v), local.data(), k, walk.data(), groups, members);
       continue;
     }

@@ -94,4 +94,57 @@ void tangent_corner_terms(std::size_t n, const float* __restrict in, float* __re
   for (std::size_t i = 0; i < n; ++i) angle[i] = float(arc_cosine(double(cosine[i])));
 }
 
+SHADETOOL_TANGENT_CLONES
+void tangent_lane_frames(std::size_t rows, const int* __restrict count, const float* __restrict terms,
+                         const float* __restrict mags, float* __restrict out) {
+  constexpr std::size_t B = kTangentCornerBlock, L = kTangentLanes;
+  float osx[L], osy[L], osz[L], otx[L], oty[L], otz[L], ms[L], mt[L], sum[L], near[L];
+  for (std::size_t g = 0; g < L; ++g)
+    osx[g] = osy[g] = osz[g] = otx[g] = oty[g] = otz[g] = ms[g] = mt[g] = sum[g] = 0.0f, near[g] = 1.0f;
+  for (std::size_t j = 0; j < rows; ++j)
+    for (std::size_t g = 0; g < L; ++g) {
+      const std::size_t c = j * L + g;
+      const bool in = int(j) < count[g];
+      const float angle = terms[6 * B + c];
+      const float psx = terms[c], psy = terms[B + c], psz = terms[2 * B + c];
+      const float ptx = terms[3 * B + c], pty = terms[4 * B + c], ptz = terms[5 * B + c];
+      osx[g] = in ? osx[g] + angle * psx : osx[g];
+      osy[g] = in ? osy[g] + angle * psy : osy[g];
+      osz[g] = in ? osz[g] + angle * psz : osz[g];
+      otx[g] = in ? otx[g] + angle * ptx : otx[g];
+      oty[g] = in ? oty[g] + angle * pty : oty[g];
+      otz[g] = in ? otz[g] + angle * ptz : otz[g];
+      ms[g] = in ? ms[g] + angle * mags[c] : ms[g];
+      mt[g] = in ? mt[g] + angle * mags[B + c] : mt[g];
+      sum[g] = in ? sum[g] + angle : sum[g];
+      // Within 60 degrees of member 0 (column g): its own dot with itself passes or not alike.
+      const float ds = terms[g] * psx + terms[B + g] * psy + terms[2 * B + g] * psz;
+      const float dt = terms[3 * B + g] * ptx + terms[4 * B + g] * pty + terms[5 * B + g] * ptz;
+      const bool ok = j == 0 || ((ds > 0.5f) & (dt > 0.5f));
+      near[g] = (in & !ok) ? 0.0f : near[g];
+    }
+  for (std::size_t g = 0; g < L; ++g) {
+    float* o = out;
+    // Unit where not zero (tangents.cpp's normalize: the length's inverse, then products).
+    const bool s_nz = (std::fabs(osx[g]) > FLT_MIN) | (std::fabs(osy[g]) > FLT_MIN) | (std::fabs(osz[g]) > FLT_MIN);
+    const float s_len = std::sqrt(osx[g] * osx[g] + osy[g] * osy[g] + osz[g] * osz[g]);
+    const bool s_unit = s_nz & (s_len > 0.0f);
+    const float s_inv = 1.0f / s_len;  // used only where s_len > 0
+    o[0 * L + g] = s_unit ? s_inv * osx[g] : osx[g];
+    o[1 * L + g] = s_unit ? s_inv * osy[g] : osy[g];
+    o[2 * L + g] = s_unit ? s_inv * osz[g] : osz[g];
+    const bool t_nz = (std::fabs(otx[g]) > FLT_MIN) | (std::fabs(oty[g]) > FLT_MIN) | (std::fabs(otz[g]) > FLT_MIN);
+    const float t_len = std::sqrt(otx[g] * otx[g] + oty[g] * oty[g] + otz[g] * otz[g]);
+    const bool t_unit = t_nz & (t_len > 0.0f);
+    const float t_inv = 1.0f / t_len;  // used only where t_len > 0
+    o[3 * L + g] = t_unit ? t_inv * otx[g] : otx[g];
+    o[4 * L + g] = t_unit ? t_inv * oty[g] : oty[g];
+    o[5 * L + g] = t_unit ? t_inv * otz[g] : otz[g];
+    const bool positive = sum[g] > 0.0f;
+    o[6 * L + g] = positive ? ms[g] / sum[g] : ms[g];  // divisor checked (selected)
+    o[7 * L + g] = positive ? mt[g] / sum[g] : mt[g];
+    o[8 * L + g] = near[g];
+  }
+}
+
 }  // namespace shadetool::normals_detail

@@ -34,4 +34,24 @@ namespace shadetool::normals_detail {
 constexpr std::size_t kTangentCornerBlock = 64;
 void tangent_corner_terms(std::size_t n, const float* in, float* out);
 
+// tangent_lane_frames: the frames of up to kTangentLanes groups at once, one per lane: each the
+// angle-weighted sum of its members' terms in member order, as mikktspace.c's EvalTspace sums them
+// (os += angle ps, ot += angle pt, mag_s += angle mag_s, mag_t += angle mag_t, angle_sum += angle,
+// each a float product then a float sum), then os and ot made unit where some |component| >
+// FLT_MIN and the length > 0 (else left as summed), mag_s and mag_t divided by angle_sum where it
+// is > 0. With it, whether the group is surely whole (tangents.cpp, whole_group's first test):
+// every member's ps and pt within 60 degrees of the first member's (dot > 0.5).
+// Inputs:  rows   members of the longest group, at most kTangentCornerBlock / kTangentLanes
+//          count  kTangentLanes members per lane (0: an unused lane; its outputs are meaningless)
+//          terms  7 rows of kTangentCornerBlock floats as tangent_corner_terms writes them (ps,
+//                 pt, angle), member j of lane g in column j * kTangentLanes + g
+//          mags   2 rows of kTangentCornerBlock floats: the member's triangle's mag_s, mag_t, same
+//                 columns
+// Outputs: out    9 rows of kTangentLanes floats: os (x, y, z), ot (x, y, z), mag_s, mag_t, and
+//                 1 where the group is surely whole, else 0
+// Same bits as the scalar sums from every clone (lane-wise float operations in the same order,
+// selects for the members past a lane's count); checked in tests/normals/tangent_corner_terms.cpp.
+constexpr std::size_t kTangentLanes = 8;
+void tangent_lane_frames(std::size_t rows, const int* count, const float* terms, const float* mags, float* out);
+
 }  // namespace shadetool::normals_detail
