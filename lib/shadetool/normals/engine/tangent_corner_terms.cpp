@@ -98,52 +98,69 @@ SHADETOOL_TANGENT_CLONES
 void tangent_lane_frames(std::size_t rows, const int* __restrict count, const float* __restrict terms,
                          const float* __restrict mags, float* __restrict out) {
   constexpr std::size_t B = kTangentCornerBlock, L = kTangentLanes;
-  float osx[L], osy[L], osz[L], otx[L], oty[L], otz[L], ms[L], mt[L], sum[L], near[L];
-  for (std::size_t g = 0; g < L; ++g)
-    osx[g] = osy[g] = osz[g] = otx[g] = oty[g] = otz[g] = ms[g] = mt[g] = sum[g] = 0.0f, near[g] = 1.0f;
-  for (std::size_t j = 0; j < rows; ++j)
-    for (std::size_t g = 0; g < L; ++g) {
-      const std::size_t c = j * L + g;
-      const bool in = int(j) < count[g];
-      const float angle = terms[6 * B + c];
-      const float psx = terms[c], psy = terms[B + c], psz = terms[2 * B + c];
-      const float ptx = terms[3 * B + c], pty = terms[4 * B + c], ptz = terms[5 * B + c];
-      osx[g] = in ? osx[g] + angle * psx : osx[g];
-      osy[g] = in ? osy[g] + angle * psy : osy[g];
-      osz[g] = in ? osz[g] + angle * psz : osz[g];
-      otx[g] = in ? otx[g] + angle * ptx : otx[g];
-      oty[g] = in ? oty[g] + angle * pty : oty[g];
-      otz[g] = in ? otz[g] + angle * ptz : otz[g];
-      ms[g] = in ? ms[g] + angle * mags[c] : ms[g];
-      mt[g] = in ? mt[g] + angle * mags[B + c] : mt[g];
-      sum[g] = in ? sum[g] + angle : sum[g];
-      // Within 60 degrees of member 0 (column g): its own dot with itself passes or not alike.
-      const float ds = terms[g] * psx + terms[B + g] * psy + terms[2 * B + g] * psz;
-      const float dt = terms[3 * B + g] * ptx + terms[4 * B + g] * pty + terms[5 * B + g] * ptz;
-      const bool ok = j == 0 || ((ds > 0.5f) & (dt > 0.5f));
-      near[g] = (in & !ok) ? 0.0f : near[g];
+  // The lanes as GCC vectors (8 floats; two halves on the baseline clone): the loop over members
+  // is then lane-wise without relying on the vectoriser; selects (?: on a lane mask) skip the
+  // members past a lane's count.
+  typedef float F8 __attribute__((vector_size(32)));
+  typedef float F8u __attribute__((vector_size(32), aligned(4), may_alias));  // a row, unaligned
+  typedef int I8 __attribute__((vector_size(32)));
+  static_assert(L == 8, "one F8 per row");
+#define load(p) F8(*reinterpret_cast<const F8u*>(p))
+  I8 members;
+  std::memcpy(&members, count, sizeof members);
+  const F8 zero = {0, 0, 0, 0, 0, 0, 0, 0}, half = zero + 0.5f;
+  F8 osx = zero, osy = zero, osz = zero, otx = zero, oty = zero, otz = zero, ms = zero, mt = zero, sum = zero;
+  I8 near = {-1, -1, -1, -1, -1, -1, -1, -1};  // all true
+  const F8 s0x = load(terms), s0y = load(terms + B), s0z = load(terms + 2 * B);  // member 0's ps, pt
+  const F8 t0x = load(terms + 3 * B), t0y = load(terms + 4 * B), t0z = load(terms + 5 * B);
+  for (std::size_t j = 0; j < rows; ++j) {
+    const float* c = terms + j * L;
+    const F8 psx = load(c), psy = load(c + B), psz = load(c + 2 * B);
+    const F8 ptx = load(c + 3 * B), pty = load(c + 4 * B), ptz = load(c + 5 * B), a = load(c + 6 * B);
+    const F8 mag_s = load(mags + j * L), mag_t = load(mags + B + j * L);
+    const I8 in = int(j) < members;
+    osx = in ? osx + a * psx : osx;
+    osy = in ? osy + a * psy : osy;
+    osz = in ? osz + a * psz : osz;
+    otx = in ? otx + a * ptx : otx;
+    oty = in ? oty + a * pty : oty;
+    otz = in ? otz + a * ptz : otz;
+    ms = in ? ms + a * mag_s : ms;
+    mt = in ? mt + a * mag_t : mt;
+    sum = in ? sum + a : sum;
+    if (j > 0) {  // member 0 is within 60 degrees of itself by definition
+      const F8 ds = s0x * psx + s0y * psy + s0z * psz, dt = t0x * ptx + t0y * pty + t0z * ptz;
+      near = near & ~(in & ~((ds > half) & (dt > half)));
     }
+  }
+#undef load
+  float vosx[L], vosy[L], vosz[L], votx[L], voty[L], votz[L], vms[L], vmt[L], vsum[L];
+  int vnear[L];
+  std::memcpy(vosx, &osx, sizeof osx), std::memcpy(vosy, &osy, sizeof osy), std::memcpy(vosz, &osz, sizeof osz);
+  std::memcpy(votx, &otx, sizeof otx), std::memcpy(voty, &oty, sizeof oty), std::memcpy(votz, &otz, sizeof otz);
+  std::memcpy(vms, &ms, sizeof ms), std::memcpy(vmt, &mt, sizeof mt), std::memcpy(vsum, &sum, sizeof sum);
+  std::memcpy(vnear, &near, sizeof near);
   for (std::size_t g = 0; g < L; ++g) {
     float* o = out;
     // Unit where not zero (tangents.cpp's normalize: the length's inverse, then products).
-    const bool s_nz = (std::fabs(osx[g]) > FLT_MIN) | (std::fabs(osy[g]) > FLT_MIN) | (std::fabs(osz[g]) > FLT_MIN);
-    const float s_len = std::sqrt(osx[g] * osx[g] + osy[g] * osy[g] + osz[g] * osz[g]);
+    const bool s_nz = (std::fabs(vosx[g]) > FLT_MIN) | (std::fabs(vosy[g]) > FLT_MIN) | (std::fabs(vosz[g]) > FLT_MIN);
+    const float s_len = std::sqrt(vosx[g] * vosx[g] + vosy[g] * vosy[g] + vosz[g] * vosz[g]);
     const bool s_unit = s_nz & (s_len > 0.0f);
     const float s_inv = 1.0f / s_len;  // used only where s_len > 0
-    o[0 * L + g] = s_unit ? s_inv * osx[g] : osx[g];
-    o[1 * L + g] = s_unit ? s_inv * osy[g] : osy[g];
-    o[2 * L + g] = s_unit ? s_inv * osz[g] : osz[g];
-    const bool t_nz = (std::fabs(otx[g]) > FLT_MIN) | (std::fabs(oty[g]) > FLT_MIN) | (std::fabs(otz[g]) > FLT_MIN);
-    const float t_len = std::sqrt(otx[g] * otx[g] + oty[g] * oty[g] + otz[g] * otz[g]);
+    o[0 * L + g] = s_unit ? s_inv * vosx[g] : vosx[g];
+    o[1 * L + g] = s_unit ? s_inv * vosy[g] : vosy[g];
+    o[2 * L + g] = s_unit ? s_inv * vosz[g] : vosz[g];
+    const bool t_nz = (std::fabs(votx[g]) > FLT_MIN) | (std::fabs(voty[g]) > FLT_MIN) | (std::fabs(votz[g]) > FLT_MIN);
+    const float t_len = std::sqrt(votx[g] * votx[g] + voty[g] * voty[g] + votz[g] * votz[g]);
     const bool t_unit = t_nz & (t_len > 0.0f);
     const float t_inv = 1.0f / t_len;  // used only where t_len > 0
-    o[3 * L + g] = t_unit ? t_inv * otx[g] : otx[g];
-    o[4 * L + g] = t_unit ? t_inv * oty[g] : oty[g];
-    o[5 * L + g] = t_unit ? t_inv * otz[g] : otz[g];
-    const bool positive = sum[g] > 0.0f;
-    o[6 * L + g] = positive ? ms[g] / sum[g] : ms[g];  // divisor checked (selected)
-    o[7 * L + g] = positive ? mt[g] / sum[g] : mt[g];
-    o[8 * L + g] = near[g];
+    o[3 * L + g] = t_unit ? t_inv * votx[g] : votx[g];
+    o[4 * L + g] = t_unit ? t_inv * voty[g] : voty[g];
+    o[5 * L + g] = t_unit ? t_inv * votz[g] : votz[g];
+    const bool positive = vsum[g] > 0.0f;
+    o[6 * L + g] = positive ? vms[g] / vsum[g] : vms[g];  // divisor checked (selected)
+    o[7 * L + g] = positive ? vmt[g] / vsum[g] : vmt[g];
+    o[8 * L + g] = vnear[g] ? 1.0f : 0.0f;
   }
 }
 
