@@ -306,36 +306,32 @@ Mesh vertex_uv_soup(unsigned seed) {
 
 }  // namespace
 
-// tangents.h, steps 5 and 6: which triangles are neighbours (the first unpaired edge in the opposite
-// direction, in triangle order) and which of them group at a vertex decide every frame; on
-// non-manifold edges, fans that touch at one vertex and mixed orientations the reference's order
-// is the only truth. tangents.cpp decides them vertex by vertex when no triangle groups with any:
-// this checks those decisions against the reference on 300 such soups.
-TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on non-manifold, mirrored triangle soups", "[tangents][reference]") {
+namespace {
+
+// Our tangents on `meshes` against the reference's, in one reference run (each mesh moved 10 units
+// further along x than the one before: nothing welds across meshes): the same w at every corner,
+// directions within 1e-3 degrees. Skips loudly without the reference.
+void check_against_reference(std::vector<Mesh> meshes, const std::string& name) {
   const std::string ref = shadetool_test::mikktspace_reference_dir();
   if (ref.empty()) {
     WARN("SKIPPED: the MikkTSpace reference (node + npm install mikktspace failed: no node or no registry)");
     return;
   }
-  // All soups in one reference run: each soup's vertices offset far from the others' (no welding
-  // across soups), corners remembered per soup.
   std::vector<float> data;
-  std::vector<Mesh> soups;
-  for (unsigned s = 1; s <= 300; ++s) {
-    Mesh m = vertex_uv_soup(s);
-    if (m.num_faces() == 0) continue;  // every random triangle had a repeated vertex
-    for (std::size_t v = 0; v < m.num_vertices(); ++v) m.positions[3 * v] += 10.0 * s;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    Mesh& m = meshes[i];
+    for (std::size_t v = 0; v < m.num_vertices(); ++v) m.positions[3 * v] += 10.0 * double(i + 1);
     const Unindexed u = unindexed(m);
+    REQUIRE(u.corner.size() == m.num_corners());  // every corner textured, triangles only
     data.insert(data.end(), u.data.begin(), u.data.end());
-    soups.push_back(std::move(m));
   }
   std::string error;
-  const std::vector<float> expected = shadetool_test::mikktspace_reference(data, "tangents_soups_ref", error);
+  const std::vector<float> expected = shadetool_test::mikktspace_reference(data, name + "_ref", error);
   INFO(error);
   REQUIRE(expected.size() == data.size() / 2);
   std::size_t at = 0, corners = 0, w_differs = 0, direction_differs = 0;
   double worst = 0;
-  for (const Mesh& m : soups) {
+  for (const Mesh& m : meshes) {
     const TangentFrames t = mikktspace_tangents(m);
     for (std::size_t c = 0; c < m.num_corners(); ++c, ++at) {
       const double* ours = &t.tangents[4 * c];
@@ -346,8 +342,75 @@ TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on non-manifold, mir
     }
     corners += m.num_corners();
   }
-  WARN("MikkTSpace reference, soups: " << soups.size() << " soups, " << corners << " corners, worst direction " << worst
-                                       << " degrees");
+  WARN("MikkTSpace reference, " << name << ": " << meshes.size() << " meshes, " << corners
+                                << " corners, worst direction " << worst << " degrees");
   CHECK(w_differs == 0);
   CHECK(direction_differs == 0);
+}
+
+// n triangles around an apex (vertex 0) over a ring of n (closed) or n + 1 (open) vertices, texture
+// coordinates and normals per vertex (continuous: one orientation, one group at the apex); with
+// `mirrored`, triangle 0's ring corners take their own texture coordinates, mirrored through the
+// apex's (that triangle flips orientation and shares no edge with the others); with `second`, a
+// second ring below the apex the same way (two fans that meet only at the apex).
+Mesh apex_fan(int n, bool closed, bool mirrored, bool second) {
+  Mesh m;
+  m.add_vertex({0, 0, 0.5});
+  m.vertex_normals = {0, 0, 1};
+  m.texcoords = {0.5, 0.5};
+  auto ring = [&](double z, double turn) {
+    const auto first = std::uint32_t(m.num_vertices());
+    const int count = closed ? n : n + 1;
+    for (int i = 0; i < count; ++i) {
+      const double a = 2 * kPi * (i + turn) / (closed ? n : n + 1.5);
+      m.add_vertex({std::cos(a), std::sin(a), z});
+      const Vec3d nn = normalized_or(Vec3d{std::cos(a), std::sin(a), 1.0}, Vec3d{0, 0, 1});
+      m.vertex_normals.insert(m.vertex_normals.end(), {nn.x, nn.y, nn.z});
+      m.texcoords.insert(m.texcoords.end(), {0.5 + 0.4 * std::cos(a), 0.5 + 0.4 * std::sin(a)});
+    }
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t b = first + std::uint32_t(i), c = first + std::uint32_t(closed ? (i + 1) % n : i + 1);
+      for (std::uint32_t v : {0u, b, c}) m.corner_vertex.push_back(v), m.corner_texcoord_index.push_back(v);
+      m.face_start.push_back(std::uint32_t(m.corner_vertex.size()));
+    }
+  };
+  ring(0.0, 0.0);
+  if (mirrored)
+    for (std::size_t c : {1, 2}) {
+      const std::uint32_t t = m.corner_texcoord_index[c];
+      m.texcoords.insert(m.texcoords.end(), {1.0 - m.texcoords[2 * t], m.texcoords[2 * t + 1]});
+      m.corner_texcoord_index[c] = std::uint32_t(m.texcoords.size() / 2 - 1);
+    }
+  if (second) ring(1.0, 0.5);
+  return m;
+}
+
+}  // namespace
+
+// tangents.h, steps 5 and 6: which triangles are neighbours (the first unpaired edge in the opposite
+// direction, in triangle order) and which of them group at a vertex decide every frame; on
+// non-manifold edges, fans that touch at one vertex and mixed orientations the reference's order
+// is the only truth. tangents.cpp decides them vertex by vertex when no triangle groups with any:
+// this checks those decisions against the reference on 300 such soups.
+TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on non-manifold, mirrored triangle soups", "[tangents][reference]") {
+  std::vector<Mesh> soups;
+  for (unsigned s = 1; s <= 300; ++s) {
+    Mesh m = vertex_uv_soup(s);
+    if (m.num_faces() > 0) soups.push_back(std::move(m));  // else every random triangle had a repeated vertex
+  }
+  check_against_reference(std::move(soups), "soups");
+}
+
+// tangents.cpp takes a vertex whose triangles all group together (one orientation, one ring or
+// one fan) of up to 8 corners through a shortcut (OneGroupFrames), the rest through the general
+// search: this checks both sides of each of its conditions against the reference: rings and open
+// fans of 3 to 12 triangles around one apex (8 and 9: the size limit), one of them mirrored (two
+// orientations), two rings meeting at the apex (two groups).
+TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on rings and fans around one vertex", "[tangents][reference]") {
+  std::vector<Mesh> fans;
+  for (int n = 3; n <= 12; ++n)
+    for (bool closed : {true, false})
+      for (bool mirrored : {false, true})
+        for (bool second : {false, true}) fans.push_back(apex_fan(n, closed, mirrored, second));
+  check_against_reference(std::move(fans), "fans");
 }
