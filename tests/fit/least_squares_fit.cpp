@@ -289,6 +289,51 @@ TEST_CASE("With an accuracy, CG stops early and every value is still within it o
   }
 }
 
+TEST_CASE("Three channels solved together (4-wide lanes) equal each channel solved alone, bit for bit",
+          "[fit][least_squares]") {
+  // Truth: the one-channel solve (scalar loops, its own CG) of each channel. Three channels run in
+  // 4-wide lanes (a zero fourth channel) through their own operator and vector passes; every lane
+  // must do the scalar operations in the scalar order, stop on its own test and keep its value
+  // after: any mix-up of lanes, reordered sum or shared step length changes bits. On a torus
+  // (triangles) and jittered planar quads, with and without the regulariser, with and without the
+  // 8-bit accuracy stop.
+  const Mesh torus = shadetool::testing::torus(24, 12, 1.0, 0.4, 0.1).mesh;
+  const Mesh quads = planar_quads(9, 7);
+  for (const Mesh* mesh : {&torus, &quads})
+    for (double lambda : {0.0, 1e-2})
+      for (double accuracy : {0.0, kEightBitFitAccuracy}) {
+        const FitElements e = fit_elements(*mesh);
+        const FitQuadrature q = fit_quadrature(e, mesh->positions, 3);
+        const std::vector<double> x = interpolate_vertex_data(q, mesh->positions, 3);
+        std::vector<double> f3(3 * q.size()), point3(3 * mesh->num_vertices(), 0.0);
+        for (std::size_t s = 0; s < q.size(); ++s) {
+          const Vec3d p = get3(x, s);
+          f3[3 * s] = 0.5 + 0.5 * std::sin(3 * p.x + p.y);  // three unrelated smooth signals
+          f3[3 * s + 1] = p.z * p.z + 0.2 * p.x * p.y;
+          f3[3 * s + 2] = std::exp(-p.x * p.x - 2 * p.y * p.y);
+        }
+        LeastSquaresFitOptions o;
+        o.regularization = lambda;
+        o.accuracy = accuracy;
+        o.lower = -1e300;
+        const LeastSquaresFit together = least_squares_fit(e, mesh->positions, q, f3, point3, 3, o);
+        int most = 0;
+        for (int k = 0; k < 3; ++k) {
+          std::vector<double> f1(q.size()), point1(mesh->num_vertices(), 0.0);
+          for (std::size_t s = 0; s < q.size(); ++s) f1[s] = f3[3 * s + k];
+          const LeastSquaresFit alone = least_squares_fit(e, mesh->positions, q, f1, point1, 1, o);
+          most = std::max(most, alone.iterations);
+          std::size_t differ = 0;
+          for (std::size_t v = 0; v < mesh->num_vertices(); ++v) differ += together.values[3 * v + k] != alone.values[v];
+          INFO("channel " << k << ", lambda " << lambda << ", accuracy " << accuracy << ", "
+                          << mesh->num_vertices() << " vertices");
+          CHECK(alone.iterations > 0);
+          CHECK(differ == 0);
+        }
+        CHECK(together.iterations == most);  // the most over the channels
+      }
+}
+
 TEST_CASE("A linear signal is reproduced exactly: fit = point values, with and without the regulariser",
           "[fit][least_squares]") {
   // planar: the unfolded kink of a linear function is zero, so R does not move the solution

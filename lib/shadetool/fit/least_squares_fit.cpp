@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 
@@ -188,6 +189,38 @@ inline void add_triangle_product(const FitOperator& A, std::size_t t, const doub
   }
 }
 
+// The same for every triangle, 4 lanes per node (3 channels and a zero pad, least_squares_fit's
+// layout for 3 channels): one 4-wide operation per node where add_triangle_product<3> does three
+// scalar ones. Built for AVX2 and for the baseline (target_clones; no FMA): per lane the
+// operations of add_triangle_product, in the same order, so the same bits on either.
+// The triangles are taken from four quarters of the list in turn (apply_operator).
+using Lanes4 = double __attribute__((vector_size(32)));
+__attribute__((target_clones("avx2", "default")))
+void add_triangle_products_4(const FitOperator& A, const double* x, double* y) {
+  const std::size_t T = A.triangles, Q = (T + 3) / 4;
+  for (std::size_t i = 0; i < Q; ++i)
+    for (std::size_t t = i; t < T; t += Q) {
+      const double s = A.tri_area[t] / 12;
+      if (s == 0) continue;
+      const std::size_t n0 = std::size_t(A.tri_node[3 * t]) * 4, n1 = std::size_t(A.tri_node[3 * t + 1]) * 4,
+                        n2 = std::size_t(A.tri_node[3 * t + 2]) * 4;
+      Lanes4 x0, x1, x2, y0, y1, y2;
+      std::memcpy(&x0, x + n0, sizeof x0);
+      std::memcpy(&x1, x + n1, sizeof x1);
+      std::memcpy(&x2, x + n2, sizeof x2);
+      const Lanes4 sum = x0 + x1 + x2;
+      std::memcpy(&y0, y + n0, sizeof y0);  // load, add, store one node at a time: nodes may repeat
+      y0 += s * (x0 + sum);
+      std::memcpy(y + n0, &y0, sizeof y0);
+      std::memcpy(&y1, y + n1, sizeof y1);
+      y1 += s * (x1 + sum);
+      std::memcpy(y + n1, &y1, sizeof y1);
+      std::memcpy(&y2, y + n2, sizeof y2);
+      y2 += s * (x2 + sum);
+      std::memcpy(y + n2, &y2, sizeof y2);
+    }
+}
+
 template <std::size_t W>
 void apply_operator(const FitOperator& A, const double* x, double* y, std::size_t width) {
   const std::size_t w = W ? W : width;
@@ -196,8 +229,12 @@ void apply_operator(const FitOperator& A, const double* x, double* y, std::size_
   // share nodes, so in list order each update of y waits for the store of the one before; four
   // far-apart chains overlap (bench/fit/results.md). A fixed order: the same bits on every run.
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
-  for (std::size_t i = 0; i < Q; ++i)
-    for (std::size_t t = i; t < T; t += Q) add_triangle_product<W>(A, t, x, y, w);
+  if (W == 4) {
+    add_triangle_products_4(A, x, y);
+  } else {
+    for (std::size_t i = 0; i < Q; ++i)
+      for (std::size_t t = i; t < T; t += Q) add_triangle_product<W>(A, t, x, y, w);
+  }
   for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
     const std::uint32_t* n = &A.quad_node[4 * k];
     const double* m = &A.quad_mass[16 * k];
@@ -306,6 +343,59 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   }
 }
 
+// CG's per-iteration vector passes over 4 lanes per node (block_conjugate_gradient<4>), one 4-wide
+// operation per node where the scalar loops do four: per lane the same operations in the same
+// node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
+// builds (target_clones; no FMA).
+// pAp = sum_i p_i * Ap_i per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_dot(const double* p, const double* Ap, std::size_t N, double out[4]) {
+  Lanes4 acc = {0, 0, 0, 0}, a, b;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&a, p + 4 * i, sizeof a);
+    std::memcpy(&b, Ap + 4 * i, sizeof b);
+    acc += a * b;
+  }
+  std::memcpy(out, &acc, sizeof acc);
+}
+// x += alpha p; r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new +=
+// r^2 inv_d_i, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_step(const double* p, const double* Ap, const double* inv_d, const double* inv_m, std::size_t N,
+                 const double alpha_in[4], double* x, double* r, double res2_out[4], double res_mass_out[4],
+                 double abs_new_out[4]) {
+  Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, pi, Api, xi, ri;
+  std::memcpy(&alpha, alpha_in, sizeof alpha);
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&pi, p + 4 * i, sizeof pi);
+    std::memcpy(&Api, Ap + 4 * i, sizeof Api);
+    std::memcpy(&xi, x + 4 * i, sizeof xi);
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
+    xi += alpha * pi;
+    ri = ri - alpha * Api;
+    std::memcpy(x + 4 * i, &xi, sizeof xi);
+    std::memcpy(r + 4 * i, &ri, sizeof ri);
+    res2 += ri * ri;
+    if (inv_m) res_mass += ri * ri * inv_m[i];
+    abs_new += ri * ri * inv_d[i];
+  }
+  std::memcpy(res2_out, &res2, sizeof res2);
+  std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
+  std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
+}
+// p = inv_d_i r + beta p, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double beta_in[4], double* p) {
+  Lanes4 beta, ri, pi;
+  std::memcpy(&beta, beta_in, sizeof beta);
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
+    std::memcpy(&pi, p + 4 * i, sizeof pi);
+    pi = ri * inv_d[i] + beta * pi;
+    std::memcpy(p + 4 * i, &pi, sizeof pi);
+  }
+}
+
 struct BlockCgOptions {
   double tolerance = 1e-10;   // relative residual per channel
   // > 0: also stop a channel once sum_i r_i^2 / inverse_mass_i <= accuracy_bound (least_squares_fit.h,
@@ -373,23 +463,32 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     apply(p, Ap);
     ++iterations;
     pAp.fill(0.0);
-    for (std::size_t i = 0; i < n; i += W)
-      for (std::size_t k = 0; k < W; ++k) pAp[k] += p[i + k] * Ap[i + k];
+    if constexpr (W == 4) {
+      lanes4_dot(p, Ap, N, pAp.data());
+    } else {
+      for (std::size_t i = 0; i < n; i += W)
+        for (std::size_t k = 0; k < W; ++k) pAp[k] += p[i + k] * Ap[i + k];
+    }
     for (std::size_t k = 0; k < W; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
     res2.fill(0.0);
     res_mass.fill(0.0);
     abs_old = abs_new;
     abs_new.fill(0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
-      for (std::size_t k = 0; k < W; ++k) {
-        x[i + k] += alpha[k] * p[i + k];
-        const double ri = r[i + k] - alpha[k] * Ap[i + k];
-        r[i + k] = ri;
-        res2[k] += ri * ri;
-        if (bounded) res_mass[k] += ri * ri * inv_m[node];
-        abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
-      }
+    if constexpr (W == 4) {  // z = D^-1 r, not stored
+      lanes4_step(p, Ap, inv_d, bounded ? inv_m : nullptr, N, alpha.data(), x, r, res2.data(), res_mass.data(),
+                  abs_new.data());
+    } else {
+      for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
+        for (std::size_t k = 0; k < W; ++k) {
+          x[i + k] += alpha[k] * p[i + k];
+          const double ri = r[i + k] - alpha[k] * Ap[i + k];
+          r[i + k] = ri;
+          res2[k] += ri * ri;
+          if (bounded) res_mass[k] += ri * ri * inv_m[node];
+          abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
+        }
+    }
     for (std::size_t k = 0; k < W; ++k)
       if (active[k] && (res2[k] < threshold[k] || accurate(k) || !(pAp[k] > 0))) {
         active[k] = false;
@@ -398,8 +497,12 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     if (running == 0) break;
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
-      for (std::size_t k = 0; k < W; ++k) p[i + k] = r[i + k] * inv_d[node] + beta[k] * p[i + k];
+    if constexpr (W == 4) {
+      lanes4_direction(r, inv_d, N, beta.data(), p);
+    } else {
+      for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+        for (std::size_t k = 0; k < W; ++k) p[i + k] = r[i + k] * inv_d[node] + beta[k] * p[i + k];
+    }
   }
   fit.iterations = std::max(fit.iterations, iterations);
   for (std::size_t k = 0; k < W; ++k) {
@@ -409,12 +512,14 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   }
 }
 
-// Widths other than 1 and 3: one channel at a time. b: overwritten (the residual).
+// b and x #nodes by `width` lanes (cg_lanes: 4 for 3 channels, the fourth b = 0 and so x = 0, a
+// channel solved at once); widths other than 1 and 4: one channel at a time. b: overwritten (the
+// residual).
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                               const std::vector<std::uint32_t>& off_system, std::vector<double>& b,
                               std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
   if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
-  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
+  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
   const std::size_t N = inverse_diagonal.size();
   std::vector<double> bk(N), xk(N);
   for (std::size_t k = 0; k < width; ++k) {
@@ -666,8 +771,13 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   }
   fit.values.assign(N * width, 0.0);
   if (off_system.size() < N) {
+    // b and the solution with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its
+    // solution is 0 and it stops at once), for add_triangle_products_4; otherwise the channels.
+    const std::size_t L = width == 3 ? 4 : width;
+    std::vector<double> padded(L != width ? N * L : 0, 0.0);
+    std::vector<double>& x = L != width ? padded : fit.values;
     // b for every channel in one pass over the points.
-    std::vector<double> b(N * width, 0.0);
+    std::vector<double> b(N * L, 0.0);
     q.for_each_point([&](std::size_t s, const std::uint32_t* node, const std::uint32_t*, const double* phi, int corners,
                          double weight) {
       const double* fs = &f[(per_site ? q.site_of(s) : s) * width];
@@ -675,7 +785,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
         const std::size_t r = node[j];
         const double w = weight * phi[j];
         if (w == 0 || inverse_diagonal[r] == 0) continue;
-        for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * fs[k];
+        for (std::size_t k = 0; k < width; ++k) b[r * L + k] += w * fs[k];
       }
     });
     // The first guess: the lumped-mass projection c0_i = b_i / sum_j M_ij (the L2 projection with M
@@ -684,7 +794,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     for (std::size_t i = 0; i < N; ++i) {
       const double m = A.lumped[i];
       for (std::size_t k = 0; k < width; ++k)  // divisor checked; off the system (no mass): 0 during CG
-        fit.values[i * width + k] = inverse_diagonal[i] != 0 && m > 0 ? b[i * width + k] / m : 0.0;
+        x[i * L + k] = inverse_diagonal[i] != 0 && m > 0 ? b[i * L + k] / m : 0.0;
     }
     BlockCgOptions cg;
     cg.tolerance = options.tolerance;
@@ -696,7 +806,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
-    block_conjugate_gradient(A, inverse_diagonal, off_system, b, width, cg, fit.values, fit);
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b, L, cg, x, fit);
+    if (L != width)
+      for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];
   }
   if (!off_system.empty()) {  // the nodes outside the system keep their point values
     const std::vector<double> at = point_values_at(off_system);
