@@ -22,6 +22,62 @@ double triangle_area(const std::vector<double>& positions, const std::uint32_t* 
   return 0.5 * length(triangle_area_vector(positions.data(), v[0], v[1], v[2]).N);
 }
 
+using Lanes4 = double __attribute__((vector_size(32)));
+using Mask4 = std::int64_t __attribute__((vector_size(32)));
+
+// area[t] = triangle_area of triangles [0, T) (3 vertex ids each), four at a time in 4-wide lanes:
+// the edges e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2 and their squared lengths; N = e_k x (-e_k+2)
+// about the apex k (geometry/face_area_vector.h: k = 2 when e0 is longest, 0 for e1, else 1;
+// -e_k+2 is its p_k+2 - p_k exactly, so N is its bits); its length as core/vec3.h's length
+// computes it (the largest |component| m factored out: m sqrt(|N / m|^2), or m itself when m is
+// 0, NaN or Inf; std::fmax's choice where a component is NaN); half of it. The same operations
+// per lane as triangle_area: the same bits (tests/fit checks zero, huge, tiny and non-finite
+// triangles), without the index reload, the std::fmax calls and the scalar divisions.
+__attribute__((target_clones("avx2", "default")))
+void triangle_areas(const std::vector<double>& positions, const std::uint32_t* tri_vertex, std::size_t T, double* area) {
+  const Mask4 magnitude = {0x7fffffffffffffff, 0x7fffffffffffffff, 0x7fffffffffffffff, 0x7fffffffffffffff};
+  const Lanes4 infinity = {HUGE_VAL, HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  const double* const P = positions.data();
+  std::size_t t = 0;
+  for (; t + 4 <= T; t += 4) {
+    Lanes4 p[3][3] = {};  // [corner][coordinate], a triangle per lane
+    for (int l = 0; l < 4; ++l)
+      for (int c = 0; c < 3; ++c) {
+        const double* v = P + 3 * std::size_t(tri_vertex[3 * (t + l) + c]);
+        for (int d = 0; d < 3; ++d) p[c][d][l] = v[d];
+      }
+    Lanes4 e[3][3];  // [edge][coordinate]
+    for (int d = 0; d < 3; ++d) {
+      e[0][d] = p[1][d] - p[0][d];
+      e[1][d] = p[2][d] - p[1][d];
+      e[2][d] = p[0][d] - p[2][d];
+    }
+    const Lanes4 l0 = e[0][0] * e[0][0] + e[0][1] * e[0][1] + e[0][2] * e[0][2];
+    const Lanes4 l1 = e[1][0] * e[1][0] + e[1][1] * e[1][1] + e[1][2] * e[1][2];
+    const Lanes4 l2 = e[2][0] * e[2][0] + e[2][1] * e[2][1] + e[2][2] * e[2][2];
+    const Mask4 apex2 = (l0 >= l1) & (l0 >= l2);            // apex_corner's ties, in its order
+    const Mask4 apex0 = ~apex2 & (l1 > l0) & (l1 >= l2);
+    Lanes4 a[3], b[3];  // apex 2: (e2, -e1); apex 0: (e0, -e2); apex 1: (e1, -e0)
+    for (int d = 0; d < 3; ++d) {
+      a[d] = apex2 ? e[2][d] : (apex0 ? e[0][d] : e[1][d]);
+      b[d] = -(apex2 ? e[1][d] : (apex0 ? e[2][d] : e[0][d]));
+    }
+    const Lanes4 x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
+    const Lanes4 ax = (Lanes4)((Mask4)x & magnitude), ay = (Lanes4)((Mask4)y & magnitude),
+                 az = (Lanes4)((Mask4)z & magnitude);
+    const Lanes4 m_yz = (az > ay) | (ay != ay) ? az : ay;  // std::fmax(ay, az)
+    const Lanes4 m = (m_yz > ax) | (ax != ax) ? m_yz : ax;  // std::fmax(ax, m_yz)
+    const Mask4 scaled = (m > 0) & (m < infinity);          // else m: zero, NaN or Inf, nothing to scale
+    const Lanes4 sx = x / m, sy = y / m, sz = z / m;        // divisor checked per lane (scaled)
+    const Lanes4 squared = sx * sx + sy * sy + sz * sz;
+    Lanes4 root;
+    for (int l = 0; l < 4; ++l) root[l] = std::sqrt(squared[l]);
+    const Lanes4 half = 0.5 * (scaled ? m * root : m);
+    std::memcpy(area + t, &half, sizeof half);
+  }
+  for (; t < T; ++t) area[t] = triangle_area(positions, tri_vertex + 3 * t);
+}
+
 // The bilinear map of quad q0..q3 at (u, v): its corner weights and area element |P_u x P_v|.
 struct BilinearPoint {
   double phi[4];
@@ -104,58 +160,78 @@ bool midpoint_edge(const std::uint32_t* vertex, const double* phi, int corners, 
 }
 
 // q.site and q.site_point (least_squares_fit.h, Sites). A midpoint's key is its edge's two
-// vertices; keys are bucketed by the lower vertex (counts, offsets, entries in point order: two
-// passes, no map), and a midpoint joins the site of the first point with the same key. When no
-// point is a midpoint (the 1-, 6- and 12-point rules, quads' Gauss points) both stay empty:
-// every point its own site. V: the vertex count.
+// vertices; keys are bucketed by the lower vertex (counts, offsets, entries (higher vertex, point)
+// in point order: two passes, no map), and a midpoint joins the site of the first point with the
+// same key. A triangle's rule point is a midpoint of the same local edge in every triangle, so
+// the rule is asked once; quads' points one by one. When no point is a midpoint (the 1-, 6- and
+// 12-point rules, quads' Gauss points) both stay empty: every point its own site. V: the vertex
+// count.
 void assign_sites(FitQuadrature& q, std::size_t V) {
-  const std::size_t S = q.size();
+  const std::size_t S = q.size(), R = q.rule.size(), T = q.tri_area.size();
   q.site.clear();
   q.site_point.clear();
-  bool rule_midpoints = false;  // a triangle rule point with two weights of 1/2
-  for (const QuadraturePoint& r : q.rule) {
+  std::vector<std::array<int, 2>> rule_edge(R, {-1, -1});  // local corners of a midpoint's edge, or -1
+  bool rule_midpoints = false;
+  for (std::size_t k = 0; k < R; ++k) {
     std::uint32_t lo = 0, hi = 0;
     const std::uint32_t local[3] = {0, 1, 2};
-    rule_midpoints = rule_midpoints || midpoint_edge(local, r.barycentric.data(), 3, lo, hi);
+    if (!midpoint_edge(local, q.rule[k].barycentric.data(), 3, lo, hi)) continue;
+    rule_edge[k] = {int(lo), int(hi)};
+    rule_midpoints = true;
   }
   if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
-  std::vector<std::uint64_t> key(S, ~std::uint64_t(0));  // (lo, hi) of a midpoint; all ones: none
+  constexpr std::uint64_t kNone = ~std::uint64_t(0);
+  std::vector<std::uint64_t> key(S, kNone);  // (lo, hi) of a midpoint; all ones: none
   std::size_t midpoints = 0;
-  q.for_each_point([&](std::size_t p, const std::uint32_t*, const std::uint32_t* vertex, const double* phi, int corners,
-                       double) {
-    if (corners == 3 && !rule_midpoints) return;
+  if (rule_midpoints)
+    for (std::size_t j = 0, p = 0; j < T; ++j)
+      for (std::size_t k = 0; k < R; ++k, ++p) {
+        if (rule_edge[k][0] < 0) continue;
+        const std::uint32_t a = q.tri_vertex[3 * j + rule_edge[k][0]], b = q.tri_vertex[3 * j + rule_edge[k][1]];
+        if (a == b) continue;  // not two distinct vertices: not an edge's midpoint (midpoint_edge's rule)
+        key[p] = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+        ++midpoints;
+      }
+  for (std::size_t m = 0, p = q.triangle_points(); m < q.quad_weight.size(); ++m, ++p) {
     std::uint32_t lo = 0, hi = 0;
-    if (!midpoint_edge(vertex, phi, corners, lo, hi)) return;
+    if (!midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi)) continue;
     key[p] = (std::uint64_t(lo) << 32) | hi;
     ++midpoints;
-  });
+  }
   if (midpoints == 0) return;  // every point its own site
-  q.site.assign(S, 0);
-  q.site_point.reserve(S);
   std::vector<std::uint32_t> offset(V + 1, 0);
   for (std::size_t p = 0; p < S; ++p)
-    if (key[p] != ~std::uint64_t(0)) ++offset[(key[p] >> 32) + 1];
+    if (key[p] != kNone) ++offset[(key[p] >> 32) + 1];
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
-  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1), entry_point(offset[V]);
+  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_point(offset[V]);
   for (std::size_t p = 0; p < S; ++p)
-    if (key[p] != ~std::uint64_t(0)) entry_point[fill[key[p] >> 32]++] = std::uint32_t(p);
+    if (key[p] != kNone) {
+      const std::uint32_t at = fill[key[p] >> 32]++;
+      entry_hi[at] = std::uint32_t(key[p]);
+      entry_point[at] = std::uint32_t(p);
+    }
+  q.site.resize(S);
+  q.site_point.resize(S);
+  std::size_t sites = 0;
   for (std::size_t p = 0; p < S; ++p) {
     std::size_t first = p;
-    if (key[p] != ~std::uint64_t(0)) {
+    if (key[p] != kNone) {
       const std::size_t lo = key[p] >> 32;
+      const std::uint32_t hi = std::uint32_t(key[p]);
       for (std::uint32_t k = offset[lo]; k < offset[lo + 1]; ++k)
-        if (key[entry_point[k]] == key[p]) {
+        if (entry_hi[k] == hi) {
           first = entry_point[k];  // entries are in point order: the first match is the earliest
           break;
         }
     }
     if (first == p) {
-      q.site[p] = std::uint32_t(q.site_point.size());
-      q.site_point.push_back(std::uint32_t(p));
+      q.site[p] = std::uint32_t(sites);
+      q.site_point[sites++] = std::uint32_t(p);
     } else {
       q.site[p] = q.site[first];
     }
   }
+  q.site_point.resize(sites);
 }
 
 // M + lambda R as element data (least_squares_fit.h), applied to a block of channels without
@@ -194,7 +270,6 @@ inline void add_triangle_product(const FitOperator& A, std::size_t t, const doub
 // scalar ones. Built for AVX2 and for the baseline (target_clones; no FMA): per lane the
 // operations of add_triangle_product, in the same order, so the same bits on either.
 // The triangles are taken from four quarters of the list in turn (apply_operator).
-using Lanes4 = double __attribute__((vector_size(32)));
 __attribute__((target_clones("avx2", "default")))
 void add_triangle_products_4(const FitOperator& A, const double* x, double* y) {
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
@@ -396,6 +471,35 @@ void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const
   }
 }
 
+// b_i += sum over the triangles' points of w_k phi_i(x_k) f(x_k) (least_squares_fit.h, b), 3
+// channels of f in 4 lanes of b per node (the fourth stays 0): one 4-wide update per corner where
+// the scalar loop does three; the same products and sums per lane, in point order, so the same
+// bits. Triangle points only (the quads' follow in the caller, in point order). inverse_diagonal:
+// 0 off the system (those rows stay 0).
+__attribute__((target_clones("avx2", "default")))
+void add_triangle_loads_4(const FitQuadrature& q, const double* f, bool per_site, const double* inverse_diagonal,
+                          double* b) {
+  const std::size_t R = q.rule.size(), T = q.tri_area.size();
+  const std::uint32_t* const nodes = q.triangle_nodes();
+  std::size_t p = 0;
+  for (std::size_t j = 0; j < T; ++j)
+    for (std::size_t k = 0; k < R; ++k, ++p) {
+      const double weight = q.rule[k].weight * q.tri_area[j];
+      const double* fs = f + 3 * (per_site ? q.site_of(p) : p);
+      const Lanes4 fv = {fs[0], fs[1], fs[2], 0};
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t r = nodes[3 * j + c];
+        const double w = weight * q.rule[k].barycentric[c];
+        if (w == 0 || inverse_diagonal[r] == 0) continue;
+        const Lanes4 wv = {w, w, w, 0};  // the fourth lane 0 * 0: 0 whatever w is
+        Lanes4 br;
+        std::memcpy(&br, b + 4 * r, sizeof br);
+        br += wv * fv;
+        std::memcpy(b + 4 * r, &br, sizeof br);
+      }
+    }
+}
+
 struct BlockCgOptions {
   double tolerance = 1e-10;   // relative residual per channel
   // > 0: also stop a channel once sum_i r_i^2 / inverse_mass_i <= accuracy_bound (least_squares_fit.h,
@@ -543,10 +647,18 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
   e.nodes = own_nodes ? nodes : mesh.num_vertices();
   const auto node_of = [&](std::size_t c) { return own_nodes ? corner_node[c] : mesh.corner_vertex[c]; };
   std::size_t triangles = 0, quads = 0;  // to size the arrays once
+  bool every_face_a_triangle = true;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const std::size_t size = mesh.face_size(f);
     quads += size == 4;
     triangles += size >= 3 && size != 4 ? size - 2 : 0;
+    every_face_a_triangle = every_face_a_triangle && size == 3;
+  }
+  if (every_face_a_triangle && !own_nodes) {  // the same arrays as the loop below: the corners, in order
+    e.tri_vertex = mesh.corner_vertex;
+    e.tri_face.resize(mesh.num_faces());
+    for (std::size_t f = 0; f < e.tri_face.size(); ++f) e.tri_face[f] = std::uint32_t(f);
+    return e;
   }
   e.tri_vertex.reserve(3 * triangles);
   if (own_nodes) e.tri_node.reserve(3 * triangles);  // else empty: the nodes are the vertices
@@ -589,11 +701,9 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
   q.element_triangles = T;
   // The areas in place, then the triangles of positive area kept (all of them, the common case: copies).
   q.tri_area.resize(T);
+  triangle_areas(positions, e.tri_vertex.data(), T, q.tri_area.data());
   std::size_t kept = 0;
-  for (std::size_t t = 0; t < T; ++t) {
-    q.tri_area[t] = triangle_area(positions, &e.tri_vertex[3 * t]);
-    kept += q.tri_area[t] > 0;  // no area, no part of the integral
-  }
+  for (std::size_t t = 0; t < T; ++t) kept += q.tri_area[t] > 0;  // no area, no part of the integral
   if (kept == T) {
     q.tri_node = e.tri_node;
     q.tri_vertex = e.tri_vertex;
@@ -778,8 +888,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     std::vector<double>& x = L != width ? padded : fit.values;
     // b for every channel in one pass over the points.
     std::vector<double> b(N * L, 0.0);
+    if (L == 4) add_triangle_loads_4(q, f.data(), per_site, inverse_diagonal.data(), b.data());
     q.for_each_point([&](std::size_t s, const std::uint32_t* node, const std::uint32_t*, const double* phi, int corners,
                          double weight) {
+      if (L == 4 && corners == 3) return;  // added above
       const double* fs = &f[(per_site ? q.site_of(s) : s) * width];
       for (int j = 0; j < corners; ++j) {
         const std::size_t r = node[j];
@@ -791,10 +903,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     // The first guess: the lumped-mass projection c0_i = b_i / sum_j M_ij (the L2 projection with M
     // replaced by its row-sum diagonal; exact for a constant f). It needs only b, not the point
     // values, so the result does not depend on whether the caller computed them. 0 off the system.
-    for (std::size_t i = 0; i < N; ++i) {
+    for (std::size_t i = 0; i < N; ++i) {  // all L lanes (a pad lane: b = 0, so 0), one vector division
       const double m = A.lumped[i];
-      for (std::size_t k = 0; k < width; ++k)  // divisor checked; off the system (no mass): 0 during CG
-        x[i * L + k] = inverse_diagonal[i] != 0 && m > 0 ? b[i * L + k] / m : 0.0;
+      const bool mass = inverse_diagonal[i] != 0 && m > 0;  // off the system (no mass): 0 during CG
+      for (std::size_t k = 0; k < L; ++k) x[i * L + k] = mass ? b[i * L + k] / m : 0.0;  // divisor checked
     }
     BlockCgOptions cg;
     cg.tolerance = options.tolerance;
