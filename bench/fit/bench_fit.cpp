@@ -202,7 +202,7 @@ int floor_table(const std::string& src, int repeats, std::size_t max_triangles, 
       for (int samples : {1, 3}) {
         const BakeResult normals = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {}, VertexColors::None);
         const FitQuadrature q0 = fit_quadrature(fit_elements(mesh), world, samples);
-        const std::vector<double> f0 = lighting_at_sites(mesh, scene, q0, world, normals.vertex_normals, {}, {});
+        std::vector<double> f0 = lighting_at_sites(mesh, scene, q0, world, normals.vertex_normals, {}, {});
         VertexFitOptions fit;
         fit.method = VertexFit::LeastSquares;
         fit.samples = samples;
@@ -226,7 +226,7 @@ int floor_table(const std::string& src, int repeats, std::size_t max_triangles, 
             const BakeResult none = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {}, VertexColors::None);
             const FitElements elements = fit_elements(mesh);
             const FitQuadrature q = fit_quadrature(elements, world, samples);
-            std::vector<double> f = f0;
+            std::vector<double>& f = f0;  // clamped in place: the same pass as the bake's, no copy
             for (double& v : f) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
             without_f = least_squares_fit(
                             elements, world, q, f,

@@ -160,12 +160,13 @@ bool midpoint_edge(const std::uint32_t* vertex, const double* phi, int corners, 
 }
 
 // q.site and q.site_point (least_squares_fit.h, Sites). A midpoint's key is its edge's two
-// vertices; keys are bucketed by the lower vertex (counts, offsets, entries (higher vertex, point)
-// in point order: two passes, no map), and a midpoint joins the site of the first point with the
-// same key. A triangle's rule point is a midpoint of the same local edge in every triangle, so
-// the rule is asked once; quads' points one by one. When no point is a midpoint (the 1-, 6- and
-// 12-point rules, quads' Gauss points) both stay empty: every point its own site. V: the vertex
-// count.
+// vertices, bucketed by the lower vertex (counts and offsets: no map). In point order, a midpoint
+// looks for its higher vertex among its bucket's entries so far: found, it joins that entry's site
+// (the first point with its key, since the entries are made in point order); not found, it opens a
+// new site and makes the entry. A triangle's rule point is a midpoint of the same local edge in
+// every triangle, so the rule is asked once; quads' points one by one. When no point is a midpoint
+// (the 1-, 6- and 12-point rules, quads' Gauss points) both stay empty: every point its own site.
+// V: the vertex count.
 void assign_sites(FitQuadrature& q, std::size_t V) {
   const std::size_t S = q.size(), R = q.rule.size(), T = q.tri_area.size();
   q.site.clear();
@@ -182,54 +183,47 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
   constexpr std::uint64_t kNone = ~std::uint64_t(0);
   std::vector<std::uint64_t> key(S, kNone);  // (lo, hi) of a midpoint; all ones: none
+  std::vector<std::uint32_t> offset(V + 1, 0);  // counts per lower vertex, then offsets
   std::size_t midpoints = 0;
+  const auto add = [&](std::size_t p, std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t lo = std::min(a, b);
+    key[p] = (std::uint64_t(lo) << 32) | std::max(a, b);
+    ++offset[lo + 1];
+    ++midpoints;
+  };
   if (rule_midpoints)
     for (std::size_t j = 0, p = 0; j < T; ++j)
       for (std::size_t k = 0; k < R; ++k, ++p) {
         if (rule_edge[k][0] < 0) continue;
         const std::uint32_t a = q.tri_vertex[3 * j + rule_edge[k][0]], b = q.tri_vertex[3 * j + rule_edge[k][1]];
-        if (a == b) continue;  // not two distinct vertices: not an edge's midpoint (midpoint_edge's rule)
-        key[p] = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-        ++midpoints;
+        if (a != b) add(p, a, b);  // two distinct vertices: an edge's midpoint (midpoint_edge's rule)
       }
   for (std::size_t m = 0, p = q.triangle_points(); m < q.quad_weight.size(); ++m, ++p) {
     std::uint32_t lo = 0, hi = 0;
-    if (!midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi)) continue;
-    key[p] = (std::uint64_t(lo) << 32) | hi;
-    ++midpoints;
+    if (midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi)) add(p, lo, hi);
   }
   if (midpoints == 0) return;  // every point its own site
-  std::vector<std::uint32_t> offset(V + 1, 0);
-  for (std::size_t p = 0; p < S; ++p)
-    if (key[p] != kNone) ++offset[(key[p] >> 32) + 1];
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
-  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_point(offset[V]);
-  for (std::size_t p = 0; p < S; ++p)
-    if (key[p] != kNone) {
-      const std::uint32_t at = fill[key[p] >> 32]++;
-      entry_hi[at] = std::uint32_t(key[p]);
-      entry_point[at] = std::uint32_t(p);
-    }
+  std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_site(offset[V]);
   q.site.resize(S);
   q.site_point.resize(S);
   std::size_t sites = 0;
   for (std::size_t p = 0; p < S; ++p) {
-    std::size_t first = p;
     if (key[p] != kNone) {
       const std::size_t lo = key[p] >> 32;
       const std::uint32_t hi = std::uint32_t(key[p]);
-      for (std::uint32_t k = offset[lo]; k < offset[lo + 1]; ++k)
-        if (entry_hi[k] == hi) {
-          first = entry_point[k];  // entries are in point order: the first match is the earliest
-          break;
-        }
+      std::uint32_t k = offset[lo];
+      while (k < end[lo] && entry_hi[k] != hi) ++k;
+      if (k < end[lo]) {  // an earlier point of this edge: its site
+        q.site[p] = entry_site[k];
+        continue;
+      }
+      entry_hi[k] = hi;  // the first point of this edge
+      entry_site[k] = std::uint32_t(sites);
+      ++end[lo];
     }
-    if (first == p) {
-      q.site[p] = std::uint32_t(sites);
-      q.site_point[sites++] = std::uint32_t(p);
-    } else {
-      q.site[p] = q.site[first];
-    }
+    q.site[p] = std::uint32_t(sites);
+    q.site_point[sites++] = std::uint32_t(p);
   }
   q.site_point.resize(sites);
 }
@@ -458,6 +452,37 @@ void lanes4_step(const double* p, const double* Ap, const double* inv_d, const d
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
 }
+// The first residual r = b - Ap (b_then_r: b in, r out), with sum b^2, sum r^2 and (inv_m
+// non-null) sum r^2 inv_m_i, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, double* b_then_r, double rhs2_out[4],
+                     double res2_out[4], double res_mass_out[4]) {
+  Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, bi, Api;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&bi, b_then_r + 4 * i, sizeof bi);
+    std::memcpy(&Api, Ap + 4 * i, sizeof Api);
+    const Lanes4 ri = bi - Api;
+    std::memcpy(b_then_r + 4 * i, &ri, sizeof ri);
+    rhs2 += bi * bi;
+    res2 += ri * ri;
+    if (inv_m) res_mass += ri * ri * inv_m[i];
+  }
+  std::memcpy(rhs2_out, &rhs2, sizeof rhs2);
+  std::memcpy(res2_out, &res2, sizeof res2);
+  std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
+}
+// The first direction p = inv_d_i r, with sum r p, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_first_direction(const double* r, const double* inv_d, std::size_t N, double* p, double abs_out[4]) {
+  Lanes4 abs = {0, 0, 0, 0}, ri;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
+    const Lanes4 pi = ri * inv_d[i];
+    std::memcpy(p + 4 * i, &pi, sizeof pi);
+    abs += ri * pi;
+  }
+  std::memcpy(abs_out, &abs, sizeof abs);
+}
 // p = inv_d_i r + beta p, per lane.
 __attribute__((target_clones("avx2", "default")))
 void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double beta_in[4], double* p) {
@@ -475,7 +500,7 @@ void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const
 // channels of f in 4 lanes of b per node (the fourth stays 0): one 4-wide update per corner where
 // the scalar loop does three; the same products and sums per lane, in point order, so the same
 // bits. Triangle points only (the quads' follow in the caller, in point order). inverse_diagonal:
-// 0 off the system (those rows stay 0).
+// 0 off the system (those rows stay 0); null when every node is in the system.
 __attribute__((target_clones("avx2", "default")))
 void add_triangle_loads_4(const FitQuadrature& q, const double* f, bool per_site, const double* inverse_diagonal,
                           double* b) {
@@ -490,7 +515,7 @@ void add_triangle_loads_4(const FitQuadrature& q, const double* f, bool per_site
       for (int c = 0; c < 3; ++c) {
         const std::size_t r = nodes[3 * j + c];
         const double w = weight * q.rule[k].barycentric[c];
-        if (w == 0 || inverse_diagonal[r] == 0) continue;
+        if (w == 0 || (inverse_diagonal && inverse_diagonal[r] == 0)) continue;
         const Lanes4 wv = {w, w, w, 0};  // the fourth lane 0 * 0: 0 whatever w is
         Lanes4 br;
         std::memcpy(&br, b + 4 * r, sizeof br);
@@ -537,14 +562,18 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   const bool bounded = o.accuracy_bound > 0 && inv_m;
   const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
   apply(x, Ap);
-  for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
-    for (std::size_t k = 0; k < W; ++k) {
-      const double bi = r[i + k];
-      r[i + k] = bi - Ap[i + k];
-      rhs2[k] += bi * bi;
-      res2[k] += r[i + k] * r[i + k];
-      if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
-    }
+  if constexpr (W == 4) {
+    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, r, rhs2.data(), res2.data(), res_mass.data());
+  } else {
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) {
+        const double bi = r[i + k];
+        r[i + k] = bi - Ap[i + k];
+        rhs2[k] += bi * bi;
+        res2[k] += r[i + k] * r[i + k];
+        if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
+      }
+  }
   std::size_t running = 0;
   for (std::size_t k = 0; k < W; ++k) {
     threshold[k] = std::max(o.tolerance * o.tolerance * rhs2[k], std::numeric_limits<double>::min());
@@ -557,11 +586,15 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       ++running;
     }
   }
-  for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
-    for (std::size_t k = 0; k < W; ++k) {
-      p[i + k] = r[i + k] * inv_d[node];
-      abs_new[k] += r[i + k] * p[i + k];
-    }
+  if constexpr (W == 4) {
+    lanes4_first_direction(r, inv_d, N, p, abs_new.data());
+  } else {
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) {
+        p[i + k] = r[i + k] * inv_d[node];
+        abs_new[k] += r[i + k] * p[i + k];
+      }
+  }
   int iterations = 0;
   while (running > 0 && iterations < o.max_iterations) {
     apply(p, Ap);
@@ -888,7 +921,8 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     std::vector<double>& x = L != width ? padded : fit.values;
     // b for every channel in one pass over the points.
     std::vector<double> b(N * L, 0.0);
-    if (L == 4) add_triangle_loads_4(q, f.data(), per_site, inverse_diagonal.data(), b.data());
+    if (L == 4)
+      add_triangle_loads_4(q, f.data(), per_site, off_system.empty() ? nullptr : inverse_diagonal.data(), b.data());
     q.for_each_point([&](std::size_t s, const std::uint32_t* node, const std::uint32_t*, const double* phi, int corners,
                          double weight) {
       if (L == 4 && corners == 3) return;  // added above
