@@ -65,8 +65,8 @@ void triangle_areas(const std::vector<double>& positions, const std::uint32_t* t
     const Lanes4 x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
     const Lanes4 ax = (Lanes4)((Mask4)x & magnitude), ay = (Lanes4)((Mask4)y & magnitude),
                  az = (Lanes4)((Mask4)z & magnitude);
-    const Lanes4 m_yz = (az > ay) | (ay != ay) ? az : ay;  // std::fmax(ay, az)
-    const Lanes4 m = (m_yz > ax) | (ax != ax) ? m_yz : ax;  // std::fmax(ax, m_yz)
+    const Lanes4 m_yz = ((az > ay) | (ay != ay)) ? az : ay;  // std::fmax(ay, az)
+    const Lanes4 m = ((m_yz > ax) | (ax != ax)) ? m_yz : ax;  // std::fmax(ax, m_yz)
     const Mask4 scaled = (m > 0) & (m < infinity);          // else m: zero, NaN or Inf, nothing to scale
     const Lanes4 sx = x / m, sy = y / m, sz = z / m;        // divisor checked per lane (scaled)
     const Lanes4 squared = sx * sx + sy * sy + sz * sz;
