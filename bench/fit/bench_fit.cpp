@@ -15,6 +15,8 @@
 //                  (the least-squares time per stage)
 //        bench_fit errors SRC_DIR [MAX_TRIANGLES]   (error at several λ, with and without 8-bit bounds)
 //        bench_fit variants SRC_DIR   (error of each objective and bound handling for 8-bit output)
+//        bench_fit floor SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window]
+//                  (default 11, 20000: the ratio's floor, the shading at the sites, and the rest)
 // FIT_THREADS=N in the environment: at most N threads (1: no thread pool spin in the CPU times).
 // FIT_MALLOC_KEEP=1: freed memory kept by the allocator (no page faults of first touch after the
 // first repetition).
@@ -164,6 +166,94 @@ int breakdown(const std::string& src, int repeats, std::size_t max_triangles, st
         std::printf("| torus %zuk tri | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.2f | %.1f |\n",
                     mesh.num_faces() / 1000, name, samples, median(t_point), median(t_normals), median(t_quad), median(t_f),
                     median(t_asm), median(t_cg), iterations, total, double(points) / double(mesh.num_vertices()));
+        std::fflush(stdout);
+      }
+    }
+  }
+  return 0;
+}
+
+// The floor of the least-squares bake's ratio to the point bake (issue 30's time goal at 3 points):
+// per torus, scene and rule, process CPU medians of `repeats` runs, the rows round-robin in each:
+//   point bake       bake_lighting, VertexColors::All (the normals and the shading at the vertices)
+//   normals only     bake_lighting, VertexColors::None (what the least-squares bake runs of it)
+//   f at the sites   lighting_at_sites on a quadrature built beforehand: the shading (and the
+//                    interpolation of p and n) the fit cannot do without, at ~2 (1 pt) or ~3
+//                    (3 pt, shared edge midpoints) sites per vertex against the point bake's 1
+//   LS without f     fit_vertex_lighting's steps with f read from values computed beforehand:
+//                    elements, quadrature, the clamp of f, least_squares_fit (8-bit accuracy)
+//   LS               the whole bake, as the table's row
+// floor = (normals only + f at the sites) / point bake: the ratio no change to the quadrature or
+// the solve can go below; rest = (LS without f - normals only) / point bake: what they cost.
+int floor_table(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles,
+                const std::string& only_scene) {
+  std::printf("| mesh | scene | pt | point bake | normals only | f at the sites | LS without f | LS | sites / vertex | "
+              "LS x point | floor x point | rest x point |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
+  for (const auto& sz : sizes) {
+    const std::size_t triangles = std::size_t(2 * sz[0] * sz[1]);
+    if (triangles > max_triangles || triangles < min_triangles) continue;
+    const Mesh mesh = testing::torus(sz[0], sz[1], 1.0, 0.4).mesh;
+    for (const char* name : {"studio", "window"}) {
+      if (!only_scene.empty() && only_scene != name) continue;
+      const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
+      const std::vector<double> world = world_positions(mesh, scene);
+      for (int samples : {1, 3}) {
+        const BakeResult normals = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {}, VertexColors::None);
+        const FitQuadrature q0 = fit_quadrature(fit_elements(mesh), world, samples);
+        std::vector<double> f0 = lighting_at_sites(mesh, scene, q0, world, normals.vertex_normals, {}, {});
+        VertexFitOptions fit;
+        fit.method = VertexFit::LeastSquares;
+        fit.samples = samples;
+        fit.solve.upper = 1;
+        fit.solve.accuracy = kEightBitFitAccuracy;
+        fit.measure_error = false;
+        std::vector<double> t[5];
+        std::vector<double> without_f, with_f;
+        for (int k = 0; k < repeats; ++k) {
+          double c0 = cpu_ms();
+          bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+          t[0].push_back(cpu_ms() - c0);
+          c0 = cpu_ms();
+          const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {}, VertexColors::None);
+          t[1].push_back(cpu_ms() - c0);
+          c0 = cpu_ms();
+          lighting_at_sites(mesh, scene, q0, world, point.vertex_normals, {}, {});
+          t[2].push_back(cpu_ms() - c0);
+          c0 = cpu_ms();
+          {  // fit_vertex_lighting's steps (the placement is the identity: the mesh's positions), f read
+            const BakeResult none = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {}, VertexColors::None);
+            const FitElements elements = fit_elements(mesh);
+            const FitQuadrature q = fit_quadrature(elements, world, samples);
+            std::vector<double>& f = f0;  // clamped in place: the same pass as the bake's, no copy
+            for (double& v : f) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
+            without_f = least_squares_fit(
+                            elements, world, q, f,
+                            [&](const std::vector<std::uint32_t>& nodes) {
+                              ShadeCounters counters;
+                              return bake_vertex_colors(mesh, scene, none, nodes, {}, {}, counters);
+                            },
+                            3, fit.solve)
+                            .values;
+          }
+          t[3].push_back(cpu_ms() - c0);
+          c0 = cpu_ms();
+          with_f = fit_vertex_lighting(mesh, scene, bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {},
+                                                                  VertexColors::None),
+                                       {}, {}, fit)
+                       .rgb;
+          t[4].push_back(cpu_ms() - c0);
+        }
+        if (without_f != with_f) {
+          std::fprintf(stderr, "bench_fit floor: the bake without f differs from fit_vertex_lighting's\n");
+          return 1;
+        }
+        const double point = median(t[0]);
+        std::printf("| torus %zuk tri | %s | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.1f | %.2f | %.2f | %.2f |\n",
+                    mesh.num_faces() / 1000, name, samples, point, median(t[1]), median(t[2]), median(t[3]),
+                    median(t[4]), double(q0.sites()) / double(mesh.num_vertices()), median(t[4]) / point,
+                    (median(t[1]) + median(t[2])) / point, (median(t[3]) - median(t[1])) / point);
         std::fflush(stdout);
       }
     }
@@ -405,6 +495,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (mode == "errors") return errors(src, argc > 3 ? std::size_t(std::atoll(argv[3])) : 20000);
+  if (mode == "floor")
+    return floor_table(src, argc > 3 ? std::atoi(argv[3]) : 11, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000,
+                       argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 ? argv[6] : "");
   if (mode == "breakdown")
     return breakdown(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000,
                      argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 ? argv[6] : "");

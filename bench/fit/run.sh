@@ -3,7 +3,8 @@
 # Usage: bench/fit/run.sh [REPEATS] [MAX_TRIANGLES]   (default 7, 200000: the 10k and 100k tori;
 # 2000000 adds the 1M one). results.md's 1M rows: `bench_fit table SRC 3 2000000 1000000` (3
 # repetitions, that size only); its other tables: `bench_fit breakdown SRC 11 20000`,
-# `bench_fit variants SRC`, `bench_fit errors SRC 20000`, and the base/branch rounds of
+# `bench_fit variants SRC`, `bench_fit errors SRC 20000`, `FIT_MALLOC_KEEP=1 bench_fit floor SRC 11
+# 20000` (the ratio's floor), and the base/branch rounds of
 # `bench_fit table SRC 7 20000` described there.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"

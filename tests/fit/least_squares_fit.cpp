@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
+#include <array>
 #include <functional>
 #include <random>
 #include <tuple>
@@ -17,6 +20,7 @@
 
 #include <shadetool/fit/least_squares_fit.h>
 #include <shadetool/fit/vertex_fit.h>
+#include <shadetool/geometry/face_area_vector.h>
 
 #include "support/analytic_meshes.h"
 
@@ -289,6 +293,51 @@ TEST_CASE("With an accuracy, CG stops early and every value is still within it o
   }
 }
 
+TEST_CASE("Three channels solved together (4-wide lanes) equal each channel solved alone, bit for bit",
+          "[fit][least_squares]") {
+  // Truth: the one-channel solve (scalar loops, its own CG) of each channel. Three channels run in
+  // 4-wide lanes (a zero fourth channel) through their own operator and vector passes; every lane
+  // must do the scalar operations in the scalar order, stop on its own test and keep its value
+  // after: any mix-up of lanes, reordered sum or shared step length changes bits. On a torus
+  // (triangles) and jittered planar quads, with and without the regulariser, with and without the
+  // 8-bit accuracy stop.
+  const Mesh torus = shadetool::testing::torus(24, 12, 1.0, 0.4, 0.1).mesh;
+  const Mesh quads = planar_quads(9, 7);
+  for (const Mesh* mesh : {&torus, &quads})
+    for (double lambda : {0.0, 1e-2})
+      for (double accuracy : {0.0, kEightBitFitAccuracy}) {
+        const FitElements e = fit_elements(*mesh);
+        const FitQuadrature q = fit_quadrature(e, mesh->positions, 3);
+        const std::vector<double> x = interpolate_vertex_data(q, mesh->positions, 3);
+        std::vector<double> f3(3 * q.size()), point3(3 * mesh->num_vertices(), 0.0);
+        for (std::size_t s = 0; s < q.size(); ++s) {
+          const Vec3d p = get3(x, s);
+          f3[3 * s] = 0.5 + 0.5 * std::sin(3 * p.x + p.y);  // three unrelated smooth signals
+          f3[3 * s + 1] = p.z * p.z + 0.2 * p.x * p.y;
+          f3[3 * s + 2] = std::exp(-p.x * p.x - 2 * p.y * p.y);
+        }
+        LeastSquaresFitOptions o;
+        o.regularization = lambda;
+        o.accuracy = accuracy;
+        o.lower = -1e300;
+        const LeastSquaresFit together = least_squares_fit(e, mesh->positions, q, f3, point3, 3, o);
+        int most = 0;
+        for (int k = 0; k < 3; ++k) {
+          std::vector<double> f1(q.size()), point1(mesh->num_vertices(), 0.0);
+          for (std::size_t s = 0; s < q.size(); ++s) f1[s] = f3[3 * s + k];
+          const LeastSquaresFit alone = least_squares_fit(e, mesh->positions, q, f1, point1, 1, o);
+          most = std::max(most, alone.iterations);
+          std::size_t differ = 0;
+          for (std::size_t v = 0; v < mesh->num_vertices(); ++v) differ += together.values[3 * v + k] != alone.values[v];
+          INFO("channel " << k << ", lambda " << lambda << ", accuracy " << accuracy << ", "
+                          << mesh->num_vertices() << " vertices");
+          CHECK(alone.iterations > 0);
+          CHECK(differ == 0);
+        }
+        CHECK(together.iterations == most);  // the most over the channels
+      }
+}
+
 TEST_CASE("A linear signal is reproduced exactly: fit = point values, with and without the regulariser",
           "[fit][least_squares]") {
   // planar: the unfolded kink of a linear function is zero, so R does not move the solution
@@ -448,6 +497,88 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
       CHECK(q.sites() == q.size());
     }
   }
+}
+
+TEST_CASE("The quadrature's triangle areas are the scalar formula's bits, for ordinary, huge, tiny, flat and non-finite triangles",
+          "[fit][quadrature]") {
+  // Truth: 0.5 |N| by geometry/face_area_vector.h's triangle_area_vector and core/vec3.h's length,
+  // per triangle, here; fit_quadrature computes them four at a time in lanes and must give the
+  // same bits (they weigh every quadrature point and scale the mass matrix). Triangles of every
+  // apex (ties included), scaled by 1e200 and 1e-200 (length's overflow-safe path), repeated and
+  // collinear corners (area 0: left out), NaN and Inf corners (left out, or kept at Inf), and a
+  // count that is no multiple of 4 (the scalar tail).
+  Mesh m;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (double scale : {1.0, 1e200, 1e-200, 3e-320})
+    for (int i = 0; i < 13; ++i) {
+      const std::uint32_t a = std::uint32_t(m.num_vertices());
+      for (int c = 0; c < 3; ++c) m.add_vertex({scale * u(rng), scale * u(rng), scale * u(rng)});
+      m.add_face({a, a + 1, a + 2});
+    }
+  const std::uint32_t b = std::uint32_t(m.num_vertices());
+  for (const Vec3d& p : std::vector<Vec3d>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}, {nan, 0, 0}, {inf, 0, 0},
+                                           {0, inf, 1}, {1, 1, 0}})
+    m.add_vertex(p);
+  for (const std::array<std::uint32_t, 3>& f : std::vector<std::array<std::uint32_t, 3>>{
+           {b, b + 1, b + 2}, {b + 1, b + 2, b}, {b + 2, b, b + 1},          // each apex
+           {b, b + 1, b + 7}, {b + 1, b + 7, b}, {b, b + 2, b + 7},          // right isosceles: ties
+           {b, b + 1, b + 3}, {b, b, b + 2},                                 // collinear, repeated
+           {b, b + 1, b + 4}, {b, b + 1, b + 5}, {b, b + 2, b + 6}, {b + 5, b + 6, b}})  // NaN, Inf
+    m.add_face({f[0], f[1], f[2]});
+  const FitElements e = fit_elements(m);
+  const FitQuadrature q = fit_quadrature(e, m.positions, 1);
+  std::vector<double> expected;
+  std::vector<std::uint32_t> faces;
+  for (std::size_t t = 0; t < e.tri_face.size(); ++t) {
+    const std::uint32_t* v = &e.tri_vertex[3 * t];
+    const double area = 0.5 * length(triangle_area_vector(m.positions.data(), v[0], v[1], v[2]).N);
+    if (!(area > 0)) continue;
+    expected.push_back(area);
+    faces.push_back(e.tri_face[t]);
+  }
+  INFO(m.num_faces() << " triangles, " << expected.size() << " of positive area");
+  REQUIRE(q.tri_face == faces);
+  std::size_t differ = 0, infinite = 0;
+  for (std::size_t t = 0; t < expected.size(); ++t) {
+    differ += std::memcmp(&q.tri_area[t], &expected[t], sizeof(double)) != 0;
+    infinite += std::isinf(expected[t]);
+  }
+  CHECK(differ == 0);
+  CHECK(infinite > 0);  // the Inf corners' triangles are kept (area Inf), as the scalar rule keeps them
+  CHECK(expected.size() < m.num_faces());  // and the flat and NaN ones left out
+}
+
+TEST_CASE("The elements are the faces' fans from corner 0, in face order, also when the corners number 3 per face",
+          "[fit][quadrature]") {
+  // Truth: the fans written out by hand. A mesh of triangles only takes a short way (its corners
+  // are its triangles); a pentagon with two 2-gons also has 3 corners per face on average and must
+  // not take it (3 fan triangles, 2 faces skipped), nor a triangle mesh with corner groups.
+  Mesh tris;
+  for (int i = 0; i < 5; ++i) tris.add_vertex({double(i), double(i * i % 3), 0});
+  tris.add_face({0, 1, 2});
+  tris.add_face({2, 1, 3});
+  tris.add_face({4, 2, 3});
+  const FitElements a = fit_elements(tris);
+  CHECK(a.tri_vertex == std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3, 4, 2, 3});
+  CHECK(a.tri_face == std::vector<std::uint32_t>{0, 1, 2});
+  CHECK(a.tri_node.empty());
+  CHECK(a.nodes == 5);
+  const FitElements grouped = fit_elements(tris, {0, 1, 2, 3, 4, 5, 6, 7, 8}, 9);
+  CHECK(grouped.tri_vertex == a.tri_vertex);
+  CHECK(grouped.tri_node == std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6, 7, 8});
+  Mesh mixed = tris;
+  mixed.face_start = {0};
+  mixed.corner_vertex.clear();
+  mixed.add_face({0, 1, 3, 4, 2});  // a pentagon: fan (0 1 3) (0 3 4) (0 4 2)
+  mixed.add_face({1, 2});
+  mixed.add_face({3, 4});
+  REQUIRE(mixed.num_corners() == 3 * mixed.num_faces());
+  const FitElements b = fit_elements(mixed);
+  CHECK(b.tri_vertex == std::vector<std::uint32_t>{0, 1, 3, 0, 3, 4, 0, 4, 2});
+  CHECK(b.tri_face == std::vector<std::uint32_t>{0, 0, 0});
+  CHECK(b.skipped_faces == 2);
 }
 
 TEST_CASE("The compact quadrature integrates 1 and x over a planar mesh exactly, and skips triangles of no area",

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 
@@ -19,6 +20,62 @@ Vec3d vertex_position(const std::vector<double>& positions, std::uint32_t v) { r
 
 double triangle_area(const std::vector<double>& positions, const std::uint32_t* v) {
   return 0.5 * length(triangle_area_vector(positions.data(), v[0], v[1], v[2]).N);
+}
+
+using Lanes4 = double __attribute__((vector_size(32)));
+using Mask4 = std::int64_t __attribute__((vector_size(32)));
+
+// area[t] = triangle_area of triangles [0, T) (3 vertex ids each), four at a time in 4-wide lanes:
+// the edges e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2 and their squared lengths; N = e_k x (-e_k+2)
+// about the apex k (geometry/face_area_vector.h: k = 2 when e0 is longest, 0 for e1, else 1;
+// -e_k+2 is its p_k+2 - p_k exactly, so N is its bits); its length as core/vec3.h's length
+// computes it (the largest |component| m factored out: m sqrt(|N / m|^2), or m itself when m is
+// 0, NaN or Inf; std::fmax's choice where a component is NaN); half of it. The same operations
+// per lane as triangle_area: the same bits (tests/fit checks zero, huge, tiny and non-finite
+// triangles), without the index reload, the std::fmax calls and the scalar divisions.
+__attribute__((target_clones("avx2", "default")))
+void triangle_areas(const std::vector<double>& positions, const std::uint32_t* tri_vertex, std::size_t T, double* area) {
+  const Mask4 magnitude = {0x7fffffffffffffff, 0x7fffffffffffffff, 0x7fffffffffffffff, 0x7fffffffffffffff};
+  const Lanes4 infinity = {HUGE_VAL, HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  const double* const P = positions.data();
+  std::size_t t = 0;
+  for (; t + 4 <= T; t += 4) {
+    Lanes4 p[3][3] = {};  // [corner][coordinate], a triangle per lane
+    for (int l = 0; l < 4; ++l)
+      for (int c = 0; c < 3; ++c) {
+        const double* v = P + 3 * std::size_t(tri_vertex[3 * (t + l) + c]);
+        for (int d = 0; d < 3; ++d) p[c][d][l] = v[d];
+      }
+    Lanes4 e[3][3];  // [edge][coordinate]
+    for (int d = 0; d < 3; ++d) {
+      e[0][d] = p[1][d] - p[0][d];
+      e[1][d] = p[2][d] - p[1][d];
+      e[2][d] = p[0][d] - p[2][d];
+    }
+    const Lanes4 l0 = e[0][0] * e[0][0] + e[0][1] * e[0][1] + e[0][2] * e[0][2];
+    const Lanes4 l1 = e[1][0] * e[1][0] + e[1][1] * e[1][1] + e[1][2] * e[1][2];
+    const Lanes4 l2 = e[2][0] * e[2][0] + e[2][1] * e[2][1] + e[2][2] * e[2][2];
+    const Mask4 apex2 = (l0 >= l1) & (l0 >= l2);            // apex_corner's ties, in its order
+    const Mask4 apex0 = ~apex2 & (l1 > l0) & (l1 >= l2);
+    Lanes4 a[3], b[3];  // apex 2: (e2, -e1); apex 0: (e0, -e2); apex 1: (e1, -e0)
+    for (int d = 0; d < 3; ++d) {
+      a[d] = apex2 ? e[2][d] : (apex0 ? e[0][d] : e[1][d]);
+      b[d] = -(apex2 ? e[1][d] : (apex0 ? e[2][d] : e[0][d]));
+    }
+    const Lanes4 x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
+    const Lanes4 ax = (Lanes4)((Mask4)x & magnitude), ay = (Lanes4)((Mask4)y & magnitude),
+                 az = (Lanes4)((Mask4)z & magnitude);
+    const Lanes4 m_yz = ((az > ay) | (ay != ay)) ? az : ay;  // std::fmax(ay, az)
+    const Lanes4 m = ((m_yz > ax) | (ax != ax)) ? m_yz : ax;  // std::fmax(ax, m_yz)
+    const Mask4 scaled = (m > 0) & (m < infinity);          // else m: zero, NaN or Inf, nothing to scale
+    const Lanes4 sx = x / m, sy = y / m, sz = z / m;        // divisor checked per lane (scaled)
+    const Lanes4 squared = sx * sx + sy * sy + sz * sz;
+    Lanes4 root;
+    for (int l = 0; l < 4; ++l) root[l] = std::sqrt(squared[l]);
+    const Lanes4 half = 0.5 * (scaled ? m * root : m);
+    std::memcpy(area + t, &half, sizeof half);
+  }
+  for (; t < T; ++t) area[t] = triangle_area(positions, tri_vertex + 3 * t);
 }
 
 // The bilinear map of quad q0..q3 at (u, v): its corner weights and area element |P_u x P_v|.
@@ -103,58 +160,72 @@ bool midpoint_edge(const std::uint32_t* vertex, const double* phi, int corners, 
 }
 
 // q.site and q.site_point (least_squares_fit.h, Sites). A midpoint's key is its edge's two
-// vertices; keys are bucketed by the lower vertex (counts, offsets, entries in point order: two
-// passes, no map), and a midpoint joins the site of the first point with the same key. When no
-// point is a midpoint (the 1-, 6- and 12-point rules, quads' Gauss points) both stay empty:
-// every point its own site. V: the vertex count.
+// vertices, bucketed by the lower vertex (counts and offsets: no map). In point order, a midpoint
+// looks for its higher vertex among its bucket's entries so far: found, it joins that entry's site
+// (the first point with its key, since the entries are made in point order); not found, it opens a
+// new site and makes the entry. A triangle's rule point is a midpoint of the same local edge in
+// every triangle, so the rule is asked once; quads' points one by one. When no point is a midpoint
+// (the 1-, 6- and 12-point rules, quads' Gauss points) both stay empty: every point its own site.
+// V: the vertex count.
 void assign_sites(FitQuadrature& q, std::size_t V) {
-  const std::size_t S = q.size();
+  const std::size_t S = q.size(), R = q.rule.size(), T = q.tri_area.size();
   q.site.clear();
   q.site_point.clear();
-  bool rule_midpoints = false;  // a triangle rule point with two weights of 1/2
-  for (const QuadraturePoint& r : q.rule) {
+  std::vector<std::array<int, 2>> rule_edge(R, {-1, -1});  // local corners of a midpoint's edge, or -1
+  bool rule_midpoints = false;
+  for (std::size_t k = 0; k < R; ++k) {
     std::uint32_t lo = 0, hi = 0;
     const std::uint32_t local[3] = {0, 1, 2};
-    rule_midpoints = rule_midpoints || midpoint_edge(local, r.barycentric.data(), 3, lo, hi);
+    if (!midpoint_edge(local, q.rule[k].barycentric.data(), 3, lo, hi)) continue;
+    rule_edge[k] = {int(lo), int(hi)};
+    rule_midpoints = true;
   }
   if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
-  std::vector<std::uint64_t> key(S, ~std::uint64_t(0));  // (lo, hi) of a midpoint; all ones: none
+  constexpr std::uint64_t kNone = ~std::uint64_t(0);
+  std::vector<std::uint64_t> key(S, kNone);  // (lo, hi) of a midpoint; all ones: none
+  std::vector<std::uint32_t> offset(V + 1, 0);  // counts per lower vertex, then offsets
   std::size_t midpoints = 0;
-  q.for_each_point([&](std::size_t p, const std::uint32_t*, const std::uint32_t* vertex, const double* phi, int corners,
-                       double) {
-    if (corners == 3 && !rule_midpoints) return;
-    std::uint32_t lo = 0, hi = 0;
-    if (!midpoint_edge(vertex, phi, corners, lo, hi)) return;
-    key[p] = (std::uint64_t(lo) << 32) | hi;
+  const auto add = [&](std::size_t p, std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t lo = std::min(a, b);
+    key[p] = (std::uint64_t(lo) << 32) | std::max(a, b);
+    ++offset[lo + 1];
     ++midpoints;
-  });
-  if (midpoints == 0) return;  // every point its own site
-  q.site.assign(S, 0);
-  q.site_point.reserve(S);
-  std::vector<std::uint32_t> offset(V + 1, 0);
-  for (std::size_t p = 0; p < S; ++p)
-    if (key[p] != ~std::uint64_t(0)) ++offset[(key[p] >> 32) + 1];
-  for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
-  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1), entry_point(offset[V]);
-  for (std::size_t p = 0; p < S; ++p)
-    if (key[p] != ~std::uint64_t(0)) entry_point[fill[key[p] >> 32]++] = std::uint32_t(p);
-  for (std::size_t p = 0; p < S; ++p) {
-    std::size_t first = p;
-    if (key[p] != ~std::uint64_t(0)) {
-      const std::size_t lo = key[p] >> 32;
-      for (std::uint32_t k = offset[lo]; k < offset[lo + 1]; ++k)
-        if (key[entry_point[k]] == key[p]) {
-          first = entry_point[k];  // entries are in point order: the first match is the earliest
-          break;
-        }
-    }
-    if (first == p) {
-      q.site[p] = std::uint32_t(q.site_point.size());
-      q.site_point.push_back(std::uint32_t(p));
-    } else {
-      q.site[p] = q.site[first];
-    }
+  };
+  if (rule_midpoints)
+    for (std::size_t j = 0, p = 0; j < T; ++j)
+      for (std::size_t k = 0; k < R; ++k, ++p) {
+        if (rule_edge[k][0] < 0) continue;
+        const std::uint32_t a = q.tri_vertex[3 * j + rule_edge[k][0]], b = q.tri_vertex[3 * j + rule_edge[k][1]];
+        if (a != b) add(p, a, b);  // two distinct vertices: an edge's midpoint (midpoint_edge's rule)
+      }
+  for (std::size_t m = 0, p = q.triangle_points(); m < q.quad_weight.size(); ++m, ++p) {
+    std::uint32_t lo = 0, hi = 0;
+    if (midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi)) add(p, lo, hi);
   }
+  if (midpoints == 0) return;  // every point its own site
+  for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
+  std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_site(offset[V]);
+  q.site.resize(S);
+  q.site_point.resize(S);
+  std::size_t sites = 0;
+  for (std::size_t p = 0; p < S; ++p) {
+    if (key[p] != kNone) {
+      const std::size_t lo = key[p] >> 32;
+      const std::uint32_t hi = std::uint32_t(key[p]);
+      std::uint32_t k = offset[lo];
+      while (k < end[lo] && entry_hi[k] != hi) ++k;
+      if (k < end[lo]) {  // an earlier point of this edge: its site
+        q.site[p] = entry_site[k];
+        continue;
+      }
+      entry_hi[k] = hi;  // the first point of this edge
+      entry_site[k] = std::uint32_t(sites);
+      ++end[lo];
+    }
+    q.site[p] = std::uint32_t(sites);
+    q.site_point[sites++] = std::uint32_t(p);
+  }
+  q.site_point.resize(sites);
 }
 
 // M + lambda R as element data (least_squares_fit.h), applied to a block of channels without
@@ -188,6 +259,37 @@ inline void add_triangle_product(const FitOperator& A, std::size_t t, const doub
   }
 }
 
+// The same for every triangle, 4 lanes per node (3 channels and a zero pad, least_squares_fit's
+// layout for 3 channels): one 4-wide operation per node where add_triangle_product<3> does three
+// scalar ones. Built for AVX2 and for the baseline (target_clones; no FMA): per lane the
+// operations of add_triangle_product, in the same order, so the same bits on either.
+// The triangles are taken from four quarters of the list in turn (apply_operator).
+__attribute__((target_clones("avx2", "default")))
+void add_triangle_products_4(const FitOperator& A, const double* x, double* y) {
+  const std::size_t T = A.triangles, Q = (T + 3) / 4;
+  for (std::size_t i = 0; i < Q; ++i)
+    for (std::size_t t = i; t < T; t += Q) {
+      const double s = A.tri_area[t] / 12;
+      if (s == 0) continue;
+      const std::size_t n0 = std::size_t(A.tri_node[3 * t]) * 4, n1 = std::size_t(A.tri_node[3 * t + 1]) * 4,
+                        n2 = std::size_t(A.tri_node[3 * t + 2]) * 4;
+      Lanes4 x0, x1, x2, y0, y1, y2;
+      std::memcpy(&x0, x + n0, sizeof x0);
+      std::memcpy(&x1, x + n1, sizeof x1);
+      std::memcpy(&x2, x + n2, sizeof x2);
+      const Lanes4 sum = x0 + x1 + x2;
+      std::memcpy(&y0, y + n0, sizeof y0);  // load, add, store one node at a time: nodes may repeat
+      y0 += s * (x0 + sum);
+      std::memcpy(y + n0, &y0, sizeof y0);
+      std::memcpy(&y1, y + n1, sizeof y1);
+      y1 += s * (x1 + sum);
+      std::memcpy(y + n1, &y1, sizeof y1);
+      std::memcpy(&y2, y + n2, sizeof y2);
+      y2 += s * (x2 + sum);
+      std::memcpy(y + n2, &y2, sizeof y2);
+    }
+}
+
 template <std::size_t W>
 void apply_operator(const FitOperator& A, const double* x, double* y, std::size_t width) {
   const std::size_t w = W ? W : width;
@@ -196,8 +298,12 @@ void apply_operator(const FitOperator& A, const double* x, double* y, std::size_
   // share nodes, so in list order each update of y waits for the store of the one before; four
   // far-apart chains overlap (bench/fit/results.md). A fixed order: the same bits on every run.
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
-  for (std::size_t i = 0; i < Q; ++i)
-    for (std::size_t t = i; t < T; t += Q) add_triangle_product<W>(A, t, x, y, w);
+  if (W == 4) {
+    add_triangle_products_4(A, x, y);
+  } else {
+    for (std::size_t i = 0; i < Q; ++i)
+      for (std::size_t t = i; t < T; t += Q) add_triangle_product<W>(A, t, x, y, w);
+  }
   for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
     const std::uint32_t* n = &A.quad_node[4 * k];
     const double* m = &A.quad_mass[16 * k];
@@ -306,6 +412,119 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   }
 }
 
+// CG's per-iteration vector passes over 4 lanes per node (block_conjugate_gradient<4>), one 4-wide
+// operation per node where the scalar loops do four: per lane the same operations in the same
+// node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
+// builds (target_clones; no FMA).
+// pAp = sum_i p_i * Ap_i per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_dot(const double* p, const double* Ap, std::size_t N, double out[4]) {
+  Lanes4 acc = {0, 0, 0, 0}, a, b;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&a, p + 4 * i, sizeof a);
+    std::memcpy(&b, Ap + 4 * i, sizeof b);
+    acc += a * b;
+  }
+  std::memcpy(out, &acc, sizeof acc);
+}
+// x += alpha p; r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new +=
+// r^2 inv_d_i, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_step(const double* p, const double* Ap, const double* inv_d, const double* inv_m, std::size_t N,
+                 const double alpha_in[4], double* x, double* r, double res2_out[4], double res_mass_out[4],
+                 double abs_new_out[4]) {
+  Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, pi, Api, xi, ri;
+  std::memcpy(&alpha, alpha_in, sizeof alpha);
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&pi, p + 4 * i, sizeof pi);
+    std::memcpy(&Api, Ap + 4 * i, sizeof Api);
+    std::memcpy(&xi, x + 4 * i, sizeof xi);
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
+    xi += alpha * pi;
+    ri = ri - alpha * Api;
+    std::memcpy(x + 4 * i, &xi, sizeof xi);
+    std::memcpy(r + 4 * i, &ri, sizeof ri);
+    res2 += ri * ri;
+    if (inv_m) res_mass += ri * ri * inv_m[i];
+    abs_new += ri * ri * inv_d[i];
+  }
+  std::memcpy(res2_out, &res2, sizeof res2);
+  std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
+  std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
+}
+// The first residual r = b - Ap (b_then_r: b in, r out), with sum b^2, sum r^2 and (inv_m
+// non-null) sum r^2 inv_m_i, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, double* b_then_r, double rhs2_out[4],
+                     double res2_out[4], double res_mass_out[4]) {
+  Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, bi, Api;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&bi, b_then_r + 4 * i, sizeof bi);
+    std::memcpy(&Api, Ap + 4 * i, sizeof Api);
+    const Lanes4 ri = bi - Api;
+    std::memcpy(b_then_r + 4 * i, &ri, sizeof ri);
+    rhs2 += bi * bi;
+    res2 += ri * ri;
+    if (inv_m) res_mass += ri * ri * inv_m[i];
+  }
+  std::memcpy(rhs2_out, &rhs2, sizeof rhs2);
+  std::memcpy(res2_out, &res2, sizeof res2);
+  std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
+}
+// The first direction p = inv_d_i r, with sum r p, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_first_direction(const double* r, const double* inv_d, std::size_t N, double* p, double abs_out[4]) {
+  Lanes4 abs = {0, 0, 0, 0}, ri;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
+    const Lanes4 pi = ri * inv_d[i];
+    std::memcpy(p + 4 * i, &pi, sizeof pi);
+    abs += ri * pi;
+  }
+  std::memcpy(abs_out, &abs, sizeof abs);
+}
+// p = inv_d_i r + beta p, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double beta_in[4], double* p) {
+  Lanes4 beta, ri, pi;
+  std::memcpy(&beta, beta_in, sizeof beta);
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
+    std::memcpy(&pi, p + 4 * i, sizeof pi);
+    pi = ri * inv_d[i] + beta * pi;
+    std::memcpy(p + 4 * i, &pi, sizeof pi);
+  }
+}
+
+// b_i += sum over the triangles' points of w_k phi_i(x_k) f(x_k) (least_squares_fit.h, b), 3
+// channels of f in 4 lanes of b per node (the fourth stays 0): one 4-wide update per corner where
+// the scalar loop does three; the same products and sums per lane, in point order, so the same
+// bits. Triangle points only (the quads' follow in the caller, in point order). inverse_diagonal:
+// 0 off the system (those rows stay 0); null when every node is in the system.
+__attribute__((target_clones("avx2", "default")))
+void add_triangle_loads_4(const FitQuadrature& q, const double* f, bool per_site, const double* inverse_diagonal,
+                          double* b) {
+  const std::size_t R = q.rule.size(), T = q.tri_area.size();
+  const std::uint32_t* const nodes = q.triangle_nodes();
+  std::size_t p = 0;
+  for (std::size_t j = 0; j < T; ++j)
+    for (std::size_t k = 0; k < R; ++k, ++p) {
+      const double weight = q.rule[k].weight * q.tri_area[j];
+      const double* fs = f + 3 * (per_site ? q.site_of(p) : p);
+      const Lanes4 fv = {fs[0], fs[1], fs[2], 0};
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t r = nodes[3 * j + c];
+        const double w = weight * q.rule[k].barycentric[c];
+        if (w == 0 || (inverse_diagonal && inverse_diagonal[r] == 0)) continue;
+        const Lanes4 wv = {w, w, w, 0};  // the fourth lane 0 * 0: 0 whatever w is
+        Lanes4 br;
+        std::memcpy(&br, b + 4 * r, sizeof br);
+        br += wv * fv;
+        std::memcpy(b + 4 * r, &br, sizeof br);
+      }
+    }
+}
+
 struct BlockCgOptions {
   double tolerance = 1e-10;   // relative residual per channel
   // > 0: also stop a channel once sum_i r_i^2 / inverse_mass_i <= accuracy_bound (least_squares_fit.h,
@@ -343,14 +562,18 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   const bool bounded = o.accuracy_bound > 0 && inv_m;
   const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
   apply(x, Ap);
-  for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
-    for (std::size_t k = 0; k < W; ++k) {
-      const double bi = r[i + k];
-      r[i + k] = bi - Ap[i + k];
-      rhs2[k] += bi * bi;
-      res2[k] += r[i + k] * r[i + k];
-      if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
-    }
+  if constexpr (W == 4) {
+    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, r, rhs2.data(), res2.data(), res_mass.data());
+  } else {
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) {
+        const double bi = r[i + k];
+        r[i + k] = bi - Ap[i + k];
+        rhs2[k] += bi * bi;
+        res2[k] += r[i + k] * r[i + k];
+        if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
+      }
+  }
   std::size_t running = 0;
   for (std::size_t k = 0; k < W; ++k) {
     threshold[k] = std::max(o.tolerance * o.tolerance * rhs2[k], std::numeric_limits<double>::min());
@@ -363,33 +586,46 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       ++running;
     }
   }
-  for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
-    for (std::size_t k = 0; k < W; ++k) {
-      p[i + k] = r[i + k] * inv_d[node];
-      abs_new[k] += r[i + k] * p[i + k];
-    }
+  if constexpr (W == 4) {
+    lanes4_first_direction(r, inv_d, N, p, abs_new.data());
+  } else {
+    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+      for (std::size_t k = 0; k < W; ++k) {
+        p[i + k] = r[i + k] * inv_d[node];
+        abs_new[k] += r[i + k] * p[i + k];
+      }
+  }
   int iterations = 0;
   while (running > 0 && iterations < o.max_iterations) {
     apply(p, Ap);
     ++iterations;
     pAp.fill(0.0);
-    for (std::size_t i = 0; i < n; i += W)
-      for (std::size_t k = 0; k < W; ++k) pAp[k] += p[i + k] * Ap[i + k];
+    if constexpr (W == 4) {
+      lanes4_dot(p, Ap, N, pAp.data());
+    } else {
+      for (std::size_t i = 0; i < n; i += W)
+        for (std::size_t k = 0; k < W; ++k) pAp[k] += p[i + k] * Ap[i + k];
+    }
     for (std::size_t k = 0; k < W; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
     res2.fill(0.0);
     res_mass.fill(0.0);
     abs_old = abs_new;
     abs_new.fill(0.0);
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
-      for (std::size_t k = 0; k < W; ++k) {
-        x[i + k] += alpha[k] * p[i + k];
-        const double ri = r[i + k] - alpha[k] * Ap[i + k];
-        r[i + k] = ri;
-        res2[k] += ri * ri;
-        if (bounded) res_mass[k] += ri * ri * inv_m[node];
-        abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
-      }
+    if constexpr (W == 4) {  // z = D^-1 r, not stored
+      lanes4_step(p, Ap, inv_d, bounded ? inv_m : nullptr, N, alpha.data(), x, r, res2.data(), res_mass.data(),
+                  abs_new.data());
+    } else {
+      for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
+        for (std::size_t k = 0; k < W; ++k) {
+          x[i + k] += alpha[k] * p[i + k];
+          const double ri = r[i + k] - alpha[k] * Ap[i + k];
+          r[i + k] = ri;
+          res2[k] += ri * ri;
+          if (bounded) res_mass[k] += ri * ri * inv_m[node];
+          abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
+        }
+    }
     for (std::size_t k = 0; k < W; ++k)
       if (active[k] && (res2[k] < threshold[k] || accurate(k) || !(pAp[k] > 0))) {
         active[k] = false;
@@ -398,8 +634,12 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     if (running == 0) break;
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
-    for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
-      for (std::size_t k = 0; k < W; ++k) p[i + k] = r[i + k] * inv_d[node] + beta[k] * p[i + k];
+    if constexpr (W == 4) {
+      lanes4_direction(r, inv_d, N, beta.data(), p);
+    } else {
+      for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
+        for (std::size_t k = 0; k < W; ++k) p[i + k] = r[i + k] * inv_d[node] + beta[k] * p[i + k];
+    }
   }
   fit.iterations = std::max(fit.iterations, iterations);
   for (std::size_t k = 0; k < W; ++k) {
@@ -409,12 +649,14 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   }
 }
 
-// Widths other than 1 and 3: one channel at a time. b: overwritten (the residual).
+// b and x #nodes by `width` lanes (cg_lanes: 4 for 3 channels, the fourth b = 0 and so x = 0, a
+// channel solved at once); widths other than 1 and 4: one channel at a time. b: overwritten (the
+// residual).
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                               const std::vector<std::uint32_t>& off_system, std::vector<double>& b,
                               std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
   if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
-  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
+  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
   const std::size_t N = inverse_diagonal.size();
   std::vector<double> bk(N), xk(N);
   for (std::size_t k = 0; k < width; ++k) {
@@ -438,10 +680,18 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
   e.nodes = own_nodes ? nodes : mesh.num_vertices();
   const auto node_of = [&](std::size_t c) { return own_nodes ? corner_node[c] : mesh.corner_vertex[c]; };
   std::size_t triangles = 0, quads = 0;  // to size the arrays once
+  bool every_face_a_triangle = true;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const std::size_t size = mesh.face_size(f);
     quads += size == 4;
     triangles += size >= 3 && size != 4 ? size - 2 : 0;
+    every_face_a_triangle = every_face_a_triangle && size == 3;
+  }
+  if (every_face_a_triangle && !own_nodes) {  // the same arrays as the loop below: the corners, in order
+    e.tri_vertex = mesh.corner_vertex;
+    e.tri_face.resize(mesh.num_faces());
+    for (std::size_t f = 0; f < e.tri_face.size(); ++f) e.tri_face[f] = std::uint32_t(f);
+    return e;
   }
   e.tri_vertex.reserve(3 * triangles);
   if (own_nodes) e.tri_node.reserve(3 * triangles);  // else empty: the nodes are the vertices
@@ -484,11 +734,9 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
   q.element_triangles = T;
   // The areas in place, then the triangles of positive area kept (all of them, the common case: copies).
   q.tri_area.resize(T);
+  triangle_areas(positions, e.tri_vertex.data(), T, q.tri_area.data());
   std::size_t kept = 0;
-  for (std::size_t t = 0; t < T; ++t) {
-    q.tri_area[t] = triangle_area(positions, &e.tri_vertex[3 * t]);
-    kept += q.tri_area[t] > 0;  // no area, no part of the integral
-  }
+  for (std::size_t t = 0; t < T; ++t) kept += q.tri_area[t] > 0;  // no area, no part of the integral
   if (kept == T) {
     q.tri_node = e.tri_node;
     q.tri_vertex = e.tri_vertex;
@@ -666,25 +914,33 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   }
   fit.values.assign(N * width, 0.0);
   if (off_system.size() < N) {
+    // b and the solution with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its
+    // solution is 0 and it stops at once), for add_triangle_products_4; otherwise the channels.
+    const std::size_t L = width == 3 ? 4 : width;
+    std::vector<double> padded(L != width ? N * L : 0, 0.0);
+    std::vector<double>& x = L != width ? padded : fit.values;
     // b for every channel in one pass over the points.
-    std::vector<double> b(N * width, 0.0);
+    std::vector<double> b(N * L, 0.0);
+    if (L == 4)
+      add_triangle_loads_4(q, f.data(), per_site, off_system.empty() ? nullptr : inverse_diagonal.data(), b.data());
     q.for_each_point([&](std::size_t s, const std::uint32_t* node, const std::uint32_t*, const double* phi, int corners,
                          double weight) {
+      if (L == 4 && corners == 3) return;  // added above
       const double* fs = &f[(per_site ? q.site_of(s) : s) * width];
       for (int j = 0; j < corners; ++j) {
         const std::size_t r = node[j];
         const double w = weight * phi[j];
         if (w == 0 || inverse_diagonal[r] == 0) continue;
-        for (std::size_t k = 0; k < width; ++k) b[r * width + k] += w * fs[k];
+        for (std::size_t k = 0; k < width; ++k) b[r * L + k] += w * fs[k];
       }
     });
     // The first guess: the lumped-mass projection c0_i = b_i / sum_j M_ij (the L2 projection with M
     // replaced by its row-sum diagonal; exact for a constant f). It needs only b, not the point
     // values, so the result does not depend on whether the caller computed them. 0 off the system.
-    for (std::size_t i = 0; i < N; ++i) {
+    for (std::size_t i = 0; i < N; ++i) {  // all L lanes (a pad lane: b = 0, so 0), one vector division
       const double m = A.lumped[i];
-      for (std::size_t k = 0; k < width; ++k)  // divisor checked; off the system (no mass): 0 during CG
-        fit.values[i * width + k] = inverse_diagonal[i] != 0 && m > 0 ? b[i * width + k] / m : 0.0;
+      const bool mass = inverse_diagonal[i] != 0 && m > 0;  // off the system (no mass): 0 during CG
+      for (std::size_t k = 0; k < L; ++k) x[i * L + k] = mass ? b[i * L + k] / m : 0.0;  // divisor checked
     }
     BlockCgOptions cg;
     cg.tolerance = options.tolerance;
@@ -696,7 +952,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
-    block_conjugate_gradient(A, inverse_diagonal, off_system, b, width, cg, fit.values, fit);
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b, L, cg, x, fit);
+    if (L != width)
+      for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];
   }
   if (!off_system.empty()) {  // the nodes outside the system keep their point values
     const std::vector<double> at = point_values_at(off_system);
