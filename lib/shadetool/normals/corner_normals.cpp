@@ -724,7 +724,8 @@ constexpr double kHardShare = 0.5;
 // non-negative terms); easy when its corners seen form one closed ring; else not counted (its fan
 // may continue outside the window). Worth it when the hard share among the counted vertices is at
 // most kProbeHardShare (measured: bench/normals/results/notes.md, fifth round), or when too few
-// vertices could be counted to tell. The estimate leans towards hard (a window cuts fans open, and
+// vertices could be counted to tell; the probe stops after a window where enough vertices were
+// counted and the hard share already exceeds twice that. The estimate leans towards hard (a window cuts fans open, and
 // only closed ones count as easy); it only chooses between two paths that give the same bits.
 constexpr std::size_t kProbeWindows = 8, kProbeFaces = 256, kProbeShare = 512, kProbeMinCounted = 64;
 constexpr double kProbeHardShare = 0.05;
@@ -765,6 +766,8 @@ bool worth_one_thread_path(const MeshView& mesh, const SmoothCone& cone) {
       if (sl.bad || sl.d > kSlotPairs || !cone.passes(sl.d, uu)) ++hard;
       else if (one_smooth_ring(v, sl)) ++easy;
     }
+    // Clearly not worth it (twice the limit): stop here (a CAD part stops after its first window).
+    if (hard + easy >= kProbeMinCounted && double(hard) > 2.0 * kProbeHardShare * double(hard + easy)) return false;
   }
   return hard + easy < kProbeMinCounted || double(hard) <= kProbeHardShare * double(hard + easy);
 }
