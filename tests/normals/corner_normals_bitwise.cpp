@@ -472,10 +472,10 @@ Mesh roof(int n, double fold, int spike, std::uint32_t seed) {
 }  // namespace
 
 TEST_CASE("corner_normals, one-thread path: creases beside one-group vertices, a vertex with more corners than a "
-          "slot holds among them, smooth and steep cone apexes of 8-11 corners; the frozen copy's bits, the planes' "
+          "slot holds among them, smooth and steep cone apexes of 9-13 corners; the frozen copy's bits, the planes' "
           "own normals and the apex's axis", "[corner_normals][reference]") {
   using normals_detail::CreasePath;
-  for (int spike : {0, 7, 8, 12})
+  for (int spike : {0, 7, 8, 9, 12})
     for (double fold_deg : {10.0, 20.0, 35.0}) {
       const Mesh m = roof(10, fold_deg * kDeg, spike, 5);
       const std::string what = "roof, fold " + std::to_string(fold_deg) + ", spike " + std::to_string(spike);
@@ -512,10 +512,10 @@ TEST_CASE("corner_normals, one-thread path: creases beside one-group vertices, a
       }
       CHECK(checked > 300);
     }
-  // Cone apexes of 8 to 11 corners (the slot holds 9): flat (h small) and steep; the apex's normal is
+  // Cone apexes of 9 to 13 corners (a slot holds kSlotPairs = 11): flat (h small) and steep; the apex's normal is
   // the axis by symmetry. (Open, flipped and pinched apex fans of 3-18 corners: the test case above,
   // whose check_same runs the one-thread path too.)
-  for (int sides = 8; sides <= 11; ++sides)
+  for (int sides = 9; sides <= 13; ++sides)
     for (double h : {0.05, 3.0}) {
       const Mesh m = pyramid_fan(sides, h, 0.0);
       const std::string what = "apex of " + std::to_string(sides) + ", h " + std::to_string(h);

@@ -181,17 +181,12 @@ struct SmoothCone {
     const double one_face = 1.0 - std::cos(0.5 * std::acos(cos_2alpha));
     room = 2.0 * one_face <= 1.0 ? 2.0 * one_face : one_face;
   }
-  // d corners (>= 1) whose unit face normals, rounded to float, sum to (x, y, z) in float.
+  // d corners (>= 1) whose unit face normals, rounded to float, sum to (x, y, z) in float (also
+  // the one-thread path's U, engine/vertex_slots.h, whose normals lie within ~1e-13 of the true ones).
   bool passes(std::uint32_t d, float x, float y, float z) const {
-    const double ux = x, uy = y, uz = z;
-    return passes(d, ux * ux + uy * uy + uz * uz);
-  }
-  // The same from uu = U . U in double. The one-thread path (engine/vertex_slots.h) sums, in
-  // double, unit normals within ~1e-13 of the true ones: its errors (~1e-13 d, sums ~1e-16 d^2)
-  // are far inside the margins above, which allow 1.2e-6 d + 1.1e-7 d^2.
-  bool passes(std::uint32_t d, double uu) const {
-    const double n = d;
-    if (!usable || std::isnan(uu)) return false;  // NaN when a face is degenerate
+    const double ux = x, uy = y, uz = z, n = d;
+    const double uu = ux * ux + uy * uy + uz * uz;  // NaN when a face is degenerate
+    if (!usable || std::isnan(uu)) return false;
     if (every_valid) return true;
     const double lhs = n * (1.0 + 2e-6 + 2e-7 * n) - room;  // > 0: d >= 1 and room < 1
     return lhs * lhs < uu;
@@ -695,8 +690,8 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
 // (1) add_faces_to_slots (engine/vertex_slots.h): one pass in face order gives every vertex its
 //     contribution sum S (ascending corner order: compute's group sum), the sum U of its unit face
 //     normals, its corner count d and up to kSlotPairs (next, prev) pairs;
-// (2) in vertex order, a vertex is easy when every face at it was taken by the vector pass (valid),
-//     SmoothCone passes on U (no crease can split it), d <= kSlotPairs and its pairs form one closed
+// (2) in vertex order, a vertex is easy when every face at it was taken by the vector pass (valid:
+//     U is not NaN), SmoothCone passes on U (no crease can split it), d <= kSlotPairs and its pairs form one closed
 //     ring (one_smooth_ring), and S normalises: compute would find exactly one group for it, whose
 //     row is S normalised (the same sum, the same normalise_sum). Every other vertex with corners is
 //     hard. Each vertex with corners takes one provisional row, in vertex order;
@@ -721,7 +716,7 @@ constexpr double kHardShare = 0.5;
 // (add_faces_to_slots); then each of its vertices is classified: hard for certain when a face at it
 // was not taken by the vector pass, it has more than kSlotPairs corners, or it fails SmoothCone
 // (adding faces cannot make the spread d - |U| smaller: it is a minimum over directions of a sum of
-// non-negative terms); easy when its corners seen form one closed ring; else not counted (its fan
+// non-negative terms; the test's margins grow with d); easy when its corners seen form one closed ring; else not counted (its fan
 // may continue outside the window). Worth it when the hard share among the counted vertices is at
 // most kProbeHardShare (measured: bench/normals/results/notes.md, fifth round), or when too few
 // vertices could be counted to tell; the probe stops after a window where enough vertices were
@@ -762,8 +757,7 @@ bool worth_one_thread_path(const MeshView& mesh, const SmoothCone& cone) {
     add_faces_to_slots<T, Weighting::Angle>(part, 0, window, slots.data());
     for (std::uint32_t v = 0; v < n; ++v) {
       const VertexSlot<T>& sl = slots[v];
-      const double uu = sl.u[0] * sl.u[0] + sl.u[1] * sl.u[1] + sl.u[2] * sl.u[2];
-      if (sl.bad || sl.d > kSlotPairs || !cone.passes(sl.d, uu)) ++hard;
+      if (sl.d > kSlotPairs || !cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2])) ++hard;
       else if (one_smooth_ring(v, sl)) ++easy;
     }
     // Clearly not worth it (twice the limit): stop here (a CAD part stops after its first window).
@@ -795,9 +789,8 @@ bool compute_one_thread(const MeshView& mesh, double crease_angle, Precision pre
     const VertexSlot<T>& sl = slots[v];
     row[v] = used;
     if (sl.d == 0) continue;  // no corner: no row
-    const double uu = sl.u[0] * sl.u[0] + sl.u[1] * sl.u[1] + sl.u[2] * sl.u[2];
     double* o = &pool[3 * std::size_t(used)];
-    const bool easy = !sl.bad && sl.d <= kSlotPairs && cone.passes(sl.d, uu) && one_smooth_ring(v, sl) &&
+    const bool easy = sl.d <= kSlotPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && one_smooth_ring(v, sl) &&
                       normalise_sum(double(sl.s[0]), double(sl.s[1]), double(sl.s[2]), o);
     if (!easy) {
       row[v] = kHardBit | std::uint32_t(hard.size());

@@ -8,14 +8,15 @@
 //         vertex_normals and corner_normals' group sums form for a vertex whose corners are one
 //         group, bit for bit (the same vectorised block kernel, triangle_blocks.h, the same
 //         additions in the same order as accumulate_by_vertex.h's serial loop);
-//   u     the sum of the unit normals of its faces, in double (SmoothCone's U); a face's unit
-//         normal is read off its contributions: for Angle (w0 + w1 + w2) / pi (w_k = theta_k n,
-//         theta_0 + theta_1 + theta_2 = pi by construction, so within ~1e-13 of n: the angles'
-//         relative error bound, triangle_blocks.h), for Uniform w0 = n itself;
-//   d     its corner count;
-//   bad   set when one of its faces is not taken by the vector pass (degenerate, or out of its
-//         range: triangle_scalar then adds the face's contributions to s if it has any); such a
+//   u     the sum of the unit normals of its faces rounded to float, in float (SmoothCone's U,
+//         as corner_normals.cpp's vertex_fans adds it up); a face's unit normal is read off its
+//         contributions: for Angle (w0 + w1 + w2) / pi (w_k = theta_k n, theta_0 + theta_1 +
+//         theta_2 = pi by construction, so within ~1e-13 of n: the angles' relative error bound,
+//         triangle_blocks.h; SmoothCone allows 1e-6), for Uniform w0 = n itself; NaN once a face
+//         at the vertex was not taken by the vector pass (degenerate, or out of its range:
+//         triangle_scalar then adds the face's contributions to s if it has any), so that such a
 //         vertex is never classified one-group here;
+//   d     its corner count;
 //   next, prev  the vertices after and before it in each of its first kSlotPairs faces (in face
 //         order); a vertex with more corners keeps overwriting the last pair (it is left to the
 //         general path: d > kSlotPairs).
@@ -57,25 +58,28 @@
 
 namespace shadetool::normals_detail {
 
-constexpr std::uint32_t kSlotPairs = 9;  // measured: 6 left 36% of an irregular sphere's vertices to the general path, 9 left 2.4%
+// Measured on the irregular UV sphere of bench_crease (bench/normals/results/notes.md): 6 pairs
+// left 36% of its vertices to the general path, 9 left 2.0%, 11 (all that fit in two lines) 0.6%.
+constexpr std::uint32_t kSlotPairs = 11;
 
 template <class T>
 struct alignas(64) VertexSlot {
-  double u[3];  // after classify: the vertex's unit normal when it is one group
+  float u[3];       // NaN after a face the vector pass did not take
+  std::uint32_t d;  // corners
   T s[3];
-  std::uint32_t d, bad;
   std::uint32_t next[kSlotPairs], prev[kSlotPairs];
 };
 static_assert(sizeof(VertexSlot<double>) == 128 && sizeof(VertexSlot<float>) == 128, "two cache lines per vertex");
+static_assert(kSlotPairs < 12, "one_smooth_ring compares 12 lanes");
 
 // The first cache line of slots [0, n): sums and counts zero (the pairs are written as they come).
 template <class T>
 void clear_vertex_slots(VertexSlot<T>* slots, std::size_t n) {
   for (std::size_t v = 0; v < n; ++v) {
     VertexSlot<T>& sl = slots[v];
-    sl.u[0] = sl.u[1] = sl.u[2] = 0.0;
+    sl.u[0] = sl.u[1] = sl.u[2] = 0.0f;
     sl.s[0] = sl.s[1] = sl.s[2] = T(0);
-    sl.d = sl.bad = 0;
+    sl.d = 0;
   }
 }
 
@@ -117,20 +121,19 @@ std::size_t add_faces_to_slots(const MeshView& mesh, std::size_t f_begin, std::s
         };
         degenerate += !triangle_scalar<T, W>(P, cv, c, sink, 1.0);
         for (int k = 0; k < 3; ++k) {
-          slots[v3[k]].bad = 1;
-          slots[v3[k]].u[0] = std::numeric_limits<double>::quiet_NaN();  // and SmoothCone fails too
+          slots[v3[k]].u[0] = std::numeric_limits<float>::quiet_NaN();  // SmoothCone fails
           ++slots[v3[k]].d;  // still a corner of the vertex (it has a row even when all its faces are degenerate)
         }
         continue;
       }
-      double nx, ny, nz;
+      float nx, ny, nz;
       if constexpr (W == Weighting::Angle) {
         constexpr double inv_pi = 1.0 / kPi;
-        nx = (w[0][i] + w[3][i] + w[6][i]) * inv_pi;
-        ny = (w[1][i] + w[4][i] + w[7][i]) * inv_pi;
-        nz = (w[2][i] + w[5][i] + w[8][i]) * inv_pi;
+        nx = float((w[0][i] + w[3][i] + w[6][i]) * inv_pi);
+        ny = float((w[1][i] + w[4][i] + w[7][i]) * inv_pi);
+        nz = float((w[2][i] + w[5][i] + w[8][i]) * inv_pi);
       } else {
-        nx = w[0][i]; ny = w[1][i]; nz = w[2][i];
+        nx = float(w[0][i]); ny = float(w[1][i]); nz = float(w[2][i]);
       }
       for (int k = 0; k < 3; ++k) {
         VertexSlot<T>& sl = slots[v3[k]];
@@ -148,7 +151,7 @@ std::size_t add_faces_to_slots(const MeshView& mesh, std::size_t f_begin, std::s
   return degenerate;
 }
 
-// See the header block. Requires 1 <= d <= kSlotPairs; reads the 3 lanes after prev (the next
+// See the header block. Requires 1 <= d <= kSlotPairs < 12; reads the lane after prev (the next
 // slot's first bytes, or the padding slot), masked.
 template <class T>
 inline bool one_smooth_ring(std::uint32_t v, const VertexSlot<T>& sl) {
