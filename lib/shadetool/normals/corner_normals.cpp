@@ -703,12 +703,16 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
 // (4) each hard vertex's rows replace its provisional row (the pool widened where it has several
 //     groups), and one pass in corner order writes corner_index.
 // Returns false (out untouched) where SmoothCone cannot pass any vertex (crease angles below ~0.6
-// degrees, negative or NaN) or the corner count reaches 2^31, and, when `choose`, where the probe
+// degrees, negative or NaN) or the corner count reaches 2^31, and, when `choose`, on meshes of fewer
+// than kOneThreadMinFaces faces, where the probe
 // (worth_one_thread_path) predicts too many hard vertices or more than kHardShare of the vertices
 // turn out hard after (2): compute alone is faster there (bench/normals/results/notes.md, fifth
 // round). Whichever path runs, the results are the same bits.
 constexpr std::uint32_t kHardBit = 0x80000000u;
 constexpr double kHardShare = 0.5;
+// Below this many faces the general path is as fast or faster (its arrays stay in cache; measured
+// on the irregular sphere and the faceted icosahedron: 0.9x at 20k faces, 1.1-1.15x at 60-80k).
+constexpr std::size_t kOneThreadMinFaces = 50000;
 
 // Whether the one-thread path is likely to pay: kProbeWindows windows of kProbeFaces faces or
 // F / kProbeShare, whichever is more, spread over the mesh, each copied out as a small mesh of its
@@ -722,7 +726,7 @@ constexpr double kHardShare = 0.5;
 // vertices could be counted to tell; the probe stops after a window where enough vertices were
 // counted and the hard share already exceeds twice that. The estimate leans towards hard (a window cuts fans open, and
 // only closed ones count as easy); it only chooses between two paths that give the same bits.
-constexpr std::size_t kProbeWindows = 8, kProbeFaces = 256, kProbeShare = 512, kProbeMinCounted = 64;
+constexpr std::size_t kProbeWindows = 8, kProbeFaces = 256, kProbeShare = 512, kProbeMinCounted = 32;
 constexpr double kProbeHardShare = 0.05;
 
 template <class T>
@@ -734,6 +738,7 @@ bool worth_one_thread_path(const MeshView& mesh, const SmoothCone& cone) {
   while (table < 6 * window) table <<= 1;  // load <= 1/2
   std::vector<std::uint32_t> key(table), id(table), local_cv(3 * window);
   std::vector<double> local_positions;
+  local_positions.reserve(9 * window);
   BulkVector<VertexSlot<T>> slots(3 * window + 1);
   std::size_t hard = 0, easy = 0;
   for (std::size_t k = 0; k < kProbeWindows; ++k) {
@@ -771,7 +776,7 @@ bool compute_one_thread(const MeshView& mesh, double crease_angle, Precision pre
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners(), F = mesh.num_faces();
   const SmoothCone cone(crease_angle);
   if (!cone.usable || C >= kHardBit) return false;
-  if (choose && !worth_one_thread_path<T>(mesh, cone)) return false;
+  if (choose && (F < kOneThreadMinFaces || !worth_one_thread_path<T>(mesh, cone))) return false;
   const std::uint32_t* cv = mesh.corner_vertex;
   // (1)
   BulkVector<VertexSlot<T>> slots(V + 1);  // +1: padding read by one_smooth_ring

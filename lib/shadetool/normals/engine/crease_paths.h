@@ -8,7 +8,8 @@
 //              Applies to triangle meshes without smoothing groups, Angle or Uniform weighting,
 //              and crease angles where SmoothCone can pass a vertex (corner_normals.cpp); elsewhere
 //              General runs.
-// Auto (what corner_normals does): OneThread on one thread when a probe of a few windows of faces
+// Auto (what corner_normals does): OneThread on one thread, for meshes of 50,000 faces or more,
+// when a probe of a few windows of faces
 // finds few vertices it would leave to General (and it did not find more than half of them hard
 // after its pass), else General. OneThread here skips the probe and that limit (and ignores the
 // thread count), so that tests can check it on every mesh.
