@@ -530,3 +530,41 @@ TEST_CASE("corner_normals, one-thread path: creases beside one-group vertices, a
       CHECK(std::fabs(std::fabs(n[2]) - 1.0) < 1e-12);
     }
 }
+
+TEST_CASE("corner_normals, one-thread path: two nearly coplanar closed fans on one vertex (a pinch inside the smooth "
+          "cone) stay two groups whichever fan holds the vertex's first corner", "[corner_normals][reference]") {
+  using normals_detail::CreasePath;
+  // Sheet A: a fan of `a` triangles around the origin in the plane z = 0; sheet B: a fan of `b`
+  // triangles around the origin rising to z = 0.02 at radius 1 (its faces tilt ~1 degree), touching
+  // A only there. Every face is within the cone of a 30-degree crease; the vertex's corners form
+  // two cycles, of a and b, so the general path gives it two groups.
+  for (int a = 3; a <= 8; ++a)
+    for (int b = 3; a + b <= 11; ++b)
+      for (bool a_first : {true, false}) {
+        Mesh m;
+        m.add_vertex({0, 0, 0});
+        auto ring = [&m](int n, double z, double phase) {
+          const std::uint32_t first = std::uint32_t(m.num_vertices());
+          for (int i = 0; i < n; ++i) m.add_vertex({std::cos(2 * kPi * i / n + phase), std::sin(2 * kPi * i / n + phase), z});
+          return first;
+        };
+        const std::uint32_t ra = ring(a, 0.0, 0.0), rb = ring(b, 0.02, 0.3);
+        auto fan = [&m](std::uint32_t first, int n) {
+          for (int i = 0; i < n; ++i) m.add_face({0, first + std::uint32_t(i), first + std::uint32_t((i + 1) % n)});
+        };
+        if (a_first) { fan(ra, a); fan(rb, b); } else { fan(rb, b); fan(ra, a); }
+        m.precision = ValuePrecision::Double;
+        const std::string what = "pinch of fans " + std::to_string(a) + " and " + std::to_string(b) + (a_first ? ", A first" : ", B first");
+        INFO(what);
+        check_same(m, 30 * kDeg, Weighting::Angle, Precision::Double, what);
+        const CornerNormals one = normals_detail::corner_normals_by(MeshView(m), 30 * kDeg, Weighting::Angle,
+                                                                    Precision::Double, CreasePath::OneThread);
+        // the origin's corners (corner 3f of every face): one row per sheet, two rows in all
+        const std::size_t first_fan = std::size_t(a_first ? a : b);
+        for (std::size_t f = 0; f < m.num_faces(); ++f) {
+          const std::size_t same = f < first_fan ? 0 : first_fan;
+          CHECK(one.corner_index[3 * f] == one.corner_index[3 * same]);
+        }
+        CHECK(one.corner_index[0] != one.corner_index[3 * first_fan]);
+      }
+}
