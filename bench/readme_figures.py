@@ -366,7 +366,7 @@ def crease(args):
     files = []
     for root, _, names in os.walk(corpus):
         files += [os.path.join(root, n) for n in names if n in ("counter.unitsmm.STL", "turbineblade.ply")]
-    cmd = [exe, "--reps", str(max(args.reps, 7)), "--no-reference", "--no-floor"]
+    cmd = [exe, "--reps", str(max(args.reps, 7)), "--no-reference", "--no-floor", "--no-paths"]
     for f in sorted(files):
         cmd += ["--file", f]
     txt = run(cmd)
