@@ -1,12 +1,15 @@
 // bench_crease: crease normals (corner_normals, angle weighting, crease 30 degrees) against
 // angle-weighted vertex normals on the same mesh, one thread (issue 31 goal 3: at most 2x).
 //
-// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor]
+// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths]
 // Meshes: the irregular UV sphere of bench_normals (about N triangles, default 1M; no edge above
 // 30 degrees, so every group is a whole vertex fan), a faceted icosahedron (its 20 flat faces
 // subdivided 4^7 times each: 1.3M triangles, real 41.8-degree creases along the 30 edges and
 // exactly flat fans elsewhere), and any --file (e.g. CAD models of the corpus).
 // Rows per mesh: vertex_normals(mesh, Angle) (fresh call), corner_normals(mesh, 30 deg, Angle),
+// each of its two paths forced (normals/engine/crease_paths.h: the general path; the one-thread
+// path without its probe, triangle meshes only; --no-paths drops them; their output is checked
+// against corner_normals' bit for bit),
 // and the frozen copy of the crease path before issue 31 (tests/support/corner_normals_reference.h;
 // --no-reference drops it); then three rows whose sum is the floor of a crease path built like
 // ours (--no-floor drops them): face_normals (the crease test needs them), the vertex -> corner
@@ -36,6 +39,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/engine/crease_paths.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/vertex_normals.h>
 #include "load_average.h"
@@ -96,7 +100,7 @@ double cpu_now() {
 int main(int argc, char** argv) {
   std::size_t faces = 1000000;
   int reps = 15;
-  bool reference = true, floor = true;
+  bool reference = true, floor = true, paths = true;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::stoi(argv[++i]);
@@ -104,8 +108,9 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--file") && i + 1 < argc) files.push_back(argv[++i]);
     else if (!std::strcmp(argv[i], "--no-reference")) reference = false;
     else if (!std::strcmp(argv[i], "--no-floor")) floor = false;
+    else if (!std::strcmp(argv[i], "--no-paths")) paths = false;
     else {
-      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor]\n");
+      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths]\n");
       return 2;
     }
   }
@@ -137,6 +142,18 @@ int main(int argc, char** argv) {
     std::vector<Row> rows;
     rows.push_back({"vertex_normals angle", [&] { vn = vertex_normals(mesh, Weighting::Angle); }, {}, {}});
     rows.push_back({"corner_normals angle, crease 30", [&] { cn = corner_normals(mesh, crease, Weighting::Angle); }, {}, {}});
+    CornerNormals general, one_thread;
+    if (paths) {
+      rows.push_back({"corner_normals, general path", [&] {
+                        general = normals_detail::corner_normals_by(mesh, crease, Weighting::Angle, Precision::Double,
+                                                                    normals_detail::CreasePath::General);
+                      }, {}, {}});
+      if (mesh.all_triangles())
+        rows.push_back({"corner_normals, one-thread path (no probe)", [&] {
+                          one_thread = normals_detail::corner_normals_by(mesh, crease, Weighting::Angle, Precision::Double,
+                                                                         normals_detail::CreasePath::OneThread);
+                        }, {}, {}});
+    }
     if (reference)
       rows.push_back({"crease path before issue 31 (frozen copy)", [&] {
                         old = reference_crease::corner_normals_reference(MeshView(mesh), crease, Weighting::Angle);
@@ -225,6 +242,10 @@ int main(int argc, char** argv) {
       std::printf("| %s | | new shape: %zu of %zu vertices hard (%.1f%%); %zu easy corners, %zu differ from corner_normals | | | |\n",
                   name.c_str(), shape.hard, shape.used, 100.0 * double(shape.hard) / double(shape.used), easy, differ);
       if (differ) status = 1;
+    }
+    if (paths && (!same_bits(cn, general) || (mesh.all_triangles() && !same_bits(cn, one_thread)))) {
+      std::printf("| %s | | MISMATCH: corner_normals' two paths differ | | | |\n", name.c_str());
+      status = 1;
     }
     if (reference && !same_bits(cn, old)) {
       std::printf("| %s | | MISMATCH: corner_normals differs from the frozen copy | | | |\n", name.c_str());

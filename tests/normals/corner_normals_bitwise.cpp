@@ -20,6 +20,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/corner_normals.h>
+#include <shadetool/normals/engine/crease_paths.h>
 #include <shadetool/normals/face_normals.h>
 #include "normals_test_util.h"
 #include "support/corner_normals_reference.h"
@@ -46,13 +47,21 @@ std::string difference(const CornerNormals& n, const CornerNormals& r) {
   return "";
 }
 
-// corner_normals against the frozen copy for one (mesh, angle, weighting, precision[, groups]).
+// corner_normals against the frozen copy for one (mesh, angle, weighting, precision[, groups]);
+// without smoothing groups also each of its two paths forced (normals/engine/crease_paths.h: the
+// one-thread path without its probe, on every mesh where it applies, whatever the thread count).
 void check_same(const Mesh& m, double angle, Weighting w, Precision p, const std::string& what,
                 const std::vector<std::uint32_t>* groups = nullptr) {
+  using normals_detail::CreasePath;
   const CornerNormals now = groups ? corner_normals(m, angle, *groups, w, p) : corner_normals(m, angle, w, p);
   const CornerNormals old = reference_crease::corner_normals_reference(MeshView(m), angle, w, p, groups ? groups->data() : nullptr);
   INFO(what << ", crease " << angle << " rad, weighting " << weighting_name(w) << ", " << precision_name(p));
   CHECK(difference(now, old) == "");
+  if (groups) return;
+  for (CreasePath path : {CreasePath::General, CreasePath::OneThread}) {
+    INFO((path == CreasePath::General ? "general path" : "one-thread path"));
+    CHECK(difference(normals_detail::corner_normals_by(MeshView(m), angle, w, p, path), old) == "");
+  }
 }
 
 void check_face_normals(const Mesh& m, const std::string& what) {
@@ -410,4 +419,114 @@ TEST_CASE("corner_normals: around the smooth-cone test's own limit (the spread o
       for (double t : {a, std::nextafter(a, -1.0), std::nextafter(a, 10.0)})
         check_same(m, t, Weighting::Angle, Precision::Double, what);
   }
+}
+
+namespace {
+
+// A roof: an n x n grid folded along its middle column into two planes at `fold` radians from the
+// horizontal each (a ridge of 2 fold between their normals), split into triangles with random
+// diagonals; and, when `spike` is set, one vertex inside the left plane given `spike` extra faces
+// by a fan of thin triangles (valence above the one-thread path's slots, its neighbours one group).
+Mesh roof(int n, double fold, int spike, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  Mesh m;
+  const int mid = n / 2;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = double(i - mid);
+      m.add_vertex({x, double(j), -std::fabs(x) * std::tan(fold)});
+    }
+  auto id = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  const int si = mid / 2, sj = n / 2;  // the spike's quad (left plane), cut into a fan
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (spike && i == si && j == sj) {
+        // the quad's corner a fans out to spike + 1 points along edge b-c and c-d (in the plane)
+        std::vector<std::uint32_t> ring{b};
+        for (int k = 1; k <= spike; ++k) {
+          const double t = double(k) / double(spike + 1);
+          const Vec3d p = t < 0.5 ? m.position(b) + (m.position(c) - m.position(b)) * (2 * t)
+                                  : m.position(c) + (m.position(d) - m.position(c)) * (2 * t - 1);
+          ring.push_back(std::uint32_t(m.num_vertices()));
+          m.add_vertex(p);
+        }
+        ring.push_back(d);
+        for (std::size_t k = 0; k + 1 < ring.size(); ++k) m.add_face({a, ring[k], ring[k + 1]});
+        // close the fan's outer side against c with triangles of the far edges
+        for (std::size_t k = 1; k + 1 < ring.size(); ++k) m.add_face({ring[k], c, ring[k + 1]});
+        continue;
+      }
+      if (rng() & 1) {
+        m.add_face({a, b, c});
+        m.add_face({a, c, d});
+      } else {
+        m.add_face({a, b, d});
+        m.add_face({b, c, d});
+      }
+    }
+  m.precision = ValuePrecision::Double;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("corner_normals, one-thread path: creases beside one-group vertices, a vertex with more corners than a "
+          "slot holds among them, smooth and steep cone apexes of 9-13 corners; the frozen copy's bits, the planes' "
+          "own normals and the apex's axis", "[corner_normals][reference]") {
+  using normals_detail::CreasePath;
+  for (int spike : {0, 7, 8, 9, 12})
+    for (double fold_deg : {10.0, 20.0, 35.0}) {
+      const Mesh m = roof(10, fold_deg * kDeg, spike, 5);
+      const std::string what = "roof, fold " + std::to_string(fold_deg) + ", spike " + std::to_string(spike);
+      INFO(what);
+      for (Weighting w : {Weighting::Angle, Weighting::Uniform})
+        for (Precision p : {Precision::Double, Precision::Float})
+          for (double crease : {15 * kDeg, 30 * kDeg, 50 * kDeg}) check_same(m, crease, w, p, what);
+      // Truth: at 30 degrees a fold of 20 or 35 degrees (ridge 40, 70) splits every ridge vertex into the
+      // two planes, and every corner's normal is its plane's normal (all faces of a group are coplanar);
+      // a fold of 10 degrees (ridge 20) splits nothing.
+      const CornerNormals one = normals_detail::corner_normals_by(MeshView(m), 30 * kDeg, Weighting::Angle,
+                                                                  Precision::Double, CreasePath::OneThread);
+      const double f = fold_deg * kDeg;
+      const Vec3d left{-std::sin(f), 0, std::cos(f)}, right{std::sin(f), 0, std::cos(f)};  // z = -|x| tan(fold), faces up
+      std::size_t checked = 0;
+      for (std::size_t face = 0; face < m.num_faces(); ++face) {
+        double cx = 0;
+        for (int k = 0; k < 3; ++k) cx += m.position(m.corner_vertex[3 * face + k]).x;
+        const Vec3d plane = cx < 0 ? left : right;
+        for (int k = 0; k < 3; ++k) {
+          const std::size_t c = 3 * face + k;
+          const double* n = &one.normals[3 * std::size_t(one.corner_index[c])];
+          const Vec3d got{n[0], n[1], n[2]};
+          if (fold_deg > 15.0) {
+            CHECK(std::fabs(got.x - plane.x) < 1e-12);
+            CHECK(std::fabs(got.z - plane.z) < 1e-12);
+            ++checked;
+          } else if (std::fabs(m.position(m.corner_vertex[c]).x) > 0.5) {
+            CHECK(std::fabs(got.x - plane.x) < 1e-12);  // off the ridge: one plane's faces only
+            ++checked;
+          }
+          CHECK(std::fabs(got.y) < 1e-12);
+        }
+      }
+      CHECK(checked > 300);
+    }
+  // Cone apexes of 9 to 13 corners (a slot holds kSlotPairs = 11): flat (h small) and steep; the apex's normal is
+  // the axis by symmetry. (Open, flipped and pinched apex fans of 3-18 corners: the test case above,
+  // whose check_same runs the one-thread path too.)
+  for (int sides = 9; sides <= 13; ++sides)
+    for (double h : {0.05, 3.0}) {
+      const Mesh m = pyramid_fan(sides, h, 0.0);
+      const std::string what = "apex of " + std::to_string(sides) + ", h " + std::to_string(h);
+      INFO(what);
+      for (double crease : {10 * kDeg, 30 * kDeg, 179 * kDeg}) check_same(m, crease, Weighting::Angle, Precision::Double, what);
+      const CornerNormals one = normals_detail::corner_normals_by(MeshView(m), 179 * kDeg, Weighting::Angle,
+                                                                  Precision::Double, CreasePath::OneThread);
+      const double* n = &one.normals[3 * std::size_t(one.corner_index[0])];  // corner 0: the top apex
+      CHECK(m.corner_vertex[0] == 0);
+      CHECK(std::fabs(n[0]) < 1e-12);
+      CHECK(std::fabs(n[1]) < 1e-12);
+      CHECK(std::fabs(std::fabs(n[2]) - 1.0) < 1e-12);
+    }
 }

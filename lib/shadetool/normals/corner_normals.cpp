@@ -45,9 +45,11 @@
 #include <shadetool/geometry/union_find.h>
 #include <shadetool/normals/engine/accumulate_by_vertex.h>
 #include <shadetool/normals/engine/corner_contributions.h>
+#include <shadetool/normals/engine/crease_paths.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/normals/engine/mesh_scale.h>
 #include <shadetool/normals/engine/normalise_sums.h>
+#include <shadetool/normals/engine/vertex_slots.h>
 #include <shadetool/core/engine/parallel.h>
 #include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/normals/vertex_fallback.h>
@@ -179,7 +181,8 @@ struct SmoothCone {
     const double one_face = 1.0 - std::cos(0.5 * std::acos(cos_2alpha));
     room = 2.0 * one_face <= 1.0 ? 2.0 * one_face : one_face;
   }
-  // d corners (>= 1) whose unit face normals, rounded to float, sum to (x, y, z) in float.
+  // d corners (>= 1) whose unit face normals, rounded to float, sum to (x, y, z) in float (also
+  // the one-thread path's U, engine/vertex_slots.h, whose normals lie within ~1e-13 of the true ones).
   bool passes(std::uint32_t d, float x, float y, float z) const {
     const double ux = x, uy = y, uz = z, n = d;
     const double uu = ux * ux + uy * uy + uz * uz;  // NaN when a face is degenerate
@@ -532,8 +535,12 @@ GroupNormals group_normals(const MeshView& mesh, const std::vector<std::uint32_t
   return out;
 }
 
+// The general path. base (optional): #V + 1, vertex v's rows are base[v] .. base[v + 1].
+// fallback_corners counts the corners of vertices < counted only (the one-thread path runs this
+// on the faces around its hard vertices, numbered first, and keeps only their results).
 template <class T, Weighting W>
-CornerNormals compute(const MeshView& mesh, double crease_angle, Precision precision, const std::uint32_t* face_group) {
+CornerNormals compute(const MeshView& mesh, double crease_angle, Precision precision, const std::uint32_t* face_group,
+                      std::vector<std::uint32_t>* base_out = nullptr, std::size_t counted = ~std::size_t(0)) {
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners();
   // (1) face normals: zero for degenerate faces.
   BulkVector<double> fn(3 * mesh.num_faces());  // every entry written
@@ -672,8 +679,215 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
       }
     }
   });
-  for (auto n : fallback_corners) out.fallback_corners += n;
+  for (std::size_t v = 0; v < std::min(V, counted); ++v) out.fallback_corners += fallback_corners[v];
+  if (base_out) base_out->swap(base);
   return out;
+}
+
+// The one-thread path (triangle meshes without smoothing groups, Angle or Uniform weighting):
+// the same results as compute, bit for bit, with no vertex-major gathering for the vertices that
+// are one smooth group (most vertices of a smooth mesh). Steps:
+// (1) add_faces_to_slots (engine/vertex_slots.h): one pass in face order gives every vertex its
+//     contribution sum S (ascending corner order: compute's group sum), the sum U of its unit face
+//     normals, its corner count d and up to kSlotPairs (next, prev) pairs;
+// (2) in vertex order, a vertex is easy when every face at it was taken by the vector pass (valid:
+//     U is not NaN), SmoothCone passes on U (no crease can split it), d <= kSlotPairs and its pairs form one closed
+//     ring (one_smooth_ring), and S normalises: compute would find exactly one group for it, whose
+//     row is S normalised (the same sum, the same normalise_sum). Every other vertex with corners is
+//     hard. Each vertex with corners takes one provisional row, in vertex order;
+// (3) the faces with a hard corner, in ascending order, are a sub-mesh (its vertices renumbered,
+//     the hard ones first in ascending order) that compute groups: every face of a hard vertex is
+//     in it, in the same order, so the vertex's fan, groups, group sums and fallbacks are those of
+//     compute on the whole mesh (nothing else is read: Angle and Uniform contributions have no
+//     per-mesh scale, corner_contributions.h);
+// (4) each hard vertex's rows replace its provisional row (the pool widened where it has several
+//     groups), and one pass in corner order writes corner_index.
+// Returns false (out untouched) where SmoothCone cannot pass any vertex (crease angles below ~0.6
+// degrees, negative or NaN) or the corner count reaches 2^31, and, when `choose`, on meshes of fewer
+// than kOneThreadMinFaces faces, where the probe
+// (worth_one_thread_path) predicts too many hard vertices or more than kHardShare of the vertices
+// turn out hard after (2): compute alone is faster there (bench/normals/results/notes.md, fifth
+// round). Whichever path runs, the results are the same bits.
+constexpr std::uint32_t kHardBit = 0x80000000u;
+constexpr double kHardShare = 0.5;
+// Below this many faces the general path is as fast or faster (its arrays stay in cache; measured
+// on the irregular sphere and the faceted icosahedron: 0.9x at 20k faces, 1.1-1.15x at 60-80k).
+constexpr std::size_t kOneThreadMinFaces = 50000;
+
+// Whether the one-thread path is likely to pay: kProbeWindows windows of kProbeFaces faces or
+// F / kProbeShare, whichever is more, spread over the mesh, each copied out as a small mesh of its
+// own (vertices renumbered through a hash table: no array of #V is touched) and put through pass 1
+// (add_faces_to_slots); then each of its vertices is classified: hard for certain when a face at it
+// was not taken by the vector pass, it has more than kSlotPairs corners, or it fails SmoothCone
+// (adding faces cannot make the spread d - |U| smaller: it is a minimum over directions of a sum of
+// non-negative terms; the test's margins grow with d); easy when its corners seen form one closed ring; else not counted (its fan
+// may continue outside the window). Worth it when the hard share among the counted vertices is at
+// most kProbeHardShare (measured: bench/normals/results/notes.md, fifth round), or when too few
+// vertices could be counted to tell; the probe stops after a window where enough vertices were
+// counted and the hard share already exceeds twice that. The estimate leans towards hard (a window cuts fans open, and
+// only closed ones count as easy); it only chooses between two paths that give the same bits.
+constexpr std::size_t kProbeWindows = 8, kProbeFaces = 256, kProbeShare = 512, kProbeMinCounted = 32;
+constexpr double kProbeHardShare = 0.05;
+
+template <class T>
+bool worth_one_thread_path(const MeshView& mesh, const SmoothCone& cone) {
+  const std::size_t F = mesh.num_faces();
+  const std::size_t window = std::max(kProbeFaces, F / kProbeShare);
+  if (F < 2 * kProbeWindows * window) return true;
+  std::size_t table = 1;
+  while (table < 6 * window) table <<= 1;  // load <= 1/2
+  std::vector<std::uint32_t> key(table), id(table), local_cv(3 * window);
+  std::vector<double> local_positions;
+  local_positions.reserve(9 * window);
+  BulkVector<VertexSlot<T>> slots(3 * window + 1);
+  std::size_t hard = 0, easy = 0;
+  for (std::size_t k = 0; k < kProbeWindows; ++k) {
+    const std::size_t f_begin = (2 * k + 1) * F / (2 * kProbeWindows);
+    std::fill(key.begin(), key.end(), ~0u);
+    local_positions.clear();
+    std::uint32_t n = 0;
+    for (std::size_t i = 0; i < 3 * window; ++i) {
+      const std::uint32_t v = mesh.corner_vertex[3 * f_begin + i];
+      std::size_t h = (std::size_t(v) * 0x9E3779B1u) & (table - 1);
+      while (key[h] != ~0u && key[h] != v) h = (h + 1) & (table - 1);
+      if (key[h] == ~0u) {
+        key[h] = v;
+        id[h] = n++;
+        local_positions.insert(local_positions.end(), mesh.positions + 3 * std::size_t(v), mesh.positions + 3 * std::size_t(v) + 3);
+      }
+      local_cv[i] = id[h];
+    }
+    const MeshView part = MeshView::triangles(local_positions.data(), n, local_cv.data(), window);
+    clear_vertex_slots(slots.data(), std::size_t(n) + 1);
+    add_faces_to_slots<T, Weighting::Angle>(part, 0, window, slots.data());
+    for (std::uint32_t v = 0; v < n; ++v) {
+      const VertexSlot<T>& sl = slots[v];
+      if (sl.d > kSlotPairs || !cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2])) ++hard;
+      else if (one_smooth_ring(v, sl)) ++easy;
+    }
+    // Clearly not worth it (twice the limit): stop here (a CAD part stops after its first window).
+    if (hard + easy >= kProbeMinCounted && double(hard) > 2.0 * kProbeHardShare * double(hard + easy)) return false;
+  }
+  return hard + easy < kProbeMinCounted || double(hard) <= kProbeHardShare * double(hard + easy);
+}
+
+template <class T, Weighting W>
+bool compute_one_thread(const MeshView& mesh, double crease_angle, Precision precision, bool choose, CornerNormals& out) {
+  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners(), F = mesh.num_faces();
+  const SmoothCone cone(crease_angle);
+  if (!cone.usable || C >= kHardBit) return false;
+  if (choose && (F < kOneThreadMinFaces || !worth_one_thread_path<T>(mesh, cone))) return false;
+  const std::uint32_t* cv = mesh.corner_vertex;
+  // (1)
+  BulkVector<VertexSlot<T>> slots(V + 1);  // +1: padding read by one_smooth_ring
+  clear_vertex_slots(slots.data(), V + 1);
+  const std::size_t degenerate = add_faces_to_slots<T, W>(mesh, 0, F, slots.data());
+  // (2) row[v]: provisional row of an easy vertex; kHardBit | h for the h-th hard vertex.
+  BulkVector<std::uint32_t> row(V);
+  std::vector<std::uint32_t> hard, hard_row;
+  std::vector<double> pool;
+  reserve_bulk(pool, 3 * V);
+  pool.resize(3 * V);
+  std::vector<std::uint64_t> hard_bit((V + 63) / 64, 0);  // the gather in (3) reads this, not row
+  std::uint32_t used = 0;
+  for (std::uint32_t v = 0; v < V; ++v) {
+    const VertexSlot<T>& sl = slots[v];
+    row[v] = used;
+    if (sl.d == 0) continue;  // no corner: no row
+    double* o = &pool[3 * std::size_t(used)];
+    const bool easy = sl.d <= kSlotPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && one_smooth_ring(v, sl) &&
+                      normalise_sum(double(sl.s[0]), double(sl.s[1]), double(sl.s[2]), o);
+    if (!easy) {
+      row[v] = kHardBit | std::uint32_t(hard.size());
+      hard.push_back(v);
+      hard_row.push_back(used);
+      hard_bit[v >> 6] |= std::uint64_t(1) << (v & 63);
+    }
+    ++used;
+  }
+  if (choose && double(hard.size()) > kHardShare * double(used)) return false;
+  slots = BulkVector<VertexSlot<T>>();
+  // (3) the sub-mesh of the faces around hard vertices, computed by the general path.
+  const std::uint32_t H = std::uint32_t(hard.size());
+  std::vector<std::uint32_t> sub_faces, sub_cv, sub_base;
+  CornerNormals sub;
+  if (H) {
+    std::vector<std::uint32_t> local(V, ~0u), sub_vertex(hard);
+    for (std::uint32_t h = 0; h < H; ++h) local[hard[h]] = h;
+    for (std::size_t f = 0; f < F; ++f) {
+      const std::uint32_t* c = cv + 3 * f;
+      auto is_hard = [&](std::uint32_t v) { return (hard_bit[v >> 6] >> (v & 63)) & 1u; };
+      if (!(is_hard(c[0]) | is_hard(c[1]) | is_hard(c[2]))) continue;
+      sub_faces.push_back(std::uint32_t(f));
+      for (int k = 0; k < 3; ++k) {
+        std::uint32_t& l = local[c[k]];
+        if (l == ~0u) {
+          l = std::uint32_t(sub_vertex.size());
+          sub_vertex.push_back(c[k]);
+        }
+        sub_cv.push_back(l);
+      }
+    }
+    std::vector<double> sub_positions(3 * sub_vertex.size());
+    for (std::size_t l = 0; l < sub_vertex.size(); ++l)
+      for (int k = 0; k < 3; ++k) sub_positions[3 * l + k] = mesh.positions[3 * std::size_t(sub_vertex[l]) + k];
+    const MeshView sub_mesh =
+        MeshView::triangles(sub_positions.data(), sub_vertex.size(), sub_cv.data(), sub_faces.size());
+    sub = compute<T, W>(sub_mesh, crease_angle, precision, nullptr, &sub_base, H);
+  }
+  // (4) rows: hard vertex h's groups at final row first[h] (its provisional row shifted by the extra
+  // rows of the hard vertices before it), easy rows shifted likewise.
+  std::size_t extra = 0;
+  for (std::uint32_t h = 0; h < H; ++h) extra += sub_base[h + 1] - sub_base[h] - 1;  // >= 1 group each
+  const std::size_t N = used + extra;
+  std::vector<std::uint32_t> delta(H);  // final row - sub-mesh row, mod 2^32
+  if (extra == 0) {
+    pool.resize(3 * N);
+    for (std::uint32_t h = 0; h < H; ++h) {
+      std::copy_n(&sub.normals[3 * std::size_t(sub_base[h])], 3, &pool[3 * std::size_t(hard_row[h])]);
+      delta[h] = hard_row[h] - sub_base[h];
+    }
+    out.normals.swap(pool);
+  } else {
+    reserve_bulk(out.normals, 3 * N);
+    out.normals.resize(3 * N);
+    std::size_t from = 0, shift = 0;  // provisional rows [from, hard_row[h]) are easy
+    for (std::uint32_t h = 0; h < H; ++h) {
+      std::copy(&pool[3 * from], &pool[3 * std::size_t(hard_row[h])], &out.normals[3 * (from + shift)]);
+      const std::uint32_t g = sub_base[h + 1] - sub_base[h];
+      std::copy_n(&sub.normals[3 * std::size_t(sub_base[h])], 3 * std::size_t(g), &out.normals[3 * (hard_row[h] + shift)]);
+      delta[h] = std::uint32_t(hard_row[h] + shift) - sub_base[h];
+      from = hard_row[h] + 1;
+      shift += g - 1;
+    }
+    std::copy(&pool[3 * from], &pool[3 * std::size_t(used)], &out.normals[3 * (from + shift)]);
+    shift = 0;
+    for (std::uint32_t v = 0; v < V; ++v) {
+      const std::uint32_t r = row[v];
+      if (r & kHardBit) shift += sub_base[(r & ~kHardBit) + 1] - sub_base[r & ~kHardBit] - 1;
+      else row[v] = std::uint32_t(r + shift);
+    }
+  }
+  reserve_bulk(out.corner_index, C);
+  out.corner_index.resize(C);
+  std::uint32_t* ci = out.corner_index.data();
+  std::size_t p = 0, next_sub = sub_faces.empty() ? F : sub_faces[0];
+  for (std::size_t f = 0; f < F; ++f) {
+    const std::size_t c = 3 * f;
+    if (f != next_sub) {
+      ci[c] = row[cv[c]]; ci[c + 1] = row[cv[c + 1]]; ci[c + 2] = row[cv[c + 2]];
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t r = row[cv[c + k]];
+      ci[c + k] = (r & kHardBit) ? sub.corner_index[3 * p + k] + delta[r & ~kHardBit] : r;
+    }
+    ++p;
+    next_sub = p < sub_faces.size() ? sub_faces[p] : F;
+  }
+  out.fallback_corners = sub.fallback_corners;
+  out.degenerate_faces = degenerate;
+  return true;
 }
 
 }  // namespace
@@ -697,17 +911,35 @@ GroupNormals corner_group_normals(const Mesh& mesh, const std::vector<std::uint3
 namespace {
 
 CornerNormals corner_normals_in_groups(const MeshView& mesh, double crease_angle, Weighting weighting,
-                                       Precision precision, const std::uint32_t* face_group) {
+                                       Precision precision, const std::uint32_t* face_group,
+                                       normals_detail::CreasePath path = normals_detail::CreasePath::Auto) {
+  using normals_detail::CreasePath;
   std::vector<double> storage;  // exactly scaled positions for a mesh outside the kernels' range (engine/mesh_scale.h)
   const MeshView in_range = in_kernel_range(mesh, storage);
   return dispatch(weighting, precision, [&](auto t, auto w) {
     using T = decltype(t);
     constexpr Weighting W = decltype(w)::value;
+    if constexpr (W == Weighting::Angle || W == Weighting::Uniform) {
+      const bool one_thread = path == CreasePath::OneThread || (path == CreasePath::Auto && usable_threads() == 1);
+      if (one_thread && !face_group && in_range.all_triangles()) {
+        CornerNormals out;
+        if (compute_one_thread<T, W>(in_range, crease_angle, precision, path == CreasePath::Auto, out)) return out;
+      }
+    }
     return compute<T, W>(in_range, crease_angle, precision, face_group);
   });
 }
 
 }  // namespace
+
+namespace normals_detail {
+
+CornerNormals corner_normals_by(const MeshView& mesh, double crease_angle, Weighting weighting, Precision precision,
+                                CreasePath path) {
+  return corner_normals_in_groups(mesh, crease_angle, weighting, precision, nullptr, path);
+}
+
+}  // namespace normals_detail
 
 CornerNormals corner_normals(const MeshView& mesh, double crease_angle, Weighting weighting, Precision precision) {
   return corner_normals_in_groups(mesh, crease_angle, weighting, precision, nullptr);

@@ -1,0 +1,193 @@
+// vertex_slots.h: the face-order pass of corner_normals' one-thread path (crease_paths.h) for triangle meshes
+// (internal to lib/normals; header-only so that the contribution code inlines into its loop).
+//
+// What it computes, in one pass over the faces in ascending order, into one 128-byte VertexSlot
+// per vertex:
+//   s     the sum of the vertex's corner contributions (corner_contributions.h, weighting W,
+//         rounded to T and added in T in ascending corner order): exactly the sum that
+//         vertex_normals and corner_normals' group sums form for a vertex whose corners are one
+//         group, bit for bit (the same vectorised block kernel, triangle_blocks.h, the same
+//         additions in the same order as accumulate_by_vertex.h's serial loop);
+//   u     the sum of the unit normals of its faces rounded to float, in float (SmoothCone's U,
+//         as corner_normals.cpp's vertex_fans adds it up); a face's unit normal is read off its
+//         contributions: for Angle (w0 + w1 + w2) / pi (w_k = theta_k n, theta_0 + theta_1 +
+//         theta_2 = pi by construction, so within ~1e-13 of n: the angles' relative error bound,
+//         triangle_blocks.h; SmoothCone allows 1e-6), for Uniform w0 = n itself; NaN once a face
+//         at the vertex was not taken by the vector pass (degenerate, or out of its range:
+//         triangle_scalar then adds the face's contributions to s if it has any), so that such a
+//         vertex is never classified one-group here;
+//   d     its corner count;
+//   next, prev  the vertices after and before it in each of its first kSlotPairs faces (in face
+//         order); a vertex with more corners keeps overwriting the last pair (it is left to the
+//         general path: d > kSlotPairs).
+// add_faces_to_slots adds faces [f_begin, f_end) to slots cleared by clear_vertex_slots.
+// Inputs:  mesh     triangles (mesh.all_triangles()), positions #V by 3, corner_vertex #C
+//          slots    #V + 1 slots (the last is padding for the ring test's vector loads)
+// Returns the number of degenerate faces (as triangle_contributions counts them).
+// Precision: contributions in double rounded once to T, sums in T (as everywhere in lib/normals);
+// u in double. Only W = Angle and W = Uniform (their contributions carry the unit normal, and
+// their scale is 1 for either T: corner_contributions.h's kScaledContributions).
+//
+// one_smooth_ring: whether the slot's d <= kSlotPairs corners form one closed ring (the fan
+// test of corner_normals.cpp's closed_triangle_ring8, on 12 lanes): each corner's successor is
+// the first corner arriving from the vertex it leaves to (three 4-lane compares), and walking the
+// successor map from corner 0 must return to it first after exactly d steps. Such a walk visits
+// all d corners once, so the successor map is a permutation of them: no far vertex is left twice
+// (two corners leaving to w would have the same successor) nor reached twice (the successor is the
+// first arriving corner, and every corner is some corner's successor): every edge at the vertex is
+// manifold and consistently oriented, and its d edges link all d corners into one group, exactly
+// as the edge-by-edge grouping would (given that no edge is a crease: SmoothCone's job).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include <shadetool/core/math_constants.h>
+#include <shadetool/core/mesh_view.h>
+#include <shadetool/normals/engine/corner_contributions.h>
+#include <shadetool/normals/engine/triangle_blocks.h>
+#include <shadetool/normals/weighting.h>
+
+namespace shadetool::normals_detail {
+
+// Measured on the irregular UV sphere of bench_crease (bench/normals/results/notes.md): 6 pairs
+// left 36% of its vertices to the general path, 9 left 2.0%, 11 (all that fit in two lines) 0.6%.
+constexpr std::uint32_t kSlotPairs = 11;
+
+template <class T>
+struct alignas(64) VertexSlot {
+  float u[3];       // NaN after a face the vector pass did not take
+  std::uint32_t d;  // corners
+  T s[3];
+  std::uint32_t next[kSlotPairs], prev[kSlotPairs];
+};
+static_assert(sizeof(VertexSlot<double>) == 128 && sizeof(VertexSlot<float>) == 128, "two cache lines per vertex");
+static_assert(kSlotPairs < 12, "one_smooth_ring compares 12 lanes");
+
+// The first cache line of slots [0, n): sums and counts zero (the pairs are written as they come).
+template <class T>
+void clear_vertex_slots(VertexSlot<T>* slots, std::size_t n) {
+  for (std::size_t v = 0; v < n; ++v) {
+    VertexSlot<T>& sl = slots[v];
+    sl.u[0] = sl.u[1] = sl.u[2] = 0.0f;
+    sl.s[0] = sl.s[1] = sl.s[2] = T(0);
+    sl.d = 0;
+  }
+}
+
+// Pass 1 (see the header block) over faces [f_begin, f_end), onto cleared slots (#V + 1).
+template <class T, Weighting W>
+std::size_t add_faces_to_slots(const MeshView& mesh, std::size_t f_begin, std::size_t f_end, VertexSlot<T>* slots) {
+  static_assert(W == Weighting::Angle || W == Weighting::Uniform, "the unit normal is read off the contributions");
+  std::size_t degenerate = 0;
+  const double* P = mesh.positions;
+  const std::uint32_t* cv = mesh.corner_vertex;
+  alignas(64) double xyz[9][kTriangleBlock];
+  alignas(64) double w[9][kTriangleBlock];
+  // Prefetched kPrefetchFaces ahead: positions, and both cache lines of the three slots.
+  const RowHint hint{reinterpret_cast<const char*>(slots), sizeof(VertexSlot<T>)};
+  const RowHint hint_pairs{reinterpret_cast<const char*>(slots) + 64, sizeof(VertexSlot<T>)};
+  for (std::size_t b = f_begin; b < f_end; b += kTriangleBlock) {
+    const std::size_t count = std::min(kTriangleBlock, f_end - b);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t c = 3 * (b + i);
+      if (b + i + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{});
+      for (int k = 0; k < 3; ++k) {
+        const double* p = P + 3 * std::size_t(cv[c + k]);
+        xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
+      }
+    }
+    if constexpr (W == Weighting::Angle) triangle_block_angle(count, &xyz[0][0], &w[0][0]);
+    else triangle_block_uniform(count, &xyz[0][0], &w[0][0]);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t c = 3 * (b + i);
+      if (b + i + kPrefetchFaces < f_end) {
+        prefetch_face(P, cv + c + 3 * kPrefetchFaces, hint);
+        prefetch_face(P, cv + c + 3 * kPrefetchFaces, hint_pairs);
+      }
+      const std::uint32_t v3[3] = {cv[c], cv[c + 1], cv[c + 2]};
+      if (std::isnan(w[0][i])) {  // out of the vector pass's range: the scalar path; the vertices go to the general path
+        auto sink = [&](std::size_t, std::uint32_t v, const Vec3<T>& n) {
+          T* s = slots[v].s;
+          s[0] += n.x; s[1] += n.y; s[2] += n.z;
+        };
+        degenerate += !triangle_scalar<T, W>(P, cv, c, sink, 1.0);
+        for (int k = 0; k < 3; ++k) {
+          slots[v3[k]].u[0] = std::numeric_limits<float>::quiet_NaN();  // SmoothCone fails
+          ++slots[v3[k]].d;  // still a corner of the vertex (it has a row even when all its faces are degenerate)
+        }
+        continue;
+      }
+      float nx, ny, nz;
+      if constexpr (W == Weighting::Angle) {
+        constexpr double inv_pi = 1.0 / kPi;
+        nx = float((w[0][i] + w[3][i] + w[6][i]) * inv_pi);
+        ny = float((w[1][i] + w[4][i] + w[7][i]) * inv_pi);
+        nz = float((w[2][i] + w[5][i] + w[8][i]) * inv_pi);
+      } else {
+        nx = float(w[0][i]); ny = float(w[1][i]); nz = float(w[2][i]);
+      }
+      for (int k = 0; k < 3; ++k) {
+        VertexSlot<T>& sl = slots[v3[k]];
+        const Vec3<T> n = to<T>(Vec3d{w[3 * k][i], w[3 * k + 1][i], w[3 * k + 2][i]});
+        sl.s[0] += n.x; sl.s[1] += n.y; sl.s[2] += n.z;
+        sl.u[0] += nx; sl.u[1] += ny; sl.u[2] += nz;
+        const std::uint32_t d = sl.d;
+        const std::uint32_t at = d < kSlotPairs ? d : kSlotPairs - 1;
+        sl.next[at] = v3[k == 2 ? 0 : k + 1];
+        sl.prev[at] = v3[k == 0 ? 2 : k - 1];
+        sl.d = d + 1;
+      }
+    }
+  }
+  return degenerate;
+}
+
+// See the header block. Requires 1 <= d <= kSlotPairs < 12; reads the lane after prev (the next
+// slot's first bytes, or the padding slot), masked.
+template <class T>
+inline bool one_smooth_ring(std::uint32_t v, const VertexSlot<T>& sl) {
+  const std::uint32_t d = sl.d;
+  std::uint32_t succ[16] = {};
+#if defined(__SSE2__)
+  const __m128i vv = _mm_set1_epi32(int(v)), count = _mm_set1_epi32(int(d));
+  __m128i prev[3];
+  for (int q = 0; q < 3; ++q) {
+    const __m128i index = _mm_setr_epi32(4 * q, 4 * q + 1, 4 * q + 2, 4 * q + 3);
+    const __m128i in_fan = _mm_cmplt_epi32(index, count);
+    const __m128i lanes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(sl.prev + 4 * q));
+    prev[q] = _mm_or_si128(_mm_and_si128(in_fan, lanes), _mm_andnot_si128(in_fan, vv));
+  }
+#endif
+  bool linked = true;  // every corner leaves to a far vertex that some corner arrives from
+  for (std::uint32_t i = 0; i < d; ++i) {
+    const std::uint32_t w = sl.next[i];
+#if defined(__SSE2__)
+    const __m128i x = _mm_set1_epi32(int(w));
+    const std::uint32_t m = std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(prev[0], x)))) |
+                            std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(prev[1], x)))) << 4 |
+                            std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(prev[2], x)))) << 8;
+#else
+    std::uint32_t m = 0;
+    for (std::uint32_t j = 0; j < d; ++j) m |= std::uint32_t(sl.prev[j] == w) << j;
+#endif
+    linked &= (w != v) & (m != 0);
+    succ[i] = std::uint32_t(__builtin_ctz(m | 0x8000u)) & 15u;
+  }
+  std::uint32_t k = 0, returns = 0;  // bit s: the walk is at corner 0 after s steps
+  for (std::uint32_t step = 1; step <= kSlotPairs; ++step) {
+    k = succ[k];
+    returns |= std::uint32_t(k == 0) << step;
+  }
+  return linked & (std::uint32_t(__builtin_ctz(returns | (1u << (kSlotPairs + 1)))) == d);
+}
+
+}  // namespace shadetool::normals_detail
