@@ -10,7 +10,8 @@
 // depending on where the corner normals' blocks had landed (tangents_steps.md, "tangents6"). So the
 // figure is taken with the allocator kept warm for both rows alike (`warm`, the default: mallopt
 // M_TRIM_THRESHOLD INT_MAX, M_MMAP_THRESHOLD 32 MiB, M_TOP_PAD 64 MiB, set once before the mesh is
-// built): each row's steady cost, no page faults after the first calls. `glibc` keeps glibc's
+// built, and one untimed round): each row's steady cost, no page fault in a timed call (the median
+// faults per call are printed). `glibc` keeps glibc's
 // defaults (the protocol before tangents6). --fresh N adds what one `shadetool normals --tangents`
 // pays: N processes of each row, interleaved, each timing one call on glibc's defaults, faults
 // included (this binary re-run with --single ROW).
@@ -29,6 +30,7 @@
 
 #include <climits>
 #include <malloc.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <tbb/global_control.h>
@@ -64,6 +66,13 @@ double time_cpu_ms(F&& f) {
   const double a = cpu_ms();
   f();
   return cpu_ms() - a;
+}
+
+// Minor page faults of this process so far (fresh pages the kernel had to map and zero).
+double minor_faults() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_minflt);
 }
 
 double median(std::vector<double> v) {
@@ -120,10 +129,18 @@ int main(int argc, char** argv) {
     return 0;
   }
   // Round-robin: each run times the normals, then the tangents, so that both see the same load.
-  std::vector<double> normals_runs, tangents_runs, ratios;
+  // With the allocator warm, one untimed round first: the heap reaches its size there, and the
+  // timed calls fault in no page (the faults per call are printed to show it).
+  auto normals_call = [&] { sink = sink + corner_normals(m, 3.141592653589793).normals[0]; };
+  auto tangents_call = [&] { sink = sink + mikktspace_tangents(m).tangents[0]; };
+  if (malloc_mode == "warm") normals_call(), tangents_call();
+  std::vector<double> normals_runs, tangents_runs, ratios, normals_faults, tangents_faults;
   for (int k = 0; k < runs; ++k) {
-    normals_runs.push_back(time_cpu_ms([&] { sink = sink + corner_normals(m, 3.141592653589793).normals[0]; }));
-    tangents_runs.push_back(time_cpu_ms([&] { sink = sink + mikktspace_tangents(m).tangents[0]; }));
+    double f0 = minor_faults();
+    normals_runs.push_back(time_cpu_ms(normals_call));
+    double f1 = minor_faults();
+    tangents_runs.push_back(time_cpu_ms(tangents_call));
+    tangents_faults.push_back(minor_faults() - f1), normals_faults.push_back(f1 - f0);
     ratios.push_back(tangents_runs.back() / normals_runs.back());
   }
   const double normals_ms = median(normals_runs), tangents_ms = median(tangents_runs);
@@ -133,6 +150,7 @@ int main(int argc, char** argv) {
   std::printf("| corner normals (angle, crease 180) | %.2f | %.3g |\n", normals_ms, C / (normals_ms / 1000));
   std::printf("| MikkTSpace tangents (ours) | %.2f | %.3g |\n", tangents_ms, C / (tangents_ms / 1000));
   std::printf("tangents / normals: %.2fx (median of the per-run ratios: %.2fx)\n", tangents_ms / normals_ms, median(ratios));
+  std::printf("page faults per timed call (median): normals %.0f, tangents %.0f\n", median(normals_faults), median(tangents_faults));
   if (fresh > 0) {
     // Interleaved: a normals process, then a tangents process, N times.
     char self[4096];
