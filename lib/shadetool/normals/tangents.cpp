@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <numeric>
 
 #include <shadetool/core/error.h>
 #include <shadetool/normals/engine/tangent_corner_terms.h>
@@ -86,9 +87,19 @@ struct TSpace {
 };
 
 // Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners), with
-// their corners' welded vertices (`welded`: step 2's, per corner).
+// their corners' welded vertices (`welded`: step 2's, per corner). `welded` null: every face is a
+// taken triangle, so triangle t is face t with corners 3 t + k, and step 2 wrote tris.index (#C)
+// itself; only the corners and faces are numbered here.
 void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
                     const std::uint32_t* welded, Triangles& tris) {
+  if (!welded) {
+    tris.corner.resize(in.num_corners);
+    std::iota(tris.corner.begin(), tris.corner.end(), 0u);
+    tris.face.resize(mesh.num_faces());
+    std::iota(tris.face.begin(), tris.face.end(), 0u);
+    tris.flag.assign(tris.face.size(), 0);
+    return;
+  }
   std::size_t count = 0;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) count += taken[f] ? mesh.face_size(f) - 2 : 0;
   tris.corner.reserve(3 * count);
@@ -187,16 +198,16 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
   return first;
 }
 
-struct Welded {
-  std::unique_ptr<std::uint32_t[]> id;  // #C: the welded vertex of each corner taken (unwritten elsewhere)
-  std::vector<WeldedVertex> vertex;  // #U: its values
-};
-
-Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken) {
+// The welded vertices' values (#U), returned; id (#C): the welded vertex of each corner taken,
+// written (left unwritten elsewhere).
+std::vector<WeldedVertex> weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
+                               std::uint32_t* id) {
   const std::size_t V = in.positions.size(), F = mesh.num_faces();
   const std::vector<std::uint32_t> first = canonical_positions(in.positions);
-  Welded w;
-  w.id.reset(new std::uint32_t[in.num_corners]);
+  struct {
+    std::uint32_t* id;
+    std::vector<WeldedVertex> vertex;
+  } w{id, {}};
   w.vertex.reserve(V + V / 4);
   constexpr std::uint32_t kLinear = 16, kNone = ~0u;
   std::vector<std::uint32_t> head(V, kNone);   // canonical vertex -> its latest welded vertex
@@ -264,7 +275,7 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
       if (!has_nan(x)) r = {in.normal[c], in.texcoord[c], k};
     }
   }
-  return w;
+  return std::move(w.vertex);
 }
 
 float texture_area(const std::vector<WeldedVertex>& wv, const std::uint32_t* idx) {
@@ -972,16 +983,22 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   in.normal = mesh.has_corner_normals() ? mesh.corner_normal_index.data()
               : mesh.has_vertex_normals() ? mesh.corner_vertex.data() : corner_face.data();
   in.texcoord = mesh.corner_texcoord_index.data();
+  bool taken_triangles = true;  // every face taken, every one a triangle
   for (std::size_t f = 0; f < F; ++f) {
     bool ok = mesh.face_size(f) >= 3 && dims >= 2;
     for (std::uint32_t c = mesh.face_start[f]; ok && c < mesh.face_start[f + 1]; ++c)
       ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
     taken[f] = ok;
+    taken_triangles &= ok && mesh.face_size(f) == 3;
   }
-  const Welded welded = weld(mesh, in, taken);
-  const std::vector<WeldedVertex>& wv = welded.vertex;
+  // The welded vertex per corner: written straight into the triangles' index when triangle t is
+  // face t (corners 3 t + k), else into a scratch array that make_triangles reads.
   Triangles tris;
-  make_triangles(mesh, in, taken, welded.id.get(), tris);
+  std::unique_ptr<std::uint32_t[]> welded_id;
+  if (taken_triangles) tris.index.resize(C);
+  else welded_id.reset(new std::uint32_t[C]);
+  const std::vector<WeldedVertex> wv = weld(mesh, in, taken, taken_triangles ? tris.index.data() : welded_id.get());
+  make_triangles(mesh, in, taken, welded_id.get(), tris);
   TriInfos info(new TriInfo[tris.face.size()]);  // TriInfo{}: zero derivatives
   degenerate_and_derivatives(mesh, wv, tris, info);
   std::vector<Group> groups;
