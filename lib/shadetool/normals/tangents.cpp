@@ -52,10 +52,16 @@ struct Corners {
 };
 
 struct Triangles {
+  std::size_t count = 0;              // triangles
+  // Triangle t is face t, with corners 3 t + k (every face a taken triangle, none moved): corner
+  // and face are then left empty and corner_of, face_of give those numbers.
+  bool identity = false;
   std::vector<std::uint32_t> corner;  // 3 per triangle: the global corner (the output slot)
   std::vector<std::uint32_t> index;   // 3 per triangle: the welded vertex (step 2's dense number)
   std::vector<std::uint32_t> face;    // the mesh face it came from
   std::vector<std::uint8_t> flag;
+  std::uint32_t corner_of(std::size_t slot) const { return identity ? std::uint32_t(slot) : corner[slot]; }
+  std::uint32_t face_of(std::size_t t) const { return identity ? std::uint32_t(t) : face[t]; }
   std::size_t good = 0;               // triangles [0, good) are healthy, in order; the rest degenerate
   // Per corner slot 3 t + k of a healthy triangle: the triangle across its edge k (corner k to
   // k + 1), -1 where none.
@@ -88,16 +94,14 @@ struct TSpace {
 
 // Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners), with
 // their corners' welded vertices (`welded`: step 2's, per corner). `welded` null: every face is a
-// taken triangle, so triangle t is face t with corners 3 t + k, and step 2 wrote tris.index (#C)
-// itself; only the corners and faces are numbered here.
+// taken triangle, so triangle t is face t with corners 3 t + k (tris.identity), and step 2 wrote
+// tris.index (#C) itself.
 void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
                     const std::uint32_t* welded, Triangles& tris) {
   if (!welded) {
-    tris.corner.resize(in.num_corners);
-    std::iota(tris.corner.begin(), tris.corner.end(), 0u);
-    tris.face.resize(mesh.num_faces());
-    std::iota(tris.face.begin(), tris.face.end(), 0u);
-    tris.flag.assign(tris.face.size(), 0);
+    tris.identity = true;
+    tris.count = mesh.num_faces();
+    tris.flag.assign(tris.count, 0);
     return;
   }
   std::size_t count = 0;
@@ -130,7 +134,8 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
       for (std::uint32_t k = 1; k + 1 < n; ++k) add(fu, b, b + k, b + k + 1);  // fan (not in the reference)
     }
   }
-  tris.flag.assign(tris.face.size(), 0);
+  tris.count = tris.face.size();
+  tris.flag.assign(tris.count, 0);
 }
 
 // Step 2: welded vertex of every corner taken: corners with the same (position, normal, texture
@@ -314,7 +319,7 @@ void triangle_derivatives(const WeldedVertex& w1, const WeldedVertex& w2, const 
 // them); last, a quad whose two healthy triangles disagree in orientation takes the larger one's
 // (or the healthy one's when the other groups with any).
 void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, TriInfos& info) {
-  const std::size_t T = tris.face.size();
+  const std::size_t T = tris.count;
   std::size_t degenerate = 0;
   for (std::size_t t = 0; t < T; ++t) {
     const std::uint32_t* idx = &tris.index[3 * t];
@@ -328,7 +333,7 @@ void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex
   tris.good = T - degenerate;
   if (degenerate > 0) {
     for (std::size_t t = 0; t + 1 < T;) {
-      if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
+      if (tris.face_of(t) == tris.face_of(t + 1) && mesh.face_size(tris.face_of(t)) == 4) {
         if (((tris.flag[t] ^ tris.flag[t + 1]) & kDegenerate) != 0) {
           tris.flag[t] |= kQuadOneDegenerate;
           tris.flag[t + 1] |= kQuadOneDegenerate;
@@ -344,16 +349,17 @@ void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex
       if (!(tris.flag[t] & kDegenerate)) order.push_back(t);
     for (std::size_t t = 0; t < T; ++t)
       if (tris.flag[t] & kDegenerate) order.push_back(t);
-    Triangles sorted;
+    Triangles sorted;  // corners and faces listed (not identity: triangles move)
+    sorted.count = T;
     sorted.good = tris.good;
     TriInfos sorted_info(new TriInfo[T]);
     for (std::size_t t : order) {
       for (int k = 0; k < 3; ++k) {
-        sorted.corner.push_back(tris.corner[3 * t + k]);
+        sorted.corner.push_back(tris.corner_of(3 * t + k));
         sorted.index.push_back(tris.index[3 * t + k]);
       }
       sorted_info[sorted.face.size()] = info[t];
-      sorted.face.push_back(tris.face[t]);
+      sorted.face.push_back(tris.face_of(t));
       sorted.flag.push_back(tris.flag[t]);
     }
     tris = std::move(sorted);
@@ -361,7 +367,7 @@ void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex
   }
   const std::size_t good = tris.good;
   for (std::size_t t = 0; t + 1 < good;) {
-    if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
+    if (tris.face_of(t) == tris.face_of(t + 1) && mesh.face_size(tris.face_of(t)) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kOrientPreserving) != 0) {
         const bool first = (tris.flag[t + 1] & kGroupWithAny) != 0 ||
                            texture_area(wv, &tris.index[3 * t]) >= texture_area(wv, &tris.index[3 * (t + 1)]);
@@ -641,7 +647,7 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
     const std::uint32_t* slots = &members[group.offset];
     auto member = [&](std::uint32_t j) {
       const std::uint32_t t = slots[j] / 3;
-      return Member{slots[j], tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
+      return Member{slots[j], tris.face_of(t), (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
     };
     if (n > 16) {
       for (std::uint32_t j = 0; j < n; ++j) m[j] = member(j);
@@ -659,7 +665,7 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
       out.frames.push_back(evaluate_frame(m.data(), nullptr, n));
       out.frames.back().orient = group.orient;
       const auto frame = std::uint32_t(out.frames.size() - 1);
-      for (std::uint32_t i = 0; i < n; ++i) out.receive(tris.corner[m[i].slot], frame, group.orient);
+      for (std::uint32_t i = 0; i < n; ++i) out.receive(tris.corner_of(m[i].slot), frame, group.orient);
       continue;
     }
     sub_members.clear();
@@ -684,7 +690,7 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
         out.frames.push_back(evaluate_frame(m.data(), sub.data(), sub.size()));
         out.frames.back().orient = group.orient;
       }
-      out.receive(tris.corner[m[i].slot], std::uint32_t(base + l), group.orient);
+      out.receive(tris.corner_of(m[i].slot), std::uint32_t(base + l), group.orient);
     }
   }
 }
@@ -799,7 +805,7 @@ class OneGroupFrames {
       frame.orient = lane.orient;
       out_.frames.push_back(frame);
       const auto f = std::uint32_t(out_.frames.size() - 1);
-      for (std::size_t j = 0; j < lane.count; ++j) out_.receive(tris_.corner[slot_[j * L + g]], f, lane.orient);
+      for (std::size_t j = 0; j < lane.count; ++j) out_.receive(tris_.corner_of(slot_[j * L + g]), f, lane.orient);
     }
     lanes_ = rows_ = 0;
   }
@@ -821,7 +827,7 @@ class OneGroupFrames {
       term[j] = {{terms_[c], terms_[B + c], terms_[2 * B + c]},
                  {terms_[3 * B + c], terms_[4 * B + c], terms_[5 * B + c]},
                  terms_[6 * B + c], mags_[c], mags_[B + c]};
-      m[j] = {slot_[c], tris_.face[slot_[c] / 3], false, &term[j]};
+      m[j] = {slot_[c], tris_.face_of(slot_[c] / 3), false, &term[j]};
     }
     return whole_group(m, lane.count);
   }
@@ -906,7 +912,7 @@ void frames_by_vertex(const std::vector<WeldedVertex>& wv, const Triangles& tris
 // Step 8: frames for the corners of degenerate triangles.
 void degenerate_frames(const Mesh& mesh, const Corners& in, std::size_t num_welded, const Triangles& tris,
                        std::vector<std::uint32_t>& out) {
-  const std::size_t T = tris.face.size(), good = tris.good;
+  const std::size_t T = tris.count, good = tris.good;
   if (good == T) return;  // no degenerate triangle (nor, then, a quad with one)
   std::vector<std::uint32_t> first(num_welded, ~0u);  // welded vertex -> first healthy corner slot
   for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
@@ -914,20 +920,20 @@ void degenerate_frames(const Mesh& mesh, const Corners& in, std::size_t num_weld
     if (tris.flag[t] & kQuadOneDegenerate) continue;
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t j = first[tris.index[3 * t + i]];
-      if (j != ~0u) out[tris.corner[3 * t + i]] = out[tris.corner[j]];
+      if (j != ~0u) out[tris.corner_of(3 * t + i)] = out[tris.corner_of(j)];
     }
   }
   for (std::size_t t = 0; t < good; ++t) {
     if (!(tris.flag[t] & kQuadOneDegenerate)) continue;
-    const std::uint32_t b = mesh.face_start[tris.face[t]];
+    const std::uint32_t b = mesh.face_start[tris.face_of(t)];
     unsigned present = 0;
-    for (int i = 0; i < 3; ++i) present |= 1u << (tris.corner[3 * t + i] - b);
+    for (int i = 0; i < 3; ++i) present |= 1u << (tris.corner_of(3 * t + i) - b);
     std::uint32_t missing = 0;
     while (present & (1u << missing)) ++missing;
     const F3 dst = in.position(b + missing);
     for (int i = 0; i < 3; ++i)
-      if (in.position(tris.corner[3 * t + i]) == dst) {
-        out[b + missing] = out[tris.corner[3 * t + i]];
+      if (in.position(tris.corner_of(3 * t + i)) == dst) {
+        out[b + missing] = out[tris.corner_of(3 * t + i)];
         break;
       }
   }
@@ -999,7 +1005,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   else welded_id.reset(new std::uint32_t[C]);
   const std::vector<WeldedVertex> wv = weld(mesh, in, taken, taken_triangles ? tris.index.data() : welded_id.get());
   make_triangles(mesh, in, taken, welded_id.get(), tris);
-  TriInfos info(new TriInfo[tris.face.size()]);  // TriInfo{}: zero derivatives
+  TriInfos info(new TriInfo[tris.count]);  // TriInfo{}: zero derivatives
   degenerate_and_derivatives(mesh, wv, tris, info);
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
