@@ -1,8 +1,9 @@
 // bench_tangents: MikkTSpace tangents (normals/tangents.h) against angle-weighted corner normals
 // (corner_normals, crease 180 degrees) on the same mesh: a UV torus grid with texture coordinates
 // (a seam at u = 1 and v = 1: split texture coordinates, as real files have). Median of N runs,
-// one thread for both (the tangents are serial), the two timed round-robin in process CPU time. Writes the unindexed float inputs for the npm
-// reference when --dump FILE is given (bench/normals/bench_tangents.js times it).
+// one thread for both (the tangents are serial), the two timed round-robin in process CPU time.
+// Writes the unindexed float inputs for the npm reference when --dump FILE is given
+// (bench/normals/bench_tangents.js times it).
 //
 // The allocator (--malloc): the two rows alternate in one process, and with glibc's defaults each
 // row's frees give memory back (heap trim, dynamic mmap threshold) that the other row's next call
@@ -11,10 +12,10 @@
 // figure is taken with the allocator kept warm for both rows alike (`warm`, the default: mallopt
 // M_TRIM_THRESHOLD INT_MAX, M_MMAP_THRESHOLD 32 MiB, M_TOP_PAD 64 MiB, set once before the mesh is
 // built, and one untimed round): each row's steady cost, no page fault in a timed call (the median
-// faults per call are printed). `glibc` keeps glibc's
-// defaults (the protocol before tangents6). --fresh N adds what one `shadetool normals --tangents`
-// pays: N processes of each row, interleaved, each timing one call on glibc's defaults, faults
-// included (this binary re-run with --single ROW).
+// faults per call are printed). `glibc` keeps glibc's defaults (the protocol before tangents6).
+// --fresh N adds what one `shadetool normals --tangents` pays: N processes of each row,
+// interleaved, each timing one call on glibc's defaults, faults included (this binary re-run with
+// --single ROW).
 // usage: bench_tangents [--n GRID] [--runs N] [--malloc warm|glibc] [--fresh N] [--dump FILE]
 //        bench_tangents --single normals|tangents [--n GRID]   (one call; prints its CPU ms)
 #include <algorithm>
