@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # bench/normals/tangents.sh: tangents per second, ours against the npm reference (installed into the
 # build tree; skipped loudly without node/npm) and against angle-weighted corner normals on the same
-# mesh. Writes bench/normals/results/tangents.md.
+# mesh. Writes bench/normals/results/tangents.md. The figure: both rows in one process, round-robin,
+# the allocator kept warm for both (bench_tangents' default, --malloc warm); beside it, one call per
+# fresh process for each row (FRESH processes of each, interleaved: what one CLI run pays).
 set -euo pipefail
 src=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD_DIR:-$src/build-bench}
@@ -12,7 +14,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 {
   echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
   echo
-  "$build/bench/normals/bench_tangents" --n "${N:-400}" --runs "${RUNS:-7}" --dump "$tmp/in.f32"
+  "$build/bench/normals/bench_tangents" --n "${N:-400}" --runs "${RUNS:-7}" --fresh "${FRESH:-7}" --dump "$tmp/in.f32"
   ref=$build/mikktspace-node
   if [ ! -d "$ref/node_modules/mikktspace" ] && command -v npm > /dev/null; then
     npm install --silent --no-audit --no-fund --prefix "$ref" mikktspace > /dev/null 2>&1 || true

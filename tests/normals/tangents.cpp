@@ -171,6 +171,34 @@ TEST_CASE("MikkTSpace: faces without texture coordinates get a tangent perpendic
   CHECK_THROWS_AS(mikktspace_tangents(bare), shadetool::Error);
 }
 
+// Step 1 has two paths: when every face is a taken triangle the weld writes the triangles' welded
+// vertices itself; otherwise make_triangles collects them. A face without texture coordinates is no
+// part of the reference's input, so adding one (which sends the mesh down the other path) must
+// leave every other corner's frame bit for bit as it was.
+TEST_CASE("MikkTSpace: a face it does not take changes no other corner's frame (both triangle paths)", "[tangents]") {
+  for (bool with_nan : {false, true}) {
+    Mesh all_taken = textured_torus(10);
+    if (with_nan) {
+      all_taken.positions[3 * 17 + 1] = std::nan("");
+      all_taken.texcoords[2 * 40] = std::nan("");
+    }
+    all_taken.positions[3 * 8 + 2] = 0.0;  // a flattened vertex: degenerate and thin triangles nearby
+    all_taken.positions[3 * 9] = all_taken.positions[3 * 10];  // and two vertices at one place
+    all_taken.positions[3 * 9 + 1] = all_taken.positions[3 * 10 + 1];
+    all_taken.positions[3 * 9 + 2] = all_taken.positions[3 * 10 + 2];
+    Mesh one_untaken = all_taken;
+    one_untaken.add_face({0, 1, 2});
+    for (int k = 0; k < 3; ++k) one_untaken.corner_texcoord_index.push_back(kNoTexcoord);
+    const TangentFrames a = mikktspace_tangents(all_taken), b = mikktspace_tangents(one_untaken);
+    INFO("NaN values: " << with_nan);
+    REQUIRE(a.tangents.size() == 4 * all_taken.num_corners());
+    REQUIRE(b.tangents.size() == a.tangents.size() + 12);
+    CHECK(std::memcmp(a.tangents.data(), b.tangents.data(), 8 * a.tangents.size()) == 0);
+    CHECK(a.default_corners == b.default_corners);
+    CHECK(b.fallback_corners == a.fallback_corners + 3);
+  }
+}
+
 namespace {
 
 // Every triangle with all corners textured, as the reference's unindexed input; the same floats

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <numeric>
 
 #include <shadetool/core/error.h>
 #include <shadetool/normals/engine/tangent_corner_terms.h>
@@ -51,10 +52,16 @@ struct Corners {
 };
 
 struct Triangles {
+  std::size_t count = 0;              // triangles
+  // Triangle t is face t, with corners 3 t + k (every face a taken triangle, none moved): corner
+  // and face are then left empty and corner_of, face_of give those numbers.
+  bool identity = false;
   std::vector<std::uint32_t> corner;  // 3 per triangle: the global corner (the output slot)
   std::vector<std::uint32_t> index;   // 3 per triangle: the welded vertex (step 2's dense number)
   std::vector<std::uint32_t> face;    // the mesh face it came from
   std::vector<std::uint8_t> flag;
+  std::uint32_t corner_of(std::size_t slot) const { return identity ? std::uint32_t(slot) : corner[slot]; }
+  std::uint32_t face_of(std::size_t t) const { return identity ? std::uint32_t(t) : face[t]; }
   std::size_t good = 0;               // triangles [0, good) are healthy, in order; the rest degenerate
   // Per corner slot 3 t + k of a healthy triangle: the triangle across its edge k (corner k to
   // k + 1), -1 where none.
@@ -86,9 +93,17 @@ struct TSpace {
 };
 
 // Step 1: triangles of the faces the algorithm takes (every corner textured, 3+ corners), with
-// their corners' welded vertices (`welded`: step 2's, per corner).
+// their corners' welded vertices (`welded`: step 2's, per corner). `welded` null: every face is a
+// taken triangle, so triangle t is face t with corners 3 t + k (tris.identity), and step 2 wrote
+// tris.index (#C) itself.
 void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
                     const std::uint32_t* welded, Triangles& tris) {
+  if (!welded) {
+    tris.identity = true;
+    tris.count = mesh.num_faces();
+    tris.flag.assign(tris.count, 0);
+    return;
+  }
   std::size_t count = 0;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) count += taken[f] ? mesh.face_size(f) - 2 : 0;
   tris.corner.reserve(3 * count);
@@ -119,7 +134,8 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
       for (std::uint32_t k = 1; k + 1 < n; ++k) add(fu, b, b + k, b + k + 1);  // fan (not in the reference)
     }
   }
-  tris.flag.assign(tris.face.size(), 0);
+  tris.count = tris.face.size();
+  tris.flag.assign(tris.count, 0);
 }
 
 // Step 2: welded vertex of every corner taken: corners with the same (position, normal, texture
@@ -187,16 +203,16 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
   return first;
 }
 
-struct Welded {
-  std::unique_ptr<std::uint32_t[]> id;  // #C: the welded vertex of each corner taken (unwritten elsewhere)
-  std::vector<WeldedVertex> vertex;  // #U: its values
-};
-
-Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken) {
+// The welded vertices' values (#U), returned; id (#C): the welded vertex of each corner taken,
+// written (left unwritten elsewhere).
+std::vector<WeldedVertex> weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
+                               std::uint32_t* id) {
   const std::size_t V = in.positions.size(), F = mesh.num_faces();
   const std::vector<std::uint32_t> first = canonical_positions(in.positions);
-  Welded w;
-  w.id.reset(new std::uint32_t[in.num_corners]);
+  struct {
+    std::uint32_t* id;
+    std::vector<WeldedVertex> vertex;
+  } w{id, {}};
   w.vertex.reserve(V + V / 4);
   constexpr std::uint32_t kLinear = 16, kNone = ~0u;
   std::vector<std::uint32_t> head(V, kNone);   // canonical vertex -> its latest welded vertex
@@ -264,7 +280,7 @@ Welded weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>
       if (!has_nan(x)) r = {in.normal[c], in.texcoord[c], k};
     }
   }
-  return w;
+  return std::move(w.vertex);
 }
 
 float texture_area(const std::vector<WeldedVertex>& wv, const std::uint32_t* idx) {
@@ -303,7 +319,7 @@ void triangle_derivatives(const WeldedVertex& w1, const WeldedVertex& w2, const 
 // them); last, a quad whose two healthy triangles disagree in orientation takes the larger one's
 // (or the healthy one's when the other groups with any).
 void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, TriInfos& info) {
-  const std::size_t T = tris.face.size();
+  const std::size_t T = tris.count;
   std::size_t degenerate = 0;
   for (std::size_t t = 0; t < T; ++t) {
     const std::uint32_t* idx = &tris.index[3 * t];
@@ -317,7 +333,7 @@ void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex
   tris.good = T - degenerate;
   if (degenerate > 0) {
     for (std::size_t t = 0; t + 1 < T;) {
-      if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
+      if (tris.face_of(t) == tris.face_of(t + 1) && mesh.face_size(tris.face_of(t)) == 4) {
         if (((tris.flag[t] ^ tris.flag[t + 1]) & kDegenerate) != 0) {
           tris.flag[t] |= kQuadOneDegenerate;
           tris.flag[t + 1] |= kQuadOneDegenerate;
@@ -333,16 +349,17 @@ void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex
       if (!(tris.flag[t] & kDegenerate)) order.push_back(t);
     for (std::size_t t = 0; t < T; ++t)
       if (tris.flag[t] & kDegenerate) order.push_back(t);
-    Triangles sorted;
+    Triangles sorted;  // corners and faces listed (not identity: triangles move)
+    sorted.count = T;
     sorted.good = tris.good;
     TriInfos sorted_info(new TriInfo[T]);
     for (std::size_t t : order) {
       for (int k = 0; k < 3; ++k) {
-        sorted.corner.push_back(tris.corner[3 * t + k]);
+        sorted.corner.push_back(tris.corner_of(3 * t + k));
         sorted.index.push_back(tris.index[3 * t + k]);
       }
       sorted_info[sorted.face.size()] = info[t];
-      sorted.face.push_back(tris.face[t]);
+      sorted.face.push_back(tris.face_of(t));
       sorted.flag.push_back(tris.flag[t]);
     }
     tris = std::move(sorted);
@@ -350,7 +367,7 @@ void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex
   }
   const std::size_t good = tris.good;
   for (std::size_t t = 0; t + 1 < good;) {
-    if (tris.face[t] == tris.face[t + 1] && mesh.face_size(tris.face[t]) == 4) {
+    if (tris.face_of(t) == tris.face_of(t + 1) && mesh.face_size(tris.face_of(t)) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kOrientPreserving) != 0) {
         const bool first = (tris.flag[t + 1] & kGroupWithAny) != 0 ||
                            texture_area(wv, &tris.index[3 * t]) >= texture_area(wv, &tris.index[3 * (t + 1)]);
@@ -630,7 +647,7 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
     const std::uint32_t* slots = &members[group.offset];
     auto member = [&](std::uint32_t j) {
       const std::uint32_t t = slots[j] / 3;
-      return Member{slots[j], tris.face[t], (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
+      return Member{slots[j], tris.face_of(t), (tris.flag[t] & kGroupWithAny) != 0, &terms[group.offset + j - batch_begin]};
     };
     if (n > 16) {
       for (std::uint32_t j = 0; j < n; ++j) m[j] = member(j);
@@ -648,7 +665,7 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
       out.frames.push_back(evaluate_frame(m.data(), nullptr, n));
       out.frames.back().orient = group.orient;
       const auto frame = std::uint32_t(out.frames.size() - 1);
-      for (std::uint32_t i = 0; i < n; ++i) out.receive(tris.corner[m[i].slot], frame, group.orient);
+      for (std::uint32_t i = 0; i < n; ++i) out.receive(tris.corner_of(m[i].slot), frame, group.orient);
       continue;
     }
     sub_members.clear();
@@ -673,7 +690,7 @@ void group_frames(const std::vector<WeldedVertex>& wv, const Triangles& tris, co
         out.frames.push_back(evaluate_frame(m.data(), sub.data(), sub.size()));
         out.frames.back().orient = group.orient;
       }
-      out.receive(tris.corner[m[i].slot], std::uint32_t(base + l), group.orient);
+      out.receive(tris.corner_of(m[i].slot), std::uint32_t(base + l), group.orient);
     }
   }
 }
@@ -788,7 +805,7 @@ class OneGroupFrames {
       frame.orient = lane.orient;
       out_.frames.push_back(frame);
       const auto f = std::uint32_t(out_.frames.size() - 1);
-      for (std::size_t j = 0; j < lane.count; ++j) out_.receive(tris_.corner[slot_[j * L + g]], f, lane.orient);
+      for (std::size_t j = 0; j < lane.count; ++j) out_.receive(tris_.corner_of(slot_[j * L + g]), f, lane.orient);
     }
     lanes_ = rows_ = 0;
   }
@@ -810,7 +827,7 @@ class OneGroupFrames {
       term[j] = {{terms_[c], terms_[B + c], terms_[2 * B + c]},
                  {terms_[3 * B + c], terms_[4 * B + c], terms_[5 * B + c]},
                  terms_[6 * B + c], mags_[c], mags_[B + c]};
-      m[j] = {slot_[c], tris_.face[slot_[c] / 3], false, &term[j]};
+      m[j] = {slot_[c], tris_.face_of(slot_[c] / 3), false, &term[j]};
     }
     return whole_group(m, lane.count);
   }
@@ -895,7 +912,7 @@ void frames_by_vertex(const std::vector<WeldedVertex>& wv, const Triangles& tris
 // Step 8: frames for the corners of degenerate triangles.
 void degenerate_frames(const Mesh& mesh, const Corners& in, std::size_t num_welded, const Triangles& tris,
                        std::vector<std::uint32_t>& out) {
-  const std::size_t T = tris.face.size(), good = tris.good;
+  const std::size_t T = tris.count, good = tris.good;
   if (good == T) return;  // no degenerate triangle (nor, then, a quad with one)
   std::vector<std::uint32_t> first(num_welded, ~0u);  // welded vertex -> first healthy corner slot
   for (std::size_t j = 3 * good; j-- > 0;) first[tris.index[j]] = std::uint32_t(j);
@@ -903,20 +920,20 @@ void degenerate_frames(const Mesh& mesh, const Corners& in, std::size_t num_weld
     if (tris.flag[t] & kQuadOneDegenerate) continue;
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t j = first[tris.index[3 * t + i]];
-      if (j != ~0u) out[tris.corner[3 * t + i]] = out[tris.corner[j]];
+      if (j != ~0u) out[tris.corner_of(3 * t + i)] = out[tris.corner_of(j)];
     }
   }
   for (std::size_t t = 0; t < good; ++t) {
     if (!(tris.flag[t] & kQuadOneDegenerate)) continue;
-    const std::uint32_t b = mesh.face_start[tris.face[t]];
+    const std::uint32_t b = mesh.face_start[tris.face_of(t)];
     unsigned present = 0;
-    for (int i = 0; i < 3; ++i) present |= 1u << (tris.corner[3 * t + i] - b);
+    for (int i = 0; i < 3; ++i) present |= 1u << (tris.corner_of(3 * t + i) - b);
     std::uint32_t missing = 0;
     while (present & (1u << missing)) ++missing;
     const F3 dst = in.position(b + missing);
     for (int i = 0; i < 3; ++i)
-      if (in.position(tris.corner[3 * t + i]) == dst) {
-        out[b + missing] = out[tris.corner[3 * t + i]];
+      if (in.position(tris.corner_of(3 * t + i)) == dst) {
+        out[b + missing] = out[tris.corner_of(3 * t + i)];
         break;
       }
   }
@@ -972,17 +989,23 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   in.normal = mesh.has_corner_normals() ? mesh.corner_normal_index.data()
               : mesh.has_vertex_normals() ? mesh.corner_vertex.data() : corner_face.data();
   in.texcoord = mesh.corner_texcoord_index.data();
+  bool taken_triangles = true;  // every face taken, every one a triangle
   for (std::size_t f = 0; f < F; ++f) {
     bool ok = mesh.face_size(f) >= 3 && dims >= 2;
     for (std::uint32_t c = mesh.face_start[f]; ok && c < mesh.face_start[f + 1]; ++c)
       ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
     taken[f] = ok;
+    taken_triangles &= ok && mesh.face_size(f) == 3;
   }
-  const Welded welded = weld(mesh, in, taken);
-  const std::vector<WeldedVertex>& wv = welded.vertex;
+  // The welded vertex per corner: written straight into the triangles' index when triangle t is
+  // face t (corners 3 t + k), else into a scratch array that make_triangles reads.
   Triangles tris;
-  make_triangles(mesh, in, taken, welded.id.get(), tris);
-  TriInfos info(new TriInfo[tris.face.size()]);  // TriInfo{}: zero derivatives
+  std::unique_ptr<std::uint32_t[]> welded_id;
+  if (taken_triangles) tris.index.resize(C);
+  else welded_id.reset(new std::uint32_t[C]);
+  const std::vector<WeldedVertex> wv = weld(mesh, in, taken, taken_triangles ? tris.index.data() : welded_id.get());
+  make_triangles(mesh, in, taken, welded_id.get(), tris);
+  TriInfos info(new TriInfo[tris.count]);  // TriInfo{}: zero derivatives
   degenerate_and_derivatives(mesh, wv, tris, info);
   std::vector<Group> groups;
   std::vector<std::uint32_t> members;
