@@ -15,6 +15,7 @@ every output format the input makes sense in, each output checked with tools oth
             matrix; transform: by A^-T): no face reversed where the command must keep the winding
             (every command but repair, where tests/corpus.sh checks authored orientation)
   counts    faces as many as the input's (glTF instances flattened), unless stderr names faces
+  unreferenced  no more vertices that no face uses than the input had (non-glTF outputs)
   attrs     every attribute of the input (normals, colours, texcoords, quality; PLY: every extra
             vertex/face property and element) in the output or named on stderr
 Writes OUT/results.tsv (file, command, check, detail) and prints a summary per check.
@@ -127,6 +128,24 @@ def gltf_instances(path):
     return out
 
 
+def gltf_unreferenced(path):
+    """Vertices of the POSITION accessors that no primitive's faces use (primitives sharing an
+    accessor counted together), as the file holds them."""
+    doc, buffers = gltf_check.load(path)
+    used = {}
+    for mesh in doc.get("meshes", []):
+        for prim in mesh.get("primitives", []):
+            a = prim.get("attributes", {}).get("POSITION")
+            if a is None or prim.get("mode", 4) not in (4, 5, 6):
+                continue
+            used.setdefault(a, set()).update(gltf_check.corners(doc, buffers, prim))
+    return sum(doc["accessors"][a]["count"] - len(u) for a, u in used.items())
+
+
+def unreferenced(parts):
+    return sum(len(p["positions"]) - len({i for f in p["faces"] for i in f}) for p in parts)
+
+
 def world_parts(path, parts):
     """The glTF input as a non-glTF writer flattens it: each primitive instance in world space."""
     by_mesh = {}
@@ -145,7 +164,7 @@ def world_parts(path, parts):
             # glTF: a node whose matrix mirrors (det < 0) shows its triangles clockwise-front
             # (glTF 2.0, 3.7.2.1): in world space the front face is the reversed triangle
             F = [tuple(reversed(f)) for f in p["faces"]] if det < 0 else p["faces"]
-            out.append(dict(p, positions=P, faces=F, vertex_normals=N, name=""))
+            out.append(dict(p, positions=P, faces=F, vertex_normals=N, name="", source=p["name"]))
     return out
 
 
@@ -379,6 +398,13 @@ class Audit:
             pairs = [(merge(inp_world), merge(outp), True)]
         else:
             pairs = [(merge(inp), merge(outp), False)]
+        # no command adds vertices no face uses (a writer that copies what it need not)
+        if not gltf_out:
+            un_in = gltf_unreferenced(path) if gltf_in else unreferenced(inp)
+            un_out = unreferenced(outp)
+            if un_out > un_in and not named(err, ("unreferenced", "no face uses")):
+                self.finding(rel, label, "unreferenced", "%d vertices no face uses in the output, %d in the input"
+                             % (un_out, un_in))
         for pin, q, by_position in pairs:
             where = (pin["name"] + ": ") if pin.get("name") else ""
             if q is None:
