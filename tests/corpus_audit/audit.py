@@ -128,24 +128,6 @@ def gltf_instances(path):
     return out
 
 
-def gltf_unreferenced(path):
-    """Vertices of the POSITION accessors that no primitive's faces use (primitives sharing an
-    accessor counted together), as the file holds them."""
-    doc, buffers = gltf_check.load(path)
-    used = {}
-    for mesh in doc.get("meshes", []):
-        for prim in mesh.get("primitives", []):
-            a = prim.get("attributes", {}).get("POSITION")
-            if a is None or prim.get("mode", 4) not in (4, 5, 6):
-                continue
-            used.setdefault(a, set()).update(gltf_check.corners(doc, buffers, prim))
-    return sum(doc["accessors"][a]["count"] - len(u) for a, u in used.items())
-
-
-def unreferenced(parts):
-    return sum(len(p["positions"]) - len({i for f in p["faces"] for i in f}) for p in parts)
-
-
 def world_parts(path, parts):
     """The glTF input as a non-glTF writer flattens it: each primitive instance in world space."""
     by_mesh = {}
@@ -400,8 +382,8 @@ class Audit:
             pairs = [(merge(inp), merge(outp), False)]
         # no command adds vertices no face uses (a writer that copies what it need not)
         if not gltf_out:
-            un_in = gltf_unreferenced(path) if gltf_in else unreferenced(inp)
-            un_out = unreferenced(outp)
+            un_in = read_mesh.gltf_unreferenced(path) if gltf_in else read_mesh.unreferenced(inp)
+            un_out = read_mesh.unreferenced(outp)
             if un_out > un_in and not named(err, ("unreferenced", "no face uses")):
                 self.finding(rel, label, "unreferenced", "%d vertices no face uses in the output, %d in the input"
                              % (un_out, un_in))
