@@ -6,7 +6,10 @@ Per file and command it asserts, reading every output back with read_mesh.py (in
 shadetool):
   exit     the status is 0 (or the one listed in EXPECTED below, with the issue item to fix it)
   normals  no written normal is zero or non-finite (every vertex normal, every OBJ vn line, every
-           face normal, glTF NORMAL)
+           face normal, glTF NORMAL), nor off unit length by more than 1e-3 (fuze.obj's authored
+           vn of length 6.28 were written as read before the corpus audit, tests/corpus_audit)
+  unref    no output (but glTF) has more vertices that no face uses than the input (mode5.gltf's
+           shared accessors were copied per primitive: 101,086 unused vertices, before the audit)
   counts   vertices and faces per primitive equal the input's, and every attribute (normals,
            colours, texture coordinates, quality) is in the output, unless stderr names it
   repair   no face whose winding agreed with its authored normals is reversed (issue 27 item 3;
@@ -36,6 +39,9 @@ EXPECTED = {
 }
 
 SCENE = "data/scenes/studio.json"
+# Every input written as PLY too: a glTF becomes one world-space mesh there (instances flattened),
+# which the per-primitive checks below cannot pair; its normals and unused vertices are checked.
+INTO_PLY = "normals (into PLY)"
 
 
 def commands(src, path, out_base, ext, framed):
@@ -51,6 +57,7 @@ def commands(src, path, out_base, ext, framed):
         ("repair", ["repair", path, "-o", mesh_out, "--report", out_base + ".report.json"], mesh_out),
         ("transform", ["transform", path, "--rotate", "30,1,1,0", "--translate", "1,2,3", "-o", mesh_out], mesh_out),
         ("bake-lighting", ["bake-lighting", path, "--scene", scene, "-o", colour_out], colour_out),
+        (INTO_PLY, ["normals", path, "-o", out_base + ".into.ply"], out_base + ".into.ply"),
         ("render", ["render", path, "--scene", framed, "--size", "64", "48", "-o", out_base + ".png"], None),
         ("occlusion", ["occlusion", path, "--samples", "4", "-o", colour_out], colour_out),
     ]
@@ -119,6 +126,20 @@ def bad_normals(part, raw_obj_normals):
             rows += part[key]
     rows += raw_obj_normals
     return sum(1 for n in rows if n is None or not all(math.isfinite(x) for x in n) or n == (0.0, 0.0, 0.0))
+
+
+def off_unit_normals(part, raw_obj_normals):
+    """Written normals, finite and non-zero, whose length is off 1 by more than 1e-3."""
+    rows = []
+    for key in ("vertex_normals", "face_normals"):
+        if part[key] is not None:
+            rows += part[key]
+    rows += raw_obj_normals
+    n = 0
+    for r in rows:
+        if r is not None and all(math.isfinite(x) for x in r) and r != (0.0, 0.0, 0.0):
+            n += abs(math.sqrt(dot(r, r)) - 1) > 1e-3
+    return n
 
 
 def obj_vn_lines(path):
@@ -215,8 +236,16 @@ def main():
         bad = sum(bad_normals(q, obj_vn_lines(out) if i == 0 else []) for i, q in enumerate(outp))
         if bad:
             fail(rel, name, "%d written normals are zero or not finite" % bad)
+        off = sum(off_unit_normals(q, obj_vn_lines(out) if i == 0 else []) for i, q in enumerate(outp))
+        if off:
+            fail(rel, name, "%d written normals off unit length by more than 1e-3" % off)
+        if not out.lower().endswith((".glb", ".gltf")):
+            un_in = read_mesh.gltf_unreferenced(path) if ext in (".gltf", ".glb") else read_mesh.unreferenced(inp)
+            un_out = read_mesh.unreferenced(outp)
+            if un_out > un_in:
+                fail(rel, name, "%d vertices no face uses in the output, %d in the input" % (un_out, un_in))
         by_name = {q["name"]: q for q in outp}
-        for pin in inp:
+        for pin in (inp if not (name == INTO_PLY and ext in (".gltf", ".glb")) else []):
             q = by_name.get(pin["name"]) if pin["name"] else outp[0]
             if q is None:
                 if not named(err, (pin["name"],)):

@@ -252,6 +252,24 @@ def read_gltf(path):
     return parts
 
 
+def gltf_unreferenced(path):
+    """Vertices of the POSITION accessors that no primitive's faces use (primitives sharing an
+    accessor counted together), as the file holds them."""
+    doc, buffers = gltf_check.load(path)
+    used = {}
+    for mesh in doc.get("meshes", []):
+        for prim in mesh.get("primitives", []):
+            a = prim.get("attributes", {}).get("POSITION")
+            if a is None or prim.get("mode", 4) not in (4, 5, 6):
+                continue
+            used.setdefault(a, set()).update(gltf_check.corners(doc, buffers, prim))
+    return sum(doc["accessors"][a]["count"] - len(u) for a, u in used.items())
+
+
+def unreferenced(parts):
+    return sum(len(p["positions"]) - len({i for f in p["faces"] for i in f}) for p in parts)
+
+
 def read(path):
     ext = os.path.splitext(path)[1].lower()
     return {".obj": read_obj, ".ply": read_ply, ".off": read_off, ".stl": read_stl, ".gltf": read_gltf,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include <shadetool/lighting/lit_normals.h>
+
 #include "io/io_test_util.h"
 #include "support/analytic_meshes.h"
 
@@ -244,5 +246,120 @@ TEST_CASE("round trip: the sample meshes in data/ through every format", "[mesh_
       }
       CHECK(back.precision == m.precision);
     }
+  }
+}
+
+namespace {
+
+// The corner normals of `m` as unit-length directions, whatever kind it stores (corner, vertex, face).
+Vec3d stored_normal(const Mesh& m, std::size_t f, std::uint32_t c) {
+  if (m.has_corner_normals()) return get3(m.corner_normals, m.corner_normal_index[c]);
+  if (m.has_vertex_normals()) return get3(m.vertex_normals, m.corner_vertex[c]);
+  return get3(m.face_normals, f);
+}
+
+}  // namespace
+
+// Every writer writes a stored normal off unit length divided by its length (the same direction,
+// a note counts them); unit and nearly unit normals are written as read.
+TEST_CASE("writers write unit normals: off-unit rows divided by their length",
+          "[mesh_io][normals]") {
+  // A hand-made OBJ with the defect of fuze.obj (MeshLab wrote `vn 0 0 -6.283185`): three
+  // triangles whose vn have lengths 2*pi, 5 and 1 + 4e-4 (within the 1e-3 tolerance: kept as is).
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+                          "vn 0 0 -6.283185\nvn 3 4 0\nvn 0 1.0004 0\n"
+                          "f 1//1 3//1 2//1\nf 2//2 3//2 4//2\nf 1//3 2//3 4//3\n";
+  const Mesh m = read_mesh_from_memory(obj, Format::Obj, "fuze_like.obj");
+  REQUIRE(m.has_corner_normals());
+  // the directions, by hand: (0, 0, -1), (3, 4, 0) / 5, and the nearly unit one as read
+  const Vec3d expected[3] = {{0, 0, -1}, {0.6, 0.8, 0}, {0, 1.0004, 0}};
+  for (Format format : {Format::Obj, Format::Ply, Format::Off, Format::Gltf}) {
+    for (bool binary : {false, true}) {
+      if (binary && (format == Format::Obj || format == Format::Off)) continue;
+      INFO("format " << format_extension(format) << (binary ? " binary" : " ascii"));
+      WriteOptions options;
+      options.format = format;
+      options.binary = binary;
+      options.refuse_unusable_normals = true;
+      WriteInfo wi;
+      const std::string bytes = write_mesh_to_memory(m, options, &wi);
+      CHECK(std::count(wi.notes.begin(), wi.notes.end(),
+                       "2 normals not of unit length (5 to 6.283) written divided by their length: the same directions") == 1);
+      const Mesh back = read_mesh_from_memory(bytes, format, "back");
+      REQUIRE(back.num_faces() == 3);
+      for (std::size_t f = 0; f < 3; ++f)
+        for (std::uint32_t c = back.face_start[f]; c < back.face_start[f + 1]; ++c) {
+          const Vec3d n = stored_normal(back, f, c);
+          // float files hold the directions to float precision, double files (PLY binary of a
+          // double mesh, OBJ text) to a few ulps of double
+          CHECK(std::fabs(n.x - expected[f].x) < 1e-6);
+          CHECK(std::fabs(n.y - expected[f].y) < 1e-6);
+          CHECK(std::fabs(n.z - expected[f].z) < 1e-6);
+        }
+    }
+  }
+  // the normal within tolerance is written as it was read: OBJ text keeps its digits
+  const std::string text = write_mesh_to_memory(m, WriteOptions{Format::Obj});
+  CHECK(text.find("vn 0 1.0004 0\n") != std::string::npos);
+  CHECK(text.find("vn 0 0 -1\n") != std::string::npos);
+  CHECK(text.find("vn 0.6 0.8 0\n") != std::string::npos);
+  // a mesh whose normals are all unit: no copy, no note
+  Mesh unit = m;
+  unit.corner_normals = {0, 0, -1, 0.6, 0.8, 0, 0, 1, 0};
+  WriteInfo wi;
+  write_mesh_to_memory(unit, WriteOptions{Format::Ply}, &wi);
+  CHECK(std::none_of(wi.notes.begin(), wi.notes.end(), [](const std::string& n) { return n.find("unit length") != std::string::npos; }));
+}
+
+// A file must shade in a viewer as our render shades it: the writers holding one normal per corner
+// write the normals the lighting uses (core/shading_normals.h), and name the face normals they drop.
+TEST_CASE("OBJ and glTF writers write the normals that shade, as the lighting uses them",
+          "[mesh_io][normals]") {
+  // A hand-made roof: two triangles meeting at a ridge along y, each with its facet normal
+  // (what an STL holds) and a smooth vertex normal per vertex (what `shadetool normals` computes
+  // for it): ridge vertices (0, 0, 1), eave vertices tilted outwards.
+  Mesh m;
+  m.positions = {-1, 0, 0, 0, 0, 1, 0, 1, 1, -1, 1, 0, 1, 0, 0, 1, 1, 0};
+  m.face_start = {0, 3, 6, 9, 12};
+  m.corner_vertex = {0, 1, 2, 0, 2, 3, 1, 4, 5, 1, 5, 2};
+  const double h = std::sqrt(0.5);
+  m.face_normals = {-h, 0, h, -h, 0, h, h, 0, h, h, 0, h};  // the facets, by hand: (-1, 0, 1) / sqrt 2 ...
+  m.vertex_normals = {-1, 0, 0, 0, 0, 1, 0, 0, 1, -1, 0, 0, 1, 0, 0, 1, 0, 0};  // smooth, by hand
+  const std::vector<double> lit = lit_vertex_normals(m).normals;  // what bake-lighting and render use
+  REQUIRE(lit == m.vertex_normals);
+  for (Format format : {Format::Obj, Format::Gltf}) {
+    INFO("format " << format_extension(format));
+    WriteInfo wi;
+    const std::string bytes = write_mesh_to_memory(m, WriteOptions{format}, &wi);
+    const Mesh back = read_mesh_from_memory(bytes, format, "back");
+    REQUIRE(back.num_faces() == m.num_faces());
+    for (std::size_t f = 0; f < back.num_faces(); ++f)
+      for (std::uint32_t c = back.face_start[f]; c < back.face_start[f + 1]; ++c) {
+        const Vec3d n = stored_normal(back, f, c);
+        const Vec3d want = get3(lit, m.corner_vertex[c]);
+        CHECK(std::fabs(n.x - want.x) < 1e-7);
+        CHECK(std::fabs(n.y - want.y) < 1e-7);
+        CHECK(std::fabs(n.z - want.z) < 1e-7);
+      }
+    CHECK(std::count_if(wi.notes.begin(), wi.notes.end(), [](const std::string& n) {
+            return n.find("face normals not written") != std::string::npos && n.find("the vertex normals shade it") != std::string::npos;
+          }) == 1);
+  }
+  // PLY holds both: vertex and face normals back as written, no note
+  WriteInfo wi;
+  const Mesh ply = read_mesh_from_memory(write_mesh_to_memory(m, WriteOptions{Format::Ply}, &wi), Format::Ply, "back");
+  CHECK(ply.vertex_normals == m.vertex_normals);
+  REQUIRE(ply.face_normals.size() == m.face_normals.size());
+  for (std::size_t i = 0; i < m.face_normals.size(); ++i) CHECK(std::fabs(ply.face_normals[i] - m.face_normals[i]) < 1e-7);
+  CHECK(std::none_of(wi.notes.begin(), wi.notes.end(), [](const std::string& n) { return n.find("face normals") != std::string::npos; }));
+  // face normals alone (an STL as read, `normals --faces`): they shade, per face, in both
+  m.vertex_normals.clear();
+  for (Format format : {Format::Obj, Format::Gltf}) {
+    WriteInfo wf;
+    const Mesh back = read_mesh_from_memory(write_mesh_to_memory(m, WriteOptions{format}, &wf), format, "back");
+    for (std::size_t f = 0; f < back.num_faces(); ++f)
+      for (std::uint32_t c = back.face_start[f]; c < back.face_start[f + 1]; ++c)
+        CHECK(std::fabs(stored_normal(back, f, c).x - m.face_normals[3 * f]) < 1e-7);
+    CHECK(wf.notes.empty());
   }
 }

@@ -162,6 +162,50 @@ TEST_CASE("glTF scene: read_mesh gives the world-space mesh", "[gltf][scene]") {
   require_near(m.position(3), {0, 0, 0});  // mesh 1 at z = 5 moved by -5
 }
 
+// mode5.gltf's shape (412 primitives on 54 shared POSITION accessors): flattened into one mesh,
+// each primitive instance must carry the vertices its faces use, not the whole shared accessor
+// (that wrote 104,696 vertices for 3,610 used); a vertex no primitive uses is written once.
+TEST_CASE("glTF scene: primitives sharing one POSITION accessor carry the vertices they use; an unused one once",
+          "[gltf][scene]") {
+  Built b = base_doc();
+  // 6 vertices with colours: A uses 0 1 2, B uses 1 3 2, vertex 4 and 5 by nobody
+  const int pos = float_accessor(b, {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 7, 7, 7, 8, 8, 8}, "VEC3", 3, true);
+  const int col = float_accessor(b, {0.1f, 0, 0, 0.2f, 0, 0, 0.3f, 0, 0, 0.4f, 0, 0, 0.5f, 0, 0, 0.6f, 0, 0}, "VEC3", 3);
+  auto indices = [&](const std::vector<std::uint16_t>& ix) {
+    return b.accessor({{"bufferView", b.view(bytes_of(ix))}, {"componentType", 5123}, {"count", ix.size()}, {"type", "SCALAR"}});
+  };
+  const int ia = indices({0, 1, 2}), ib = indices({1, 3, 2});
+  const json attrs = {{"POSITION", pos}, {"COLOR_0", col}};
+  b.doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", attrs}, {"indices", ia}},
+                                                              {{"attributes", attrs}, {"indices", ib}}})}}});
+  // the mesh shown twice: at the origin and moved by +10 in x
+  b.doc["scenes"] = json::array({{{"nodes", {0, 1}}}});
+  b.doc["nodes"] = json::array({{{"mesh", 0}}, {{"mesh", 0}, {"translation", {10, 0, 0}}}});
+  std::vector<std::string> notes;
+  const Mesh m = world_of(b, notes);
+  REQUIRE(m.num_faces() == 4);
+  // by hand: A's first instance 3 used + the 2 nobody uses, its second 3; B's two 3 + 3
+  CHECK(m.num_vertices() == 14);
+  std::vector<bool> used(m.num_vertices(), false);
+  for (std::uint32_t v : m.corner_vertex) used[v] = true;
+  CHECK(std::count(used.begin(), used.end(), false) == 2);  // 4 and 5, once (not once per instance)
+  // every corner keeps its position and colour (the colour names the vertex it came from);
+  // faces in the order primitives, then their instances: A at 0, A at +10, B at 0, B at +10
+  const double want_red[4][3] = {{0.1, 0.2, 0.3}, {0.1, 0.2, 0.3}, {0.2, 0.4, 0.3}, {0.2, 0.4, 0.3}};
+  const Vec3d want_pos[4][3] = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                                {{10, 0, 0}, {11, 0, 0}, {10, 1, 0}},
+                                {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                                {{11, 0, 0}, {11, 1, 0}, {10, 1, 0}}};
+  REQUIRE(m.color_channels >= 3);
+  for (std::size_t f = 0; f < 4; ++f)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t v = m.corner_vertex[3 * f + k];
+      require_near(m.position(v), want_pos[f][k]);
+      CHECK(m.vertex_colors[v * std::size_t(m.color_channels)] == Approx(want_red[f][k]).margin(1e-6));
+    }
+  CHECK(has_note(notes, "10 vertex copies not written"));
+}
+
 TEST_CASE("glTF write: per-corner texture coordinates become TEXCOORD_0 (vertices split, v flipped) and read back", "[gltf][write]") {
   // A quad of two triangles whose shared diagonal has a seam: vertex 0 has (0, 0) in face 0 and
   // (0.5, 0.25) in face 1. Four vertices, five distinct (vertex, texture coordinate) pairs.

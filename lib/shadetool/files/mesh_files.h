@@ -18,6 +18,10 @@
 // What no writer writes (Error `NAME: what`, nothing written): a NaN or infinite coordinate,
 // texture coordinate or float colour; with WriteOptions::refuse_unusable_normals (every
 // subcommand), a zero, NaN or infinite normal of a kind the format holds.
+// What every writer writes as a unit vector: a stored normal (vertex, corner or face) that is
+// finite and non-zero but off unit length by more than 1e-3 is written divided by its length (the
+// same direction; a note counts them and gives the lengths): glTF requires unit normals, and a
+// fixed-function renderer or a reader that does not normalise would shade with the length.
 // A finite value beyond the range of the output's number type is written in a wider type where the
 // format has one (binary PLY: double properties, with a note) and refused where it has none
 // (binary STL holds float only: use --ascii or another format).

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <shadetool/core/compact_vertices.h>
 #include <shadetool/core/error.h>
 #include <shadetool/normals/face_normals.h>
 #include <shadetool/transform/classify_affine.h>
@@ -171,6 +172,67 @@ void append_part(Mesh& out, const Mesh& part, const std::vector<double>& uv, Mer
   }
 }
 
+// Which vertices each primitive instance carries into the world mesh. Primitives often share one
+// POSITION accessor, each using a part of it (mode5.gltf: 412 primitives on 54 accessors, a
+// primitive using 3 to 43 of up to 254 vertices): copying the whole accessor with every instance
+// wrote each vertex once per primitive, all but one copy unreferenced (104,696 vertices, 3,610
+// used). An instance carries the vertices its primitive's faces use; a vertex that no primitive
+// of its accessor uses (unreferenced in the input too) goes with the first instance of the first
+// such primitive, so nothing read is dropped. A primitive whose vertex count a command changed
+// (read_vertices differs) is its own group. first[i]: the mask of primitive i's first instance;
+// used[i]: of the others.
+struct WorldVertices {
+  std::vector<std::vector<bool>> first, used;
+};
+
+WorldVertices world_vertices(const GltfDocument& document) {
+  const std::size_t P = document.primitives.size();
+  WorldVertices w;
+  w.used.resize(P);
+  std::vector<long long> group(P);
+  for (std::size_t i = 0; i < P; ++i) {
+    const GltfPrimitive& p = document.primitives[i];
+    const std::size_t V = p.mesh.num_vertices();
+    w.used[i].assign(V, false);
+    for (std::uint32_t v : p.mesh.corner_vertex)
+      if (v < V) w.used[i][v] = true;
+    group[i] = -1 - (long long)(i);  // its own, unless it shares an accessor as read
+    if (document.source && V == p.read_vertices && p.mesh_index < document.source->model.meshes.size() &&
+        p.primitive_index < document.source->model.meshes[p.mesh_index].primitives.size()) {
+      const auto& attrs = document.source->model.meshes[p.mesh_index].primitives[p.primitive_index].attributes;
+      const auto it = attrs.find("POSITION");
+      if (it != attrs.end() && it->second >= 0) group[i] = it->second;
+    }
+  }
+  w.first = w.used;
+  std::vector<bool> owned(P, false);  // i is the first primitive of its group
+  for (std::size_t i = 0; i < P; ++i) {
+    if (owned[i]) continue;
+    std::vector<bool> any = w.used[i];
+    std::vector<std::size_t> members{i};
+    for (std::size_t j = i + 1; j < P; ++j)
+      if (group[j] == group[i]) {
+        owned[j] = true;
+        members.push_back(j);
+        for (std::size_t v = 0; v < any.size() && v < w.used[j].size(); ++v) any[v] = any[v] || w.used[j][v];
+      }
+    for (std::size_t v = 0; v < any.size(); ++v)
+      if (!any[v]) w.first[i][v] = true;  // unreferenced in the input: kept once
+  }
+  return w;
+}
+
+// Appends `part` (already placed) carrying only the vertices `keep` marks (world_vertices);
+// returns how many it left out.
+std::size_t append_kept(Mesh& out, Mesh part, std::vector<double> uv, const std::vector<bool>& keep, MergePlan& plan) {
+  const std::vector<std::uint32_t> old_to_new = compact_vertices(part, keep);
+  std::size_t kept = 0;
+  for (std::uint32_t n : old_to_new) kept += n != kRemovedVertex;
+  compact_vertex_rows(uv, 2, old_to_new, kept);
+  append_part(out, part, uv, plan);
+  return old_to_new.size() - kept;
+}
+
 }  // namespace
 
 std::vector<GltfNodePlacement> gltf_scene_nodes(const GltfDocument& document) {
@@ -246,9 +308,11 @@ Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& not
   MergePlan plan = plan_merge(document);
   const std::vector<GltfPrimitivePlacements> placements = gltf_primitive_placements(document);
 
+  const WorldVertices carried = world_vertices(document);
+
   Mesh out;
   std::vector<std::string> unplaced, hidden, skinned, morphed, uv_changed;
-  std::size_t instances = 0, repeated = 0;
+  std::size_t instances = 0, repeated = 0, left_out = 0;
   bool any_placed = false;
   for (std::size_t i = 0; i < document.primitives.size(); ++i) {
     const GltfPrimitive& p = document.primitives[i];
@@ -261,12 +325,12 @@ Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& not
     for (std::size_t n : where.skinned_nodes) skinned.push_back(node_path(n));
     if (!where.in_scene) {  // in no node of the scene: once, in its object space
       unplaced.push_back(p.json_path);
-      append_part(out, p.mesh, uv, plan);
+      left_out += append_kept(out, p.mesh, uv, carried.first[i], plan);
       ++instances;
       continue;
     }
     for (std::size_t k = 0; k < where.nodes.size(); ++k) {
-      append_part(out, gltf_placed_mesh(document, p, &where.nodes[k]), uv, plan);
+      left_out += append_kept(out, gltf_placed_mesh(document, p, &where.nodes[k]), uv, k == 0 ? carried.first[i] : carried.used[i], plan);
       ++instances;
       repeated += k > 0;
       any_placed = true;
@@ -284,6 +348,9 @@ Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& not
   if (any_placed)
     notes.push_back(std::to_string(instances) + " glTF primitive instances placed in world space by their nodes' matrices" +
                     (repeated ? " (" + std::to_string(repeated) + " repeated: meshes shown by several nodes)" : std::string()));
+  if (left_out)
+    notes.push_back(std::to_string(left_out) + " vertex copies not written: each primitive instance carries the vertices " +
+                    "its faces use (primitives share POSITION accessors; a vertex no face uses is written once)");
   if (!unplaced.empty()) notes.push_back("no node of the scene shows " + list(unplaced) + ": written in object space");
   if (!hidden.empty()) notes.push_back(list(hidden) + ": singular matrix (scale 0): the mesh it shows is not placed there");
   if (!skinned.empty()) notes.push_back(list(skinned) + ": skinned mesh placed by its node (the bind pose; joints not applied)");

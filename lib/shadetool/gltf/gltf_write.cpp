@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/shading_normals.h>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -258,8 +259,9 @@ std::vector<std::uint32_t> tangent_classes(const Mesh& mesh, const std::vector<d
 
 Split split_vertices(const Mesh& mesh, bool texcoords, const std::vector<std::uint32_t>& tangent_class) {
   Split s;
-  const bool per_face = mesh.has_face_normals() || mesh.has_face_colors();
-  const bool per_corner = mesh.has_corner_normals();
+  const ShadingNormals normals = shading_normals(mesh);  // the normals NORMAL holds
+  const bool per_face = normals == ShadingNormals::Face || mesh.has_face_colors();
+  const bool per_corner = normals == ShadingNormals::Corner;
   const bool per_tangent = !tangent_class.empty();
   if (!per_face && !per_corner && !texcoords && !per_tangent) {
     s.source_vertex.resize(mesh.num_vertices());
@@ -324,8 +326,9 @@ struct PrimitiveWriter {
     const Split split = split_vertices(mesh, texcoords, corner_tangents ? tangent_classes(mesh, gp.corner_tangents)
                                                                         : std::vector<std::uint32_t>());
     const std::uint32_t* corner_output = split.corners_kept ? mesh.corner_vertex.data() : split.corner_output.data();
-    const bool identity = split.source_vertex.size() == mesh.num_vertices() && !mesh.has_corner_normals() &&
-                          !mesh.has_face_normals() && !mesh.has_face_colors() && !texcoords &&
+    const ShadingNormals normals = shading_normals(mesh);  // core/shading_normals.h: what NORMAL holds
+    const bool identity = split.source_vertex.size() == mesh.num_vertices() && normals != ShadingNormals::Corner &&
+                          normals != ShadingNormals::Face && !mesh.has_face_colors() && !texcoords &&
                           (split.corners_kept || std::equal(split.corner_output.begin(), split.corner_output.end(), mesh.corner_vertex.begin()));
     const std::size_t out_vertices = split.source_vertex.size();
     const bool same_vertices = model && mesh.num_vertices() == gp.read_vertices;
@@ -337,7 +340,9 @@ struct PrimitiveWriter {
       attrs["POSITION"] = add_float_accessor(out, gather(mesh.positions, 3, split.source_vertex), 3, true, true);
 
     // NORMAL: per vertex, per corner (pool) or per face, all as vertex normals of the output.
-    if (mesh.has_vertex_normals() || mesh.has_corner_normals() || mesh.has_face_normals()) {
+    if (normals != ShadingNormals::None) {
+      if (const std::string note = face_normals_not_written_note(mesh, "glTF"); !note.empty())
+        result.notes.push_back(gp.json_path + ": " + note);
       const bool unchanged = keep_all && mesh.has_vertex_normals() && source_attribute("NORMAL") >= 0 &&
                              io::gltf::accessor_equals(*source, source_attribute("NORMAL"), mesh.vertex_normals, name);
       if (!unchanged) {
@@ -345,12 +350,12 @@ struct PrimitiveWriter {
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
           for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
             const std::size_t o = corner_output[c];
-            const double* src = mesh.has_face_normals()     ? &mesh.face_normals[3 * f]
-                                : mesh.has_corner_normals() ? &mesh.corner_normals[3 * std::size_t(mesh.corner_normal_index[c])]
-                                                            : &mesh.vertex_normals[3 * std::size_t(mesh.corner_vertex[c])];
+            const double* src = normals == ShadingNormals::Face     ? &mesh.face_normals[3 * f]
+                                : normals == ShadingNormals::Corner ? &mesh.corner_normals[3 * std::size_t(mesh.corner_normal_index[c])]
+                                                                    : &mesh.vertex_normals[3 * std::size_t(mesh.corner_vertex[c])];
             std::copy(src, src + 3, &n[3 * o]);
           }
-        if (mesh.has_vertex_normals() && !mesh.has_face_normals() && !mesh.has_corner_normals())
+        if (normals == ShadingNormals::Vertex)
           n = gather(mesh.vertex_normals, 3, split.source_vertex);  // isolated vertices keep theirs too
         attrs["NORMAL"] = add_float_accessor(out, n, 3, false, true);
       }

@@ -21,6 +21,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
+#include <shadetool/core/shading_normals.h>
 #include <shadetool/core/engine/usable_threads.h>
 #include <shadetool/io/file_bytes.h>
 #include <shadetool/io/engine/newell_normal.h>
@@ -814,20 +815,17 @@ void write_obj(const Mesh& input, ByteSink& out, WriteInfo& info) {
       out += '\n';
     }
   }
-  // Which normals, and the vn index of each corner.
-  enum class NormalSource { None, Corner, Vertex, Face } source = NormalSource::None;
-  const std::vector<double>* pool = nullptr;
+  // Which normals (core/shading_normals.h: the ones that shade), and the vn index of each corner.
   // From `input`: split vertices share their original's vn line (index by the original vertex).
-  if (input.has_corner_normals()) {
-    source = NormalSource::Corner;
-    pool = &input.corner_normals;
-  } else if (input.has_vertex_normals()) {
-    source = NormalSource::Vertex;
-    pool = &input.vertex_normals;
-  } else if (input.has_face_normals()) {
-    source = NormalSource::Face;
-    pool = &input.face_normals;
+  const ShadingNormals source = shading_normals(input);
+  const std::vector<double>* pool = nullptr;
+  switch (source) {
+    case ShadingNormals::Corner: pool = &input.corner_normals; break;
+    case ShadingNormals::Vertex: pool = &input.vertex_normals; break;
+    case ShadingNormals::Face: pool = &input.face_normals; break;
+    case ShadingNormals::None: break;
   }
+  if (const std::string note = face_normals_not_written_note(input, "OBJ"); !note.empty()) info.notes.push_back(note);
   if (pool) {
     for (std::size_t i = 0; i + 3 <= pool->size(); i += 3) {
       out += "vn ";
@@ -859,14 +857,14 @@ void write_obj(const Mesh& input, ByteSink& out, WriteInfo& info) {
       out += ' ';
       append_uint(out, std::uint64_t(mesh.corner_vertex[c]) + 1);
       const bool corner_tex = tex && mesh.corner_texcoord_index[c] != kNoTexcoord;
-      if (corner_tex || source != NormalSource::None) {
+      if (corner_tex || source != ShadingNormals::None) {
         out += '/';
         if (corner_tex) append_uint(out, std::uint64_t(mesh.corner_texcoord_index[c]) + 1);
-        if (source != NormalSource::None) {
+        if (source != ShadingNormals::None) {
           out += '/';
-          const std::uint64_t n = source == NormalSource::Corner   ? input.corner_normal_index[c]
-                                  : source == NormalSource::Vertex ? input.corner_vertex[c]
-                                                                   : f;
+          const std::uint64_t n = source == ShadingNormals::Corner   ? input.corner_normal_index[c]
+                                  : source == ShadingNormals::Vertex ? input.corner_vertex[c]
+                                                                     : f;
           append_uint(out, n + 1);
         }
       }

@@ -2,8 +2,9 @@
 //
 // Inputs:  normals  N by 3 flat array
 // Output:  how many rows have a NaN or Inf component or zero length (all three components 0).
-//          Rows that are finite and non-zero but not of unit length are valid (renderers and
-//          writers normalise them); only NaN, Inf and zero carry no direction.
+//          Rows that are finite and non-zero but not of unit length are valid (the lighting
+//          normalises them, and every writer writes them divided by their length:
+//          files/mesh_files.h); only NaN, Inf and zero carry no direction.
 #pragma once
 
 #include <cstddef>
