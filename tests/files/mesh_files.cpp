@@ -11,6 +11,13 @@
 using namespace shadetool;
 using namespace shadetool::iotest;
 
+// WriteOptions for FORMAT, every other field at its default.
+static WriteOptions write_as(Format format) {
+  WriteOptions o;
+  o.format = format;
+  return o;
+}
+
 TEST_CASE("format names and extensions", "[mesh_io]") {
   CHECK(format_from_extension("a/b.OBJ") == Format::Obj);
   CHECK(format_from_extension("x.ply") == Format::Ply);
@@ -299,7 +306,7 @@ TEST_CASE("writers write unit normals: off-unit rows divided by their length",
     }
   }
   // the normal within tolerance is written as it was read: OBJ text keeps its digits
-  const std::string text = write_mesh_to_memory(m, WriteOptions{Format::Obj});
+  const std::string text = write_mesh_to_memory(m, write_as(Format::Obj));
   CHECK(text.find("vn 0 1.0004 0\n") != std::string::npos);
   CHECK(text.find("vn 0 0 -1\n") != std::string::npos);
   CHECK(text.find("vn 0.6 0.8 0\n") != std::string::npos);
@@ -307,7 +314,7 @@ TEST_CASE("writers write unit normals: off-unit rows divided by their length",
   Mesh unit = m;
   unit.corner_normals = {0, 0, -1, 0.6, 0.8, 0, 0, 1, 0};
   WriteInfo wi;
-  write_mesh_to_memory(unit, WriteOptions{Format::Ply}, &wi);
+  write_mesh_to_memory(unit, write_as(Format::Ply), &wi);
   CHECK(std::none_of(wi.notes.begin(), wi.notes.end(), [](const std::string& n) { return n.find("unit length") != std::string::npos; }));
 }
 
@@ -330,7 +337,7 @@ TEST_CASE("OBJ and glTF writers write the normals that shade, as the lighting us
   for (Format format : {Format::Obj, Format::Gltf}) {
     INFO("format " << format_extension(format));
     WriteInfo wi;
-    const std::string bytes = write_mesh_to_memory(m, WriteOptions{format}, &wi);
+    const std::string bytes = write_mesh_to_memory(m, write_as(format), &wi);
     const Mesh back = read_mesh_from_memory(bytes, format, "back");
     REQUIRE(back.num_faces() == m.num_faces());
     for (std::size_t f = 0; f < back.num_faces(); ++f)
@@ -347,7 +354,7 @@ TEST_CASE("OBJ and glTF writers write the normals that shade, as the lighting us
   }
   // PLY holds both: vertex and face normals back as written, no note
   WriteInfo wi;
-  const Mesh ply = read_mesh_from_memory(write_mesh_to_memory(m, WriteOptions{Format::Ply}, &wi), Format::Ply, "back");
+  const Mesh ply = read_mesh_from_memory(write_mesh_to_memory(m, write_as(Format::Ply), &wi), Format::Ply, "back");
   CHECK(ply.vertex_normals == m.vertex_normals);
   REQUIRE(ply.face_normals.size() == m.face_normals.size());
   for (std::size_t i = 0; i < m.face_normals.size(); ++i) CHECK(std::fabs(ply.face_normals[i] - m.face_normals[i]) < 1e-7);
@@ -356,7 +363,7 @@ TEST_CASE("OBJ and glTF writers write the normals that shade, as the lighting us
   m.vertex_normals.clear();
   for (Format format : {Format::Obj, Format::Gltf}) {
     WriteInfo wf;
-    const Mesh back = read_mesh_from_memory(write_mesh_to_memory(m, WriteOptions{format}, &wf), format, "back");
+    const Mesh back = read_mesh_from_memory(write_mesh_to_memory(m, write_as(format), &wf), format, "back");
     for (std::size_t f = 0; f < back.num_faces(); ++f)
       for (std::uint32_t c = back.face_start[f]; c < back.face_start[f + 1]; ++c)
         CHECK(std::fabs(stored_normal(back, f, c).x - m.face_normals[3 * f]) < 1e-7);

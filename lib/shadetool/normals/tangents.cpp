@@ -11,6 +11,7 @@
 #include <numeric>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/shading_normals.h>
 #include <shadetool/normals/engine/tangent_corner_terms.h>
 
 namespace shadetool {
@@ -951,13 +952,18 @@ Vec3d perpendicular_unit(const Vec3d& n) {
 
 TangentFrames mikktspace_tangents(const Mesh& mesh) {
   if (!mesh.has_texcoords()) throw Error("tangents: the mesh has no texture coordinates");
-  if (!mesh.has_corner_normals() && !mesh.has_vertex_normals() && !mesh.has_face_normals())
-    throw Error("tangents: the mesh has no normals");
+  // The normals that shade the corners (core/shading_normals.h: corner, else vertex, else face).
+  const ShadingNormals shading = shading_normals(mesh);
+  if (shading == ShadingNormals::None) throw Error("tangents: the mesh has no normals");
   const std::size_t C = mesh.num_corners(), F = mesh.num_faces();
   const int dims = mesh.texcoord_dims;
   auto corner_normal = [&](std::size_t c, std::size_t f) {
-    if (mesh.has_corner_normals()) return get3(mesh.corner_normals, mesh.corner_normal_index[c]);
-    if (mesh.has_vertex_normals()) return get3(mesh.vertex_normals, mesh.corner_vertex[c]);
+    switch (shading) {
+      case ShadingNormals::Corner: return get3(mesh.corner_normals, mesh.corner_normal_index[c]);
+      case ShadingNormals::Vertex: return get3(mesh.vertex_normals, mesh.corner_vertex[c]);
+      case ShadingNormals::Face:
+      case ShadingNormals::None: break;
+    }
     return get3(mesh.face_normals, f);
   };
   // Faces taken: 3+ corners, every one textured.
@@ -968,9 +974,9 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
     const Vec3d p = mesh.position(v);
     in.positions[v] = {float(p.x), float(p.y), float(p.z)};
   }
-  const std::vector<double>& normal_values = mesh.has_corner_normals()   ? mesh.corner_normals
-                                             : mesh.has_vertex_normals() ? mesh.vertex_normals
-                                                                         : mesh.face_normals;
+  const std::vector<double>& normal_values = shading == ShadingNormals::Corner   ? mesh.corner_normals
+                                             : shading == ShadingNormals::Vertex ? mesh.vertex_normals
+                                                                                 : mesh.face_normals;
   in.normals.resize(normal_values.size() / 3);
   for (std::size_t k = 0; k < in.normals.size(); ++k)
     in.normals[k] = {float(normal_values[3 * k]), float(normal_values[3 * k + 1]), float(normal_values[3 * k + 2])};
@@ -979,15 +985,16 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   for (std::size_t k = 0; k < in.texcoords.size(); ++k)
     in.texcoords[k] = {float(mesh.texcoords[stride * k]), float(mesh.texcoords[stride * k + 1]), 1.0f};
   std::vector<std::uint32_t> corner_face;  // face normals: the normal index of a corner is its face
-  if (!mesh.has_corner_normals() && !mesh.has_vertex_normals()) {
+  if (shading == ShadingNormals::Face) {
     corner_face.resize(C);
     for (std::size_t f = 0; f < F; ++f)
       for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) corner_face[c] = std::uint32_t(f);
   }
   in.num_corners = C;
   in.vertex = mesh.corner_vertex.data();
-  in.normal = mesh.has_corner_normals() ? mesh.corner_normal_index.data()
-              : mesh.has_vertex_normals() ? mesh.corner_vertex.data() : corner_face.data();
+  in.normal = shading == ShadingNormals::Corner   ? mesh.corner_normal_index.data()
+              : shading == ShadingNormals::Vertex ? mesh.corner_vertex.data()
+                                                  : corner_face.data();
   in.texcoord = mesh.corner_texcoord_index.data();
   bool taken_triangles = true;  // every face taken, every one a triangle
   for (std::size_t f = 0; f < F; ++f) {
