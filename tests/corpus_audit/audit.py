@@ -41,31 +41,12 @@ MESH_FORMATS = (".obj", ".ply", ".off", ".stl", ".glb", ".gltf")
 
 
 # ---------------------------------------------------------------- small vector algebra
-def sub(a, b):
-    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
-
-
-def cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def dot(a, b):
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+# sub, cross, dot and Newell's area vector: tests/corpus/check.py's (one copy for both harnesses)
+from check import sub, cross, dot, area_vector  # noqa: E402,F401
 
 
 def norm(a):
     return math.sqrt(dot(a, a))
-
-
-def area_vector(P, face):
-    if len(face) < 3 or any(i < 0 or i >= len(P) for i in face):
-        return (0.0, 0.0, 0.0)
-    p0 = P[face[0]]
-    s = [0.0, 0.0, 0.0]
-    for k in range(1, len(face) - 1):
-        c = cross(sub(P[face[k]], p0), sub(P[face[k + 1]], p0))
-        s[0] += c[0]; s[1] += c[1]; s[2] += c[2]
-    return tuple(s)
 
 
 def mat_mul(a, b):  # 4x4 row-major lists of lists

@@ -161,6 +161,28 @@ inline bool triangle_scalar(const double* P, const std::uint32_t* cv, std::size_
   }
 }
 
+// Steps (1) and (2) of triangle_block_contributions (below) for the block of faces [b, b + count)
+// (positions prefetched kPrefetchFaces ahead, never past f_end): the corner positions into xyz
+// (structure of arrays: row 3k + j is coordinate j of corner k) and the weighting's contributions
+// into w (triangle_blocks.h's layout; NaN in w[0][i] where the vector pass does not take face
+// b + i). Shared with the crease path's slot pass (vertex_slots.h).
+template <Weighting W>
+inline void gather_block_contributions(const double* P, const std::uint32_t* cv, std::size_t b, std::size_t count,
+                                       std::size_t f_end, double (&xyz)[9][kTriangleBlock],
+                                       double (&w)[9][kTriangleBlock]) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t c = 3 * (b + i);
+    if (b + i + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{});
+    for (int k = 0; k < 3; ++k) {
+      const double* p = P + 3 * std::size_t(cv[c + k]);
+      xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
+    }
+  }
+  if constexpr (W == Weighting::Angle) triangle_block_angle(count, &xyz[0][0], &w[0][0]);
+  else if constexpr (W == Weighting::Max) triangle_block_max(count, &xyz[0][0], &w[0][0]);
+  else triangle_block_uniform(count, &xyz[0][0], &w[0][0]);
+}
+
 // Uniform, Angle and Max for triangles, in blocks of kTriangleBlock faces and three passes over
 // each block: (1) gather the corner positions (structure of arrays; positions prefetched
 // kPrefetchFaces ahead), (2) the contributions of the whole block by the vectorised
@@ -178,17 +200,7 @@ inline std::size_t triangle_block_contributions(const MeshView& mesh, std::size_
   alignas(64) double w[9][kTriangleBlock];
   for (std::size_t b = f_begin; b < f_end; b += kTriangleBlock) {
     const std::size_t count = std::min(kTriangleBlock, f_end - b);
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t c = 3 * (b + i);
-      if (b + i + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{});
-      for (int k = 0; k < 3; ++k) {
-        const double* p = P + 3 * std::size_t(cv[c + k]);
-        xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
-      }
-    }
-    if constexpr (W == Weighting::Angle) triangle_block_angle(count, &xyz[0][0], &w[0][0]);
-    else if constexpr (W == Weighting::Max) triangle_block_max(count, &xyz[0][0], &w[0][0]);
-    else triangle_block_uniform(count, &xyz[0][0], &w[0][0]);
+    gather_block_contributions<W>(P, cv, b, count, f_end, xyz, w);
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
       if (rows.base && b + i + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, rows);

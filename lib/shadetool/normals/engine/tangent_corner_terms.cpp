@@ -142,21 +142,19 @@ void tangent_lane_frames(std::size_t rows, const int* __restrict count, const fl
   std::memcpy(vnear, &near, sizeof near);
   for (std::size_t g = 0; g < L; ++g) {
     float* o = out;
-    // Unit where not zero (tangents.cpp's normalize: the length's inverse, then products).
-    const bool s_nz = (std::fabs(vosx[g]) > FLT_MIN) | (std::fabs(vosy[g]) > FLT_MIN) | (std::fabs(vosz[g]) > FLT_MIN);
-    const float s_len = std::sqrt(vosx[g] * vosx[g] + vosy[g] * vosy[g] + vosz[g] * vosz[g]);
-    const bool s_unit = s_nz & (s_len > 0.0f);
-    const float s_inv = 1.0f / s_len;  // used only where s_len > 0
-    o[0 * L + g] = s_unit ? s_inv * vosx[g] : vosx[g];
-    o[1 * L + g] = s_unit ? s_inv * vosy[g] : vosy[g];
-    o[2 * L + g] = s_unit ? s_inv * vosz[g] : vosz[g];
-    const bool t_nz = (std::fabs(votx[g]) > FLT_MIN) | (std::fabs(voty[g]) > FLT_MIN) | (std::fabs(votz[g]) > FLT_MIN);
-    const float t_len = std::sqrt(votx[g] * votx[g] + voty[g] * voty[g] + votz[g] * votz[g]);
-    const bool t_unit = t_nz & (t_len > 0.0f);
-    const float t_inv = 1.0f / t_len;  // used only where t_len > 0
-    o[3 * L + g] = t_unit ? t_inv * votx[g] : votx[g];
-    o[4 * L + g] = t_unit ? t_inv * voty[g] : voty[g];
-    o[5 * L + g] = t_unit ? t_inv * votz[g] : votz[g];
+    // Unit where not zero (tangents.cpp's normalize: the length's inverse, then products), into
+    // rows row..row+2.
+    auto unit_where_nonzero = [&](float x, float y, float z, std::size_t row) {
+      const bool nz = (std::fabs(x) > FLT_MIN) | (std::fabs(y) > FLT_MIN) | (std::fabs(z) > FLT_MIN);
+      const float len = std::sqrt(x * x + y * y + z * z);
+      const bool unit = nz & (len > 0.0f);
+      const float inv = 1.0f / len;  // used only where len > 0
+      o[row * L + g] = unit ? inv * x : x;
+      o[(row + 1) * L + g] = unit ? inv * y : y;
+      o[(row + 2) * L + g] = unit ? inv * z : z;
+    };
+    unit_where_nonzero(vosx[g], vosy[g], vosz[g], 0);
+    unit_where_nonzero(votx[g], voty[g], votz[g], 3);
     const bool positive = vsum[g] > 0.0f;
     o[6 * L + g] = positive ? vms[g] / vsum[g] : vms[g];  // divisor checked (selected)
     o[7 * L + g] = positive ? vmt[g] / vsum[g] : vmt[g];

@@ -97,16 +97,7 @@ std::size_t add_faces_to_slots(const MeshView& mesh, std::size_t f_begin, std::s
   const RowHint hint_pairs{reinterpret_cast<const char*>(slots) + 64, sizeof(VertexSlot<T>)};
   for (std::size_t b = f_begin; b < f_end; b += kTriangleBlock) {
     const std::size_t count = std::min(kTriangleBlock, f_end - b);
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t c = 3 * (b + i);
-      if (b + i + kPrefetchFaces < f_end) prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{});
-      for (int k = 0; k < 3; ++k) {
-        const double* p = P + 3 * std::size_t(cv[c + k]);
-        xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
-      }
-    }
-    if constexpr (W == Weighting::Angle) triangle_block_angle(count, &xyz[0][0], &w[0][0]);
-    else triangle_block_uniform(count, &xyz[0][0], &w[0][0]);
+    gather_block_contributions<W>(P, cv, b, count, f_end, xyz, w);
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
       if (b + i + kPrefetchFaces < f_end) {
