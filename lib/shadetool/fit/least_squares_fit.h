@@ -60,6 +60,12 @@
 // Clamping: after the solve, every value outside [lower, upper] is set to the bound and counted
 // (an unconstrained L2 fit overshoots near a sharp edge of f: a highlight, a shadow boundary).
 //
+// Sums: b adds, per triangle corner, area sum_k (w_k phi_k) f_k over the rule's points (one update
+// per corner); CG's p^T A p is summed over the elements as p^T A p = sum_t area_t/12 sum_i p_i
+// (p_i + p_0 + p_1 + p_2) (+ quads' p^T m p, + edges' (d . p)^2) in the operator's pass, in four
+// accumulators (no pass over the nodes). Both are the same sums as the per-point and per-node
+// ones in another order: the colours move by rounding only, far inside the stop's accuracy
+// (bench/fit/results.md: over data/ and the corpus against the per-point sums).
 // Precision: double throughout; the assembly is sequential in element order and the solve single
 // threaded, so the result is the same bits for any thread count.
 #pragma once
