@@ -533,6 +533,24 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     std::vector<int> points_per_site(q3.sites(), 0);
     for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site_of(s)];
     CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
+    // site_edge (every point a midpoint here): each site's two vertices, lower first, are the two
+    // corners of weight 1/2 of each of its points, and 0.5 p_lo + 0.5 p_hi is the site's place
+    REQUIRE(q3.site_edge.size() == 2 * q3.sites());
+    std::size_t wrong_edge = 0, wrong_place = 0;
+    for (std::size_t s = 0; s < q3.size(); ++s) {
+      const FitPoint pt = q3.point(s);
+      std::vector<std::uint32_t> ends;
+      for (int j = 0; j < pt.corners; ++j)
+        if (pt.phi[j] == 0.5) ends.push_back(pt.vertex[j]);
+      std::sort(ends.begin(), ends.end());
+      const std::size_t i = q3.site_of(s);
+      wrong_edge += ends != std::vector<std::uint32_t>{q3.site_edge[2 * i], q3.site_edge[2 * i + 1]};
+      for (int k = 0; k < 3; ++k)
+        wrong_place += 0.5 * mesh.positions[3 * q3.site_edge[2 * i] + k] + 0.5 * mesh.positions[3 * q3.site_edge[2 * i + 1] + k] !=
+                       at_points[3 * s + k];
+    }
+    CHECK(wrong_edge == 0);
+    CHECK(wrong_place == 0);
     // f given once per site is f at every point of the site: the same fit and error, bit for bit
     std::vector<double> f_sites(q3.sites()), point(mesh.num_vertices());
     const std::vector<double> x = interpolate_vertex_data_at_sites(q3, mesh.positions, 3);
@@ -548,6 +566,7 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     for (int samples : {1, 6, 12}) {  // interior points: each its own site
       const FitQuadrature q = fit_quadrature(e, mesh.positions, samples);
       CHECK(q.sites() == q.size());
+      CHECK(q.site_edge.empty());
     }
   }
 }

@@ -172,6 +172,7 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   const std::size_t S = q.size(), R = q.rule.size(), T = q.tri_area.size();
   q.site.clear();
   q.site_point.clear();
+  q.site_edge.clear();
   std::vector<std::array<int, 2>> rule_edge(R, {-1, -1});  // local corners of a midpoint's edge, or -1
   bool rule_midpoints = false;
   for (std::size_t k = 0; k < R; ++k) {
@@ -204,6 +205,7 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     if (midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi)) add(p, lo, hi);
   }
   if (midpoints == 0) return;  // every point its own site
+  const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge (after the pass)
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
   std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_site(offset[V]);
   q.site.resize(S);
@@ -227,6 +229,14 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     q.site_point[sites++] = std::uint32_t(p);
   }
   q.site_point.resize(sites);
+  if (edges_only) {  // each entry is one edge's site: (lower vertex = its bucket, entry_hi)
+    q.site_edge.resize(2 * sites);
+    for (std::size_t v = 0; v < V; ++v)
+      for (std::uint32_t k = offset[v]; k < end[v]; ++k) {
+        q.site_edge[2 * std::size_t(entry_site[k])] = std::uint32_t(v);
+        q.site_edge[2 * std::size_t(entry_site[k]) + 1] = entry_hi[k];
+      }
+  }
 }
 
 // M + lambda R as element data (least_squares_fit.h), applied to a block of channels without

@@ -131,6 +131,9 @@ struct FitQuadrature {
   std::vector<std::uint32_t> quad_face;     // 1 per quad point
   std::vector<std::uint32_t> site;          // 1 per point, or empty (site p is point p)
   std::vector<std::uint32_t> site_point;    // 1 per site: its first point, or empty (identity)
+  // 2 per site when every point is an edge's midpoint (the 3-point rule on triangles only): the
+  // edge's two vertices, lower first (a site's data is then 0.5 d_lo + 0.5 d_hi); else empty
+  std::vector<std::uint32_t> site_edge;
 
   std::size_t triangle_points() const { return tri_area.size() * rule.size(); }
   const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? tri_vertex.data() : tri_node.data(); }
