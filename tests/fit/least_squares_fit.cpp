@@ -338,6 +338,59 @@ TEST_CASE("Three channels solved together (4-wide lanes) equal each channel solv
       }
 }
 
+TEST_CASE("Three channels at the sites, 1- and 3-point rules, 8-bit stop: every value within a quarter step of the dense solve of the rule's b",
+          "[fit][least_squares]") {
+  // The path bake-lighting takes (3 channels in 4-wide lanes, f given per site, the 8-bit accuracy
+  // stop), with b summed per triangle corner and p^T A p summed over the elements: checked against
+  // an independent solve. Truth: M assembled by the test's own Gauss rule (exact for M), b by the
+  // test's own loop over the same quadrature rule (triangle_quadrature: the points' barycentric
+  // coordinates and weights, areas from the cross product), solved densely. Every fitted value
+  // must be within kEightBitFitAccuracy (a quarter of an 8-bit step) of that solve: the bound the
+  // 8-bit stop promises. Signals of no polynomial form (the rules are not exact for them, so b is
+  // the rule's and only the rule's), on an irregular sphere.
+  const Mesh mesh = shadetool::testing::icosphere(2, 0.2).mesh;  // 162 vertices, irregular
+  const std::size_t V = mesh.num_vertices();
+  const std::function<double(const Vec3d&)> signal[3] = {
+      [](const Vec3d& p) { return 0.5 + 0.5 * std::sin(3 * p.x + p.y); },
+      [](const Vec3d& p) { return std::exp(-p.x * p.x - 2 * p.y * p.y); },
+      [](const Vec3d& p) { return p.z > 0.2 ? 0.9 : 0.1 + 0.3 * p.x * p.x; }};  // a step, as a shadow edge
+  std::vector<std::vector<double>> M;
+  std::vector<double> unused;
+  dense_normal_equations(mesh, signal[0], M, unused);
+  for (int samples : {1, 3}) {
+    const std::vector<QuadraturePoint> rule = triangle_quadrature(samples);
+    std::vector<std::vector<double>> b(3, std::vector<double>(V, 0.0));
+    for (std::size_t face = 0; face < mesh.num_faces(); ++face) {
+      const std::uint32_t* c = mesh.corner_vertex.data() + mesh.face_start[face];
+      const Vec3d p0 = mesh.position(c[0]), p1 = mesh.position(c[1]), p2 = mesh.position(c[2]);
+      const double area = 0.5 * length(cross(p1 - p0, p2 - p0));
+      for (const QuadraturePoint& k : rule) {
+        const Vec3d x = p0 * k.barycentric[0] + p1 * k.barycentric[1] + p2 * k.barycentric[2];
+        for (int ch = 0; ch < 3; ++ch)
+          for (int j = 0; j < 3; ++j) b[ch][c[j]] += k.weight * area * k.barycentric[j] * signal[ch](x);
+      }
+    }
+    const FitElements e = fit_elements(mesh);
+    const FitQuadrature q = fit_quadrature(e, mesh.positions, samples);
+    const std::vector<double> x = interpolate_vertex_data_at_sites(q, mesh.positions, 3);
+    std::vector<double> f(3 * q.sites()), point(3 * V, 0.0);
+    for (std::size_t i = 0; i < q.sites(); ++i)
+      for (int ch = 0; ch < 3; ++ch) f[3 * i + ch] = signal[ch](get3(x, i));
+    LeastSquaresFitOptions o;
+    o.accuracy = kEightBitFitAccuracy;
+    o.lower = -1e300;
+    const LeastSquaresFit fit = least_squares_fit(e, mesh.positions, q, f, point, 3, o);
+    double worst = 0;
+    for (int ch = 0; ch < 3; ++ch) {
+      const std::vector<double> expected = dense_solve(M, b[ch]);
+      for (std::size_t v = 0; v < V; ++v) worst = std::max(worst, std::fabs(fit.values[3 * v + ch] - expected[v]));
+    }
+    INFO(samples << " points: max |c - c*| " << worst << ", CG iterations " << fit.iterations);
+    CHECK(fit.iterations > 0);
+    CHECK(worst <= kEightBitFitAccuracy);
+  }
+}
+
 TEST_CASE("A linear signal is reproduced exactly: fit = point values, with and without the regulariser",
           "[fit][least_squares]") {
   // planar: the unfolded kink of a linear function is zero, so R does not move the solution
@@ -480,6 +533,24 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     std::vector<int> points_per_site(q3.sites(), 0);
     for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site_of(s)];
     CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
+    // site_edge (every point a midpoint here): each site's two vertices, lower first, are the two
+    // corners of weight 1/2 of each of its points, and 0.5 p_lo + 0.5 p_hi is the site's place
+    REQUIRE(q3.site_edge.size() == 2 * q3.sites());
+    std::size_t wrong_edge = 0, wrong_place = 0;
+    for (std::size_t s = 0; s < q3.size(); ++s) {
+      const FitPoint pt = q3.point(s);
+      std::vector<std::uint32_t> ends;
+      for (int j = 0; j < pt.corners; ++j)
+        if (pt.phi[j] == 0.5) ends.push_back(pt.vertex[j]);
+      std::sort(ends.begin(), ends.end());
+      const std::size_t i = q3.site_of(s);
+      wrong_edge += ends != std::vector<std::uint32_t>{q3.site_edge[2 * i], q3.site_edge[2 * i + 1]};
+      for (int k = 0; k < 3; ++k)
+        wrong_place += 0.5 * mesh.positions[3 * q3.site_edge[2 * i] + k] + 0.5 * mesh.positions[3 * q3.site_edge[2 * i + 1] + k] !=
+                       at_points[3 * s + k];
+    }
+    CHECK(wrong_edge == 0);
+    CHECK(wrong_place == 0);
     // f given once per site is f at every point of the site: the same fit and error, bit for bit
     std::vector<double> f_sites(q3.sites()), point(mesh.num_vertices());
     const std::vector<double> x = interpolate_vertex_data_at_sites(q3, mesh.positions, 3);
@@ -495,6 +566,7 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     for (int samples : {1, 6, 12}) {  // interior points: each its own site
       const FitQuadrature q = fit_quadrature(e, mesh.positions, samples);
       CHECK(q.sites() == q.size());
+      CHECK(q.site_edge.empty());
     }
   }
 }

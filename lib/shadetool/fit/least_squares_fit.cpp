@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <string>
 
 
@@ -171,6 +172,7 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   const std::size_t S = q.size(), R = q.rule.size(), T = q.tri_area.size();
   q.site.clear();
   q.site_point.clear();
+  q.site_edge.clear();
   std::vector<std::array<int, 2>> rule_edge(R, {-1, -1});  // local corners of a midpoint's edge, or -1
   bool rule_midpoints = false;
   for (std::size_t k = 0; k < R; ++k) {
@@ -203,6 +205,7 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     if (midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi)) add(p, lo, hi);
   }
   if (midpoints == 0) return;  // every point its own site
+  const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge (after the pass)
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
   std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_site(offset[V]);
   q.site.resize(S);
@@ -226,6 +229,14 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     q.site_point[sites++] = std::uint32_t(p);
   }
   q.site_point.resize(sites);
+  if (edges_only) {  // each entry is one edge's site: (lower vertex = its bucket, entry_hi)
+    q.site_edge.resize(2 * sites);
+    for (std::size_t v = 0; v < V; ++v)
+      for (std::uint32_t k = offset[v]; k < end[v]; ++k) {
+        q.site_edge[2 * std::size_t(entry_site[k])] = std::uint32_t(v);
+        q.site_edge[2 * std::size_t(entry_site[k]) + 1] = entry_hi[k];
+      }
+  }
 }
 
 // M + lambda R as element data (least_squares_fit.h), applied to a block of channels without
@@ -243,66 +254,91 @@ struct FitOperator {
   std::vector<double> lumped;            // #nodes: row sums of M (= of M + lambda R: R 1 = 0), the lumped mass
 };
 
-// y = A x for x, y #nodes by W (W = 0: `width` channels). Sequential in element order: the same
-// bits for any thread count.
-// y += M_t x for triangle t: area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T).
+// 1/12 rounded: M_t's scale area/12 as one multiplication per triangle in each operator pass (a
+// division per triangle held the pass back; the scale then differs from area/12 by at most an
+// ulp, M's entries by a relative 2^-52: far inside the solve's tolerance).
+constexpr double kTwelfth = 1.0 / 12;
+
+// y = A x for x, y #nodes by W (W = 1 or 4 lanes), and x^T A x per lane summed over the elements
+// (CG's p^T A p without a pass over the nodes). Sequential in element order: the same bits for any
+// thread count.
+// y += M_t x for triangle t: area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T), and
+// x^T M_t x = area/12 sum_i x_i (x_i + x_0 + x_1 + x_2) into xAx (one of four accumulators: the
+// position of t in its round of apply_operator's four quarters).
 template <std::size_t W>
-inline void add_triangle_product(const FitOperator& A, std::size_t t, const double* x, double* y, std::size_t w) {
-  const double s = A.tri_area[t] / 12;
+inline void add_triangle_product(const FitOperator& A, std::size_t t, const double* x, double* y, double* xAx) {
+  const double s = A.tri_area[t] * kTwelfth;  // area/12 to within an ulp: a multiplication, not a division
   if (s == 0) return;
-  const std::size_t n0 = A.tri_node[3 * t] * w, n1 = A.tri_node[3 * t + 1] * w, n2 = A.tri_node[3 * t + 2] * w;
-  for (std::size_t k = 0; k < (W ? W : w); ++k) {
+  const std::size_t n0 = A.tri_node[3 * t] * W, n1 = A.tri_node[3 * t + 1] * W, n2 = A.tri_node[3 * t + 2] * W;
+  for (std::size_t k = 0; k < W; ++k) {
     const double x0 = x[n0 + k], x1 = x[n1 + k], x2 = x[n2 + k], sum = x0 + x1 + x2;
-    y[n0 + k] += s * (x0 + sum);
-    y[n1 + k] += s * (x1 + sum);
-    y[n2 + k] += s * (x2 + sum);
+    const double t0 = x0 + sum, t1 = x1 + sum, t2 = x2 + sum;
+    y[n0 + k] += s * t0;
+    y[n1 + k] += s * t1;
+    y[n2 + k] += s * t2;
+    xAx[k] += s * (x0 * t0 + x1 * t1 + x2 * t2);
   }
 }
 
 // The same for every triangle, 4 lanes per node (3 channels and a zero pad, least_squares_fit's
-// layout for 3 channels): one 4-wide operation per node where add_triangle_product<3> does three
-// scalar ones. Built for AVX2 and for the baseline (target_clones; no FMA): per lane the
-// operations of add_triangle_product, in the same order, so the same bits on either.
-// The triangles are taken from four quarters of the list in turn (apply_operator).
+// layout for 3 channels): one 4-wide operation per node where add_triangle_product<1> does one
+// scalar one per lane. Built for AVX2 and for the baseline (target_clones; no FMA): per lane the
+// operations of add_triangle_product, in the same order, so the same bits on either and the bits
+// of one channel solved alone. The triangles are taken from four quarters of the list in turn
+// (apply_operator); xAx_out: 4 lanes, the four quarters' accumulators summed (0 + 1) + (2 + 3).
 __attribute__((target_clones("avx2", "default")))
-void add_triangle_products_4(const FitOperator& A, const double* x, double* y) {
+void add_triangle_products_4(const FitOperator& A, const double* x, double* y, double* xAx_out) {
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
-  for (std::size_t i = 0; i < Q; ++i)
-    for (std::size_t t = i; t < T; t += Q) {
-      const double s = A.tri_area[t] / 12;
-      if (s == 0) continue;
-      const std::size_t n0 = std::size_t(A.tri_node[3 * t]) * 4, n1 = std::size_t(A.tri_node[3 * t + 1]) * 4,
-                        n2 = std::size_t(A.tri_node[3 * t + 2]) * 4;
-      Lanes4 x0, x1, x2, y0, y1, y2;
-      std::memcpy(&x0, x + n0, sizeof x0);
-      std::memcpy(&x1, x + n1, sizeof x1);
-      std::memcpy(&x2, x + n2, sizeof x2);
-      const Lanes4 sum = x0 + x1 + x2;
-      std::memcpy(&y0, y + n0, sizeof y0);  // load, add, store one node at a time: nodes may repeat
-      y0 += s * (x0 + sum);
-      std::memcpy(y + n0, &y0, sizeof y0);
-      std::memcpy(&y1, y + n1, sizeof y1);
-      y1 += s * (x1 + sum);
-      std::memcpy(y + n1, &y1, sizeof y1);
-      std::memcpy(&y2, y + n2, sizeof y2);
-      y2 += s * (x2 + sum);
-      std::memcpy(y + n2, &y2, sizeof y2);
-    }
+  Lanes4 acc0 = {0, 0, 0, 0}, acc1 = acc0, acc2 = acc0, acc3 = acc0;
+  const auto one = [&](std::size_t t, Lanes4& acc) __attribute__((always_inline)) {
+    const double s = A.tri_area[t] * kTwelfth;  // area/12 to within an ulp: a multiplication, not a division
+    if (s == 0) return;
+    const std::size_t n0 = std::size_t(A.tri_node[3 * t]) * 4, n1 = std::size_t(A.tri_node[3 * t + 1]) * 4,
+                      n2 = std::size_t(A.tri_node[3 * t + 2]) * 4;
+    Lanes4 x0, x1, x2, y0, y1, y2;
+    std::memcpy(&x0, x + n0, sizeof x0);
+    std::memcpy(&x1, x + n1, sizeof x1);
+    std::memcpy(&x2, x + n2, sizeof x2);
+    const Lanes4 sum = x0 + x1 + x2;
+    const Lanes4 t0 = x0 + sum, t1 = x1 + sum, t2 = x2 + sum;
+    std::memcpy(&y0, y + n0, sizeof y0);  // load, add, store one node at a time: nodes may repeat
+    y0 += s * t0;
+    std::memcpy(y + n0, &y0, sizeof y0);
+    std::memcpy(&y1, y + n1, sizeof y1);
+    y1 += s * t1;
+    std::memcpy(y + n1, &y1, sizeof y1);
+    std::memcpy(&y2, y + n2, sizeof y2);
+    y2 += s * t2;
+    std::memcpy(y + n2, &y2, sizeof y2);
+    acc += s * (x0 * t0 + x1 * t1 + x2 * t2);
+  };
+  for (std::size_t i = 0; i < Q; ++i) {  // t = i, i + Q, i + 2Q, i + 3Q (the last round may hold fewer)
+    one(i, acc0);
+    if (i + Q < T) one(i + Q, acc1);
+    if (i + 2 * Q < T) one(i + 2 * Q, acc2);
+    if (i + 3 * Q < T) one(i + 3 * Q, acc3);
+  }
+  const Lanes4 total = (acc0 + acc1) + (acc2 + acc3);
+  std::memcpy(xAx_out, &total, sizeof total);
 }
 
+// y = A x and xAx = x^T A x per lane (triangles' four accumulators, then the quads', then the
+// edges': the same order for W = 1 and 4). y_zeroed: y is 0 already (CG's direction pass clears it).
 template <std::size_t W>
-void apply_operator(const FitOperator& A, const double* x, double* y, std::size_t width) {
-  const std::size_t w = W ? W : width;
-  std::fill(y, y + A.diagonal.size() * w, 0.0);
+void apply_operator(const FitOperator& A, const double* x, double* y, double* xAx, bool y_zeroed) {
+  constexpr std::size_t w = W;
+  if (!y_zeroed) std::fill(y, y + A.diagonal.size() * w, 0.0);
   // The triangles taken from four quarters of the list in turn: neighbouring triangles of a mesh
   // share nodes, so in list order each update of y waits for the store of the one before; four
   // far-apart chains overlap (bench/fit/results.md). A fixed order: the same bits on every run.
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
-  if (W == 4) {
-    add_triangle_products_4(A, x, y);
+  if constexpr (W == 4) {
+    add_triangle_products_4(A, x, y, xAx);
   } else {
+    double acc[4][W] = {};
     for (std::size_t i = 0; i < Q; ++i)
-      for (std::size_t t = i; t < T; t += Q) add_triangle_product<W>(A, t, x, y, w);
+      for (std::size_t t = i, a = 0; t < T; t += Q, ++a) add_triangle_product<W>(A, t, x, y, acc[a]);
+    for (std::size_t c = 0; c < w; ++c) xAx[c] = (acc[0][c] + acc[1][c]) + (acc[2][c] + acc[3][c]);
   }
   for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
     const std::uint32_t* n = &A.quad_node[4 * k];
@@ -310,6 +346,15 @@ void apply_operator(const FitOperator& A, const double* x, double* y, std::size_
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j)
         for (std::size_t c = 0; c < w; ++c) y[n[i] * w + c] += m[4 * i + j] * x[n[j] * w + c];
+    for (std::size_t c = 0; c < w; ++c) {  // x^T m x, row by row
+      double quad = 0;
+      for (int i = 0; i < 4; ++i) {
+        double row = 0;
+        for (int j = 0; j < 4; ++j) row += m[4 * i + j] * x[n[j] * w + c];
+        quad += x[n[i] * w + c] * row;
+      }
+      xAx[c] += quad;
+    }
   }
   for (std::size_t k = 0; k < A.edge_d.size() / 4; ++k) {
     const std::uint32_t* n = &A.edge_node[4 * k];
@@ -317,6 +362,7 @@ void apply_operator(const FitOperator& A, const double* x, double* y, std::size_
     for (std::size_t c = 0; c < w; ++c) {
       const double dx = d[0] * x[n[0] * w + c] + d[1] * x[n[1] * w + c] + d[2] * x[n[2] * w + c] + d[3] * x[n[3] * w + c];
       for (int i = 0; i < 4; ++i) y[n[i] * w + c] += d[i] * dx;
+      xAx[c] += dx * dx;  // x^T R_e x = (d . x)^2
     }
   }
 }
@@ -328,7 +374,6 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
                         double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
   const std::size_t N = e.nodes, T = q.tri_area.size();
   A.diagonal.assign(N, 0.0);
-  A.lumped.assign(N, 0.0);
   A.tri_node = q.triangle_nodes();
   A.tri_area = q.tri_area.data();
   A.triangles = T;
@@ -339,12 +384,13 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
     const std::uint32_t* n = &q.triangle_nodes()[3 * t];
     const double area = q.tri_area[t];
     if (!(area > 0)) continue;
-    for (int i = 0; i < 3; ++i) {
-      A.diagonal[n[i]] += area / 6;
-      A.lumped[n[i]] += area / 3;  // row sum of area/12 [[2,1,1],...]: area/12 * 4
-    }
+    for (int i = 0; i < 3; ++i) A.diagonal[n[i]] += area / 6;
     if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {q.tri_vertex[3 * t], q.tri_vertex[3 * t + 1], q.tri_vertex[3 * t + 2]}});
   }
+  // The triangles' row sums of area/12 [[2,1,1],...] are area/3 = 2 (area/6) per corner: twice
+  // their diagonal (doubling is exact, so twice the sum is the sum of the doubles).
+  A.lumped.resize(N);
+  for (std::size_t i = 0; i < N; ++i) A.lumped[i] = 2 * A.diagonal[i];
   // M, quads: 3x3 Gauss-Legendre on the bilinear map.
   const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
@@ -416,17 +462,6 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
 // operation per node where the scalar loops do four: per lane the same operations in the same
 // node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
 // builds (target_clones; no FMA).
-// pAp = sum_i p_i * Ap_i per lane.
-__attribute__((target_clones("avx2", "default")))
-void lanes4_dot(const double* p, const double* Ap, std::size_t N, double out[4]) {
-  Lanes4 acc = {0, 0, 0, 0}, a, b;
-  for (std::size_t i = 0; i < N; ++i) {
-    std::memcpy(&a, p + 4 * i, sizeof a);
-    std::memcpy(&b, Ap + 4 * i, sizeof b);
-    acc += a * b;
-  }
-  std::memcpy(out, &acc, sizeof acc);
-}
 // x += alpha p; r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new +=
 // r^2 inv_d_i, per lane.
 __attribute__((target_clones("avx2", "default")))
@@ -483,46 +518,108 @@ void lanes4_first_direction(const double* r, const double* inv_d, std::size_t N,
   }
   std::memcpy(abs_out, &abs, sizeof abs);
 }
-// p = inv_d_i r + beta p, per lane.
+// p = inv_d_i r + beta p, per lane; Ap cleared for the next operator pass (one pass fewer).
 __attribute__((target_clones("avx2", "default")))
-void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double beta_in[4], double* p) {
+void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double beta_in[4], double* p,
+                      double* Ap) {
   Lanes4 beta, ri, pi;
+  const Lanes4 zero = {0, 0, 0, 0};
   std::memcpy(&beta, beta_in, sizeof beta);
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&ri, r + 4 * i, sizeof ri);
     std::memcpy(&pi, p + 4 * i, sizeof pi);
     pi = ri * inv_d[i] + beta * pi;
     std::memcpy(p + 4 * i, &pi, sizeof pi);
+    std::memcpy(Ap + 4 * i, &zero, sizeof zero);
   }
 }
 
-// b_i += sum over the triangles' points of w_k phi_i(x_k) f(x_k) (least_squares_fit.h, b), 3
-// channels of f in 4 lanes of b per node (the fourth stays 0): one 4-wide update per corner where
-// the scalar loop does three; the same products and sums per lane, in point order, so the same
-// bits. Triangle points only (the quads' follow in the caller, in point order). inverse_diagonal:
-// 0 off the system (those rows stay 0); null when every node is in the system.
-__attribute__((target_clones("avx2", "default")))
-void add_triangle_loads_4(const FitQuadrature& q, const double* f, bool per_site, const double* inverse_diagonal,
-                          double* b) {
+// b_i += sum over the triangles' points of w_k phi_i(x_k) f(x_k) (least_squares_fit.h, b), one
+// update per corner of each triangle: with w_k = rule_k.weight area and phi_i(x_k) = the rule's
+// barycentric coordinate, corner c of triangle j adds area_j (sum_k g_kc f_k), g_kc =
+// rule_k.weight barycentric_kc, over the points k with g_kc != 0 (a point where phi is 0 is not
+// read: the old per-point loop's w == 0 skip), in k order. TriangleLoads holds those g_kc.
+struct TriangleLoads {
+  int count[3] = {};
+  int point[3][12] = {};  // the rules have at most 12 points (triangle_quadrature.h)
+  double g[3][12] = {};
+};
+TriangleLoads triangle_loads(const std::vector<QuadraturePoint>& rule) {
+  TriangleLoads out;
+  for (int c = 0; c < 3; ++c)
+    for (std::size_t k = 0; k < rule.size() && k < 12; ++k) {
+      const double g = rule[k].weight * rule[k].barycentric[c];
+      if (g == 0) continue;
+      out.point[c][out.count[c]] = int(k);
+      out.g[c][out.count[c]++] = g;
+    }
+  return out;
+}
+
+// The triangle loads of `width` channels into b with L lanes per node (L >= width), scalar.
+// inverse_diagonal: 0 off the system (those rows stay 0); null when every node is in the system.
+void add_triangle_loads(const FitQuadrature& q, const TriangleLoads& g, const double* f, std::size_t width,
+                        std::size_t L, bool per_site, const double* inverse_diagonal, double* b) {
   const std::size_t R = q.rule.size(), T = q.tri_area.size();
   const std::uint32_t* const nodes = q.triangle_nodes();
-  std::size_t p = 0;
-  for (std::size_t j = 0; j < T; ++j)
-    for (std::size_t k = 0; k < R; ++k, ++p) {
-      const double weight = q.rule[k].weight * q.tri_area[j];
-      const double* fs = f + 3 * (per_site ? q.site_of(p) : p);
-      const Lanes4 fv = {fs[0], fs[1], fs[2], 0};
-      for (int c = 0; c < 3; ++c) {
-        const std::size_t r = nodes[3 * j + c];
-        const double w = weight * q.rule[k].barycentric[c];
-        if (w == 0 || (inverse_diagonal && inverse_diagonal[r] == 0)) continue;
-        const Lanes4 wv = {w, w, w, 0};  // the fourth lane 0 * 0: 0 whatever w is
-        Lanes4 br;
-        std::memcpy(&br, b + 4 * r, sizeof br);
-        br += wv * fv;
-        std::memcpy(b + 4 * r, &br, sizeof br);
+  for (std::size_t j = 0; j < T; ++j) {
+    const double area = q.tri_area[j];
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t r = nodes[3 * j + c];
+      if (inverse_diagonal && inverse_diagonal[r] == 0) continue;
+      for (std::size_t k = 0; k < width; ++k) {
+        double sum = 0;
+        for (int m = 0; m < g.count[c]; ++m) {
+          const std::size_t p = j * R + std::size_t(g.point[c][m]);
+          sum += g.g[c][m] * f[(per_site ? q.site_of(p) : p) * width + k];
+        }
+        b[r * L + k] += area * sum;
       }
     }
+  }
+}
+
+// The same for 3 channels in 4 lanes of b per node (the fourth stays 0): the points' three values
+// loaded once per triangle, one 4-wide update per corner; per lane the operations of
+// add_triangle_loads in its order, so the bits of one channel alone (AVX2 and baseline builds,
+// target_clones; no FMA). R: the rule's size when known at compile time (1, 3), else 0.
+template <std::size_t R>
+inline __attribute__((always_inline)) void triangle_loads_4_body(const FitQuadrature& q, const TriangleLoads& g,
+                                                                 const double* f, bool per_site,
+                                                                 const double* inverse_diagonal, double* b) {
+  const std::size_t rule = R ? R : q.rule.size(), T = q.tri_area.size();
+  const std::uint32_t* const nodes = q.triangle_nodes();
+  double dense[3][R ? R : 12] = {};  // g_kc by point (0 where phi is 0): a fixed-size loop for R > 0
+  for (int c = 0; c < 3; ++c)
+    for (int m = 0; m < g.count[c]; ++m) dense[c][g.point[c][m]] = g.g[c][m];
+  for (std::size_t j = 0; j < T; ++j) {
+    Lanes4 sum[3] = {};
+    for (std::size_t k = 0; k < rule; ++k) {  // in k order: add_triangle_loads' sums
+      const std::size_t p = j * rule + k;
+      const double* fs = f + 3 * (per_site ? q.site_of(p) : p);
+      const Lanes4 fv = {fs[0], fs[1], fs[2], 0};
+      for (int c = 0; c < 3; ++c)
+        if (dense[c][k] != 0) sum[c] += dense[c][k] * fv;
+    }
+    const double area = q.tri_area[j];
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t r = nodes[3 * j + c];
+      if (inverse_diagonal && inverse_diagonal[r] == 0) continue;
+      Lanes4 br;
+      std::memcpy(&br, b + 4 * r, sizeof br);
+      br += area * sum[c];
+      std::memcpy(b + 4 * r, &br, sizeof br);
+    }
+  }
+}
+__attribute__((target_clones("avx2", "default")))
+void add_triangle_loads_4(const FitQuadrature& q, const TriangleLoads& g, const double* f, bool per_site,
+                          const double* inverse_diagonal, double* b) {
+  switch (q.rule.size()) {
+    case 1: return triangle_loads_4_body<1>(q, g, f, per_site, inverse_diagonal, b);
+    case 3: return triangle_loads_4_body<3>(q, g, f, per_site, inverse_diagonal, b);
+    default: return triangle_loads_4_body<0>(q, g, f, per_site, inverse_diagonal, b);  // a size_t, not an enum
+  }
 }
 
 struct BlockCgOptions {
@@ -546,22 +643,26 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
                               const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
-  std::vector<double> p_v(n), Ap_v(n);
+  // Not value-initialised: the first direction writes p, the first operator pass clears Ap.
+  const std::unique_ptr<double[]> p_v(new double[n]), Ap_v(new double[n]);
   double* const r = b_then_r;
-  double* const p = p_v.data();
-  double* const Ap = Ap_v.data();
+  double* const p = p_v.get();
+  double* const Ap = Ap_v.get();
   const double* const inv_d = inverse_diagonal.data();
   const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
-  const auto apply = [&](const double* in, double* out) {
-    apply_operator<W>(A, in, out, W);
+  // out = A in, and in^T A in per channel (summed over the elements; rows off the system: in is 0
+  // there, and out is set to 0)
+  const auto apply = [&](const double* in, double* out, double* inAin, bool out_zeroed) {
+    apply_operator<W>(A, in, out, inAin, out_zeroed);
     for (std::uint32_t i : off_system)
       for (std::size_t k = 0; k < W; ++k) out[i * W + k] = 0;
   };
   Channels rhs2{}, res2{}, res_mass{}, threshold{}, abs_new{}, abs_old{}, pAp{}, alpha{}, beta{};
   std::array<bool, W> active{};
   const bool bounded = o.accuracy_bound > 0 && inv_m;
+  const bool mass_is_jacobi = inv_m == inv_d;  // lambda = 0: r^T D^-1 r is both the stop's sum and CG's r^T z
   const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
-  apply(x, Ap);
+  apply(x, Ap, pAp.data(), false);  // pAp unused here
   if constexpr (W == 4) {
     lanes4_residual(Ap, bounded ? inv_m : nullptr, N, r, rhs2.data(), res2.data(), res_mass.data());
   } else {
@@ -597,15 +698,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   }
   int iterations = 0;
   while (running > 0 && iterations < o.max_iterations) {
-    apply(p, Ap);
+    apply(p, Ap, pAp.data(), iterations > 0);  // p^T A p summed over the elements; Ap cleared by the direction pass
     ++iterations;
-    pAp.fill(0.0);
-    if constexpr (W == 4) {
-      lanes4_dot(p, Ap, N, pAp.data());
-    } else {
-      for (std::size_t i = 0; i < n; i += W)
-        for (std::size_t k = 0; k < W; ++k) pAp[k] += p[i + k] * Ap[i + k];
-    }
     for (std::size_t k = 0; k < W; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
     res2.fill(0.0);
@@ -613,8 +707,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     abs_old = abs_new;
     abs_new.fill(0.0);
     if constexpr (W == 4) {  // z = D^-1 r, not stored
-      lanes4_step(p, Ap, inv_d, bounded ? inv_m : nullptr, N, alpha.data(), x, r, res2.data(), res_mass.data(),
-                  abs_new.data());
+      lanes4_step(p, Ap, inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), x, r, res2.data(),
+                  res_mass.data(), abs_new.data());
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
         for (std::size_t k = 0; k < W; ++k) {
@@ -622,10 +716,11 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
           const double ri = r[i + k] - alpha[k] * Ap[i + k];
           r[i + k] = ri;
           res2[k] += ri * ri;
-          if (bounded) res_mass[k] += ri * ri * inv_m[node];
+          if (bounded && !mass_is_jacobi) res_mass[k] += ri * ri * inv_m[node];
           abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
         }
     }
+    if (bounded && mass_is_jacobi) res_mass = abs_new;  // sum r_i^2 inv_m_i with inv_m = inv_d: the same sum
     for (std::size_t k = 0; k < W; ++k)
       if (active[k] && (res2[k] < threshold[k] || accurate(k) || !(pAp[k] > 0))) {
         active[k] = false;
@@ -635,10 +730,13 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
     if constexpr (W == 4) {
-      lanes4_direction(r, inv_d, N, beta.data(), p);
+      lanes4_direction(r, inv_d, N, beta.data(), p, Ap);
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
-        for (std::size_t k = 0; k < W; ++k) p[i + k] = r[i + k] * inv_d[node] + beta[k] * p[i + k];
+        for (std::size_t k = 0; k < W; ++k) {
+          p[i + k] = r[i + k] * inv_d[node] + beta[k] * p[i + k];
+          Ap[i + k] = 0;  // for the next operator pass
+        }
     }
   }
   fit.iterations = std::max(fit.iterations, iterations);
@@ -921,19 +1019,21 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     std::vector<double>& x = L != width ? padded : fit.values;
     // b for every channel in one pass over the points.
     std::vector<double> b(N * L, 0.0);
+    const TriangleLoads loads = triangle_loads(q.rule);
+    const double* const in_system = off_system.empty() ? nullptr : inverse_diagonal.data();
     if (L == 4)
-      add_triangle_loads_4(q, f.data(), per_site, off_system.empty() ? nullptr : inverse_diagonal.data(), b.data());
-    q.for_each_point([&](std::size_t s, const std::uint32_t* node, const std::uint32_t*, const double* phi, int corners,
-                         double weight) {
-      if (L == 4 && corners == 3) return;  // added above
+      add_triangle_loads_4(q, loads, f.data(), per_site, in_system, b.data());
+    else
+      add_triangle_loads(q, loads, f.data(), width, L, per_site, in_system, b.data());
+    for (std::size_t m = 0, s = q.triangle_points(); m < q.quad_weight.size(); ++m, ++s) {  // the quads' points
       const double* fs = &f[(per_site ? q.site_of(s) : s) * width];
-      for (int j = 0; j < corners; ++j) {
-        const std::size_t r = node[j];
-        const double w = weight * phi[j];
+      for (int j = 0; j < 4; ++j) {
+        const std::size_t r = q.quad_node[4 * m + j];
+        const double w = q.quad_weight[m] * q.quad_phi[4 * m + j];
         if (w == 0 || inverse_diagonal[r] == 0) continue;
         for (std::size_t k = 0; k < width; ++k) b[r * L + k] += w * fs[k];
       }
-    });
+    }
     // The first guess: the lumped-mass projection c0_i = b_i / sum_j M_ij (the L2 projection with M
     // replaced by its row-sum diagonal; exact for a constant f). It needs only b, not the point
     // values, so the result does not depend on whether the caller computed them. 0 off the system.

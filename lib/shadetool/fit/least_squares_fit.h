@@ -60,6 +60,12 @@
 // Clamping: after the solve, every value outside [lower, upper] is set to the bound and counted
 // (an unconstrained L2 fit overshoots near a sharp edge of f: a highlight, a shadow boundary).
 //
+// Sums: b adds, per triangle corner, area sum_k (w_k phi_k) f_k over the rule's points (one update
+// per corner); CG's p^T A p is summed over the elements as p^T A p = sum_t area_t/12 sum_i p_i
+// (p_i + p_0 + p_1 + p_2) (+ quads' p^T m p, + edges' (d . p)^2) in the operator's pass, in four
+// accumulators (no pass over the nodes). Both are the same sums as the per-point and per-node
+// ones in another order: the colours move by rounding only, far inside the stop's accuracy
+// (bench/fit/results.md: over data/ and the corpus against the per-point sums).
 // Precision: double throughout; the assembly is sequential in element order and the solve single
 // threaded, so the result is the same bits for any thread count.
 #pragma once
@@ -125,6 +131,9 @@ struct FitQuadrature {
   std::vector<std::uint32_t> quad_face;     // 1 per quad point
   std::vector<std::uint32_t> site;          // 1 per point, or empty (site p is point p)
   std::vector<std::uint32_t> site_point;    // 1 per site: its first point, or empty (identity)
+  // 2 per site when every point is an edge's midpoint (the 3-point rule on triangles only): the
+  // edge's two vertices, lower first (a site's data is then 0.5 d_lo + 0.5 d_hi); else empty
+  std::vector<std::uint32_t> site_edge;
 
   std::size_t triangle_points() const { return tri_area.size() * rule.size(); }
   const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? tri_vertex.data() : tri_node.data(); }
