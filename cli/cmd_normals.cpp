@@ -212,9 +212,10 @@ RegisterCommand reg("normals", HelpSection::Edit, [](CLI::App& app) -> std::func
             r.stats["normals"] = "corner";
             r.stats["smoothing_groups"] = rep.smoothing_groups;
             r.stats["flat_faces"] = rep.flat_faces;
-            r.notes.push_back(fmt::format("corner normals split by the file's smoothing groups ({} groups, {} flat faces: s off); "
+            r.notes.push_back(fmt::format("corner normals split by the file's smoothing groups ({} group{}, {} flat face{}: s off); "
                                           "--smoothing-groups ignore smooths across them",
-                                          rep.smoothing_groups, rep.flat_faces));
+                                          rep.smoothing_groups, rep.smoothing_groups == 1 ? "" : "s", rep.flat_faces,
+                                          rep.flat_faces == 1 ? "" : "s"));
           }
           if (request.kind != shadetool::NormalKind::Face) r.stats["weight"] = opt.weight;
           if (request.kind == shadetool::NormalKind::Corner) {
