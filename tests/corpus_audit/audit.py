@@ -41,8 +41,9 @@ MESH_FORMATS = (".obj", ".ply", ".off", ".stl", ".glb", ".gltf")
 
 
 # ---------------------------------------------------------------- small vector algebra
-# sub, cross, dot and Newell's area vector: tests/corpus/check.py's (one copy for both harnesses)
-from check import sub, cross, dot, area_vector  # noqa: E402,F401
+# sub, cross, dot, Newell's area vector and the shading normal at a corner: tests/corpus/check.py's
+# (one copy for both harnesses)
+from check import sub, cross, dot, area_vector, corner_normal  # noqa: E402,F401
 
 
 def norm(a):
@@ -166,17 +167,6 @@ def written_normals(parts, path):
     if path.lower().endswith(".obj"):
         rows += obj_vn_lines(path)
     return rows
-
-
-def corner_normal(part, f, k):
-    if part["corner_normals"] is not None:
-        return part["corner_normals"][f][k]
-    if part["vertex_normals"] is not None:
-        i = part["faces"][f][k]
-        return part["vertex_normals"][i] if 0 <= i < len(part["vertex_normals"]) else None
-    if part["face_normals"] is not None:
-        return part["face_normals"][f]
-    return None
 
 
 def assimp_faces(path):
