@@ -92,15 +92,7 @@ inline void for_each_angle_face(const Mesh& mesh, const void* rows, std::size_t 
   const double inv_pi = 1.0 / kPi;
   for (std::size_t b = 0; b < F; b += kTriangleBlock) {
     const std::size_t count = std::min(kTriangleBlock, F - b);
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t c = 3 * (b + i);
-      if (b + i + kPrefetchFaces < F) prefetch_face(P, cv + c + 3 * kPrefetchFaces, RowHint{});
-      for (int k = 0; k < 3; ++k) {
-        const double* p = P + 3 * std::size_t(cv[c + k]);
-        xyz[3 * k][i] = p[0]; xyz[3 * k + 1][i] = p[1]; xyz[3 * k + 2][i] = p[2];
-      }
-    }
-    triangle_block_angle(count, &xyz[0][0], &w[0][0]);
+    gather_block_contributions<Weighting::Angle>(P, cv, b, count, F, xyz, w);
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t c = 3 * (b + i);
       if (b + i + kPrefetchFaces < F)
