@@ -1,10 +1,12 @@
 // shading_normals.h: which of a mesh's stored normals shade its corners when it holds more than
 // one kind (an STL's facet normals beside the vertex normals `shadetool normals` computed, a PLY
 // with vertex nx ny nz and face nx ny nz): its corner normals, else its vertex normals, else its
-// face normals. The one rule of the lighting (lighting/lit_normals.h: vertex normals before any
-// other), the tangent frames (normals/tangents.h) and every writer that holds one normal per corner
-// (OBJ vn, glTF NORMAL), so that a file shades in a viewer as our own render shades it. PLY holds
-// vertex and face normals side by side and writes both; OFF holds vertex normals only.
+// face normals. The rule of the tangent frames (normals/tangents.h) and of every writer that holds
+// one normal per corner (OBJ vn, glTF NORMAL), so that a file shades in a viewer as our own render
+// shades it. The lighting (lighting/lit_normals.h) needs one normal per vertex and agrees with it
+// for the cases above (vertex normals before face normals); it differs only for a mesh holding both
+// vertex and corner normals, where it takes the vertex normals (not yet one rule: see its header).
+// PLY holds vertex and face normals side by side and writes both; OFF holds vertex normals only.
 //
 // Input:  mesh  any normals it stores (vertex #V by 3, corner pool + #C indices, face #F by 3)
 // Output: the kind that shades (None: no normals stored), and the note a one-normal-per-corner
