@@ -456,13 +456,14 @@ int main(int argc, char** argv) {
                                                               : tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   if (mode == "picture" && argc > 3) return picture(src, argv[3]);
   if (mode == "variants") return variants(src);
-  if (mode == "repeat" && argc > 4) {  // bench_fit repeat SRC SAMPLES N: N bakes of the 10k torus, studio (for perf)
-    const Mesh mesh = testing::torus(100, 50, 1.0, 0.4).mesh;
+  if (mode == "repeat" && argc > 4) {  // bench_fit repeat SRC SAMPLES N [1m]: N bakes of the 10k (1M) torus, studio (for perf)
+    const bool million = argc > 5 && std::string(argv[5]) == "1m";
+    const Mesh mesh = million ? testing::torus(1000, 500, 1.0, 0.4).mesh : testing::torus(100, 50, 1.0, 0.4).mesh;
     const Scene scene = read_scene(src + "/data/scenes/studio.json");
     for (int k = 0; k < std::atoi(argv[4]); ++k) bake(mesh, scene, std::atoi(argv[3]));
     std::vector<double> t_el, t_q;
     const std::vector<double> world = world_positions(mesh, scene);
-    for (int k = 0; k < 200; ++k) {
+    for (int k = 0; k < (million ? 5 : 200); ++k) {
       double t0 = cpu_ms();
       const FitElements e = fit_elements(mesh);
       t_el.push_back(cpu_ms() - t0);
