@@ -232,37 +232,38 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     ++midpoints;
   });
   if (midpoints == 0) return;  // every point its own site
-  const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge (after the pass)
+  const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge kept
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
-  std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1), entry_hi(offset[V]), entry_site(offset[V]);
+  // A bucket's entry is the site of one edge; the edge's vertices are kept per site in site_edge
+  // (lower, higher), written as the site opens: the entries need no second array for the higher
+  // vertex (at 1M triangles 12 MB of fresh memory less). site_edge is kept when every point is an
+  // edge's midpoint, and then it holds every site; else cleared at the end.
+  std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1), entry_site(offset[V]);
   q.site.resize(S);
   q.site_point.reserve(S);  // capacity only: the pages past the last site are never touched
+  std::vector<std::uint32_t>& site_edge = q.site_edge;
+  site_edge.reserve(2 * S);  // capacity only, as site_point
   std::size_t sites = 0;
   for_each_key([&](std::size_t p, std::uint64_t key) {
     if (key != kNone) {
       const std::size_t lo = key >> 32;
       const std::uint32_t hi = std::uint32_t(key);
       std::uint32_t k = offset[lo];
-      while (k < end[lo] && entry_hi[k] != hi) ++k;
+      while (k < end[lo] && site_edge[2 * std::size_t(entry_site[k]) + 1] != hi) ++k;
       if (k < end[lo]) {  // an earlier point of this edge: its site
         q.site[p] = entry_site[k];
         return;
       }
-      entry_hi[k] = hi;  // the first point of this edge
-      entry_site[k] = std::uint32_t(sites);
+      entry_site[k] = std::uint32_t(sites);  // the first point of this edge
       ++end[lo];
     }
+    // a new site: an edge's (its vertices recorded), or a point's own (no edge: a placeholder pair)
+    site_edge.push_back(key != kNone ? std::uint32_t(key >> 32) : 0);
+    site_edge.push_back(key != kNone ? std::uint32_t(key) : 0);
     q.site[p] = std::uint32_t(sites++);
     q.site_point.push_back(std::uint32_t(p));
   });
-  if (edges_only) {  // each entry is one edge's site: (lower vertex = its bucket, entry_hi)
-    q.site_edge.resize(2 * sites);
-    for (std::size_t v = 0; v < V; ++v)
-      for (std::uint32_t k = offset[v]; k < end[v]; ++k) {
-        q.site_edge[2 * std::size_t(entry_site[k])] = std::uint32_t(v);
-        q.site_edge[2 * std::size_t(entry_site[k]) + 1] = entry_hi[k];
-      }
-  }
+  if (!edges_only) site_edge = {};  // some site is no edge's midpoint: no site_edge (header)
 }
 
 // M + lambda R as element data (least_squares_fit.h), applied to a block of channels without
@@ -277,7 +278,9 @@ struct FitOperator {
   std::vector<std::uint32_t> edge_node;  // 4 per regularised edge: a, b, wing 1, wing 2
   std::vector<double> edge_d;            // 4 per edge: d sqrt(lambda (A1 + A2)^2), R_e = (d . c)^2
   std::vector<double> diagonal;          // #nodes: of M + lambda R
-  std::vector<double> lumped;            // #nodes: row sums of M (= of M + lambda R: R 1 = 0), the lumped mass
+  std::vector<double> lumped;            // #nodes: row sums of M (= of M + lambda R: R 1 = 0), the lumped
+                                         // mass; empty without quads and R: then 2 diagonal_i (lumped_mass)
+  double lumped_mass(std::size_t i) const { return lumped.empty() ? 2 * diagonal[i] : lumped[i]; }
 };
 
 // 1/12 rounded: M_t's scale area/12 as one multiplication per triangle in each operator pass (a
@@ -407,8 +410,12 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   }
   // The triangles' row sums of area/12 [[2,1,1],...] are area/3 = 2 (area/6) per corner: twice
   // their diagonal (doubling is exact, so twice the sum is the sum of the doubles).
-  A.lumped.resize(N);
-  for (std::size_t i = 0; i < N; ++i) A.lumped[i] = 2 * A.diagonal[i];
+  // Stored only when there are quads or R (R adds to the diagonal below, not to the row sums); else
+  // lumped_mass gives 2 diagonal_i: one array less.
+  if (!e.quad_face.empty() || lambda > 0) {
+    A.lumped.resize(N);
+    for (std::size_t i = 0; i < N; ++i) A.lumped[i] = 2 * A.diagonal[i];
+  }
   // M, quads: 3x3 Gauss-Legendre on the bilinear map.
   const std::vector<GaussPoint> gauss = gauss_legendre_unit(3);
   for (std::size_t k = 0; k < e.quad_face.size(); ++k) {
@@ -1052,7 +1059,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     // replaced by its row-sum diagonal; exact for a constant f). It needs only b, not the point
     // values, so the result does not depend on whether the caller computed them. 0 off the system.
     for (std::size_t i = 0; i < N; ++i) {  // every channel
-      const double m = A.lumped[i];
+      const double m = A.lumped_mass(i);
       const bool mass = inverse_diagonal[i] != 0 && m > 0;  // off the system (no mass): 0 during CG
       for (std::size_t k = 0; k < L; ++k) x[i * L + k] = mass ? b[i * L + k] / m : 0.0;  // divisor checked
     }
