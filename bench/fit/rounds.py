@@ -1,12 +1,21 @@
 #!/usr/bin/env python3
-"""rounds.py BASE_BENCH_FIT NEW_BENCH_FIT SRC [ROUNDS] [REPEATS] [LABEL=BENCH_FIT ...]:
-`bench_fit table SRC REPEATS 20000` (the 10k torus, studio and window) of two builds (and any
+"""rounds.py BASE_BENCH_FIT NEW_BENCH_FIT SRC [ROUNDS] [REPEATS] [LABEL=BENCH_FIT ...] [--1m [studio|window]]:
+`bench_fit table SRC REPEATS 20000` (the 10k torus, studio and window; with --1m `bench_fit table
+SRC REPEATS 2000000 1000000 [SCENE]`, the 1M torus) of two builds (and any
 further LABEL=path builds, run in the same rotation, before "branch") in alternating processes, ROUNDS rounds (default
 7, REPEATS 7). Per round each build's rows give the CPU ratio to its own point bake (medians of
 REPEATS round-robin repetitions); printed: per (scene, method, build) the median and range of the
 rounds' ratios, the median CPU ms, and the error column (deterministic), with the load average."""
 import subprocess, sys, statistics
 
+args = sys.argv[:]
+size = ["20000"]
+if "--1m" in args:
+    i = args.index("--1m")
+    scene = args[i + 1:i + 2] if i + 1 < len(args) and args[i + 1] in ("studio", "window") else []
+    size = ["2000000", "1000000"] + scene
+    del args[i:i + 1 + len(scene)]
+sys.argv = args
 base, new, src = sys.argv[1], sys.argv[2], sys.argv[3]
 rounds = int(sys.argv[4]) if len(sys.argv) > 4 else 7
 reps = sys.argv[5] if len(sys.argv) > 5 else "7"
@@ -16,7 +25,7 @@ print(f"load average at the start: {load()}")
 rows = {}  # (scene, method, build) -> list of (ratio, cpu, error, vs)
 for r in range(rounds):
     for build, binary in builds:
-        out = subprocess.run([binary, "table", src, reps, "20000"], capture_output=True, text=True, check=True).stdout
+        out = subprocess.run([binary, "table", src, reps] + size, capture_output=True, text=True, check=True).stdout
         for line in out.splitlines():
             c = [x.strip() for x in line.strip().strip("|").split("|")]
             if len(c) == 8 and c[0].startswith("torus"):

@@ -38,6 +38,16 @@ inline __attribute__((always_inline)) Lanes4 load_rgb(const double* p) {
   const Lanes4 v = {p[0], p[1], p[2], 0};  // element by element: a copy through memory stalls the load
   return v;
 }
+// In the passes that stream over the nodes in order (CG's vector passes): one 4-wide load, the
+// fourth lane the next node's first channel (or the array's one extra element after the last
+// node: the CG arrays hold 3 N + 1), read but never stored (stores are store_rgb's three), and no
+// result reads that lane (its step lengths are 0). Not in the passes over the elements: there a
+// node's 4-wide load after its 3-wide store would wait for the store (no store forwarding).
+inline __attribute__((always_inline)) Lanes4 load_rgb_streaming(const double* p) {
+  Lanes4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
 inline __attribute__((always_inline)) void store_rgb(double* p, const Lanes4& v) {
   p[0] = v[0];
   p[1] = v[1];
@@ -496,10 +506,10 @@ void rgb_step(const double* p, const double* Ap, const double* inv_d, const doub
   Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, pi, Api, xi, ri;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
-    pi = load_rgb(p + 3 * i);
-    Api = load_rgb(Ap + 3 * i);
-    xi = load_rgb(x + 3 * i);
-    ri = load_rgb(r + 3 * i);
+    pi = load_rgb_streaming(p + 3 * i);
+    Api = load_rgb_streaming(Ap + 3 * i);
+    xi = load_rgb_streaming(x + 3 * i);
+    ri = load_rgb_streaming(r + 3 * i);
     xi += alpha * pi;
     ri = ri - alpha * Api;
     store_rgb(x + 3 * i, xi);
@@ -519,8 +529,8 @@ void rgb_residual(const double* Ap, const double* inv_m, std::size_t N, double* 
                      double res2_out[4], double res_mass_out[4]) {
   Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, bi, Api;
   for (std::size_t i = 0; i < N; ++i) {
-    bi = load_rgb(b_then_r + 3 * i);
-    Api = load_rgb(Ap + 3 * i);
+    bi = load_rgb_streaming(b_then_r + 3 * i);
+    Api = load_rgb_streaming(Ap + 3 * i);
     const Lanes4 ri = bi - Api;
     store_rgb(b_then_r + 3 * i, ri);
     rhs2 += bi * bi;
@@ -536,7 +546,7 @@ __attribute__((target_clones("avx2", "default")))
 void rgb_first_direction(const double* r, const double* inv_d, std::size_t N, double* p, double abs_out[4]) {
   Lanes4 abs = {0, 0, 0, 0}, ri;
   for (std::size_t i = 0; i < N; ++i) {
-    ri = load_rgb(r + 3 * i);
+    ri = load_rgb_streaming(r + 3 * i);
     const Lanes4 pi = ri * inv_d[i];
     store_rgb(p + 3 * i, pi);
     abs += ri * pi;
@@ -551,8 +561,8 @@ void rgb_direction(const double* r, const double* inv_d, std::size_t N, const do
   const Lanes4 zero = {0, 0, 0, 0};
   std::memcpy(&beta, beta_in, sizeof beta);
   for (std::size_t i = 0; i < N; ++i) {
-    ri = load_rgb(r + 3 * i);
-    pi = load_rgb(p + 3 * i);
+    ri = load_rgb_streaming(r + 3 * i);
+    pi = load_rgb_streaming(p + 3 * i);
     pi = ri * inv_d[i] + beta * pi;
     store_rgb(p + 3 * i, pi);
     store_rgb(Ap + 3 * i, zero);
@@ -666,7 +676,9 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   using Channels = std::array<double, W == 3 ? 4 : W>;  // W = 3: a fourth entry for the pad lane (unread)
   const std::size_t N = inverse_diagonal.size(), n = N * W;
   // Not value-initialised: the first direction writes p, the first operator pass clears Ap.
-  const std::unique_ptr<double[]> p_v(new double[n]), Ap_v(new double[n]);
+  // One element more (0): the rgb_ passes' 4-wide loads read one past a node's three (load_rgb_streaming).
+  const std::unique_ptr<double[]> p_v(new double[n + 1]), Ap_v(new double[n + 1]);
+  p_v[n] = Ap_v[n] = 0;
   double* const r = b_then_r;
   double* const p = p_v.get();
   double* const Ap = Ap_v.get();
@@ -1032,14 +1044,14 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       ++fit.fallback_nodes;
     }
   }
-  fit.values.assign(N * width, 0.0);
+  fit.values.assign(N * width + 1, 0.0);  // one more: the CG passes' 4-wide loads (load_rgb_streaming); dropped below
   if (off_system.size() < N) {
     // b and the solution with `width` values per node (3 channels: in the rgb_ passes, a 4-wide
     // register per node); the solution is solved in place in fit.values.
     const std::size_t L = width;
     std::vector<double>& x = fit.values;
     // b for every channel in one pass over the points.
-    std::vector<double> b(N * L, 0.0);
+    std::vector<double> b(N * L + 1, 0.0);  // one more, as fit.values
     const TriangleLoads loads = triangle_loads(q.rule);
     const double* const in_system = off_system.empty() ? nullptr : inverse_diagonal.data();
     if (L == 3)
@@ -1075,6 +1087,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
     block_conjugate_gradient(A, inverse_diagonal, off_system, b, L, cg, x, fit);
   }
+  fit.values.resize(N * width);  // the extra element dropped (no reallocation)
   if (!off_system.empty()) {  // the nodes outside the system keep their point values
     const std::vector<double> at = point_values_at(off_system);
     if (at.size() != off_system.size() * width)
