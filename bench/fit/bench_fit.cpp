@@ -9,8 +9,9 @@
 //          written) to the per-point colour render --shading phong computes (clamped likewise),
 //          measured with the 12-point degree-6 rule: finer than any fit's own rule, so no fit is
 //          scored by its own objective
-// Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window]
-//                  (default 7, 200000, 0, both scenes)
+// Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window|both] [RULES]
+//                  (default 7, 200000, 0, both scenes, RULES 1,3,6: least squares at those points
+//                  per triangle, beside the point bake)
 //        bench_fit breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window]
 //                  (the least-squares time per stage)
 //        bench_fit errors SRC_DIR [MAX_TRIANGLES]   (error at several λ, with and without 8-bit bounds)
@@ -72,11 +73,11 @@ std::vector<double> bake(const Mesh& mesh, const Scene& scene, int samples) {
 // every method once, so that the load of the machine falls on all of them alike. Wall and process
 // CPU time, medians.
 int table(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles,
-          const std::string& only_scene) {
+          const std::string& only_scene, const std::vector<int>& methods) {
   std::printf("| mesh | scene | method | wall ms | CPU ms | x point (CPU) | relative L2 error | vs point |\n"
               "|---|---|---|---|---|---|---|---|\n");
   const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
-  const int methods[] = {0, 1, 3, 6};
+  const int M = int(methods.size());  // methods[0] is 0: the point bake, the ratios' denominator
   for (const auto& s : sizes) {
     const std::size_t triangles = std::size_t(2 * s[0] * s[1]);
     if (triangles > max_triangles || triangles < min_triangles) continue;
@@ -84,23 +85,23 @@ int table(const std::string& src, int repeats, std::size_t max_triangles, std::s
     for (const char* name : {"studio", "window"}) {
       if (!only_scene.empty() && only_scene != name) continue;
       const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
-      double error[4] = {};
+      std::vector<double> error(M);
       {
         const BakeResult normals = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
         const std::vector<double> world = world_positions(mesh, scene);
         const FitQuadrature ref = fit_quadrature(fit_elements(mesh), world, 12);
         const std::vector<double> f = clamped(lighting_at_quadrature(mesh, scene, ref, world, normals.vertex_normals, {}, {}));
-        for (int m = 0; m < 4; ++m) error[m] = relative_l2_error(ref, f, bake(mesh, scene, methods[m]), 3);
+        for (int m = 0; m < M; ++m) error[m] = relative_l2_error(ref, f, bake(mesh, scene, methods[m]), 3);
       }  // the reference's memory (12 points per triangle) freed before the timing
-      std::vector<double> wall[4], cpu[4];
+      std::vector<std::vector<double>> wall(M), cpu(M);
       for (int k = 0; k < repeats; ++k)
-        for (int m = 0; m < 4; ++m) {
+        for (int m = 0; m < M; ++m) {
           const double w0 = now_ms(), c0 = cpu_ms();
           bake(mesh, scene, methods[m]);
           cpu[m].push_back(cpu_ms() - c0);
           wall[m].push_back(now_ms() - w0);
         }
-      for (int m = 0; m < 4; ++m) {
+      for (int m = 0; m < M; ++m) {
         std::printf("| torus %zuk tri | %s | %s | %.1f | %.1f | %.2f | %.3g | %+.0f%% |\n", mesh.num_faces() / 1000, name,
                     m == 0 ? "point" : ("least squares, " + std::to_string(methods[m]) + " pt").c_str(), median(wall[m]),
                     median(cpu[m]), median(cpu[m]) / median(cpu[0]), error[m], 100 * (error[m] / error[0] - 1));
@@ -502,6 +503,21 @@ int main(int argc, char** argv) {
   if (mode == "breakdown")
     return breakdown(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 20000,
                      argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 ? argv[6] : "");
+  std::vector<int> methods = {0, 1, 3, 6};  // point, least squares at 1, 3, 6 points
+  if (argc > 7) {  // a comma-separated list of rules: the point bake and least squares at those
+    methods = {0};
+    for (const char* c = argv[7]; *c;) {
+      char* after = nullptr;
+      const long n = std::strtol(c, &after, 10);
+      if (after == c || !triangle_quadrature_supported(int(n))) {
+        std::fprintf(stderr, "bench_fit table: '%s' is not a list of rules (1, 3, 6, 12)\n", argv[7]);
+        return 2;
+      }
+      methods.push_back(int(n));
+      c = *after == ',' ? after + 1 : after;
+    }
+  }
   return table(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000,
-               argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 ? argv[6] : "");
+               argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 && std::string(argv[6]) != "both" ? argv[6] : "",
+               methods);
 }

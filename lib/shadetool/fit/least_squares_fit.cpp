@@ -26,34 +26,6 @@ double triangle_area(const std::vector<double>& positions, const std::uint32_t* 
 using Lanes4 = double __attribute__((vector_size(32)));
 using Mask4 = std::int64_t __attribute__((vector_size(32)));
 
-// Three channels of a node (3 doubles in memory, the layout of the fitted colours) in a 4-wide
-// register, the fourth lane 0 (a pad that no result reads): the vector passes do one 4-wide
-// operation per node, and the arrays hold no pad (a quarter less memory to fault in and to stream
-// through each CG pass: at 1M triangles the passes are bound by memory).
-// (Always inlined into the passes: no call passes a Lanes4, so GCC's note that a vector return's
-// ABI depends on AVX does not apply; the note is off for the rest of the file: GCC reports
-// it at the end of the file, for the inlined templates.)
-#pragma GCC diagnostic ignored "-Wpsabi"
-inline __attribute__((always_inline)) Lanes4 load_rgb(const double* p) {
-  const Lanes4 v = {p[0], p[1], p[2], 0};  // element by element: a copy through memory stalls the load
-  return v;
-}
-// In the passes that stream over the nodes in order (CG's vector passes): one 4-wide load, the
-// fourth lane the next node's first channel (or the array's one extra element after the last
-// node: the CG arrays hold 3 N + 1), read but never stored (stores are store_rgb's three), and no
-// result reads that lane (its step lengths are 0). Not in the passes over the elements: there a
-// node's 4-wide load after its 3-wide store would wait for the store (no store forwarding).
-inline __attribute__((always_inline)) Lanes4 load_rgb_streaming(const double* p) {
-  Lanes4 v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-inline __attribute__((always_inline)) void store_rgb(double* p, const Lanes4& v) {
-  p[0] = v[0];
-  p[1] = v[1];
-  p[2] = v[2];
-}
-
 // area[t] = triangle_area of triangles [0, T) (3 vertex ids each), four at a time in 4-wide lanes:
 // the edges e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2 and their squared lengths; N = e_k x (-e_k+2)
 // about the apex k (geometry/face_area_vector.h: k = 2 when e0 is longest, 0 for e1, else 1;
@@ -211,69 +183,71 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     rule_midpoints = true;
   }
   if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
-  // The quads' midpoint keys (lo, hi), all ones: none; the triangles' are computed from tri_vertex
-  // in each pass (at 1M triangles a stored key per point was 24 MB of fresh memory to fault in).
   constexpr std::uint64_t kNone = ~std::uint64_t(0);
-  std::vector<std::uint64_t> quad_key(q.quad_weight.size(), kNone);
-  for (std::size_t m = 0; m < q.quad_weight.size(); ++m) {
-    std::uint32_t lo = 0, hi = 0;
-    if (midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi))
-      quad_key[m] = (std::uint64_t(lo) << 32) | hi;
-  }
-  // fn(p, key) for every point p in order: key (lo, hi), lower vertex first, of a midpoint; kNone else
-  const auto for_each_key = [&](auto&& fn) {
-    std::size_t p = 0;
-    for (std::size_t j = 0; j < T; ++j)
-      for (std::size_t k = 0; k < R; ++k, ++p) {
-        std::uint64_t key = kNone;
-        if (rule_edge[k][0] >= 0) {
-          const std::uint32_t a = q.tri_vertex[3 * j + rule_edge[k][0]], b = q.tri_vertex[3 * j + rule_edge[k][1]];
-          if (a != b) key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);  // midpoint_edge's rule
-        }
-        fn(p, key);
-      }
-    for (std::size_t m = 0; m < q.quad_weight.size(); ++m, ++p) fn(p, quad_key[m]);
-  };
+  // (lo, hi) of a midpoint; all ones: none. Written once for every point below (no fill first).
+  const std::unique_ptr<std::uint64_t[]> key(new std::uint64_t[S]);
   std::vector<std::uint32_t> offset(V + 1, 0);  // counts per lower vertex, then offsets
   std::size_t midpoints = 0;
-  for_each_key([&](std::size_t, std::uint64_t key) {
-    if (key == kNone) return;
-    ++offset[(key >> 32) + 1];
+  const auto set_key = [&](std::size_t p, bool midpoint, std::uint32_t a, std::uint32_t b) {
+    if (!midpoint) {
+      key[p] = kNone;
+      return;
+    }
+    const std::uint32_t lo = std::min(a, b);
+    key[p] = (std::uint64_t(lo) << 32) | std::max(a, b);
+    ++offset[lo + 1];
     ++midpoints;
-  });
+  };
+  for (std::size_t j = 0, p = 0; j < T; ++j)
+    for (std::size_t k = 0; k < R; ++k, ++p) {
+      if (rule_edge[k][0] < 0) {
+        set_key(p, false, 0, 0);
+        continue;
+      }
+      const std::uint32_t a = q.tri_vertex[3 * j + rule_edge[k][0]], b = q.tri_vertex[3 * j + rule_edge[k][1]];
+      set_key(p, a != b, a, b);  // two distinct vertices: an edge's midpoint (midpoint_edge's rule)
+    }
+  for (std::size_t m = 0, p = q.triangle_points(); m < q.quad_weight.size(); ++m, ++p) {
+    std::uint32_t lo = 0, hi = 0;
+    const bool midpoint = midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi);
+    set_key(p, midpoint, lo, hi);
+  }
   if (midpoints == 0) return;  // every point its own site
-  const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge kept
+  const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge (after the pass)
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
-  // A bucket's entry is the site of one edge; the edge's vertices are kept per site in site_edge
-  // (lower, higher), written as the site opens: the entries need no second array for the higher
-  // vertex (at 1M triangles 12 MB of fresh memory less). site_edge is kept when every point is an
-  // edge's midpoint, and then it holds every site; else cleared at the end.
-  std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1), entry_site(offset[V]);
+  std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1);
+  // not zero-filled: an entry is written before it is read (below end[lo]); at 1M triangles the
+  // fill was two passes over 12 MB each
+  const std::unique_ptr<std::uint32_t[]> entry_hi(new std::uint32_t[offset[V]]), entry_site(new std::uint32_t[offset[V]]);
   q.site.resize(S);
-  q.site_point.reserve(S);  // capacity only: the pages past the last site are never touched
-  std::vector<std::uint32_t>& site_edge = q.site_edge;
-  site_edge.reserve(2 * S);  // capacity only, as site_point
+  q.site_point.resize(S);
   std::size_t sites = 0;
-  for_each_key([&](std::size_t p, std::uint64_t key) {
-    if (key != kNone) {
-      const std::size_t lo = key >> 32;
-      const std::uint32_t hi = std::uint32_t(key);
+  for (std::size_t p = 0; p < S; ++p) {
+    if (key[p] != kNone) {
+      const std::size_t lo = key[p] >> 32;
+      const std::uint32_t hi = std::uint32_t(key[p]);
       std::uint32_t k = offset[lo];
-      while (k < end[lo] && site_edge[2 * std::size_t(entry_site[k]) + 1] != hi) ++k;
+      while (k < end[lo] && entry_hi[k] != hi) ++k;
       if (k < end[lo]) {  // an earlier point of this edge: its site
         q.site[p] = entry_site[k];
-        return;
+        continue;
       }
-      entry_site[k] = std::uint32_t(sites);  // the first point of this edge
+      entry_hi[k] = hi;  // the first point of this edge
+      entry_site[k] = std::uint32_t(sites);
       ++end[lo];
     }
-    // a new site: an edge's (its vertices recorded), or a point's own (no edge: a placeholder pair)
-    site_edge.push_back(key != kNone ? std::uint32_t(key >> 32) : 0);
-    site_edge.push_back(key != kNone ? std::uint32_t(key) : 0);
-    q.site[p] = std::uint32_t(sites++);
-    q.site_point.push_back(std::uint32_t(p));
-  });
-  if (!edges_only) site_edge = {};  // some site is no edge's midpoint: no site_edge (header)
+    q.site[p] = std::uint32_t(sites);
+    q.site_point[sites++] = std::uint32_t(p);
+  }
+  q.site_point.resize(sites);
+  if (edges_only) {  // each entry is one edge's site: (lower vertex = its bucket, entry_hi)
+    q.site_edge.resize(2 * sites);
+    for (std::size_t v = 0; v < V; ++v)
+      for (std::uint32_t k = offset[v]; k < end[v]; ++k) {
+        q.site_edge[2 * std::size_t(entry_site[k])] = std::uint32_t(v);
+        q.site_edge[2 * std::size_t(entry_site[k]) + 1] = entry_hi[k];
+      }
+  }
 }
 
 // M + lambda R as element data (least_squares_fit.h), applied to a block of channels without
@@ -298,7 +272,7 @@ struct FitOperator {
 // ulp, M's entries by a relative 2^-52: far inside the solve's tolerance).
 constexpr double kTwelfth = 1.0 / 12;
 
-// y = A x for x, y #nodes by W (W = 1 or 3 channels), and x^T A x per lane summed over the elements
+// y = A x for x, y #nodes by W (W = 1 or 4 lanes), and x^T A x per lane summed over the elements
 // (CG's p^T A p without a pass over the nodes). Sequential in element order: the same bits for any
 // thread count.
 // y += M_t x for triangle t: area/12 [[2,1,1],[1,2,1],[1,1,2]] = area/12 (I + 1 1^T), and
@@ -319,28 +293,36 @@ inline void add_triangle_product(const FitOperator& A, std::size_t t, const doub
   }
 }
 
-// The same for every triangle, 3 channels per node in a 4-wide register (load_rgb: a zero pad; least_squares_fit's
+// The same for every triangle, 4 lanes per node (3 channels and a zero pad, least_squares_fit's
 // layout for 3 channels): one 4-wide operation per node where add_triangle_product<1> does one
 // scalar one per lane. Built for AVX2 and for the baseline (target_clones; no FMA): per lane the
 // operations of add_triangle_product, in the same order, so the same bits on either and the bits
 // of one channel solved alone. The triangles are taken from four quarters of the list in turn
-// (apply_operator); xAx_out: 4 lanes (the fourth the pad's 0), the four quarters' accumulators summed (0 + 1) + (2 + 3).
+// (apply_operator); xAx_out: 4 lanes, the four quarters' accumulators summed (0 + 1) + (2 + 3).
 __attribute__((target_clones("avx2", "default")))
-void add_triangle_products_rgb(const FitOperator& A, const double* x, double* y, double* xAx_out) {
+void add_triangle_products_4(const FitOperator& A, const double* x, double* y, double* xAx_out) {
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
   Lanes4 acc0 = {0, 0, 0, 0}, acc1 = acc0, acc2 = acc0, acc3 = acc0;
   const auto one = [&](std::size_t t, Lanes4& acc) __attribute__((always_inline)) {
     const double s = A.tri_area[t] * kTwelfth;  // area/12 to within an ulp: a multiplication, not a division
     if (s == 0) return;
-    const std::size_t n0 = std::size_t(A.tri_node[3 * t]) * 3, n1 = std::size_t(A.tri_node[3 * t + 1]) * 3,
-                      n2 = std::size_t(A.tri_node[3 * t + 2]) * 3;
-    const Lanes4 x0 = load_rgb(x + n0), x1 = load_rgb(x + n1), x2 = load_rgb(x + n2);
+    const std::size_t n0 = std::size_t(A.tri_node[3 * t]) * 4, n1 = std::size_t(A.tri_node[3 * t + 1]) * 4,
+                      n2 = std::size_t(A.tri_node[3 * t + 2]) * 4;
+    Lanes4 x0, x1, x2, y0, y1, y2;
+    std::memcpy(&x0, x + n0, sizeof x0);
+    std::memcpy(&x1, x + n1, sizeof x1);
+    std::memcpy(&x2, x + n2, sizeof x2);
     const Lanes4 sum = x0 + x1 + x2;
     const Lanes4 t0 = x0 + sum, t1 = x1 + sum, t2 = x2 + sum;
-    // load, add, store one node at a time: nodes may repeat
-    store_rgb(y + n0, load_rgb(y + n0) + s * t0);
-    store_rgb(y + n1, load_rgb(y + n1) + s * t1);
-    store_rgb(y + n2, load_rgb(y + n2) + s * t2);
+    std::memcpy(&y0, y + n0, sizeof y0);  // load, add, store one node at a time: nodes may repeat
+    y0 += s * t0;
+    std::memcpy(y + n0, &y0, sizeof y0);
+    std::memcpy(&y1, y + n1, sizeof y1);
+    y1 += s * t1;
+    std::memcpy(y + n1, &y1, sizeof y1);
+    std::memcpy(&y2, y + n2, sizeof y2);
+    y2 += s * t2;
+    std::memcpy(y + n2, &y2, sizeof y2);
     acc += s * (x0 * t0 + x1 * t1 + x2 * t2);
   };
   for (std::size_t i = 0; i < Q; ++i) {  // t = i, i + Q, i + 2Q, i + 3Q (the last round may hold fewer)
@@ -363,8 +345,8 @@ void apply_operator(const FitOperator& A, const double* x, double* y, double* xA
   // share nodes, so in list order each update of y waits for the store of the one before; four
   // far-apart chains overlap (bench/fit/results.md). A fixed order: the same bits on every run.
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
-  if constexpr (W == 3) {
-    add_triangle_products_rgb(A, x, y, xAx);
+  if constexpr (W == 4) {
+    add_triangle_products_4(A, x, y, xAx);
   } else {
     double acc[4][W] = {};
     for (std::size_t i = 0; i < Q; ++i)
@@ -421,7 +403,7 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   // The triangles' row sums of area/12 [[2,1,1],...] are area/3 = 2 (area/6) per corner: twice
   // their diagonal (doubling is exact, so twice the sum is the sum of the doubles).
   // Stored only when there are quads or R (R adds to the diagonal below, not to the row sums); else
-  // lumped_mass gives 2 diagonal_i: one array less.
+  // lumped_mass gives 2 diagonal_i: one array of #nodes and one pass fewer.
   if (!e.quad_face.empty() || lambda > 0) {
     A.lumped.resize(N);
     for (std::size_t i = 0; i < N; ++i) A.lumped[i] = 2 * A.diagonal[i];
@@ -493,27 +475,27 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   }
 }
 
-// CG's per-iteration vector passes over 3 channels per node (block_conjugate_gradient<3>), one 4-wide
+// CG's per-iteration vector passes over 4 lanes per node (block_conjugate_gradient<4>), one 4-wide
 // operation per node where the scalar loops do four: per lane the same operations in the same
 // node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
 // builds (target_clones; no FMA).
 // x += alpha p; r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new +=
 // r^2 inv_d_i, per lane.
 __attribute__((target_clones("avx2", "default")))
-void rgb_step(const double* p, const double* Ap, const double* inv_d, const double* inv_m, std::size_t N,
+void lanes4_step(const double* p, const double* Ap, const double* inv_d, const double* inv_m, std::size_t N,
                  const double alpha_in[4], double* x, double* r, double res2_out[4], double res_mass_out[4],
                  double abs_new_out[4]) {
   Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, pi, Api, xi, ri;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
-    pi = load_rgb_streaming(p + 3 * i);
-    Api = load_rgb_streaming(Ap + 3 * i);
-    xi = load_rgb_streaming(x + 3 * i);
-    ri = load_rgb_streaming(r + 3 * i);
+    std::memcpy(&pi, p + 4 * i, sizeof pi);
+    std::memcpy(&Api, Ap + 4 * i, sizeof Api);
+    std::memcpy(&xi, x + 4 * i, sizeof xi);
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
     xi += alpha * pi;
     ri = ri - alpha * Api;
-    store_rgb(x + 3 * i, xi);
-    store_rgb(r + 3 * i, ri);
+    std::memcpy(x + 4 * i, &xi, sizeof xi);
+    std::memcpy(r + 4 * i, &ri, sizeof ri);
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
     abs_new += ri * ri * inv_d[i];
@@ -525,14 +507,14 @@ void rgb_step(const double* p, const double* Ap, const double* inv_d, const doub
 // The first residual r = b - Ap (b_then_r: b in, r out), with sum b^2, sum r^2 and (inv_m
 // non-null) sum r^2 inv_m_i, per lane.
 __attribute__((target_clones("avx2", "default")))
-void rgb_residual(const double* Ap, const double* inv_m, std::size_t N, double* b_then_r, double rhs2_out[4],
+void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, double* b_then_r, double rhs2_out[4],
                      double res2_out[4], double res_mass_out[4]) {
   Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, bi, Api;
   for (std::size_t i = 0; i < N; ++i) {
-    bi = load_rgb_streaming(b_then_r + 3 * i);
-    Api = load_rgb_streaming(Ap + 3 * i);
+    std::memcpy(&bi, b_then_r + 4 * i, sizeof bi);
+    std::memcpy(&Api, Ap + 4 * i, sizeof Api);
     const Lanes4 ri = bi - Api;
-    store_rgb(b_then_r + 3 * i, ri);
+    std::memcpy(b_then_r + 4 * i, &ri, sizeof ri);
     rhs2 += bi * bi;
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
@@ -543,29 +525,29 @@ void rgb_residual(const double* Ap, const double* inv_m, std::size_t N, double* 
 }
 // The first direction p = inv_d_i r, with sum r p, per lane.
 __attribute__((target_clones("avx2", "default")))
-void rgb_first_direction(const double* r, const double* inv_d, std::size_t N, double* p, double abs_out[4]) {
+void lanes4_first_direction(const double* r, const double* inv_d, std::size_t N, double* p, double abs_out[4]) {
   Lanes4 abs = {0, 0, 0, 0}, ri;
   for (std::size_t i = 0; i < N; ++i) {
-    ri = load_rgb_streaming(r + 3 * i);
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
     const Lanes4 pi = ri * inv_d[i];
-    store_rgb(p + 3 * i, pi);
+    std::memcpy(p + 4 * i, &pi, sizeof pi);
     abs += ri * pi;
   }
   std::memcpy(abs_out, &abs, sizeof abs);
 }
 // p = inv_d_i r + beta p, per lane; Ap cleared for the next operator pass (one pass fewer).
 __attribute__((target_clones("avx2", "default")))
-void rgb_direction(const double* r, const double* inv_d, std::size_t N, const double beta_in[4], double* p,
+void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double beta_in[4], double* p,
                       double* Ap) {
   Lanes4 beta, ri, pi;
   const Lanes4 zero = {0, 0, 0, 0};
   std::memcpy(&beta, beta_in, sizeof beta);
   for (std::size_t i = 0; i < N; ++i) {
-    ri = load_rgb_streaming(r + 3 * i);
-    pi = load_rgb_streaming(p + 3 * i);
+    std::memcpy(&ri, r + 4 * i, sizeof ri);
+    std::memcpy(&pi, p + 4 * i, sizeof pi);
     pi = ri * inv_d[i] + beta * pi;
-    store_rgb(p + 3 * i, pi);
-    store_rgb(Ap + 3 * i, zero);
+    std::memcpy(p + 4 * i, &pi, sizeof pi);
+    std::memcpy(Ap + 4 * i, &zero, sizeof zero);
   }
 }
 
@@ -614,12 +596,12 @@ void add_triangle_loads(const FitQuadrature& q, const TriangleLoads& g, const do
   }
 }
 
-// The same for 3 channels of b per node (load_rgb, store_rgb): the points' three values
+// The same for 3 channels in 4 lanes of b per node (the fourth stays 0): the points' three values
 // loaded once per triangle, one 4-wide update per corner; per lane the operations of
 // add_triangle_loads in its order, so the bits of one channel alone (AVX2 and baseline builds,
 // target_clones; no FMA). R: the rule's size when known at compile time (1, 3), else 0.
 template <std::size_t R>
-inline __attribute__((always_inline)) void triangle_loads_rgb_body(const FitQuadrature& q, const TriangleLoads& g,
+inline __attribute__((always_inline)) void triangle_loads_4_body(const FitQuadrature& q, const TriangleLoads& g,
                                                                  const double* f, bool per_site,
                                                                  const double* inverse_diagonal, double* b) {
   const std::size_t rule = R ? R : q.rule.size(), T = q.tri_area.size();
@@ -640,17 +622,20 @@ inline __attribute__((always_inline)) void triangle_loads_rgb_body(const FitQuad
     for (int c = 0; c < 3; ++c) {
       const std::size_t r = nodes[3 * j + c];
       if (inverse_diagonal && inverse_diagonal[r] == 0) continue;
-      store_rgb(b + 3 * r, load_rgb(b + 3 * r) + area * sum[c]);
+      Lanes4 br;
+      std::memcpy(&br, b + 4 * r, sizeof br);
+      br += area * sum[c];
+      std::memcpy(b + 4 * r, &br, sizeof br);
     }
   }
 }
 __attribute__((target_clones("avx2", "default")))
-void add_triangle_loads_rgb(const FitQuadrature& q, const TriangleLoads& g, const double* f, bool per_site,
+void add_triangle_loads_4(const FitQuadrature& q, const TriangleLoads& g, const double* f, bool per_site,
                           const double* inverse_diagonal, double* b) {
   switch (q.rule.size()) {
-    case 1: return triangle_loads_rgb_body<1>(q, g, f, per_site, inverse_diagonal, b);
-    case 3: return triangle_loads_rgb_body<3>(q, g, f, per_site, inverse_diagonal, b);
-    default: return triangle_loads_rgb_body<0>(q, g, f, per_site, inverse_diagonal, b);  // a size_t, not an enum
+    case 1: return triangle_loads_4_body<1>(q, g, f, per_site, inverse_diagonal, b);
+    case 3: return triangle_loads_4_body<3>(q, g, f, per_site, inverse_diagonal, b);
+    default: return triangle_loads_4_body<0>(q, g, f, per_site, inverse_diagonal, b);  // a size_t, not an enum
   }
 }
 
@@ -673,12 +658,10 @@ template <std::size_t W>
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                               const std::vector<std::uint32_t>& off_system, double* b_then_r,
                               const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
-  using Channels = std::array<double, W == 3 ? 4 : W>;  // W = 3: a fourth entry for the pad lane (unread)
+  using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
   // Not value-initialised: the first direction writes p, the first operator pass clears Ap.
-  // One element more (0): the rgb_ passes' 4-wide loads read one past a node's three (load_rgb_streaming).
-  const std::unique_ptr<double[]> p_v(new double[n + 1]), Ap_v(new double[n + 1]);
-  p_v[n] = Ap_v[n] = 0;
+  const std::unique_ptr<double[]> p_v(new double[n]), Ap_v(new double[n]);
   double* const r = b_then_r;
   double* const p = p_v.get();
   double* const Ap = Ap_v.get();
@@ -697,8 +680,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   const bool mass_is_jacobi = inv_m == inv_d;  // lambda = 0: r^T D^-1 r is both the stop's sum and CG's r^T z
   const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
   apply(x, Ap, pAp.data(), false);  // pAp unused here
-  if constexpr (W == 3) {
-    rgb_residual(Ap, bounded ? inv_m : nullptr, N, r, rhs2.data(), res2.data(), res_mass.data());
+  if constexpr (W == 4) {
+    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, r, rhs2.data(), res2.data(), res_mass.data());
   } else {
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
       for (std::size_t k = 0; k < W; ++k) {
@@ -721,8 +704,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       ++running;
     }
   }
-  if constexpr (W == 3) {
-    rgb_first_direction(r, inv_d, N, p, abs_new.data());
+  if constexpr (W == 4) {
+    lanes4_first_direction(r, inv_d, N, p, abs_new.data());
   } else {
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
       for (std::size_t k = 0; k < W; ++k) {
@@ -740,8 +723,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     res_mass.fill(0.0);
     abs_old = abs_new;
     abs_new.fill(0.0);
-    if constexpr (W == 3) {  // z = D^-1 r, not stored
-      rgb_step(p, Ap, inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), x, r, res2.data(),
+    if constexpr (W == 4) {  // z = D^-1 r, not stored
+      lanes4_step(p, Ap, inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), x, r, res2.data(),
                   res_mass.data(), abs_new.data());
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
@@ -763,8 +746,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     if (running == 0) break;
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
-    if constexpr (W == 3) {
-      rgb_direction(r, inv_d, N, beta.data(), p, Ap);
+    if constexpr (W == 4) {
+      lanes4_direction(r, inv_d, N, beta.data(), p, Ap);
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
         for (std::size_t k = 0; k < W; ++k) {
@@ -781,14 +764,14 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   }
 }
 
-// b and x #nodes by `width` channels (3: the rgb_ passes, a 4-wide register per node); widths other
-// than 1 and 3: one channel at a time. b: overwritten (the
+// b and x #nodes by `width` lanes (cg_lanes: 4 for 3 channels, the fourth b = 0 and so x = 0, a
+// channel solved at once); widths other than 1 and 4: one channel at a time. b: overwritten (the
 // residual).
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                               const std::vector<std::uint32_t>& off_system, std::vector<double>& b,
                               std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
   if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
-  if (width == 3) return block_conjugate_gradient<3>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
+  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
   const std::size_t N = inverse_diagonal.size();
   std::vector<double> bk(N), xk(N);
   for (std::size_t k = 0; k < width; ++k) {
@@ -1044,18 +1027,19 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       ++fit.fallback_nodes;
     }
   }
-  fit.values.assign(N * width + 1, 0.0);  // one more: the CG passes' 4-wide loads (load_rgb_streaming); dropped below
+  fit.values.assign(N * width, 0.0);
   if (off_system.size() < N) {
-    // b and the solution with `width` values per node (3 channels: in the rgb_ passes, a 4-wide
-    // register per node); the solution is solved in place in fit.values.
-    const std::size_t L = width;
-    std::vector<double>& x = fit.values;
+    // b and the solution with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its
+    // solution is 0 and it stops at once), for add_triangle_products_4; otherwise the channels.
+    const std::size_t L = width == 3 ? 4 : width;
+    std::vector<double> padded(L != width ? N * L : 0, 0.0);
+    std::vector<double>& x = L != width ? padded : fit.values;
     // b for every channel in one pass over the points.
-    std::vector<double> b(N * L + 1, 0.0);  // one more, as fit.values
+    std::vector<double> b(N * L, 0.0);
     const TriangleLoads loads = triangle_loads(q.rule);
     const double* const in_system = off_system.empty() ? nullptr : inverse_diagonal.data();
-    if (L == 3)
-      add_triangle_loads_rgb(q, loads, f.data(), per_site, in_system, b.data());
+    if (L == 4)
+      add_triangle_loads_4(q, loads, f.data(), per_site, in_system, b.data());
     else
       add_triangle_loads(q, loads, f.data(), width, L, per_site, in_system, b.data());
     for (std::size_t m = 0, s = q.triangle_points(); m < q.quad_weight.size(); ++m, ++s) {  // the quads' points
@@ -1070,7 +1054,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     // The first guess: the lumped-mass projection c0_i = b_i / sum_j M_ij (the L2 projection with M
     // replaced by its row-sum diagonal; exact for a constant f). It needs only b, not the point
     // values, so the result does not depend on whether the caller computed them. 0 off the system.
-    for (std::size_t i = 0; i < N; ++i) {  // every channel
+    for (std::size_t i = 0; i < N; ++i) {  // all L lanes (a pad lane: b = 0, so 0), one vector division
       const double m = A.lumped_mass(i);
       const bool mass = inverse_diagonal[i] != 0 && m > 0;  // off the system (no mass): 0 during CG
       for (std::size_t k = 0; k < L; ++k) x[i * L + k] = mass ? b[i * L + k] / m : 0.0;  // divisor checked
@@ -1086,8 +1070,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
     block_conjugate_gradient(A, inverse_diagonal, off_system, b, L, cg, x, fit);
+    if (L != width)
+      for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];
   }
-  fit.values.resize(N * width);  // the extra element dropped (no reallocation)
   if (!off_system.empty()) {  // the nodes outside the system keep their point values
     const std::vector<double> at = point_values_at(off_system);
     if (at.size() != off_system.size() * width)

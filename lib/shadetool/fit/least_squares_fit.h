@@ -32,9 +32,9 @@
 // when every node touches a face of positive area), matrix-free: A is kept as its elements (area/12
 // per triangle, a 4 x 4 block per quad, a vector d per regularised edge) and applied by one pass
 // over them per step, so no sparse matrix is assembled; all channels in one block (one pass serves
-// them all; each channel has its own step lengths and stop). Three channels (3 doubles per node in
-// memory, no pad) are loaded into a 4-wide register per node (the fourth lane 0, never read), so
-// that the operator and the vector passes do one 4-wide operation per node (AVX2 where the CPU has it, target_clones, no FMA): per lane the
+// them all; each channel has its own step lengths and stop). Three channels are held in 4-wide
+// lanes per node (a fourth of b = 0, solved at once), so that the operator and the vector passes
+// do one 4-wide operation per node (AVX2 where the CPU has it, target_clones, no FMA): per lane the
 // scalar operations in the scalar order, so each channel's values are the bits of that channel
 // solved alone (tests/fit checks). Stopped per channel when
 // |A c - b| <= tolerance |b| (default 1e-10), from the lumped-mass projection as the first guess:
