@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""rounds.py BASE_BENCH_FIT NEW_BENCH_FIT SRC [ROUNDS] [REPEATS] [LABEL=BENCH_FIT ...] [--1m [studio|window]]:
-`bench_fit table SRC REPEATS 20000` (the 10k torus, studio and window; with --1m `bench_fit table
-SRC REPEATS 2000000 1000000 [SCENE]`, the 1M torus) of two builds (and any
+"""rounds.py BASE_BENCH_FIT NEW_BENCH_FIT SRC [ROUNDS] [REPEATS] [LABEL=BENCH_FIT ...] [--99k|--1m [studio|window]]:
+`bench_fit table SRC REPEATS 20000` (the 10k torus, studio and window; with --99k or --1m the 99k
+or 1M torus alone, `bench_fit table SRC REPEATS MAX MIN [SCENE]`) of two builds (and any
 further LABEL=path builds, run in the same rotation, before "branch") in alternating processes, ROUNDS rounds (default
 7, REPEATS 7). Per round each build's rows give the CPU ratio to its own point bake (medians of
 REPEATS round-robin repetitions); printed: per (scene, method, build) the median and range of the
@@ -10,11 +10,12 @@ import subprocess, sys, statistics
 
 args = sys.argv[:]
 size = ["20000"]
-if "--1m" in args:
-    i = args.index("--1m")
-    scene = args[i + 1:i + 2] if i + 1 < len(args) and args[i + 1] in ("studio", "window") else []
-    size = ["2000000", "1000000"] + scene
-    del args[i:i + 1 + len(scene)]
+for flag, triangles in (("--1m", ["2000000", "1000000"]), ("--99k", ["200000", "90000"])):
+    if flag in args:
+        i = args.index(flag)
+        scene = args[i + 1:i + 2] if i + 1 < len(args) and args[i + 1] in ("studio", "window") else []
+        size = triangles + scene
+        del args[i:i + 1 + len(scene)]
 sys.argv = args
 base, new, src = sys.argv[1], sys.argv[2], sys.argv[3]
 rounds = int(sys.argv[4]) if len(sys.argv) > 4 else 7
