@@ -216,6 +216,14 @@ def fit(args):
                                   float(c[7].rstrip("%")), -30, src, higher_is_better=False, unit="%", digits=0))
     if not any(f.key.startswith("fit.studio.time.") for f in out):
         raise RuntimeError("bench/fit/results.txt has no studio rows")
+    # The error goal's floor on the studio: the least error any vertex colours in [0, 1] can have
+    # under this measure (the box-constrained minimum with the reference's own 12-point rule,
+    # `bench_fit variants`, bench/fit/results.md "The error goal"), as a change from point samples.
+    txt = run([os.path.join(args.build_dir, "bench", "fit", "bench_fit"), "variants", SRC])
+    m = re.search(r"^\| torus 10k tri \| studio \| 12 \|(?:[^|]*\|){5} *(-?\d+(?:\.\d+)?)% *\|", txt, re.M)
+    out.append(Figure("fit.studio.error_floor", "least squares",
+                      "the least error any vertex colours in [0, 1] can have, change from point samples (torus 10k tri, studio; box-constrained minimum, 12-point rule)",
+                      f"{float(m.group(1)):.1f}%" if m else "not measured", "", "", "bench/fit/results.md"))
     return out
 
 
