@@ -1,7 +1,7 @@
 // bench_crease: crease normals (corner_normals, angle weighting, crease 30 degrees) against
 // angle-weighted vertex normals on the same mesh, one thread (issue 31 goal 3: at most 2x).
 //
-// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths]
+// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths] [--round4]
 // Meshes: the irregular UV sphere of bench_normals (about N triangles, default 1M; no edge above
 // 30 degrees, so every group is a whole vertex fan), a faceted icosahedron (its 20 flat faces
 // subdivided 4^7 times each: 1.3M triangles, real 41.8-degree creases along the 30 edges and
@@ -11,15 +11,22 @@
 // path without its probe, triangle meshes only; --no-paths drops them; their output is checked
 // against corner_normals' bit for bit),
 // and the frozen copy of the crease path before issue 31 (tests/support/corner_normals_reference.h;
-// --no-reference drops it); then three rows whose sum is the floor of a crease path built like
-// ours (--no-floor drops them): face_normals (the crease test needs them), the vertex -> corner
-// adjacency alone (count + fill of 4-byte corner ids, the cheapest vertex-major gathering of the
-// fans), and corner_group_normals given corner_normals' own groups (the weighted sums and
-// normalisation alone, the same kernel as vertex_normals); on triangle meshes, with the floor rows,
-// the rows of the "new shape" experiment (crease_new_shape.h: no vertex-major gathering for smooth
-// vertices; one face-order pass with fixed per-vertex slots; its hard vertices are counted, not
-// computed, so those rows are a floor; a line says how many vertices were hard and checks the easy
-// ones' normals against corner_normals bit for bit). Repetitions interleaved round-robin
+// --no-reference drops it); then (--no-floor drops them) three rows whose sum is the floor of a
+// crease path built like the general path: face_normals (the crease test needs them), the vertex
+// -> corner adjacency alone (count + fill of 4-byte corner ids, the cheapest vertex-major
+// gathering of the fans), and corner_group_normals given corner_normals' own groups (the weighted
+// sums and normalisation alone, the same kernel as vertex_normals); and on triangle meshes the
+// sixth round's rows (crease_new_shape.h, hard vertices counted, not computed): the floor of any
+// exact path with today's output, (i) vertex_normals + writing corner_index, (ii) (i) + every
+// corner's unit face normal summed into its vertex's cone evidence (SmoothCone) in the same pass,
+// no ring test, (iii) (ii) + 12 (next, prev) pairs of 16-bit offsets per vertex and the ring test
+// (layout C; and the same with the ring test taken as passed: its cost); and the library's one-thread path up to its hard vertices in its own 128-byte slots
+// (layout L), each layout with fresh scratch per call (as the library allocates), with the
+// caller's scratch reused (no page faults after the first call), and pass 1 alone. --round4 adds
+// the fourth round's rows of the same file (variants A and B). Lines after the rows say how many
+// vertices each of (ii), C and L left hard, check their easy vertices' normals against
+// corner_normals bit for bit, and count the vertices with a neighbour outside 16-bit offsets.
+// Repetitions interleaved round-robin
 // (rep 1 of every row, then rep 2, ...) after one warm-up, inside one TBB arena of 1 thread; medians of wall and process CPU time.
 // The new and old crease outputs are compared bit for bit once per mesh (a mismatch is reported
 // and the exit code is 1).
@@ -100,7 +107,7 @@ double cpu_now() {
 int main(int argc, char** argv) {
   std::size_t faces = 1000000;
   int reps = 15;
-  bool reference = true, floor = true, paths = true;
+  bool reference = true, floor = true, paths = true, round4 = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::stoi(argv[++i]);
@@ -109,8 +116,9 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--no-reference")) reference = false;
     else if (!std::strcmp(argv[i], "--no-floor")) floor = false;
     else if (!std::strcmp(argv[i], "--no-paths")) paths = false;
+    else if (!std::strcmp(argv[i], "--round4")) round4 = true;
     else {
-      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths]\n");
+      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths] [--round4]\n");
       return 2;
     }
   }
@@ -185,7 +193,42 @@ int main(int argc, char** argv) {
     crease_new_shape::Result shape_b;
     std::vector<double> slot_sums;
     crease_new_shape::Result shape;
+    crease_new_shape::Round6Scratch scratch6;
+    crease_new_shape::Result floor_i, floor_ii, layout_l, layout_c;
     if (floor && mesh.all_triangles()) {
+      rows.push_back({"floor (i): vertex_normals + corner_index", [&, C = mesh.num_corners()] {
+                        floor_i.normals = vertex_normals(mesh, Weighting::Angle).normals;
+                        BulkVector<std::uint32_t> ci(C);
+                        const std::uint32_t* cv = mesh.corner_vertex.data();
+                        for (std::size_t c = 0; c < C; ++c) ci[c] = cv[c];
+                        floor_i.corner_index.assign(ci.begin(), ci.end());
+                      }, {}, {}});
+      rows.push_back({"floor (ii): (i) + cone evidence per corner, no ring test", [&] {
+                        floor_ii = crease_new_shape::run_floor_cone(mesh, crease);
+                      }, {}, {}});
+      rows.push_back({"floor (iii) = layout C: (ii) + 12 pairs of 16-bit offsets, ring test (hard left out)", [&] {
+                        layout_c = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout C, scratch reused", [&] {
+                        crease_new_shape::run_layout_c(mesh, crease, 2, false, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout C, ring test taken as passed (its cost)", [&] {
+                        crease_new_shape::run_layout_c(mesh, crease, 3, true, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout C, pass 1 only", [&] {
+                        crease_new_shape::run_layout_c(mesh, crease, 1, true, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout L (library's 128 B slot), hard left out", [&] {
+                        layout_l = crease_new_shape::run_layout_l(mesh, crease, 2, true, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout L, scratch reused", [&] {
+                        crease_new_shape::run_layout_l(mesh, crease, 2, false, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout L, pass 1 only", [&] {
+                        crease_new_shape::run_layout_l(mesh, crease, 1, true, scratch6);
+                      }, {}, {}});
+    }
+    if (floor && round4 && mesh.all_triangles()) {
       rows.push_back({"new shape: pass 1, sums only", [&] {
                         crease_new_shape::run<0>(mesh, crease, 1, slots, slot_sums);
                       }, {}, {}});
@@ -229,7 +272,7 @@ int main(int argc, char** argv) {
     for (Row& r : rows)
       std::printf("| %s | %zu | %s | %.2f | %.2f | %.2fx |\n", name.c_str(), mesh.num_faces(), r.name, median(r.wall), median(r.cpu),
                   median(r.cpu) / base);
-    for (const auto* sh : {&shape, &shape_b}) {
+    for (const auto* sh : {&shape, &shape_b, &floor_ii, &layout_c, &layout_l}) {
       if (!sh->used) continue;
       const crease_new_shape::Result& shape = *sh;
       std::size_t differ = 0, easy = 0;
@@ -242,6 +285,20 @@ int main(int argc, char** argv) {
       std::printf("| %s | | new shape: %zu of %zu vertices hard (%.1f%%); %zu easy corners, %zu differ from corner_normals | | | |\n",
                   name.c_str(), shape.hard, shape.used, 100.0 * double(shape.hard) / double(shape.used), easy, differ);
       if (differ) status = 1;
+    }
+    if (floor && mesh.all_triangles()) {  // why layout C leaves vertices hard: 16-bit offsets
+      std::vector<std::uint8_t> wide(mesh.num_vertices(), 0);
+      const std::uint32_t* cv = mesh.corner_vertex.data();
+      for (std::size_t c = 0; c < mesh.num_corners(); ++c) {
+        const std::uint32_t v = cv[c], w = cv[c % 3 == 2 ? c - 2 : c + 1];
+        const bool far = (w - v + 32768u) >= 65536u;
+        wide[v] |= far;
+        wide[w] |= far;
+      }
+      std::size_t n = 0;
+      for (std::uint8_t x : wide) n += x;
+      std::printf("| %s | | layout C: %zu of %zu vertices have a neighbour more than 32767 ids away (%.1f%%) | | | |\n", name.c_str(), n,
+                  mesh.num_vertices(), 100.0 * double(n) / double(mesh.num_vertices()));
     }
     if (paths && (!same_bits(cn, general) || (mesh.all_triangles() && !same_bits(cn, one_thread)))) {
       std::printf("| %s | | MISMATCH: corner_normals' two paths differ | | | |\n", name.c_str());

@@ -27,6 +27,10 @@
 #include <shadetool/normals/engine/corner_contributions.h>
 #include <shadetool/normals/engine/normalise_sums.h>
 #include <shadetool/normals/engine/triangle_blocks.h>
+#include <shadetool/normals/engine/smooth_cone.h>
+#include <shadetool/normals/engine/vertex_slots.h>
+
+#include <emmintrin.h>
 
 namespace crease_new_shape {
 
@@ -236,6 +240,251 @@ inline Result run_b(const Mesh& mesh, double crease_angle, BulkVector<SlotB>& sl
   reserve_bulk(out.corner_index, C);
   out.corner_index.resize(C);
   for (std::size_t c = 0; c < C; ++c) out.corner_index[c] = row[cv[c]];
+  return out;
+}
+
+}  // namespace crease_new_shape
+
+namespace crease_new_shape {
+
+// Round 6 (branch crease6): the library's one-thread path (corner_normals.cpp, engine/vertex_slots.h)
+// up to its hard vertices, in two slot layouts, so that the layouts are timed side by side:
+//   L (the library's): one 128-byte VertexSlot per vertex {U float x3, d, S in T x3, 11 (next, prev)
+//     pairs of 32-bit ids}, a fresh pool written in pass 2;
+//   C (compact): S in a dense #V by 3 array of double (the sums vertex_normals keeps) and a 64-byte
+//     slot {U float x3, d, 12 (next, prev) pairs of 16-bit offsets w - v}; a corner whose offsets do
+//     not fit int16 makes U NaN (the vertex is hard, as a vertex with too many corners is); pass 2
+//     normalises S in place into the pool (row r <= v is written after row v is read), so the pool
+//     is the S array itself: no second array, no fresh pool pages.
+// Both: pass 1 in face order, pass 2 in vertex order (SmoothCone as the library's, ring test,
+// normalise), corner_index; hard vertices counted, not computed. `fresh`: the scratch is allocated
+// per call (as the library does); else the caller's buffers are reused (no page faults after the
+// first call).
+struct CompactSlot {
+  float u[3];
+  std::uint32_t d;
+  std::int16_t next[12], prev[12];
+};
+static_assert(sizeof(CompactSlot) == 64, "one cache line per vertex");
+constexpr std::uint32_t kCompactPairs = 12;
+
+using Cone = SmoothCone;  // engine/smooth_cone.h, the library's test
+
+// one_smooth_ring (vertex_slots.h) on 16-bit offsets: lanes >= d hold 0 (the vertex itself, which
+// no next offset of a ring is).
+inline bool one_compact_ring(const CompactSlot& sl) {
+  const std::uint32_t d = sl.d;
+  std::uint32_t succ[16] = {};
+  const __m128i count = _mm_set1_epi16(short(d));
+  const __m128i lo = _mm_and_si128(_mm_cmplt_epi16(_mm_setr_epi16(0, 1, 2, 3, 4, 5, 6, 7), count),
+                                   _mm_loadu_si128(reinterpret_cast<const __m128i*>(sl.prev)));
+  const __m128i hi = _mm_and_si128(_mm_cmplt_epi16(_mm_setr_epi16(8, 9, 10, 11, 12, 13, 14, 15), count),
+                                   _mm_loadl_epi64(reinterpret_cast<const __m128i*>(sl.prev + 8)));
+  bool linked = true;
+  for (std::uint32_t i = 0; i < d; ++i) {
+    const std::int16_t w = sl.next[i];
+    const __m128i x = _mm_set1_epi16(w);
+    const std::uint32_t m = std::uint32_t(_mm_movemask_epi8(_mm_packs_epi16(_mm_cmpeq_epi16(lo, x), _mm_cmpeq_epi16(hi, x))));
+    linked &= (w != 0) & (m != 0);
+    succ[i] = std::uint32_t(__builtin_ctz(m | 0x8000u)) & 15u;
+  }
+  std::uint32_t k = 0, returns = 0;
+  for (std::uint32_t step = 1; step <= kCompactPairs; ++step) {
+    k = succ[k];
+    returns |= std::uint32_t(k == 0) << step;
+  }
+  return linked & (std::uint32_t(__builtin_ctz(returns | (1u << (kCompactPairs + 1)))) == d);
+}
+
+struct Round6Scratch {
+  BulkVector<VertexSlot<double>> slots;
+  BulkVector<CompactSlot> compact;
+  std::vector<double> pool;
+  BulkVector<std::uint32_t> row;
+};
+
+// Layout L. passes: 1 = pass 1 only; 2 = all.
+inline Result run_layout_l(const Mesh& mesh, double crease_angle, int passes, bool fresh, Round6Scratch& scratch) {
+  Result out;
+  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners(), F = mesh.num_faces();
+  const Cone cone(crease_angle);
+  Round6Scratch local;
+  Round6Scratch& s = fresh ? local : scratch;
+  s.slots.resize(V + 1);
+  clear_vertex_slots(s.slots.data(), V + 1);
+  add_faces_to_slots<double, Weighting::Angle>(MeshView(mesh), 0, F, s.slots.data());
+  if (passes == 1) return out;
+  s.row.resize(V);
+  reserve_bulk(s.pool, 3 * V);
+  s.pool.resize(3 * V);
+  std::uint32_t used = 0;
+  for (std::uint32_t v = 0; v < V; ++v) {
+    const VertexSlot<double>& sl = s.slots[v];
+    s.row[v] = used;
+    if (sl.d == 0) continue;
+    double* o = &s.pool[3 * std::size_t(used)];
+    const bool easy = sl.d <= normals_detail::kSlotPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && one_smooth_ring(v, sl) &&
+                      normalise_sum(sl.s[0], sl.s[1], sl.s[2], o);
+    if (!easy) { ++out.hard; s.row[v] = ~0u; }
+    ++used;
+  }
+  out.used = used;
+  reserve_bulk(out.corner_index, C);
+  out.corner_index.resize(C);
+  const std::uint32_t* cv = mesh.corner_vertex.data();
+  for (std::size_t c = 0; c < C; ++c) out.corner_index[c] = s.row[cv[c]];
+  if (fresh) out.normals.swap(s.pool);  // else the pool stays in the caller's scratch (not copied out)
+  return out;
+}
+
+// Floor (ii)'s per-vertex state: the cone evidence alone (U, d), 16 bytes.
+struct ConeRecord {
+  float u[3];
+  std::uint32_t d;
+};
+
+// Pass 1 of layout C (add_faces_to_slots with the sums in S and 16-bit offsets in the slot); with
+// Slot = ConeRecord, floor (ii)'s pass: sums and cone evidence, no pairs.
+template <class Slot>
+inline std::size_t add_faces_to_compact_slots(const MeshView& mesh, std::size_t f_begin, std::size_t f_end, double* S,
+                                              Slot* slots) {
+  constexpr bool kPairs = std::is_same_v<Slot, CompactSlot>;
+  std::size_t degenerate = 0;
+  const double* P = mesh.positions;
+  const std::uint32_t* cv = mesh.corner_vertex;
+  alignas(64) double xyz[9][kTriangleBlock];
+  alignas(64) double w[9][kTriangleBlock];
+  const RowHint hint{reinterpret_cast<const char*>(slots), sizeof(Slot)};
+  const RowHint hint_sums{reinterpret_cast<const char*>(S), 3 * sizeof(double)};
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t b = f_begin; b < f_end; b += kTriangleBlock) {
+    const std::size_t count = std::min(kTriangleBlock, f_end - b);
+    gather_block_contributions<Weighting::Angle>(P, cv, b, count, f_end, xyz, w);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t c = 3 * (b + i);
+      if (b + i + kPrefetchFaces < f_end) {
+        prefetch_face(P, cv + c + 3 * kPrefetchFaces, hint);
+        prefetch_face(P, cv + c + 3 * kPrefetchFaces, hint_sums);
+      }
+      const std::uint32_t v3[3] = {cv[c], cv[c + 1], cv[c + 2]};
+      if (std::isnan(w[0][i])) {
+        auto sink = [&](std::size_t, std::uint32_t v, const Vec3<double>& n) {
+          double* s = S + 3 * std::size_t(v);
+          s[0] += n.x; s[1] += n.y; s[2] += n.z;
+        };
+        degenerate += !triangle_scalar<double, Weighting::Angle>(P, cv, c, sink, 1.0);
+        for (int k = 0; k < 3; ++k) {
+          slots[v3[k]].u[0] = nan;
+          ++slots[v3[k]].d;
+        }
+        continue;
+      }
+      constexpr double inv_pi = 1.0 / kPi;
+      const float nx = float((w[0][i] + w[3][i] + w[6][i]) * inv_pi);
+      const float ny = float((w[1][i] + w[4][i] + w[7][i]) * inv_pi);
+      const float nz = float((w[2][i] + w[5][i] + w[8][i]) * inv_pi);
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = v3[k];
+        Slot& sl = slots[v];
+        double* s = S + 3 * std::size_t(v);
+        s[0] += w[3 * k][i]; s[1] += w[3 * k + 1][i]; s[2] += w[3 * k + 2][i];
+        if constexpr (!kPairs) {
+          sl.u[0] += nx; sl.u[1] += ny; sl.u[2] += nz;
+          ++sl.d;
+          continue;
+        }
+        const std::uint32_t on = v3[k == 2 ? 0 : k + 1] - v, op = v3[k == 0 ? 2 : k - 1] - v;  // mod 2^32
+        const bool fits = ((on + 32768u) | (op + 32768u)) < 65536u;
+        sl.u[0] += fits ? nx : nan; sl.u[1] += ny; sl.u[2] += nz;
+        const std::uint32_t d = sl.d;
+        const std::uint32_t at = d < kCompactPairs ? d : kCompactPairs - 1;
+        if constexpr (kPairs) {
+          sl.next[at] = std::int16_t(on);
+          sl.prev[at] = std::int16_t(op);
+        }
+        sl.d = d + 1;
+      }
+    }
+  }
+  return degenerate;
+}
+
+// Layout C. passes: 1 = pass 1 only; 2 = all; 3 = all with the ring test taken as passed (not a
+// correct result: what everything but the ring test costs).
+inline Result run_layout_c(const Mesh& mesh, double crease_angle, int passes, bool fresh, Round6Scratch& scratch) {
+  Result out;
+  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners(), F = mesh.num_faces();
+  const Cone cone(crease_angle);
+  Round6Scratch local;
+  Round6Scratch& s = fresh ? local : scratch;
+  s.compact.resize(V);
+  std::vector<double>& S = s.pool;
+  reserve_bulk(S, 3 * V);
+  S.resize(3 * V);
+  std::fill(S.begin(), S.end(), 0.0);
+  for (std::size_t v = 0; v < V; ++v) {
+    CompactSlot& sl = s.compact[v];
+    sl.u[0] = sl.u[1] = sl.u[2] = 0.0f;
+    sl.d = 0;
+  }
+  add_faces_to_compact_slots(MeshView(mesh), 0, F, S.data(), s.compact.data());
+  if (passes == 1) return out;
+  s.row.resize(V);
+  std::uint32_t used = 0;
+  for (std::uint32_t v = 0; v < V; ++v) {
+    const CompactSlot& sl = s.compact[v];
+    s.row[v] = used;
+    if (sl.d == 0) continue;
+    const double* sv = &S[3 * std::size_t(v)];
+    double* o = &S[3 * std::size_t(used)];  // used <= v: row v read before row `used` is written
+    const bool easy = sl.d <= kCompactPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && (passes == 3 || one_compact_ring(sl)) &&
+                      normalise_sum(sv[0], sv[1], sv[2], o);
+    if (!easy) { ++out.hard; s.row[v] = ~0u; }
+    ++used;
+  }
+  out.used = used;
+  reserve_bulk(out.corner_index, C);
+  out.corner_index.resize(C);
+  const std::uint32_t* cv = mesh.corner_vertex.data();
+  for (std::size_t c = 0; c < C; ++c) out.corner_index[c] = s.row[cv[c]];
+  if (fresh) out.normals.swap(S);  // else the pool stays in the caller's scratch (not copied out)
+  return out;
+}
+
+// Floor (ii): the output (pool, corner_index) and each vertex's cone evidence (one scatter of
+// (contribution, unit normal, 1) per corner into S and a 16-byte record), pass 2 the cone test and
+// the in-place normalisation; no ring evidence at all (so not exact: a pinch inside the cone is
+// taken as one group). Hard vertices (cone failed) counted.
+inline Result run_floor_cone(const Mesh& mesh, double crease_angle) {
+  Result out;
+  const std::size_t V = mesh.num_vertices(), C = mesh.num_corners(), F = mesh.num_faces();
+  const Cone cone(crease_angle);
+  BulkVector<ConeRecord> rec(V);
+  std::fill(rec.begin(), rec.end(), ConeRecord{{0.0f, 0.0f, 0.0f}, 0});
+  std::vector<double> S;
+  reserve_bulk(S, 3 * V);
+  S.assign(3 * V, 0.0);
+  add_faces_to_compact_slots(MeshView(mesh), 0, F, S.data(), rec.data());
+  BulkVector<std::uint32_t> row(V);
+  std::uint32_t used = 0;
+  for (std::uint32_t v = 0; v < V; ++v) {
+    const ConeRecord& r = rec[v];
+    row[v] = used;
+    if (r.d == 0) continue;
+    const double* sv = &S[3 * std::size_t(v)];
+    double* o = &S[3 * std::size_t(used)];
+    if (!(cone.passes(r.d, r.u[0], r.u[1], r.u[2]) && normalise_sum(sv[0], sv[1], sv[2], o))) {
+      ++out.hard;
+      row[v] = ~0u;
+    }
+    ++used;
+  }
+  out.used = used;
+  reserve_bulk(out.corner_index, C);
+  out.corner_index.resize(C);
+  const std::uint32_t* cv = mesh.corner_vertex.data();
+  for (std::size_t c = 0; c < C; ++c) out.corner_index[c] = row[cv[c]];
+  out.normals.swap(S);
   return out;
 }
 
