@@ -194,7 +194,7 @@ int main(int argc, char** argv) {
     std::vector<double> slot_sums;
     crease_new_shape::Result shape;
     crease_new_shape::Round6Scratch scratch6;
-    crease_new_shape::Result floor_i, floor_ii, layout_l, layout_c;
+    crease_new_shape::Result floor_i, floor_ii, layout_l, layout_c, layout_c_packed, layout_c_walk;
     if (floor && mesh.all_triangles()) {
       rows.push_back({"floor (i): vertex_normals + corner_index", [&, C = mesh.num_corners()] {
                         floor_i.normals = vertex_normals(mesh, Weighting::Angle).normals;
@@ -211,6 +211,12 @@ int main(int argc, char** argv) {
                       }, {}, {}});
       rows.push_back({"layout C, scratch reused", [&] {
                         crease_new_shape::run_layout_c(mesh, crease, 2, false, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout C, ring test: fixed 8-corner search, walk in a register", [&] {
+                        layout_c_packed = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 1);
+                      }, {}, {}});
+      rows.push_back({"layout C, ring test as one walk of d searches", [&] {
+                        layout_c_walk = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 2);
                       }, {}, {}});
       rows.push_back({"layout C, ring test taken as passed (its cost)", [&] {
                         crease_new_shape::run_layout_c(mesh, crease, 3, true, scratch6);
@@ -272,7 +278,10 @@ int main(int argc, char** argv) {
     for (Row& r : rows)
       std::printf("| %s | %zu | %s | %.2f | %.2f | %.2fx |\n", name.c_str(), mesh.num_faces(), r.name, median(r.wall), median(r.cpu),
                   median(r.cpu) / base);
-    for (const auto* sh : {&shape, &shape_b, &floor_ii, &layout_c, &layout_l}) {
+    const std::pair<const char*, const crease_new_shape::Result*> shapes[] = {
+        {"new shape A", &shape}, {"new shape B", &shape_b}, {"floor (ii)", &floor_ii}, {"layout C", &layout_c},
+        {"layout C, register walk", &layout_c_packed}, {"layout C, one walk", &layout_c_walk}, {"layout L", &layout_l}};
+    for (const auto& [label, sh] : shapes) {
       if (!sh->used) continue;
       const crease_new_shape::Result& shape = *sh;
       std::size_t differ = 0, easy = 0;
@@ -282,8 +291,8 @@ int main(int argc, char** argv) {
         ++easy;
         differ += std::memcmp(&shape.normals[3 * std::size_t(r)], &cn.normals[3 * std::size_t(cn.corner_index[c])], 24) != 0;
       }
-      std::printf("| %s | | new shape: %zu of %zu vertices hard (%.1f%%); %zu easy corners, %zu differ from corner_normals | | | |\n",
-                  name.c_str(), shape.hard, shape.used, 100.0 * double(shape.hard) / double(shape.used), easy, differ);
+      std::printf("| %s | | %s: %zu of %zu vertices hard (%.1f%%); %zu easy corners, %zu differ from corner_normals | | | |\n",
+                  name.c_str(), label, shape.hard, shape.used, 100.0 * double(shape.hard) / double(shape.used), easy, differ);
       if (differ) status = 1;
     }
     if (floor && mesh.all_triangles()) {  // why layout C leaves vertices hard: 16-bit offsets

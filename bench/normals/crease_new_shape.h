@@ -272,28 +272,75 @@ using Cone = SmoothCone;  // engine/smooth_cone.h, the library's test
 
 // one_smooth_ring (vertex_slots.h) on 16-bit offsets: lanes >= d hold 0 (the vertex itself, which
 // no next offset of a ring is).
+// Packed: the successor map in one 64-bit register, 4 bits per corner, walked by shifts (no
+// store and reload per step), and the successor search run over 8 corners whatever d (12 when d >
+// 8, a branch that almost never goes that way), lanes >= d masked out: no loop exit that depends
+// on d; else the library's one_smooth_ring's form (a loop of d, an array walked).
+template <bool Packed = false>
 inline bool one_compact_ring(const CompactSlot& sl) {
   const std::uint32_t d = sl.d;
   std::uint32_t succ[16] = {};
+  std::uint64_t packed = 0;
   const __m128i count = _mm_set1_epi16(short(d));
   const __m128i lo = _mm_and_si128(_mm_cmplt_epi16(_mm_setr_epi16(0, 1, 2, 3, 4, 5, 6, 7), count),
                                    _mm_loadu_si128(reinterpret_cast<const __m128i*>(sl.prev)));
   const __m128i hi = _mm_and_si128(_mm_cmplt_epi16(_mm_setr_epi16(8, 9, 10, 11, 12, 13, 14, 15), count),
                                    _mm_loadl_epi64(reinterpret_cast<const __m128i*>(sl.prev + 8)));
   bool linked = true;
-  for (std::uint32_t i = 0; i < d; ++i) {
+  auto corner = [&](std::uint32_t i) {
     const std::int16_t w = sl.next[i];
     const __m128i x = _mm_set1_epi16(w);
     const std::uint32_t m = std::uint32_t(_mm_movemask_epi8(_mm_packs_epi16(_mm_cmpeq_epi16(lo, x), _mm_cmpeq_epi16(hi, x))));
-    linked &= (w != 0) & (m != 0);
-    succ[i] = std::uint32_t(__builtin_ctz(m | 0x8000u)) & 15u;
+    const std::uint32_t next = std::uint32_t(__builtin_ctz(m | 0x8000u)) & 15u;
+    if constexpr (Packed) {
+      linked &= (i >= d) | ((w != 0) & (m != 0));
+      packed |= std::uint64_t(i < d ? next : 0u) << (4 * i);
+    } else {
+      linked &= (w != 0) & (m != 0);
+      succ[i] = next;
+    }
+  };
+  if constexpr (Packed) {
+    for (std::uint32_t i = 0; i < 8; ++i) corner(i);
+    if (d > 8)
+      for (std::uint32_t i = 8; i < kCompactPairs; ++i) corner(i);
+  } else {
+    for (std::uint32_t i = 0; i < d; ++i) corner(i);
   }
   std::uint32_t k = 0, returns = 0;
   for (std::uint32_t step = 1; step <= kCompactPairs; ++step) {
-    k = succ[k];
+    if constexpr (Packed) k = std::uint32_t(packed >> (4 * k)) & 15u;
+    else k = succ[k];
     returns |= std::uint32_t(k == 0) << step;
   }
   return linked & (std::uint32_t(__builtin_ctz(returns | (1u << (kCompactPairs + 1)))) == d);
+}
+
+// The ring test as one walk: from corner 0, each step finds the corners arriving from the vertex
+// the current corner leaves to (one 16-lane compare); exactly one must, and it is the next corner.
+// One closed ring through all d corners when the walk returns to corner 0 first after exactly d
+// steps, having found exactly one corner at every step: then every corner was visited once, the
+// successor map is a permutation (as in one_smooth_ring's argument), and no search had two
+// candidates. d searches in all, no separate successor table and walk; but each search waits for
+// the one before (a dependent chain of about d x 15 cycles).
+inline bool one_compact_ring_walk(const CompactSlot& sl) {
+  const std::uint32_t d = sl.d;
+  const __m128i count = _mm_set1_epi16(short(d));
+  const __m128i lo = _mm_and_si128(_mm_cmplt_epi16(_mm_setr_epi16(0, 1, 2, 3, 4, 5, 6, 7), count),
+                                   _mm_loadu_si128(reinterpret_cast<const __m128i*>(sl.prev)));
+  const __m128i hi = _mm_and_si128(_mm_cmplt_epi16(_mm_setr_epi16(8, 9, 10, 11, 12, 13, 14, 15), count),
+                                   _mm_loadl_epi64(reinterpret_cast<const __m128i*>(sl.prev + 8)));
+  bool ok = true;
+  std::uint32_t k = 0, returned_at = 0;
+  for (std::uint32_t step = 1; step <= d; ++step) {
+    const std::int16_t w = sl.next[k];
+    const __m128i x = _mm_set1_epi16(w);
+    const std::uint32_t m = std::uint32_t(_mm_movemask_epi8(_mm_packs_epi16(_mm_cmpeq_epi16(lo, x), _mm_cmpeq_epi16(hi, x))));
+    ok &= (w != 0) & (m != 0) & ((m & (m - 1)) == 0);
+    k = std::uint32_t(__builtin_ctz(m | 0x8000u)) & 15u;
+    returned_at = (k == 0 && returned_at == 0) ? step : returned_at;
+  }
+  return ok & (returned_at == d);
 }
 
 struct Round6Scratch {
@@ -411,7 +458,8 @@ inline std::size_t add_faces_to_compact_slots(const MeshView& mesh, std::size_t 
 
 // Layout C. passes: 1 = pass 1 only; 2 = all; 3 = all with the ring test taken as passed (not a
 // correct result: what everything but the ring test costs).
-inline Result run_layout_c(const Mesh& mesh, double crease_angle, int passes, bool fresh, Round6Scratch& scratch) {
+inline Result run_layout_c(const Mesh& mesh, double crease_angle, int passes, bool fresh, Round6Scratch& scratch,
+                           int ring = 0) {
   Result out;
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners(), F = mesh.num_faces();
   const Cone cone(crease_angle);
@@ -437,7 +485,7 @@ inline Result run_layout_c(const Mesh& mesh, double crease_angle, int passes, bo
     if (sl.d == 0) continue;
     const double* sv = &S[3 * std::size_t(v)];
     double* o = &S[3 * std::size_t(used)];  // used <= v: row v read before row `used` is written
-    const bool easy = sl.d <= kCompactPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && (passes == 3 || one_compact_ring(sl)) &&
+    const bool easy = sl.d <= kCompactPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && (passes == 3 || (ring == 2 ? one_compact_ring_walk(sl) : ring == 1 ? one_compact_ring<true>(sl) : one_compact_ring(sl))) &&
                       normalise_sum(sv[0], sv[1], sv[2], o);
     if (!easy) { ++out.hard; s.row[v] = ~0u; }
     ++used;
