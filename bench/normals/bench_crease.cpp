@@ -20,12 +20,16 @@
 // exact path with today's output, (i) vertex_normals + writing corner_index, (ii) (i) + every
 // corner's unit face normal summed into its vertex's cone evidence (SmoothCone) in the same pass,
 // no ring test, (iii) (ii) + 12 (next, prev) pairs of 16-bit offsets per vertex and the ring test
-// (layout C; and the same with the ring test taken as passed: its cost); and the library's one-thread path up to its hard vertices in its own 128-byte slots
+// (layout C; the same with the ring test taken as passed: its cost; and with other forms of the
+// ring test: the walk in a register, one walk of dependent searches, 8 vertices at once in SSE2
+// lanes, 16 in AVX2 lanes where the CPU has AVX2); and the library's one-thread path up to its hard vertices in its own 128-byte slots
 // (layout L), each layout with fresh scratch per call (as the library allocates), with the
-// caller's scratch reused (no page faults after the first call), and pass 1 alone. --round4 adds
+// caller's scratch reused (no page faults after the first call), pass 1 alone, and (AVX2) its ring
+// test on 8 vertices at once. --round4 adds
 // the fourth round's rows of the same file (variants A and B). Lines after the rows say how many
 // vertices each of (ii), C and L left hard, check their easy vertices' normals against
-// corner_normals bit for bit, and count the vertices with a neighbour outside 16-bit offsets.
+// corner_normals bit for bit, check the vectorised ring tests' verdicts against the scalar ones at
+// every vertex, and count the vertices with a neighbour outside 16-bit offsets.
 // Repetitions interleaved round-robin
 // (rep 1 of every row, then rep 2, ...) after one warm-up, inside one TBB arena of 1 thread; medians of wall and process CPU time.
 // The new and old crease outputs are compared bit for bit once per mesh (a mismatch is reported
@@ -194,7 +198,7 @@ int main(int argc, char** argv) {
     std::vector<double> slot_sums;
     crease_new_shape::Result shape;
     crease_new_shape::Round6Scratch scratch6;
-    crease_new_shape::Result floor_i, floor_ii, layout_l, layout_c, layout_c_packed, layout_c_walk;
+    crease_new_shape::Result floor_i, floor_ii, layout_l, layout_c, layout_c_packed, layout_c_walk, layout_c_x8, layout_c_x16, layout_l_x8;
     if (floor && mesh.all_triangles()) {
       rows.push_back({"floor (i): vertex_normals + corner_index", [&, C = mesh.num_corners()] {
                         floor_i.normals = vertex_normals(mesh, Weighting::Angle).normals;
@@ -218,6 +222,13 @@ int main(int argc, char** argv) {
       rows.push_back({"layout C, ring test as one walk of d searches", [&] {
                         layout_c_walk = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 2);
                       }, {}, {}});
+      rows.push_back({"layout C, ring test of 8 vertices at once (SSE2 lanes)", [&] {
+                        layout_c_x8 = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 3);
+                      }, {}, {}});
+      if (__builtin_cpu_supports("avx2"))
+        rows.push_back({"layout C, ring test of 16 vertices at once (AVX2 lanes)", [&] {
+                          layout_c_x16 = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 4);
+                        }, {}, {}});
       rows.push_back({"layout C, ring test taken as passed (its cost)", [&] {
                         crease_new_shape::run_layout_c(mesh, crease, 3, true, scratch6);
                       }, {}, {}});
@@ -227,6 +238,10 @@ int main(int argc, char** argv) {
       rows.push_back({"layout L (library's 128 B slot), hard left out", [&] {
                         layout_l = crease_new_shape::run_layout_l(mesh, crease, 2, true, scratch6);
                       }, {}, {}});
+      if (__builtin_cpu_supports("avx2"))
+        rows.push_back({"layout L, ring test of 8 vertices at once (AVX2 lanes)", [&] {
+                          layout_l_x8 = crease_new_shape::run_layout_l(mesh, crease, 2, true, scratch6, 4);
+                        }, {}, {}});
       rows.push_back({"layout L, scratch reused", [&] {
                         crease_new_shape::run_layout_l(mesh, crease, 2, false, scratch6);
                       }, {}, {}});
@@ -280,7 +295,9 @@ int main(int argc, char** argv) {
                   median(r.cpu) / base);
     const std::pair<const char*, const crease_new_shape::Result*> shapes[] = {
         {"new shape A", &shape}, {"new shape B", &shape_b}, {"floor (ii)", &floor_ii}, {"layout C", &layout_c},
-        {"layout C, register walk", &layout_c_packed}, {"layout C, one walk", &layout_c_walk}, {"layout L", &layout_l}};
+        {"layout C, register walk", &layout_c_packed}, {"layout C, one walk", &layout_c_walk},
+        {"layout C, 8 at once", &layout_c_x8}, {"layout C, 16 at once", &layout_c_x16}, {"layout L", &layout_l},
+        {"layout L, 8 at once", &layout_l_x8}};
     for (const auto& [label, sh] : shapes) {
       if (!sh->used) continue;
       const crease_new_shape::Result& shape = *sh;
@@ -293,6 +310,48 @@ int main(int argc, char** argv) {
       }
       std::printf("| %s | | %s: %zu of %zu vertices hard (%.1f%%); %zu easy corners, %zu differ from corner_normals | | | |\n",
                   name.c_str(), label, shape.hard, shape.used, 100.0 * double(shape.hard) / double(shape.used), easy, differ);
+      if (differ) status = 1;
+    }
+    if (floor && mesh.all_triangles()) {  // the 8-lane ring test against the scalar one, every vertex (the reused scratch's slots)
+      const auto& slots = scratch6.compact;
+      std::size_t differ = 0, rings = 0;
+      for (std::size_t b = 0; b + 8 <= mesh.num_vertices(); b += 8) {
+        const std::uint32_t m = crease_new_shape::compact_rings8(&slots[b]);
+        for (std::size_t k = 0; k < 8; ++k) {
+          const crease_new_shape::CompactSlot& sl = slots[b + k];
+          const bool scalar = sl.d >= 1 && sl.d <= crease_new_shape::kCompactPairs && crease_new_shape::one_compact_ring(sl);
+          const bool lanes = sl.d >= 1 && ((m >> k) & 1u);
+          differ += scalar != lanes;
+          rings += scalar;
+        }
+      }
+      std::size_t differ16 = 0;
+      if (__builtin_cpu_supports("avx2"))
+        for (std::size_t b = 0; b + 16 <= mesh.num_vertices(); b += 16) {
+          const std::uint32_t m = crease_new_shape::compact_rings16(&slots[b]);
+          for (std::size_t k = 0; k < 16; ++k) {
+            const crease_new_shape::CompactSlot& sl = slots[b + k];
+            const bool scalar = sl.d >= 1 && sl.d <= crease_new_shape::kCompactPairs && crease_new_shape::one_compact_ring(sl);
+            differ16 += scalar != (sl.d >= 1 && ((m >> k) & 1u));
+          }
+        }
+      std::printf("| %s | | layout C: the 8-lane ring test differs from the scalar one at %zu vertices, the 16-lane at %zu (%zu rings) | | | |\n",
+                  name.c_str(), differ, differ16, rings);
+      differ += differ16;
+      std::size_t differ_l = 0, rings_l = 0;  // the library's slots (the reused scratch's) against slot_rings8
+      if (__builtin_cpu_supports("avx2"))
+        for (std::uint32_t b = 0; b + 8 <= mesh.num_vertices(); b += 8) {
+          const std::uint32_t m = crease_new_shape::slot_rings8(b, &scratch6.slots[b]);
+          for (std::uint32_t k = 0; k < 8; ++k) {
+            const auto& sl = scratch6.slots[b + k];
+            const bool scalar = sl.d >= 1 && sl.d <= normals_detail::kSlotPairs && normals_detail::one_smooth_ring(b + k, sl);
+            differ_l += scalar != (sl.d >= 1 && ((m >> k) & 1u));
+            rings_l += scalar;
+          }
+        }
+      std::printf("| %s | | layout L: the 8-lane ring test differs from one_smooth_ring at %zu vertices (%zu rings) | | | |\n",
+                  name.c_str(), differ_l, rings_l);
+      differ += differ_l;
       if (differ) status = 1;
     }
     if (floor && mesh.all_triangles()) {  // why layout C leaves vertices hard: 16-bit offsets

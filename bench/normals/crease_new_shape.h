@@ -31,6 +31,7 @@
 #include <shadetool/normals/engine/vertex_slots.h>
 
 #include <emmintrin.h>
+#include <immintrin.h>
 
 namespace crease_new_shape {
 
@@ -343,6 +344,119 @@ inline bool one_compact_ring_walk(const CompactSlot& sl) {
   return ok & (returned_at == d);
 }
 
+// The ring test of 8 consecutive vertices at once (SSE2, one int16 lane per vertex): the slots'
+// 24 offsets transposed into 12 "next" and 12 "prev" vectors (8x8 transposes by unpacks); corner j
+// of a lane exists when j < d (prev lanes beyond d set to 0, the vertex itself); each corner's
+// successor is the LAST corner arriving from the vertex it leaves to (a max over j: any choice that
+// depends only on that vertex keeps one_smooth_ring's argument: a walk that visits all d corners
+// once makes the successor map a permutation, so no far vertex is left or reached twice), then the
+// walk from corner 0 by compares and masks, up to the block's largest d (at most 12). Returns bit k
+// set when lane k's corners form one closed ring, exactly as one_compact_ring decides.
+inline void transpose8x8_epi16(const __m128i* r, __m128i* out) {
+  const __m128i a0 = _mm_unpacklo_epi16(r[0], r[1]), a1 = _mm_unpackhi_epi16(r[0], r[1]);
+  const __m128i a2 = _mm_unpacklo_epi16(r[2], r[3]), a3 = _mm_unpackhi_epi16(r[2], r[3]);
+  const __m128i a4 = _mm_unpacklo_epi16(r[4], r[5]), a5 = _mm_unpackhi_epi16(r[4], r[5]);
+  const __m128i a6 = _mm_unpacklo_epi16(r[6], r[7]), a7 = _mm_unpackhi_epi16(r[6], r[7]);
+  const __m128i b0 = _mm_unpacklo_epi32(a0, a2), b1 = _mm_unpackhi_epi32(a0, a2);
+  const __m128i b2 = _mm_unpacklo_epi32(a1, a3), b3 = _mm_unpackhi_epi32(a1, a3);
+  const __m128i b4 = _mm_unpacklo_epi32(a4, a6), b5 = _mm_unpackhi_epi32(a4, a6);
+  const __m128i b6 = _mm_unpacklo_epi32(a5, a7), b7 = _mm_unpackhi_epi32(a5, a7);
+  out[0] = _mm_unpacklo_epi64(b0, b4); out[1] = _mm_unpackhi_epi64(b0, b4);
+  out[2] = _mm_unpacklo_epi64(b1, b5); out[3] = _mm_unpackhi_epi64(b1, b5);
+  out[4] = _mm_unpacklo_epi64(b2, b6); out[5] = _mm_unpackhi_epi64(b2, b6);
+  out[6] = _mm_unpacklo_epi64(b3, b7); out[7] = _mm_unpackhi_epi64(b3, b7);
+}
+
+inline std::uint32_t compact_rings8(const CompactSlot* sl) {
+  __m128i rows[8], cols[24];
+  std::uint32_t dmax = 0;
+  alignas(16) std::int16_t dl[8];
+  for (int r = 0; r < 8; ++r) {
+    const std::uint32_t d = sl[r].d < 13u ? sl[r].d : 13u;
+    dl[r] = std::int16_t(d);
+    dmax = d > dmax ? d : dmax;
+  }
+  dmax = dmax < kCompactPairs ? dmax : kCompactPairs;
+  const __m128i D = _mm_load_si128(reinterpret_cast<const __m128i*>(dl));
+  for (int part = 0; part < 3; ++part) {  // bytes 16-31, 32-47, 48-63 of each slot
+    for (int r = 0; r < 8; ++r) rows[r] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(sl[r].next) + part);
+    transpose8x8_epi16(rows, cols + 8 * part);
+  }
+  const __m128i* N = cols;       // N[i]: next offset of corner i, 8 lanes
+  __m128i* P = cols + 12;        // P[j]: prev offset of corner j
+  const __m128i zero = _mm_setzero_si128();
+  __m128i S[kCompactPairs];
+  __m128i bad = zero;
+  for (std::uint32_t j = 0; j < dmax; ++j) P[j] = _mm_and_si128(P[j], _mm_cmpgt_epi16(D, _mm_set1_epi16(short(j))));
+  for (std::uint32_t i = 0; i < dmax; ++i) {
+    __m128i s = zero;
+    for (std::uint32_t j = 0; j < dmax; ++j)
+      s = _mm_max_epi16(s, _mm_and_si128(_mm_cmpeq_epi16(N[i], P[j]), _mm_set1_epi16(short(j + 1))));
+    S[i] = s;
+    const __m128i has = _mm_cmpgt_epi16(D, _mm_set1_epi16(short(i)));
+    bad = _mm_or_si128(bad, _mm_and_si128(has, _mm_or_si128(_mm_cmpeq_epi16(N[i], zero), _mm_cmpeq_epi16(s, zero))));
+  }
+  __m128i K = zero, R = zero;
+  for (std::uint32_t step = 1; step <= dmax; ++step) {
+    __m128i k1 = zero;
+    for (std::uint32_t j = 0; j < dmax; ++j) k1 = _mm_or_si128(k1, _mm_and_si128(_mm_cmpeq_epi16(K, _mm_set1_epi16(short(j))), S[j]));
+    K = _mm_sub_epi16(k1, _mm_set1_epi16(1));
+    const __m128i first = _mm_and_si128(_mm_cmpeq_epi16(K, zero), _mm_cmpeq_epi16(R, zero));
+    R = _mm_or_si128(R, _mm_and_si128(first, _mm_set1_epi16(short(step))));
+  }
+  const __m128i ok = _mm_andnot_si128(bad, _mm_cmpeq_epi16(R, D));
+  const std::uint32_t bytes = std::uint32_t(_mm_movemask_epi8(_mm_packs_epi16(ok, zero)));
+  return bytes & 0xffu;
+}
+
+// compact_rings8 on 16 consecutive vertices in AVX2 (16 int16 lanes; the transposes as two SSE2
+// 8x8 blocks joined): bit k of the result for lane k. Callers check __builtin_cpu_supports("avx2").
+__attribute__((target("avx2"))) inline std::uint32_t compact_rings16(const CompactSlot* sl) {
+  __m128i rows[8], lo[24], hi[24];
+  std::uint32_t dmax = 0;
+  alignas(32) std::int16_t dl[16];
+  for (int r = 0; r < 16; ++r) {
+    const std::uint32_t d = sl[r].d < 13u ? sl[r].d : 13u;
+    dl[r] = std::int16_t(d);
+    dmax = d > dmax ? d : dmax;
+  }
+  dmax = dmax < kCompactPairs ? dmax : kCompactPairs;
+  const __m256i D = _mm256_load_si256(reinterpret_cast<const __m256i*>(dl));
+  for (int half = 0; half < 2; ++half)
+    for (int part = 0; part < 3; ++part) {
+      for (int r = 0; r < 8; ++r) rows[r] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(sl[8 * half + r].next) + part);
+      transpose8x8_epi16(rows, (half ? hi : lo) + 8 * part);
+    }
+  __m256i N[12], P[12], S[12];
+  for (int i = 0; i < 12; ++i) {
+    N[i] = _mm256_inserti128_si256(_mm256_castsi128_si256(lo[i]), hi[i], 1);
+    P[i] = _mm256_inserti128_si256(_mm256_castsi128_si256(lo[12 + i]), hi[12 + i], 1);
+  }
+  const __m256i zero = _mm256_setzero_si256();
+  __m256i bad = zero;
+  for (std::uint32_t j = 0; j < dmax; ++j) P[j] = _mm256_and_si256(P[j], _mm256_cmpgt_epi16(D, _mm256_set1_epi16(short(j))));
+  for (std::uint32_t i = 0; i < dmax; ++i) {
+    __m256i s = zero;
+    for (std::uint32_t j = 0; j < dmax; ++j)
+      s = _mm256_max_epi16(s, _mm256_and_si256(_mm256_cmpeq_epi16(N[i], P[j]), _mm256_set1_epi16(short(j + 1))));
+    S[i] = s;
+    const __m256i has = _mm256_cmpgt_epi16(D, _mm256_set1_epi16(short(i)));
+    bad = _mm256_or_si256(bad, _mm256_and_si256(has, _mm256_or_si256(_mm256_cmpeq_epi16(N[i], zero), _mm256_cmpeq_epi16(s, zero))));
+  }
+  __m256i K = zero, R = zero;
+  for (std::uint32_t step = 1; step <= dmax; ++step) {
+    __m256i k1 = zero;
+    for (std::uint32_t j = 0; j < dmax; ++j)
+      k1 = _mm256_or_si256(k1, _mm256_and_si256(_mm256_cmpeq_epi16(K, _mm256_set1_epi16(short(j))), S[j]));
+    K = _mm256_sub_epi16(k1, _mm256_set1_epi16(1));
+    const __m256i first = _mm256_and_si256(_mm256_cmpeq_epi16(K, zero), _mm256_cmpeq_epi16(R, zero));
+    R = _mm256_or_si256(R, _mm256_and_si256(first, _mm256_set1_epi16(short(step))));
+  }
+  const __m256i ok = _mm256_andnot_si256(bad, _mm256_cmpeq_epi16(R, D));
+  const std::uint32_t m = std::uint32_t(_mm256_movemask_epi8(_mm256_packs_epi16(ok, zero)));  // bytes 0-7 and 16-23
+  return (m & 0xffu) | ((m >> 8) & 0xff00u);
+}
+
 struct Round6Scratch {
   BulkVector<VertexSlot<double>> slots;
   BulkVector<CompactSlot> compact;
@@ -350,8 +464,72 @@ struct Round6Scratch {
   BulkVector<std::uint32_t> row;
 };
 
+// one_smooth_ring (vertex_slots.h) of 8 consecutive vertices at once on the library's slots (AVX2,
+// one 32-bit lane per vertex; compact_rings8's method: 4x4 transposes, prev lanes beyond d set to
+// the vertex itself, successor = the last corner arriving from the vertex left to, the walk by
+// compares and masks up to the block's largest d, at most kSlotPairs). Reads 12 lanes of next and
+// prev (the 12th is the next field or slot: masked, as one_smooth_ring's). Bit k for lane k.
+__attribute__((target("avx2"))) inline std::uint32_t slot_rings8(std::uint32_t v0, const VertexSlot<double>* sl) {
+  constexpr std::uint32_t kPairs = normals_detail::kSlotPairs;
+  __m128i c[2][24];  // [half][column]: next 0-11, prev 0-11
+  std::uint32_t dmax = 0;
+  alignas(32) std::int32_t dl[8];
+  for (int r = 0; r < 8; ++r) {
+    const std::uint32_t d = sl[r].d < kPairs + 1 ? sl[r].d : kPairs + 1;
+    dl[r] = std::int32_t(d);
+    dmax = d > dmax ? d : dmax;
+  }
+  dmax = dmax < kPairs ? dmax : kPairs;
+  for (int half = 0; half < 2; ++half)
+    for (int q = 0; q < 6; ++q) {
+      __m128i r[4];
+      for (int k = 0; k < 4; ++k) {
+        const std::uint32_t* base = q < 3 ? sl[4 * half + k].next : sl[4 * half + k].prev;
+        r[k] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(base + 4 * (q % 3)));
+      }
+      const __m128i t0 = _mm_unpacklo_epi32(r[0], r[1]), t1 = _mm_unpacklo_epi32(r[2], r[3]);
+      const __m128i t2 = _mm_unpackhi_epi32(r[0], r[1]), t3 = _mm_unpackhi_epi32(r[2], r[3]);
+      __m128i* out = c[half] + 4 * q;
+      out[0] = _mm_unpacklo_epi64(t0, t1); out[1] = _mm_unpackhi_epi64(t0, t1);
+      out[2] = _mm_unpacklo_epi64(t2, t3); out[3] = _mm_unpackhi_epi64(t2, t3);
+    }
+  __m256i N[12], P[12], S[12];
+  for (int i = 0; i < 12; ++i) {
+    N[i] = _mm256_inserti128_si256(_mm256_castsi128_si256(c[0][i]), c[1][i], 1);
+    P[i] = _mm256_inserti128_si256(_mm256_castsi128_si256(c[0][12 + i]), c[1][12 + i], 1);
+  }
+  const __m256i D = _mm256_load_si256(reinterpret_cast<const __m256i*>(dl));
+  const __m256i self = _mm256_add_epi32(_mm256_set1_epi32(int(v0)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+  const __m256i zero = _mm256_setzero_si256();
+  __m256i bad = zero;
+  for (std::uint32_t j = 0; j < dmax; ++j) {
+    const __m256i has = _mm256_cmpgt_epi32(D, _mm256_set1_epi32(int(j)));
+    P[j] = _mm256_or_si256(_mm256_and_si256(has, P[j]), _mm256_andnot_si256(has, self));
+  }
+  for (std::uint32_t i = 0; i < dmax; ++i) {
+    __m256i s = zero;
+    for (std::uint32_t j = 0; j < dmax; ++j)
+      s = _mm256_max_epi32(s, _mm256_and_si256(_mm256_cmpeq_epi32(N[i], P[j]), _mm256_set1_epi32(int(j + 1))));
+    S[i] = s;
+    const __m256i has = _mm256_cmpgt_epi32(D, _mm256_set1_epi32(int(i)));
+    bad = _mm256_or_si256(bad, _mm256_and_si256(has, _mm256_or_si256(_mm256_cmpeq_epi32(N[i], self), _mm256_cmpeq_epi32(s, zero))));
+  }
+  __m256i K = zero, R = zero;
+  for (std::uint32_t step = 1; step <= dmax; ++step) {
+    __m256i k1 = zero;
+    for (std::uint32_t j = 0; j < dmax; ++j)
+      k1 = _mm256_or_si256(k1, _mm256_and_si256(_mm256_cmpeq_epi32(K, _mm256_set1_epi32(int(j))), S[j]));
+    K = _mm256_sub_epi32(k1, _mm256_set1_epi32(1));
+    const __m256i first = _mm256_and_si256(_mm256_cmpeq_epi32(K, zero), _mm256_cmpeq_epi32(R, zero));
+    R = _mm256_or_si256(R, _mm256_and_si256(first, _mm256_set1_epi32(int(step))));
+  }
+  const __m256i ok = _mm256_andnot_si256(bad, _mm256_cmpeq_epi32(R, D));
+  return std::uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(ok)));
+}
+
 // Layout L. passes: 1 = pass 1 only; 2 = all.
-inline Result run_layout_l(const Mesh& mesh, double crease_angle, int passes, bool fresh, Round6Scratch& scratch) {
+// ring: 0 the library's one_smooth_ring; 4 slot_rings8 (AVX2).
+inline Result run_layout_l(const Mesh& mesh, double crease_angle, int passes, bool fresh, Round6Scratch& scratch, int ring = 0) {
   Result out;
   const std::size_t V = mesh.num_vertices(), C = mesh.num_corners(), F = mesh.num_faces();
   const Cone cone(crease_angle);
@@ -364,13 +542,15 @@ inline Result run_layout_l(const Mesh& mesh, double crease_angle, int passes, bo
   s.row.resize(V);
   reserve_bulk(s.pool, 3 * V);
   s.pool.resize(3 * V);
-  std::uint32_t used = 0;
+  std::uint32_t used = 0, block = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
     const VertexSlot<double>& sl = s.slots[v];
+    if (ring == 4 && (v & 7) == 0) block = v + 8 <= V ? slot_rings8(v, &sl) : 0;
     s.row[v] = used;
     if (sl.d == 0) continue;
     double* o = &s.pool[3 * std::size_t(used)];
-    const bool easy = sl.d <= normals_detail::kSlotPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && one_smooth_ring(v, sl) &&
+    const bool ring_ok = ring == 4 && v + 8 - (v & 7) <= V ? ((block >> (v & 7)) & 1u) != 0 : one_smooth_ring(v, sl);
+    const bool easy = sl.d <= normals_detail::kSlotPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && ring_ok &&
                       normalise_sum(sl.s[0], sl.s[1], sl.s[2], o);
     if (!easy) { ++out.hard; s.row[v] = ~0u; }
     ++used;
@@ -478,14 +658,20 @@ inline Result run_layout_c(const Mesh& mesh, double crease_angle, int passes, bo
   add_faces_to_compact_slots(MeshView(mesh), 0, F, S.data(), s.compact.data());
   if (passes == 1) return out;
   s.row.resize(V);
-  std::uint32_t used = 0;
+  std::uint32_t used = 0, block = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
     const CompactSlot& sl = s.compact[v];
+    if (ring == 3 && (v & 7) == 0) block = v + 8 <= V ? compact_rings8(&sl) : 0;
+    if (ring == 4 && (v & 15) == 0) block = v + 16 <= V ? compact_rings16(&sl) : 0;
     s.row[v] = used;
     if (sl.d == 0) continue;
     const double* sv = &S[3 * std::size_t(v)];
     double* o = &S[3 * std::size_t(used)];  // used <= v: row v read before row `used` is written
-    const bool easy = sl.d <= kCompactPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && (passes == 3 || (ring == 2 ? one_compact_ring_walk(sl) : ring == 1 ? one_compact_ring<true>(sl) : one_compact_ring(sl))) &&
+    const bool easy = sl.d <= kCompactPairs && cone.passes(sl.d, sl.u[0], sl.u[1], sl.u[2]) && (passes == 3 || (ring == 4   ? (v + 16 - (v & 15) <= V ? ((block >> (v & 15)) & 1u) != 0 : one_compact_ring(sl))
+                                      : ring == 3 ? (v + 8 - (v & 7) <= V ? ((block >> (v & 7)) & 1u) != 0 : one_compact_ring(sl))
+                                      : ring == 2 ? one_compact_ring_walk(sl)
+                                      : ring == 1 ? one_compact_ring<true>(sl)
+                                                  : one_compact_ring(sl))) &&
                       normalise_sum(sv[0], sv[1], sv[2], o);
     if (!easy) { ++out.hard; s.row[v] = ~0u; }
     ++used;
