@@ -464,68 +464,8 @@ struct Round6Scratch {
   BulkVector<std::uint32_t> row;
 };
 
-// one_smooth_ring (vertex_slots.h) of 8 consecutive vertices at once on the library's slots (AVX2,
-// one 32-bit lane per vertex; compact_rings8's method: 4x4 transposes, prev lanes beyond d set to
-// the vertex itself, successor = the last corner arriving from the vertex left to, the walk by
-// compares and masks up to the block's largest d, at most kSlotPairs). Reads 12 lanes of next and
-// prev (the 12th is the next field or slot: masked, as one_smooth_ring's). Bit k for lane k.
-__attribute__((target("avx2"))) inline std::uint32_t slot_rings8(std::uint32_t v0, const VertexSlot<double>* sl) {
-  constexpr std::uint32_t kPairs = normals_detail::kSlotPairs;
-  __m128i c[2][24];  // [half][column]: next 0-11, prev 0-11
-  std::uint32_t dmax = 0;
-  alignas(32) std::int32_t dl[8];
-  for (int r = 0; r < 8; ++r) {
-    const std::uint32_t d = sl[r].d < kPairs + 1 ? sl[r].d : kPairs + 1;
-    dl[r] = std::int32_t(d);
-    dmax = d > dmax ? d : dmax;
-  }
-  dmax = dmax < kPairs ? dmax : kPairs;
-  for (int half = 0; half < 2; ++half)
-    for (int q = 0; q < 6; ++q) {
-      __m128i r[4];
-      for (int k = 0; k < 4; ++k) {
-        const std::uint32_t* base = q < 3 ? sl[4 * half + k].next : sl[4 * half + k].prev;
-        r[k] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(base + 4 * (q % 3)));
-      }
-      const __m128i t0 = _mm_unpacklo_epi32(r[0], r[1]), t1 = _mm_unpacklo_epi32(r[2], r[3]);
-      const __m128i t2 = _mm_unpackhi_epi32(r[0], r[1]), t3 = _mm_unpackhi_epi32(r[2], r[3]);
-      __m128i* out = c[half] + 4 * q;
-      out[0] = _mm_unpacklo_epi64(t0, t1); out[1] = _mm_unpackhi_epi64(t0, t1);
-      out[2] = _mm_unpacklo_epi64(t2, t3); out[3] = _mm_unpackhi_epi64(t2, t3);
-    }
-  __m256i N[12], P[12], S[12];
-  for (int i = 0; i < 12; ++i) {
-    N[i] = _mm256_inserti128_si256(_mm256_castsi128_si256(c[0][i]), c[1][i], 1);
-    P[i] = _mm256_inserti128_si256(_mm256_castsi128_si256(c[0][12 + i]), c[1][12 + i], 1);
-  }
-  const __m256i D = _mm256_load_si256(reinterpret_cast<const __m256i*>(dl));
-  const __m256i self = _mm256_add_epi32(_mm256_set1_epi32(int(v0)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
-  const __m256i zero = _mm256_setzero_si256();
-  __m256i bad = zero;
-  for (std::uint32_t j = 0; j < dmax; ++j) {
-    const __m256i has = _mm256_cmpgt_epi32(D, _mm256_set1_epi32(int(j)));
-    P[j] = _mm256_or_si256(_mm256_and_si256(has, P[j]), _mm256_andnot_si256(has, self));
-  }
-  for (std::uint32_t i = 0; i < dmax; ++i) {
-    __m256i s = zero;
-    for (std::uint32_t j = 0; j < dmax; ++j)
-      s = _mm256_max_epi32(s, _mm256_and_si256(_mm256_cmpeq_epi32(N[i], P[j]), _mm256_set1_epi32(int(j + 1))));
-    S[i] = s;
-    const __m256i has = _mm256_cmpgt_epi32(D, _mm256_set1_epi32(int(i)));
-    bad = _mm256_or_si256(bad, _mm256_and_si256(has, _mm256_or_si256(_mm256_cmpeq_epi32(N[i], self), _mm256_cmpeq_epi32(s, zero))));
-  }
-  __m256i K = zero, R = zero;
-  for (std::uint32_t step = 1; step <= dmax; ++step) {
-    __m256i k1 = zero;
-    for (std::uint32_t j = 0; j < dmax; ++j)
-      k1 = _mm256_or_si256(k1, _mm256_and_si256(_mm256_cmpeq_epi32(K, _mm256_set1_epi32(int(j))), S[j]));
-    K = _mm256_sub_epi32(k1, _mm256_set1_epi32(1));
-    const __m256i first = _mm256_and_si256(_mm256_cmpeq_epi32(K, zero), _mm256_cmpeq_epi32(R, zero));
-    R = _mm256_or_si256(R, _mm256_and_si256(first, _mm256_set1_epi32(int(step))));
-  }
-  const __m256i ok = _mm256_andnot_si256(bad, _mm256_cmpeq_epi32(R, D));
-  return std::uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(ok)));
-}
+// Layout L's ring test on 8 vertices at once: the library's smooth_rings8 (engine/vertex_slots.h).
+inline std::uint32_t slot_rings8(std::uint32_t v0, const VertexSlot<double>* sl) { return smooth_rings8(v0, sl); }
 
 // Layout L. passes: 1 = pass 1 only; 2 = all.
 // ring: 0 the library's one_smooth_ring; 4 slot_rings8 (AVX2).
