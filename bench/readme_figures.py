@@ -380,7 +380,15 @@ def crease(args):
     exe = os.path.join(args.build_dir, "bench", "normals", "bench_crease")
     if not os.path.exists(exe):
         exe = os.path.join(args.build_dir, "bench", "bench_crease")
-    corpus = os.path.join(os.path.dirname(SRC), "shared", "corpus")
+    # the corpus lies beside the source tree (/work/main -> /work/shared/corpus); from a worktree
+    # (/work/wt/NAME) it is one level further up: the nearest ancestor that has one
+    corpus, up = "", SRC
+    while not corpus and os.path.dirname(up) != up:
+        up = os.path.dirname(up)
+        if os.path.isdir(os.path.join(up, "shared", "corpus")):
+            corpus = os.path.join(up, "shared", "corpus")
+    if not corpus:
+        raise RuntimeError("crease: no shared/corpus beside any parent of " + SRC)
     files = []
     for root, _, names in os.walk(corpus):
         files += [os.path.join(root, n) for n in names if n in ("counter.unitsmm.STL", "turbineblade.ply")]

@@ -1,7 +1,7 @@
 // bench_crease: crease normals (corner_normals, angle weighting, crease 30 degrees) against
 // angle-weighted vertex normals on the same mesh, one thread (issue 31 goal 3: at most 2x).
 //
-// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths]
+// Usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths] [--round4]
 // Meshes: the irregular UV sphere of bench_normals (about N triangles, default 1M; no edge above
 // 30 degrees, so every group is a whole vertex fan), a faceted icosahedron (its 20 flat faces
 // subdivided 4^7 times each: 1.3M triangles, real 41.8-degree creases along the 30 edges and
@@ -11,15 +11,26 @@
 // path without its probe, triangle meshes only; --no-paths drops them; their output is checked
 // against corner_normals' bit for bit),
 // and the frozen copy of the crease path before issue 31 (tests/support/corner_normals_reference.h;
-// --no-reference drops it); then three rows whose sum is the floor of a crease path built like
-// ours (--no-floor drops them): face_normals (the crease test needs them), the vertex -> corner
-// adjacency alone (count + fill of 4-byte corner ids, the cheapest vertex-major gathering of the
-// fans), and corner_group_normals given corner_normals' own groups (the weighted sums and
-// normalisation alone, the same kernel as vertex_normals); on triangle meshes, with the floor rows,
-// the rows of the "new shape" experiment (crease_new_shape.h: no vertex-major gathering for smooth
-// vertices; one face-order pass with fixed per-vertex slots; its hard vertices are counted, not
-// computed, so those rows are a floor; a line says how many vertices were hard and checks the easy
-// ones' normals against corner_normals bit for bit). Repetitions interleaved round-robin
+// --no-reference drops it); then (--no-floor drops them) three rows whose sum is the floor of a
+// crease path built like the general path: face_normals (the crease test needs them), the vertex
+// -> corner adjacency alone (count + fill of 4-byte corner ids, the cheapest vertex-major
+// gathering of the fans), and corner_group_normals given corner_normals' own groups (the weighted
+// sums and normalisation alone, the same kernel as vertex_normals); and on triangle meshes the
+// sixth round's rows (crease_new_shape.h, hard vertices counted, not computed): the floor of any
+// exact path with today's output, (i) vertex_normals + writing corner_index, (ii) (i) + every
+// corner's unit face normal summed into its vertex's cone evidence (SmoothCone) in the same pass,
+// no ring test, (iii) (ii) + 12 (next, prev) pairs of 16-bit offsets per vertex and the ring test
+// (layout C; the same with the ring test taken as passed: its cost; and with other forms of the
+// ring test: the walk in a register, one walk of dependent searches, 8 vertices at once in SSE2
+// lanes, 16 in AVX2 lanes where the CPU has AVX2); and the library's one-thread path up to its hard vertices in its own 128-byte slots
+// (layout L), each layout with fresh scratch per call (as the library allocates), with the
+// caller's scratch reused (no page faults after the first call), pass 1 alone, and (AVX2) its ring
+// test on 8 vertices at once. --round4 adds
+// the fourth round's rows of the same file (variants A and B). Lines after the rows say how many
+// vertices each of (ii), C and L left hard, check their easy vertices' normals against
+// corner_normals bit for bit, check the vectorised ring tests' verdicts against the scalar ones at
+// every vertex, and count the vertices with a neighbour outside 16-bit offsets.
+// Repetitions interleaved round-robin
 // (rep 1 of every row, then rep 2, ...) after one warm-up, inside one TBB arena of 1 thread; medians of wall and process CPU time.
 // The new and old crease outputs are compared bit for bit once per mesh (a mismatch is reported
 // and the exit code is 1).
@@ -100,7 +111,7 @@ double cpu_now() {
 int main(int argc, char** argv) {
   std::size_t faces = 1000000;
   int reps = 15;
-  bool reference = true, floor = true, paths = true;
+  bool reference = true, floor = true, paths = true, round4 = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::stoi(argv[++i]);
@@ -109,8 +120,9 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--no-reference")) reference = false;
     else if (!std::strcmp(argv[i], "--no-floor")) floor = false;
     else if (!std::strcmp(argv[i], "--no-paths")) paths = false;
+    else if (!std::strcmp(argv[i], "--round4")) round4 = true;
     else {
-      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths]\n");
+      std::fprintf(stderr, "usage: bench_crease [--reps R] [--faces N] [--file MESH]... [--no-reference] [--no-floor] [--no-paths] [--round4]\n");
       return 2;
     }
   }
@@ -185,7 +197,59 @@ int main(int argc, char** argv) {
     crease_new_shape::Result shape_b;
     std::vector<double> slot_sums;
     crease_new_shape::Result shape;
+    crease_new_shape::Round6Scratch scratch6;
+    crease_new_shape::Result floor_i, floor_ii, layout_l, layout_c, layout_c_packed, layout_c_walk, layout_c_x8, layout_c_x16, layout_l_x8;
     if (floor && mesh.all_triangles()) {
+      rows.push_back({"floor (i): vertex_normals + corner_index", [&, C = mesh.num_corners()] {
+                        floor_i.normals = vertex_normals(mesh, Weighting::Angle).normals;
+                        BulkVector<std::uint32_t> ci(C);
+                        const std::uint32_t* cv = mesh.corner_vertex.data();
+                        for (std::size_t c = 0; c < C; ++c) ci[c] = cv[c];
+                        floor_i.corner_index.assign(ci.begin(), ci.end());
+                      }, {}, {}});
+      rows.push_back({"floor (ii): (i) + cone evidence per corner, no ring test", [&] {
+                        floor_ii = crease_new_shape::run_floor_cone(mesh, crease);
+                      }, {}, {}});
+      rows.push_back({"floor (iii) = layout C: (ii) + 12 pairs of 16-bit offsets, ring test (hard left out)", [&] {
+                        layout_c = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout C, scratch reused", [&] {
+                        crease_new_shape::run_layout_c(mesh, crease, 2, false, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout C, ring test: fixed 8-corner search, walk in a register", [&] {
+                        layout_c_packed = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 1);
+                      }, {}, {}});
+      rows.push_back({"layout C, ring test as one walk of d searches", [&] {
+                        layout_c_walk = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 2);
+                      }, {}, {}});
+      rows.push_back({"layout C, ring test of 8 vertices at once (SSE2 lanes)", [&] {
+                        layout_c_x8 = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 3);
+                      }, {}, {}});
+      if (__builtin_cpu_supports("avx2"))
+        rows.push_back({"layout C, ring test of 16 vertices at once (AVX2 lanes)", [&] {
+                          layout_c_x16 = crease_new_shape::run_layout_c(mesh, crease, 2, true, scratch6, 4);
+                        }, {}, {}});
+      rows.push_back({"layout C, ring test taken as passed (its cost)", [&] {
+                        crease_new_shape::run_layout_c(mesh, crease, 3, true, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout C, pass 1 only", [&] {
+                        crease_new_shape::run_layout_c(mesh, crease, 1, true, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout L (library's 128 B slot), hard left out", [&] {
+                        layout_l = crease_new_shape::run_layout_l(mesh, crease, 2, true, scratch6);
+                      }, {}, {}});
+      if (__builtin_cpu_supports("avx2"))
+        rows.push_back({"layout L, ring test of 8 vertices at once (AVX2 lanes)", [&] {
+                          layout_l_x8 = crease_new_shape::run_layout_l(mesh, crease, 2, true, scratch6, 4);
+                        }, {}, {}});
+      rows.push_back({"layout L, scratch reused", [&] {
+                        crease_new_shape::run_layout_l(mesh, crease, 2, false, scratch6);
+                      }, {}, {}});
+      rows.push_back({"layout L, pass 1 only", [&] {
+                        crease_new_shape::run_layout_l(mesh, crease, 1, true, scratch6);
+                      }, {}, {}});
+    }
+    if (floor && round4 && mesh.all_triangles()) {
       rows.push_back({"new shape: pass 1, sums only", [&] {
                         crease_new_shape::run<0>(mesh, crease, 1, slots, slot_sums);
                       }, {}, {}});
@@ -229,7 +293,12 @@ int main(int argc, char** argv) {
     for (Row& r : rows)
       std::printf("| %s | %zu | %s | %.2f | %.2f | %.2fx |\n", name.c_str(), mesh.num_faces(), r.name, median(r.wall), median(r.cpu),
                   median(r.cpu) / base);
-    for (const auto* sh : {&shape, &shape_b}) {
+    const std::pair<const char*, const crease_new_shape::Result*> shapes[] = {
+        {"new shape A", &shape}, {"new shape B", &shape_b}, {"floor (ii)", &floor_ii}, {"layout C", &layout_c},
+        {"layout C, register walk", &layout_c_packed}, {"layout C, one walk", &layout_c_walk},
+        {"layout C, 8 at once", &layout_c_x8}, {"layout C, 16 at once", &layout_c_x16}, {"layout L", &layout_l},
+        {"layout L, 8 at once", &layout_l_x8}};
+    for (const auto& [label, sh] : shapes) {
       if (!sh->used) continue;
       const crease_new_shape::Result& shape = *sh;
       std::size_t differ = 0, easy = 0;
@@ -239,9 +308,65 @@ int main(int argc, char** argv) {
         ++easy;
         differ += std::memcmp(&shape.normals[3 * std::size_t(r)], &cn.normals[3 * std::size_t(cn.corner_index[c])], 24) != 0;
       }
-      std::printf("| %s | | new shape: %zu of %zu vertices hard (%.1f%%); %zu easy corners, %zu differ from corner_normals | | | |\n",
-                  name.c_str(), shape.hard, shape.used, 100.0 * double(shape.hard) / double(shape.used), easy, differ);
+      std::printf("| %s | | %s: %zu of %zu vertices hard (%.1f%%); %zu easy corners, %zu differ from corner_normals | | | |\n",
+                  name.c_str(), label, shape.hard, shape.used, 100.0 * double(shape.hard) / double(shape.used), easy, differ);
       if (differ) status = 1;
+    }
+    if (floor && mesh.all_triangles()) {  // the 8-lane ring test against the scalar one, every vertex (the reused scratch's slots)
+      const auto& slots = scratch6.compact;
+      std::size_t differ = 0, rings = 0;
+      for (std::size_t b = 0; b + 8 <= mesh.num_vertices(); b += 8) {
+        const std::uint32_t m = crease_new_shape::compact_rings8(&slots[b]);
+        for (std::size_t k = 0; k < 8; ++k) {
+          const crease_new_shape::CompactSlot& sl = slots[b + k];
+          const bool scalar = sl.d >= 1 && sl.d <= crease_new_shape::kCompactPairs && crease_new_shape::one_compact_ring(sl);
+          const bool lanes = sl.d >= 1 && ((m >> k) & 1u);
+          differ += scalar != lanes;
+          rings += scalar;
+        }
+      }
+      std::size_t differ16 = 0;
+      if (__builtin_cpu_supports("avx2"))
+        for (std::size_t b = 0; b + 16 <= mesh.num_vertices(); b += 16) {
+          const std::uint32_t m = crease_new_shape::compact_rings16(&slots[b]);
+          for (std::size_t k = 0; k < 16; ++k) {
+            const crease_new_shape::CompactSlot& sl = slots[b + k];
+            const bool scalar = sl.d >= 1 && sl.d <= crease_new_shape::kCompactPairs && crease_new_shape::one_compact_ring(sl);
+            differ16 += scalar != (sl.d >= 1 && ((m >> k) & 1u));
+          }
+        }
+      std::printf("| %s | | layout C: the 8-lane ring test differs from the scalar one at %zu vertices, the 16-lane at %zu (%zu rings) | | | |\n",
+                  name.c_str(), differ, differ16, rings);
+      differ += differ16;
+      std::size_t differ_l = 0, rings_l = 0;  // the library's slots (the reused scratch's) against slot_rings8
+      if (__builtin_cpu_supports("avx2"))
+        for (std::uint32_t b = 0; b + 8 <= mesh.num_vertices(); b += 8) {
+          const std::uint32_t m = crease_new_shape::slot_rings8(b, &scratch6.slots[b]);
+          for (std::uint32_t k = 0; k < 8; ++k) {
+            const auto& sl = scratch6.slots[b + k];
+            const bool scalar = sl.d >= 1 && sl.d <= normals_detail::kSlotPairs && normals_detail::one_smooth_ring(b + k, sl);
+            differ_l += scalar != (sl.d >= 1 && ((m >> k) & 1u));
+            rings_l += scalar;
+          }
+        }
+      std::printf("| %s | | layout L: the 8-lane ring test differs from one_smooth_ring at %zu vertices (%zu rings) | | | |\n",
+                  name.c_str(), differ_l, rings_l);
+      differ += differ_l;
+      if (differ) status = 1;
+    }
+    if (floor && mesh.all_triangles()) {  // why layout C leaves vertices hard: 16-bit offsets
+      std::vector<std::uint8_t> wide(mesh.num_vertices(), 0);
+      const std::uint32_t* cv = mesh.corner_vertex.data();
+      for (std::size_t c = 0; c < mesh.num_corners(); ++c) {
+        const std::uint32_t v = cv[c], w = cv[c % 3 == 2 ? c - 2 : c + 1];
+        const bool far = (w - v + 32768u) >= 65536u;
+        wide[v] |= far;
+        wide[w] |= far;
+      }
+      std::size_t n = 0;
+      for (std::uint8_t x : wide) n += x;
+      std::printf("| %s | | layout C: %zu of %zu vertices have a neighbour more than 32767 ids away (%.1f%%) | | | |\n", name.c_str(), n,
+                  mesh.num_vertices(), 100.0 * double(n) / double(mesh.num_vertices()));
     }
     if (paths && (!same_bits(cn, general) || (mesh.all_triangles() && !same_bits(cn, one_thread)))) {
       std::printf("| %s | | MISMATCH: corner_normals' two paths differ | | | |\n", name.c_str());

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -567,4 +568,78 @@ TEST_CASE("corner_normals, one-thread path: two nearly coplanar closed fans on o
         }
         CHECK(one.corner_index[0] != one.corner_index[3 * first_fan]);
       }
+}
+
+// Issue 31 goal 3, sixth round: why an exact crease path cannot skip the parts of the floor that
+// bench_crease measures (bench/normals/results/notes.md, "sixth round: the floor"). Each pair of
+// meshes below agrees in everything a path that skipped one part would read, yet corner_normals
+// (and the frozen copy) give them different outputs; so such a path would be wrong on one of them.
+TEST_CASE("corner_normals, the floor's parts: (ii) the same rings with one face folded give another pool; "
+          "(iii) the same face data at a vertex in the same corner order, with other far vertices, give another pool",
+          "[corner_normals][reference][floor]") {
+  // (ii) A hexagonal fan around vertex 0 (one closed ring, every edge manifold), flat, and the same
+  // fan (the same corner_vertex: the same (next, prev) pairs at every corner) with the last rim
+  // vertex raised so that the last two faces tilt by more than 30 degrees. Only the face normals,
+  // compared at the vertex's corners (the last ones included), tell the two apart.
+  {
+    auto fan = [](double lift) {
+      Mesh m;
+      m.add_vertex({0, 0, 0});
+      for (int i = 0; i < 6; ++i) m.add_vertex({std::cos(kPi * i / 3), std::sin(kPi * i / 3), i == 5 ? lift : 0.0});
+      for (std::uint32_t i = 0; i < 6; ++i) m.add_face({0, 1 + i, 1 + (i + 1) % 6});
+      m.precision = ValuePrecision::Double;
+      return m;
+    };
+    const Mesh flat = fan(0.0), folded = fan(1.5);
+    REQUIRE(flat.corner_vertex == folded.corner_vertex);
+    for (const Mesh* m : {&flat, &folded}) check_same(*m, 30 * kDeg, Weighting::Angle, Precision::Double, "hexagonal fan");
+    const CornerNormals a = corner_normals(flat, 30 * kDeg, Weighting::Angle);
+    const CornerNormals b = corner_normals(folded, 30 * kDeg, Weighting::Angle);
+    auto rows_at_centre = [](const CornerNormals& n) {
+      std::vector<std::uint32_t> r;
+      for (std::size_t f = 0; f < 6; ++f) r.push_back(n.corner_index[3 * f]);
+      std::sort(r.begin(), r.end());
+      return std::size_t(std::unique(r.begin(), r.end()) - r.begin());
+    };
+    CHECK(rows_at_centre(a) == 1);
+    CHECK(rows_at_centre(b) > 1);  // the fold splits the centre: its last faces are their own group
+  }
+  // (iii) Vertex 0 with six faces whose positions, corner by corner and in the same order, are the
+  // same in both meshes: face k is (origin, p_k, p_{k+1}) with p_j at angle 120 j degrees on the unit
+  // circle. In `wound`, the far vertices are six distinct vertices r_0..r_5 (r_{j+3} at r_j's
+  // position) and the faces (0, r_k, r_{k+1 mod 6}): one closed ring winding twice around the
+  // origin, one group. In `pinched`, the faces are (0, r_0, r_1), (0, r_1, r_2), (0, r_2, r_0) and
+  // the same on r_3..r_5: two closed rings, two groups. Any per-corner datum computed from a face's
+  // positions (contribution, unit normal, angle, count) is the same bit for bit at every corner of
+  // vertex 0 in both, so its sums are too: only the far vertices' identities (ring evidence) tell
+  // one group from two.
+  {
+    auto build = [](bool pinched) {
+      Mesh m;
+      m.add_vertex({0, 0, 0});
+      for (int j = 0; j < 6; ++j) m.add_vertex({std::cos(2 * kPi * (j % 3) / 3), std::sin(2 * kPi * (j % 3) / 3), 0.0});
+      for (std::uint32_t k = 0; k < 6; ++k) {
+        const std::uint32_t next = pinched ? (k / 3) * 3 + (k + 1) % 3 : (k + 1) % 6;
+        m.add_face({0, 1 + k, 1 + next});
+      }
+      m.precision = ValuePrecision::Double;
+      return m;
+    };
+    const Mesh wound = build(false), pinched = build(true);
+    for (std::size_t f = 0; f < 6; ++f)  // the same positions at every corner of every face
+      for (int k = 0; k < 3; ++k) {
+        const Vec3d pa = wound.position(wound.corner_vertex[3 * f + k]), pb = pinched.position(pinched.corner_vertex[3 * f + k]);
+        CHECK(std::memcmp(&pa, &pb, sizeof pa) == 0);
+      }
+    CHECK(wound.corner_vertex != pinched.corner_vertex);
+    for (const Mesh* m : {&wound, &pinched})
+      for (Weighting w : kAll) check_same(*m, 30 * kDeg, w, Precision::Double, m == &wound ? "wound twice" : "pinched");
+    const CornerNormals a = corner_normals(wound, 30 * kDeg, Weighting::Angle);
+    const CornerNormals b = corner_normals(pinched, 30 * kDeg, Weighting::Angle);
+    for (std::size_t f = 1; f < 6; ++f) CHECK(a.corner_index[3 * f] == a.corner_index[0]);
+    CHECK(b.corner_index[3] == b.corner_index[0]);
+    CHECK(b.corner_index[6] == b.corner_index[0]);
+    CHECK(b.corner_index[9] != b.corner_index[0]);  // the second ring: its own row
+    CHECK(a.normals.size() != b.normals.size());
+  }
 }

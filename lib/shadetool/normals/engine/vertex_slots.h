@@ -37,6 +37,19 @@
 // first arriving corner, and every corner is some corner's successor): every edge at the vertex is
 // manifold and consistently oriented, and its d edges link all d corners into one group, exactly
 // as the edge-by-edge grouping would (given that no edge is a crease: SmoothCone's job).
+//
+// smooth_rings8 (x86-64 with AVX2, checked at run time by slot_ring_lanes_available): the same
+// verdict as one_smooth_ring for the 8 consecutive vertices v0 .. v0 + 7 at once, one 32-bit lane
+// per vertex: the slots' next and prev ids transposed into 12 + 12 vectors (4x4 transposes of
+// loads), prev lanes of corners j >= d set to the vertex itself, each corner's successor the LAST
+// corner arriving from the vertex it leaves to (a lane-wise max over j), and the walk from corner 0
+// by compares and masks for as many steps as the block's largest d (<= kSlotPairs). Exact by
+// one_smooth_ring's argument, which needs of the successor only that it arrive from the vertex
+// left to and be chosen by that vertex alone (first or last alike): a walk that returns to corner
+// 0 first after exactly d steps visits all d corners once, so the successor map is a permutation.
+// Bit k of the result: lane k passes. Why: one vertex at a time, the test was the largest step of
+// the one-thread path's pass 2 (figures: bench/normals/results/notes.md, sixth round). Requires
+// slots v0 .. v0 + 8 to exist (the eighth lane reads the next slot, masked).
 #pragma once
 
 #include <algorithm>
@@ -48,6 +61,10 @@
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define SHADETOOL_SLOT_RING_LANES 1
+#include <immintrin.h>
 #endif
 
 #include <shadetool/core/math_constants.h>
@@ -180,5 +197,72 @@ inline bool one_smooth_ring(std::uint32_t v, const VertexSlot<T>& sl) {
   }
   return linked & (std::uint32_t(__builtin_ctz(returns | (1u << (kSlotPairs + 1)))) == d);
 }
+
+#if defined(SHADETOOL_SLOT_RING_LANES)
+inline bool slot_ring_lanes_available() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+
+// See the header block.
+template <class T>
+__attribute__((target("avx2"))) std::uint32_t smooth_rings8(std::uint32_t v0, const VertexSlot<T>* sl) {
+  __m128i col[2][24];  // [lanes 0-3 | 4-7][next 0..11, prev 0..11]
+  alignas(32) std::int32_t dl[8];
+  std::uint32_t dmax = 0;
+  for (int r = 0; r < 8; ++r) {
+    const std::uint32_t d = sl[r].d < kSlotPairs + 1 ? sl[r].d : kSlotPairs + 1;  // > kSlotPairs: never a ring
+    dl[r] = std::int32_t(d);
+    dmax = d > dmax ? d : dmax;
+  }
+  dmax = dmax < kSlotPairs ? dmax : kSlotPairs;
+  for (int half = 0; half < 2; ++half)
+    for (int q = 0; q < 6; ++q) {  // next 0-3, 4-7, 8-11, prev 0-3, 4-7, 8-11 (lane 11: the field after, masked)
+      __m128i r[4];
+      for (int k = 0; k < 4; ++k) {
+        const std::uint32_t* base = q < 3 ? sl[4 * half + k].next : sl[4 * half + k].prev;
+        r[k] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(base + 4 * (q % 3)));
+      }
+      const __m128i t0 = _mm_unpacklo_epi32(r[0], r[1]), t1 = _mm_unpacklo_epi32(r[2], r[3]);
+      const __m128i t2 = _mm_unpackhi_epi32(r[0], r[1]), t3 = _mm_unpackhi_epi32(r[2], r[3]);
+      __m128i* out = col[half] + 4 * q;
+      out[0] = _mm_unpacklo_epi64(t0, t1); out[1] = _mm_unpackhi_epi64(t0, t1);
+      out[2] = _mm_unpacklo_epi64(t2, t3); out[3] = _mm_unpackhi_epi64(t2, t3);
+    }
+  __m256i next[12], prev[12], succ[12];
+  for (int i = 0; i < 12; ++i) {
+    next[i] = _mm256_inserti128_si256(_mm256_castsi128_si256(col[0][i]), col[1][i], 1);
+    prev[i] = _mm256_inserti128_si256(_mm256_castsi128_si256(col[0][12 + i]), col[1][12 + i], 1);
+  }
+  const __m256i d = _mm256_load_si256(reinterpret_cast<const __m256i*>(dl));
+  const __m256i self = _mm256_add_epi32(_mm256_set1_epi32(int(v0)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+  const __m256i zero = _mm256_setzero_si256();
+  for (std::uint32_t j = 0; j < dmax; ++j) {  // corners j >= d arrive from the vertex itself: no match
+    const __m256i in_fan = _mm256_cmpgt_epi32(d, _mm256_set1_epi32(int(j)));
+    prev[j] = _mm256_or_si256(_mm256_and_si256(in_fan, prev[j]), _mm256_andnot_si256(in_fan, self));
+  }
+  __m256i unlinked = zero;  // a corner of the fan leaving to the vertex itself or to no arriving corner
+  for (std::uint32_t i = 0; i < dmax; ++i) {
+    __m256i s = zero;  // 1 + the last corner arriving from next[i], or 0
+    for (std::uint32_t j = 0; j < dmax; ++j)
+      s = _mm256_max_epi32(s, _mm256_and_si256(_mm256_cmpeq_epi32(next[i], prev[j]), _mm256_set1_epi32(int(j + 1))));
+    succ[i] = s;
+    const __m256i in_fan = _mm256_cmpgt_epi32(d, _mm256_set1_epi32(int(i)));
+    unlinked = _mm256_or_si256(
+        unlinked, _mm256_and_si256(in_fan, _mm256_or_si256(_mm256_cmpeq_epi32(next[i], self), _mm256_cmpeq_epi32(s, zero))));
+  }
+  __m256i k = zero, returned = zero;  // the walk's corner; the first step at which it is back at 0
+  for (std::uint32_t step = 1; step <= dmax; ++step) {
+    __m256i k1 = zero;
+    for (std::uint32_t j = 0; j < dmax; ++j)
+      k1 = _mm256_or_si256(k1, _mm256_and_si256(_mm256_cmpeq_epi32(k, _mm256_set1_epi32(int(j))), succ[j]));
+    k = _mm256_sub_epi32(k1, _mm256_set1_epi32(1));  // -1 (never 0 again) where no successor
+    const __m256i first = _mm256_and_si256(_mm256_cmpeq_epi32(k, zero), _mm256_cmpeq_epi32(returned, zero));
+    returned = _mm256_or_si256(returned, _mm256_and_si256(first, _mm256_set1_epi32(int(step))));
+  }
+  const __m256i ring = _mm256_andnot_si256(unlinked, _mm256_cmpeq_epi32(returned, d));
+  return std::uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(ring)));
+}
+#endif
 
 }  // namespace shadetool::normals_detail
