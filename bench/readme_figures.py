@@ -410,14 +410,19 @@ def crease(args):
 def objread(args):
     """bench/io/obj_anchors.sh: our OBJ reader (1 and 2 threads) against fast_obj and rapidobj on
     the 1M- and 4M-triangle irregular spheres, one program, rows interleaved (issue 31 goal 1)."""
-    env = dict(os.environ, BUILD_DIR=args.build_dir)
+    # WAIT_IDLE: the 2-thread rows need both CPUs; wait up to 2 minutes for them to be idle (the
+    # script prints whether they were, and the other processes' CPU during each table).
+    env = dict(os.environ, BUILD_DIR=args.build_dir, WAIT_IDLE=os.environ.get("WAIT_IDLE", "120"))
     txt = run(["bash", "bench/io/obj_anchors.sh", str(max(args.reps, 7))], env=env)
-    out, mesh, rows = [], None, {}
+    out, mesh, rows, others = [], None, {}, None
 
     def flush():
         if not mesh or not rows:
             return
         one, two, fo = rows.get("shadetool read_mesh, 1 thread"), rows.get("shadetool read_mesh, 2 threads"), rows.get("fast_obj")
+        if others is not None:
+            out.append(Figure(f"read.others.{mesh}", "reading", f"CPU other processes used while the OBJ reading table ran ({mesh}; the 2-thread rows need both CPUs)",
+                              f"{others:.0f}% of one CPU", "", "", "bench/io/results.md"))
         ro = rows.get("rapidobj, 1 thread")
         if one and fo:
             out.append(judged(f"read.fast_obj.{mesh}", "reading", f"fast_obj time / our OBJ read, 1 thread ({mesh}; ours correctly rounded, wall)",
@@ -432,7 +437,11 @@ def objread(args):
         m = re.match(r"^(\S+\.obj): [\d.]+ MB", line)
         if m:
             flush()
-            mesh, rows = os.path.basename(m.group(1))[:-4], {}
+            mesh, rows, others = os.path.basename(m.group(1))[:-4], {}, None
+            continue
+        m = re.match(r"^other processes' CPU while the table ran: .*\((\d+)% of one CPU", line)
+        if m:
+            others = float(m.group(1))
             continue
         c = [x.strip() for x in line.strip().strip("|").split("|")]
         if mesh and len(c) == 8 and not c[0].startswith("-") and c[0] != "reader":

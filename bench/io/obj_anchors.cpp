@@ -17,7 +17,12 @@
 // time) and the ratios of medians to the first row (below 1: faster) are printed with
 // /proc/loadavg before and after.
 // Destroying a result is outside the timed region. After each table, the median minor page faults of
-// each row's runs (getrusage: 4 KiB faults, or one per 2 MiB huge page).
+// each row's runs (getrusage: 4 KiB faults, or one per 2 MiB huge page); for each 2-thread row the
+// median over its runs of wall / (CPU / 2) (1.00: both threads busy for the whole read; above it,
+// time one thread ran alone or waited: serial stages, the tail, or a CPU taken by another process);
+// and the CPU time other processes used while the table ran (/proc/stat's busy time of all CPUs
+// less this process's), the measured form of "was the machine quiet": on this 2-vCPU machine a busy
+// loop on the other vCPU doubles the wall time of a 1-thread read (bench/io/results.md, objread6).
 // Memory: M_MMAP_THRESHOLD is fixed at 1 MiB, as in io_read.cpp, so that every large block is a
 // fresh mapping in every repetition as in a one-shot process (no contender is flattered by glibc
 // recycling its last block).
@@ -33,6 +38,7 @@
 // whose name contains one of the TEXTs, for profiling one reader under perf)
 #include <malloc.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -99,6 +105,16 @@ double process_cpu_ms() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return (double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3) + (double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3);
+}
+
+// Busy time (not idle or iowait) of all CPUs since boot, in ms, from /proc/stat's first line.
+double machine_busy_ms() {
+  std::ifstream f("/proc/stat");
+  std::string cpu;
+  double user = 0, nice = 0, system = 0, idle = 0, iowait = 0, irq = 0, softirq = 0, steal = 0;
+  f >> cpu >> user >> nice >> system >> idle >> iowait >> irq >> softirq >> steal;
+  const long hz = sysconf(_SC_CLK_TCK);
+  return hz > 0 ? (user + nice + system + irq + softirq + steal) * 1e3 / double(hz) : 0.0;  // divisor checked
 }
 
 double median(std::vector<double> v) {
@@ -231,6 +247,8 @@ int main(int argc, char** argv) {
       c.reset();
     }
     const std::string load_before = loadavg();
+    const double busy0 = machine_busy_ms(), own0 = process_cpu_ms();
+    const auto table0 = std::chrono::steady_clock::now();
     // Each repetition runs the rows in its own order (a shuffle seeded by the repetition's number):
     // what a row leaves behind (memory it freed in 4 KiB pages, worker threads still spinning) is
     // charged to a different next row each time, not always to the same one.
@@ -253,6 +271,8 @@ int main(int argc, char** argv) {
       }
     }
     const std::string load_after = loadavg();
+    const double table_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - table0).count();
+    const double others_ms = std::max(0.0, (machine_busy_ms() - busy0) - (process_cpu_ms() - own0));
     const double mb = file_size(path) / 1e6;
     std::printf("%s: %.1f MB, %d runs per row interleaved, medians; load %s before, %s after\n", path.c_str(), mb, reps,
                 load_before.c_str(), load_after.c_str());
@@ -270,6 +290,15 @@ int main(int argc, char** argv) {
     std::printf("minor page faults per run (medians):");
     for (const Contender& c : rows) std::printf(" %s %.0f;", c.name.c_str(), median(c.faults));
     std::printf("\n");
+    for (const Contender& c : rows) {
+      if (c.name.find("2 threads") == std::string::npos) continue;
+      std::vector<double> stretch;
+      for (std::size_t i = 0; i < c.ms.size(); ++i)
+        if (c.cpu_ms[i] > 0) stretch.push_back(c.ms[i] / (c.cpu_ms[i] / 2));  // divisor checked
+      if (!stretch.empty()) std::printf("%s: wall / (CPU / 2), median over runs: %.2f\n", c.name.c_str(), median(stretch));
+    }
+    std::printf("other processes' CPU while the table ran: %.0f ms in %.0f ms (%.0f%% of one CPU; from /proc/stat)\n", others_ms,
+                table_ms, table_ms > 0 ? 100 * others_ms / table_ms : 0.0);  // divisor checked
     std::printf("\n");
   }
   return 0;

@@ -8,16 +8,13 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <optional>
 
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
-#include <tbb/parallel_invoke.h>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/bulk_reserve.h>
@@ -422,31 +419,6 @@ void merge_chunks(std::vector<ObjChunk>& chunks, ObjLines& s) {
   merge_statements(chunks, s.mesh);
 }
 
-// Fresh memory is faulted in page by page on its first write, the kernel zeroing each page: done
-// by the threads in parallel (MADV_POPULATE_WRITE, Linux 5.14) before resize() value-initialises
-// the arrays on one thread; elsewhere (or when the kernel refuses) resize() faults them in itself.
-template <class T>
-void populate_in_parallel(T* data, std::size_t n) {
-#if defined(__linux__)
-  constexpr int kPopulateWrite = 23;  // MADV_POPULATE_WRITE; glibc 2.36's headers may lack it
-  constexpr std::uintptr_t kBlock = std::uintptr_t(1) << 21;
-  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) & ~(std::uintptr_t(4095));
-  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(data + n);
-  if (end - begin < 4 * kBlock) return;
-  // Blocks on 2 MiB boundaries (the first and last clipped to the array): each huge page
-  // (reserve_bulk advises them) is faulted and zeroed by one call, not waited for by a second
-  // thread whose block starts inside it.
-  const std::uintptr_t first = begin & ~(kBlock - 1);
-  tbb::parallel_for(first, end, kBlock, [&](std::uintptr_t b) {
-    const std::uintptr_t from = std::max(b, begin), to = std::min(b + kBlock, end);
-    ::madvise(reinterpret_cast<void*>(from), to - from, kPopulateWrite);
-  });
-#else
-  (void)data;
-  (void)n;
-#endif
-}
-
 // The chunks of [0, size), every cut just after a line feed, so every line is whole in one chunk:
 // each chunk at least want(left) >= 1 bytes, left the bytes not yet cut; none once want(left) >= left.
 template <class Want>
@@ -587,21 +559,30 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
     total.corners += counts[i].corners;
     total.lines += counts[i].lines;
   }
+  // The arrays, sized by the counts, zero-filled by resize(): their first write, which faults in
+  // their fresh pages (the kernel zeroes each; reserve_bulk asks for huge pages) with the fill
+  // right behind it while the page is in cache. One array per task, largest first, on the threads
+  // at once (run_in_order: longest first balances the threads to within the smallest array, vn
+  // and vt pools included). Faulting them in first (MADV_POPULATE_WRITE in 2 MiB blocks) and
+  // filling after took the same time in quiet runs (bench/io/results.md, objread6) with more code.
   reserve_bulk(mesh.positions, 3 * total.v);
   reserve_bulk(mesh.corner_vertex, total.corners);
   reserve_bulk(mesh.face_start, total.faces + 1);
-  populate_in_parallel(mesh.positions.data(), 3 * total.v);
-  populate_in_parallel(mesh.corner_vertex.data(), total.corners);
-  populate_in_parallel(mesh.face_start.data(), total.faces + 1);
-  // std::vector zero-fills what resize() adds: the arrays side by side, one per thread, not one
-  // after another.
-  tbb::parallel_invoke([&] { mesh.positions.resize(3 * total.v); },
-                       [&] {
-                         mesh.corner_vertex.resize(total.corners);
-                         mesh.face_start.resize(total.faces + 1);
-                         s.normals.resize(3 * total.vn);
-                         s.tex.resize(3 * total.vt);
-                       });
+  reserve_bulk(s.normals, 3 * total.vn);
+  reserve_bulk(s.tex, 3 * total.vt);
+  struct Sized {
+    std::size_t bytes;
+    std::function<void()> resize;
+  };
+  std::array<Sized, 5> arrays_by_size{{
+      {3 * total.v * sizeof(double), [&] { mesh.positions.resize(3 * total.v); }},
+      {total.corners * sizeof(std::uint32_t), [&] { mesh.corner_vertex.resize(total.corners); }},
+      {(total.faces + 1) * sizeof(std::uint32_t), [&] { mesh.face_start.resize(total.faces + 1); }},
+      {3 * total.vn * sizeof(double), [&] { s.normals.resize(3 * total.vn); }},
+      {3 * total.vt * sizeof(double), [&] { s.tex.resize(3 * total.vt); }},
+  }};
+  std::stable_sort(arrays_by_size.begin(), arrays_by_size.end(), [](const Sized& a, const Sized& b) { return a.bytes > b.bytes; });
+  run_in_order(arrays_by_size.size(), threads, [&](std::size_t i) { arrays_by_size[i].resize(); });
   std::vector<std::exception_ptr> errors(n);
   std::vector<char> miscounted(n, 0);
   std::mutex progress_mutex;  // the cursor is serial: chunks report their bytes as they finish
