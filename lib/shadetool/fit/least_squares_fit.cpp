@@ -185,7 +185,7 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
   constexpr std::uint64_t kNone = ~std::uint64_t(0);
   // (lo, hi) of a midpoint; all ones: none. Written once for every point below (no fill first).
-  BulkVector<std::uint64_t> key(S);  // unzeroed (bulk_reserve.h); 24 MB at 1M triangles, 3 points
+  const std::unique_ptr<std::uint64_t[]> key(new std::uint64_t[S]);
   std::vector<std::uint32_t> offset(V + 1, 0);  // counts per lower vertex, then offsets
   std::size_t midpoints = 0;
   const auto set_key = [&](std::size_t p, bool midpoint, std::uint32_t a, std::uint32_t b) {
@@ -219,7 +219,7 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1);
   // not zero-filled: an entry is written before it is read (below end[lo]); at 1M triangles the
   // fill was two passes over 12 MB each
-  BulkVector<std::uint32_t> entry_hi(offset[V]), entry_site(offset[V]);
+  const std::unique_ptr<std::uint32_t[]> entry_hi(new std::uint32_t[offset[V]]), entry_site(new std::uint32_t[offset[V]]);
   q.site.resize(S);
   q.site_point.resize(S);
   std::size_t sites = 0;
@@ -662,11 +662,11 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
                               const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
-  // Unzeroed (BulkVector): the first direction writes p, the first operator pass clears Ap.
-  BulkVector<double> p_v(n), Ap_v(n);
+  // Not value-initialised: the first direction writes p, the first operator pass clears Ap.
+  const std::unique_ptr<double[]> p_v(new double[n]), Ap_v(new double[n]);
   double* const r = b_then_r;
-  double* const p = p_v.data();
-  double* const Ap = Ap_v.data();
+  double* const p = p_v.get();
+  double* const Ap = Ap_v.get();
   const double* const inv_d = inverse_diagonal.data();
   const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
   // out = A in, and in^T A in per channel (summed over the elements; rows off the system: in is 0
@@ -1032,14 +1032,12 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   if (off_system.size() < N) {
     // b and the solution with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its
     // solution is 0 and it stops at once), for add_triangle_products_4; otherwise the channels.
-    // Both BulkVector (unzeroed, huge pages: 16 MB each at 1M triangles): padded is written whole by
-    // the first guess below, b is zeroed here.
+    // padded is not value-initialised: the first guess below writes it whole.
     const std::size_t L = width == 3 ? 4 : width;
-    BulkVector<double> padded(L != width ? N * L : 0);
-    double* const x = L != width ? padded.data() : fit.values.data();
+    const std::unique_ptr<double[]> padded(L != width ? new double[N * L] : nullptr);
+    double* const x = L != width ? padded.get() : fit.values.data();
     // b for every channel in one pass over the points.
-    BulkVector<double> b;
-    b.assign(N * L, 0.0);
+    std::vector<double> b(N * L, 0.0);
     const TriangleLoads loads = triangle_loads(q.rule);
     const double* const in_system = off_system.empty() ? nullptr : inverse_diagonal.data();
     if (L == 4)

@@ -76,7 +76,6 @@
 #include <limits>
 #include <vector>
 
-#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/mesh.h>
 #include <shadetool/fit/triangle_quadrature.h>
 #include <shadetool/fit/vertex_fit.h>
@@ -135,7 +134,7 @@ struct FitQuadrature {
   std::size_t element_triangles = 0;        // the elements' triangle count (those of no area included)
   std::vector<std::uint32_t> tri_node;      // 3 per triangle of positive area, or empty: the vertices
   std::vector<std::uint32_t> tri_vertex;    // 3 per triangle of positive area (or empty: the elements')
-  BulkVector<double> tri_area;              // 1 per triangle of positive area
+  std::vector<double> tri_area;             // 1 per triangle of positive area
   std::vector<std::uint32_t> tri_face;      // 1 per triangle of positive area (or empty: the elements')
   const std::uint32_t* elements_vertex = nullptr;  // every triangle kept: the elements' (else null)
   const std::uint32_t* elements_node = nullptr;
@@ -145,13 +144,11 @@ struct FitQuadrature {
   std::vector<double> quad_phi;             // 4 per quad point
   std::vector<double> quad_weight;          // 1 per quad point
   std::vector<std::uint32_t> quad_face;     // 1 per quad point
-  // The sites' arrays (and tri_area) are BulkVector (core/bulk_reserve.h: unzeroed, huge pages):
-  // at 1M triangles they are 12 MB each, filled once, and 4 KiB page faults were most of their cost.
-  BulkVector<std::uint32_t> site;           // 1 per point, or empty (site p is point p)
-  BulkVector<std::uint32_t> site_point;     // 1 per site: its first point, or empty (identity)
+  std::vector<std::uint32_t> site;          // 1 per point, or empty (site p is point p)
+  std::vector<std::uint32_t> site_point;    // 1 per site: its first point, or empty (identity)
   // 2 per site when every point is an edge's midpoint (the 3-point rule on triangles only): the
   // edge's two vertices, lower first (a site's data is then 0.5 d_lo + 0.5 d_hi); else empty
-  BulkVector<std::uint32_t> site_edge;
+  std::vector<std::uint32_t> site_edge;
 
   std::size_t triangle_points() const { return tri_area.size() * rule.size(); }
   const std::uint32_t* triangle_vertices() const { return elements_vertex ? elements_vertex : tri_vertex.data(); }
