@@ -571,6 +571,42 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
   }
 }
 
+TEST_CASE("A large mesh's sites (keys recomputed, not stored) are one per edge, numbered by first point",
+          "[fit][quadrature]") {
+  // Truth: as above, a closed triangle mesh has E = 3T/2 edges and every 3-point-rule point is the
+  // midpoint of the edge of its two corners of weight 1/2. At 180k triangles (540k points, 8 bytes
+  // a key: above assign_sites' 4 MiB) the keys are recomputed in the second pass instead of stored:
+  // the sites must still be the edges, each with its two points, numbered in the order of their
+  // first point.
+  const Mesh mesh = shadetool::testing::torus(300, 300, 1.0, 0.4).mesh;
+  const FitElements e = fit_elements(mesh);
+  const FitQuadrature q3 = fit_quadrature(e, mesh.positions, 3);
+  REQUIRE(q3.size() * sizeof(std::uint64_t) >= (std::size_t(4) << 20));
+  REQUIRE(q3.sites() == 3 * e.triangles / 2);
+  REQUIRE(q3.site_edge.size() == 2 * q3.sites());
+  std::vector<int> points_per_site(q3.sites(), 0);
+  std::size_t wrong_edge = 0, out_of_order = 0, next_site = 0;
+  for (std::size_t s = 0; s < q3.size(); ++s) {
+    const std::size_t i = q3.site_of(s);
+    if (i == next_site) {  // a new site opens at its first point, in point order
+      out_of_order += q3.first_point(i) != s;
+      ++next_site;
+    } else {
+      out_of_order += i > next_site;
+    }
+    ++points_per_site[i];
+    const FitPoint pt = q3.point(s);
+    std::vector<std::uint32_t> ends;
+    for (int j = 0; j < pt.corners; ++j)
+      if (pt.phi[j] == 0.5) ends.push_back(pt.vertex[j]);
+    std::sort(ends.begin(), ends.end());
+    wrong_edge += ends != std::vector<std::uint32_t>{q3.site_edge[2 * i], q3.site_edge[2 * i + 1]};
+  }
+  CHECK(out_of_order == 0);
+  CHECK(wrong_edge == 0);
+  CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
+}
+
 TEST_CASE("The quadrature's triangle areas are the scalar formula's bits, for ordinary, huge, tiny, flat and non-finite triangles",
           "[fit][quadrature]") {
   // Truth: 0.5 |N| by geometry/face_area_vector.h's triangle_area_vector and core/vec3.h's length,

@@ -184,35 +184,41 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   }
   if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
   constexpr std::uint64_t kNone = ~std::uint64_t(0);
-  // (lo, hi) of a midpoint; all ones: none. Written once for every point below (no fill first).
-  const std::unique_ptr<std::uint64_t[]> key(new std::uint64_t[S]);
+  // fn(p, key) for every point p in order, key = (lo, hi) of a midpoint, all ones: none, from the
+  // point's vertices.
+  const std::uint32_t* const tri_vertex = q.triangle_vertices();
+  const auto for_each_key = [&](auto&& fn) {
+    const auto key_of = [](std::uint32_t a, std::uint32_t b) {
+      return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+    };
+    for (std::size_t j = 0, p = 0; j < T; ++j)
+      for (std::size_t k = 0; k < R; ++k, ++p) {
+        if (rule_edge[k][0] < 0) {
+          fn(p, kNone);
+          continue;
+        }
+        const std::uint32_t a = tri_vertex[3 * j + rule_edge[k][0]], b = tri_vertex[3 * j + rule_edge[k][1]];
+        fn(p, a != b ? key_of(a, b) : kNone);  // two distinct vertices: an edge's midpoint (midpoint_edge's rule)
+      }
+    for (std::size_t m = 0, p = q.triangle_points(); m < q.quad_weight.size(); ++m, ++p) {
+      std::uint32_t lo = 0, hi = 0;
+      fn(p, midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi) ? key_of(lo, hi) : kNone);
+    }
+  };
+  // The keys are stored by the first pass for the second while they fit in a core's cache (4 MiB:
+  // the 10k and 99k tori; reading them back is cheaper than recomputing them), and recomputed by
+  // the second pass above that (8 bytes a point: at 1M triangles and 3 points 24 MB that would be
+  // written to fresh pages and read back from memory). The same keys either way.
+  const bool store_keys = S * sizeof(std::uint64_t) < (std::size_t(4) << 20);
+  const std::unique_ptr<std::uint64_t[]> stored(store_keys ? new std::uint64_t[S] : nullptr);  // written before read
   std::vector<std::uint32_t> offset(V + 1, 0);  // counts per lower vertex, then offsets
   std::size_t midpoints = 0;
-  const auto set_key = [&](std::size_t p, bool midpoint, std::uint32_t a, std::uint32_t b) {
-    if (!midpoint) {
-      key[p] = kNone;
-      return;
-    }
-    const std::uint32_t lo = std::min(a, b);
-    key[p] = (std::uint64_t(lo) << 32) | std::max(a, b);
-    ++offset[lo + 1];
+  for_each_key([&](std::size_t p, std::uint64_t key) {
+    if (store_keys) stored[p] = key;
+    if (key == kNone) return;
+    ++offset[(key >> 32) + 1];
     ++midpoints;
-  };
-  const std::uint32_t* const tri_vertex = q.triangle_vertices();
-  for (std::size_t j = 0, p = 0; j < T; ++j)
-    for (std::size_t k = 0; k < R; ++k, ++p) {
-      if (rule_edge[k][0] < 0) {
-        set_key(p, false, 0, 0);
-        continue;
-      }
-      const std::uint32_t a = tri_vertex[3 * j + rule_edge[k][0]], b = tri_vertex[3 * j + rule_edge[k][1]];
-      set_key(p, a != b, a, b);  // two distinct vertices: an edge's midpoint (midpoint_edge's rule)
-    }
-  for (std::size_t m = 0, p = q.triangle_points(); m < q.quad_weight.size(); ++m, ++p) {
-    std::uint32_t lo = 0, hi = 0;
-    const bool midpoint = midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi);
-    set_key(p, midpoint, lo, hi);
-  }
+  });
   if (midpoints == 0) return;  // every point its own site
   const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge (after the pass)
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
@@ -223,15 +229,15 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   q.site.resize(S);
   q.site_point.resize(S);
   std::size_t sites = 0;
-  for (std::size_t p = 0; p < S; ++p) {
-    if (key[p] != kNone) {
-      const std::size_t lo = key[p] >> 32;
-      const std::uint32_t hi = std::uint32_t(key[p]);
+  const auto place = [&](std::size_t p, std::uint64_t key) {
+    if (key != kNone) {
+      const std::size_t lo = key >> 32;
+      const std::uint32_t hi = std::uint32_t(key);
       std::uint32_t k = offset[lo];
       while (k < end[lo] && entry_hi[k] != hi) ++k;
       if (k < end[lo]) {  // an earlier point of this edge: its site
         q.site[p] = entry_site[k];
-        continue;
+        return;
       }
       entry_hi[k] = hi;  // the first point of this edge
       entry_site[k] = std::uint32_t(sites);
@@ -239,7 +245,11 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     }
     q.site[p] = std::uint32_t(sites);
     q.site_point[sites++] = std::uint32_t(p);
-  }
+  };
+  if (store_keys)
+    for (std::size_t p = 0; p < S; ++p) place(p, stored[p]);
+  else
+    for_each_key(place);
   q.site_point.resize(sites);
   if (edges_only) {  // each entry is one edge's site: (lower vertex = its bucket, entry_hi)
     q.site_edge.resize(2 * sites);
