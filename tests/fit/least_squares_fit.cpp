@@ -523,7 +523,7 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
   // points must be one place (the signal is evaluated once for all of them).
   for (const Mesh& mesh : {shadetool::testing::icosphere(2).mesh, shadetool::testing::torus(12, 7, 1.0, 0.4, 0.1).mesh}) {
     const FitElements e = fit_elements(mesh);
-    const std::size_t T = e.tri_face.size();
+    const std::size_t T = e.triangles;
     const FitQuadrature q3 = fit_quadrature(e, mesh.positions, 3);
     REQUIRE(q3.size() == 3 * T);
     CHECK(q3.sites() == 3 * T / 2);
@@ -571,6 +571,42 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
   }
 }
 
+TEST_CASE("A large mesh's sites (keys recomputed, not stored) are one per edge, numbered by first point",
+          "[fit][quadrature]") {
+  // Truth: as above, a closed triangle mesh has E = 3T/2 edges and every 3-point-rule point is the
+  // midpoint of the edge of its two corners of weight 1/2. At 180k triangles (540k points, 8 bytes
+  // a key: above assign_sites' 4 MiB) the keys are recomputed in the second pass instead of stored:
+  // the sites must still be the edges, each with its two points, numbered in the order of their
+  // first point.
+  const Mesh mesh = shadetool::testing::torus(300, 300, 1.0, 0.4).mesh;
+  const FitElements e = fit_elements(mesh);
+  const FitQuadrature q3 = fit_quadrature(e, mesh.positions, 3);
+  REQUIRE(q3.size() * sizeof(std::uint64_t) >= (std::size_t(4) << 20));
+  REQUIRE(q3.sites() == 3 * e.triangles / 2);
+  REQUIRE(q3.site_edge.size() == 2 * q3.sites());
+  std::vector<int> points_per_site(q3.sites(), 0);
+  std::size_t wrong_edge = 0, out_of_order = 0, next_site = 0;
+  for (std::size_t s = 0; s < q3.size(); ++s) {
+    const std::size_t i = q3.site_of(s);
+    if (i == next_site) {  // a new site opens at its first point, in point order
+      out_of_order += q3.first_point(i) != s;
+      ++next_site;
+    } else {
+      out_of_order += i > next_site;
+    }
+    ++points_per_site[i];
+    const FitPoint pt = q3.point(s);
+    std::vector<std::uint32_t> ends;
+    for (int j = 0; j < pt.corners; ++j)
+      if (pt.phi[j] == 0.5) ends.push_back(pt.vertex[j]);
+    std::sort(ends.begin(), ends.end());
+    wrong_edge += ends != std::vector<std::uint32_t>{q3.site_edge[2 * i], q3.site_edge[2 * i + 1]};
+  }
+  CHECK(out_of_order == 0);
+  CHECK(wrong_edge == 0);
+  CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
+}
+
 TEST_CASE("The quadrature's triangle areas are the scalar formula's bits, for ordinary, huge, tiny, flat and non-finite triangles",
           "[fit][quadrature]") {
   // Truth: 0.5 |N| by geometry/face_area_vector.h's triangle_area_vector and core/vec3.h's length,
@@ -603,15 +639,17 @@ TEST_CASE("The quadrature's triangle areas are the scalar formula's bits, for or
   const FitQuadrature q = fit_quadrature(e, m.positions, 1);
   std::vector<double> expected;
   std::vector<std::uint32_t> faces;
-  for (std::size_t t = 0; t < e.tri_face.size(); ++t) {
-    const std::uint32_t* v = &e.tri_vertex[3 * t];
+  for (std::size_t t = 0; t < e.triangles; ++t) {
+    const std::uint32_t* v = &e.triangle_vertices()[3 * t];
     const double area = 0.5 * length(triangle_area_vector(m.positions.data(), v[0], v[1], v[2]).N);
     if (!(area > 0)) continue;
     expected.push_back(area);
-    faces.push_back(e.tri_face[t]);
+    faces.push_back(e.triangle_face(t));
   }
   INFO(m.num_faces() << " triangles, " << expected.size() << " of positive area");
-  REQUIRE(q.tri_face == faces);
+  std::vector<std::uint32_t> q_faces;
+  for (std::size_t j = 0; j < q.tri_area.size(); ++j) q_faces.push_back(q.triangle_face(j));
+  REQUIRE(q_faces == faces);
   std::size_t differ = 0, infinite = 0;
   for (std::size_t t = 0; t < expected.size(); ++t) {
     differ += std::memcmp(&q.tri_area[t], &expected[t], sizeof(double)) != 0;
@@ -632,13 +670,31 @@ TEST_CASE("The elements are the faces' fans from corner 0, in face order, also w
   tris.add_face({0, 1, 2});
   tris.add_face({2, 1, 3});
   tris.add_face({4, 2, 3});
+  // The triangles as the accessors give them (a triangle mesh's are views of its arrays).
+  const auto vertices_of = [](const FitElements& e) {
+    return std::vector<std::uint32_t>(e.triangle_vertices(), e.triangle_vertices() + 3 * e.triangles);
+  };
+  const auto faces_of = [](const FitElements& e) {
+    std::vector<std::uint32_t> out;
+    for (std::size_t t = 0; t < e.triangles; ++t) out.push_back(e.triangle_face(t));
+    return out;
+  };
   const FitElements a = fit_elements(tris);
-  CHECK(a.tri_vertex == std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3, 4, 2, 3});
-  CHECK(a.tri_face == std::vector<std::uint32_t>{0, 1, 2});
+  CHECK(vertices_of(a) == std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3, 4, 2, 3});
+  CHECK(faces_of(a) == std::vector<std::uint32_t>{0, 1, 2});
   CHECK(a.tri_node.empty());
   CHECK(a.nodes == 5);
+  // nothing copied: the triangles are the mesh's corners, read in place (and so is the
+  // quadrature's view of them when every triangle has area)
+  CHECK(a.triangle_vertices() == tris.corner_vertex.data());
+  CHECK((a.tri_vertex.empty() && a.tri_face.empty()));
+  const FitQuadrature qa = fit_quadrature(a, tris.positions, 3);
+  REQUIRE(qa.tri_area.size() == 3);
+  CHECK(qa.triangle_vertices() == tris.corner_vertex.data());
+  CHECK((qa.tri_vertex.empty() && qa.tri_face.empty() && qa.triangle_face(2) == 2));
   const FitElements grouped = fit_elements(tris, {0, 1, 2, 3, 4, 5, 6, 7, 8}, 9);
-  CHECK(grouped.tri_vertex == a.tri_vertex);
+  CHECK(vertices_of(grouped) == vertices_of(a));
+  CHECK(faces_of(grouped) == faces_of(a));
   CHECK(grouped.tri_node == std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6, 7, 8});
   Mesh mixed = tris;
   mixed.face_start = {0};
@@ -648,8 +704,8 @@ TEST_CASE("The elements are the faces' fans from corner 0, in face order, also w
   mixed.add_face({3, 4});
   REQUIRE(mixed.num_corners() == 3 * mixed.num_faces());
   const FitElements b = fit_elements(mixed);
-  CHECK(b.tri_vertex == std::vector<std::uint32_t>{0, 1, 3, 0, 3, 4, 0, 4, 2});
-  CHECK(b.tri_face == std::vector<std::uint32_t>{0, 0, 0});
+  CHECK(vertices_of(b) == std::vector<std::uint32_t>{0, 1, 3, 0, 3, 4, 0, 4, 2});
+  CHECK(faces_of(b) == std::vector<std::uint32_t>{0, 0, 0});
   CHECK(b.skipped_faces == 2);
 }
 

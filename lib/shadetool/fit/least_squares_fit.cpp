@@ -184,34 +184,41 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   }
   if (!rule_midpoints && q.quad_weight.empty()) return;  // no point can be a midpoint: every point its own site
   constexpr std::uint64_t kNone = ~std::uint64_t(0);
-  // (lo, hi) of a midpoint; all ones: none. Written once for every point below (no fill first).
-  const std::unique_ptr<std::uint64_t[]> key(new std::uint64_t[S]);
+  // fn(p, key) for every point p in order, key = (lo, hi) of a midpoint, all ones: none, from the
+  // point's vertices.
+  const std::uint32_t* const tri_vertex = q.triangle_vertices();
+  const auto for_each_key = [&](auto&& fn) {
+    const auto key_of = [](std::uint32_t a, std::uint32_t b) {
+      return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+    };
+    for (std::size_t j = 0, p = 0; j < T; ++j)
+      for (std::size_t k = 0; k < R; ++k, ++p) {
+        if (rule_edge[k][0] < 0) {
+          fn(p, kNone);
+          continue;
+        }
+        const std::uint32_t a = tri_vertex[3 * j + rule_edge[k][0]], b = tri_vertex[3 * j + rule_edge[k][1]];
+        fn(p, a != b ? key_of(a, b) : kNone);  // two distinct vertices: an edge's midpoint (midpoint_edge's rule)
+      }
+    for (std::size_t m = 0, p = q.triangle_points(); m < q.quad_weight.size(); ++m, ++p) {
+      std::uint32_t lo = 0, hi = 0;
+      fn(p, midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi) ? key_of(lo, hi) : kNone);
+    }
+  };
+  // The keys are stored by the first pass for the second while they fit in a core's cache (4 MiB:
+  // the 10k and 99k tori; reading them back is cheaper than recomputing them), and recomputed by
+  // the second pass above that (8 bytes a point: at 1M triangles and 3 points 24 MB that would be
+  // written to fresh pages and read back from memory). The same keys either way.
+  const bool store_keys = S * sizeof(std::uint64_t) < (std::size_t(4) << 20);
+  const std::unique_ptr<std::uint64_t[]> stored(store_keys ? new std::uint64_t[S] : nullptr);  // written before read
   std::vector<std::uint32_t> offset(V + 1, 0);  // counts per lower vertex, then offsets
   std::size_t midpoints = 0;
-  const auto set_key = [&](std::size_t p, bool midpoint, std::uint32_t a, std::uint32_t b) {
-    if (!midpoint) {
-      key[p] = kNone;
-      return;
-    }
-    const std::uint32_t lo = std::min(a, b);
-    key[p] = (std::uint64_t(lo) << 32) | std::max(a, b);
-    ++offset[lo + 1];
+  for_each_key([&](std::size_t p, std::uint64_t key) {
+    if (store_keys) stored[p] = key;
+    if (key == kNone) return;
+    ++offset[(key >> 32) + 1];
     ++midpoints;
-  };
-  for (std::size_t j = 0, p = 0; j < T; ++j)
-    for (std::size_t k = 0; k < R; ++k, ++p) {
-      if (rule_edge[k][0] < 0) {
-        set_key(p, false, 0, 0);
-        continue;
-      }
-      const std::uint32_t a = q.tri_vertex[3 * j + rule_edge[k][0]], b = q.tri_vertex[3 * j + rule_edge[k][1]];
-      set_key(p, a != b, a, b);  // two distinct vertices: an edge's midpoint (midpoint_edge's rule)
-    }
-  for (std::size_t m = 0, p = q.triangle_points(); m < q.quad_weight.size(); ++m, ++p) {
-    std::uint32_t lo = 0, hi = 0;
-    const bool midpoint = midpoint_edge(&q.quad_vertex[4 * m], &q.quad_phi[4 * m], 4, lo, hi);
-    set_key(p, midpoint, lo, hi);
-  }
+  });
   if (midpoints == 0) return;  // every point its own site
   const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge (after the pass)
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
@@ -222,15 +229,15 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   q.site.resize(S);
   q.site_point.resize(S);
   std::size_t sites = 0;
-  for (std::size_t p = 0; p < S; ++p) {
-    if (key[p] != kNone) {
-      const std::size_t lo = key[p] >> 32;
-      const std::uint32_t hi = std::uint32_t(key[p]);
+  const auto place = [&](std::size_t p, std::uint64_t key) {
+    if (key != kNone) {
+      const std::size_t lo = key >> 32;
+      const std::uint32_t hi = std::uint32_t(key);
       std::uint32_t k = offset[lo];
       while (k < end[lo] && entry_hi[k] != hi) ++k;
       if (k < end[lo]) {  // an earlier point of this edge: its site
         q.site[p] = entry_site[k];
-        continue;
+        return;
       }
       entry_hi[k] = hi;  // the first point of this edge
       entry_site[k] = std::uint32_t(sites);
@@ -238,7 +245,11 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
     }
     q.site[p] = std::uint32_t(sites);
     q.site_point[sites++] = std::uint32_t(p);
-  }
+  };
+  if (store_keys)
+    for (std::size_t p = 0; p < S; ++p) place(p, stored[p]);
+  else
+    for_each_key(place);
   q.site_point.resize(sites);
   if (edges_only) {  // each entry is one edge's site: (lower vertex = its bucket, entry_hi)
     q.site_edge.resize(2 * sites);
@@ -398,7 +409,8 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
     const double area = q.tri_area[t];
     if (!(area > 0)) continue;
     for (int i = 0; i < 3; ++i) A.diagonal[n[i]] += area / 6;
-    if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {q.tri_vertex[3 * t], q.tri_vertex[3 * t + 1], q.tri_vertex[3 * t + 2]}});
+    const std::uint32_t* v = &q.triangle_vertices()[3 * t];
+    if (lambda > 0) reg.push_back({{n[0], n[1], n[2]}, {v[0], v[1], v[2]}});
   }
   // The triangles' row sums of area/12 [[2,1,1],...] are area/3 = 2 (area/6) per corner: twice
   // their diagonal (doubling is exact, so twice the sum is the sum of the doubles).
@@ -768,10 +780,10 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
 // channel solved at once); widths other than 1 and 4: one channel at a time. b: overwritten (the
 // residual).
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
-                              const std::vector<std::uint32_t>& off_system, std::vector<double>& b,
-                              std::size_t width, const BlockCgOptions& o, std::vector<double>& x, LeastSquaresFit& fit) {
-  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
-  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b.data(), o, x.data(), fit);
+                              const std::vector<std::uint32_t>& off_system, double* b, std::size_t width,
+                              const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
+  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, o, x, fit);
+  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b, o, x, fit);
   const std::size_t N = inverse_diagonal.size();
   std::vector<double> bk(N), xk(N);
   for (std::size_t k = 0; k < width; ++k) {
@@ -802,10 +814,9 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
     triangles += size >= 3 && size != 4 ? size - 2 : 0;
     every_face_a_triangle = every_face_a_triangle && size == 3;
   }
-  if (every_face_a_triangle && !own_nodes) {  // the same arrays as the loop below: the corners, in order
-    e.tri_vertex = mesh.corner_vertex;
-    e.tri_face.resize(mesh.num_faces());
-    for (std::size_t f = 0; f < e.tri_face.size(); ++f) e.tri_face[f] = std::uint32_t(f);
+  e.triangles = triangles;
+  if (every_face_a_triangle && !own_nodes) {  // the loop's arrays would be the corners and 0..T-1: views
+    e.mesh_corner_vertex = mesh.corner_vertex.data();
     return e;
   }
   e.tri_vertex.reserve(3 * triangles);
@@ -845,17 +856,17 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
   FitQuadrature q;
   q.samples = samples;
   q.rule = triangle_quadrature(samples);
-  const std::size_t T = e.tri_face.size();
+  const std::size_t T = e.triangles;
   q.element_triangles = T;
   // The areas in place, then the triangles of positive area kept (all of them, the common case: copies).
   q.tri_area.resize(T);
-  triangle_areas(positions, e.tri_vertex.data(), T, q.tri_area.data());
+  triangle_areas(positions, e.triangle_vertices(), T, q.tri_area.data());
   std::size_t kept = 0;
   for (std::size_t t = 0; t < T; ++t) kept += q.tri_area[t] > 0;  // no area, no part of the integral
-  if (kept == T) {
-    q.tri_node = e.tri_node;
-    q.tri_vertex = e.tri_vertex;
-    q.tri_face = e.tri_face;
+  if (kept == T) {  // views of the elements' arrays (header)
+    q.elements_vertex = e.triangle_vertices();
+    q.elements_node = e.triangle_nodes();
+    q.elements_face = e.mesh_corner_vertex ? nullptr : e.tri_face.data();
   } else {
     const bool own_nodes = !e.tri_node.empty();  // else q's stays empty too: the vertices
     q.tri_node.resize(own_nodes ? 3 * kept : 0);
@@ -865,10 +876,10 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
       if (!(q.tri_area[t] > 0)) continue;
       for (int i = 0; i < 3; ++i) {
         if (own_nodes) q.tri_node[3 * j + i] = e.tri_node[3 * t + i];
-        q.tri_vertex[3 * j + i] = e.tri_vertex[3 * t + i];
+        q.tri_vertex[3 * j + i] = e.triangle_vertices()[3 * t + i];
       }
       q.tri_area[j] = q.tri_area[t];  // j <= t: in place
-      q.tri_face[j++] = e.tri_face[t];
+      q.tri_face[j++] = e.triangle_face(t);
     }
     q.tri_area.resize(kept);
   }
@@ -901,12 +912,12 @@ FitPoint FitQuadrature::point(std::size_t p) const {
     const std::size_t j = p / R, k = p - j * R;  // divisor: R >= 1 when there are triangle points
     for (int i = 0; i < 3; ++i) {
       out.node[i] = triangle_nodes()[3 * j + i];
-      out.vertex[i] = tri_vertex[3 * j + i];
+      out.vertex[i] = triangle_vertices()[3 * j + i];
       out.phi[i] = rule[k].barycentric[i];
     }
     out.corners = 3;
     out.weight = rule[k].weight * tri_area[j];
-    out.face = tri_face[j];
+    out.face = triangle_face(j);
   } else {
     const std::size_t m = p - triangle_points();
     for (int i = 0; i < 4; ++i) {
@@ -1006,9 +1017,9 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   LeastSquaresFit fit;
   FitOperator A;
   std::vector<double> mass_diagonal;
-  if (q.element_triangles != e.tri_face.size())
+  if (q.element_triangles != e.triangles)
     throw Error("least_squares_fit: the quadrature is not of these elements (made for " +
-                std::to_string(q.element_triangles) + " triangles, given " + std::to_string(e.tri_face.size()) + ")");
+                std::to_string(q.element_triangles) + " triangles, given " + std::to_string(e.triangles) + ")");
   build_fit_operator(e, positions, q, options.regularization, A, mass_diagonal, fit);
 
   // The system over the nodes with mass; the others keep their point value.
@@ -1031,9 +1042,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   if (off_system.size() < N) {
     // b and the solution with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its
     // solution is 0 and it stops at once), for add_triangle_products_4; otherwise the channels.
+    // padded is not value-initialised: the first guess below writes it whole.
     const std::size_t L = width == 3 ? 4 : width;
-    std::vector<double> padded(L != width ? N * L : 0, 0.0);
-    std::vector<double>& x = L != width ? padded : fit.values;
+    const std::unique_ptr<double[]> padded(L != width ? new double[N * L] : nullptr);
+    double* const x = L != width ? padded.get() : fit.values.data();
     // b for every channel in one pass over the points.
     std::vector<double> b(N * L, 0.0);
     const TriangleLoads loads = triangle_loads(q.rule);
@@ -1069,7 +1081,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
-    block_conjugate_gradient(A, inverse_diagonal, off_system, b, L, cg, x, fit);
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b.data(), L, cg, x, fit);
     if (L != width)
       for (std::size_t i = 0; i < N; ++i)
         for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];

@@ -86,13 +86,21 @@ namespace shadetool {
 // The faces as interpolation elements. Inputs: mesh (faces), corner_node (#C node ids; empty:
 // the corner's vertex), nodes (#nodes; ignored when corner_node is empty: #V).
 // tri_node is empty when the nodes are the vertices (no corner_node): triangle_nodes() is then
-// tri_vertex (one array fewer to fill and fault in; likewise in FitQuadrature).
+// the triangles' vertices (one array fewer to fill and fault in; likewise in FitQuadrature).
+// When every face is a triangle and the nodes are the vertices (the common case), the triangles are
+// the mesh's faces in order and nothing is copied: tri_vertex and tri_face stay empty,
+// triangle_vertices() is the mesh's own corner_vertex (mesh_corner_vertex: the mesh must outlive the
+// elements and stay unchanged) and triangle t is face t. Read the triangles through the accessors.
 struct FitElements {
   std::size_t nodes = 0;
-  std::vector<std::uint32_t> tri_vertex, tri_node, tri_face;     // 3, 3 (or 0), 1 per triangle
+  std::size_t triangles = 0;                                     // the fans' triangles
+  std::vector<std::uint32_t> tri_vertex, tri_node, tri_face;     // 3 (or 0), 3 (or 0), 1 (or 0) per triangle
   std::vector<std::uint32_t> quad_vertex, quad_node, quad_face;  // 4, 4, 1 per quad
   std::size_t skipped_faces = 0;                                 // fewer than 3 corners
-  const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? tri_vertex.data() : tri_node.data(); }
+  const std::uint32_t* mesh_corner_vertex = nullptr;             // the mesh's corner_vertex, or null
+  const std::uint32_t* triangle_vertices() const { return mesh_corner_vertex ? mesh_corner_vertex : tri_vertex.data(); }
+  const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? triangle_vertices() : tri_node.data(); }
+  std::uint32_t triangle_face(std::size_t t) const { return mesh_corner_vertex ? std::uint32_t(t) : tri_face[t]; }
 };
 FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& corner_node = {}, std::size_t nodes = 0);
 
@@ -109,6 +117,10 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
 // that share its two vertices), so the two points share one site; every other point is its own
 // site. Sites are numbered in the order of their first point; `site` and `site_point` are empty
 // when every point is its own site (site p is point p).
+// When every triangle has positive area (the common case) the triangles are the elements' and q
+// copies none of them: tri_node, tri_vertex and tri_face stay empty and q reads the elements'
+// arrays (elements_vertex, elements_node; their faces elements_face, or the identity when null):
+// the elements (and the mesh they view) must outlive q. Read them through the accessors.
 struct FitPoint {
   std::uint32_t node[4] = {}, vertex[4] = {};
   double phi[4] = {};  // unused: 0
@@ -121,9 +133,12 @@ struct FitQuadrature {
   std::vector<QuadraturePoint> rule;        // the triangle rule (fit/triangle_quadrature.h)
   std::size_t element_triangles = 0;        // the elements' triangle count (those of no area included)
   std::vector<std::uint32_t> tri_node;      // 3 per triangle of positive area, or empty: the vertices
-  std::vector<std::uint32_t> tri_vertex;    // 3 per triangle of positive area
+  std::vector<std::uint32_t> tri_vertex;    // 3 per triangle of positive area (or empty: the elements')
   std::vector<double> tri_area;             // 1 per triangle of positive area
-  std::vector<std::uint32_t> tri_face;      // 1 per triangle of positive area
+  std::vector<std::uint32_t> tri_face;      // 1 per triangle of positive area (or empty: the elements')
+  const std::uint32_t* elements_vertex = nullptr;  // every triangle kept: the elements' (else null)
+  const std::uint32_t* elements_node = nullptr;
+  const std::uint32_t* elements_face = nullptr;    // null with elements_vertex: triangle j is face j
   std::vector<std::uint32_t> quad_node;     // 4 per quad point
   std::vector<std::uint32_t> quad_vertex;   // 4 per quad point
   std::vector<double> quad_phi;             // 4 per quad point
@@ -136,7 +151,13 @@ struct FitQuadrature {
   std::vector<std::uint32_t> site_edge;
 
   std::size_t triangle_points() const { return tri_area.size() * rule.size(); }
-  const std::uint32_t* triangle_nodes() const { return tri_node.empty() ? tri_vertex.data() : tri_node.data(); }
+  const std::uint32_t* triangle_vertices() const { return elements_vertex ? elements_vertex : tri_vertex.data(); }
+  const std::uint32_t* triangle_nodes() const {
+    return elements_vertex ? elements_node : (tri_node.empty() ? tri_vertex.data() : tri_node.data());
+  }
+  std::uint32_t triangle_face(std::size_t j) const {
+    return elements_vertex ? (elements_face ? elements_face[j] : std::uint32_t(j)) : tri_face[j];
+  }
   std::size_t size() const { return triangle_points() + quad_weight.size(); }
   std::size_t sites() const { return site_point.empty() ? size() : site_point.size(); }
   std::size_t site_of(std::size_t p) const { return site.empty() ? p : site[p]; }
@@ -149,6 +170,7 @@ struct FitQuadrature {
   void for_each_point(Fn&& fn) const {
     const std::size_t R = rule.size(), T = tri_area.size();
     const std::uint32_t* const tri_nodes = triangle_nodes();
+    const std::uint32_t* const tri_vertex = triangle_vertices();
     std::size_t p = 0;
     for (std::size_t j = 0; j < T; ++j)
       for (std::size_t k = 0; k < R; ++k, ++p)
@@ -174,7 +196,7 @@ inline void interpolate_vertex_data_at_site(const FitQuadrature& q, std::size_t 
   int corners;
   if (p < q.triangle_points()) {
     const std::size_t j = R == 1 ? p : p / R;  // divisor: R >= 1 when there are triangle points
-    vertex = &q.tri_vertex[3 * j];
+    vertex = &q.triangle_vertices()[3 * j];
     phi = q.rule[p - j * R].barycentric.data();
     corners = 3;
   } else {
