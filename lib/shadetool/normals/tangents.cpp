@@ -366,7 +366,8 @@ void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex
     tris = std::move(sorted);
     info = std::move(sorted_info);
   }
-  const std::size_t good = tris.good;
+  // Quads split in two: none when every triangle is its own face (tris.identity).
+  const std::size_t good = tris.identity ? 0 : tris.good;
   for (std::size_t t = 0; t + 1 < good;) {
     if (tris.face_of(t) == tris.face_of(t + 1) && mesh.face_size(tris.face_of(t)) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kOrientPreserving) != 0) {
@@ -998,9 +999,12 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   in.texcoord = mesh.corner_texcoord_index.data();
   bool taken_triangles = true;  // every face taken, every one a triangle
   for (std::size_t f = 0; f < F; ++f) {
-    bool ok = mesh.face_size(f) >= 3 && dims >= 2;
-    for (std::uint32_t c = mesh.face_start[f]; ok && c < mesh.face_start[f + 1]; ++c)
-      ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
+    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
+    bool ok = e - b >= 3 && dims >= 2;
+    bool untextured = false;  // every corner read (no early exit: the loop is compares, not a branch each)
+    if (ok)
+      for (std::uint32_t c = b; c < e; ++c) untextured |= mesh.corner_texcoord_index[c] == kNoTexcoord;
+    ok &= !untextured;
     taken[f] = ok;
     taken_triangles &= ok && mesh.face_size(f) == 3;
   }
@@ -1034,20 +1038,30 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
 
   TangentFrames out;
   out.tangents.reserve(4 * C);  // filled in corner order below: no zeroing first; small pages (TriInfos)
-  std::vector<double>& o = out.tangents;
+  // Rows are staged in a small buffer and appended a block at a time: four push_backs per corner
+  // keep the vector's end in memory, a chain of store-to-load forwards through the whole pass.
+  constexpr std::size_t kBlock = 256;  // corners per append (8 KiB: stays in L1)
+  double buffer[4 * kBlock];
+  std::size_t staged = 0;
+  auto row = [&](double x, double y, double z, double w) {
+    double* r = buffer + 4 * staged;
+    r[0] = x, r[1] = y, r[2] = z, r[3] = w;
+    if (++staged == kBlock) out.tangents.insert(out.tangents.end(), buffer, buffer + 4 * kBlock), staged = 0;
+  };
   for (std::size_t f = 0; f < F; ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
       if (!taken[f]) {
         const Vec3d t = perpendicular_unit(corner_normal(c, f));
-        o.push_back(t.x), o.push_back(t.y), o.push_back(t.z), o.push_back(1.0);
+        row(t.x, t.y, t.z, 1.0);
         ++out.fallback_corners;
         continue;
       }
       const std::uint32_t k = frames.of[c];
       const TSpace& s = k != ~0u ? frames.frames[k] : none;
-      o.push_back(s.os.x), o.push_back(s.os.y), o.push_back(s.os.z), o.push_back(s.orient ? 1.0 : -1.0);
+      row(s.os.x, s.os.y, s.os.z, s.orient ? 1.0 : -1.0);
       if (k == ~0u) ++out.default_corners;
     }
+  out.tangents.insert(out.tangents.end(), buffer, buffer + 4 * staged);
   return out;
 }
 
