@@ -207,7 +207,7 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
 // The welded vertices' values (#U), returned; id (#C): the welded vertex of each corner taken,
 // written (left unwritten elsewhere).
 std::vector<WeldedVertex> weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
-                               std::uint32_t* id) {
+                               bool every_face_taken, std::uint32_t* id) {
   const std::size_t V = in.positions.size(), F = mesh.num_faces();
   const std::vector<std::uint32_t> first = canonical_positions(in.positions);
   struct {
@@ -248,38 +248,50 @@ std::vector<WeldedVertex> weld(const Mesh& mesh, const Corners& in, const std::v
     std::uint32_t normal, texcoord, welded;
   };
   std::vector<Recent> recent(V, Recent{kNone, kNone, kNone});
-  for (std::size_t f = 0; f < F; ++f) {
-    if (!taken[f]) continue;
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      Recent& r = recent[in.vertex[c]];
-      if (r.welded != kNone && r.normal == in.normal[c] && r.texcoord == in.texcoord[c]) {
-        w.id[c] = r.welded;
-        continue;
-      }
-      const F3 t = texcoords[in.texcoord[c]];
-      const WeldedVertex x{positions[in.vertex[c]], normals[in.normal[c]], t.x, t.y};
-      const std::uint32_t b = first[in.vertex[c]];
-      std::uint32_t k = kNone;
-      if (count[b] <= kLinear) {
-        k = head[b];
-        while (k != kNone && !same_values(w.vertex[k], x)) k = next[k];
-      } else if (!has_nan(x)) {
-        k = table[table_slot(x)];
-      }
-      if (k == kNone) {  // a new welded vertex
-        k = std::uint32_t(w.vertex.size());
-        w.vertex.push_back(x);
-        next.push_back(head[b]);
-        head[b] = k;
-        if (++count[b] == kLinear + 1) in_table = grow_table(in_table + kLinear + 1);  // this position's move in
-        else if (count[b] > kLinear && !has_nan(x)) {
-          if (2 * (++in_table) > table.size()) in_table = grow_table(in_table);
-          else table[table_slot(x)] = k;
-        }
-      }
-      w.id[c] = k;
-      if (!has_nan(x)) r = {in.normal[c], in.texcoord[c], k};
+  // Corner c's welded vertex when it is its vertex's latest corner's (true), else false.
+  auto weld_as_recent = [&](std::uint32_t c) {
+    const Recent& r = recent[in.vertex[c]];
+    if (r.welded == kNone || r.normal != in.normal[c] || r.texcoord != in.texcoord[c]) return false;
+    w.id[c] = r.welded;
+    return true;
+  };
+  // The other corners: their values looked for, a new welded vertex when none has them.
+  auto weld_by_value = [&](std::uint32_t c) {
+    Recent& r = recent[in.vertex[c]];
+    const F3 t = texcoords[in.texcoord[c]];
+    const WeldedVertex x{positions[in.vertex[c]], normals[in.normal[c]], t.x, t.y};
+    const std::uint32_t b = first[in.vertex[c]];
+    std::uint32_t k = kNone;
+    if (count[b] <= kLinear) {
+      k = head[b];
+      while (k != kNone && !same_values(w.vertex[k], x)) k = next[k];
+    } else if (!has_nan(x)) {
+      k = table[table_slot(x)];
     }
+    if (k == kNone) {  // a new welded vertex
+      k = std::uint32_t(w.vertex.size());
+      w.vertex.push_back(x);
+      next.push_back(head[b]);
+      head[b] = k;
+      if (++count[b] == kLinear + 1) in_table = grow_table(in_table + kLinear + 1);  // this position's move in
+      else if (count[b] > kLinear && !has_nan(x)) {
+        if (2 * (++in_table) > table.size()) in_table = grow_table(in_table);
+        else table[table_slot(x)] = k;
+      }
+    }
+    w.id[c] = k;
+    if (!has_nan(x)) r = {in.normal[c], in.texcoord[c], k};
+  };
+  // Corners in face order; when every face is taken that is 0 .. #C - 1 (faces' corners are
+  // consecutive), one flat loop.
+  if (every_face_taken) {
+    for (std::uint32_t c = mesh.face_start.front(); c < mesh.face_start.back(); ++c)
+      if (!weld_as_recent(c)) weld_by_value(c);
+  } else {
+    for (std::size_t f = 0; f < F; ++f)
+      if (taken[f])
+        for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+          if (!weld_as_recent(c)) weld_by_value(c);
   }
   return std::move(w.vertex);
 }
@@ -998,6 +1010,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
                                                   : corner_face.data();
   in.texcoord = mesh.corner_texcoord_index.data();
   bool taken_triangles = true;  // every face taken, every one a triangle
+  bool every_face_taken = true;
   for (std::size_t f = 0; f < F; ++f) {
     const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
     bool ok = e - b >= 3 && dims >= 2;
@@ -1007,6 +1020,7 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
     ok &= !untextured;
     taken[f] = ok;
     taken_triangles &= ok && mesh.face_size(f) == 3;
+    every_face_taken &= ok;
   }
   // The welded vertex per corner: written straight into the triangles' index when triangle t is
   // face t (corners 3 t + k), else into a scratch array that make_triangles reads.
@@ -1014,7 +1028,8 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   std::unique_ptr<std::uint32_t[]> welded_id;
   if (taken_triangles) tris.index.resize(C);
   else welded_id.reset(new std::uint32_t[C]);
-  const std::vector<WeldedVertex> wv = weld(mesh, in, taken, taken_triangles ? tris.index.data() : welded_id.get());
+  const std::vector<WeldedVertex> wv =
+      weld(mesh, in, taken, every_face_taken, taken_triangles ? tris.index.data() : welded_id.get());
   make_triangles(mesh, in, taken, welded_id.get(), tris);
   TriInfos info(new TriInfo[tris.count]);  // TriInfo{}: zero derivatives
   degenerate_and_derivatives(mesh, wv, tris, info);
