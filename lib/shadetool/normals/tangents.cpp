@@ -302,46 +302,61 @@ float texture_area(const std::vector<WeldedVertex>& wv, const std::uint32_t* idx
   return a < 0 ? -a : a;
 }
 
-// Step 4 for one healthy triangle (corners w1, w2, w3): its derivatives, magnitudes and
-// orientation (eq. 18, 19), into info (zero on entry) and flag.
-void triangle_derivatives(const WeldedVertex& w1, const WeldedVertex& w2, const WeldedVertex& w3, std::uint8_t& flag,
-                          TriInfo& info) {
-  flag |= kGroupWithAny;  // assumed bad
+// Step 4's inputs for one healthy triangle (corners w1, w2, w3): its derivatives before
+// normalisation (eq. 18, 19) and twice its signed texture area, written to column i of `in` (the
+// rows of normals_detail::tangent_triangle_derivatives, which makes them unit and computes the
+// magnitudes); its flags: orientation, and assumed to group with any (cleared when both
+// magnitudes are not zero).
+void triangle_derivative_inputs(const WeldedVertex& w1, const WeldedVertex& w2, const WeldedVertex& w3,
+                                std::uint8_t& flag, float* in, std::size_t i) {
+  constexpr std::size_t B = normals_detail::kTangentCornerBlock;
   const F3 v1 = w1.p, v2 = w2.p, v3 = w3.p;
   const float t21x = w2.u - w1.u, t21y = w2.v - w1.v, t31x = w3.u - w1.u, t31y = w3.v - w1.v;
   const F3 d1 = v2 - v1, d2 = v3 - v1;
   const float signed_area2 = t21x * t31y - t21y * t31x;
   const F3 os = scale(t31y, d1) - scale(t21y, d2);   // eq. 18
   const F3 ot = scale(-t31x, d1) + scale(t21x, d2);  // eq. 19
+  flag |= kGroupWithAny;
   if (signed_area2 > 0) flag |= kOrientPreserving;
-  if (!not_zero(signed_area2)) return;
-  const float abs_area = std::fabs(signed_area2);
-  const float len_s = length(os), len_t = length(ot);
-  const float sign = (flag & kOrientPreserving) ? 1.0f : -1.0f;
-  if (not_zero(len_s)) info.os = scale(sign / len_s, os);  // divisor checked
-  if (not_zero(len_t)) info.ot = scale(sign / len_t, ot);  // divisor checked
-  info.mag_s = len_s / abs_area;  // divisor checked (not_zero above)
-  info.mag_t = len_t / abs_area;
-  if (not_zero(info.mag_s) && not_zero(info.mag_t)) flag &= std::uint8_t(~kGroupWithAny);
+  const float values[7] = {os.x, os.y, os.z, ot.x, ot.y, ot.z, signed_area2};
+  for (int row = 0; row < 7; ++row) in[row * B + i] = values[row];
 }
 
 // Steps 3 and 4 in one pass over the triangles (each reads its three corners once): a degenerate
-// triangle (two equal positions) is marked, every other one gets its derivatives (info, #T, zero on
-// entry). Then, when there are degenerate triangles, a quad with exactly one of them is marked and
+// triangle (two equal positions) is marked, every other one gets its derivatives (info, #T, written
+// whole: zero for a degenerate triangle), a block of triangles at a time. Then, when there are degenerate triangles, a quad with exactly one of them is marked and
 // the degenerate ones are moved after the healthy ones (which keep their order, their info with
 // them); last, a quad whose two healthy triangles disagree in orientation takes the larger one's
 // (or the healthy one's when the other groups with any).
 void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, TriInfos& info) {
   const std::size_t T = tris.count;
   std::size_t degenerate = 0;
-  for (std::size_t t = 0; t < T; ++t) {
-    const std::uint32_t* idx = &tris.index[3 * t];
-    const WeldedVertex &w1 = wv[idx[0]], &w2 = wv[idx[1]], &w3 = wv[idx[2]];
-    if (w1.p == w2.p || w1.p == w3.p || w2.p == w3.p) {
-      tris.flag[t] |= kDegenerate, ++degenerate;
-      continue;
+  // Blocks of B triangles: inputs gathered, then made unit (tangent_triangle_derivatives, lane-wise),
+  // then stored; a degenerate triangle's column is zero (its outputs zero, as its info was).
+  constexpr std::size_t B = normals_detail::kTangentCornerBlock;
+  float in[7 * B], out[8 * B];
+  for (std::size_t t0 = 0; t0 < T; t0 += B) {
+    const std::size_t n = std::min(B, T - t0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t t = t0 + i;
+      const std::uint32_t* idx = &tris.index[3 * t];
+      const WeldedVertex &w1 = wv[idx[0]], &w2 = wv[idx[1]], &w3 = wv[idx[2]];
+      if (w1.p == w2.p || w1.p == w3.p || w2.p == w3.p) {
+        tris.flag[t] |= kDegenerate, ++degenerate;
+        for (int row = 0; row < 7; ++row) in[row * B + i] = 0.0f;
+        continue;
+      }
+      triangle_derivative_inputs(w1, w2, w3, tris.flag[t], in, i);
     }
-    triangle_derivatives(w1, w2, w3, tris.flag[t], info[t]);
+    normals_detail::tangent_triangle_derivatives(n, in, out);
+    for (std::size_t i = 0; i < n; ++i) {
+      TriInfo& r = info[t0 + i];
+      r.os = {out[i], out[B + i], out[2 * B + i]};
+      r.ot = {out[3 * B + i], out[4 * B + i], out[5 * B + i]};
+      r.mag_s = out[6 * B + i], r.mag_t = out[7 * B + i];
+      std::uint8_t& flag = tris.flag[t0 + i];
+      if (!(flag & kDegenerate) && not_zero(r.mag_s) && not_zero(r.mag_t)) flag &= std::uint8_t(~kGroupWithAny);
+    }
   }
   tris.good = T - degenerate;
   if (degenerate > 0) {
