@@ -16,6 +16,7 @@
 
 using shadetool::normals_detail::kTangentCornerBlock;
 using shadetool::normals_detail::tangent_corner_terms;
+using shadetool::normals_detail::tangent_triangle_derivatives;
 
 namespace {
 
@@ -188,4 +189,55 @@ TEST_CASE("MikkTSpace's group frames: the lane pass gives the scalar sums' bits"
   CHECK(checked > 10000);
   CHECK(near_seen > 1000);  // both answers of the 60-degree test occur
   CHECK(far_seen > 1000);
+}
+
+// mikktspace.c, InitTriInfo's per-triangle branch, written out: the derivatives made unit with the
+// orientation's sign where their length is not zero, the magnitudes over the absolute area, all
+// left zero where the area is zero.
+TEST_CASE("MikkTSpace's triangle derivatives: the vector pass gives the reference's scalar bits", "[tangents]") {
+  constexpr std::size_t B = kTangentCornerBlock;
+  std::mt19937 rng(2929);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  const float specials[] = {0.0f, -0.0f, 1e-39f, -1e-39f, 1e-20f, 1e20f, NAN, INFINITY, -INFINITY, FLT_MIN};
+  std::size_t checked = 0, zero_area = 0, zero_length = 0;
+  for (int round = 0; round < 400; ++round) {
+    const std::size_t n = 1 + std::size_t(round) % B;
+    std::vector<float> in(7 * B), out(8 * B);
+    for (std::size_t i = 0; i < n; ++i) {
+      float v[7];
+      for (float& x : v) x = u(rng);
+      if (rng() % 4 == 0) v[6] = specials[rng() % 10];                       // area: zero, tiny, huge, non-finite
+      if (rng() % 4 == 0) v[rng() % 2 ? 0 : 3] = v[rng() % 2 ? 1 : 4] = v[rng() % 2 ? 2 : 5] = 0.0f;  // a zero derivative (some components)
+      if (rng() % 4 == 0) v[rng() % 6] = specials[rng() % 10];
+      if (rng() % 6 == 0) for (int r = 0; r < 3; ++r) v[r] *= 1e-25f;        // a length that underflows
+      for (int r = 0; r < 7; ++r) in[r * B + i] = v[r];
+    }
+    tangent_triangle_derivatives(n, in.data(), out.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      const V3 os{in[i], in[B + i], in[2 * B + i]}, ot{in[3 * B + i], in[4 * B + i], in[5 * B + i]};
+      const float area = in[6 * B + i];
+      V3 us{0, 0, 0}, ut{0, 0, 0};
+      float mag_s = 0, mag_t = 0;
+      if (not_zero(area)) {
+        const float abs_area = std::fabs(area), len_s = std::sqrt(vdot(os, os)), len_t = std::sqrt(vdot(ot, ot));
+        const float sign = area > 0 ? 1.0f : -1.0f;
+        if (not_zero(len_s)) us = vscale(sign / len_s, os);
+        else ++zero_length;
+        if (not_zero(len_t)) ut = vscale(sign / len_t, ot);
+        mag_s = len_s / abs_area;
+        mag_t = len_t / abs_area;
+      } else {
+        ++zero_area;
+      }
+      const float expected[8] = {us.x, us.y, us.z, ut.x, ut.y, ut.z, mag_s, mag_t};
+      for (int r = 0; r < 8; ++r) {
+        INFO("round " << round << " lane " << i << " output row " << r);
+        CHECK(same_bits(out[r * B + i], expected[r]));
+      }
+      ++checked;
+    }
+  }
+  CHECK(checked > 10000);
+  CHECK(zero_area > 500);   // the early return taken often
+  CHECK(zero_length > 100);  // the length test too
 }

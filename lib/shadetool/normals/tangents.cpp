@@ -207,7 +207,7 @@ std::vector<std::uint32_t> canonical_positions(const std::vector<F3>& positions)
 // The welded vertices' values (#U), returned; id (#C): the welded vertex of each corner taken,
 // written (left unwritten elsewhere).
 std::vector<WeldedVertex> weld(const Mesh& mesh, const Corners& in, const std::vector<std::uint8_t>& taken,
-                               std::uint32_t* id) {
+                               bool every_face_taken, std::uint32_t* id) {
   const std::size_t V = in.positions.size(), F = mesh.num_faces();
   const std::vector<std::uint32_t> first = canonical_positions(in.positions);
   struct {
@@ -248,38 +248,50 @@ std::vector<WeldedVertex> weld(const Mesh& mesh, const Corners& in, const std::v
     std::uint32_t normal, texcoord, welded;
   };
   std::vector<Recent> recent(V, Recent{kNone, kNone, kNone});
-  for (std::size_t f = 0; f < F; ++f) {
-    if (!taken[f]) continue;
-    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-      Recent& r = recent[in.vertex[c]];
-      if (r.welded != kNone && r.normal == in.normal[c] && r.texcoord == in.texcoord[c]) {
-        w.id[c] = r.welded;
-        continue;
-      }
-      const F3 t = texcoords[in.texcoord[c]];
-      const WeldedVertex x{positions[in.vertex[c]], normals[in.normal[c]], t.x, t.y};
-      const std::uint32_t b = first[in.vertex[c]];
-      std::uint32_t k = kNone;
-      if (count[b] <= kLinear) {
-        k = head[b];
-        while (k != kNone && !same_values(w.vertex[k], x)) k = next[k];
-      } else if (!has_nan(x)) {
-        k = table[table_slot(x)];
-      }
-      if (k == kNone) {  // a new welded vertex
-        k = std::uint32_t(w.vertex.size());
-        w.vertex.push_back(x);
-        next.push_back(head[b]);
-        head[b] = k;
-        if (++count[b] == kLinear + 1) in_table = grow_table(in_table + kLinear + 1);  // this position's move in
-        else if (count[b] > kLinear && !has_nan(x)) {
-          if (2 * (++in_table) > table.size()) in_table = grow_table(in_table);
-          else table[table_slot(x)] = k;
-        }
-      }
-      w.id[c] = k;
-      if (!has_nan(x)) r = {in.normal[c], in.texcoord[c], k};
+  // Corner c's welded vertex when it is its vertex's latest corner's (true), else false.
+  auto weld_as_recent = [&](std::uint32_t c) {
+    const Recent& r = recent[in.vertex[c]];
+    if (r.welded == kNone || r.normal != in.normal[c] || r.texcoord != in.texcoord[c]) return false;
+    w.id[c] = r.welded;
+    return true;
+  };
+  // The other corners: their values looked for, a new welded vertex when none has them.
+  auto weld_by_value = [&](std::uint32_t c) {
+    Recent& r = recent[in.vertex[c]];
+    const F3 t = texcoords[in.texcoord[c]];
+    const WeldedVertex x{positions[in.vertex[c]], normals[in.normal[c]], t.x, t.y};
+    const std::uint32_t b = first[in.vertex[c]];
+    std::uint32_t k = kNone;
+    if (count[b] <= kLinear) {
+      k = head[b];
+      while (k != kNone && !same_values(w.vertex[k], x)) k = next[k];
+    } else if (!has_nan(x)) {
+      k = table[table_slot(x)];
     }
+    if (k == kNone) {  // a new welded vertex
+      k = std::uint32_t(w.vertex.size());
+      w.vertex.push_back(x);
+      next.push_back(head[b]);
+      head[b] = k;
+      if (++count[b] == kLinear + 1) in_table = grow_table(in_table + kLinear + 1);  // this position's move in
+      else if (count[b] > kLinear && !has_nan(x)) {
+        if (2 * (++in_table) > table.size()) in_table = grow_table(in_table);
+        else table[table_slot(x)] = k;
+      }
+    }
+    w.id[c] = k;
+    if (!has_nan(x)) r = {in.normal[c], in.texcoord[c], k};
+  };
+  // Corners in face order; when every face is taken that is 0 .. #C - 1 (faces' corners are
+  // consecutive), one flat loop.
+  if (every_face_taken) {
+    for (std::uint32_t c = mesh.face_start.front(); c < mesh.face_start.back(); ++c)
+      if (!weld_as_recent(c)) weld_by_value(c);
+  } else {
+    for (std::size_t f = 0; f < F; ++f)
+      if (taken[f])
+        for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+          if (!weld_as_recent(c)) weld_by_value(c);
   }
   return std::move(w.vertex);
 }
@@ -290,46 +302,61 @@ float texture_area(const std::vector<WeldedVertex>& wv, const std::uint32_t* idx
   return a < 0 ? -a : a;
 }
 
-// Step 4 for one healthy triangle (corners w1, w2, w3): its derivatives, magnitudes and
-// orientation (eq. 18, 19), into info (zero on entry) and flag.
-void triangle_derivatives(const WeldedVertex& w1, const WeldedVertex& w2, const WeldedVertex& w3, std::uint8_t& flag,
-                          TriInfo& info) {
-  flag |= kGroupWithAny;  // assumed bad
+// Step 4's inputs for one healthy triangle (corners w1, w2, w3): its derivatives before
+// normalisation (eq. 18, 19) and twice its signed texture area, written to column i of `in` (the
+// rows of normals_detail::tangent_triangle_derivatives, which makes them unit and computes the
+// magnitudes); its flags: orientation, and assumed to group with any (cleared when both
+// magnitudes are not zero).
+void triangle_derivative_inputs(const WeldedVertex& w1, const WeldedVertex& w2, const WeldedVertex& w3,
+                                std::uint8_t& flag, float* in, std::size_t i) {
+  constexpr std::size_t B = normals_detail::kTangentCornerBlock;
   const F3 v1 = w1.p, v2 = w2.p, v3 = w3.p;
   const float t21x = w2.u - w1.u, t21y = w2.v - w1.v, t31x = w3.u - w1.u, t31y = w3.v - w1.v;
   const F3 d1 = v2 - v1, d2 = v3 - v1;
   const float signed_area2 = t21x * t31y - t21y * t31x;
   const F3 os = scale(t31y, d1) - scale(t21y, d2);   // eq. 18
   const F3 ot = scale(-t31x, d1) + scale(t21x, d2);  // eq. 19
+  flag |= kGroupWithAny;
   if (signed_area2 > 0) flag |= kOrientPreserving;
-  if (!not_zero(signed_area2)) return;
-  const float abs_area = std::fabs(signed_area2);
-  const float len_s = length(os), len_t = length(ot);
-  const float sign = (flag & kOrientPreserving) ? 1.0f : -1.0f;
-  if (not_zero(len_s)) info.os = scale(sign / len_s, os);  // divisor checked
-  if (not_zero(len_t)) info.ot = scale(sign / len_t, ot);  // divisor checked
-  info.mag_s = len_s / abs_area;  // divisor checked (not_zero above)
-  info.mag_t = len_t / abs_area;
-  if (not_zero(info.mag_s) && not_zero(info.mag_t)) flag &= std::uint8_t(~kGroupWithAny);
+  const float values[7] = {os.x, os.y, os.z, ot.x, ot.y, ot.z, signed_area2};
+  for (int row = 0; row < 7; ++row) in[row * B + i] = values[row];
 }
 
 // Steps 3 and 4 in one pass over the triangles (each reads its three corners once): a degenerate
-// triangle (two equal positions) is marked, every other one gets its derivatives (info, #T, zero on
-// entry). Then, when there are degenerate triangles, a quad with exactly one of them is marked and
+// triangle (two equal positions) is marked, every other one gets its derivatives (info, #T, written
+// whole: zero for a degenerate triangle), a block of triangles at a time. Then, when there are degenerate triangles, a quad with exactly one of them is marked and
 // the degenerate ones are moved after the healthy ones (which keep their order, their info with
 // them); last, a quad whose two healthy triangles disagree in orientation takes the larger one's
 // (or the healthy one's when the other groups with any).
 void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex>& wv, Triangles& tris, TriInfos& info) {
   const std::size_t T = tris.count;
   std::size_t degenerate = 0;
-  for (std::size_t t = 0; t < T; ++t) {
-    const std::uint32_t* idx = &tris.index[3 * t];
-    const WeldedVertex &w1 = wv[idx[0]], &w2 = wv[idx[1]], &w3 = wv[idx[2]];
-    if (w1.p == w2.p || w1.p == w3.p || w2.p == w3.p) {
-      tris.flag[t] |= kDegenerate, ++degenerate;
-      continue;
+  // Blocks of B triangles: inputs gathered, then made unit (tangent_triangle_derivatives, lane-wise),
+  // then stored; a degenerate triangle's column is zero (its outputs zero, as its info was).
+  constexpr std::size_t B = normals_detail::kTangentCornerBlock;
+  float in[7 * B], out[8 * B];
+  for (std::size_t t0 = 0; t0 < T; t0 += B) {
+    const std::size_t n = std::min(B, T - t0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t t = t0 + i;
+      const std::uint32_t* idx = &tris.index[3 * t];
+      const WeldedVertex &w1 = wv[idx[0]], &w2 = wv[idx[1]], &w3 = wv[idx[2]];
+      if (w1.p == w2.p || w1.p == w3.p || w2.p == w3.p) {
+        tris.flag[t] |= kDegenerate, ++degenerate;
+        for (int row = 0; row < 7; ++row) in[row * B + i] = 0.0f;
+        continue;
+      }
+      triangle_derivative_inputs(w1, w2, w3, tris.flag[t], in, i);
     }
-    triangle_derivatives(w1, w2, w3, tris.flag[t], info[t]);
+    normals_detail::tangent_triangle_derivatives(n, in, out);
+    for (std::size_t i = 0; i < n; ++i) {
+      TriInfo& r = info[t0 + i];
+      r.os = {out[i], out[B + i], out[2 * B + i]};
+      r.ot = {out[3 * B + i], out[4 * B + i], out[5 * B + i]};
+      r.mag_s = out[6 * B + i], r.mag_t = out[7 * B + i];
+      std::uint8_t& flag = tris.flag[t0 + i];
+      if (!(flag & kDegenerate) && not_zero(r.mag_s) && not_zero(r.mag_t)) flag &= std::uint8_t(~kGroupWithAny);
+    }
   }
   tris.good = T - degenerate;
   if (degenerate > 0) {
@@ -366,7 +393,8 @@ void degenerate_and_derivatives(const Mesh& mesh, const std::vector<WeldedVertex
     tris = std::move(sorted);
     info = std::move(sorted_info);
   }
-  const std::size_t good = tris.good;
+  // Quads split in two: none when every triangle is its own face (tris.identity).
+  const std::size_t good = tris.identity ? 0 : tris.good;
   for (std::size_t t = 0; t + 1 < good;) {
     if (tris.face_of(t) == tris.face_of(t + 1) && mesh.face_size(tris.face_of(t)) == 4) {
       if (((tris.flag[t] ^ tris.flag[t + 1]) & kOrientPreserving) != 0) {
@@ -997,12 +1025,17 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
                                                   : corner_face.data();
   in.texcoord = mesh.corner_texcoord_index.data();
   bool taken_triangles = true;  // every face taken, every one a triangle
+  bool every_face_taken = true;
   for (std::size_t f = 0; f < F; ++f) {
-    bool ok = mesh.face_size(f) >= 3 && dims >= 2;
-    for (std::uint32_t c = mesh.face_start[f]; ok && c < mesh.face_start[f + 1]; ++c)
-      ok = mesh.corner_texcoord_index[c] != kNoTexcoord;
+    const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
+    bool ok = e - b >= 3 && dims >= 2;
+    bool untextured = false;  // every corner read (no early exit: the loop is compares, not a branch each)
+    if (ok)
+      for (std::uint32_t c = b; c < e; ++c) untextured |= mesh.corner_texcoord_index[c] == kNoTexcoord;
+    ok &= !untextured;
     taken[f] = ok;
     taken_triangles &= ok && mesh.face_size(f) == 3;
+    every_face_taken &= ok;
   }
   // The welded vertex per corner: written straight into the triangles' index when triangle t is
   // face t (corners 3 t + k), else into a scratch array that make_triangles reads.
@@ -1010,7 +1043,8 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
   std::unique_ptr<std::uint32_t[]> welded_id;
   if (taken_triangles) tris.index.resize(C);
   else welded_id.reset(new std::uint32_t[C]);
-  const std::vector<WeldedVertex> wv = weld(mesh, in, taken, taken_triangles ? tris.index.data() : welded_id.get());
+  const std::vector<WeldedVertex> wv =
+      weld(mesh, in, taken, every_face_taken, taken_triangles ? tris.index.data() : welded_id.get());
   make_triangles(mesh, in, taken, welded_id.get(), tris);
   TriInfos info(new TriInfo[tris.count]);  // TriInfo{}: zero derivatives
   degenerate_and_derivatives(mesh, wv, tris, info);
@@ -1034,20 +1068,30 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
 
   TangentFrames out;
   out.tangents.reserve(4 * C);  // filled in corner order below: no zeroing first; small pages (TriInfos)
-  std::vector<double>& o = out.tangents;
+  // Rows are staged in a small buffer and appended a block at a time: four push_backs per corner
+  // keep the vector's end in memory, a chain of store-to-load forwards through the whole pass.
+  constexpr std::size_t kBlock = 256;  // corners per append (8 KiB: stays in L1)
+  double buffer[4 * kBlock];
+  std::size_t staged = 0;
+  auto row = [&](double x, double y, double z, double w) {
+    double* r = buffer + 4 * staged;
+    r[0] = x, r[1] = y, r[2] = z, r[3] = w;
+    if (++staged == kBlock) out.tangents.insert(out.tangents.end(), buffer, buffer + 4 * kBlock), staged = 0;
+  };
   for (std::size_t f = 0; f < F; ++f)
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
       if (!taken[f]) {
         const Vec3d t = perpendicular_unit(corner_normal(c, f));
-        o.push_back(t.x), o.push_back(t.y), o.push_back(t.z), o.push_back(1.0);
+        row(t.x, t.y, t.z, 1.0);
         ++out.fallback_corners;
         continue;
       }
       const std::uint32_t k = frames.of[c];
       const TSpace& s = k != ~0u ? frames.frames[k] : none;
-      o.push_back(s.os.x), o.push_back(s.os.y), o.push_back(s.os.z), o.push_back(s.orient ? 1.0 : -1.0);
+      row(s.os.x, s.os.y, s.os.z, s.orient ? 1.0 : -1.0);
       if (k == ~0u) ++out.default_corners;
     }
+  out.tangents.insert(out.tangents.end(), buffer, buffer + 4 * staged);
   return out;
 }
 

@@ -162,4 +162,27 @@ void tangent_lane_frames(std::size_t rows, const int* __restrict count, const fl
   }
 }
 
+SHADETOOL_TANGENT_CLONES
+void tangent_triangle_derivatives(std::size_t n, const float* __restrict in, float* __restrict out) {
+  constexpr std::size_t B = kTangentCornerBlock;
+  for (std::size_t i = 0; i < n; ++i) {
+    const float sx = in[i], sy = in[B + i], sz = in[2 * B + i];
+    const float tx = in[3 * B + i], ty = in[4 * B + i], tz = in[5 * B + i], a = in[6 * B + i];
+    const bool area = std::fabs(a) > FLT_MIN;
+    const float sign = a > 0.0f ? 1.0f : -1.0f;
+    const float len_s = std::sqrt(sx * sx + sy * sy + sz * sz), len_t = std::sqrt(tx * tx + ty * ty + tz * tz);
+    const bool unit_s = area & (std::fabs(len_s) > FLT_MIN), unit_t = area & (std::fabs(len_t) > FLT_MIN);
+    const float rs = sign / (unit_s ? len_s : 1.0f), rt = sign / (unit_t ? len_t : 1.0f);  // divisors checked
+    const float abs_area = area ? std::fabs(a) : 1.0f;                                      // divisor checked
+    out[i] = unit_s ? rs * sx : 0.0f;
+    out[B + i] = unit_s ? rs * sy : 0.0f;
+    out[2 * B + i] = unit_s ? rs * sz : 0.0f;
+    out[3 * B + i] = unit_t ? rt * tx : 0.0f;
+    out[4 * B + i] = unit_t ? rt * ty : 0.0f;
+    out[5 * B + i] = unit_t ? rt * tz : 0.0f;
+    out[6 * B + i] = area ? len_s / abs_area : 0.0f;
+    out[7 * B + i] = area ? len_t / abs_area : 0.0f;
+  }
+}
+
 }  // namespace shadetool::normals_detail

@@ -54,4 +54,19 @@ void tangent_corner_terms(std::size_t n, const float* in, float* out);
 constexpr std::size_t kTangentLanes = 8;
 void tangent_lane_frames(std::size_t rows, const int* count, const float* terms, const float* mags, float* out);
 
+// tangent_triangle_derivatives: MikkTSpace's step 4 (tangents.cpp, triangle_derivatives) for up to
+// kTangentCornerBlock triangles at once, lane-wise: the divisions and square roots that dominate
+// the step, in loops the compiler vectorises.
+// Inputs:  n    how many triangles, at most kTangentCornerBlock
+//          in   7 rows of kTangentCornerBlock floats (first n used): the derivatives os (x, y, z)
+//               and ot (x, y, z) before normalisation (eq. 18, 19) and twice the signed texture
+//               area a
+// Outputs: out  8 rows of kTangentCornerBlock floats (first n written): sign / |os| times os
+//               (x, y, z), sign / |ot| times ot (x, y, z), where |os| (|ot|) > FLT_MIN, else 0;
+//               mag_s = |os| / |a|, mag_t = |ot| / |a|; all 8 zero where |a| <= FLT_MIN (or NaN).
+//               sign = 1 where a > 0, else -1. |v| = sqrt(x x + y y + z z), in that order.
+// Same bits as the scalar formula (checked in tests/normals/tangent_corner_terms.cpp): IEEE float
+// operations in the same order, selects instead of branches, no FMA contraction.
+void tangent_triangle_derivatives(std::size_t n, const float* in, float* out);
+
 }  // namespace shadetool::normals_detail
