@@ -409,44 +409,65 @@ def crease(args):
 
 def objread(args):
     """bench/io/obj_anchors.sh: our OBJ reader (1 and 2 threads) against fast_obj and rapidobj on
-    the 1M- and 4M-triangle irregular spheres, one program, rows interleaved (issue 31 goal 1)."""
+    the 1M- and 4M-triangle irregular spheres, one program, rows interleaved (issue 31 goal 1).
+    Three processes, the median of their ratios (as tangents): on this VM a process's fresh huge
+    pages are sometimes slow to touch for the whole process (bench/io/results.md, objread6), which
+    moves one table's rows by up to 1.5x; the median of three is kept as a guard, every run's ratio
+    printed to the log."""
     # WAIT_IDLE: the 2-thread rows need both CPUs; wait up to 2 minutes for them to be idle (the
     # script prints whether they were, and the other processes' CPU during each table).
     env = dict(os.environ, BUILD_DIR=args.build_dir, WAIT_IDLE=os.environ.get("WAIT_IDLE", "120"))
-    txt = run(["bash", "bench/io/obj_anchors.sh", str(max(args.reps, 7))], env=env)
-    out, mesh, rows, others = [], None, {}, None
 
-    def flush():
-        if not mesh or not rows:
-            return
-        one, two, fo = rows.get("shadetool read_mesh, 1 thread"), rows.get("shadetool read_mesh, 2 threads"), rows.get("fast_obj")
-        if others is not None:
-            out.append(Figure(f"read.others.{mesh}", "reading", f"CPU other processes used while the OBJ reading table ran ({mesh}; the 2-thread rows need both CPUs)",
-                              f"{others:.0f}% of one CPU", "", "", "bench/io/results.md"))
-        ro = rows.get("rapidobj, 1 thread")
-        if one and fo:
-            out.append(judged(f"read.fast_obj.{mesh}", "reading", f"fast_obj time / our OBJ read, 1 thread ({mesh}; ours correctly rounded, wall)",
-                              fo / one, 1, "bench/io/results.md"))
-        if one and ro:
-            out.append(Figure(f"read.rapidobj.{mesh}", "reading", f"rapidobj (1 thread) time / our OBJ read, 1 thread ({mesh}, wall)",
-                              ratio(ro / one), "", "", "bench/io/results.md"))
-        if one and two and fo:
-            out.append(judged(f"read.threads.{mesh}", "reading", f"fast_obj time / our OBJ read on 2 threads ({mesh}, wall)",
-                              fo / two, 1.8, "bench/io/results.md"))
-    for line in txt.splitlines():
-        m = re.match(r"^(\S+\.obj): [\d.]+ MB", line)
-        if m:
-            flush()
-            mesh, rows, others = os.path.basename(m.group(1))[:-4], {}, None
-            continue
-        m = re.match(r"^other processes' CPU while the table ran: .*\((\d+)% of one CPU", line)
-        if m:
-            others = float(m.group(1))
-            continue
-        c = [x.strip() for x in line.strip().strip("|").split("|")]
-        if mesh and len(c) == 8 and not c[0].startswith("-") and c[0] != "reader":
-            rows[c[0]] = float(c[1])
-    flush()
+    def one_run(txt):
+        tables, mesh = {}, None
+        for line in txt.splitlines():
+            m = re.match(r"^(\S+\.obj): [\d.]+ MB", line)
+            if m:
+                mesh = os.path.basename(m.group(1))[:-4]
+                tables[mesh] = {"rows": {}, "others": None}
+                continue
+            m = re.match(r"^other processes' CPU while the table ran: .*\((\d+)% of one CPU", line)
+            if m and mesh:
+                tables[mesh]["others"] = float(m.group(1))
+                continue
+            c = [x.strip() for x in line.strip().strip("|").split("|")]
+            if mesh and len(c) == 8 and not c[0].startswith("-") and c[0] != "reader":
+                tables[mesh]["rows"][c[0]] = float(c[1])
+        return tables
+
+    runs = [one_run(run(["bash", "bench/io/obj_anchors.sh", str(max(args.reps, 7))], env=env)) for _ in range(3)]
+    med = lambda xs: sorted(xs)[len(xs) // 2] if xs else None
+    out = []
+    for mesh in runs[0]:
+        ratios = {"one": [], "two": [], "ro": []}
+        others = []
+        for r in runs:
+            t = r.get(mesh)
+            if not t:
+                continue
+            rows = t["rows"]
+            one, two, fo, ro = (rows.get(k) for k in ("shadetool read_mesh, 1 thread", "shadetool read_mesh, 2 threads", "fast_obj", "rapidobj, 1 thread"))
+            if one and fo:
+                ratios["one"].append(fo / one)
+            if two and fo:
+                ratios["two"].append(fo / two)
+            if one and ro:
+                ratios["ro"].append(ro / one)
+            if t["others"] is not None:
+                others.append(t["others"])
+        log(f"objread {mesh}: per run 1 thread {ratios['one']}, 2 threads {ratios['two']}, others {others}")
+        if others:
+            out.append(Figure(f"read.others.{mesh}", "reading", f"CPU other processes used while the OBJ reading tables ran, the most of 3 ({mesh}; the 2-thread rows need both CPUs)",
+                              f"{max(others):.0f}% of one CPU", "", "", "bench/io/results.md"))
+        if ratios["one"]:
+            out.append(judged(f"read.fast_obj.{mesh}", "reading", f"fast_obj time / our OBJ read, 1 thread ({mesh}; ours correctly rounded, wall; median of 3 processes)",
+                              med(ratios["one"]), 1, "bench/io/results.md"))
+        if ratios["ro"]:
+            out.append(Figure(f"read.rapidobj.{mesh}", "reading", f"rapidobj (1 thread) time / our OBJ read, 1 thread ({mesh}, wall; median of 3 processes)",
+                              ratio(med(ratios["ro"])), "", "", "bench/io/results.md"))
+        if ratios["two"]:
+            out.append(judged(f"read.threads.{mesh}", "reading", f"fast_obj time / our OBJ read on 2 threads ({mesh}, wall; median of 3 processes)",
+                              med(ratios["two"]), 1.8, "bench/io/results.md"))
     if not out:
         raise RuntimeError("bench/io/obj_anchors.sh printed no table")
     return out
