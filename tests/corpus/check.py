@@ -118,23 +118,24 @@ def agreement(part, f):
     return e if math.isfinite(e) else 0.0
 
 
-def bad_normals(part, raw_obj_normals):
-    """Written normals that are zero or not finite."""
+def written_normals(part, raw_obj_normals):
+    """The normals a part's file holds: its vertex and face normals, and an OBJ's raw vn lines."""
     rows = []
     for key in ("vertex_normals", "face_normals"):
         if part[key] is not None:
             rows += part[key]
-    rows += raw_obj_normals
+    return rows + raw_obj_normals
+
+
+def bad_normals(part, raw_obj_normals):
+    """Written normals that are zero or not finite."""
+    rows = written_normals(part, raw_obj_normals)
     return sum(1 for n in rows if n is None or not all(math.isfinite(x) for x in n) or n == (0.0, 0.0, 0.0))
 
 
 def off_unit_normals(part, raw_obj_normals):
     """Written normals, finite and non-zero, whose length is off 1 by more than 1e-3."""
-    rows = []
-    for key in ("vertex_normals", "face_normals"):
-        if part[key] is not None:
-            rows += part[key]
-    rows += raw_obj_normals
+    rows = written_normals(part, raw_obj_normals)
     n = 0
     for r in rows:
         if r is not None and all(math.isfinite(x) for x in r) and r != (0.0, 0.0, 0.0):
@@ -233,10 +234,11 @@ def main():
         except Exception as e:
             fail(rel, name, "output unreadable by the test's reader: %s" % e)
             return
-        bad = sum(bad_normals(q, obj_vn_lines(out) if i == 0 else []) for i, q in enumerate(outp))
+        vn = obj_vn_lines(out)  # the OBJ's raw vn lines (empty for other formats), counted with part 0
+        bad = sum(bad_normals(q, vn if i == 0 else []) for i, q in enumerate(outp))
         if bad:
             fail(rel, name, "%d written normals are zero or not finite" % bad)
-        off = sum(off_unit_normals(q, obj_vn_lines(out) if i == 0 else []) for i, q in enumerate(outp))
+        off = sum(off_unit_normals(q, vn if i == 0 else []) for i, q in enumerate(outp))
         if off:
             fail(rel, name, "%d written normals off unit length by more than 1e-3" % off)
         if not out.lower().endswith((".glb", ".gltf")):

@@ -41,9 +41,10 @@ MESH_FORMATS = (".obj", ".ply", ".off", ".stl", ".glb", ".gltf")
 
 
 # ---------------------------------------------------------------- small vector algebra
-# sub, cross, dot, Newell's area vector and the shading normal at a corner: tests/corpus/check.py's
-# (one copy for both harnesses)
-from check import sub, cross, dot, area_vector, corner_normal  # noqa: E402,F401
+# sub, cross, dot, Newell's area vector, the shading normal at a corner and the normals a file
+# holds: tests/corpus/check.py's (one copy for both harnesses)
+from check import sub, cross, dot, area_vector, corner_normal, obj_vn_lines  # noqa: E402,F401
+from check import written_normals as part_written_normals  # noqa: E402
 
 
 def norm(a):
@@ -149,24 +150,9 @@ def ply_schema(path):
     return out
 
 
-def obj_vn_lines(path):
-    out = []
-    with open(path, "rb") as f:
-        for line in f:
-            if line.startswith(b"vn "):
-                out.append(tuple(float(x) for x in line.split()[1:4]))
-    return out
-
-
 def written_normals(parts, path):
-    rows = []
-    for p in parts:
-        for key in ("vertex_normals", "face_normals"):
-            if p[key] is not None:
-                rows += p[key]
-    if path.lower().endswith(".obj"):
-        rows += obj_vn_lines(path)
-    return rows
+    """Every part's vertex and face normals, then an OBJ's raw vn lines (check.py's rules)."""
+    return [n for p in parts for n in part_written_normals(p, [])] + obj_vn_lines(path)
 
 
 def assimp_faces(path):
