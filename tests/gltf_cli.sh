@@ -568,5 +568,19 @@ for l in lines[end + 1:end + 1 + nv]:
 "$bin" normals "$src/data/scene.gltf" --tangents -o "$tmp/tan.obj" 2> "$tmp/err.txt"
 check "glTF --tangents to OBJ: a note says TANGENT is not written" grep -q "TANGENT not written: the output format cannot hold tangents" "$tmp/err.txt"
 
+# A point cloud (a PLY with vertices and no face, as scanners and trimesh's PointCloud write it)
+# into glTF: a POINTS primitive without indices (an index accessor of count 0 is invalid glTF).
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n' > "$tmp/points.ply"
+"$bin" transform --translate 1,0,0 "$tmp/points.ply" -o "$tmp/points.glb" 2> "$tmp/err.txt"
+check "point cloud -> glb: exit 0" test $? -eq 0
+check "point cloud -> glb: valid" valid "$tmp/points.glb"
+check "point cloud -> glb: one POINTS primitive, no indices, 3 positions moved by +1 in x" "$py" -c '
+import json, struct, sys
+b = open(sys.argv[1], "rb").read(); n = struct.unpack("<I", b[12:16])[0]; j = json.loads(b[20:20 + n])
+(p,) = j["meshes"][0]["primitives"]
+assert p["mode"] == 0 and "indices" not in p, p
+a = j["accessors"][p["attributes"]["POSITION"]]
+assert a["count"] == 3 and a["min"] == [1, 0, 0] and a["max"] == [2, 1, 0], a' "$tmp/points.glb"
+
 echo "gltf_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -473,8 +473,15 @@ struct PrimitiveWriter {
           idx.push_back(corner_output[c + 1]);
         }
       }
-      jprim["indices"] = add_index_accessor(out, idx, out_vertices);
-      jprim["mode"] = 4;
+      if (mesh.num_faces() == 0) {
+        // A point cloud (no face; the readers keep one, e.g. a PLY with vertices only): POINTS, each
+        // vertex a point, no indices (glTF 2.0, 3.7.2.1: an empty index accessor is invalid).
+        jprim.erase("indices");
+        jprim["mode"] = 0;
+      } else {
+        jprim["indices"] = add_index_accessor(out, idx, out_vertices);
+        jprim["mode"] = 4;
+      }
     }
   }
 
