@@ -66,6 +66,8 @@ void add_tangents(shadetool::Mesh& mesh, const std::string& input, shadetool::Fo
   if (frames.fallback_corners > 0)
     r.notes.push_back(fmt::format("--tangents: {} corners without a texture coordinate: a tangent perpendicular to the normal, w = +1",
                                   frames.fallback_corners));
+  r.stats["tangent_zero_corners"] = frames.zero_corners;
+  if (frames.zero_corners > 0) r.notes.push_back(shadetool::tangent_zero_corners_note(frames.zero_corners));
   if (format != shadetool::Format::Ply) {
     if (format == shadetool::Format::Gltf)
       r.notes.push_back("--tangents: computed, not written: glTF made from another format gets no TANGENT (write .ply, or start from a glTF)");

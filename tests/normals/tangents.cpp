@@ -3,6 +3,7 @@
 // node or the registry is missing).
 #include <catch2/catch.hpp>
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -79,6 +80,9 @@ Mesh per_corner_copies(const Mesh& m) {
   return c;
 }
 
+// The reference's zero frame (tangents.h, zero_corners): every component within FLT_MIN of 0.
+bool zero_frame(const float* e) { return std::fabs(e[0]) <= FLT_MIN && std::fabs(e[1]) <= FLT_MIN && std::fabs(e[2]) <= FLT_MIN; }
+
 double angle_deg(const double* t, Vec3d e) {
   const Vec3d a{t[0], t[1], t[2]};
   const Vec3d x = cross(a, e);
@@ -152,6 +156,35 @@ TEST_CASE("MikkTSpace welds by value, not by index: shared and per-corner copies
     CHECK(a.default_corners == b.default_corners);
     CHECK(a.fallback_corners == b.fallback_corners);
   }
+}
+
+// tangents.h, zero_corners: where the reference's frame is the zero vector, a unit tangent
+// perpendicular to the normal with the reference's w. The case in closed form: one triangle in
+// z = 0 with u = x, v = y (dP/du = +x, positive texture area: w = +1) and every vertex normal along
+// +x, so dP/du projected onto the normal's plane is exactly zero (testplate.glb from trimesh's
+// models has two such corners; a zero TANGENT fails the Khronos validator).
+TEST_CASE("MikkTSpace: a frame the reference leaves zero becomes a unit tangent perpendicular to the normal", "[tangents]") {
+  Mesh m;
+  for (Vec3d p : {Vec3d{0, 0, 0}, Vec3d{1, 0, 0}, Vec3d{0, 1, 0}}) m.add_vertex(p);
+  m.add_face({0, 1, 2});
+  m.texcoords = {0, 0, 1, 0, 0, 1};
+  m.texcoord_dims = 2;
+  m.corner_texcoord_index = m.corner_vertex;
+  m.vertex_normals = {1, 0, 0, 1, 0, 0, 1, 0, 0};
+  const TangentFrames t = mikktspace_tangents(m);
+  CHECK(t.zero_corners == 3);
+  CHECK(t.fallback_corners == 0);
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Vec3d x{t.tangents[4 * c], t.tangents[4 * c + 1], t.tangents[4 * c + 2]};
+    CHECK(std::fabs(x.x) < 1e-12);                   // perpendicular to the normal (+x)
+    CHECK(std::fabs(dot(x, x) - 1) < 1e-12);          // unit
+    CHECK(t.tangents[4 * c + 3] == 1.0);              // the reference's handedness
+  }
+  // A normal tilted off +x by a little: the projection is small but not zero, so the reference's
+  // frame (its normalised projection) stands and nothing is counted.
+  m.vertex_normals = {1, 0, 1e-3, 1, 0, 1e-3, 1, 0, 1e-3};
+  const TangentFrames u = mikktspace_tangents(m);
+  CHECK(u.zero_corners == 0);
 }
 
 TEST_CASE("MikkTSpace: faces without texture coordinates get a tangent perpendicular to the normal", "[tangents]") {
@@ -285,11 +318,16 @@ TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on real files", "[ta
     INFO(path << ": " << error);
     REQUIRE(expected.size() == 4 * u.corner.size());
     const TangentFrames t = mikktspace_tangents(m);
-    std::size_t w_differs = 0, direction_differs = 0;
+    std::size_t w_differs = 0, direction_differs = 0, zero_frames = 0;
     double worst = 0;
     for (std::size_t i = 0; i < u.corner.size(); ++i) {
       const double* ours = &t.tangents[4 * std::size_t(u.corner[i])];
       if (ours[3] != double(expected[4 * i + 3])) ++w_differs;
+      if (zero_frame(&expected[4 * i])) {  // tangents.h, zero_corners: unit instead of zero
+        ++zero_frames;
+        if (!(std::fabs(ours[0] * ours[0] + ours[1] * ours[1] + ours[2] * ours[2] - 1) < 1e-9)) ++direction_differs;
+        continue;
+      }
       const double a = angle_deg(ours, {expected[4 * i], expected[4 * i + 1], expected[4 * i + 2]});
       worst = std::max(worst, a);
       if (!(a <= 1e-3)) ++direction_differs;
@@ -297,6 +335,7 @@ TEST_CASE("MikkTSpace equals the reference (npm mikktspace) on real files", "[ta
     INFO(path << ": " << u.corner.size() << " corners, worst direction " << worst << " degrees");
     CHECK(w_differs == 0);
     CHECK(direction_differs == 0);
+    CHECK(t.zero_corners == zero_frames);
     ++meshes;
     corners += u.corner.size();
     overall_worst = std::max(overall_worst, worst);
@@ -364,6 +403,10 @@ void check_against_reference(std::vector<Mesh> meshes, const std::string& name) 
     for (std::size_t c = 0; c < m.num_corners(); ++c, ++at) {
       const double* ours = &t.tangents[4 * c];
       if (ours[3] != double(expected[4 * at + 3])) ++w_differs;
+      if (zero_frame(&expected[4 * at])) {  // tangents.h, zero_corners: unit instead of zero
+        if (!(std::fabs(ours[0] * ours[0] + ours[1] * ours[1] + ours[2] * ours[2] - 1) < 1e-9)) ++direction_differs;
+        continue;
+      }
       const double a = angle_deg(ours, {expected[4 * at], expected[4 * at + 1], expected[4 * at + 2]});
       worst = std::max(worst, a);
       if (!(a <= 1e-3)) ++direction_differs;

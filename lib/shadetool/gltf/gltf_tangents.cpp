@@ -64,7 +64,8 @@ std::string gltf_update_tangents(const GltfDocument& doc, GltfPrimitive& p, bool
   for (std::size_t c = 0; c < frames.tangents.size() / 4; ++c) frames.tangents[4 * c + 3] = -frames.tangents[4 * c + 3];
   p.corner_tangents = std::move(frames.tangents);
   p.drop_tangents = false;
-  return had ? "TANGENT recomputed (MikkTSpace) with the new normals" : "TANGENT added (MikkTSpace; " + why + ")";
+  const std::string zero = frames.zero_corners > 0 ? "; " + tangent_zero_corners_note(frames.zero_corners) : std::string();
+  return (had ? "TANGENT recomputed (MikkTSpace) with the new normals" : "TANGENT added (MikkTSpace; " + why + ")") + zero;
 }
 
 std::string gltf_world_tangents(const GltfDocument& doc, Mesh& world, bool holds_tangents) {

@@ -1088,11 +1088,27 @@ TangentFrames mikktspace_tangents(const Mesh& mesh) {
       }
       const std::uint32_t k = frames.of[c];
       const TSpace& s = k != ~0u ? frames.frames[k] : none;
+      if (!not_zero(s.os)) {
+        // The reference's frame is zero here (its group's projected derivatives cancel or vanish,
+        // e.g. texture coordinates constant over the vertex's faces): not a direction, and glTF
+        // requires TANGENT of unit length. Any unit vector perpendicular to the normal, w as the
+        // reference's (tangents.h, zero_corners).
+        const Vec3d t = perpendicular_unit(corner_normal(c, f));
+        row(t.x, t.y, t.z, s.orient ? 1.0 : -1.0);
+        ++out.zero_corners;
+        continue;
+      }
       row(s.os.x, s.os.y, s.os.z, s.orient ? 1.0 : -1.0);
       if (k == ~0u) ++out.default_corners;
     }
   out.tangents.insert(out.tangents.end(), buffer, buffer + 4 * staged);
   return out;
+}
+
+std::string tangent_zero_corners_note(std::size_t zero_corners) {
+  return "tangents: " + std::to_string(zero_corners) + (zero_corners == 1 ? " corner" : " corners") +
+         " where MikkTSpace's frame is zero (texture coordinates that do not vary over the vertex's faces): a unit "
+         "tangent perpendicular to the normal instead (a zero TANGENT is invalid glTF)";
 }
 
 }  // namespace shadetool

@@ -14,6 +14,12 @@
 //          default_corners   corners the algorithm reached with no frame of its own (a degenerate
 //                    triangle with no healthy neighbour at that vertex, or a triangle with zero
 //                    texture area in no group): the reference's default, (1, 0, 0), w = -1.
+//          zero_corners      corners whose frame in the reference is the zero vector (the sum of
+//                    their group's derivatives projected onto the normal is zero within FLT_MIN:
+//                    texture coordinates constant over the vertex's faces, or derivatives that
+//                    cancel): zero is not a tangent (glTF 2.0 requires TANGENT of unit length, the
+//                    Khronos validator reports it), so any unit vector perpendicular to the
+//                    corner's normal (as fallback_corners), w the reference's.
 //
 // The algorithm, step by step as the reference (tangents.cpp names each step):
 //  1. triangles: a quad is split along its shorter diagonal in texture space (ties: in space; still
@@ -46,6 +52,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
@@ -57,6 +64,7 @@ struct TangentFrames {
   std::vector<double> tangents;  // #C by 4
   std::size_t fallback_corners = 0;
   std::size_t default_corners = 0;
+  std::size_t zero_corners = 0;
 };
 
 TangentFrames mikktspace_tangents(const Mesh& mesh);
@@ -64,6 +72,9 @@ TangentFrames mikktspace_tangents(const Mesh& mesh);
 // A unit vector perpendicular to the unit vector n (Duff et al. 2017, "Building an orthonormal
 // basis, revisited", branchless); (1, 0, 0) when n is not finite or not near unit length.
 Vec3d perpendicular_unit(const Vec3d& n);
+
+// The note a command prints when zero_corners > 0 (one wording for the CLI, glTF and Python).
+std::string tangent_zero_corners_note(std::size_t zero_corners);
 
 }  // namespace shadetool
 #pragma GCC visibility pop
