@@ -150,6 +150,8 @@ RegisterCommand reg("info", HelpSection::Inspect, [](CLI::App& app) -> std::func
           else format = shadetool::format_extension(shadetool::format_from_extension(input));
           for (auto& c : format) c = char(std::toupper(static_cast<unsigned char>(c)));
           MeshInfo m = shadetool::info::mesh_info(mesh);
+          // Colour values the reader read as NaN/Inf (and whitened, with a note) are the file's.
+          if (r.stats.contains("nonfinite_colour_values_read")) m.nonfinite_values += r.stats["nonfinite_colour_values_read"].get<std::size_t>();
           // A glTF primitive's TEXCOORD_n pass through beside its mesh: it has texture coordinates.
           std::string texcoord_sets;
           if (r.gltf)

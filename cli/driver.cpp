@@ -653,6 +653,7 @@ int run_command(const std::string& command, const IoOptions& given_io, const Mes
       const double read_ms = ms_since(t0);
       for (auto& n : read_info.notes) result.notes.push_back(n);
       if (read_info.merged_vertices > 0) result.stats["merged_vertices"] = read_info.merged_vertices;
+      if (read_info.nonfinite_color_values > 0) result.stats["nonfinite_colour_values_read"] = read_info.nonfinite_color_values;
 
       show_stage(input, "computing");
       t0 = std::chrono::steady_clock::now();

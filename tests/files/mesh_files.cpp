@@ -370,3 +370,40 @@ TEST_CASE("OBJ and glTF writers write the normals that shade, as the lighting us
     CHECK(wf.notes.empty());
   }
 }
+
+// files/mesh_files.cpp, whiten_nonfinite_colors: a colour read with a NaN or infinite value (trimesh's
+// nancolor.obj: `v x y z nan nan nan`; a PLY with float colours holding inf) is no colour: its row
+// is read as white (what an OBJ vertex without a colour gets), every other row exactly as written,
+// one note, the values counted for `info`; the mesh then writes to every format. Before, every
+// command that writes colours refused the file, naming its output.
+TEST_CASE("read_mesh: NaN and infinite colours read as white rows, counted, the rest unchanged", "[mesh_io][colors]") {
+  const std::string obj =
+      "v 0 0 0 0.25 0.5 0.75\nv 1 0 0 nan nan nan\nv 0 1 0 0.125 inf 0.5\nv 0 0 1 0 1 0\nf 1 2 3\nf 1 3 4\n";
+  ReadInfo info;
+  const Mesh m = read_mesh_from_memory(obj, Format::Obj, "nan.obj", &info);
+  REQUIRE(m.vertex_colors.size() == 12);
+  const std::vector<float> want = {0.25f, 0.5f, 0.75f, 1, 1, 1, 1, 1, 1, 0, 1, 0};
+  CHECK(m.vertex_colors == want);
+  CHECK(info.nonfinite_color_values == 4);
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0] == "2 vertex colours with a NaN or infinite value: read as white, the colour of a vertex without one");
+  for (Format f : {Format::Obj, Format::Ply, Format::Off, Format::Gltf}) {
+    INFO(format_extension(f));
+    CHECK_NOTHROW(write_mesh_to_memory(m, write_as(f)));
+  }
+  // Finite colours: no note, nothing counted.
+  ReadInfo clean;
+  read_mesh_from_memory("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n", Format::Obj, "ok.obj", &clean);
+  CHECK(clean.notes.empty());
+  CHECK(clean.nonfinite_color_values == 0);
+  // PLY float face colours: the same rule for face rows.
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nproperty float red\nproperty float green\nproperty float blue\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 0.5 -inf 0.5\n3 0 2 1 0.5 0.25 0\n";
+  ReadInfo pinfo;
+  const Mesh p = read_mesh_from_memory(ply, Format::Ply, "nan.ply", &pinfo);
+  const std::vector<float> pwant = {1, 1, 1, 0.5f, 0.25f, 0};
+  CHECK(p.face_colors == pwant);
+  CHECK(pinfo.nonfinite_color_values == 1);
+}

@@ -47,6 +47,40 @@ const char* format_extension(Format format) {
   return "";
 }
 
+namespace {
+
+// Colours read with a NaN or infinite value (float-typed colours can hold them: OBJ
+// `v x y z nan nan nan`, PLY float red green blue): no writer can encode one, and such a colour is
+// no colour, so each such row is read as white, what the readers give a vertex without a colour
+// (OBJ), and counted in a note (trimesh reads the file too; before, every command that writes
+// colours refused it). Colours a command computes are not touched: a NaN there is refused when
+// written (check_writable), as it is a computation's failure.
+void whiten_nonfinite_colors(Mesh& mesh, ReadInfo& info) {
+  if (!mesh.colors_are_float) return;
+  const std::size_t k = std::size_t(std::max(mesh.color_channels, 1));
+  auto whiten = [k, &info](std::vector<float>& colors) {
+    std::size_t rows = 0;
+    for (std::size_t r = 0; r + k <= colors.size(); r += k) {
+      std::size_t bad = 0;
+      for (std::size_t j = 0; j < k; ++j) bad += !std::isfinite(colors[r + j]);
+      if (bad == 0) continue;
+      info.nonfinite_color_values += bad;
+      std::fill_n(colors.begin() + std::ptrdiff_t(r), k, 1.0f);
+      ++rows;
+    }
+    return rows;
+  };
+  const std::size_t v = whiten(mesh.vertex_colors), f = whiten(mesh.face_colors);
+  if (v + f == 0) return;
+  auto rows = [](std::size_t n, const char* what) {
+    return n == 0 ? std::string() : std::to_string(n) + " " + what + (n == 1 ? " colour" : " colours");
+  };
+  info.notes.push_back(rows(v, "vertex") + (v && f ? " and " : "") + rows(f, "face") +
+                       " with a NaN or infinite value: read as white, the colour of a vertex without one");
+}
+
+}  // namespace
+
 Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::string& name, ReadInfo* info) {
   ReadInfo local;
   ReadInfo& ri = info ? *info : local;
@@ -60,6 +94,7 @@ Mesh read_mesh_from_memory(std::string_view bytes, Format format, const std::str
   if (entry.reports_progress) ri.progress.at(bytes.size());
   // A file with content that yields no vertex is not an empty mesh but a file we could not read.
   if (mesh.num_vertices() == 0) fail(name, 0, "no vertex in the file: nothing to read as a mesh");
+  whiten_nonfinite_colors(mesh, ri);
   return mesh;
 }
 

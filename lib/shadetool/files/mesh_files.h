@@ -15,8 +15,10 @@
 //                        flushes it. write_mesh_to_memory: to a string.
 // Errors throw shadetool::Error with `FILE:LINE: what is wrong` (see core/error.h).
 //
+// Reading: a colour row read with a NaN or infinite value (float colours: OBJ `nan`, PLY float
+// properties) is read as white, counted in ReadInfo::nonfinite_color_values, with one note.
 // What no writer writes (Error `NAME: what`, nothing written): a NaN or infinite coordinate,
-// texture coordinate or float colour; with WriteOptions::refuse_unusable_normals (every
+// texture coordinate or float colour (a colour a command computed); with WriteOptions::refuse_unusable_normals (every
 // subcommand), a zero, NaN or infinite normal of a kind the format holds.
 // What every writer writes as a unit vector: a stored normal (vertex, corner or face) that is
 // finite and non-zero but off unit length by more than 1e-3 is written divided by its length (the

@@ -18,6 +18,8 @@ enum class Format { Auto, Obj, Ply, Off, Stl, Gltf };
 struct ReadInfo {
   Format format = Format::Auto;
   std::size_t merged_vertices = 0;  // STL: identical positions merged into shared vertices
+  std::size_t nonfinite_color_values = 0;  // NaN/Inf colour values read (their rows read as white:
+                                           // files/mesh_files.h), for `info` to count
   std::vector<std::string> notes;   // things the user should know (one line each)
   // In: where reading reports its stage "reading" in bytes of the file (core/progress.h); a
   // reader calls progress.at(bytes consumed) every so often, read_mesh_from_memory begins the
