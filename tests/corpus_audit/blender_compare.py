@@ -141,6 +141,9 @@ def main():
             import audit
             parts = audit.world_parts(o, parts)
         P_all = [p for q in parts for p in q["positions"]]
+        if not P_all or not any(q.get("faces") for q in parts):  # a point cloud: no corner to compare
+            print("note: %s [%s]: no faces in the output (a point cloud): not compared" % (rel, label))
+            continue
         lo = [min(p[i] for p in P_all) for i in range(3)]
         hi = [max(p[i] for p in P_all) for i in range(3)]
         scale = max(max(h - l for h, l in zip(hi, lo)), 1e-12) * 1e-5
