@@ -674,7 +674,8 @@ constexpr std::size_t kOneThreadMinFaces = 50000;
 // (adding faces cannot make the spread d - |U| smaller: it is a minimum over directions of a sum of
 // non-negative terms; the test's margins grow with d); easy when its corners seen form one closed ring; else not counted (its fan
 // may continue outside the window). Worth it when the hard share among the counted vertices is at
-// most kProbeHardShare (measured: bench/normals/results/notes.md, fifth round), or when too few
+// most kProbeHardShare (measured: bench/normals/results/notes.md, fifth round; the window size:
+// seventh round, the same verdicts at F / 512), or when too few
 // vertices could be counted to tell; the probe stops after a window where enough vertices were
 // counted and the hard share already exceeds twice that. The estimate leans towards hard (a window cuts fans open, and
 // only closed ones count as easy); it only chooses between two paths that give the same bits.
