@@ -643,3 +643,132 @@ TEST_CASE("corner_normals, the floor's parts: (ii) the same rings with one face 
     CHECK(a.normals.size() != b.normals.size());
   }
 }
+
+namespace {
+
+// Issue 31 goal 3, seventh round: meshes whose hard vertices (left by the one-thread path to the
+// general path on the sub-mesh of their faces) have several groups each, at the first and the last
+// vertex id, next to each other and between easy vertices, so that the easy rows between them move
+// by every amount (corner_normals.cpp, step (4): the pool's extra rows made in place).
+//
+// A saddle fan: pole at `centre`, n ring vertices at radius 1 (n divisible by 4), z = t (|x| - |y|)
+// relative to the pole: four planar sectors (x, y signs), each sector's faces in one plane whose
+// normal is (-sx t, sy t, 1) / sqrt(1 + 2 t^2) (sx, sy the signs of x and y in the sector). At t = 1
+// neighbouring sectors meet at acos(1/3) = 70.5 degrees: at a 30-degree crease the pole has four
+// groups and the ring vertices on the sector borders two. pole_last: the pole numbered after its
+// ring.
+void add_saddle_fan(Mesh& m, Vec3d centre, int n, double t, bool pole_last) {
+  std::uint32_t pole = 0;
+  if (!pole_last) pole = m.add_vertex(centre);
+  const std::uint32_t first = std::uint32_t(m.num_vertices());
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * kPi * k / n;
+    // exact on the axes, where two sectors meet
+    const double x = k % (n / 4) == 0 ? std::round(std::cos(a)) : std::cos(a);
+    const double y = k % (n / 4) == 0 ? std::round(std::sin(a)) : std::sin(a);
+    m.add_vertex(centre + Vec3d{x, y, t * (std::fabs(x) - std::fabs(y))});
+  }
+  if (pole_last) pole = m.add_vertex(centre);
+  for (int k = 0; k < n; ++k) m.add_face({pole, first + std::uint32_t(k), first + std::uint32_t((k + 1) % n)});
+}
+
+// The sector normal of a face of add_saddle_fan with ring corners k, k + 1 (n ring vertices).
+Vec3d saddle_normal(int k, int n, double t) {
+  const double a = 2 * kPi * (k + 0.5) / n;  // the face's middle direction
+  const double sx = std::cos(a) > 0 ? 1.0 : -1.0, sy = std::sin(a) > 0 ? 1.0 : -1.0;
+  const double l = std::sqrt(1 + 2 * t * t);
+  return Vec3d{-sx * t / l, sy * t / l, 1 / l};
+}
+
+// Two closed fans of a and b triangles on one vertex (a pinch), sheet B tilted by 1 degree.
+void add_pinch(Mesh& m, Vec3d centre, int a, int b) {
+  const std::uint32_t c = m.add_vertex(centre);
+  for (int s = 0; s < 2; ++s) {
+    const int n = s == 0 ? a : b;
+    const std::uint32_t first = std::uint32_t(m.num_vertices());
+    for (int i = 0; i < n; ++i)
+      m.add_vertex(centre + Vec3d{std::cos(2 * kPi * i / n + 0.3 * s), std::sin(2 * kPi * i / n + 0.3 * s), 0.02 * s});
+    for (int i = 0; i < n; ++i) m.add_face({c, first + std::uint32_t(i), first + std::uint32_t((i + 1) % n)});
+  }
+}
+
+void add_mesh(Mesh& m, const Mesh& part, Vec3d offset) {
+  const std::uint32_t base = std::uint32_t(m.num_vertices());
+  for (std::size_t v = 0; v < part.num_vertices(); ++v) m.add_vertex(part.position(v) + offset);
+  for (std::size_t f = 0; f < part.num_faces(); ++f) {
+    const std::uint32_t* c = &part.corner_vertex[3 * f];
+    m.add_face({base + c[0], base + c[1], base + c[2]});
+  }
+}
+
+}  // namespace
+
+TEST_CASE("corner_normals, one-thread path: hard vertices of several groups at the first and last vertex ids, side "
+          "by side and between easy ones (poles of 40 corners in four creased sectors, pinches of 15 corners, one easy "
+          "row between two hard vertices), "
+          "more extra rows than the pool reserves; the frozen copy's bits and the sectors' own normals",
+          "[corner_normals][reference]") {
+  using normals_detail::CreasePath;
+  const Mesh ball = icosphere(2).mesh;  // 162 vertices, every one a closed smooth ring: easy
+  for (int layout = 0; layout < 3; ++layout) {
+    // 0: fans, pinches and double cones between spheres, the first vertex a pole, the last a pole;
+    // 1: fans only, side by side (4 + 2 + 2 extra rows per 41 vertices: more than #V / 16 + 16);
+    // 2: spheres, then one fan whose pole is the last vertex (no easy row after it).
+    Mesh m;
+    std::vector<int> fan_first_face;
+    const int n = 40;
+    auto fan = [&](Vec3d at, bool pole_last) {
+      fan_first_face.push_back(int(m.num_faces()));
+      add_saddle_fan(m, at, n, 1.0, pole_last);
+    };
+    // A flat double cone: its apexes are easy (numbered first and last), its six rim vertices hard with
+    // two groups (a 174-degree fold): one easy row between hard vertices on either side.
+    const Mesh bicone = double_cone(6, 0.05, 1.0, 1.0, -0.05);
+    if (layout == 0) {
+      fan({0, 0, 0}, false);
+      add_mesh(m, bicone, {2.5, 0, 0});
+      add_mesh(m, ball, {5, 0, 0});
+      fan({10, 0, 0}, false);
+      fan({15, 0, 0}, false);
+      add_pinch(m, {20, 0, 0}, 7, 8);
+      m.add_vertex({25, 0, 0});  // a vertex without corners (no row)
+      add_mesh(m, ball, {30, 0, 0});
+      add_pinch(m, {35, 0, 0}, 8, 7);
+      add_mesh(m, ball, {40, 0, 0});
+      add_mesh(m, bicone, {42.5, 0, 0});
+      fan({45, 0, 0}, true);
+    } else if (layout == 1) {
+      for (int i = 0; i < 12; ++i) fan({5.0 * i, 0, 0}, i % 2 == 1);
+    } else {
+      add_mesh(m, ball, {0, 0, 0});
+      add_mesh(m, ball, {5, 0, 0});
+      fan({10, 0, 0}, true);
+    }
+    m.precision = ValuePrecision::Double;
+    const std::string what = "layout " + std::to_string(layout);
+    INFO(what);
+    for (Weighting w : {Weighting::Angle, Weighting::Uniform})
+      for (Precision p : {Precision::Double, Precision::Float})
+        for (double crease : {30 * kDeg, 80 * kDeg}) check_same(m, crease, w, p, what);
+    // Truth: at 30 degrees every corner of a fan's face has its sector's plane normal, and each pole
+    // has four rows (one per sector).
+    const CornerNormals one = normals_detail::corner_normals_by(MeshView(m), 30 * kDeg, Weighting::Angle, Precision::Double,
+                                                                CreasePath::OneThread);
+    for (int f0 : fan_first_face) {
+      std::vector<std::uint32_t> pole_rows;
+      for (int k = 0; k < n; ++k) {
+        const Vec3d plane = saddle_normal(k, n, 1.0);
+        for (int j = 0; j < 3; ++j) {
+          const std::size_t c = 3 * std::size_t(f0 + k) + std::size_t(j);
+          const double* got = &one.normals[3 * std::size_t(one.corner_index[c])];
+          CHECK(std::fabs(got[0] - plane.x) < 1e-12);
+          CHECK(std::fabs(got[1] - plane.y) < 1e-12);
+          CHECK(std::fabs(got[2] - plane.z) < 1e-12);
+        }
+        pole_rows.push_back(one.corner_index[3 * std::size_t(f0 + k)]);
+      }
+      std::sort(pole_rows.begin(), pole_rows.end());
+      CHECK(std::unique(pole_rows.begin(), pole_rows.end()) - pole_rows.begin() == 4);
+    }
+  }
+}

@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -481,8 +482,12 @@ GroupNormals group_normals(const MeshView& mesh, const std::vector<std::uint32_t
 }
 
 // The general path. base (optional): #V + 1, vertex v's rows are base[v] .. base[v + 1].
-// fallback_corners counts the corners of vertices < counted only (the one-thread path runs this
-// on the faces around its hard vertices, numbered first, and keeps only their results).
+// counted: only vertices < counted are grouped and their rows normalised; every later vertex is
+// one row (the sum of its corners, not normalised) and fallback_corners counts none of its
+// corners. The one-thread path runs this on the faces around its hard vertices, numbered first,
+// and keeps only their rows: a vertex's groups and its rows' sums read nothing of other vertices,
+// and its rows come before any later vertex's, so they are what compute on all vertices gives
+// (the other vertices of such a sub-mesh have open fans: grouping them was most of its cost).
 template <class T, Weighting W>
 CornerNormals compute(const MeshView& mesh, double crease_angle, Precision precision, const std::uint32_t* face_group,
                       std::vector<std::uint32_t>* base_out = nullptr, std::size_t counted = ~std::size_t(0)) {
@@ -500,7 +505,8 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
   CornerNormals out;
   reserve_bulk(out.corner_index, C);  // huge pages for the fresh array (core/bulk_reserve.h)
   out.corner_index.resize(C);
-  std::vector<std::uint32_t> groups(V, 0);
+  const std::size_t grouped = std::min(V, counted);
+  std::vector<std::uint32_t> groups(V, 1);  // vertices >= grouped: one row each (see above)
   std::vector<std::uint8_t> has_degenerate_group(V, 0);
   const CreaseTest crease(crease_angle);
   // Whether the two faces of a manifold edge join: not the same face, the same smoothing group
@@ -513,11 +519,11 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
     return same_group(fa, fb) && crease.smooth(normal(fa), normal(fb));
   };
   const bool plain_triangles = mesh.all_triangles() && !face_group;
-  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
+  parallel_ranges(grouped, [&](std::size_t v_begin, std::size_t v_end) {
     FanScratch scratch;  // reused across the range's vertices
     for (std::size_t v = v_begin; v < v_end; ++v) {
       const std::uint32_t begin = vf.offset[v], d = vf.offset[v + 1] - begin;
-      if (d == 0) continue;
+      if (d == 0) { groups[v] = 0; continue; }
       // A vertex that is not inside its smooth cone reads the normals of its faces and writes its
       // corners' groups, anywhere in those arrays: fetch them kPrefetchVertices ahead (measured:
       // without it the grouping of a CAD mesh, most of whose vertices lie on creases, took 1.3x
@@ -599,8 +605,8 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
 
   // (6) normalise rows; a row that cannot be normalised takes the normal of the first valid face
   // among its corners, else of the vertex, else (0, 0, 1) (kFallbackNormal).
-  std::vector<std::size_t> fallback_corners(V, 0);
-  parallel_ranges(V, [&](std::size_t v_begin, std::size_t v_end) {
+  std::vector<std::size_t> fallback_corners(grouped, 0);
+  parallel_ranges(grouped, [&](std::size_t v_begin, std::size_t v_end) {
     for (std::size_t v = v_begin; v < v_end; ++v) {
       for (std::uint32_t r = base[v]; r < base[v + 1]; ++r) {
         double* o = &out.normals[3 * std::size_t(r)];
@@ -624,7 +630,7 @@ CornerNormals compute(const MeshView& mesh, double crease_angle, Precision preci
       }
     }
   });
-  for (std::size_t v = 0; v < std::min(V, counted); ++v) out.fallback_corners += fallback_corners[v];
+  for (std::size_t v = 0; v < grouped; ++v) out.fallback_corners += fallback_corners[v];
   if (base_out) base_out->swap(base);
   return out;
 }
@@ -668,11 +674,12 @@ constexpr std::size_t kOneThreadMinFaces = 50000;
 // (adding faces cannot make the spread d - |U| smaller: it is a minimum over directions of a sum of
 // non-negative terms; the test's margins grow with d); easy when its corners seen form one closed ring; else not counted (its fan
 // may continue outside the window). Worth it when the hard share among the counted vertices is at
-// most kProbeHardShare (measured: bench/normals/results/notes.md, fifth round), or when too few
+// most kProbeHardShare (measured: bench/normals/results/notes.md, fifth round; the window size:
+// seventh round, the same verdicts at F / 512), or when too few
 // vertices could be counted to tell; the probe stops after a window where enough vertices were
 // counted and the hard share already exceeds twice that. The estimate leans towards hard (a window cuts fans open, and
 // only closed ones count as easy); it only chooses between two paths that give the same bits.
-constexpr std::size_t kProbeWindows = 8, kProbeFaces = 256, kProbeShare = 512, kProbeMinCounted = 32;
+constexpr std::size_t kProbeWindows = 8, kProbeFaces = 256, kProbeShare = 4096, kProbeMinCounted = 32;
 constexpr double kProbeHardShare = 0.05;
 
 template <class T>
@@ -731,8 +738,10 @@ bool compute_one_thread(const MeshView& mesh, double crease_angle, Precision pre
   // (2) row[v]: provisional row of an easy vertex; kHardBit | h for the h-th hard vertex.
   BulkVector<std::uint32_t> row(V);
   std::vector<std::uint32_t> hard, hard_row;
+  // The pool becomes out.normals: room for the hard vertices' extra rows reserved (address space;
+  // a pool that needs more grows once, in (4)).
   std::vector<double> pool;
-  reserve_bulk(pool, 3 * V);
+  reserve_bulk(pool, 3 * (V + V / 16 + 16));
   pool.resize(3 * V);
   std::vector<std::uint64_t> hard_bit((V + 63) / 64, 0);  // the gather in (3) reads this, not row
   std::uint32_t used = 0;
@@ -807,26 +816,21 @@ bool compute_one_thread(const MeshView& mesh, double crease_angle, Precision pre
   for (std::uint32_t h = 0; h < H; ++h) extra += sub_base[h + 1] - sub_base[h] - 1;  // >= 1 group each
   const std::size_t N = used + extra;
   std::vector<std::uint32_t> delta(H);  // final row - sub-mesh row, mod 2^32
-  if (extra == 0) {
-    pool.resize(3 * N);
-    for (std::uint32_t h = 0; h < H; ++h) {
-      std::copy_n(&sub.normals[3 * std::size_t(sub_base[h])], 3, &pool[3 * std::size_t(hard_row[h])]);
-      delta[h] = hard_row[h] - sub_base[h];
-    }
-    out.normals.swap(pool);
-  } else {
-    reserve_bulk(out.normals, 3 * N);
-    out.normals.resize(3 * N);
-    std::size_t from = 0, shift = 0;  // provisional rows [from, hard_row[h]) are easy
-    for (std::uint32_t h = 0; h < H; ++h) {
-      std::copy(&pool[3 * from], &pool[3 * std::size_t(hard_row[h])], &out.normals[3 * (from + shift)]);
-      const std::uint32_t g = sub_base[h + 1] - sub_base[h];
-      std::copy_n(&sub.normals[3 * std::size_t(sub_base[h])], 3 * std::size_t(g), &out.normals[3 * (hard_row[h] + shift)]);
-      delta[h] = std::uint32_t(hard_row[h] + shift) - sub_base[h];
-      from = hard_row[h] + 1;
-      shift += g - 1;
-    }
-    std::copy(&pool[3 * from], &pool[3 * std::size_t(used)], &out.normals[3 * (from + shift)]);
+  // In place, from the last hard vertex back: the easy rows after hard vertex h move up by the
+  // extra rows of hard vertices 0 .. h, and h's groups take its provisional row and the gap.
+  pool.resize(3 * N);
+  std::size_t shift = extra, end = used;  // provisional rows (hard_row[h], end) are easy
+  for (std::uint32_t h = H; h-- > 0;) {
+    const std::size_t r = hard_row[h], g = sub_base[h + 1] - sub_base[h];
+    if (shift != 0 && end > r + 1)
+      std::memmove(&pool[3 * (r + 1 + shift)], &pool[3 * (r + 1)], 3 * (end - r - 1) * sizeof(double));
+    shift -= g - 1;
+    std::copy_n(&sub.normals[3 * std::size_t(sub_base[h])], 3 * g, &pool[3 * (r + shift)]);
+    delta[h] = std::uint32_t(r + shift) - sub_base[h];
+    end = r;
+  }
+  out.normals.swap(pool);
+  if (extra != 0) {
     shift = 0;
     for (std::uint32_t v = 0; v < V; ++v) {
       const std::uint32_t r = row[v];
