@@ -475,8 +475,9 @@ int main(int argc, char** argv) {
     std::printf("elements %.3f ms, quadrature %.3f ms\n", median(t_el), median(t_q));
     return 0;
   }
-  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N: least_squares_fit alone, N times (10k torus, studio)
-    const Mesh mesh = testing::torus(100, 50, 1.0, 0.4).mesh;
+  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N [1m]: least_squares_fit alone, N times (10k (1M) torus, studio)
+    const bool million = argc > 5 && std::string(argv[5]) == "1m";
+    const Mesh mesh = million ? testing::torus(1000, 500, 1.0, 0.4).mesh : testing::torus(100, 50, 1.0, 0.4).mesh;
     const Scene scene = read_scene(src + "/data/scenes/studio.json");
     const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
     const std::vector<double> world = world_positions(mesh, scene);
