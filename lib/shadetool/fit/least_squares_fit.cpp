@@ -515,38 +515,17 @@ void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const 
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
 }
-// The solution x of the 4-lane CG: xl = 4 lanes per node, or 3 (3 channels: the pad lane, always
-// 0, not stored; x is then the caller's output, no padded copy). Loaded with the pad lane 0.
-template <std::size_t XL>
-inline __attribute__((always_inline)) void load_x(const double* x, std::size_t i, Lanes4& xi) {
-  xi = Lanes4{0, 0, 0, 0};
-  std::memcpy(&xi, x + XL * i, XL * sizeof(double));
-}
-template <std::size_t XL>
-inline __attribute__((always_inline)) void store_x(double* x, std::size_t i, const Lanes4& xi) {
-  std::memcpy(x + XL * i, &xi, XL * sizeof(double));
-}
 // x += alpha p (the last step's, when no direction pass follows it).
-template <std::size_t XL>
-inline __attribute__((always_inline)) void lanes4_add_step_body(const double* p, std::size_t N, const Lanes4& alpha,
-                                                                double* x) {
-  Lanes4 pi;
+__attribute__((target_clones("avx2", "default")))
+void lanes4_add_step(const double* p, std::size_t N, const double alpha_in[4], double* x) {
+  Lanes4 alpha, pi, xi;
+  std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&pi, p + 4 * i, sizeof pi);
-    Lanes4 xi;
-    load_x<XL>(x, i, xi);
+    std::memcpy(&xi, x + 4 * i, sizeof xi);
     xi += alpha * pi;
-    store_x<XL>(x, i, xi);
+    std::memcpy(x + 4 * i, &xi, sizeof xi);
   }
-}
-__attribute__((target_clones("avx2", "default")))
-void lanes4_add_step(const double* p, std::size_t N, const double alpha_in[4], double* x, std::size_t xl) {
-  Lanes4 alpha;
-  std::memcpy(&alpha, alpha_in, sizeof alpha);
-  if (xl == 3)
-    lanes4_add_step_body<3>(p, N, alpha, x);
-  else
-    lanes4_add_step_body<4>(p, N, alpha, x);
 }
 // The first residual r = b - Ap (b_then_r: b in, r out), with sum b^2, sum r^2 and (inv_m
 // non-null) sum r^2 inv_m_i, per lane.
@@ -579,34 +558,22 @@ void lanes4_first_direction(const double* r, const double* inv_d, std::size_t N,
   }
   std::memcpy(abs_out, &abs, sizeof abs);
 }
-// x += alpha p (the last step's, deferred: lanes4_step), then p = inv_d_i r + beta p, per lane; x
-// with xl = 3 or 4 lanes (load_x).
-template <std::size_t XL>
-inline __attribute__((always_inline)) void lanes4_direction_body(const double* r, const double* inv_d, std::size_t N,
-                                                                 const Lanes4& alpha, const Lanes4& beta, double* x,
-                                                                 double* p) {
-  Lanes4 ri, pi;
+// x += alpha p (the last step's, deferred: lanes4_step), then p = inv_d_i r + beta p, per lane.
+__attribute__((target_clones("avx2", "default")))
+void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double alpha_in[4],
+                      const double beta_in[4], double* x, double* p) {
+  Lanes4 alpha, beta, ri, pi, xi;
+  std::memcpy(&alpha, alpha_in, sizeof alpha);
+  std::memcpy(&beta, beta_in, sizeof beta);
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&ri, r + 4 * i, sizeof ri);
     std::memcpy(&pi, p + 4 * i, sizeof pi);
-    Lanes4 xi;
-    load_x<XL>(x, i, xi);
+    std::memcpy(&xi, x + 4 * i, sizeof xi);
     xi += alpha * pi;
     pi = ri * inv_d[i] + beta * pi;
-    store_x<XL>(x, i, xi);
+    std::memcpy(x + 4 * i, &xi, sizeof xi);
     std::memcpy(p + 4 * i, &pi, sizeof pi);
   }
-}
-__attribute__((target_clones("avx2", "default")))
-void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double alpha_in[4],
-                      const double beta_in[4], double* x, std::size_t xl, double* p) {
-  Lanes4 alpha, beta;
-  std::memcpy(&alpha, alpha_in, sizeof alpha);
-  std::memcpy(&beta, beta_in, sizeof beta);
-  if (xl == 3)
-    lanes4_direction_body<3>(r, inv_d, N, alpha, beta, x, p);
-  else
-    lanes4_direction_body<4>(r, inv_d, N, alpha, beta, x, p);
 }
 
 // b_i += sum over the triangles' points of w_k phi_i(x_k) f(x_k) (least_squares_fit.h, b), one
@@ -711,12 +678,11 @@ struct BlockCgOptions {
 // channels, each with its own step lengths and its own stop. x: #nodes by W, the first guess in,
 // the solution out; rows in off_system stay 0. b_then_r: b in, the residual after (its memory is
 // the residual's: one array fewer to fault in). Counts into fit (iterations: operator passes, the
-// most over channels; residual: the largest relative residual; converged). x_lanes: W, or 3 with
-// W = 4 (3 channels in 4 lanes: x holds the three, the pad lane is 0 and not stored).
+// most over channels; residual: the largest relative residual; converged).
 template <std::size_t W>
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                               const std::vector<std::uint32_t>& off_system, double* b_then_r,
-                              const BlockCgOptions& o, double* x, std::size_t x_lanes, LeastSquaresFit& fit) {
+                              const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
   // Not value-initialised: the first direction writes p, the first operator pass clears Ap.
@@ -738,16 +704,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   const bool bounded = o.accuracy_bound > 0 && inv_m;
   const bool mass_is_jacobi = inv_m == inv_d;  // lambda = 0: r^T D^-1 r is both the stop's sum and CG's r^T z
   const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
-  const std::size_t xl = x_lanes;
-  const double* x0 = x;  // the first guess, W lanes
-  if (xl != W) {  // 3 of 4 lanes stored: the first guess padded into p (free until the first direction)
-    for (std::size_t i = 0; i < N; ++i) {
-      for (std::size_t k = 0; k < xl; ++k) p[i * W + k] = x[i * xl + k];
-      for (std::size_t k = xl; k < W; ++k) p[i * W + k] = 0;
-    }
-    x0 = p;
-  }
-  apply(x0, Ap, pAp.data(), false);  // pAp unused here
+  apply(x, Ap, pAp.data(), false);  // pAp unused here
   if constexpr (W == 4) {
     lanes4_residual(Ap, bounded ? inv_m : nullptr, N, r, rhs2.data(), res2.data(), res_mass.data());
   } else {
@@ -765,7 +722,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     threshold[k] = std::max(o.tolerance * o.tolerance * rhs2[k], std::numeric_limits<double>::min());
     active[k] = false;
     if (rhs2[k] == 0) {  // b = 0: the solution is 0
-      for (std::size_t i = k; k < xl && i < N * xl; i += xl) x[i] = 0;
+      for (std::size_t i = k; i < n; i += W) x[i] = 0;
       res2[k] = 0;
     } else if (!(res2[k] < threshold[k] || accurate(k))) {
       active[k] = true;
@@ -817,7 +774,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
     if constexpr (W == 4) {
-      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, xl, p);
+      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, p);
       x_behind = false;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -828,7 +785,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     }
   }
   if constexpr (W == 4)
-    if (x_behind) lanes4_add_step(p, N, alpha.data(), x, xl);
+    if (x_behind) lanes4_add_step(p, N, alpha.data(), x);
   fit.iterations = std::max(fit.iterations, iterations);
   for (std::size_t k = 0; k < W; ++k) {
     const double relative = rhs2[k] > 0 ? std::sqrt(res2[k] / rhs2[k]) : 0.0;  // divisor checked
@@ -837,14 +794,14 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   }
 }
 
-// b #nodes by `width` lanes (4 for 3 channels, the fourth b = 0 and so x = 0, a channel solved at
-// once), x by x_lanes (width, or 3 with width 4: the pad lane not stored); widths other than 1 and
-// 4: one channel at a time. b: overwritten (the residual).
+// b and x #nodes by `width` lanes (cg_lanes: 4 for 3 channels, the fourth b = 0 and so x = 0, a
+// channel solved at once); widths other than 1 and 4: one channel at a time. b: overwritten (the
+// residual).
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                               const std::vector<std::uint32_t>& off_system, double* b, std::size_t width,
-                              const BlockCgOptions& o, double* x, std::size_t x_lanes, LeastSquaresFit& fit) {
-  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, o, x, 1, fit);
-  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b, o, x, x_lanes, fit);
+                              const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
+  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, o, x, fit);
+  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b, o, x, fit);
   const std::size_t N = inverse_diagonal.size();
   std::vector<double> bk(N), xk(N);
   for (std::size_t k = 0; k < width; ++k) {
@@ -852,7 +809,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       bk[i] = b[i * width + k];
       xk[i] = x[i * width + k];
     }
-    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk.data(), o, xk.data(), 1, fit);
+    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk.data(), o, xk.data(), fit);
     for (std::size_t i = 0; i < N; ++i) x[i * width + k] = xk[i];
   }
 }
@@ -1103,9 +1060,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
   if (off_system.size() < N) {
     // b and the solution with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its
     // solution is 0 and it stops at once), for add_triangle_products_4; otherwise the channels.
-    // The solution is solved in place in fit.values (3 channels: CG keeps the pad lane out of it).
+    // padded is not value-initialised: the first guess below writes it whole.
     const std::size_t L = width == 3 ? 4 : width;
-    double* const x = fit.values.data();
+    const std::unique_ptr<double[]> padded(L != width ? new double[N * L] : nullptr);
+    double* const x = L != width ? padded.get() : fit.values.data();
     // b for every channel in one pass over the points.
     std::vector<double> b(N * L, 0.0);
     const TriangleLoads loads = triangle_loads(q.rule);
@@ -1129,13 +1087,7 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     for (std::size_t i = 0; i < N; ++i) {  // all L lanes (a pad lane: b = 0, so 0), one vector division
       const double m = A.lumped_mass(i);
       const bool mass = inverse_diagonal[i] != 0 && m > 0;  // off the system (no mass): 0 during CG
-      if (L == width) {
-        for (std::size_t k = 0; k < L; ++k) x[i * L + k] = mass ? b[i * L + k] / m : 0.0;  // divisor checked
-      } else {  // L = 4, width = 3: the pad lane's quotient not stored
-        double c0[4];
-        for (std::size_t k = 0; k < 4; ++k) c0[k] = mass ? b[i * 4 + k] / m : 0.0;  // divisor checked
-        for (std::size_t k = 0; k < 3; ++k) x[i * 3 + k] = c0[k];
-      }
+      for (std::size_t k = 0; k < L; ++k) x[i * L + k] = mass ? b[i * L + k] / m : 0.0;  // divisor checked
     }
     BlockCgOptions cg;
     cg.tolerance = options.tolerance;
@@ -1147,7 +1099,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
-    block_conjugate_gradient(A, inverse_diagonal, off_system, b.data(), L, cg, x, width, fit);
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b.data(), L, cg, x, fit);
+    if (L != width)
+      for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];
   }
   if (!off_system.empty()) {  // the nodes outside the system keep their point values
     const std::vector<double> at = point_values_at(off_system);
