@@ -741,7 +741,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   int iterations = 0;
   bool x_behind = false;  // 4 lanes: the last step's x += alpha p not yet made (lanes4_step)
   while (running > 0 && iterations < o.max_iterations) {
-    apply(p, Ap, pAp.data(), iterations > 0);  // p^T A p summed over the elements; Ap cleared by the direction pass
+    apply(p, Ap, pAp.data(), iterations > 0);  // p^T A p summed over the elements; Ap cleared by the step (4 lanes) or the direction pass
     ++iterations;
     for (std::size_t k = 0; k < W; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
