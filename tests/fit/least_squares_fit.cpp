@@ -777,3 +777,45 @@ TEST_CASE("The --fit vocabulary round-trips through its names", "[fit][vocabular
   }
   CHECK_FALSE(parse_vertex_fit("least_squares"));
 }
+
+TEST_CASE("f handed over (moved in, its memory CG's work vectors): the same fit bits as f kept",
+          "[fit][least_squares]") {
+  // Truth: the fit with f passed by const reference (CG's vectors allocated apart). The rvalue
+  // overload reuses f's memory for p and Ap once b is assembled; any read of f after that, or a
+  // work vector overlapping another, changes bits. 3 channels at the sites (3-point rule: f holds
+  // p and Ap), at the points of the 1-point rule (p only), 1 channel (p only: f is #points) and 2
+  // channels (one channel at a time), with and without the 8-bit stop; and an isolated vertex (a
+  // fallback node, off the system).
+  Mesh torus = shadetool::testing::torus(24, 12, 1.0, 0.4, 0.1).mesh;
+  torus.add_vertex({5, 5, 5});  // isolated: on no face
+  const FitElements e = fit_elements(torus);
+  for (int samples : {1, 3})
+    for (std::size_t width : {std::size_t(1), std::size_t(2), std::size_t(3)})
+      for (double accuracy : {0.0, kEightBitFitAccuracy}) {
+        const FitQuadrature q = fit_quadrature(e, torus.positions, samples);
+        const std::vector<double> x = interpolate_vertex_data_at_sites(q, torus.positions, 3);
+        std::vector<double> f(width * q.sites());
+        for (std::size_t s = 0; s < q.sites(); ++s)
+          for (std::size_t k = 0; k < width; ++k) {
+            const Vec3d p = get3(x, s);
+            f[width * s + k] = 0.5 + 0.4 * std::sin(3 * p.x + double(k + 1) * p.y) + 0.1 * p.z;
+          }
+        LeastSquaresFitOptions o;
+        o.accuracy = accuracy;
+        o.upper = 1;
+        const PointValuesAt point_at = [&](const std::vector<std::uint32_t>& nodes) {
+          std::vector<double> at(width * nodes.size(), 0.25);  // the fallback nodes' values
+          CHECK(nodes == std::vector<std::uint32_t>{std::uint32_t(torus.num_vertices() - 1)});
+          return at;
+        };
+        const LeastSquaresFit kept = least_squares_fit(e, torus.positions, q, f, point_at, width, o);
+        std::vector<double> handed = f;
+        const LeastSquaresFit moved = least_squares_fit(e, torus.positions, q, std::move(handed), point_at, width, o);
+        INFO(samples << " points, width " << width << ", accuracy " << accuracy);
+        CHECK(handed.empty());  // taken over
+        CHECK(kept.iterations > 0);
+        CHECK(moved.iterations == kept.iterations);
+        CHECK(moved.values == kept.values);
+        CHECK(moved.fallback_nodes == 1);
+      }
+}

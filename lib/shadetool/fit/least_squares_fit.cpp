@@ -671,6 +671,10 @@ struct BlockCgOptions {
   double accuracy_bound = 0;
   const std::vector<double>* inverse_mass = nullptr;  // #nodes: 1 / M_ii (0 off the system)
   int max_iterations = 0;
+  // Memory for p and Ap (already touched: a spent f, least_squares_fit's rvalue overload), `work_size`
+  // doubles: p = work when it holds #nodes x W, Ap after it when it holds twice that; else allocated.
+  double* work = nullptr;
+  std::size_t work_size = 0;
 };
 
 // Jacobi-preconditioned conjugate gradient (Hestenes & Stiefel; the loop of Eigen's
@@ -686,10 +690,11 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
   // Not value-initialised: the first direction writes p, the first operator pass clears Ap.
-  const std::unique_ptr<double[]> p_v(new double[n]), Ap_v(new double[n]);
+  const bool p_in_work = o.work && o.work_size >= n, Ap_in_work = o.work && o.work_size >= 2 * n;
+  const std::unique_ptr<double[]> p_v(p_in_work ? nullptr : new double[n]), Ap_v(Ap_in_work ? nullptr : new double[n]);
   double* const r = b_then_r;
-  double* const p = p_v.get();
-  double* const Ap = Ap_v.get();
+  double* const p = p_in_work ? o.work : p_v.get();
+  double* const Ap = Ap_in_work ? o.work + n : Ap_v.get();
   const double* const inv_d = inverse_diagonal.data();
   const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
   // out = A in, and in^T A in per channel (summed over the elements; rows off the system: in is 0
@@ -1022,9 +1027,12 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       width, options);
 }
 
-LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
-                                  const std::vector<double>& f, const PointValuesAt& point_values_at,
-                                  std::size_t width, const LeastSquaresFitOptions& options) {
+namespace {
+// least_squares_fit; spent: f's own vector when the caller handed it over (the rvalue overload): its
+// memory, already touched, holds CG's p and Ap once b is assembled (f is not read after that).
+LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
+                         const std::vector<double>& f, const PointValuesAt& point_values_at, std::size_t width,
+                         const LeastSquaresFitOptions& options, std::vector<double>* spent) {
   const std::size_t N = e.nodes, S = q.size();
   const bool per_site = f.size() != S * width && f.size() == q.sites() * width;  // f at the sites
   if (f.size() != S * width && !per_site)
@@ -1099,6 +1107,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
+    if (spent) {  // b is assembled: f is read no more
+      cg.work = spent->data();
+      cg.work_size = spent->size();
+    }
     block_conjugate_gradient(A, inverse_diagonal, off_system, b.data(), L, cg, x, fit);
     if (L != width)
       for (std::size_t i = 0; i < N; ++i)
@@ -1122,6 +1134,21 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     }
   }
   return fit;
+}
+
+}  // namespace
+
+LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
+                                  const std::vector<double>& f, const PointValuesAt& point_values_at,
+                                  std::size_t width, const LeastSquaresFitOptions& options) {
+  return fit_with(e, positions, q, f, point_values_at, width, options, nullptr);
+}
+
+LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
+                                  std::vector<double>&& f, const PointValuesAt& point_values_at, std::size_t width,
+                                  const LeastSquaresFitOptions& options) {
+  std::vector<double> spent = std::move(f);  // ours now: CG's scratch after the loads
+  return fit_with(e, positions, q, spent, point_values_at, width, options, &spent);
 }
 
 double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f, const std::vector<double>& node_values,
