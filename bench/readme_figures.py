@@ -195,8 +195,9 @@ def render(args):
 
 def fit(args):
     # Issue 30's table: every mesh of bench/fit/results.txt (10k and 99k tori, args.reps
-    # repetitions; the 1M torus, run.sh's 15 repetitions under the studio and 7 under the window,
-    # 1- and 3-point rules only), both scenes, 1- and 3-point rules. The time goal (<= 3x point sampling)
+    # repetitions in one process; the 1M torus, run.sh's `bench_fit fresh`: every bake in a fresh
+    # process of its own, 9 repetitions under the studio and 7 under the window, 1- and 3-point
+    # rules only), both scenes, 1- and 3-point rules. The time goal (<= 3x point sampling)
     # is the studio's at every size; the error goal (>= 30% lower) the 10k mesh's; the window's
     # lines carry the same bounds for comparison.
     run(["bash", "bench/fit/run.sh", str(args.reps)])

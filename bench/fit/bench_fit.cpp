@@ -12,6 +12,9 @@
 // Usage: bench_fit table SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window|both] [RULES]
 //                  (default 7, 200000, 0, both scenes, RULES 1,3,6: least squares at those points
 //                  per triangle, beside the point bake)
+//        bench_fit fresh SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window|both] [RULES]
+//                  (table's rows, every bake in a fresh process of its own: `bench_fit once SRC_DIR
+//                  U V SCENE SAMPLES`, the methods alternating process by process; run.sh's 1M rows)
 //        bench_fit breakdown SRC_DIR [REPEATS] [MAX_TRIANGLES] [MIN_TRIANGLES] [studio|window]
 //                  (the least-squares time per stage)
 //        bench_fit errors SRC_DIR [MAX_TRIANGLES]   (error at several λ, with and without 8-bit bounds)
@@ -31,6 +34,7 @@
 #include <vector>
 
 #include <malloc.h>
+#include <unistd.h>
 
 #include <tbb/global_control.h>
 
@@ -103,6 +107,61 @@ int table(const std::string& src, int repeats, std::size_t max_triangles, std::s
         }
       for (int m = 0; m < M; ++m) {
         std::printf("| torus %zuk tri | %s | %s | %.1f | %.1f | %.2f | %.3g | %+.0f%% |\n", mesh.num_faces() / 1000, name,
+                    m == 0 ? "point" : ("least squares, " + std::to_string(methods[m]) + " pt").c_str(), median(wall[m]),
+                    median(cpu[m]), median(cpu[m]) / median(cpu[0]), error[m], 100 * (error[m] / error[0] - 1));
+        std::fflush(stdout);
+      }
+    }
+  }
+  return 0;
+}
+
+// table's rows with every bake in a fresh process of its own (`bench_fit once`), as a user's
+// `bake-lighting` runs it: one bake per process, its memory fresh (page faults of first touch
+// included, for every method alike), no row timed on the heap another row left. Process CPU time
+// of the bake alone (the child's, from before the bake to after it; not the mesh's generation), the
+// methods alternating process by process (repetition k runs point, 1, 3, ... in turn), medians of
+// `repeats`. Errors as table (computed here, before the timing). Same output format as table.
+int fresh_table(const char* self, const std::string& src, int repeats, std::size_t max_triangles,
+                std::size_t min_triangles, const std::string& only_scene, const std::vector<int>& methods) {
+  std::printf("| mesh | scene | method | wall ms | CPU ms | x point (CPU) | relative L2 error | vs point |\n"
+              "|---|---|---|---|---|---|---|---|\n");
+  const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
+  const int M = int(methods.size());  // methods[0] is 0: the point bake, the ratios' denominator
+  for (const auto& s : sizes) {
+    const std::size_t triangles = std::size_t(2 * s[0] * s[1]);
+    if (triangles > max_triangles || triangles < min_triangles) continue;
+    for (const char* name : {"studio", "window"}) {
+      if (!only_scene.empty() && only_scene != name) continue;
+      std::vector<double> error(M);
+      std::size_t faces = 0;
+      {
+        const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
+        faces = mesh.num_faces();
+        const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
+        const BakeResult normals = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
+        const std::vector<double> world = world_positions(mesh, scene);
+        const FitQuadrature ref = fit_quadrature(fit_elements(mesh), world, 12);
+        const std::vector<double> f = clamped(lighting_at_quadrature(mesh, scene, ref, world, normals.vertex_normals, {}, {}));
+        for (int m = 0; m < M; ++m) error[m] = relative_l2_error(ref, f, bake(mesh, scene, methods[m]), 3);
+      }
+      std::vector<std::vector<double>> wall(M), cpu(M);
+      for (int k = 0; k < repeats; ++k)
+        for (int m = 0; m < M; ++m) {
+          const std::string command = std::string(self) + " once '" + src + "' " + std::to_string(s[0]) + " " +
+                                      std::to_string(s[1]) + " " + name + " " + std::to_string(methods[m]);
+          FILE* child = popen(command.c_str(), "r");
+          double c = 0, w = 0;
+          const bool read = child && std::fscanf(child, "%lf %lf", &c, &w) == 2;
+          if (!child || pclose(child) != 0 || !read) {
+            std::fprintf(stderr, "bench_fit fresh: '%s' failed\n", command.c_str());
+            return 1;
+          }
+          cpu[m].push_back(c);
+          wall[m].push_back(w);
+        }
+      for (int m = 0; m < M; ++m) {
+        std::printf("| torus %zuk tri | %s | %s | %.1f | %.1f | %.2f | %.3g | %+.0f%% |\n", faces / 1000, name,
                     m == 0 ? "point" : ("least squares, " + std::to_string(methods[m]) + " pt").c_str(), median(wall[m]),
                     median(cpu[m]), median(cpu[m]) / median(cpu[0]), error[m], 100 * (error[m] / error[0] - 1));
         std::fflush(stdout);
@@ -475,8 +534,9 @@ int main(int argc, char** argv) {
     std::printf("elements %.3f ms, quadrature %.3f ms\n", median(t_el), median(t_q));
     return 0;
   }
-  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N: least_squares_fit alone, N times (10k torus, studio)
-    const Mesh mesh = testing::torus(100, 50, 1.0, 0.4).mesh;
+  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N [1m]: least_squares_fit alone, N times (10k (1M) torus, studio)
+    const bool million = argc > 5 && std::string(argv[5]) == "1m";
+    const Mesh mesh = million ? testing::torus(1000, 500, 1.0, 0.4).mesh : testing::torus(100, 50, 1.0, 0.4).mesh;
     const Scene scene = read_scene(src + "/data/scenes/studio.json");
     const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
     const std::vector<double> world = world_positions(mesh, scene);
@@ -494,6 +554,15 @@ int main(int argc, char** argv) {
       t.push_back(cpu_ms() - t0);
     }
     std::printf("least_squares_fit %.3f ms (median of %zu, process CPU), %d CG iterations\n", median(t), t.size(), iterations);
+    return 0;
+  }
+  if (mode == "once" && argc > 6) {  // bench_fit once SRC U V SCENE SAMPLES: one bake in this process (fresh_table)
+    const Mesh mesh = testing::torus(std::atoi(argv[3]), std::atoi(argv[4]), 1.0, 0.4).mesh;
+    const Scene scene = read_scene(src + "/data/scenes/" + argv[5] + ".json");
+    const double w0 = now_ms(), c0 = cpu_ms();
+    bake(mesh, scene, std::atoi(argv[6]));
+    const double c = cpu_ms() - c0, w = now_ms() - w0;
+    std::printf("%.3f %.3f\n", c, w);
     return 0;
   }
   if (mode == "errors") return errors(src, argc > 3 ? std::size_t(std::atoll(argv[3])) : 20000);
@@ -516,6 +585,13 @@ int main(int argc, char** argv) {
       methods.push_back(int(n));
       c = *after == ',' ? after + 1 : after;
     }
+  }
+  if (mode == "fresh") {
+    char self[4096] = {};
+    if (readlink("/proc/self/exe", self, sizeof self - 1) <= 0) return 1;  // this program, for its children
+    return fresh_table(self, src, argc > 3 ? std::atoi(argv[3]) : 7,
+                       argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000, argc > 5 ? std::size_t(std::atoll(argv[5])) : 0,
+                       argc > 6 && std::string(argv[6]) != "both" ? argv[6] : "", methods);
   }
   return table(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000,
                argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 && std::string(argv[6]) != "both" ? argv[6] : "",

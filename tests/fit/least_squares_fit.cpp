@@ -300,12 +300,14 @@ TEST_CASE("Three channels solved together (4-wide lanes) equal each channel solv
   // must do the scalar operations in the scalar order, stop on its own test and keep its value
   // after: any mix-up of lanes, reordered sum or shared step length changes bits. On a torus
   // (triangles) and jittered planar quads, with and without the regulariser, with and without the
-  // 8-bit accuracy stop.
+  // 8-bit accuracy stop, and stopped by an iteration cap (the 4-lane CG makes each step's
+  // x += alpha p in the next direction pass, or after the last step: both ends are checked).
   const Mesh torus = shadetool::testing::torus(24, 12, 1.0, 0.4, 0.1).mesh;
   const Mesh quads = planar_quads(9, 7);
   for (const Mesh* mesh : {&torus, &quads})
     for (double lambda : {0.0, 1e-2})
-      for (double accuracy : {0.0, kEightBitFitAccuracy}) {
+      for (double accuracy : {0.0, kEightBitFitAccuracy})
+      for (int cap : {0, 1, 2}) {
         const FitElements e = fit_elements(*mesh);
         const FitQuadrature q = fit_quadrature(e, mesh->positions, 3);
         const std::vector<double> x = interpolate_vertex_data(q, mesh->positions, 3);
@@ -320,6 +322,7 @@ TEST_CASE("Three channels solved together (4-wide lanes) equal each channel solv
         o.regularization = lambda;
         o.accuracy = accuracy;
         o.lower = -1e300;
+        o.max_iterations = cap;  // 0: until the stop
         const LeastSquaresFit together = least_squares_fit(e, mesh->positions, q, f3, point3, 3, o);
         int most = 0;
         for (int k = 0; k < 3; ++k) {
@@ -329,7 +332,7 @@ TEST_CASE("Three channels solved together (4-wide lanes) equal each channel solv
           most = std::max(most, alone.iterations);
           std::size_t differ = 0;
           for (std::size_t v = 0; v < mesh->num_vertices(); ++v) differ += together.values[3 * v + k] != alone.values[v];
-          INFO("channel " << k << ", lambda " << lambda << ", accuracy " << accuracy << ", "
+          INFO("channel " << k << ", lambda " << lambda << ", accuracy " << accuracy << ", cap " << cap << ", "
                           << mesh->num_vertices() << " vertices");
           CHECK(alone.iterations > 0);
           CHECK(differ == 0);
@@ -773,4 +776,46 @@ TEST_CASE("The --fit vocabulary round-trips through its names", "[fit][vocabular
     CHECK(vertex_fit_name(*f) == n);
   }
   CHECK_FALSE(parse_vertex_fit("least_squares"));
+}
+
+TEST_CASE("f handed over (moved in, its memory CG's work vectors): the same fit bits as f kept",
+          "[fit][least_squares]") {
+  // Truth: the fit with f passed by const reference (CG's vectors allocated apart). The rvalue
+  // overload reuses f's memory for p and Ap once b is assembled; any read of f after that, or a
+  // work vector overlapping another, changes bits. 3 channels at the sites (3-point rule: f holds
+  // p and Ap), at the points of the 1-point rule (p only), 1 channel (p only: f is #points) and 2
+  // channels (one channel at a time), with and without the 8-bit stop; and an isolated vertex (a
+  // fallback node, off the system).
+  Mesh torus = shadetool::testing::torus(24, 12, 1.0, 0.4, 0.1).mesh;
+  torus.add_vertex({5, 5, 5});  // isolated: on no face
+  const FitElements e = fit_elements(torus);
+  for (int samples : {1, 3})
+    for (std::size_t width : {std::size_t(1), std::size_t(2), std::size_t(3)})
+      for (double accuracy : {0.0, kEightBitFitAccuracy}) {
+        const FitQuadrature q = fit_quadrature(e, torus.positions, samples);
+        const std::vector<double> x = interpolate_vertex_data_at_sites(q, torus.positions, 3);
+        std::vector<double> f(width * q.sites());
+        for (std::size_t s = 0; s < q.sites(); ++s)
+          for (std::size_t k = 0; k < width; ++k) {
+            const Vec3d p = get3(x, s);
+            f[width * s + k] = 0.5 + 0.4 * std::sin(3 * p.x + double(k + 1) * p.y) + 0.1 * p.z;
+          }
+        LeastSquaresFitOptions o;
+        o.accuracy = accuracy;
+        o.upper = 1;
+        const PointValuesAt point_at = [&](const std::vector<std::uint32_t>& nodes) {
+          std::vector<double> at(width * nodes.size(), 0.25);  // the fallback nodes' values
+          CHECK(nodes == std::vector<std::uint32_t>{std::uint32_t(torus.num_vertices() - 1)});
+          return at;
+        };
+        const LeastSquaresFit kept = least_squares_fit(e, torus.positions, q, f, point_at, width, o);
+        std::vector<double> handed = f;
+        const LeastSquaresFit moved = least_squares_fit(e, torus.positions, q, std::move(handed), point_at, width, o);
+        INFO(samples << " points, width " << width << ", accuracy " << accuracy);
+        CHECK(handed.empty());  // taken over
+        CHECK(kept.iterations > 0);
+        CHECK(moved.iterations == kept.iterations);
+        CHECK(moved.values == kept.values);
+        CHECK(moved.fallback_nodes == 1);
+      }
 }

@@ -491,23 +491,22 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
 // operation per node where the scalar loops do four: per lane the same operations in the same
 // node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
 // builds (target_clones; no FMA).
-// x += alpha p; r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new +=
-// r^2 inv_d_i, per lane.
+// r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new += r^2 inv_d_i,
+// per lane; Ap cleared for the next operator pass (its lines are in cache here: the direction pass
+// need not stream Ap). x += alpha p is left to the direction pass (lanes4_direction), which reads
+// p anyway, or to lanes4_add_step after the last step.
 __attribute__((target_clones("avx2", "default")))
-void lanes4_step(const double* p, const double* Ap, const double* inv_d, const double* inv_m, std::size_t N,
-                 const double alpha_in[4], double* x, double* r, double res2_out[4], double res_mass_out[4],
-                 double abs_new_out[4]) {
-  Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, pi, Api, xi, ri;
+void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const double alpha_in[4], double* Ap,
+                 double* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4]) {
+  Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, Api, ri;
+  const Lanes4 zero = {0, 0, 0, 0};
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
-    std::memcpy(&pi, p + 4 * i, sizeof pi);
     std::memcpy(&Api, Ap + 4 * i, sizeof Api);
-    std::memcpy(&xi, x + 4 * i, sizeof xi);
     std::memcpy(&ri, r + 4 * i, sizeof ri);
-    xi += alpha * pi;
     ri = ri - alpha * Api;
-    std::memcpy(x + 4 * i, &xi, sizeof xi);
     std::memcpy(r + 4 * i, &ri, sizeof ri);
+    std::memcpy(Ap + 4 * i, &zero, sizeof zero);
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
     abs_new += ri * ri * inv_d[i];
@@ -515,6 +514,18 @@ void lanes4_step(const double* p, const double* Ap, const double* inv_d, const d
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
+}
+// x += alpha p (the last step's, when no direction pass follows it).
+__attribute__((target_clones("avx2", "default")))
+void lanes4_add_step(const double* p, std::size_t N, const double alpha_in[4], double* x) {
+  Lanes4 alpha, pi, xi;
+  std::memcpy(&alpha, alpha_in, sizeof alpha);
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&pi, p + 4 * i, sizeof pi);
+    std::memcpy(&xi, x + 4 * i, sizeof xi);
+    xi += alpha * pi;
+    std::memcpy(x + 4 * i, &xi, sizeof xi);
+  }
 }
 // The first residual r = b - Ap (b_then_r: b in, r out), with sum b^2, sum r^2 and (inv_m
 // non-null) sum r^2 inv_m_i, per lane.
@@ -547,19 +558,21 @@ void lanes4_first_direction(const double* r, const double* inv_d, std::size_t N,
   }
   std::memcpy(abs_out, &abs, sizeof abs);
 }
-// p = inv_d_i r + beta p, per lane; Ap cleared for the next operator pass (one pass fewer).
+// x += alpha p (the last step's, deferred: lanes4_step), then p = inv_d_i r + beta p, per lane.
 __attribute__((target_clones("avx2", "default")))
-void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double beta_in[4], double* p,
-                      double* Ap) {
-  Lanes4 beta, ri, pi;
-  const Lanes4 zero = {0, 0, 0, 0};
+void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double alpha_in[4],
+                      const double beta_in[4], double* x, double* p) {
+  Lanes4 alpha, beta, ri, pi, xi;
+  std::memcpy(&alpha, alpha_in, sizeof alpha);
   std::memcpy(&beta, beta_in, sizeof beta);
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&ri, r + 4 * i, sizeof ri);
     std::memcpy(&pi, p + 4 * i, sizeof pi);
+    std::memcpy(&xi, x + 4 * i, sizeof xi);
+    xi += alpha * pi;
     pi = ri * inv_d[i] + beta * pi;
+    std::memcpy(x + 4 * i, &xi, sizeof xi);
     std::memcpy(p + 4 * i, &pi, sizeof pi);
-    std::memcpy(Ap + 4 * i, &zero, sizeof zero);
   }
 }
 
@@ -658,6 +671,10 @@ struct BlockCgOptions {
   double accuracy_bound = 0;
   const std::vector<double>* inverse_mass = nullptr;  // #nodes: 1 / M_ii (0 off the system)
   int max_iterations = 0;
+  // Memory for p and Ap (already touched: a spent f, least_squares_fit's rvalue overload), `work_size`
+  // doubles: p = work when it holds #nodes x W, Ap after it when it holds twice that; else allocated.
+  double* work = nullptr;
+  std::size_t work_size = 0;
 };
 
 // Jacobi-preconditioned conjugate gradient (Hestenes & Stiefel; the loop of Eigen's
@@ -673,10 +690,11 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
   // Not value-initialised: the first direction writes p, the first operator pass clears Ap.
-  const std::unique_ptr<double[]> p_v(new double[n]), Ap_v(new double[n]);
+  const bool p_in_work = o.work && o.work_size >= n, Ap_in_work = o.work && o.work_size >= 2 * n;
+  const std::unique_ptr<double[]> p_v(p_in_work ? nullptr : new double[n]), Ap_v(Ap_in_work ? nullptr : new double[n]);
   double* const r = b_then_r;
-  double* const p = p_v.get();
-  double* const Ap = Ap_v.get();
+  double* const p = p_in_work ? o.work : p_v.get();
+  double* const Ap = Ap_in_work ? o.work + n : Ap_v.get();
   const double* const inv_d = inverse_diagonal.data();
   const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
   // out = A in, and in^T A in per channel (summed over the elements; rows off the system: in is 0
@@ -726,8 +744,9 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       }
   }
   int iterations = 0;
+  bool x_behind = false;  // 4 lanes: the last step's x += alpha p not yet made (lanes4_step)
   while (running > 0 && iterations < o.max_iterations) {
-    apply(p, Ap, pAp.data(), iterations > 0);  // p^T A p summed over the elements; Ap cleared by the direction pass
+    apply(p, Ap, pAp.data(), iterations > 0);  // p^T A p summed over the elements; Ap cleared by the step (4 lanes) or the direction pass
     ++iterations;
     for (std::size_t k = 0; k < W; ++k)  // divisor checked (pAp <= 0: p = 0, a breakdown: the channel stops)
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
@@ -735,9 +754,10 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     res_mass.fill(0.0);
     abs_old = abs_new;
     abs_new.fill(0.0);
-    if constexpr (W == 4) {  // z = D^-1 r, not stored
-      lanes4_step(p, Ap, inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), x, r, res2.data(),
+    if constexpr (W == 4) {  // z = D^-1 r, not stored; x += alpha p in the direction pass (or below)
+      lanes4_step(inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), Ap, r, res2.data(),
                   res_mass.data(), abs_new.data());
+      x_behind = true;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
         for (std::size_t k = 0; k < W; ++k) {
@@ -759,7 +779,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
     if constexpr (W == 4) {
-      lanes4_direction(r, inv_d, N, beta.data(), p, Ap);
+      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, p);
+      x_behind = false;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
         for (std::size_t k = 0; k < W; ++k) {
@@ -768,6 +789,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
         }
     }
   }
+  if constexpr (W == 4)
+    if (x_behind) lanes4_add_step(p, N, alpha.data(), x);
   fit.iterations = std::max(fit.iterations, iterations);
   for (std::size_t k = 0; k < W; ++k) {
     const double relative = rhs2[k] > 0 ? std::sqrt(res2[k] / rhs2[k]) : 0.0;  // divisor checked
@@ -1004,9 +1027,12 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       width, options);
 }
 
-LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
-                                  const std::vector<double>& f, const PointValuesAt& point_values_at,
-                                  std::size_t width, const LeastSquaresFitOptions& options) {
+namespace {
+// least_squares_fit; spent: f's own vector when the caller handed it over (the rvalue overload): its
+// memory, already touched, holds CG's p and Ap once b is assembled (f is not read after that).
+LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
+                         const std::vector<double>& f, const PointValuesAt& point_values_at, std::size_t width,
+                         const LeastSquaresFitOptions& options, std::vector<double>* spent) {
   const std::size_t N = e.nodes, S = q.size();
   const bool per_site = f.size() != S * width && f.size() == q.sites() * width;  // f at the sites
   if (f.size() != S * width && !per_site)
@@ -1081,6 +1107,10 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
+    if (spent) {  // b is assembled: f is read no more
+      cg.work = spent->data();
+      cg.work_size = spent->size();
+    }
     block_conjugate_gradient(A, inverse_diagonal, off_system, b.data(), L, cg, x, fit);
     if (L != width)
       for (std::size_t i = 0; i < N; ++i)
@@ -1104,6 +1134,21 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
     }
   }
   return fit;
+}
+
+}  // namespace
+
+LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
+                                  const std::vector<double>& f, const PointValuesAt& point_values_at,
+                                  std::size_t width, const LeastSquaresFitOptions& options) {
+  return fit_with(e, positions, q, f, point_values_at, width, options, nullptr);
+}
+
+LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
+                                  std::vector<double>&& f, const PointValuesAt& point_values_at, std::size_t width,
+                                  const LeastSquaresFitOptions& options) {
+  std::vector<double> spent = std::move(f);  // ours now: CG's scratch after the loads
+  return fit_with(e, positions, q, spent, point_values_at, width, options, &spent);
 }
 
 double relative_l2_error(const FitQuadrature& q, const std::vector<double>& f, const std::vector<double>& node_values,

@@ -279,6 +279,16 @@ LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector
                                   const PointValuesAt& point_values_at, std::size_t width,
                                   const LeastSquaresFitOptions& options = {});
 
+// The same, f handed over (moved in; empty after): once b is assembled f is read no more, and its
+// memory, already touched, holds CG's work vectors (p and Ap: 2 #nodes x 4 doubles for 3 channels,
+// p alone when f is smaller), so the solve does not fault in fresh pages for them (at 1M triangles
+// and 3 points, 32 of the bake's ~170 MB of fresh pages; bench/fit/results.md, fit10). For a
+// caller that has no further use for f (bake-lighting without --stats). The same bits.
+LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
+                                  const FitQuadrature& q, std::vector<double>&& f,
+                                  const PointValuesAt& point_values_at, std::size_t width,
+                                  const LeastSquaresFitOptions& options = {});
+
 // The relative L2 distance between the interpolated node values and f (per point or per site, as
 // least_squares_fit takes it), by the quadrature q:
 //   sqrt( sum_k w_k |g(x_k) - f_k|^2 / sum_k w_k |f_k|^2 )   (0 when f is zero everywhere and g is).

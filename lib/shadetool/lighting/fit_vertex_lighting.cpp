@@ -129,13 +129,13 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   for (double& v : f) v = std::min(std::max(v, fit.solve.lower), fit.solve.upper);
   // The point colours are read only at the fallback nodes (least_squares_fit.h); a bake without
   // them (VertexColors::None) has them shaded there alone, as bake_lighting would.
-  if (point.rgb.empty())
-    out.solve = least_squares_fit(
-        elements, positions_world, q, f,
-        [&](const std::vector<std::uint32_t>& fallback) {
-          return bake_vertex_colors(mesh, scene, point, fallback, options, shadows, out.fallback_counters);
-        },
-        3, fit.solve);
+  const auto shade_fallback = [&](const std::vector<std::uint32_t>& fallback) {
+    return bake_vertex_colors(mesh, scene, point, fallback, options, shadows, out.fallback_counters);
+  };
+  if (point.rgb.empty() && !fit.measure_error)  // f has no further use: its memory holds CG's vectors
+    out.solve = least_squares_fit(elements, positions_world, q, std::move(f), shade_fallback, 3, fit.solve);
+  else if (point.rgb.empty())
+    out.solve = least_squares_fit(elements, positions_world, q, f, shade_fallback, 3, fit.solve);
   else
     out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb, 3, fit.solve);
   out.rgb = std::move(out.solve.values);
