@@ -208,7 +208,8 @@ for case in "missing_bin:buffers[0].uri" "index_out_of_range:meshes[3].primitive
             "draco:KHR_draco_mesh_compression" "type_scene_name:scenes[0].name" \
             "type_texture_index:materials[0].pbrMetallicRoughness.baseColorTexture.index" \
             "type_not_object:materials[0].pbrMetallicRoughness" "type_count_string:accessors[1].count" \
-            "type_extensions:extensions" "type_node_mesh:nodes[0].mesh"; do
+            "type_extensions:extensions" "type_node_mesh:nodes[0].mesh" \
+            "type_extension_value:materials[0].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform"; do
   name=${case%%:*} path=${case#*:}
   "$bin" normals "$fx/bad_$name.gltf" -o "$tmp/bad.glb" 2> "$tmp/err.txt"
   code=$?

@@ -100,12 +100,15 @@ def gltf_instances(path):
         roots = [i for i in range(len(nodes)) if i not in children]
     out = []
 
-    def walk(i, parent):
+    def walk(i, parent, seen=()):
+        if i in seen:  # a node graph with a cycle (invalid glTF; assimp's RecursiveNodes): no instance
+            raise ValueError("nodes[%d] is its own ancestor" % i)
+        seen = seen + (i,)
         m = mat_mul(parent, node_matrix(nodes[i]))
         if "mesh" in nodes[i]:
             out.append((nodes[i]["mesh"], m))
         for c in nodes[i].get("children", []):
-            walk(c, m)
+            walk(c, m, seen)
     for r in roots:
         walk(r, IDENTITY)
     return out
@@ -242,7 +245,11 @@ class Audit:
             print("note: %s: read_mesh cannot read it (%s): exit status checked only" % (rel, e))
             inp = None
         gltf_in = ext in (".gltf", ".glb")
-        inp_world = world_parts(path, inp) if (inp is not None and gltf_in) else None
+        try:
+            inp_world = world_parts(path, inp) if (inp is not None and gltf_in) else None
+        except ValueError as e:
+            print("note: %s: cannot place its instances (%s): exit status checked only" % (rel, e))
+            inp, inp_world = None, None
         in_schema = ply_schema(path) if ext == ".ply" else None
         work = os.path.join(self.out, "work")
         shutil.rmtree(work, ignore_errors=True)

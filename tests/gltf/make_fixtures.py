@@ -306,6 +306,9 @@ def main():
     bad("type_count_string", lambda d: d["accessors"][1].update(count="24"))
     bad("type_extensions", lambda d: d.update(extensions=["KHR_lights_punctual"]))
     bad("type_node_mesh", lambda d: d["nodes"][0].update(mesh=99))
+    # An extension's value that is not an object (extension.schema.json; assimp's badExtension.gltf).
+    bad("type_extension_value", lambda d: d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"].update(
+        extensions={"KHR_texture_transform": "Not an object"}))
 
     # NaN in POSITION: a copy of the binary with vertex 0's x replaced.
     nan_bin = bytearray(b.bin)

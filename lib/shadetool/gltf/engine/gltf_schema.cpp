@@ -137,7 +137,14 @@ struct Checker {
     if (!o.is_object()) bad(path.empty() ? "the document" : path, o, "an object");
     auto at = [&path](const char* key) { return path.empty() ? std::string(key) : path + "." + key; };
     if (o.contains("name") && !o["name"].is_string()) bad(at("name"), o["name"], "a string");
-    if (o.contains("extensions") && !o["extensions"].is_object()) bad(at("extensions"), o["extensions"], "an object");
+    if (o.contains("extensions")) {
+      const json& e = o["extensions"];
+      if (!e.is_object()) bad(at("extensions"), e, "an object");
+      // extension.schema.json: "additionalProperties": {"type": "object"}: each extension's value
+      // is an object (assimp's wrongTypes/badExtension.gltf: a string for KHR_texture_transform).
+      for (auto it = e.begin(); it != e.end(); ++it)
+        if (!it.value().is_object()) bad(at("extensions") + "." + it.key(), it.value(), "an object");
+    }
     for (const Property& p : schema.properties)
       if (o.contains(p.name)) property(o[p.name], p, at(p.name));
   }

@@ -7,8 +7,9 @@
 // samplers, cameras, skins, animations): each known property has its schema type (string,
 // number, integer, boolean, object, array of those); an index is an integer >= 0 below the size of
 // the array it names (`scene` < scenes, `material` < materials, a texture info's `index` <
-// textures, ...); `name` is a string, `extensions` an object. Unknown properties and extension
-// contents are not checked (the validator does not reject them either).
+// textures, ...); `name` is a string, `extensions` an object whose every value is an object
+// (extension.schema.json). Unknown properties and what lies inside an extension's object are not
+// checked (the validator does not reject them either).
 //
 // Bad input: Error `FILE: JSON.PATH: what it is, what the schema wants`
 // (`x.gltf: scenes[0].name: a number, the schema wants a string`).
