@@ -569,6 +569,30 @@ for l in lines[end + 1:end + 1 + nv]:
 "$bin" normals "$src/data/scene.gltf" --tangents -o "$tmp/tan.obj" 2> "$tmp/err.txt"
 check "glTF --tangents to OBJ: a note says TANGENT is not written" grep -q "TANGENT not written: the output format cannot hold tangents" "$tmp/err.txt"
 
+# Morph targets with TANGENT deltas on a primitive whose TANGENT cannot be recomputed (no
+# TEXCOORD_0, as Khronos' AnimatedMorphCube): the base TANGENT is removed, so are the deltas (a
+# target attribute without its base is MESH_PRIMITIVE_MORPH_TARGET_NO_BASE_ACCESSOR).
+"$py" - "$fx/rich.gltf" "$tmp/morph_tangent.gltf" <<'PYEOF'
+import json, shutil, sys, os
+d = json.load(open(sys.argv[1]))
+p = d["meshes"][0]["primitives"][0]
+del p["attributes"]["TEXCOORD_0"]
+del d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]
+p["targets"][0]["TANGENT"] = p["targets"][0]["NORMAL"]
+for uri in [d["buffers"][0]["uri"]] + [i["uri"] for i in d.get("images", []) if "uri" in i]:
+    shutil.copy(os.path.join(os.path.dirname(sys.argv[1]), uri), os.path.dirname(sys.argv[2]))
+json.dump(d, open(sys.argv[2], "w"))
+PYEOF
+"$bin" normals --recompute "$tmp/morph_tangent.gltf" -o "$tmp/morph_tangent.glb" 2> "$tmp/err.txt"
+check "morph TANGENT deltas without a recomputable TANGENT: exit 0" test $? -eq 0
+check "... a note says TANGENT removed" grep -q "TANGENT removed" "$tmp/err.txt"
+check "... valid (no target TANGENT left without its base)" valid "$tmp/morph_tangent.glb"
+check "... no TANGENT in the primitive or its targets" "$py" -c '
+import json, struct, sys
+b = open(sys.argv[1], "rb").read(); n = struct.unpack("<I", b[12:16])[0]; j = json.loads(b[20:20 + n])
+p = j["meshes"][0]["primitives"][0]
+assert "TANGENT" not in p["attributes"] and all("TANGENT" not in t for t in p["targets"]), p' "$tmp/morph_tangent.glb"
+
 # A point cloud (a PLY with vertices and no face, as scanners and trimesh's PointCloud write it)
 # into glTF: a POINTS primitive without indices (an index accessor of count 0 is invalid glTF).
 printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n' > "$tmp/points.ply"

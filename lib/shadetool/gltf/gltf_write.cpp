@@ -493,6 +493,12 @@ struct PrimitiveWriter {
       const GltfMorphTarget& now = gp.targets[t];
       const GltfMorphTarget& was = gp.read_targets[t];
       for (const auto& [attr, index] : prim.targets[t]) {
+        if (attr == "TANGENT" && gp.drop_tangents) {
+          // The base TANGENT is removed (stale, not recomputable): its deltas go with it (a target
+          // attribute without a base one is invalid: MESH_PRIMITIVE_MORPH_TARGET_NO_BASE_ACCESSOR).
+          targets[t].erase(attr);
+          continue;
+        }
         const std::vector<double>* decoded = attr == "POSITION" ? &now.position_deltas
                                              : attr == "NORMAL" ? &now.normal_deltas
                                              : attr == "TANGENT" ? &now.tangent_deltas
