@@ -593,6 +593,33 @@ b = open(sys.argv[1], "rb").read(); n = struct.unpack("<I", b[12:16])[0]; j = js
 p = j["meshes"][0]["primitives"][0]
 assert "TANGENT" not in p["attributes"] and all("TANGENT" not in t for t in p["targets"]), p' "$tmp/morph_tangent.glb"
 
+# Normals off unit length (Khronos' BoxBadNormals: NORMAL of length 0.1) through a command that
+# writes NORMAL anew: written divided by their length, as every writer does (core/unit_normals.h),
+# one note; a glTF whose NORMAL is not unit fails the validator (ACCESSOR_VECTOR3_NON_UNIT).
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0.1\nf 1//1 2//1 3//1\n' > "$tmp/short_vn.obj"
+"$bin" transform --translate 1,0,0 "$tmp/short_vn.obj" -o "$tmp/short_vn.glb" 2> "$tmp/err.txt"
+check "short normals -> glb: valid" valid "$tmp/short_vn.glb"
+check "short normals -> glb: a note gives the length" grep -q "1 normal not of unit length (0.1) written divided by their length" "$tmp/err.txt"
+"$py" - "$fx/rich.gltf" "$tmp/short_normals.gltf" <<'PYEOF'
+import json, shutil, struct, sys, os
+d = json.load(open(sys.argv[1]))
+for uri in [d["buffers"][0]["uri"]] + [i["uri"] for i in d.get("images", []) if "uri" in i]:
+    shutil.copy(os.path.join(os.path.dirname(sys.argv[1]), uri), os.path.dirname(sys.argv[2]))
+binp = os.path.join(os.path.dirname(sys.argv[2]), d["buffers"][0]["uri"])
+b = bytearray(open(binp, "rb").read())
+a = d["accessors"][d["meshes"][0]["primitives"][0]["attributes"]["NORMAL"]]
+v = d["bufferViews"][a["bufferView"]]
+off, stride = v.get("byteOffset", 0) + a.get("byteOffset", 0), v.get("byteStride", 12)
+for i in range(a["count"]):
+    x = struct.unpack_from("<3f", b, off + i * stride)
+    struct.pack_into("<3f", b, off + i * stride, *(0.1 * c for c in x))
+open(binp, "wb").write(b)
+json.dump(d, open(sys.argv[2], "w"))
+PYEOF
+"$bin" transform --translate 1,0,0 "$tmp/short_normals.gltf" -o "$tmp/short_normals.glb" 2> "$tmp/err.txt"
+check "glTF NORMAL of length 0.1 through transform: valid" valid "$tmp/short_normals.glb"
+check "... a note says so" grep -q "normals not of unit length (0.1" "$tmp/err.txt"
+
 # A point cloud (a PLY with vertices and no face, as scanners and trimesh's PointCloud write it)
 # into glTF: a POINTS primitive without indices (an index accessor of count 0 is invalid glTF).
 printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n' > "$tmp/points.ply"

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/unit_normals.h>
 #include <shadetool/io/atomic_write.h>
 #include <shadetool/io/file_bytes.h>
 #include <shadetool/files/format_table.h>
@@ -119,49 +120,9 @@ std::size_t unusable_normals(const std::vector<double>& a) {
 
 bool beyond_float(double x) { return std::fabs(x) > double(std::numeric_limits<float>::max()); }
 
-// Rows of a flat N*3 normal array that are finite and non-zero but off unit length by more than
-// kUnitNormalTolerance (an OBJ's `vn 0 0 -6.283185`): every writer writes them divided by their
-// length (see mesh_files.h). Zero and non-finite rows are check_writable's, not counted here.
-constexpr double kUnitNormalTolerance = 1e-3;
-
-struct OffUnitNormals {
-  std::size_t rows = 0;
-  double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
-};
-
-bool off_unit(const double* n, double& length) {
-  if (!finite3(n)) return false;
-  length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  return length > 0.0 && std::fabs(length - 1.0) > kUnitNormalTolerance;
-}
-
-// Divides each off-unit row by its length (length checked non-zero by off_unit) and counts them.
-void normalise_off_unit(std::vector<double>& a, OffUnitNormals& found) {
-  for (std::size_t i = 0; i + 2 < a.size(); i += 3) {
-    double length = 0.0;
-    if (!off_unit(&a[i], length)) continue;
-    ++found.rows;
-    found.shortest = std::min(found.shortest, length);
-    found.longest = std::max(found.longest, length);
-    for (std::size_t k = 0; k < 3; ++k) a[i + k] /= length;  // divisor checked: off_unit, length > 0
-  }
-}
-
-bool any_off_unit(const std::vector<double>& a) {
-  double length = 0.0;
-  for (std::size_t i = 0; i + 2 < a.size(); i += 3)
-    if (off_unit(&a[i], length)) return true;
-  return false;
-}
-
 bool has_off_unit_normals(const Mesh& mesh) {
-  return any_off_unit(mesh.vertex_normals) || any_off_unit(mesh.corner_normals) || any_off_unit(mesh.face_normals);
-}
-
-std::string short_number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
+  return any_off_unit_normal(mesh.vertex_normals) || any_off_unit_normal(mesh.corner_normals) ||
+         any_off_unit_normal(mesh.face_normals);
 }
 
 // What no writer writes (see mesh_files.h). Returns true when a float-typed binary output must widen
@@ -218,11 +179,8 @@ io::ProduceBytes prepare_mesh_write(const Mesh& mesh, const WriteOptions& option
         // Normals are directions: a reader (glTF requires it: its validator's
         // ACCESSOR_VECTOR3_NON_UNIT) and a fixed-function renderer take their length as given.
         OffUnitNormals found;
-        for (auto* a : {&copy.vertex_normals, &copy.corner_normals, &copy.face_normals}) normalise_off_unit(*a, found);
-        wi.notes.push_back(std::to_string(found.rows) + (found.rows == 1 ? " normal" : " normals") +
-                           " not of unit length (" + short_number(found.shortest) +
-                           (found.longest != found.shortest ? " to " + short_number(found.longest) : std::string()) +
-                           ") written divided by their length: the same directions");
+        for (auto* a : {&copy.vertex_normals, &copy.corner_normals, &copy.face_normals}) normalise_off_unit_normals(*a, found);
+        wi.notes.push_back(off_unit_normals_note(found));
       }
       // A float-typed binary file cannot hold the values: the wider type (PLY: double properties).
       if (widen) copy.precision = ValuePrecision::Double;

@@ -13,6 +13,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/shading_normals.h>
+#include <shadetool/core/unit_normals.h>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -343,8 +344,10 @@ struct PrimitiveWriter {
     if (normals != ShadingNormals::None) {
       if (const std::string note = face_normals_not_written_note(mesh, "glTF"); !note.empty())
         result.notes.push_back(gp.json_path + ": " + note);
+      // Kept as read unless a row is off unit length (then written anew, divided by its length).
       const bool unchanged = keep_all && mesh.has_vertex_normals() && source_attribute("NORMAL") >= 0 &&
-                             io::gltf::accessor_equals(*source, source_attribute("NORMAL"), mesh.vertex_normals, name);
+                             io::gltf::accessor_equals(*source, source_attribute("NORMAL"), mesh.vertex_normals, name) &&
+                             !any_off_unit_normal(mesh.vertex_normals);
       if (!unchanged) {
         std::vector<double> n(3 * out_vertices, 0.0);
         for (std::size_t f = 0; f < mesh.num_faces(); ++f)
@@ -357,6 +360,9 @@ struct PrimitiveWriter {
           }
         if (normals == ShadingNormals::Vertex)
           n = gather(mesh.vertex_normals, 3, split.source_vertex);  // isolated vertices keep theirs too
+        OffUnitNormals off_unit;  // core/unit_normals.h: the writers' one rule
+        normalise_off_unit_normals(n, off_unit);
+        if (off_unit.rows > 0) result.notes.push_back(gp.json_path + ": " + off_unit_normals_note(off_unit));
         attrs["NORMAL"] = add_float_accessor(out, n, 3, false, true);
       }
     } else if (attrs.contains("NORMAL")) {
