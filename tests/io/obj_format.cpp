@@ -489,3 +489,13 @@ TEST_CASE("OBJ: vt or vn lines no face references are named in a note (not read)
   CHECK(some.notes.empty());
   CHECK(r.texcoords == std::vector<double>{0, 0, 1, 0});
 }
+
+TEST_CASE("OBJ: an MNI surface .obj (BIC's format: `P` and numbers) is refused as that format, by name", "[obj][xcorpus]") {
+  // The first lines of pyvista's mni-surface-mesh.obj.
+  CHECK(error_of([] { read_text("P 0.3 0.3 0.4 10 1 4\n -18 -16.85 2.5\n -17.75 -16.6 2.5\n -18 -16.6 2.25\n", Format::Obj, nullptr, "m.obj"); }) ==
+        "m.obj: not a Wavefront OBJ file: it starts as an MNI surface .obj does (`P` and numbers, no `v` line): MNI's format "
+        "(BIC), which shadetool does not read");
+  // Other keyword-less text keeps its message.
+  CHECK(error_of([] { read_text("Q 1\n", Format::Obj, nullptr, "m.obj"); }) ==
+        "m.obj: not an OBJ file: no vertices, 1 line with unknown keywords (first: 'Q')");
+}

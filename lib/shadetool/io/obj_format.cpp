@@ -117,15 +117,25 @@ inline bool at_line_end(const char* q, const char* end) { return q == end || *q 
 // Line continuation (the OBJ spec: a `\` ending a line continues its statement on the next line).
 // Looked for only where a reader expected a token and could not parse one (its error path), so
 // ordinary lines pay nothing. `\` at q followed by spaces only up to the line feed: the first byte
-// of the next line (counted in `number`), or `end` when the text ends there; nullptr when q does
-// not continue the line.
-inline const char* continuation_at(const char* q, const char* end, std::size_t& number) {
+// of the next line, or `end` when the text ends there (then no line follows: a final line feed
+// starts none, as read_lines counts lines); nullptr when q does not continue the line. Every
+// function of the error path takes the line number by value and none takes the reader's ObjLine
+// by reference, so the hot loops keep theirs in registers.
+inline const char* continuation_at(const char* q, const char* end) {
   if (q == end || *q != '\\') return nullptr;
   const char* r = skip_spaces(q + 1, end);
   if (r == end) return end;
   if (*r != '\n') return nullptr;
-  if (r + 1 < end) ++number;  // a next line exists (a final line feed starts none: read_lines counts so)
   return r + 1;
+}
+
+// The error path of a reader that wanted a token at b: where the statement continues (the caller
+// counts a line when that is not `end`), or the error `what 'TOKEN'` naming the line.
+__attribute__((noinline, cold)) const char* continued_or_fail(const char* b, const char* end, std::size_t number,
+                                                              const std::string& name, const char* what) {
+  const char* next = continuation_at(b, end);
+  if (!next) fail(name, number, std::string(what) + " '" + token_at(b, end) + "'");
+  return next;
 }
 
 // Whether the line [from, eol) ends in a `\` (spaces after it allowed): read_lines' test for text a
@@ -136,20 +146,20 @@ inline bool ends_in_backslash(const char* from, const char* eol) {
 }
 
 // Parses the next number of the line into x; false at the end of the line (or a comment).
+// (A `\` ending the line continues the statement: the number is looked for on the next line.)
 inline bool next_number(ObjChunk& s, ObjLine& l, const std::string& name, double& x) {
-  const char* b = skip_spaces(l.q, l.end);
-  if (at_line_end(b, l.end) || *b == '#') return false;
-  l.q = b;
-  bool more_digits = false;
-  if (!parse_double_counting_digits(l.q, l.end, x, more_digits)) {
-    if (const char* next = continuation_at(b, l.end, l.number)) {
-      l.q = next;
-      return next_number(s, l, name, x);
+  for (;;) {
+    const char* b = skip_spaces(l.q, l.end);
+    if (at_line_end(b, l.end) || *b == '#') return false;
+    l.q = b;
+    bool more_digits = false;
+    if (parse_double_counting_digits(l.q, l.end, x, more_digits)) {
+      if (!s.any_double && (more_digits || outside_float_range(x))) s.any_double = true;
+      return true;
     }
-    fail(name, l.number, "malformed number '" + token_at(b, l.end) + "'");
+    l.q = continued_or_fail(b, l.end, l.number, name, "malformed number");
+    if (l.q != l.end) ++l.number;
   }
-  if (!s.any_double && (more_digits || outside_float_range(x))) s.any_double = true;
-  return true;
 }
 
 // Raised in parallel reading when a chunk holds more (or fewer) elements than the counting pass
@@ -235,12 +245,10 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
     if (at_line_end(q, eol) || *q == '#') break;
     std::int64_t idx;
     const char* tok = q;
-    if (!parse_int64(q, eol, idx)) {
-      if (const char* next = continuation_at(tok, eol, l.number)) {
-        q = next;
-        continue;
-      }
-      fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+    if (!parse_int64(q, eol, idx)) {  // a `\` ending the line continues the face, else an error
+      q = continued_or_fail(tok, eol, l.number, name, "malformed face index");
+      if (q != eol) ++l.number;
+      continue;
     }
     const std::uint32_t vertex = resolve_index(idx, nv, "vertex", name, line);
     if constexpr (kPlaced) {
@@ -317,16 +325,21 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
 }
 
 // The end of a line [from, eol) whose statement continues while it ends in `\`: the line feed of
-// the last line it continues on (or `end`), each continued line counted in `number`.
-inline const char* continued_line_end(const char* from, const char* eol, const char* end, std::size_t& number) {
+// the last line it continues on (or `end`), and how many lines it continued on.
+struct ContinuedEnd {
+  const char* eol;
+  std::size_t lines;
+};
+__attribute__((noinline)) ContinuedEnd continued_line_end(const char* from, const char* eol, const char* end) {
+  std::size_t lines = 0;
   while (eol != end && ends_in_backslash(from, eol)) {
     from = eol + 1;
-    if (from == end) return end;
-    ++number;
+    if (from == end) return {end, lines};
+    ++lines;
     const void* lf = std::memchr(from, '\n', std::size_t(end - from));
     eol = lf ? static_cast<const char*>(lf) : end;
   }
-  return eol;
+  return {eol, lines};
 }
 
 // Step 1, read: every line of [p, end), in order, into `s` and the arrays.
@@ -347,7 +360,11 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
     if (at_line_end(q, end) || *q == '#') {
       eol = line_feed(q);
       // A comment line ending in `\` continues too (the text rule Blender and trimesh apply).
-      if (eol != q) eol = continued_line_end(q, eol, end, line);
+      if (eol != q) {
+        const ContinuedEnd c = continued_line_end(q, eol, end);
+        eol = c.eol;
+        line += c.lines;
+      }
     } else {
       const char* kw = q;
       while (q < end && !is_space_or_newline(*q)) ++q;
@@ -368,8 +385,12 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
       // when it left text, a `\` ending the line continues the statement (not read as one of its own).
       const char* rest = skip_spaces(l.q, end);
       eol = line_feed(rest);
-      if (eol != rest) eol = continued_line_end(rest, eol, end, l.number);
       line = l.number;
+      if (eol != rest) {
+        const ContinuedEnd c = continued_line_end(rest, eol, end);
+        eol = c.eol;
+        line += c.lines;
+      }
       switch (keyword) {
         case ObjKeyword::V:
         case ObjKeyword::Vn:
@@ -718,6 +739,11 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
 }
 // Step 2, validate: a file without vertices is not a mesh.
 void validate_lines(const ObjLines& s, const std::string& name) {
+  // BIC/MNI surface files share the .obj extension: their first line is `P` and 6 numbers
+  // (ambient diffuse specular shininess transparency npoints), then the points, no keywords.
+  if (s.mesh.num_vertices() == 0 && s.skipped_lines > 0 && s.skipped_keyword == "P")
+    fail(name, 0, "not a Wavefront OBJ file: it starts as an MNI surface .obj does (`P` and numbers, no `v` line): "
+                  "MNI's format (BIC), which shadetool does not read");
   if (s.mesh.num_vertices() == 0 && s.skipped_lines > 0)
     fail(name, 0, "not an OBJ file: no vertices, " + std::to_string(s.skipped_lines) + " line" +
                       (s.skipped_lines == 1 ? "" : "s") + " with unknown keywords (first: '" + s.skipped_keyword + "')");
