@@ -83,6 +83,13 @@ struct ObjChunk {
   std::string skipped_keyword;
   std::size_t skipped_empty_faces = 0, skipped_lines_l = 0, skipped_points = 0;
   std::size_t skipped_short_faces = 0;         // `f` with 1 or 2 vertices: not a face
+  // What read_f takes back when a face has 1 or 2 vertices: the counters as before the face.
+  // Saved here, in memory, not in locals: as six locals live across the corner loop they made the
+  // 2-thread read's CPU time 5% higher (bench/io/results.md, io7; register pressure, presumably).
+  struct FaceUndo {
+    bool have_cn, have_ct;
+    std::size_t corners_with_normal, corners_with_tex, dangling_normal, dangling_tex;
+  } undo{};
   struct Statement {
     std::size_t faces_before;                  // chunk faces read before the line
     std::size_t begin, end;                    // the line in `statement_text`
@@ -221,6 +228,24 @@ void read_vt(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   ++s.read.vt;
 }
 
+// read_f's cold path for a face of 1 or 2 vertices: the chunk's corners, per-corner vn/vt indices
+// and counters as before the face (ObjChunk::undo), the face counted as skipped.
+__attribute__((noinline, cold)) void drop_short_face(ObjChunk& s, std::size_t first_corner) {
+  const ObjChunk::FaceUndo& u = s.undo;
+  s.read.corners = first_corner;
+  if (u.have_cn) s.cn.resize(first_corner);
+  else std::vector<std::uint32_t>().swap(s.cn);
+  if (u.have_ct) s.ct.resize(first_corner);
+  else std::vector<std::uint32_t>().swap(s.ct);
+  s.have_cn = u.have_cn;
+  s.have_ct = u.have_ct;
+  s.corners_with_normal = u.corners_with_normal;
+  s.corners_with_tex = u.corners_with_tex;
+  s.dangling_normal = u.dangling_normal;
+  s.dangling_tex = u.dangling_tex;
+  ++s.skipped_short_faces;
+}
+
 // `f` in the forms i, i/j, i//k, i/j/k; an empty vt or vn field (`1/`, `1//`, `1/1/`) is absent,
 // as tinyobjloader, assimp and trimesh read it. An `f` with no index is skipped (counted), and so
 // is one with 1 or 2 vertices (not a face: what it added is taken back, counted).
@@ -230,10 +255,7 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   // Elements defined before this line, in the whole file: what relative indices count back from.
   const std::size_t nv = s.at.v + s.read.v, nt = s.at.vt + s.read.vt, nn = s.at.vn + s.read.vn;
   const std::size_t first_corner = s.read.corners;  // chunk-local
-  // What a face of fewer than 3 vertices takes back (the counters below, as before the line).
-  const bool had_cn = s.have_cn, had_ct = s.have_ct;
-  const std::size_t had_normal = s.corners_with_normal, had_tex = s.corners_with_tex;
-  const std::size_t had_dangling_normal = s.dangling_normal, had_dangling_tex = s.dangling_tex;
+  s.undo = {s.have_cn, s.have_ct, s.corners_with_normal, s.corners_with_tex, s.dangling_normal, s.dangling_tex};
   std::uint32_t* placed = kPlaced ? mesh.corner_vertex.data() + s.at.corners : nullptr;
   const char*& q = l.q;
   const char* const eol = l.end;  // the chunk's end: the line ends at '\n' before it
@@ -296,20 +318,9 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
     ++s.skipped_empty_faces;
     return;
   }
-  if (size < 3) {  // `f 1 2`: not a face (trimesh, assimp skip it); its corners taken back
-    s.read.corners = first_corner;
+  if (size < 3) {  // `f 1 2`: not a face (trimesh, assimp skip it); what it added taken back
     if constexpr (!kPlaced) mesh.corner_vertex.resize(mesh.corner_vertex.size() - size);
-    if (had_cn) s.cn.resize(first_corner);
-    else std::vector<std::uint32_t>().swap(s.cn);
-    if (had_ct) s.ct.resize(first_corner);
-    else std::vector<std::uint32_t>().swap(s.ct);
-    s.have_cn = had_cn;
-    s.have_ct = had_ct;
-    s.corners_with_normal = had_normal;
-    s.corners_with_tex = had_tex;
-    s.dangling_normal = had_dangling_normal;
-    s.dangling_tex = had_dangling_tex;
-    ++s.skipped_short_faces;
+    drop_short_face(s, first_corner);
     return;
   }
   const std::size_t corners = s.at.corners + s.read.corners;
@@ -727,8 +738,9 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
     }
   });
   if (std::find(miscounted.begin(), miscounted.end(), 1) != miscounted.end()) {
-    // Text the two passes split differently (a face token such as `1/ 2`, whose vt the reader
-    // takes across the space): the one pass reads it as it always has.
+    // Text the two passes count differently (a face continued on the next line: the counting
+    // pass takes its `\` for a corner and not the next line's; an `f` of 1 or 2 vertices, which
+    // the reader skips): the one pass reads it.
     s = ObjLines{};
     read_one_pass(bytes, name, s, progress);
     return;
