@@ -53,7 +53,8 @@ case('obj_index_zero.obj', TRI_V + 'f 0 1 2\n', 'read', 'index 0 is invalid', 'O
 case('obj_index_2pow40.obj', TRI_V + 'f 1 2 1099511627776\n', 'read', 'out of range', 'index 2^40')
 case('obj_index_overflow.obj', TRI_V + 'f 1 2 99999999999999999999999\n', 'read', 'malformed face index',
      'index beyond int64')
-case('obj_face_two_vertices.obj', TRI_V + 'f 1 2\n', 'read', 'a face needs at least 3', 'a 2-gon')
+case('obj_face_vt_not_a_number.obj', TRI_V + 'vt 0 0\nf 1/ 2/x 3\n', 'read', "malformed face index '2/x'",
+     'a vt field that is not a number (an empty one is absent; an `f` of 2 vertices is skipped, not refused)')
 case('obj_malformed_number.obj', 'v 0 0 0\nv 1.5x 0 0\nv 0 1 0\nf 1 2 3\n', 'read', "malformed number '1.5x'",
      'trailing junk after a number')
 case('obj_v_two_values.obj', 'v 0 0\n', 'read', 'v has 2 values', 'a vertex with two coordinates')

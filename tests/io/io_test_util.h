@@ -118,6 +118,47 @@ inline Mesh rich_mesh() {
 using Run = shadetool_test::ProcessResult;
 inline Run run_cli(const std::string& args) { return shadetool_test::run_shadetool(args); }
 
+template <class T>
+inline bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// Every array and field a reader fills, compared bit for bit (NaN included): the meshes two
+// readings of one content give (chunks or one pass; a file and its rewritten twin).
+inline void require_same_mesh(const Mesh& a, const Mesh& b) {
+  CHECK(same_bits(a.positions, b.positions));
+  CHECK(a.face_start == b.face_start);
+  CHECK(a.corner_vertex == b.corner_vertex);
+  CHECK(same_bits(a.vertex_normals, b.vertex_normals));
+  CHECK(same_bits(a.corner_normals, b.corner_normals));
+  CHECK(a.corner_normal_index == b.corner_normal_index);
+  CHECK(same_bits(a.face_normals, b.face_normals));
+  CHECK(same_bits(a.texcoords, b.texcoords));
+  CHECK(a.texcoord_dims == b.texcoord_dims);
+  CHECK(a.corner_texcoord_index == b.corner_texcoord_index);
+  CHECK(same_bits(a.vertex_colors, b.vertex_colors));
+  CHECK(same_bits(a.face_colors, b.face_colors));
+  CHECK(same_bits(a.vertex_quality, b.vertex_quality));
+  CHECK(same_bits(a.face_quality, b.face_quality));
+  CHECK(a.texcoord_names == b.texcoord_names);
+  REQUIRE(a.vertex_properties.size() == b.vertex_properties.size());
+  for (std::size_t i = 0; i < a.vertex_properties.size(); ++i) {
+    CHECK(a.vertex_properties[i].name == b.vertex_properties[i].name);
+    CHECK(same_bits(a.vertex_properties[i].values, b.vertex_properties[i].values));
+  }
+  REQUIRE(a.face_properties.size() == b.face_properties.size());
+  for (std::size_t i = 0; i < a.face_properties.size(); ++i) {
+    CHECK(a.face_properties[i].name == b.face_properties[i].name);
+    CHECK(same_bits(a.face_properties[i].values, b.face_properties[i].values));
+  }
+  CHECK(a.color_channels == b.color_channels);
+  CHECK(a.colors_are_float == b.colors_are_float);
+  CHECK(a.group_statements == b.group_statements);
+  CHECK(a.face_group_run == b.face_group_run);
+  CHECK(a.comments == b.comments);
+  CHECK(a.precision == b.precision);
+}
+
 inline std::string data_path(const std::string& name) { return std::string(SHADETOOL_SOURCE_DIR) + "/data/" + name; }
 
 }  // namespace shadetool::iotest

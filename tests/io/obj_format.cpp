@@ -313,8 +313,11 @@ TEST_CASE("OBJ: errors name the file and line", "[obj][errors]") {
   CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/2 2/1 3/1\n") == "m.obj:5: texcoord index 2 out of range (1 texcoord defined so far)");
   CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n") ==
         "m.obj:5: normal index 2 out of range (1 normal defined so far)");
-  CHECK(err("v 0 0 0\nv 1 0 0\nf 1 2\n") == "m.obj:3: face has 2 vertices (a face needs at least 3)");
-  CHECK(err("v 0 0 0\nf 1\n") == "m.obj:2: face has 1 vertex (a face needs at least 3)");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n") == "m.obj:4: malformed face index '1/x'");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 \\ 2 3\n") == "m.obj:4: malformed face index '\\'");  // `\` not ending the line
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 \\x\n2 3\n") == "m.obj:4: malformed face index '\\x'");
+  CHECK(err("v 0 0 \\\n0\nv 1 x 0\n") == "m.obj:3: malformed number 'x'");  // after a continued line
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 \\\n 2 \\\n 4\n") == "m.obj:6: vertex index 4 out of range (3 vertices defined so far)");
   CHECK(err("v 0 0\n") == "m.obj:1: v has 2 values (need x y z)");
   CHECK(err("v 0 0 0\nv 1 0x 0\n") == "m.obj:2: malformed number '0x'");
   CHECK(err("v 0 0 0\nv 1 0 1.5.2\n") == "m.obj:2: malformed number '1.5.2'");
@@ -365,4 +368,134 @@ TEST_CASE("OBJ: vt and vn indices while the file has no vt or vn line are ignore
   REQUIRE(info2.notes.size() == 1);
   CHECK(info2.notes[0] == "face corners name 3 normal (vn) indices but the file defines no vn line before them: "
                           "those indices ignored (as assimp does)");
+}
+
+namespace {
+
+// `text` with every `\` ending a line joined with the next line by one space (the spaces around
+// the `\` and the line feed, and the next line's leading spaces, dropped): what the OBJ spec says
+// a continued line means, written here by the test, not by the reader.
+std::string joined_continuations(const std::string& text) {
+  auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\\') {
+      std::size_t j = i + 1;
+      while (j < text.size() && space(text[j])) ++j;
+      if (j < text.size() && text[j] == '\n') {
+        while (!out.empty() && space(out.back())) out.pop_back();
+        out += ' ';
+        i = j;
+        while (i + 1 < text.size() && space(text[i + 1])) ++i;
+        continue;
+      }
+    }
+    out += text[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("OBJ: an empty vt or vn field (`1/`, `1//`, `1/1/`) is absent, as tinyobjloader, assimp and trimesh read it",
+          "[obj][xcorpus]") {
+  const std::string head = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+  ReadInfo info;
+  const Mesh m = read_text(head + "f 2/2/ 4/4/ 1/1/\nf 1// 2// 3//\nf 1/ 3/ 4/\nf 1/1/\t2/2/ 3/3/ # c\n", Format::Obj, &info);
+  CHECK(info.notes.empty());
+  CHECK(m.face_start == std::vector<std::uint32_t>{0, 3, 6, 9, 12});
+  CHECK(m.corner_vertex == std::vector<std::uint32_t>{1, 3, 0, 0, 1, 2, 0, 2, 3, 0, 1, 2});
+  const std::uint32_t no = kNoTexcoord;
+  CHECK(m.corner_texcoord_index == std::vector<std::uint32_t>{1, 3, 0, no, no, no, no, no, no, 0, 1, 2});
+  CHECK(!m.has_corner_normals());
+  // The same faces written without the empty fields read to the same mesh, bit for bit.
+  const Mesh plain = read_text(head + "f 2/2 4/4 1/1\nf 1 2 3\nf 1 3 4\nf 1/1 2/2 3/3\n", Format::Obj);
+  require_same_mesh(m, plain);
+  // A vn after an empty vt is still read; a field that is not a number is still an error.
+  const Mesh n = read_text(head + "vn 0 0 1\nf 1//1 2/ 3/3/\n", Format::Obj);
+  CHECK(n.corner_normal_index.size() == 3);
+  CHECK(n.corner_normal_index[0] == 0);
+}
+
+TEST_CASE("OBJ: an `f` of 1 or 2 vertices is skipped with a count, leaving the mesh as if the line were absent",
+          "[obj][xcorpus]") {
+  // Around the short faces: the first vn and vt references of the file (lazily started per-corner
+  // arrays), a dangling index and a relative index: all taken back with the line.
+  const std::string head = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\n";
+  const std::string tail = "f 1 2 3\nf -4/1/1 -3/1/1 -2/1/1 -1/1/1\n";
+  ReadInfo info;
+  const Mesh m = read_text(head + "f 1 2 3\nf 2/1/1 3/1/1\nf 4//1\nf 1//\n" + tail, Format::Obj, &info);
+  ReadInfo without_info;
+  const Mesh without = read_text(head + "f 1 2 3\n" + tail, Format::Obj, &without_info);
+  require_same_mesh(m, without);
+  REQUIRE(info.notes.size() == without_info.notes.size() + 1);
+  CHECK(info.notes.back() == "skipped 3 lines: 3 `f` with fewer than 3 vertices (not a face)");
+  // Counted beside the other skipped lines, in one note.
+  ReadInfo both;
+  read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\nf\nf 1 2\n", Format::Obj, &both);
+  REQUIRE(both.notes.size() == 1);
+  CHECK(both.notes[0] == "skipped 3 lines: 1 `l` (polyline), 1 `f` with no indices, 1 `f` with fewer than 3 vertices (not a face)");
+  // An index out of range is still an error, short face or not.
+  CHECK(error_of([] { read_text("v 0 0 0\nf 1 5\n", Format::Obj, nullptr, "m.obj"); }) ==
+        "m.obj:2: vertex index 5 out of range (1 vertex defined so far)");
+}
+
+TEST_CASE("OBJ: a line ending in `\\` continues its statement (v, vn, vt, f, grouping, comments); messages count the lines",
+          "[obj][xcorpus]") {
+  const std::string text =
+      "# a comment \\\n"
+      "  that goes on\n"
+      "v 0 0 \\\n"
+      "0\n"
+      "v 1 \\ \t\n"
+      "0 0\n"
+      "v 1 1 0\nv 0 1 0\n"
+      "vt 0.25 \\\n0.5\n"
+      "vn 0 \\\n0 1\n"
+      "g left \\\n  right\n"
+      "f 1/1/1 \\\n2/1/1 \\\n\n"  // an empty continued line: the face ends there
+      "f 1 3 \\\n 4\n"
+      "s 1 \\\n"
+      "f 1 2 4\n";  // a statement's words on a continued line are not a face of their own
+  ReadInfo info;
+  const Mesh m = read_text(text, Format::Obj, &info);
+  ReadInfo joined_info;
+  const Mesh joined = read_text(joined_continuations(text), Format::Obj, &joined_info);
+  require_same_mesh(m, joined);
+  CHECK(info.notes == joined_info.notes);
+  CHECK(m.num_vertices() == 4);
+  CHECK(m.face_start == std::vector<std::uint32_t>{0, 3});  // the 2-vertex face skipped, then `f 1 3 4`
+  CHECK(m.group_statements == std::vector<std::string>{"g left right\n", "s 1 f 1 2 4\n"});
+  // Messages name the line the bad token is on, every continued line counted.
+  auto err = [](const std::string& t) { return error_of([&] { read_text(t, Format::Obj, nullptr, "m.obj"); }); };
+  CHECK(err("# c \\\nx\nv 0 0 \\\n\\\n 0\nv 0 0 0\nv 0 0\n") == "m.obj:7: v has 2 values (need x y z)");
+  CHECK(err("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 \\\n 3/9\n") ==
+        "m.obj:6: texcoord index 9 out of range (1 texcoord defined so far)");
+  // A `\` ending the text ends the statement.
+  const Mesh last = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 \\", Format::Obj);
+  CHECK(last.num_faces() == 1);
+}
+
+TEST_CASE("OBJ: vt or vn lines no face references are named in a note (not read); referenced ones read as before",
+          "[obj][xcorpus]") {
+  ReadInfo info;
+  const Mesh m = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\nf 1 2 3\n", Format::Obj, &info);
+  CHECK(!m.has_texcoords());
+  CHECK(!m.has_corner_normals());
+  CHECK(info.notes == std::vector<std::string>{"3 texture coordinates (vt) no face references: not read",
+                                               "1 normal (vn) no face references: not read"});
+  ReadInfo some;
+  const Mesh r = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nf 1/1 2/2 3/1\n", Format::Obj, &some);
+  CHECK(some.notes.empty());
+  CHECK(r.texcoords == std::vector<double>{0, 0, 1, 0});
+}
+
+TEST_CASE("OBJ: an MNI surface .obj (BIC's format: `P` and numbers) is refused as that format, by name", "[obj][xcorpus]") {
+  // The first lines of pyvista's mni-surface-mesh.obj.
+  CHECK(error_of([] { read_text("P 0.3 0.3 0.4 10 1 4\n -18 -16.85 2.5\n -17.75 -16.6 2.5\n -18 -16.6 2.25\n", Format::Obj, nullptr, "m.obj"); }) ==
+        "m.obj: not a Wavefront OBJ file: it starts as an MNI surface .obj does (`P` and numbers, no `v` line): MNI's format "
+        "(BIC), which shadetool does not read");
+  // Other keyword-less text keeps its message.
+  CHECK(error_of([] { read_text("Q 1\n", Format::Obj, nullptr, "m.obj"); }) ==
+        "m.obj: not an OBJ file: no vertices, 1 line with unknown keywords (first: 'Q')");
 }

@@ -15,6 +15,26 @@ TEST_CASE("OFF: plain, with comments, counts on the keyword line, polygons", "[o
   CHECK(n.num_faces() == 1);
 }
 
+TEST_CASE("OFF: a digit right after the keyword starts the counts (`OFF8 6 12`), after leading spaces and before a comment",
+          "[off][xcorpus]") {
+  // trimesh's whitespace.off opens with a tab and spaces, then `OFF8 6 12 # or nah`. The truth: the
+  // same text with a space between keyword and counts, which every OFF reader reads.
+  const std::string body = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 0.5 0.25 0 0.75\n";
+  ReadInfo info;
+  const Mesh glued = read_text("\t      OFF4 1 4 # or nah\n" + body, Format::Off, &info);
+  const Mesh spaced = read_text("OFF 4 1 4\n" + body, Format::Off);
+  require_same_mesh(glued, spaced);
+  CHECK(info.notes.empty());
+  CHECK(glued.num_vertices() == 4);
+  CHECK(glued.face_start == std::vector<std::uint32_t>{0, 4});
+  const Mesh c = read_text("COFF3 1\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n", Format::Off);
+  CHECK(c.vertex_colors.size() == 9);
+  // A letter glued to the keyword is still no OFF variant; a digit before it (4OFF) is refused as before.
+  auto err = [](const std::string& text) { return error_of([&] { read_text(text, Format::Off, nullptr, "m.off"); }); };
+  CHECK(err("OFFx 3 1\n") == "m.off:1: unsupported OFF variant 'OFFx' (supported: [ST][C][N]OFF)");
+  CHECK(err("OFF3x 1\n") == "m.off:1: malformed count '3x' (expected: #vertices #faces #edges)");
+}
+
 TEST_CASE("OFF: NOFF normals, COFF integer and float colours, face colours", "[off]") {
   Mesh n = read_text("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0.6 0 0.8\n3 0 1 2\n", Format::Off);
   CHECK(n.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, 1, 0.6, 0, 0.8});  // as parsed, not narrowed

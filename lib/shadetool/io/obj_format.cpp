@@ -82,6 +82,14 @@ struct ObjChunk {
   std::size_t skipped_lines = 0;
   std::string skipped_keyword;
   std::size_t skipped_empty_faces = 0, skipped_lines_l = 0, skipped_points = 0;
+  std::size_t skipped_short_faces = 0;         // `f` with 1 or 2 vertices: not a face
+  // What read_f takes back when a face has 1 or 2 vertices: the counters as before the face.
+  // Saved here, in memory, not in locals: as six locals live across the corner loop they made the
+  // 2-thread read's CPU time 5% higher (bench/io/results.md, io7; register pressure, presumably).
+  struct FaceUndo {
+    bool have_cn, have_ct;
+    std::size_t corners_with_normal, corners_with_tex, dangling_normal, dangling_tex;
+  } undo{};
   struct Statement {
     std::size_t faces_before;                  // chunk faces read before the line
     std::size_t begin, end;                    // the line in `statement_text`
@@ -113,16 +121,52 @@ struct ObjLine {
 
 inline bool at_line_end(const char* q, const char* end) { return q == end || *q == '\n'; }
 
+// Line continuation (the OBJ spec: a `\` ending a line continues its statement on the next line).
+// Looked for only where a reader expected a token and could not parse one (its error path), so
+// ordinary lines pay nothing. `\` at q followed by spaces only up to the line feed: the first byte
+// of the next line, or `end` when the text ends there (then no line follows: a final line feed
+// starts none, as read_lines counts lines); nullptr when q does not continue the line. Every
+// function of the error path takes the line number by value and none takes the reader's ObjLine
+// by reference, so the hot loops keep theirs in registers.
+inline const char* continuation_at(const char* q, const char* end) {
+  if (q == end || *q != '\\') return nullptr;
+  const char* r = skip_spaces(q + 1, end);
+  if (r == end) return end;
+  if (*r != '\n') return nullptr;
+  return r + 1;
+}
+
+// The error path of a reader that wanted a token at b: where the statement continues (the caller
+// counts a line when that is not `end`), or the error `what 'TOKEN'` naming the line.
+__attribute__((noinline, cold)) const char* continued_or_fail(const char* b, const char* end, std::size_t number,
+                                                              const std::string& name, const char* what) {
+  const char* next = continuation_at(b, end);
+  if (!next) fail(name, number, std::string(what) + " '" + token_at(b, end) + "'");
+  return next;
+}
+
+// Whether the line [from, eol) ends in a `\` (spaces after it allowed): read_lines' test for text a
+// statement reader left unread (a comment, a grouping statement's words, values it does not read).
+inline bool ends_in_backslash(const char* from, const char* eol) {
+  while (eol > from && is_space(eol[-1])) --eol;
+  return eol > from && eol[-1] == '\\';
+}
+
 // Parses the next number of the line into x; false at the end of the line (or a comment).
+// (A `\` ending the line continues the statement: the number is looked for on the next line.)
 inline bool next_number(ObjChunk& s, ObjLine& l, const std::string& name, double& x) {
-  const char* b = skip_spaces(l.q, l.end);
-  if (at_line_end(b, l.end) || *b == '#') return false;
-  l.q = b;
-  bool more_digits = false;
-  if (!parse_double_counting_digits(l.q, l.end, x, more_digits))
-    fail(name, l.number, "malformed number '" + token_at(b, l.end) + "'");
-  if (!s.any_double && (more_digits || outside_float_range(x))) s.any_double = true;
-  return true;
+  for (;;) {
+    const char* b = skip_spaces(l.q, l.end);
+    if (at_line_end(b, l.end) || *b == '#') return false;
+    l.q = b;
+    bool more_digits = false;
+    if (parse_double_counting_digits(l.q, l.end, x, more_digits)) {
+      if (!s.any_double && (more_digits || outside_float_range(x))) s.any_double = true;
+      return true;
+    }
+    l.q = continued_or_fail(b, l.end, l.number, name, "malformed number");
+    if (l.q != l.end) ++l.number;
+  }
 }
 
 // Raised in parallel reading when a chunk holds more (or fewer) elements than the counting pass
@@ -184,23 +228,50 @@ void read_vt(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   ++s.read.vt;
 }
 
-// `f` in the forms i, i/j, i//k, i/j/k. An `f` with no index is skipped (counted).
+// read_f's cold path for a face of 1 or 2 vertices: the chunk's corners, per-corner vn/vt indices
+// and counters as before the face (ObjChunk::undo), the face counted as skipped.
+__attribute__((noinline, cold)) void drop_short_face(ObjChunk& s, std::size_t first_corner) {
+  const ObjChunk::FaceUndo& u = s.undo;
+  s.read.corners = first_corner;
+  if (u.have_cn) s.cn.resize(first_corner);
+  else std::vector<std::uint32_t>().swap(s.cn);
+  if (u.have_ct) s.ct.resize(first_corner);
+  else std::vector<std::uint32_t>().swap(s.ct);
+  s.have_cn = u.have_cn;
+  s.have_ct = u.have_ct;
+  s.corners_with_normal = u.corners_with_normal;
+  s.corners_with_tex = u.corners_with_tex;
+  s.dangling_normal = u.dangling_normal;
+  s.dangling_tex = u.dangling_tex;
+  ++s.skipped_short_faces;
+}
+
+// `f` in the forms i, i/j, i//k, i/j/k; an empty vt or vn field (`1/`, `1//`, `1/1/`) is absent,
+// as tinyobjloader, assimp and trimesh read it. An `f` with no index is skipped (counted), and so
+// is one with 1 or 2 vertices (not a face: what it added is taken back, counted).
 template <bool kPlaced>
 void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   Mesh& mesh = a.mesh;
   // Elements defined before this line, in the whole file: what relative indices count back from.
   const std::size_t nv = s.at.v + s.read.v, nt = s.at.vt + s.read.vt, nn = s.at.vn + s.read.vn;
   const std::size_t first_corner = s.read.corners;  // chunk-local
+  s.undo = {s.have_cn, s.have_ct, s.corners_with_normal, s.corners_with_tex, s.dangling_normal, s.dangling_tex};
   std::uint32_t* placed = kPlaced ? mesh.corner_vertex.data() + s.at.corners : nullptr;
   const char*& q = l.q;
   const char* const eol = l.end;  // the chunk's end: the line ends at '\n' before it
-  const std::size_t line = l.number;
+  const std::size_t& line = l.number;  // advanced by a continued line
+  // The field after a '/' is empty when a space, the line's end or another '/' follows it.
+  auto field_empty = [eol](const char* at) { return at_line_end(at, eol) || *at == '/' || is_space(*at); };
   for (;;) {
     q = skip_spaces(q, eol);
     if (at_line_end(q, eol) || *q == '#') break;
     std::int64_t idx;
     const char* tok = q;
-    if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+    if (!parse_int64(q, eol, idx)) {  // a `\` ending the line continues the face, else an error
+      q = continued_or_fail(tok, eol, l.number, name, "malformed face index");
+      if (q != eol) ++l.number;
+      continue;
+    }
     const std::uint32_t vertex = resolve_index(idx, nv, "vertex", name, line);
     if constexpr (kPlaced) {
       // Beyond what the counting pass found: the passes split this text differently.
@@ -213,7 +284,7 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
     std::uint32_t t = kNone, n = kNone;
     if (!at_line_end(q, eol) && *q == '/') {
       ++q;
-      if (!at_line_end(q, eol) && *q != '/') {
+      if (!field_empty(q)) {
         if (!parse_int64(q, eol, idx) || (!at_line_end(q, eol) && *q != '/' && !is_space(*q)))
           fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
         if (nt == 0) ++s.dangling_tex;
@@ -221,9 +292,11 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
       }
       if (!at_line_end(q, eol) && *q == '/') {
         ++q;
-        if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
-        if (nn == 0) ++s.dangling_normal;
-        else n = resolve_index(idx, nn, "normal", name, line);
+        if (!at_line_end(q, eol) && !is_space(*q)) {
+          if (!parse_int64(q, eol, idx)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
+          if (nn == 0) ++s.dangling_normal;
+          else n = resolve_index(idx, nn, "normal", name, line);
+        }
       }
     }
     if (!at_line_end(q, eol) && !is_space(*q)) fail(name, line, "malformed face index '" + token_at(tok, eol) + "'");
@@ -245,9 +318,11 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
     ++s.skipped_empty_faces;
     return;
   }
-  if (size < 3)
-    fail(name, line, "face has " + std::to_string(size) + (size == 1 ? " vertex" : " vertices") +
-                         " (a face needs at least 3)");
+  if (size < 3) {  // `f 1 2`: not a face (trimesh, assimp skip it); what it added taken back
+    if constexpr (!kPlaced) mesh.corner_vertex.resize(mesh.corner_vertex.size() - size);
+    drop_short_face(s, first_corner);
+    return;
+  }
   const std::size_t corners = s.at.corners + s.read.corners;
   if (corners > std::numeric_limits<std::uint32_t>::max() - 1)
     fail(name, line, "too many face corners (more than 2^32)");
@@ -258,6 +333,24 @@ void read_f(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
     mesh.face_start.push_back(static_cast<std::uint32_t>(corners));
   }
   ++s.read.faces;
+}
+
+// The end of a line [from, eol) whose statement continues while it ends in `\`: the line feed of
+// the last line it continues on (or `end`), and how many lines it continued on.
+struct ContinuedEnd {
+  const char* eol;
+  std::size_t lines;
+};
+__attribute__((noinline)) ContinuedEnd continued_line_end(const char* from, const char* eol, const char* end) {
+  std::size_t lines = 0;
+  while (eol != end && ends_in_backslash(from, eol)) {
+    from = eol + 1;
+    if (from == end) return {end, lines};
+    ++lines;
+    const void* lf = std::memchr(from, '\n', std::size_t(end - from));
+    eol = lf ? static_cast<const char*>(lf) : end;
+  }
+  return {eol, lines};
 }
 
 // Step 1, read: every line of [p, end), in order, into `s` and the arrays.
@@ -277,6 +370,12 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
     const char* eol;
     if (at_line_end(q, end) || *q == '#') {
       eol = line_feed(q);
+      // A comment line ending in `\` continues too (the text rule Blender and trimesh apply).
+      if (eol != q) {
+        const ContinuedEnd c = continued_line_end(q, eol, end);
+        eol = c.eol;
+        line += c.lines;
+      }
     } else {
       const char* kw = q;
       while (q < end && !is_space_or_newline(*q)) ++q;
@@ -293,8 +392,16 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
         case ObjKeyword::P:
         case ObjKeyword::Other: break;
       }
-      // What the line's reader left (spaces, a comment, values it does not read) up to its end.
-      eol = line_feed(skip_spaces(l.q, end));
+      // What the line's reader left (spaces, a comment, values it does not read) up to its end;
+      // when it left text, a `\` ending the line continues the statement (not read as one of its own).
+      const char* rest = skip_spaces(l.q, end);
+      eol = line_feed(rest);
+      line = l.number;
+      if (eol != rest) {
+        const ContinuedEnd c = continued_line_end(rest, eol, end);
+        eol = c.eol;
+        line += c.lines;
+      }
       switch (keyword) {
         case ObjKeyword::V:
         case ObjKeyword::Vn:
@@ -305,7 +412,23 @@ void read_lines(const char* p, const char* const end, const std::string& name, O
           const char* e = eol;
           while (e > kw && is_space(e[-1])) --e;
           const std::size_t begin = s.statement_text.size();
-          s.statement_text.append(kw, std::size_t(e - kw));
+          // A continued statement is kept as one line: each `\` and its line feed become a space.
+          for (const char* from = kw; from < e;) {
+            const char* lf = static_cast<const char*>(std::memchr(from, '\n', std::size_t(e - from)));
+            const char* piece_end = lf ? lf : e;
+            const char* b = piece_end;
+            if (lf) {
+              while (b > from && is_space(b[-1])) --b;
+              if (b > from && b[-1] == '\\') --b;  // (always: only a continued line holds a line feed)
+              while (b > from && is_space(b[-1])) --b;
+              s.statement_text.append(from, std::size_t(b - from));
+              s.statement_text += ' ';
+              from = skip_spaces(lf + 1, e);
+            } else {
+              s.statement_text.append(from, std::size_t(piece_end - from));
+              from = e;
+            }
+          }
           s.statements.push_back({s.read.faces, begin, s.statement_text.size()});
           break;
         }
@@ -338,6 +461,7 @@ struct ObjLines {
   std::size_t skipped_lines = 0;
   std::string skipped_keyword;
   std::size_t skipped_empty_faces = 0, skipped_lines_l = 0, skipped_points = 0;
+  std::size_t skipped_short_faces = 0;
 };
 
 // Grouping statements become runs between faces: a run is the statement lines read since the
@@ -412,6 +536,7 @@ void merge_chunks(std::vector<ObjChunk>& chunks, ObjLines& s) {
     s.skipped_empty_faces += c.skipped_empty_faces;
     s.skipped_lines_l += c.skipped_lines_l;
     s.skipped_points += c.skipped_points;
+    s.skipped_short_faces += c.skipped_short_faces;
   }
   merge_lazy(chunks, &ObjChunk::rgba, &ObjCounts::v, 4, 1.0f, s.rgba);
   merge_lazy(chunks, &ObjChunk::cn, &ObjCounts::corners, 1, kNone, s.cn);
@@ -419,7 +544,8 @@ void merge_chunks(std::vector<ObjChunk>& chunks, ObjLines& s) {
   merge_statements(chunks, s.mesh);
 }
 
-// The chunks of [0, size), every cut just after a line feed, so every line is whole in one chunk:
+// The chunks of [0, size), every cut just after a line feed of a line not ending in `\` (a continued
+// statement stays in one chunk), so every line is whole in one chunk:
 // each chunk at least want(left) >= 1 bytes, left the bytes not yet cut; none once want(left) >= left.
 template <class Want>
 std::vector<std::size_t> chunk_starts_by(std::string_view bytes, const Want& want) {
@@ -427,9 +553,13 @@ std::vector<std::size_t> chunk_starts_by(std::string_view bytes, const Want& wan
   for (std::size_t at = 0;;) {
     const std::size_t left = bytes.size() - at, w = want(left);
     if (w >= left) break;
-    const void* lf = std::memchr(bytes.data() + at + w - 1, '\n', left - w + 1);
+    const char* const text_end = bytes.data() + bytes.size();
+    const char* lf = static_cast<const char*>(std::memchr(bytes.data() + at + w - 1, '\n', left - w + 1));
+    // Never after a line ending in `\`: its statement continues on the next line, in this chunk.
+    while (lf && ends_in_backslash(bytes.data() + at, lf))
+      lf = static_cast<const char*>(std::memchr(lf + 1, '\n', std::size_t(text_end - lf - 1)));
     if (!lf) break;
-    const std::size_t next = std::size_t(static_cast<const char*>(lf) - bytes.data()) + 1;
+    const std::size_t next = std::size_t(lf - bytes.data()) + 1;
     if (next >= bytes.size()) break;
     starts.push_back(next);
     at = next;
@@ -608,8 +738,9 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
     }
   });
   if (std::find(miscounted.begin(), miscounted.end(), 1) != miscounted.end()) {
-    // Text the two passes split differently (a face token such as `1/ 2`, whose vt the reader
-    // takes across the space): the one pass reads it as it always has.
+    // Text the two passes count differently (a face continued on the next line: the counting
+    // pass takes its `\` for a corner and not the next line's; an `f` of 1 or 2 vertices, which
+    // the reader skips): the one pass reads it.
     s = ObjLines{};
     read_one_pass(bytes, name, s, progress);
     return;
@@ -620,6 +751,11 @@ void read_all_lines(std::string_view text, const std::string& name, const ObjRea
 }
 // Step 2, validate: a file without vertices is not a mesh.
 void validate_lines(const ObjLines& s, const std::string& name) {
+  // BIC/MNI surface files share the .obj extension: their first line is `P` and 6 numbers
+  // (ambient diffuse specular shininess transparency npoints), then the points, no keywords.
+  if (s.mesh.num_vertices() == 0 && s.skipped_lines > 0 && s.skipped_keyword == "P")
+    fail(name, 0, "not a Wavefront OBJ file: it starts as an MNI surface .obj does (`P` and numbers, no `v` line): "
+                  "MNI's format (BIC), which shadetool does not read");
   if (s.mesh.num_vertices() == 0 && s.skipped_lines > 0)
     fail(name, 0, "not an OBJ file: no vertices, " + std::to_string(s.skipped_lines) + " line" +
                       (s.skipped_lines == 1 ? "" : "s") + " with unknown keywords (first: '" + s.skipped_keyword + "')");
@@ -705,7 +841,15 @@ void note_skipped(const ObjLines& s, ReadInfo& info) {
                          (s.dangling_normal > 0 && s.dangling_tex > 0 ? "vn or vt" : s.dangling_normal > 0 ? "vn" : "vt") +
                          " line before them: those indices ignored (as assimp does)");
   }
-  const std::size_t total = s.skipped_lines + s.skipped_lines_l + s.skipped_points + s.skipped_empty_faces;
+  // vt / vn lines no face corner names (faces written `f 1 2 3`): not read, said.
+  auto unreferenced = [&](std::size_t n, std::size_t referenced, const char* what) {
+    if (n > 0 && referenced == 0)
+      info.notes.push_back(std::to_string(n) + " " + what + " no face references: not read");
+  };
+  unreferenced(s.tex.size() / 3, s.corners_with_tex, s.tex.size() == 3 ? "texture coordinate (vt)" : "texture coordinates (vt)");
+  unreferenced(s.normals.size() / 3, s.corners_with_normal, s.normals.size() == 3 ? "normal (vn)" : "normals (vn)");
+  const std::size_t total =
+      s.skipped_lines + s.skipped_lines_l + s.skipped_points + s.skipped_empty_faces + s.skipped_short_faces;
   if (total == 0) return;
   std::string what;
   auto add = [&](std::size_t n, const std::string& kind) {
@@ -714,6 +858,7 @@ void note_skipped(const ObjLines& s, ReadInfo& info) {
   add(s.skipped_lines_l, "`l` (polyline)");
   add(s.skipped_points, "`p` (point)");
   add(s.skipped_empty_faces, "`f` with no indices");
+  add(s.skipped_short_faces, "`f` with fewer than 3 vertices (not a face)");
   if (s.skipped_lines > 0)
     add(s.skipped_lines, "with keywords shadetool does not use (first: '" + s.skipped_keyword + "')");
   info.notes.push_back("skipped " + std::to_string(total) + " line" + (total == 1 ? "" : "s") + ": " + what);

@@ -3,8 +3,16 @@
 // Reading keeps: `v x y z [w]` and `v x y z r g b [a]` (vertex colours, float in [0,1]),
 // `vn` (pool of corner normals, per-corner index), `vt u [v [w]]` (texcoord pool, per-corner
 // index), `f` in the forms i, i/j, i//k, i/j/k with negative (relative) indices, polygons of any
-// size, in order. Accepted and skipped: o, g, s, usemtl, mtllib, comments, blank lines, CRLF,
-// trailing whitespace; other keywords (l, p, curves...) are skipped with a note.
+// size, in order. An empty vt or vn field (`1/`, `1//`, `1/1/`) is absent (tinyobjloader, assimp,
+// trimesh). Accepted and skipped: o, g, s, usemtl, mtllib, comments, blank lines, CRLF,
+// trailing whitespace; other keywords (l, p, curves...), `f` with no index and `f` with 1 or 2
+// vertices (not a face; nothing of it kept) are skipped with one note counting each kind. vt or
+// vn lines no face references are not read (a note counts them).
+// A line ending in `\` (spaces after it allowed) continues its statement on the next line (the
+// OBJ spec; trimesh and Blender read it so), comment lines included; messages count every line.
+// The test is made only where a reader finds a `\` where it wanted a token (its error path) or
+// in text a reader left on its line, so ordinary lines pay nothing. Continued grouping
+// statements are kept as one line.
 // A `vt` or `vn` index on a face corner while the file has defined no `vt` (`vn`) line before it
 // (OpenSubdiv's shapes write `f v/vt/vn` with neither) is ignored, counted in one note, as assimp
 // does; an index beyond a pool that does have entries is still an error naming the line.
@@ -15,8 +23,9 @@
 // parsed into its place in the mesh's arrays at once, relative (negative) indices and ranges
 // resolved against the whole file's counts; grouping statements, colours and per-corner vn/vt are
 // merged in file order. The mesh is the same bit for bit as one pass gives, and so is the error
-// (the first in the file, with its line). Text the two passes would split differently (a corner
-// written `1/ 2`, whose vt the reader takes across the space) is read in one pass instead.
+// (the first in the file, with its line). Chunks are never cut after a line ending in `\`. Text
+// the two passes count differently (a face continued on the next line, an `f` of 2 vertices) is
+// read in one pass instead.
 // Steps: read the lines (read_lines), validate, build the corner normals, texture coordinates and
 // vertex colours from the pools, then note what was skipped.
 // Precision: every value is stored as parsed, the double nearest to the text, never rounded to

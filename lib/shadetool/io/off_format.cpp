@@ -101,6 +101,12 @@ OffHeader read_off_header(Lines& lines, const std::string& name) {
     if (k.compare(i, 2, "ST") == 0) h.has_st = true, i += 2;
     if (i < k.size() && k[i] == 'C') h.has_c = true, ++i;
     if (i < k.size() && k[i] == 'N') h.has_n = true, ++i;
+    // A digit right after the keyword starts the counts (`OFF8 6 12`, trimesh's whitespace.off):
+    // no [ST][C][N]OFF variant ends in a digit, so the keyword cannot be read otherwise.
+    if (k.compare(i, 3, "OFF") == 0 && i + 3 < k.size() && k[i + 3] >= '0' && k[i + 3] <= '9') {
+      q = kw + i + 3;
+      k.resize(i + 3);
+    }
     if (k.compare(i, std::string::npos, "OFF") != 0) {
       if (k.find("OFF") != std::string::npos)
         fail(name, lines.line(), "unsupported OFF variant '" + k + "' (supported: [ST][C][N]OFF)");

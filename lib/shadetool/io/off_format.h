@@ -1,7 +1,8 @@
 // off_format.h: Geomview OFF reader and writer (OFF, COFF, NOFF, CNOFF, STOFF...).
 //
 // Reading: an optional header keyword [ST][C][N]OFF (4OFF, nOFF and binary OFF are refused),
-// then `#V #F [#E]`, #V vertex lines `x y z [nx ny nz] [r g b [a]] [s t]` and #F face lines
+// then `#V #F [#E]` (on the keyword's line or the next; a digit right after the keyword, `OFF8 6 12`,
+// starts the counts, as trimesh reads it: no variant's keyword ends in a digit), #V vertex lines `x y z [nx ny nz] [r g b [a]] [s t]` and #F face lines
 // `k i_1 ... i_k [r g b [a]]` (0-based indices, polygons kept). Colours written as integers are
 // 0..255 and divided by 255; colours with a decimal point or exponent are taken as floats in [0,1].
 // Four components whose alpha is 1 everywhere read as rgb (Mesh::color_channels 3): the writer

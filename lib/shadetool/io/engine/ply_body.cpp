@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <vector>
 
@@ -17,10 +18,24 @@ namespace {
 
 // ---- the body reader: one interface over ascii tokens and binary values
 
+// How an ascii body is cut into items. Tokens: an item is its properties' next values, wherever the
+// lines break (what the PLY format says). Lines: every item is one line (ply.c, Turk's reference
+// reader, reads an ascii item per line and ignores extra words): its values may not run past the
+// line's end, and values after its properties on the line are skipped, counted per element.
+enum class AsciiItems { Tokens, Lines };
+
+// Items of one element whose line held values beyond the header's properties (line mode).
+struct ExtraValues {
+  std::string element;
+  std::size_t items = 0, first_line = 0;
+};
+
 class BodyReader {
  public:
-  BodyReader(const char* p, const char* end, Encoding enc, const std::string& name, std::size_t line)
-      : p_(p), end_(end), enc_(enc), swap_(host_is_little() != (enc == Encoding::BinaryLE)), name_(name), line_(line) {}
+  BodyReader(const char* p, const char* end, Encoding enc, const std::string& name, std::size_t line,
+             AsciiItems items = AsciiItems::Tokens)
+      : p_(p), end_(end), enc_(enc), swap_(host_is_little() != (enc == Encoding::BinaryLE)), name_(name), line_(line),
+        lines_(enc == Encoding::Ascii && items == AsciiItems::Lines) {}
 
   bool ascii() const { return enc_ == Encoding::Ascii; }
   std::size_t remaining() const { return std::size_t(end_ - p_); }
@@ -35,7 +50,7 @@ class BodyReader {
 
   double scalar(Type t, const char* what) {
     if (ascii()) {
-      skip_ascii_space();
+      skip_value_space(what);
       if (p_ == end_) error(std::string("file ends early, in ") + what);
       double v;
       const char* b = p_;
@@ -51,7 +66,7 @@ class BodyReader {
 
   std::int64_t integer(Type t, const char* what) {
     if (ascii()) {
-      skip_ascii_space();
+      skip_value_space(what);
       if (p_ == end_) error(std::string("file ends early, in ") + what);
       std::int64_t v;
       const char* b = p_;
@@ -73,13 +88,38 @@ class BodyReader {
     }
   }
 
+  // An item starts: in line mode at the next line with a value (blank lines skipped).
+  void begin_item() {
+    if (lines_) skip_ascii_space();
+  }
+  // An item ends: in line mode, values left on its line are skipped (counted for `e`).
+  void end_item(const Element& e) {
+    if (!lines_) return;
+    while (p_ < end_ && is_space(*p_)) ++p_;
+    if (p_ == end_ || *p_ == '\n') return;
+    if (extra_.empty() || extra_.back().element != e.name) extra_.push_back({e.name, 0, line_});
+    ++extra_.back().items;
+    const void* lf = std::memchr(p_, '\n', std::size_t(end_ - p_));
+    p_ = lf ? static_cast<const char*>(lf) : end_;
+  }
+  const std::vector<ExtraValues>& extra_values() const { return extra_; }
+
  private:
+  // Before a value: spaces and (token mode) line feeds; in line mode a line feed ends the item early.
+  void skip_value_space(const char* what) {
+    if (!lines_) return skip_ascii_space();
+    while (p_ < end_ && is_space(*p_)) ++p_;
+    if (p_ < end_ && *p_ == '\n') error(std::string("line ends early, in ") + what);
+  }
+
   const char* p_;
   const char* end_;
   Encoding enc_;
   bool swap_;
   const std::string& name_;
   std::size_t line_;
+  bool lines_;                     // ascii, AsciiItems::Lines
+  std::vector<ExtraValues> extra_;
 };
 
 std::string element_item(const Element& e, std::uint64_t i) {
@@ -212,6 +252,7 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
   if (layout.vquality) mesh.vertex_quality.assign(n, 0.0f);
   start_extras(e, mesh.vertex_properties, layout.vertex_extras, n, info);
   for (; i < n; ++i) {
+    in.begin_item();
     for (const auto& prop : e.props) {
       if (prop.is_list) {
         const std::int64_t k = in.integer(prop.count_type, "a vertex list count");
@@ -239,6 +280,7 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
         case Target::Skip: case Target::Indices: case Target::TexcoordList: break;  // not a vertex's scalar
       }
     }
+    in.end_item(e);
   }
 }
 
@@ -258,7 +300,7 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
   std::size_t i = 0;
   if (!in.ascii()) i = read_binary_triangles_fast(e, in, layout.num_vertices(), mesh);
   for (; i < n; ++i) {
-    if (in.ascii()) in.skip_ascii_space();
+    if (in.ascii()) in.skip_ascii_space();  // (begin_item's line mode skips the same)
     const std::size_t item_line = in.line();
     bool have_wedge = false;
     wedge.clear();
@@ -306,6 +348,7 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
         case Target::Indices: case Target::TexcoordList: break;  // not a face's scalar
       }
     }
+    in.end_item(e);
     if (layout.face_texcoords) {
       const std::size_t size = mesh.face_size(i);
       if (!have_wedge || wedge.size() != 2 * size)
@@ -345,6 +388,7 @@ void read_strips_element(const Element& e, const PlyLayout& layout, BodyReader& 
   std::vector<std::uint32_t> run;
   std::size_t joins = 0, strips = 0;
   for (std::uint64_t i = 0; i < e.count; ++i) {
+    in.begin_item();
     for (const auto& prop : e.props) {
       if (!prop.is_list) {
         in.scalar(prop.type, e.name.c_str());
@@ -377,6 +421,7 @@ void read_strips_element(const Element& e, const PlyLayout& layout, BodyReader& 
       if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 3)
         in.error("too many face corners (more than 2^32)");
     }
+    in.end_item(e);
   }
   info.notes.push_back("triangle strips ('" + e.name + "'): " + std::to_string(strips) + " strips read as " +
                        std::to_string(mesh.num_faces()) + " triangles, winding as the first of each strip (as MeshLab reads them)" +
@@ -400,7 +445,8 @@ void skip_element(const Element& e, BodyReader& in, ReadInfo& info) {
     info.notes.push_back("skipped " + std::to_string(e.count) + " '" + e.name + "' elements");
     return;
   }
-  for (std::uint64_t i = 0; i < e.count; ++i)
+  for (std::uint64_t i = 0; i < e.count; ++i) {
+    in.begin_item();
     for (const auto& prop : e.props) {
       if (prop.is_list) {
         const std::int64_t k = in.integer(prop.count_type, "a list count");
@@ -412,6 +458,8 @@ void skip_element(const Element& e, BodyReader& in, ReadInfo& info) {
         in.scalar(prop.type, e.name.c_str());
       }
     }
+    in.end_item(e);
+  }
   info.notes.push_back("skipped " + std::to_string(e.count) + " '" + e.name + "' elements");
 }
 
@@ -432,10 +480,12 @@ void refuse_trailing_data(BodyReader& in, const std::string& name) {
 
 }  // namespace
 
-Mesh read_ply_body(std::string_view bytes, const PlyHeader& header, const PlyLayout& layout, const std::string& name,
-                   ReadInfo& info) {
+namespace {
+
+Mesh read_body(std::string_view bytes, const PlyHeader& header, const PlyLayout& layout, const std::string& name,
+               ReadInfo& info, AsciiItems items) {
   const Encoding enc = header.encoding;
-  BodyReader in(bytes.data() + header.body_offset, bytes.data() + bytes.size(), enc, name, header.lines + 1);
+  BodyReader in(bytes.data() + header.body_offset, bytes.data() + bytes.size(), enc, name, header.lines + 1, items);
   Mesh mesh;
   std::vector<double> vtexcoords;
   for (const Element& e : header.elements) {
@@ -477,7 +527,33 @@ Mesh read_ply_body(std::string_view bytes, const PlyHeader& header, const PlyLay
   mesh.color_channels = layout.channels();
   mesh.colors_are_float = layout.colors_float;
   mesh.precision = layout.any_double ? ValuePrecision::Double : ValuePrecision::Float;
+  for (const ExtraValues& x : in.extra_values())
+    info.notes.push_back(std::to_string(x.items) + " " + x.element + (x.items == 1 ? " line holds" : " lines hold") +
+                         " values beyond the header's properties (first: line " + std::to_string(x.first_line) +
+                         "): ignored, as the PLY reference reader (ply.c) reads them");
   return mesh;
+}
+
+}  // namespace
+
+Mesh read_ply_body(std::string_view bytes, const PlyHeader& header, const PlyLayout& layout, const std::string& name,
+                   ReadInfo& info) {
+  if (header.encoding != Encoding::Ascii) return read_body(bytes, header, layout, name, info, AsciiItems::Tokens);
+  // Ascii: by tokens (the format's rule); when that fails, by lines (ply.c's), and that result
+  // is kept if it reads; else the token mode's error. The failed attempt's notes are dropped.
+  const std::size_t notes_before = info.notes.size();
+  try {
+    return read_body(bytes, header, layout, name, info, AsciiItems::Tokens);
+  } catch (const Error&) {
+    const std::exception_ptr token_error = std::current_exception();
+    info.notes.resize(notes_before);
+    try {
+      return read_body(bytes, header, layout, name, info, AsciiItems::Lines);
+    } catch (const Error&) {
+      info.notes.resize(notes_before);
+    }
+    std::rethrow_exception(token_error);
+  }
 }
 
 }  // namespace shadetool::io::ply

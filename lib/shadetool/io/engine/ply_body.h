@@ -10,6 +10,12 @@
 //          A `tristrips` element (PlyLayout::strips) becomes triangles: a -1 restarts a strip; odd
 //          triangles of a strip are reordered to wind like the first (as VCG/MeshLab read them);
 //          a triangle with a repeated index (a join between strips) is not kept; one note counts.
+// Ascii:   read by tokens (an item is its properties' next values, wherever lines break: the
+//          format's rule); when that fails, read again by lines (ply.c, Turk's reference reader,
+//          reads an ascii item per line and ignores extra words: VCGLIB writes such files), and
+//          that result kept if it reads, with one note per element naming how many lines held
+//          values past the header's properties and the first; else the token reading's error.
+//          The failed reading's notes are dropped. A file the token reading reads is unchanged.
 // Errors:  truncated or malformed data, indices out of range, faces with fewer than 3 corners,
 //          data after the last element (`NAME:LINE: what` in ascii, `NAME: what` in binary); a
 //          result without faces while another element holds a vertex_indices list (faces this
