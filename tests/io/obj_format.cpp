@@ -434,7 +434,7 @@ TEST_CASE("OBJ: an `f` of 1 or 2 vertices is skipped with a count, leaving the m
   ReadInfo both;
   read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\nf\nf 1 2\n", Format::Obj, &both);
   REQUIRE(both.notes.size() == 1);
-  CHECK(both.notes[0] == "skipped 3 lines: 1 `l` (polyline), 1 `f` with no indices, 1 `f` with fewer than 3 vertices (not a face)");
+  CHECK(both.notes[0] == "skipped 3 lines: 1 `l` (polyline), 1 `f` with no indices (no face), 1 `f` with fewer than 3 vertices (not a face)");
   // An index out of range is still an error, short face or not.
   CHECK(error_of([] { read_text("v 0 0 0\nf 1 5\n", Format::Obj, nullptr, "m.obj"); }) ==
         "m.obj:2: vertex index 5 out of range (1 vertex defined so far)");

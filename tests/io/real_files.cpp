@@ -166,7 +166,7 @@ TEST_CASE("OBJ elements other readers skip are skipped with one counted note", "
                            Format::Obj, &info);
   CHECK(m.num_faces() == 1);
   REQUIRE(info.notes.size() == 1);
-  CHECK(info.notes[0] == "skipped 7 lines: 2 `l` (polyline), 1 `p` (point), 2 `f` with no indices, 2 with keywords "
+  CHECK(info.notes[0] == "skipped 7 lines: 2 `l` (polyline), 1 `p` (point), 2 `f` with no indices (no face), 2 with keywords "
                          "shadetool does not use (first: 'curv')");
   // Truly malformed numbers still stop.
   CHECK(error_of([] { read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3x\n", Format::Obj, nullptr, "m.obj"); }) ==

@@ -857,7 +857,7 @@ void note_skipped(const ObjLines& s, ReadInfo& info) {
   };
   add(s.skipped_lines_l, "`l` (polyline)");
   add(s.skipped_points, "`p` (point)");
-  add(s.skipped_empty_faces, "`f` with no indices");
+  add(s.skipped_empty_faces, "`f` with no indices (no face)");
   add(s.skipped_short_faces, "`f` with fewer than 3 vertices (not a face)");
   if (s.skipped_lines > 0)
     add(s.skipped_lines, "with keywords shadetool does not use (first: '" + s.skipped_keyword + "')");
