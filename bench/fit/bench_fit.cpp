@@ -30,6 +30,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -73,11 +74,22 @@ std::vector<double> bake(const Mesh& mesh, const Scene& scene, int samples) {
   return fit_vertex_lighting(mesh, scene, point, {}, {}, fit).rgb;
 }
 
+// One bake's process CPU and wall time, ms.
+struct BakeTime {
+  double cpu = 0, wall = 0;
+};
+
+// How `table` times method `m` on a mesh: in this process, or in a process of its own. False: the
+// timing failed (the table stops, exit 1).
+using TimeBake = std::function<bool(const Mesh& mesh, const Scene& scene, const int torus[2], const char* scene_name,
+                                    int method, BakeTime& t)>;
+
 // The four methods (point, least squares at 1, 3, 6 points) timed round-robin: each repetition runs
 // every method once, so that the load of the machine falls on all of them alike. Wall and process
-// CPU time, medians.
+// CPU time, medians. The errors are measured first, and the reference's memory (12 points per
+// triangle) freed before the timing.
 int table(const std::string& src, int repeats, std::size_t max_triangles, std::size_t min_triangles,
-          const std::string& only_scene, const std::vector<int>& methods) {
+          const std::string& only_scene, const std::vector<int>& methods, const TimeBake& time_bake) {
   std::printf("| mesh | scene | method | wall ms | CPU ms | x point (CPU) | relative L2 error | vs point |\n"
               "|---|---|---|---|---|---|---|---|\n");
   const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
@@ -96,14 +108,14 @@ int table(const std::string& src, int repeats, std::size_t max_triangles, std::s
         const FitQuadrature ref = fit_quadrature(fit_elements(mesh), world, 12);
         const std::vector<double> f = clamped(lighting_at_quadrature(mesh, scene, ref, world, normals.vertex_normals, {}, {}));
         for (int m = 0; m < M; ++m) error[m] = relative_l2_error(ref, f, bake(mesh, scene, methods[m]), 3);
-      }  // the reference's memory (12 points per triangle) freed before the timing
+      }
       std::vector<std::vector<double>> wall(M), cpu(M);
       for (int k = 0; k < repeats; ++k)
         for (int m = 0; m < M; ++m) {
-          const double w0 = now_ms(), c0 = cpu_ms();
-          bake(mesh, scene, methods[m]);
-          cpu[m].push_back(cpu_ms() - c0);
-          wall[m].push_back(now_ms() - w0);
+          BakeTime t;
+          if (!time_bake(mesh, scene, s, name, methods[m], t)) return 1;
+          cpu[m].push_back(t.cpu);
+          wall[m].push_back(t.wall);
         }
       for (int m = 0; m < M; ++m) {
         std::printf("| torus %zuk tri | %s | %s | %.1f | %.1f | %.2f | %.3g | %+.0f%% |\n", mesh.num_faces() / 1000, name,
@@ -116,59 +128,32 @@ int table(const std::string& src, int repeats, std::size_t max_triangles, std::s
   return 0;
 }
 
-// table's rows with every bake in a fresh process of its own (`bench_fit once`), as a user's
+// table's timing in this process: bake after bake on the heap the previous ones left.
+bool time_in_process(const Mesh& mesh, const Scene& scene, const int*, const char*, int method, BakeTime& t) {
+  const double w0 = now_ms(), c0 = cpu_ms();
+  bake(mesh, scene, method);
+  t.cpu = cpu_ms() - c0;
+  t.wall = now_ms() - w0;
+  return true;
+}
+
+// table's timing with every bake in a fresh process of its own (`bench_fit once`), as a user's
 // `bake-lighting` runs it: one bake per process, its memory fresh (page faults of first touch
 // included, for every method alike), no row timed on the heap another row left. Process CPU time
 // of the bake alone (the child's, from before the bake to after it; not the mesh's generation), the
-// methods alternating process by process (repetition k runs point, 1, 3, ... in turn), medians of
-// `repeats`. Errors as table (computed here, before the timing). Same output format as table.
-int fresh_table(const char* self, const std::string& src, int repeats, std::size_t max_triangles,
-                std::size_t min_triangles, const std::string& only_scene, const std::vector<int>& methods) {
-  std::printf("| mesh | scene | method | wall ms | CPU ms | x point (CPU) | relative L2 error | vs point |\n"
-              "|---|---|---|---|---|---|---|---|\n");
-  const int sizes[][2] = {{100, 50}, {316, 158}, {1000, 500}};
-  const int M = int(methods.size());  // methods[0] is 0: the point bake, the ratios' denominator
-  for (const auto& s : sizes) {
-    const std::size_t triangles = std::size_t(2 * s[0] * s[1]);
-    if (triangles > max_triangles || triangles < min_triangles) continue;
-    for (const char* name : {"studio", "window"}) {
-      if (!only_scene.empty() && only_scene != name) continue;
-      std::vector<double> error(M);
-      std::size_t faces = 0;
-      {
-        const Mesh mesh = testing::torus(s[0], s[1], 1.0, 0.4).mesh;
-        faces = mesh.num_faces();
-        const Scene scene = read_scene(src + "/data/scenes/" + name + ".json");
-        const BakeResult normals = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
-        const std::vector<double> world = world_positions(mesh, scene);
-        const FitQuadrature ref = fit_quadrature(fit_elements(mesh), world, 12);
-        const std::vector<double> f = clamped(lighting_at_quadrature(mesh, scene, ref, world, normals.vertex_normals, {}, {}));
-        for (int m = 0; m < M; ++m) error[m] = relative_l2_error(ref, f, bake(mesh, scene, methods[m]), 3);
-      }
-      std::vector<std::vector<double>> wall(M), cpu(M);
-      for (int k = 0; k < repeats; ++k)
-        for (int m = 0; m < M; ++m) {
-          const std::string command = std::string(self) + " once '" + src + "' " + std::to_string(s[0]) + " " +
-                                      std::to_string(s[1]) + " " + name + " " + std::to_string(methods[m]);
-          FILE* child = popen(command.c_str(), "r");
-          double c = 0, w = 0;
-          const bool read = child && std::fscanf(child, "%lf %lf", &c, &w) == 2;
-          if (!child || pclose(child) != 0 || !read) {
-            std::fprintf(stderr, "bench_fit fresh: '%s' failed\n", command.c_str());
-            return 1;
-          }
-          cpu[m].push_back(c);
-          wall[m].push_back(w);
-        }
-      for (int m = 0; m < M; ++m) {
-        std::printf("| torus %zuk tri | %s | %s | %.1f | %.1f | %.2f | %.3g | %+.0f%% |\n", faces / 1000, name,
-                    m == 0 ? "point" : ("least squares, " + std::to_string(methods[m]) + " pt").c_str(), median(wall[m]),
-                    median(cpu[m]), median(cpu[m]) / median(cpu[0]), error[m], 100 * (error[m] / error[0] - 1));
-        std::fflush(stdout);
-      }
+// methods alternating process by process (repetition k runs point, 1, 3, ... in turn).
+TimeBake time_in_fresh_process(const char* self, const std::string& src) {
+  return [self, src](const Mesh&, const Scene&, const int torus[2], const char* scene_name, int method, BakeTime& t) {
+    const std::string command = std::string(self) + " once '" + src + "' " + std::to_string(torus[0]) + " " +
+                                std::to_string(torus[1]) + " " + scene_name + " " + std::to_string(method);
+    FILE* child = popen(command.c_str(), "r");
+    const bool read = child && std::fscanf(child, "%lf %lf", &t.cpu, &t.wall) == 2;
+    if (!child || pclose(child) != 0 || !read) {
+      std::fprintf(stderr, "bench_fit fresh: '%s' failed\n", command.c_str());
+      return false;
     }
-  }
-  return 0;
+    return true;
+  };
 }
 
 // Where the time of one least-squares bake goes, per stage, in process CPU time (every thread's:
@@ -556,13 +541,12 @@ int main(int argc, char** argv) {
     std::printf("least_squares_fit %.3f ms (median of %zu, process CPU), %d CG iterations\n", median(t), t.size(), iterations);
     return 0;
   }
-  if (mode == "once" && argc > 6) {  // bench_fit once SRC U V SCENE SAMPLES: one bake in this process (fresh_table)
+  if (mode == "once" && argc > 6) {  // bench_fit once SRC U V SCENE SAMPLES: one bake in this process (fresh)
     const Mesh mesh = testing::torus(std::atoi(argv[3]), std::atoi(argv[4]), 1.0, 0.4).mesh;
     const Scene scene = read_scene(src + "/data/scenes/" + argv[5] + ".json");
-    const double w0 = now_ms(), c0 = cpu_ms();
-    bake(mesh, scene, std::atoi(argv[6]));
-    const double c = cpu_ms() - c0, w = now_ms() - w0;
-    std::printf("%.3f %.3f\n", c, w);
+    BakeTime t;
+    time_in_process(mesh, scene, nullptr, argv[5], std::atoi(argv[6]), t);
+    std::printf("%.3f %.3f\n", t.cpu, t.wall);
     return 0;
   }
   if (mode == "errors") return errors(src, argc > 3 ? std::size_t(std::atoll(argv[3])) : 20000);
@@ -589,11 +573,11 @@ int main(int argc, char** argv) {
   if (mode == "fresh") {
     char self[4096] = {};
     if (readlink("/proc/self/exe", self, sizeof self - 1) <= 0) return 1;  // this program, for its children
-    return fresh_table(self, src, argc > 3 ? std::atoi(argv[3]) : 7,
-                       argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000, argc > 5 ? std::size_t(std::atoll(argv[5])) : 0,
-                       argc > 6 && std::string(argv[6]) != "both" ? argv[6] : "", methods);
+    return table(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000,
+                 argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 && std::string(argv[6]) != "both" ? argv[6] : "",
+                 methods, time_in_fresh_process(self, src));
   }
   return table(src, argc > 3 ? std::atoi(argv[3]) : 7, argc > 4 ? std::size_t(std::atoll(argv[4])) : 200000,
                argc > 5 ? std::size_t(std::atoll(argv[5])) : 0, argc > 6 && std::string(argv[6]) != "both" ? argv[6] : "",
-               methods);
+               methods, time_in_process);
 }
