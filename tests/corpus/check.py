@@ -200,7 +200,8 @@ def inconsistent_part_faces(part):
         return x
 
     first_face = {}  # undirected edge -> a face using it
-    directed = {}    # directed edge -> times used
+    directed = {}    # directed edge -> the first face traversing it that way
+    twice = []       # faces traversing an edge in a direction another face already took
     for f, face in enumerate(faces):
         for i in range(len(face)):
             a, b = key[face[i]], key[face[(i + 1) % len(face)]]
@@ -211,13 +212,11 @@ def inconsistent_part_faces(part):
                 parent[find(f)] = find(first_face[u])
             else:
                 first_face[u] = f
-            directed[(a, b)] = directed.get((a, b), 0) + 1
-    bad_roots = set()
-    for f, face in enumerate(faces):
-        for i in range(len(face)):
-            a, b = key[face[i]], key[face[(i + 1) % len(face)]]
-            if a != b and directed.get((a, b), 0) > 1:
-                bad_roots.add(find(f))
+            if (a, b) in directed:
+                twice.append(f)
+            else:
+                directed[(a, b)] = f
+    bad_roots = {find(f) for f in twice}
     return {f for f in range(len(faces)) if find(f) in bad_roots}
 
 
