@@ -15,6 +15,25 @@ check() {  # check NAME COMMAND...
 }
 py=/usr/bin/python3; [ -x "$py" ] || py=python3
 gcheck() { "$py" "$src/tests/gltf/gltf_check.py" "$@"; }
+# derive FROM OUT.gltf CODE: FROM's document as `d` and its first buffer as `b` (a bytearray), edited
+# by the Python CODE, written as OUT.gltf with a .bin of its own and FROM's image files beside it.
+derive() {
+  "$py" - "$src/tests/gltf" "$@" <<'PYEOF'
+import json, os, shutil, struct, sys
+sys.path.insert(0, sys.argv[1]); import gltf_check
+src_path, out, code = sys.argv[2:5]
+d, buffers = gltf_check.load(src_path)
+b = bytearray(buffers[0])
+exec(code)
+d["buffers"][0]["uri"] = os.path.basename(out)[:-5] + ".bin"
+d["buffers"][0]["byteLength"] = len(b)
+open(out[:-5] + ".bin", "wb").write(b)
+for i in d.get("images", []):
+    if "uri" in i and not i["uri"].startswith("data:"):
+        shutil.copy(os.path.join(os.path.dirname(src_path), i["uri"]), os.path.dirname(out))
+json.dump(d, open(out, "w"))
+PYEOF
+}
 fx=$tmp/fx
 "$py" "$src/tests/gltf/make_fixtures.py" "$fx" || { echo "FAIL: fixtures"; exit 1; }
 
@@ -572,26 +591,20 @@ check "glTF --tangents to OBJ: a note says TANGENT is not written" grep -q "TANG
 # Morph targets with TANGENT deltas on a primitive whose TANGENT cannot be recomputed (no
 # TEXCOORD_0, as Khronos' AnimatedMorphCube): the base TANGENT is removed, so are the deltas (a
 # target attribute without its base is MESH_PRIMITIVE_MORPH_TARGET_NO_BASE_ACCESSOR).
-"$py" - "$fx/rich.gltf" "$tmp/morph_tangent.gltf" <<'PYEOF'
-import json, shutil, sys, os
-d = json.load(open(sys.argv[1]))
+derive "$fx/rich.gltf" "$tmp/morph_tangent.gltf" '
 p = d["meshes"][0]["primitives"][0]
 del p["attributes"]["TEXCOORD_0"]
 del d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]
-p["targets"][0]["TANGENT"] = p["targets"][0]["NORMAL"]
-for uri in [d["buffers"][0]["uri"]] + [i["uri"] for i in d.get("images", []) if "uri" in i]:
-    shutil.copy(os.path.join(os.path.dirname(sys.argv[1]), uri), os.path.dirname(sys.argv[2]))
-json.dump(d, open(sys.argv[2], "w"))
-PYEOF
+p["targets"][0]["TANGENT"] = p["targets"][0]["NORMAL"]'
 "$bin" normals --recompute "$tmp/morph_tangent.gltf" -o "$tmp/morph_tangent.glb" 2> "$tmp/err.txt"
 check "morph TANGENT deltas without a recomputable TANGENT: exit 0" test $? -eq 0
 check "... a note says TANGENT removed" grep -q "TANGENT removed" "$tmp/err.txt"
 check "... valid (no target TANGENT left without its base)" valid "$tmp/morph_tangent.glb"
 check "... no TANGENT in the primitive or its targets" "$py" -c '
-import json, struct, sys
-b = open(sys.argv[1], "rb").read(); n = struct.unpack("<I", b[12:16])[0]; j = json.loads(b[20:20 + n])
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+j, _ = gltf_check.load(sys.argv[1])
 p = j["meshes"][0]["primitives"][0]
-assert "TANGENT" not in p["attributes"] and all("TANGENT" not in t for t in p["targets"]), p' "$tmp/morph_tangent.glb"
+assert "TANGENT" not in p["attributes"] and all("TANGENT" not in t for t in p["targets"]), p' "$tmp/morph_tangent.glb" "$src/tests/gltf"
 
 # Normals off unit length (Khronos' BoxBadNormals: NORMAL of length 0.1) through a command that
 # writes NORMAL anew: written divided by their length, as every writer does (core/unit_normals.h),
@@ -600,22 +613,13 @@ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0.1\nf 1//1 2//1 3//1\n' > "$tmp/short
 "$bin" transform --translate 1,0,0 "$tmp/short_vn.obj" -o "$tmp/short_vn.glb" 2> "$tmp/err.txt"
 check "short normals -> glb: valid" valid "$tmp/short_vn.glb"
 check "short normals -> glb: a note gives the length" grep -q "1 normal not of unit length (0.1) written divided by their length" "$tmp/err.txt"
-"$py" - "$fx/rich.gltf" "$tmp/short_normals.gltf" <<'PYEOF'
-import json, shutil, struct, sys, os
-d = json.load(open(sys.argv[1]))
-for uri in [d["buffers"][0]["uri"]] + [i["uri"] for i in d.get("images", []) if "uri" in i]:
-    shutil.copy(os.path.join(os.path.dirname(sys.argv[1]), uri), os.path.dirname(sys.argv[2]))
-binp = os.path.join(os.path.dirname(sys.argv[2]), d["buffers"][0]["uri"])
-b = bytearray(open(binp, "rb").read())
+derive "$fx/rich.gltf" "$tmp/short_normals.gltf" '
 a = d["accessors"][d["meshes"][0]["primitives"][0]["attributes"]["NORMAL"]]
 v = d["bufferViews"][a["bufferView"]]
 off, stride = v.get("byteOffset", 0) + a.get("byteOffset", 0), v.get("byteStride", 12)
 for i in range(a["count"]):
     x = struct.unpack_from("<3f", b, off + i * stride)
-    struct.pack_into("<3f", b, off + i * stride, *(0.1 * c for c in x))
-open(binp, "wb").write(b)
-json.dump(d, open(sys.argv[2], "w"))
-PYEOF
+    struct.pack_into("<3f", b, off + i * stride, *(0.1 * c for c in x))'
 "$bin" transform --translate 1,0,0 "$tmp/short_normals.gltf" -o "$tmp/short_normals.glb" 2> "$tmp/err.txt"
 check "glTF NORMAL of length 0.1 through transform: valid" valid "$tmp/short_normals.glb"
 check "... a note says so" grep -q "normals not of unit length (0.1" "$tmp/err.txt"
@@ -627,12 +631,12 @@ printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty floa
 check "point cloud -> glb: exit 0" test $? -eq 0
 check "point cloud -> glb: valid" valid "$tmp/points.glb"
 check "point cloud -> glb: one POINTS primitive, no indices, 3 positions moved by +1 in x" "$py" -c '
-import json, struct, sys
-b = open(sys.argv[1], "rb").read(); n = struct.unpack("<I", b[12:16])[0]; j = json.loads(b[20:20 + n])
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+j, _ = gltf_check.load(sys.argv[1])
 (p,) = j["meshes"][0]["primitives"]
 assert p["mode"] == 0 and "indices" not in p, p
 a = j["accessors"][p["attributes"]["POSITION"]]
-assert a["count"] == 3 and a["min"] == [1, 0, 0] and a["max"] == [2, 1, 0], a' "$tmp/points.glb"
+assert a["count"] == 3 and a["min"] == [1, 0, 0] and a["max"] == [2, 1, 0], a' "$tmp/points.glb" "$src/tests/gltf"
 
 echo "gltf_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
