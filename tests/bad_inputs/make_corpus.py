@@ -119,8 +119,8 @@ case('ply_index_out_of_range.ply', ply_header(LE, 4, 1).encode() + le_tet_v + st
      'read', 'vertex index 7 out of range', 'binary index past the last vertex')
 case('ply_negative_index.ply', ply_header('ascii') + TRI_ASCII + '3 0 -1 2\n', 'read', 'vertex index -1 out of range',
      'negative index')
-case('ply_face_two_vertices.ply', ply_header('ascii') + TRI_ASCII + '2 0 1\n', 'read', 'a face needs at least 3',
-     'a 2-gon')
+case('ply_short_face_index_out_of_range.ply', ply_header('ascii', 3, 2) + TRI_ASCII + '3 0 1 2\n2 0 7\n', 'read',
+     'vertex index 7 out of range', 'a 2-gon (skipped) naming a vertex past the last: still refused')
 case('ply_negative_list_count.ply', ply_header('ascii', face_prop='property list char int vertex_indices\n')
      + TRI_ASCII + '-3 0 1 2\n', 'read', 'negative list count', 'a signed list count below zero')
 case('ply_float_list_count.ply', ply_header('ascii', face_prop='property list float int vertex_indices\n')
@@ -163,7 +163,8 @@ case('off_negative_index.off', 'OFF\n3 1 0\n' + TRI_OFF + '3 0 -1 2\n', 'read', 
      'negative index')
 case('off_face_size_lies.off', 'OFF\n3 1 0\n' + TRI_OFF + '5 0 1 2\n', 'read', 'off_face_size_lies.off:6',
      'a face whose size says 5 but lists 3')
-case('off_face_two_vertices.off', 'OFF\n3 1 0\n' + TRI_OFF + '2 0 1\n', 'read', 'a face needs at least 3', 'a 2-gon')
+case('off_short_face_index_out_of_range.off', 'OFF\n3 2 0\n' + TRI_OFF + '3 0 1 2\n2 0 5\n', 'read',
+     'vertex index 5 out of range', 'a 2-gon (skipped) naming a vertex past the last: still refused')
 case('off_malformed_count.off', 'OFF\n3 x 0\n' + TRI_OFF + '3 0 1 2\n', 'read', "malformed count 'x'",
      'a word for a count')
 case('off_binary.off', 'OFF BINARY\n', 'read', 'binary OFF is not supported', 'the binary variant')

@@ -56,7 +56,7 @@ TEST_CASE("CLI: every kind of bad input gives one FILE:LINE line, exit 1 and no 
       {"number.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0x7\nf 1 2 3\n", ":3: malformed number '0x7'"},
       {"number.ply", ply_head("ascii", "3") + "0 0 0\n1 0 0\n0 1 1e\n3 0 1 2\n", ":12: malformed number '1e' in vertex data"},
       {"slash.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2/x 3\n", ":4: malformed face index '2/x'"},
-      {"short.ply", ply_head("ascii", "3") + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", ":13: face 0 of 1 has 2 vertices (a face needs at least 3)"},
+      {"short.ply", ply_head("ascii", "3") + "0 0 0\n1 0 0\n0 1 0\n2 0 3\n", ":13: face 0 of 1: vertex index 3 out of range (3 vertices)"},
   };
   std::filesystem::create_directory(dir / "dir.obj");
   for (const auto& c : cases)

@@ -131,7 +131,8 @@ TEST_CASE("OFF: errors name the file and line", "[off][errors]") {
   CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").empty());
   CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n") == "m.off:6: vertex index 3 out of range (3 vertices)");
   CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n") == "m.off:6: vertex index -1 out of range (3 vertices)");
-  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n") == "m.off:6: face has 2 vertices (a face needs at least 3)");
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 7\n") == "m.off:6: vertex index 7 out of range (3 vertices)");  // short or not
+  CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 1\n") == "m.off:6: malformed face size '-1'");
   CHECK(err("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") == "m.off:6: file ends after 1 of 2 faces");
   CHECK(err("OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") == "m.off:6: vertex line has more values than the header 'OFF' declares");
   CHECK(err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n") ==
@@ -143,4 +144,47 @@ TEST_CASE("OFF: errors name the file and line", "[off][errors]") {
   CHECK(err("PLY\n") == "m.off:1: not an OFF file (header is 'PLY')");
   CHECK(err("OFF BINARY\n3 1 0\n") == "m.off:1: binary OFF is not supported");
   CHECK(err("OFF\n1099511627776 1 0\n0 0 0\n").find("m.off:2: header claims 1099511627776 vertices") == 0);
+}
+
+TEST_CASE("OFF: a face line of 0, 1 or 2 vertices is skipped with its colour, leaving the mesh as if the line were absent",
+          "[off][xcorpus]") {
+  const std::string verts = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n";
+  // Short lines with colours that would change what the others read as if they counted: a float
+  // colour (the others are 0..255 integers), an alpha (the others are rgb), 10 digits (precision).
+  struct Line {
+    const char* indices;  // size and indices
+    const char* colour;
+  };
+  const std::vector<Line> faces = {
+      {"3 0 1 2", " 255 0 0"}, {"2 1 3", " 0.5 0.25 0.125 0.5"}, {"4 0 2 3 4", " 0 0 255"}, {"1 4", " 0.1234567891 0 0"},
+      {"0", ""}, {"3 2 3 4", " 10 20 30"},
+  };
+  // And the same faces without colours.
+  for (bool colours : {true, false}) {
+    INFO((colours ? "face colours" : "no face colours"));
+    std::string all, kept;
+    std::size_t nkept = 0;
+    for (const Line& f : faces) {
+      const std::string text = std::string(f.indices) + (colours ? f.colour : "") + "\n";
+      all += text;
+      if (f.indices[0] >= '3') kept += text, ++nkept;
+    }
+    ReadInfo info, kept_info;
+    const Mesh m = read_text("OFF\n5 6 0\n" + verts + all, Format::Off, &info);
+    const Mesh want = read_text("OFF\n5 " + std::to_string(nkept) + " 0\n" + verts + kept, Format::Off, &kept_info);
+    require_same_mesh(m, want);
+    REQUIRE(want.num_faces() == 3);
+    CHECK(want.face_colors.size() == (colours ? 9u : 0u));
+    CHECK(!want.colors_are_float);
+    CHECK(want.precision == ValuePrecision::Float);
+    REQUIRE(info.notes.size() == kept_info.notes.size() + 1);
+    CHECK(info.notes.back() == "skipped 3 of 6 face lines with fewer than 3 vertices (not a face), with their colours");
+  }
+  // Only short faces: a point cloud, with the note.
+  ReadInfo none_info;
+  const Mesh none = read_text("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n1 2 255 0 0\n", Format::Off, &none_info);
+  CHECK(none.num_vertices() == 3);
+  CHECK(none.num_faces() == 0);
+  CHECK(none.face_colors.empty());
+  CHECK(none_info.notes == std::vector<std::string>{"skipped 2 of 2 face lines with fewer than 3 vertices (not a face), with their colours"});
 }

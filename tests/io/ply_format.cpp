@@ -214,7 +214,6 @@ TEST_CASE("PLY: bad input is refused with FILE:LINE messages, never a huge alloc
   CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").empty());
   CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n") == "m.ply:13: face 0 of 1: vertex index 3 out of range (3 vertices)");
   CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n") == "m.ply:13: face 0 of 1: vertex index -1 out of range (3 vertices)");
-  CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n") == "m.ply:13: face 0 of 1 has 2 vertices (a face needs at least 3)");
   CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n") == "m.ply:13: file ends early, in a face list count");
   CHECK(err(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n") ==
         "m.ply:14: more data than the header declares ('3' after the last element)");
@@ -439,4 +438,116 @@ TEST_CASE("PLY ascii: items whose lines hold values past the header's properties
   CHECK(error_of([&] { read_text(head + "0 0 0\n1 0 0\n0 1 0\n0 1\n3 0 1 2 255 0 0 9\n3 0 1 7 0 0 0\n", Format::Ply, &bad_info, "m.ply"); }) ==
         "m.ply:21: face 1 of 2: vertex index 3 out of range (3 vertices)");
   CHECK(bad_info.notes.empty());
+}
+
+namespace {
+
+// One face record of the short-face tests: indices, then (rich layout) nx ny nz, red green blue
+// alpha, quality, an int `flags`, and MeshLab's texcoord list (u v per corner).
+struct FaceRecord {
+  std::vector<int> idx;
+  double n[3];
+  int rgba[4];
+  float quality;
+  int flags;
+};
+
+// A PLY of 5 vertices and the given face records, in `format` (ascii, binary_little_endian,
+// binary_big_endian); rich: with every face property above, else only the index list (the binary
+// reader's triangle fast path). Written here, record by record, not by the writer under test.
+std::string ply_with_faces(const std::string& format, bool rich, const std::vector<FaceRecord>& faces) {
+  std::string h = "ply\nformat " + format + " 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                  "element face " + std::to_string(faces.size()) + "\nproperty list uchar int vertex_indices\n";
+  if (rich)
+    h += "property list uchar float texcoord\nproperty float nx\nproperty float ny\nproperty float nz\n"
+         "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+         "property float quality\nproperty int flags\n";
+  h += "end_header\n";
+  const float xyz[15] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1};
+  const bool ascii = format == "ascii";
+  Bytes b;
+  b.big = format == "binary_big_endian";
+  b.s = h;
+  auto num = [&](auto v, auto as) {
+    if (ascii) b.s += std::to_string(v) + " ";
+    else b.put(decltype(as)(v));
+  };
+  for (int v = 0; v < 5; ++v) {
+    for (int k = 0; k < 3; ++k) num(xyz[3 * v + k], float());
+    if (ascii) b.s += "\n";
+  }
+  for (const FaceRecord& f : faces) {
+    num(int(f.idx.size()), std::uint8_t());
+    for (int i : f.idx) num(i, std::int32_t());
+    if (rich) {
+      num(int(2 * f.idx.size()), std::uint8_t());
+      for (std::size_t c = 0; c < f.idx.size(); ++c) {
+        num(0.25f * float(f.idx[c]), float());
+        num(0.125f * float(c) + float(f.flags), float());
+      }
+      for (double x : f.n) num(float(x), float());
+      for (int c : f.rgba) num(c, std::uint8_t());
+      num(f.quality, float());
+      num(f.flags, std::int32_t());
+    }
+    if (ascii) b.s += "\n";
+  }
+  return b.s;
+}
+
+}  // namespace
+
+TEST_CASE("PLY: a face of 0, 1 or 2 vertices is skipped with its properties, leaving the mesh as if the record were absent",
+          "[ply][xcorpus]") {
+  // Faces with distinct values in every property, so that a value shifted to the wrong face shows.
+  const std::vector<FaceRecord> all = {
+      {{0, 1, 2}, {0, 0, 1}, {255, 0, 0, 255}, 1.5f, 10},
+      {{1, 3}, {1, 0, 0}, {0, 255, 0, 128}, 2.5f, 20},       // 2 vertices
+      {{0, 2, 3, 4}, {0, 1, 0}, {0, 0, 255, 255}, 3.5f, 30},
+      {{4}, {0, 0, -1}, {9, 9, 9, 9}, 4.5f, 40},             // 1 vertex
+      {{}, {0, -1, 0}, {7, 7, 7, 7}, 5.5f, 50},              // none
+      {{2, 3, 4}, {-1, 0, 0}, {10, 20, 30, 40}, 6.5f, 60},
+  };
+  std::vector<FaceRecord> kept;
+  for (const FaceRecord& f : all)
+    if (f.idx.size() >= 3) kept.push_back(f);
+  for (const char* format : {"ascii", "binary_little_endian", "binary_big_endian"})
+    for (bool rich : {true, false}) {
+      INFO(format << (rich ? ", every face property" : ", indices only"));
+      ReadInfo info, kept_info;
+      const Mesh m = read_text(ply_with_faces(format, rich, all), Format::Ply, &info);
+      const Mesh want = read_text(ply_with_faces(format, rich, kept), Format::Ply, &kept_info);
+      require_same_mesh(m, want);
+      REQUIRE(want.num_faces() == 3);
+      if (rich) {  // the properties read are the kept records' (not only equal to the other reading's)
+        CHECK(want.face_properties.size() == 1);
+        CHECK(want.face_properties[0].values == std::vector<double>{10, 30, 60});
+        CHECK(want.face_quality == std::vector<float>{1.5f, 3.5f, 6.5f});
+      }
+      REQUIRE(info.notes.size() == kept_info.notes.size() + 1);
+      CHECK(info.notes.back() ==
+            "skipped 3 of 6 'face' elements with fewer than 3 vertex indices (not a face), with their properties");
+    }
+  // Binary triangles (the fast path) with a short face after some of them and at the start.
+  for (const auto& order : std::vector<std::vector<int>>{{0, 5, 1, 0}, {1, 0, 5, 5}}) {
+    std::vector<FaceRecord> tri, tri_kept;
+    for (int k : order) tri.push_back(all[std::size_t(k)]);
+    for (const FaceRecord& f : tri)
+      if (f.idx.size() == 3) tri_kept.push_back(f);
+    ReadInfo info;
+    require_same_mesh(read_text(ply_with_faces("binary_little_endian", false, tri), Format::Ply, &info),
+                      read_text(ply_with_faces("binary_little_endian", false, tri_kept), Format::Ply));
+    CHECK(info.notes.size() == 1);
+  }
+  // Only short faces: the vertices are read, no face (a point cloud), with the note.
+  ReadInfo none_info;
+  const Mesh none = read_text(ply_with_faces("ascii", true, {all[1], all[3]}), Format::Ply, &none_info);
+  CHECK(none.num_vertices() == 5);
+  CHECK(none.num_faces() == 0);
+  CHECK(none.face_colors.empty());
+  CHECK(none_info.notes == std::vector<std::string>{
+                               "skipped 2 of 2 'face' elements with fewer than 3 vertex indices (not a face), with their properties"});
+  // An index out of range is still an error, short face or not.
+  CHECK(error_of([&] { read_text(ply_with_faces("ascii", false, {all[0], {{0, 7}, {}, {}, 0, 0}}), Format::Ply, nullptr, "m.ply"); }) ==
+        "m.ply:16: face 1 of 2: vertex index 7 out of range (5 vertices)");
 }

@@ -192,24 +192,26 @@ void read_off_vertices(const OffHeader& h, OffBody& body, Mesh& mesh, std::vecto
 
 // Step 3, the face lines: sizes and indices (validated against the vertex count) into the mesh,
 // optional colours into frgba (4 per face, from the first face that has one; white before it).
-void read_off_faces(const OffHeader& h, OffBody& body, Mesh& mesh, std::vector<float>& frgba, int& channels) {
+// A line of fewer than 3 indices is not a face (assimp makes it a point or line, Blender and
+// trimesh drop it): its indices and colour are checked, then it is dropped with its colour, as if
+// the line were absent; the number dropped is returned (a note in read_off).
+std::size_t read_off_faces(const OffHeader& h, OffBody& body, Mesh& mesh, std::vector<float>& frgba, int& channels) {
   const std::string& name = body.name;
   Lines& lines = body.lines;
   reserve_bulk(mesh.face_start, h.nf + 1);
   reserve_bulk(mesh.corner_vertex, std::min<std::uint64_t>(3 * h.nf, lines.remaining()));
   bool any_face_color = false;
+  std::size_t kept = 0, short_faces = 0;
   const char *b, *e;
   for (std::uint64_t f = 0; f < h.nf; ++f) {
     if (!lines.next(b, e))
       fail(name, lines.line(), "file ends after " + std::to_string(f) + " of " + std::to_string(h.nf) + " faces");
     const char* p = b;
     std::int64_t k;
-    if (!parse_int64(p, e, k) || (p < e && !is_space(*p)))
+    if (!parse_int64(p, e, k) || (p < e && !is_space(*p)) || k < 0)
       fail(name, lines.line(), "malformed face size '" + token_at(b, e) + "'");
-    if (k < 3)
-      fail(name, lines.line(), "face has " + std::to_string(k) + (k == 1 ? " vertex" : " vertices") +
-                                   " (a face needs at least 3)");
     if (std::uint64_t(k) > std::uint64_t(e - p)) fail(name, lines.line(), "face line has fewer indices than its size " + std::to_string(k));
+    const std::size_t first_corner = mesh.corner_vertex.size();
     for (std::int64_t i = 0; i < k; ++i) {
       const char* t = skip_spaces(p, e);
       std::int64_t idx;
@@ -222,20 +224,30 @@ void read_off_faces(const OffHeader& h, OffBody& body, Mesh& mesh, std::vector<f
     }
     if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 1)
       fail(name, lines.line(), "too many face corners (more than 2^32)");
-    mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
     float c[5] = {1, 1, 1, 1, 1};
+    const bool colors_float_before = body.colors_float, any_double_before = body.any_double;
     const int kc = body.color_values(p, e, c);
     if (kc != 0 && kc != 3 && kc != 4)
       fail(name, lines.line(), "face has " + std::to_string(kc) + " values after its indices, expected none or r g b [a]");
+    if (k < 3) {  // not a face: dropped with its colour (which then says nothing about the others)
+      mesh.corner_vertex.resize(first_corner);
+      body.colors_float = colors_float_before;
+      body.any_double = any_double_before;
+      ++short_faces;
+      continue;
+    }
+    mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
     if (kc > 0) {
-      if (!any_face_color) frgba.assign(4 * f, 1.0f);
+      if (!any_face_color) frgba.assign(4 * kept, 1.0f);
       any_face_color = true;
       if (kc == 4) channels = 4;
     }
     if (any_face_color) frgba.insert(frgba.end(), {c[0], c[1], c[2], kc == 4 ? c[3] : 1.0f});
+    ++kept;
   }
   if (lines.next(b, e))
     fail(name, lines.line(), "more data than the header declares ('" + token_at(b, e) + "' after the last face)");
+  return short_faces;
 }
 
 // Step 4, build: colours packed to 3 or 4 channels (four whose alpha is 1 everywhere, what the
@@ -270,7 +282,6 @@ void build_off_attributes(const OffHeader& h, const OffBody& body, const std::ve
 }  // namespace
 
 Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
-  (void)info;
   refuse_utf16(file_bytes, name);
   const LineEndings text(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
   Lines lines(text.lf());
@@ -281,8 +292,11 @@ Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& in
   std::vector<double> vtex;
   int channels = 3;
   read_off_vertices(header, body, mesh, vrgba, vtex, channels);
-  read_off_faces(header, body, mesh, frgba, channels);
+  const std::size_t short_faces = read_off_faces(header, body, mesh, frgba, channels);
   build_off_attributes(header, body, vrgba, frgba, vtex, channels, mesh);
+  if (short_faces > 0)
+    info.notes.push_back("skipped " + std::to_string(short_faces) + " of " + std::to_string(header.nf) +
+                         " face lines with fewer than 3 vertices (not a face), with their colours");
   return mesh;
 }
 

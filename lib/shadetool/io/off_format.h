@@ -3,7 +3,8 @@
 // Reading: an optional header keyword [ST][C][N]OFF (4OFF, nOFF and binary OFF are refused),
 // then `#V #F [#E]` (on the keyword's line or the next; a digit right after the keyword, `OFF8 6 12`,
 // starts the counts, as trimesh reads it: no variant's keyword ends in a digit), #V vertex lines `x y z [nx ny nz] [r g b [a]] [s t]` and #F face lines
-// `k i_1 ... i_k [r g b [a]]` (0-based indices, polygons kept). Colours written as integers are
+// `k i_1 ... i_k [r g b [a]]` (0-based indices, polygons kept; a line with k < 3 is not a face:
+// its indices are checked, then it is dropped with its colour, and a note counts such lines). Colours written as integers are
 // 0..255 and divided by 255; colours with a decimal point or exponent are taken as floats in [0,1].
 // Four components whose alpha is 1 everywhere read as rgb (Mesh::color_channels 3): the writer
 // gives rgb colours alpha 1.

@@ -4,7 +4,8 @@
 // float as is; also diffuse_red...), texture coordinates s t / u v / texture_u texture_v;
 // element `face` with list vertex_indices or vertex_index (any integer count and item types),
 // nx ny nz (face normals), red green blue [alpha] (face colours), list texcoord (per-corner
-// u v pairs, MeshLab's wedge texcoords). Any other element or property is skipped by its
+// u v pairs, MeshLab's wedge texcoords); a face of fewer than 3 vertices is skipped with its
+// properties (a note counts them). Any other element or property is skipped by its
 // declared type. Counts in the header are checked against the size of the body before anything
 // is allocated, so a header claiming 2^40 vertices fails at once.
 // Precision: Mesh::precision is Double if any kept vertex value (x y z, normals, texcoords) is

@@ -285,7 +285,10 @@ void read_vertex_element(const Element& e, const PlyLayout& layout, BodyReader& 
 }
 
 // The face element: index lists (fast path for binary triangles), face normals and colours, and
-// MeshLab's per-corner `texcoord` lists.
+// MeshLab's per-corner `texcoord` lists. An item whose index list has fewer than 3 entries is not a
+// face (Blender drops it, assimp makes it a line or point): its indices are still checked, then it
+// is dropped with every value of its other properties, so that the kept faces' properties stay
+// aligned with them (face f of the mesh is the f-th kept item); one note counts them.
 void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in, Mesh& mesh, const std::string& name,
                        ReadInfo& info) {
   const std::size_t n = std::size_t(e.count);
@@ -299,10 +302,12 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
   std::vector<double> corner_tex;
   std::size_t i = 0;
   if (!in.ascii()) i = read_binary_triangles_fast(e, in, layout.num_vertices(), mesh);
+  std::size_t f = i;  // the mesh face the current item becomes (items before it that were not faces skipped)
+  std::size_t short_items = 0;
   for (; i < n; ++i) {
     if (in.ascii()) in.skip_ascii_space();  // (begin_item's line mode skips the same)
     const std::size_t item_line = in.line();
-    bool have_wedge = false;
+    bool have_wedge = false, is_face = true;
     wedge.clear();
     for (const auto& prop : e.props) {
       if (prop.is_list) {
@@ -311,15 +316,18 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
         if (!in.ascii() && std::uint64_t(k) > in.remaining() / type_size(prop.type))
           in.error("file is truncated: it ends in " + element_item(e, i));
         if (prop.target == Target::Indices) {
-          if (k < 3)
-            fail(name, item_line, element_item(e, i) + " has " + std::to_string(k) +
-                                      (k == 1 ? " vertex" : " vertices") + " (a face needs at least 3)");
+          is_face = k >= 3;
+          const std::size_t first_corner = mesh.corner_vertex.size();
           for (std::int64_t j = 0; j < k; ++j) {
             const std::int64_t idx = in.integer(prop.type, "a face's vertex indices");
             if (idx < 0 || std::uint64_t(idx) >= layout.num_vertices())
               fail(name, in.line(), element_item(e, i) + ": vertex index " + std::to_string(idx) +
                                         " out of range (" + std::to_string(layout.num_vertices()) + " vertices)");
             mesh.corner_vertex.push_back(std::uint32_t(idx));
+          }
+          if (!is_face) {  // checked, not kept
+            mesh.corner_vertex.resize(first_corner);
+            continue;
           }
           if (mesh.corner_vertex.size() > std::numeric_limits<std::uint32_t>::max() - 1)
             in.error("too many face corners (more than 2^32)");
@@ -332,30 +340,51 @@ void read_face_element(const Element& e, const PlyLayout& layout, BodyReader& in
         }
         continue;
       }
+      // Scalars go to slot f; an item that turns out not to be a face leaves them there, and the
+      // next face overwrites them (the arrays are cut to the faces kept at the end).
       const double v = in.scalar(prop.type, "face data");
       switch (prop.target) {
         case Target::NX: case Target::NY: case Target::NZ:
-          if (layout.has_fnormals()) mesh.face_normals[3 * i + std::size_t(int(prop.target) - int(Target::NX))] = v;
+          if (layout.has_fnormals()) mesh.face_normals[3 * f + std::size_t(int(prop.target) - int(Target::NX))] = v;
           break;
         case Target::R: case Target::G: case Target::B: case Target::A:
           if (layout.has_fcolors())
-            mesh.face_colors[std::size_t(layout.channels()) * i + std::size_t(int(prop.target) - int(Target::R))] =
+            mesh.face_colors[std::size_t(layout.channels()) * f + std::size_t(int(prop.target) - int(Target::R))] =
                 float(v / color_divisor(prop.type));
           break;
-        case Target::Quality: mesh.face_quality[i] = float(v); break;
-        case Target::Extra: mesh.face_properties[std::size_t(prop.extra)].values[i] = v; break;
+        case Target::Quality: mesh.face_quality[f] = float(v); break;
+        case Target::Extra: mesh.face_properties[std::size_t(prop.extra)].values[f] = v; break;
         case Target::Skip: case Target::X: case Target::Y: case Target::Z: case Target::U: case Target::V:
         case Target::Indices: case Target::TexcoordList: break;  // not a face's scalar
       }
     }
     in.end_item(e);
+    if (!is_face) {
+      ++short_items;
+      // The slot is the next face's: back to the values an unwritten slot holds.
+      if (layout.has_fnormals()) std::fill_n(mesh.face_normals.begin() + std::ptrdiff_t(3 * f), 3, 0.0);
+      if (layout.has_fcolors())
+        std::fill_n(mesh.face_colors.begin() + std::ptrdiff_t(std::size_t(layout.channels()) * f), layout.channels(), 1.0f);
+      if (layout.fquality) mesh.face_quality[f] = 0.0f;
+      for (MeshProperty& p : mesh.face_properties) p.values[f] = 0.0;
+      continue;
+    }
     if (layout.face_texcoords) {
-      const std::size_t size = mesh.face_size(i);
+      const std::size_t size = mesh.face_size(f);
       if (!have_wedge || wedge.size() != 2 * size)
         fail(name, item_line, element_item(e, i) + ": texcoord list has " + std::to_string(wedge.size()) +
                                   " values, expected " + std::to_string(2 * size) + " (u v per corner)");
       corner_tex.insert(corner_tex.end(), wedge.begin(), wedge.end());
     }
+    ++f;
+  }
+  if (short_items > 0) {  // the per-face arrays cut to the faces kept
+    if (layout.has_fnormals()) mesh.face_normals.resize(3 * f);
+    if (layout.has_fcolors()) mesh.face_colors.resize(std::size_t(layout.channels()) * f);
+    if (layout.fquality) mesh.face_quality.resize(f);
+    for (MeshProperty& p : mesh.face_properties) p.values.resize(f);
+    info.notes.push_back("skipped " + std::to_string(short_items) + " of " + std::to_string(n) + " '" + e.name +
+                         "' elements with fewer than 3 vertex indices (not a face), with their properties");
   }
   if (layout.face_texcoords) {
     mesh.texcoords = std::move(corner_tex);

@@ -16,7 +16,11 @@
 //          that result kept if it reads, with one note per element naming how many lines held
 //          values past the header's properties and the first; else the token reading's error.
 //          The failed reading's notes are dropped. A file the token reading reads is unchanged.
-// Errors:  truncated or malformed data, indices out of range, faces with fewer than 3 corners,
+// Faces:   a face item whose index list has fewer than 3 entries (0, 1 or 2) is not a face (Blender
+//          drops it, assimp makes it a point or line): its indices are checked, then it is dropped
+//          with its other properties (colours, normals, quality, extras, texcoord list), the kept
+//          faces' values staying aligned; one note counts them.
+// Errors:  truncated or malformed data, indices out of range,
 //          data after the last element (`NAME:LINE: what` in ascii, `NAME: what` in binary); a
 //          result without faces while another element holds a vertex_indices list (faces this
 //          reader does not take).
