@@ -205,6 +205,26 @@ TEST_CASE("cmd transform: --scale -1,1,1 re-winds the faces in the file and says
   CHECK(lines_starting(slurp(dir / "m.obj"), "vn ")[2] == "vn 0.6 0 0.8");
 }
 
+TEST_CASE("cmd transform: a mirror of a point cloud (no faces) says nothing about winding; with faces it does",
+          "[cmd_transform]") {
+  // The same vertices as points only (a PLY with no face element, as scanners write) and with one
+  // face: only the second has a face whose winding the mirror reverses.
+  TempDir dir;
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string verts = "1 0 0\n0 1 0\n0 0 1\n";
+  spit(dir / "points.ply", head + "end_header\n" + verts);
+  spit(dir / "face.ply", head + "element face 1\nproperty list uchar int vertex_indices\nend_header\n" + verts + "3 0 1 2\n");
+  const Run points = run("transform '" + dir / "points.ply" + "' -o '" + dir / "p.ply" + "' --scale -1,1,1 --stats --ascii");
+  REQUIRE(points.code == 0);
+  CHECK(points.err.find("mirror=true") != std::string::npos);  // the map is still a mirror
+  CHECK(points.err.find("winding") == std::string::npos);
+  CHECK(slurp(dir / "p.ply").find("-1 0 0\n0 1 0\n0 0 1\n") != std::string::npos);
+  const Run face = run("transform '" + dir / "face.ply" + "' -o '" + dir / "f.ply" + "' --scale -1,1,1 --stats --ascii");
+  REQUIRE(face.code == 0);
+  CHECK(face.err.find("det(A) < 0 (a mirror): face winding reversed so that faces keep their orientation") != std::string::npos);
+  CHECK(slurp(dir / "f.ply").find("\n3 0 2 1\n") != std::string::npos);
+}
+
 TEST_CASE("cmd transform: malformed numbers are usage errors with a clear line and no output", "[cmd_transform]") {
   TempDir dir;
   spit(dir / "tri.obj", kTriangleObj);

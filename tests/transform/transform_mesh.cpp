@@ -196,6 +196,20 @@ TEST_CASE("transform_mesh: mirror --scale -1,1,1 reverses winding, keeps volume 
   }
 }
 
+TEST_CASE("transform_mesh: a mirror of a mesh without faces reports no winding reversed (nothing to re-wind)",
+          "[transform_mesh]") {
+  Mesh points;
+  points.positions = {1, 2, 3, -4, 5, 6};
+  points.vertex_normals = {0, 0, 1, 1, 0, 0};
+  const TransformReport r = transform_mesh(points, scale_map({-1, 1, 1}));
+  CHECK(r.affine.mirror);
+  CHECK_FALSE(r.winding_reversed);
+  CHECK(points.num_faces() == 0);
+  CHECK(points.positions == std::vector<double>{-1, 2, 3, 4, 5, 6});
+  // Normals of a mirror: sign(det) cof(A) n = (-n_x, n_y, n_z) for diag(-1, 1, 1).
+  CHECK(points.vertex_normals == std::vector<double>{0, 0, 1, -1, 0, 0});
+}
+
 TEST_CASE("transform_mesh: a general mirror (--scale -2,1,3) keeps volume sign and outward normals",
           "[transform_mesh]") {
   AnalyticMesh ico = testing::icosphere(3);

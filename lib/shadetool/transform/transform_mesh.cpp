@@ -165,7 +165,7 @@ TransformReport transform_mesh(Mesh& mesh, const Affine3d& M, const TransformOpt
 
   if (c.mirror) {
     reverse_winding(mesh);
-    report.winding_reversed = true;
+    report.winding_reversed = mesh.num_faces() > 0;  // a point cloud has nothing to re-wind
   }
 
   if (options.normals == NormalsPolicy::Recompute && had_normals) {

@@ -58,7 +58,8 @@ struct TransformOptions {
 
 struct TransformReport {
   AffineClass affine;                 // path, mirror, det, relative_det
-  bool winding_reversed = false;
+  bool winding_reversed = false;      // det A < 0 and the mesh has faces: every face re-wound
+                                      // (false for a mesh without faces: nothing was reversed)
   const char* normals = "none";       // "none" (the mesh had none), "untouched", "transformed",
                                       // "recomputed", "dropped"
   std::size_t normals_mapped = 0;     // normal vectors multiplied (vertex + corner pool + face)
