@@ -305,6 +305,56 @@ def head(f):
   return len(j["accessors"]),len(j["bufferViews"]),j["buffers"][0]["byteLength"]
 a,b=head(sys.argv[1]),head(sys.argv[2]); assert a==b, (a,b)' "$tmp/p1.glb" "$tmp/p3.glb"
 
+# An extension shadetool does not know prunes nothing only when it could name an index: one that
+# holds no number (FB_ngon_encoding's empty object on a primitive, as Blender and assimp write it;
+# an extension listed with no object, as assimp's KHR_technique_webgl files) cannot, and the
+# replaced NORMAL accessor is removed as without it (the validator's UNUSED_OBJECT on
+# xcorpus2's quad_skin.glb and techniqueWebGL BoxTextured.gltf outputs, not on the inputs). One
+# that holds a number still keeps everything, with a note.
+ngon='
+d["extensionsUsed"] = d.get("extensionsUsed", []) + ["FB_ngon_encoding", "KHR_technique_webgl"]
+for m in d["meshes"]:
+    for p in m["primitives"]: p.setdefault("extensions", {})["FB_ngon_encoding"] = {}
+'
+derive "$fx/rich.gltf" "$tmp/ngon.gltf" "$ngon"
+derive "$fx/rich.gltf" "$tmp/xref.gltf" "$ngon"'
+d["extensionsUsed"].append("X_unknown_ref")
+d["meshes"][0]["primitives"][0]["extensions"]["X_unknown_ref"] = {"accessor": 0}'
+all_referenced() {  # every accessor of FILE named by a primitive, skin or animation (gltf_check's reading)
+  "$py" -c '
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+j, _ = gltf_check.load(sys.argv[1]); used = set()
+for m in j["meshes"]:
+    for p in m["primitives"]:
+        used |= set(p["attributes"].values()) | ({p["indices"]} if "indices" in p else set())
+        for t in p.get("targets", []): used |= set(t.values())
+for s in j.get("skins", []): used |= {s["inverseBindMatrices"]} if "inverseBindMatrices" in s else set()
+for a in j.get("animations", []):
+    for s in a["samplers"]: used |= {s["input"], s["output"]}
+assert used == set(range(len(j["accessors"]))), ("unreferenced", sorted(set(range(len(j["accessors"]))) - used))' "$1" "$src/tests/gltf"
+}
+check "number-free extensions: the input's accessors are all referenced" all_referenced "$tmp/ngon.gltf"
+for out in ngon.glb ngon_out.gltf; do
+  "$bin" normals "$tmp/ngon.gltf" -o "$tmp/$out" --recompute 2> "$tmp/ngon.err"
+  check "number-free extensions -> $out: exit 0" test $? -eq 0
+  check "number-free extensions -> $out: the replaced NORMAL removed (every accessor referenced)" all_referenced "$tmp/$out"
+  check "number-free extensions -> $out: no 'may refer to them' note" bash -c "! grep -q 'may refer to them' '$tmp/ngon.err'"
+  check "number-free extensions -> $out: the extensions kept" "$py" -c '
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+j, _ = gltf_check.load(sys.argv[1])
+assert {"FB_ngon_encoding", "KHR_technique_webgl"} <= set(j["extensionsUsed"]), j["extensionsUsed"]
+assert all(p["extensions"]["FB_ngon_encoding"] == {} for m in j["meshes"] for p in m["primitives"])' "$tmp/$out" "$src/tests/gltf"
+  check "number-free extensions -> $out: valid" valid "$tmp/$out"
+  if [ -n "$validate" ]; then
+    valid "$tmp/ngon.gltf"; unused_in=$(grep -c UNUSED_OBJECT "$tmp/validator.txt")
+    valid "$tmp/$out"
+    check "number-free extensions -> $out: no more UNUSED_OBJECT than the input ($unused_in)" test "$(grep -c UNUSED_OBJECT "$tmp/validator.txt")" -le "$unused_in"
+  fi
+done
+"$bin" normals "$tmp/xref.gltf" -o "$tmp/xref.glb" --recompute 2> "$tmp/xref.err"
+check "an unknown extension holding a number: exit 0" test $? -eq 0
+check "an unknown extension holding a number: nothing pruned, a note names it" grep -q "kept: extension X_unknown_ref may refer to them" "$tmp/xref.err"
+
 # Compressed glTF (issue 28, 5): Draco and meshopt files made by the libraries' own encoders
 # (tests/gltf/compressed_fixtures.h, built as gltf_compressed_fixtures beside the binary) and the
 # same mesh uncompressed. Every command reads them; glTF outputs are uncompressed, valid, with a

@@ -96,6 +96,32 @@ void for_each_accessor_view_ref(json& accessor, F f) {
         f(accessor["sparse"][part]["bufferView"]);
 }
 
+// Whether extension `name` holds a number anywhere in the document: an extension's data is the
+// value of its name in an `extensions` object (glTF 2.0 3.12), and an index is a number there. One
+// that is listed in extensionsUsed but holds none (FB_ngon_encoding's empty objects; an extension
+// named without any object, as assimp's KHR_technique_webgl files have) cannot name an accessor
+// or a bufferView.
+bool holds_number(const json& v) {
+  if (v.is_number()) return true;
+  if (v.is_object() || v.is_array())
+    for (const json& x : v)
+      if (holds_number(x)) return true;
+  return false;
+}
+
+bool extension_holds_number(const json& v, const std::string& name) {
+  if (v.is_object()) {
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      if (it.key() == "extensions" && it->is_object() && it->contains(name) && holds_number((*it)[name])) return true;
+      if (extension_holds_number(*it, name)) return true;
+    }
+  } else if (v.is_array()) {
+    for (const json& x : v)
+      if (extension_holds_number(x, name)) return true;
+  }
+  return false;
+}
+
 std::vector<long> remap_of(const std::vector<bool>& used) {
   std::vector<long> to(used.size(), -1);
   long next = 0;
@@ -125,10 +151,11 @@ std::size_t prune_unreferenced(json& j, std::string& bytes, std::vector<std::str
   const std::size_t dead_views = std::size_t(std::count(view_used.begin(), view_used.end(), false));
   if (dead_accessors == 0 && dead_views == 0 && !compact) return 0;
 
-  // An extension this pass does not know may refer to what looks unreferenced: keep everything.
+  // An extension this pass does not know may refer to what looks unreferenced: keep everything,
+  // unless it holds no number anywhere (then it names no index).
   if (j.contains("extensionsUsed") && j["extensionsUsed"].is_array())
     for (const json& e : j["extensionsUsed"])
-      if (e.is_string() && !kNoAccessorReferences.count(e.get<std::string>())) {
+      if (e.is_string() && !kNoAccessorReferences.count(e.get<std::string>()) && extension_holds_number(j, e.get<std::string>())) {
         notes.push_back(std::to_string(dead_accessors) + " accessors and " + std::to_string(dead_views) +
                         " bufferViews no property refers to are kept: extension " + e.get<std::string>() +
                         " may refer to them");

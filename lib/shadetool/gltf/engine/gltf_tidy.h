@@ -8,7 +8,9 @@
 // 3.6.2.4). Every index is remapped: primitives' attributes, indices and targets, skins'
 // inverseBindMatrices, animation samplers, accessors' bufferView and sparse views, images'
 // bufferView, EXT_mesh_gpu_instancing's attributes. An extension it does not know (in
-// extensionsUsed) could hold such an index: then nothing is pruned and a note says so. Nothing
+// extensionsUsed) could hold such an index: then nothing is pruned and a note says so; unless the
+// extension holds no number in any of its `extensions` objects (FB_ngon_encoding's are empty; an
+// extension may be listed with no object at all): with no number it names no index. Nothing
 // unreferenced and no `compact`: nothing changes (bytes identical); `compact` rebuilds the buffer
 // from the views all the same (bytes no view holds: a decoded file's compressed data).
 //
