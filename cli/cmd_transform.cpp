@@ -208,6 +208,7 @@ RegisterCommand reg("transform", HelpSection::Edit, [](CLI::App& app) -> std::fu
             shadetool::transform_gltf_extras(*r.gltf, M, file_options.normals == shadetool::NormalsPolicy::Drop);
         if (!r.gltf->tangents.empty()) r.stats["tangents"] = g.tangents;
         if (g.tangents_left > 0) r.notes.push_back(std::to_string(g.tangents_left) + " tangents are zero or not finite: left as read");
+        if (g.tangents_dropped) r.notes.push_back("TANGENT removed with NORMAL (--normals drop): readers ignore tangents without normals");
         if (!r.gltf->targets.empty()) r.stats["morph_deltas"] = g.target_deltas;
       }
       const shadetool::TransformReport rep = shadetool::transform_mesh(mesh, M, file_options, input);

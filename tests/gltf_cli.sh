@@ -656,6 +656,28 @@ j, _ = gltf_check.load(sys.argv[1])
 p = j["meshes"][0]["primitives"][0]
 assert "TANGENT" not in p["attributes"] and all("TANGENT" not in t for t in p["targets"]), p' "$tmp/morph_tangent.glb" "$src/tests/gltf"
 
+# transform --normals drop: TANGENT goes with NORMAL, deltas included (a TANGENT without NORMAL is
+# ignored by readers, glTF 2.0 3.7.2.1, and the validator warns MESH_PRIMITIVE_TANGENT_WITHOUT_NORMAL:
+# what the writer added on xcorpus' cubevc.glb, TestScene.gltf and the AnimatedMorph files).
+for in in rich.gltf morph_tangent.gltf; do
+  [ "$in" = rich.gltf ] && f=$fx/$in || f=$tmp/$in
+  "$bin" transform "$f" -o "$tmp/drop_$in.glb" --scale 2 --normals drop 2> "$tmp/err.txt"
+  check "--normals drop $in: exit 0" test $? -eq 0
+  check "--normals drop $in: a note says TANGENT removed with NORMAL" grep -q "TANGENT removed with NORMAL" "$tmp/err.txt"
+  check "--normals drop $in: no TANGENT or NORMAL left, in the primitive or its targets" "$py" -c '
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+j, _ = gltf_check.load(sys.argv[1])
+for m in j["meshes"]:
+    for p in m["primitives"]:
+        for a in [p["attributes"]] + p.get("targets", []):
+            assert "TANGENT" not in a and "NORMAL" not in a, p' "$tmp/drop_$in.glb" "$src/tests/gltf"
+  check "--normals drop $in: valid" valid "$tmp/drop_$in.glb"
+  if [ -n "$validate" ]; then
+    check "--normals drop $in: no MESH_PRIMITIVE_TANGENT_WITHOUT_NORMAL" bash -c "! grep -q TANGENT_WITHOUT_NORMAL '$tmp/validator.txt'"
+  fi
+  check "--normals drop $in: everything else kept" gcheck keep "$f" "$tmp/drop_$in.glb" --changed NORMAL,POSITION,TANGENT
+done
+
 # Normals off unit length (Khronos' BoxBadNormals: NORMAL of length 0.1) through a command that
 # writes NORMAL anew: written divided by their length, as every writer does (core/unit_normals.h),
 # one note; a glTF whose NORMAL is not unit fails the validator (ACCESSOR_VECTOR3_NON_UNIT).

@@ -1,6 +1,8 @@
 // gltf_transform.cpp: tangents and morph deltas under an affine map (see gltf_transform.h).
 #include <shadetool/gltf/gltf_transform.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include <shadetool/transform/classify_affine.h>
@@ -22,8 +24,18 @@ GltfTransformReport transform_gltf_extras(GltfPrimitive& p, const Affine3d& M, b
   const bool singular = cls.path == TransformPath::Singular;
   const bool mirror = determinant(M.A) < 0;
 
+  // NORMAL dropped: TANGENT goes with it (a reader ignores tangents without normals, glTF 2.0
+  // 3.7.2.1, and the validator warns MESH_PRIMITIVE_TANGENT_WITHOUT_NORMAL); the writer removes its
+  // morph deltas with it.
+  const bool had_tangent = std::find(p.attributes.begin(), p.attributes.end(), "TANGENT") != p.attributes.end();
+  if (drop_normals && had_tangent && !p.mesh.vertex_normals.empty()) {
+    p.drop_tangents = true;
+    p.corner_tangents.clear();
+    rep.tangents_dropped = true;
+  }
+
   const bool linear_identity = cls.path == TransformPath::Identity || cls.path == TransformPath::Translation;
-  for (std::size_t i = 0; i + 3 < p.tangents.size() && !linear_identity; i += 4) {
+  for (std::size_t i = 0; i + 3 < p.tangents.size() && !linear_identity && !p.drop_tangents; i += 4) {
     double* t = &p.tangents[i];
     const Vec3d mapped = transform_vector(M, {t[0], t[1], t[2]});
     const double len = length(mapped);

@@ -5,7 +5,9 @@
 //                     #V by 3; primitive.mesh.vertex_normals #V by 3 = the base normals BEFORE the
 //                     map (call this before transform_mesh)
 //          M          the map p -> A p + t (t does not act on tangents or deltas: they are vectors)
-//          drop_normals  the command drops normals: NORMAL deltas are dropped too
+//          drop_normals  the command drops normals: NORMAL deltas are dropped too, and a TANGENT
+//                        beside a NORMAL is removed with it (drop_tangents; glTF 2.0 3.7.2.1: a
+//                        reader ignores tangents without normals)
 // Output:  primitive, in place. Formulas (the functions of lib/transform, not copies):
 //   TANGENT xyz   t' = A t (transform_vector), renormalised (length checked; a zero or non-finite
 //                 tangent is left as read); w' = -w when det A < 0 (a mirror swaps handedness:
@@ -41,6 +43,7 @@ struct GltfTransformReport {
   std::size_t tangents = 0;        // tangents mapped
   std::size_t tangents_left = 0;   // zero or non-finite tangents left as read
   std::size_t target_deltas = 0;   // delta vectors mapped
+  bool tangents_dropped = false;   // TANGENT removed with NORMAL (drop_normals)
 };
 
 GltfTransformReport transform_gltf_extras(GltfPrimitive& primitive, const Affine3d& M, bool drop_normals);
