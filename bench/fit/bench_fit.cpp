@@ -24,6 +24,8 @@
 // FIT_THREADS=N in the environment: at most N threads (1: no thread pool spin in the CPU times).
 // FIT_MALLOC_KEEP=1: freed memory kept by the allocator (no page faults of first touch after the
 // first repetition).
+//        bench_fit solve SRC_DIR SAMPLES N [1m|99k]   (least_squares_fit alone; FIT_VECTORS=double: CG's
+//                  vectors in double, as the HDR path stores them)
 //        bench_fit picture SRC_DIR OUT.png   (point Gouraud | least-squares Gouraud | Phong, coarse)
 #include <algorithm>
 #include <cmath>
@@ -519,9 +521,11 @@ int main(int argc, char** argv) {
     std::printf("elements %.3f ms, quadrature %.3f ms\n", median(t_el), median(t_q));
     return 0;
   }
-  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N [1m]: least_squares_fit alone, N times (10k (1M) torus, studio)
-    const bool million = argc > 5 && std::string(argv[5]) == "1m";
-    const Mesh mesh = million ? testing::torus(1000, 500, 1.0, 0.4).mesh : testing::torus(100, 50, 1.0, 0.4).mesh;
+  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N [1m|99k]: least_squares_fit alone, N times (10k (1M, 99k) torus, studio)
+    const std::string size = argc > 5 ? argv[5] : "";
+    const Mesh mesh = size == "1m"    ? testing::torus(1000, 500, 1.0, 0.4).mesh
+                      : size == "99k" ? testing::torus(316, 158, 1.0, 0.4).mesh
+                                      : testing::torus(100, 50, 1.0, 0.4).mesh;
     const Scene scene = read_scene(src + "/data/scenes/studio.json");
     const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
     const std::vector<double> world = world_positions(mesh, scene);
@@ -531,14 +535,18 @@ int main(int argc, char** argv) {
     LeastSquaresFitOptions o;
     o.upper = 1;
     o.accuracy = kEightBitFitAccuracy;
+    const char* vectors = std::getenv("FIT_VECTORS");  // "double": FitVectorStorage::Double (the HDR path's storage)
+    if (vectors && std::string(vectors) == "double") o.vectors = FitVectorStorage::Double;
     std::vector<double> t;
-    int iterations = 0;
+    LeastSquaresFit last;
     for (int k = 0; k < std::atoi(argv[4]); ++k) {
       const double t0 = cpu_ms();
-      iterations = least_squares_fit(e, world, q, f, point.rgb, 3, o).iterations;
+      last = least_squares_fit(e, world, q, f, point.rgb, 3, o);
       t.push_back(cpu_ms() - t0);
     }
-    std::printf("least_squares_fit %.3f ms (median of %zu, process CPU), %d CG iterations\n", median(t), t.size(), iterations);
+    std::printf("least_squares_fit %.3f ms (median of %zu, process CPU), %d CG iterations, vectors %s%s, residual %.3g\n",
+                median(t), t.size(), last.iterations, last.float_vectors ? "float" : "double",
+                last.double_finish ? " (finished in double)" : "", last.residual);
     return 0;
   }
   if (mode == "once" && argc > 6) {  // bench_fit once SRC U V SCENE SAMPLES: one bake in this process (fresh)

@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
-"""compare_fit.py REF_BIN NEW_BIN [SRC]: `bake-lighting --fit least-squares` (studio and window,
---fit-samples 1 and 3) and `occlusion --fit least-squares` (--samples 8, --fit-samples 1 and 3) over
+"""compare_fit.py REF_BIN NEW_BIN [SRC [MESH...]]: `bake-lighting --fit least-squares` (studio and window,
+--fit-samples 1 and 3; 8-bit, and --hdr: float colours, the double solve) and `occlusion --fit least-squares` (--samples 8, --fit-samples 1 and 3) over
 SRC/data and the real-file corpus (/work/shared/corpus) with both binaries, ASCII PLY out; prints
 per run the largest difference of any colour byte (and of any other number), how many numbers
 differ, and the --json stats keys of the fit whose values differ; NEW_BIN is run again without
 --json, and its output must be the same bytes (the fit must not depend on whether its stats are
 shown). Summary: runs and numbers that differ, per run kind the largest difference and the CG
-iterations (fit_cg_iterations) of REF and NEW: how many runs fewer / equal / more. Exit 0."""
+iterations (fit_cg_iterations) of REF and NEW: how many runs fewer / equal / more. MESH...: more
+files to run (e.g. a 1M-triangle torus from shadetool_bench_generate, where the 8-bit solve stores
+its vectors in float). Exit 0."""
 import glob, json, os, subprocess, sys, tempfile
 
 ref, new = sys.argv[1], sys.argv[2]
@@ -14,12 +16,14 @@ src = sys.argv[3] if len(sys.argv) > 3 else os.path.join(os.path.dirname(__file_
 files = sorted(glob.glob(f"{src}/data/*.obj") + glob.glob(f"{src}/data/*.ply") + glob.glob(f"{src}/data/*.off") +
                glob.glob(f"{src}/data/*.stl") + glob.glob("/work/shared/corpus/*/*/*.obj") +
                glob.glob("/work/shared/corpus/*/*/*.ply") + glob.glob("/work/shared/corpus/*/*/*.off") +
-               glob.glob("/work/shared/corpus/*/*/*.stl") + glob.glob("/work/shared/corpus/*/*/*.STL"))
+               glob.glob("/work/shared/corpus/*/*/*.stl") + glob.glob("/work/shared/corpus/*/*/*.STL")) + sys.argv[4:]
 runs = []
 for scene in ("studio", "window"):
     for n in (1, 3):
         runs.append((f"bake-{scene}-{n}", ["bake-lighting", "--scene", f"{src}/data/scenes/{scene}.json",
                                            "--fit", "least-squares", "--fit-samples", str(n)]))
+        runs.append((f"bake-{scene}-{n}-hdr", ["bake-lighting", "--scene", f"{src}/data/scenes/{scene}.json",
+                                               "--fit", "least-squares", "--fit-samples", str(n), "--hdr"]))
 for n in (1, 3):
     runs.append((f"occ-{n}", ["occlusion", "--samples", "8", "--fit", "least-squares", "--fit-samples", str(n)]))
 

@@ -66,8 +66,31 @@
 // accumulators (no pass over the nodes). Both are the same sums as the per-point and per-node
 // ones in another order: the colours move by rounding only, far inside the stop's accuracy
 // (bench/fit/results.md: over data/ and the corpus against the per-point sums).
-// Precision: double throughout; the assembly is sequential in element order and the solve single
-// threaded, so the result is the same bits for any thread count.
+// Precision: b is assembled in double, sequentially in element order, and the solve is single
+// threaded, so the result is the same bits for any thread count. CG's vectors are double, except
+// on the 8-bit path (accuracy a > 0, 3 channels; options.vectors Float, or FloatAboveCache, the
+// default, on meshes whose vectors do not stay in cache): there x, r and p are stored in float (16
+// bytes a node for 4 lanes instead of 32; Ap stays double: the operator's scatter adds into it
+// node by node, and a float store there lengthens every update's chain, measured slower), every
+// value loaded into double, every operation, sum and dot product done in double, only the store
+// rounded (relative 2^-24, about 6e-8: a float x is within 6e-8 |c| of the double one, some 16000
+// times inside a = 1/1020 for c in [0, 1]). Sums stay in double because the stop's
+// sum_i r_i^2 / M_ii adds #nodes terms: in float its rounding would grow with the count. What
+// float storage breaks is the proof above, which needs the true residual b - A c: the recursive
+// residual r (r -= alpha Ap, stored in float; x rounded at each step) drifts from it by rounding of
+// order 2^-24 |A| |x| summed over the steps. So the float recursion stops at 0.8 of the bound, and
+// the true residual t = b - A c of the float c is then computed in double (one operator pass, in
+// place in b, which is read no more) and tested against the full bound: the proof holds for t as
+// computed, whatever the drift (t's own rounding in double, about 2^-53 of |b|, is ignored as the
+// double path ignores its own). A channel whose t is not within the bound (the drift took more
+// than the margin, or the bound asks for more than a float c can resolve:
+// |D^-1/2 A (c - fl(c))| grows as sqrt(#nodes) while the bound does not) is finished in double: CG
+// on A e = t from e's lumped-mass guess, c + e (LeastSquaresFit::double_finish). The float c
+// itself is as good as a double one: Wathen's bound keeps the condition number of the
+// Jacobi-preconditioned M within 4 for any mesh, so rounding the vectors perturbs c by about 1e-7
+// of |c|; the sqrt(#nodes) is the 2-norm bound's, not the solution's. The double path (HDR,
+// accuracy 0, other widths, FitVectorStorage::Double) is unchanged: its bits are those of the
+// release before the float path.
 #pragma once
 
 #include <cstddef>
@@ -221,6 +244,14 @@ std::vector<double> site_values_at_points(const FitQuadrature& q, const std::vec
 std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::vector<double>& node_values,
                                             std::size_t width);
 
+// How CG stores its vectors x, r, p and Ap (header, Precision).
+enum class FitVectorStorage {
+  Double,           // always double: the HDR path's, and the bits of each channel solved alone
+  Float,            // float when the solve has an accuracy (8-bit output) and 3 channels; else double
+  FloatAboveCache,  // Float once the double vectors would not stay in cache (above 32 MiB: at 1M
+                    // triangles, not at 100k), where halving their bytes pays; else double
+};
+
 struct LeastSquaresFitOptions {
   double regularization = 0;  // lambda (dimensionless; 0: the plain least-squares solution, the
                              // least error; bench/fit/results.md: R costs 5x the solve's time)
@@ -229,6 +260,7 @@ struct LeastSquaresFitOptions {
   int max_iterations = 0;        // 0: 2 * #nodes (Eigen's default)
   double lower = 0;                                        // clamp after the solve
   double upper = std::numeric_limits<double>::infinity();
+  FitVectorStorage vectors = FitVectorStorage::FloatAboveCache;
 };
 
 // A quarter of an 8-bit step: the accuracy an 8-bit output needs of the solve (see Solver above).
@@ -253,6 +285,8 @@ struct LeastSquaresFit {
   int iterations = 0;               // CG iterations, the most over the channels
   double residual = 0;              // relative residual reached, the largest over the channels
   bool converged = true;
+  bool float_vectors = false;       // CG's vectors were stored in float (Precision)
+  bool double_finish = false;       // ... and a channel's true residual was above the bound: finished in double
 };
 
 // The nodes that touch no face of positive area (no triangle of q, no quad with mass): they are no
