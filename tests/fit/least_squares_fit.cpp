@@ -581,11 +581,22 @@ TEST_CASE("A large mesh's sites (keys recomputed, not stored) are one per edge, 
   // midpoint of the edge of its two corners of weight 1/2. At 180k triangles (540k points, 8 bytes
   // a key: above assign_sites' 4 MiB) the keys are recomputed in the second pass instead of stored:
   // the sites must still be the edges, each with its two points, numbered in the order of their
-  // first point.
-  const Mesh mesh = shadetool::testing::torus(300, 300, 1.0, 0.4).mesh;
+  // first point. At 420k triangles (1.26M points, 4 bytes a site_point entry: above 4 MiB) the
+  // site list is appended to instead of sized: the same property. Both hand the search's spent
+  // entries over (FitScratch): 8 bytes a midpoint, and the sites those of a search without.
+  for (auto [nu, nv] : {std::pair<int, int>{300, 300}, {600, 350}}) {
+  const Mesh mesh = shadetool::testing::torus(nu, nv, 1.0, 0.4).mesh;
   const FitElements e = fit_elements(mesh);
-  const FitQuadrature q3 = fit_quadrature(e, mesh.positions, 3);
+  FitScratch spare;
+  const FitQuadrature q3 = fit_quadrature(e, mesh.positions, 3, &spare);
+  INFO(e.triangles << " triangles");
   REQUIRE(q3.size() * sizeof(std::uint64_t) >= (std::size_t(4) << 20));
+  CHECK(spare.size == 8 * q3.size());
+  CHECK(spare.bytes != nullptr);
+  const FitQuadrature without = fit_quadrature(e, mesh.positions, 3);
+  CHECK(without.site == q3.site);
+  CHECK(without.site_point == q3.site_point);
+  CHECK(without.site_edge == q3.site_edge);
   REQUIRE(q3.sites() == 3 * e.triangles / 2);
   REQUIRE(q3.site_edge.size() == 2 * q3.sites());
   std::vector<int> points_per_site(q3.sites(), 0);
@@ -609,6 +620,7 @@ TEST_CASE("A large mesh's sites (keys recomputed, not stored) are one per edge, 
   CHECK(out_of_order == 0);
   CHECK(wrong_edge == 0);
   CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
+  }
 }
 
 TEST_CASE("The quadrature's triangle areas are the scalar formula's bits, for ordinary, huge, tiny, flat and non-finite triangles",
@@ -998,4 +1010,40 @@ TEST_CASE("Vectors in float: f handed over or kept, the same bits; a mesh below 
     CHECK_FALSE(automatic.float_vectors);
     CHECK(automatic.values == twice.values);
   }
+}
+
+TEST_CASE("The quadrature's spent memory given to the solve (FitScratch): the same fit bits, double and float vectors",
+          "[fit][least_squares][float]") {
+  // The solve places b (and the float path's x) in the site search's spent entries when they hold
+  // them; where an array lives must change no value. Truth: the same solve without a scratch (every
+  // array allocated apart). Double and float vectors, f kept and handed over; the scratch is taken.
+  const Mesh torus = shadetool::testing::torus(24, 12, 1.0, 0.4, 0.1).mesh;
+  const FitElements e = fit_elements(torus);
+  FitScratch probe;
+  const FitQuadrature q = fit_quadrature(e, torus.positions, 3, &probe);
+  REQUIRE(probe.size >= torus.num_vertices() * 4 * (sizeof(double) + sizeof(float)));  // room for b and x
+  const std::vector<double> x = interpolate_vertex_data_at_sites(q, torus.positions, 3);
+  std::vector<double> f(3 * q.sites());
+  for (std::size_t s = 0; s < q.sites(); ++s)
+    for (std::size_t k = 0; k < 3; ++k) f[3 * s + k] = 0.5 + 0.4 * std::sin(3 * get3(x, s).x + double(k + 1) * get3(x, s).y);
+  const PointValuesAt none = [](const std::vector<std::uint32_t>&) { return std::vector<double>(); };
+  for (FitVectorStorage vectors : {FitVectorStorage::Double, FitVectorStorage::Float})
+    for (bool hand_over : {false, true}) {
+      LeastSquaresFitOptions o;
+      o.accuracy = kEightBitFitAccuracy;
+      o.upper = 1;
+      o.vectors = vectors;
+      const LeastSquaresFit apart = least_squares_fit(e, torus.positions, q, f, none, 3, o);
+      FitScratch spare;
+      fit_quadrature(e, torus.positions, 3, &spare);
+      o.scratch = &spare;
+      std::vector<double> handed = f;
+      const LeastSquaresFit placed = hand_over ? least_squares_fit(e, torus.positions, q, std::move(handed), none, 3, o)
+                                               : least_squares_fit(e, torus.positions, q, f, none, 3, o);
+      INFO("float " << (vectors == FitVectorStorage::Float) << ", f handed over " << hand_over);
+      CHECK(placed.float_vectors == (vectors == FitVectorStorage::Float));
+      CHECK(spare.size == 0);  // taken
+      CHECK(placed.iterations == apart.iterations);
+      CHECK(placed.values == apart.values);
+    }
 }

@@ -5,7 +5,9 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <cstddef>
 #include <memory>
+#include <new>
 #include <string>
 #include <type_traits>
 
@@ -169,7 +171,7 @@ bool midpoint_edge(const std::uint32_t* vertex, const double* phi, int corners, 
 // every triangle, so the rule is asked once; quads' points one by one. When no point is a midpoint
 // (the 1-, 6- and 12-point rules, quads' Gauss points) both stay empty: every point its own site.
 // V: the vertex count.
-void assign_sites(FitQuadrature& q, std::size_t V) {
+void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   const std::size_t S = q.size(), R = q.rule.size(), T = q.tri_area.size();
   q.site.clear();
   q.site_point.clear();
@@ -225,10 +227,23 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
   std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1);
   // not zero-filled: an entry is written before it is read (below end[lo]); at 1M triangles the
-  // fill was two passes over 12 MB each
-  const std::unique_ptr<std::uint32_t[]> entry_hi(new std::uint32_t[offset[V]]), entry_site(new std::uint32_t[offset[V]]);
+  // fill was two passes over 12 MB each. One block of bytes, the two arrays placed in it, handed
+  // to `spare` after (FitScratch).
+  const std::size_t entries = offset[V];
+  std::unique_ptr<std::byte[]> block(new std::byte[2 * entries * sizeof(std::uint32_t)]);
+  std::uint32_t* const entry_hi = ::new (static_cast<void*>(block.get())) std::uint32_t[entries];
+  std::uint32_t* const entry_site =
+      ::new (static_cast<void*>(block.get() + entries * sizeof(std::uint32_t))) std::uint32_t[entries];
   q.site.resize(S);
-  q.site_point.resize(S);
+  // site_point: of its S possible entries only `sites` are written (half of them on a closed mesh
+  // under the 3-point rule). Above 4 MiB it is reserved and appended to, so that the unwritten half
+  // is never faulted in (6 MB at 1M triangles); below, sized and indexed (the appends cost 13% of
+  // the 10k torus's quadrature: bench/fit/results.md, fit11). The same entries either way.
+  const bool append_sites = S * sizeof(std::uint32_t) >= (std::size_t(4) << 20);
+  if (append_sites)
+    q.site_point.reserve(S);
+  else
+    q.site_point.resize(S);
   std::size_t sites = 0;
   const auto place = [&](std::size_t p, std::uint64_t key) {
     if (key != kNone) {
@@ -245,7 +260,11 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
       ++end[lo];
     }
     q.site[p] = std::uint32_t(sites);
-    q.site_point[sites++] = std::uint32_t(p);
+    if (append_sites)
+      q.site_point.push_back(std::uint32_t(p));
+    else
+      q.site_point[sites] = std::uint32_t(p);
+    ++sites;
   };
   if (store_keys)
     for (std::size_t p = 0; p < S; ++p) place(p, stored[p]);
@@ -259,6 +278,10 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
         q.site_edge[2 * std::size_t(entry_site[k])] = std::uint32_t(v);
         q.site_edge[2 * std::size_t(entry_site[k]) + 1] = entry_hi[k];
       }
+  }
+  if (spare) {  // the entries are read no more
+    spare->bytes = std::move(block);
+    spare->size = 2 * entries * sizeof(std::uint32_t);
   }
 }
 
@@ -963,7 +986,8 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
   return e;
 }
 
-FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& positions, int samples) {
+FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& positions, int samples,
+                             FitScratch* spare) {
   if (!triangle_quadrature_supported(samples))
     throw Error("fit_quadrature: " + std::to_string(samples) + " points per triangle is not a rule (1, 3, 6 or 12)");
   FitQuadrature q;
@@ -1014,7 +1038,7 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
         q.quad_face.push_back(e.quad_face[k]);
       }
   }
-  assign_sites(q, positions.size() / 3);
+  assign_sites(q, positions.size() / 3, spare);
   return q;
 }
 
@@ -1142,31 +1166,32 @@ constexpr std::size_t kFloatVectorsAbove = std::size_t(32) << 20;
 // the system) and fit's counts (residual: the true one, relative to |b|).
 template <class FirstGuess>
 void solve_float_vectors(const FitOperator& A, const std::vector<double>& inverse_diagonal,
-                         const std::vector<std::uint32_t>& off_system, std::vector<double>& b,
+                         const std::vector<std::uint32_t>& off_system, double* b, float* x_given,
                          const BlockCgOptions& options, const FirstGuess& first_guess, double* spent,
                          std::size_t spent_size, LeastSquaresFit& fit) {
   const std::size_t N = inverse_diagonal.size(), n = 4 * N;
-  // Ap (double, n) first in the spent f, then p, r and x (float) in what is left of it
+  // Ap (double, n) first in the spent f, then p, r and x (float; x: x_given when non-null) in
+  // what is left of it
   const WorkVectors<double> wide(spent, spent_size, n, 1);
   const bool Ap_in_spent = spent && spent_size >= n;
-  const WorkVectors<float> v(Ap_in_spent ? spent + n : nullptr, Ap_in_spent ? spent_size - n : 0, n, 3);
+  const WorkVectors<float> v(Ap_in_spent ? spent + n : nullptr, Ap_in_spent ? spent_size - n : 0, n, x_given ? 2 : 3);
   double* const Ap = wide.at[0];
   float* const p = v.at[0];
   float* const r = v.at[1];
-  float* const x = v.at[2];
-  first_guess(b.data(), x);
+  float* const x = x_given ? x_given : v.at[2];
+  first_guess(b, x);
   BlockCgOptions cg = options;
   cg.accuracy_trigger = kFloatTrigger;
   std::array<double, 4> rhs2{};
   cg.rhs2_out = &rhs2;
   fit.float_vectors = true;
-  block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b.data(), r, cg, x, p, Ap, fit);
+  block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b, r, cg, x, p, Ap, fit);
   // The check: t = b - A x in double (x's float values exactly), sum t^2 and sum t^2 / M_ii per lane.
   double unused[4], t2[4], t_mass[4];
-  apply_operator<4, float, double, true>(A, x, b.data(), unused, true);
+  apply_operator<4, float, double, true>(A, x, b, unused, true);
   for (std::uint32_t i : off_system)
     for (std::size_t k = 0; k < 4; ++k) b[4 * std::size_t(i) + k] = 0;
-  lanes4_norms(b.data(), options.inverse_mass->data(), N, t2, t_mass);
+  lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass);
   std::array<bool, 4> proven{};
   bool all = true;
   double residual_proven = 0, t_relative_rest = 0;
@@ -1190,12 +1215,12 @@ void solve_float_vectors(const FitOperator& A, const std::vector<double>& invers
       if (proven[k])
         for (std::size_t i = 0; i < N; ++i) b[4 * i + k] = 0;  // nothing left to solve: e = 0
     correction.reset(new double[n]);
-    first_guess(b.data(), correction.get());
+    first_guess(b, correction.get());
     BlockCgOptions rest = options;
     rest.max_iterations = left;
     rest.rhs2_out = nullptr;
     LeastSquaresFit counts;
-    block_conjugate_gradient(A, inverse_diagonal, off_system, b.data(), 4, rest, correction.get(), nullptr, 0, counts);
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b, 4, rest, correction.get(), nullptr, 0, counts);
     fit.iterations += counts.iterations;
     fit.residual = std::max(residual_proven, counts.residual * t_relative_rest);  // counts' residual: relative to |t|
     fit.converged = counts.converged;
@@ -1247,13 +1272,30 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
     // it stops at once), for add_triangle_products_4; otherwise the channels. b for every channel in
     // one pass over the points, in double (Precision: b is the check's reference).
     const std::size_t L = width == 3 ? 4 : width;
-    std::vector<double> b(N * L, 0.0);
+    // b (and the float path's x: 4 bytes a lane) in the caller's spent memory when it holds them
+    // (LeastSquaresFitOptions::scratch), else allocated; zero-filled either way
+    std::unique_ptr<std::byte[]> held;
+    std::size_t held_size = 0;
+    if (options.scratch && options.scratch->size >= N * L * sizeof(double)) {
+      held = std::move(options.scratch->bytes);
+      held_size = options.scratch->size;
+      options.scratch->size = 0;
+    } else {
+      held.reset(new std::byte[N * L * sizeof(double)]);
+      held_size = N * L * sizeof(double);
+    }
+    double* const b = ::new (static_cast<void*>(held.get())) double[N * L];
+    std::fill(b, b + N * L, 0.0);
+    float* const x_in_held =  // the float path's x after b, when there is room
+        held_size >= N * L * (sizeof(double) + sizeof(float))
+            ? ::new (static_cast<void*>(held.get() + N * L * sizeof(double))) float[N * L]
+            : nullptr;
     const TriangleLoads loads = triangle_loads(q.rule);
     const double* const in_system = off_system.empty() ? nullptr : inverse_diagonal.data();
     if (L == 4)
-      add_triangle_loads_4(q, loads, f.data(), per_site, in_system, b.data());
+      add_triangle_loads_4(q, loads, f.data(), per_site, in_system, b);
     else
-      add_triangle_loads(q, loads, f.data(), width, L, per_site, in_system, b.data());
+      add_triangle_loads(q, loads, f.data(), width, L, per_site, in_system, b);
     for (std::size_t m = 0, s = q.triangle_points(); m < q.quad_weight.size(); ++m, ++s) {  // the quads' points
       const double* fs = &f[(per_site ? q.site_of(s) : s) * width];
       for (int j = 0; j < 4; ++j) {
@@ -1297,14 +1339,14 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
         break;
     }
     if (float_vectors) {
-      solve_float_vectors(A, inverse_diagonal, off_system, b, cg, first_guess, spent_data, spent_size, fit);
+      solve_float_vectors(A, inverse_diagonal, off_system, b, x_in_held, cg, first_guess, spent_data, spent_size, fit);
     } else {
       // the solution padded to L lanes (not value-initialised: the first guess writes it whole), or
       // fit.values itself
       const std::unique_ptr<double[]> padded(L != width ? new double[N * L] : nullptr);
       double* const x = L != width ? padded.get() : fit.values.data();
-      first_guess(b.data(), x);
-      block_conjugate_gradient(A, inverse_diagonal, off_system, b.data(), L, cg, x, spent_data, spent_size, fit);
+      first_guess(b, x);
+      block_conjugate_gradient(A, inverse_diagonal, off_system, b, L, cg, x, spent_data, spent_size, fit);
       if (L != width)
         for (std::size_t i = 0; i < N; ++i)
           for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];

@@ -97,6 +97,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
@@ -202,9 +203,22 @@ struct FitQuadrature {
       fn(p, &quad_node[4 * m], &quad_vertex[4 * m], &quad_phi[4 * m], 4, quad_weight[m]);
   }
 };
+// Memory one step of a fit has written and no longer needs, handed to the next step so that the
+// next step's arrays land on pages already faulted in (at 1M triangles every fresh MB costs about
+// 0.37 ms CPU in the kernel's page clearing and faults: bench/fit/results.md, fit10 and fit11).
+// Untyped bytes (not value-initialised): each user places its own arrays in them (placement new).
+// fit_quadrature leaves its site search's bucket entries here (8 bytes a midpoint: 24 MB at 1M
+// triangles and 3 points; none for rules without midpoints); least_squares_fit places b (and the
+// float path's x) in them when they are large enough (LeastSquaresFitOptions::scratch).
+struct FitScratch {
+  std::unique_ptr<std::byte[]> bytes;
+  std::size_t size = 0;  // bytes
+};
+
 // positions: #V by 3 (the space the area is measured in: world, for lighting). samples: 1, 3, 6, 12
-// (Error otherwise).
-FitQuadrature fit_quadrature(const FitElements& elements, const std::vector<double>& positions, int samples);
+// (Error otherwise). spare: non-null, receives the site search's spent memory (FitScratch).
+FitQuadrature fit_quadrature(const FitElements& elements, const std::vector<double>& positions, int samples,
+                             FitScratch* spare = nullptr);
 
 // Per-vertex data (#V by width) at the quadrature points (#points by width): sum phi_k data[vertex_k].
 std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& vertex_data,
@@ -261,6 +275,9 @@ struct LeastSquaresFitOptions {
   double lower = 0;                                        // clamp after the solve
   double upper = std::numeric_limits<double>::infinity();
   FitVectorStorage vectors = FitVectorStorage::FloatAboveCache;
+  // Spent memory the solve may use for b (and x): taken (the pointee is empty after); its
+  // placement changes no value. Null: allocated.
+  FitScratch* scratch = nullptr;
 };
 
 // A quarter of an 8-bit step: the accuracy an 8-bit output needs of the solve (see Solver above).
