@@ -208,8 +208,9 @@ struct FitQuadrature {
 // 0.37 ms CPU in the kernel's page clearing and faults: bench/fit/results.md, fit10 and fit11).
 // Untyped bytes (not value-initialised): each user places its own arrays in them (placement new).
 // fit_quadrature leaves its site search's bucket entries here (8 bytes a midpoint: 24 MB at 1M
-// triangles and 3 points; none for rules without midpoints); least_squares_fit places b (and the
-// float path's x) in them when they are large enough (LeastSquaresFitOptions::scratch).
+// triangles and 3 points) when they take 4 MiB or more (none for rules without midpoints);
+// least_squares_fit places b (and the float path's x) in them when they are large enough
+// (LeastSquaresFitOptions::scratch), and frees them otherwise.
 struct FitScratch {
   std::unique_ptr<std::byte[]> bytes;
   std::size_t size = 0;  // bytes
