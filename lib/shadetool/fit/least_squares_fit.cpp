@@ -376,14 +376,15 @@ inline void store1(T* p, double v) {
 // layout for 3 channels): one 4-wide operation per node where add_triangle_product<1> does one
 // scalar one per lane. Built for AVX2 and for the baseline (target_clones; no FMA): per lane the
 // operations of add_triangle_product, in the same order, so the same bits on either and the bits
-// of one channel solved alone (XT = YT = double). The triangles are taken from four quarters of the
+// of one channel solved alone (XT = double). The triangles are taken from four quarters of the
 // list in turn (apply_operator); xAx_out: 4 lanes, the four quarters' accumulators summed
-// (0 + 1) + (2 + 3). XT, YT: the storage of x and y (float on the 8-bit path: y rounded to float at
-// each update). Subtract: y -= M_t x instead (the true residual b - A x, made in place in b;
-// -(s t) is the bits of s t negated, so b - A x has the rounding of the y = A x pass).
-template <class XT, class YT, bool Subtract>
+// (0 + 1) + (2 + 3). XT: the storage of x (float on the 8-bit path); y is double (CG's Ap: a
+// float y would round at each node update, in the chain of updates, measured slower).
+// Subtract: y -= M_t x instead (the true residual b - A x, made in place in b; -(s t) is the bits
+// of s t negated, so b - A x has the rounding of the y = A x pass).
+template <class XT, bool Subtract>
 __attribute__((target_clones("avx2", "default")))
-void add_triangle_products_4(const FitOperator& A, const XT* x, YT* y, double* xAx_out) {
+void add_triangle_products_4(const FitOperator& A, const XT* x, double* y, double* xAx_out) {
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
   Lanes4 acc0 = {0, 0, 0, 0}, acc1 = acc0, acc2 = acc0, acc3 = acc0;
   const auto one = [&](std::size_t t, Lanes4& acc) __attribute__((always_inline)) {
@@ -421,28 +422,31 @@ void add_triangle_products_4(const FitOperator& A, const XT* x, YT* y, double* x
 
 // y = A x (Subtract: y -= A x) and xAx = x^T A x per lane (triangles' four accumulators, then the
 // quads', then the edges': the same order for W = 1 and 4). y_zeroed: y is 0 already (CG's
-// direction pass clears it). XT, YT: as add_triangle_products_4 (float only with W = 4).
-template <std::size_t W, class XT = double, class YT = double, bool Subtract = false>
-void apply_operator(const FitOperator& A, const XT* x, YT* y, double* xAx, bool y_zeroed) {
+// direction pass clears it). XT: as add_triangle_products_4 (float only with W = 4).
+template <std::size_t W, class XT = double, bool Subtract = false>
+void apply_operator(const FitOperator& A, const XT* x, double* y, double* xAx, bool y_zeroed) {
   constexpr std::size_t w = W;
-  static_assert(W == 4 || (std::is_same_v<XT, double> && std::is_same_v<YT, double> && !Subtract));
-  if (!y_zeroed)
-    for (std::size_t i = 0; i < A.diagonal.size() * w; ++i) store1(y + i, 0.0);
+  static_assert(W == 4 || (std::is_same_v<XT, double> && !Subtract));
+  if (!y_zeroed) std::fill(y, y + A.diagonal.size() * w, 0.0);
   // The triangles taken from four quarters of the list in turn: neighbouring triangles of a mesh
   // share nodes, so in list order each update of y waits for the store of the one before; four
   // far-apart chains overlap (bench/fit/results.md). A fixed order: the same bits on every run.
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
   if constexpr (W == 4) {
-    add_triangle_products_4<XT, YT, Subtract>(A, x, y, xAx);
+    add_triangle_products_4<XT, Subtract>(A, x, y, xAx);
   } else {
     double acc[4][W] = {};
     for (std::size_t i = 0; i < Q; ++i)
       for (std::size_t t = i, a = 0; t < T; t += Q, ++a) add_triangle_product<W>(A, t, x, y, acc[a]);
     for (std::size_t c = 0; c < w; ++c) xAx[c] = (acc[0][c] + acc[1][c]) + (acc[2][c] + acc[3][c]);
   }
-  const double sign = Subtract ? -1.0 : 1.0;  // exact: y + (-1 m) x is y - m x bit for bit
   const auto X = [&](std::size_t i) { return load1(x + i); };
-  const auto add_y = [&](std::size_t i, double v) { store1(y + i, load1(y + i) + sign * v); };
+  const auto add_y = [&](std::size_t i, double v) {
+    if constexpr (Subtract)
+      y[i] -= v;
+    else
+      y[i] += v;
+  };
   for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
     const std::uint32_t* n = &A.quad_node[4 * k];
     const double* m = &A.quad_mass[16 * k];
@@ -810,7 +814,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   // out = A in, and in^T A in per channel (summed over the elements; rows off the system: in is 0
   // there, and out is set to 0)
   const auto apply = [&](const T* in, double* out, double* inAin, bool out_zeroed) {
-    apply_operator<W, T, double>(A, in, out, inAin, out_zeroed);
+    apply_operator<W, T>(A, in, out, inAin, out_zeroed);
     for (std::uint32_t i : off_system)
       for (std::size_t k = 0; k < W; ++k) out[i * W + k] = 0;
   };
@@ -1191,7 +1195,7 @@ void solve_float_vectors(const FitOperator& A, const std::vector<double>& invers
   block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b, r, cg, x, p, Ap, fit);
   // The check: t = b - A x in double (x's float values exactly), sum t^2 and sum t^2 / M_ii per lane.
   double unused[4], t2[4], t_mass[4];
-  apply_operator<4, float, double, true>(A, x, b, unused, true);
+  apply_operator<4, float, true>(A, x, b, unused, true);
   for (std::uint32_t i : off_system)
     for (std::size_t k = 0; k < 4; ++k) b[4 * std::size_t(i) + k] = 0;
   lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass);
@@ -1320,7 +1324,14 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
       for (std::size_t i = 0; i < N; ++i) {  // all L lanes (a pad lane: b = 0, so 0), one vector division
         const double m = A.lumped_mass(i);
         const bool mass = inverse_diagonal[i] != 0 && m > 0;  // off the system (no mass): 0 during CG
-        for (std::size_t k = 0; k < L; ++k) store1(x + i * L + k, mass ? rhs[i * L + k] / m : 0.0);  // divisor checked
+        if (L == 4) {  // one 4-wide division and store (store4: rounded for float), per lane b_i / m
+          Lanes4 v;
+          std::memcpy(&v, rhs + 4 * i, sizeof v);
+          Lanes4 c = mass ? v / m : Lanes4{0, 0, 0, 0};  // divisor checked
+          store4(x + 4 * i, c);
+        } else {
+          for (std::size_t k = 0; k < L; ++k) store1(x + i * L + k, mass ? rhs[i * L + k] / m : 0.0);  // divisor checked
+        }
       }
     };
     BlockCgOptions cg;
