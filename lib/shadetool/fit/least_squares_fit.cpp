@@ -1170,12 +1170,14 @@ constexpr std::size_t kFloatVectorsAbove = std::size_t(32) << 20;
 // sum t_i^2 / M_ii is within the bound (or |t| within the tolerance of |b|). A channel that is not
 // (the recursion drifted, or the bound lies below what float x can resolve) is finished in double:
 // CG on A e = t from e's lumped-mass guess, c = x + e. Writes fit.values (#nodes by 3, the rows in
-// the system) and fit's counts (residual: the true one, relative to |b|).
+// the system; values_in_spent non-null: called first, it makes fit.values the spent f's vector)
+// and fit's counts (residual: the true one, relative to |b|).
 template <class FirstGuess>
 void solve_float_vectors(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                          const std::vector<std::uint32_t>& off_system, double* b, float* x_given,
                          const BlockCgOptions& options, const FirstGuess& first_guess, double* spent,
-                         std::size_t spent_size, LeastSquaresFit& fit) {
+                         std::size_t spent_size, const std::function<void()>& values_in_spent,
+                         LeastSquaresFit& fit) {
   const std::size_t N = inverse_diagonal.size(), n = 4 * N;
   // Ap (double, n) first in the spent f, then p, r and x (float; x: x_given when non-null) in
   // what is left of it
@@ -1232,6 +1234,9 @@ void solve_float_vectors(const FitOperator& A, const std::vector<double>& invers
     fit.residual = std::max(residual_proven, counts.residual * t_relative_rest);  // counts' residual: relative to |t|
     fit.converged = counts.converged;
   }
+  // fit.values into the spent f (values_in_spent non-null): its first 24 bytes a node are Ap's
+  // (double, placed first), dead now; x is never there (after Ap, p and r, or in the scratch)
+  if (values_in_spent) values_in_spent();
   for (std::size_t i = 0; i < N; ++i)  // c = x + e in double (the float values exactly, e's rounding 2^-53)
     for (std::size_t k = 0; k < 3; ++k)
       fit.values[3 * i + k] = load1(x + 4 * i + k) + (correction ? correction[4 * i + k] : 0.0);
@@ -1273,7 +1278,15 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
       ++fit.fallback_nodes;
     }
   }
-  fit.values.assign(N * width, 0.0);
+  // fit.values in the spent f's memory (3 channels: written after the solve from the padded x,
+  // while CG's vectors there are dead), so that the output faults in no fresh page (12 MB at 1M);
+  // else a vector of its own (zero-filled: the fallback nodes' rows are written after).
+  const bool values_in_spent = spent && width == 3 && off_system.size() < N && spent->size() >= N * width;
+  const auto take_spent_for_values = [&] {  // after the solve; the vector keeps its capacity
+    fit.values = std::move(*spent);
+    fit.values.resize(N * width);
+  };
+  if (!values_in_spent) fit.values.assign(N * width, 0.0);
   if (off_system.size() < N) {
     // b with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its solution is 0 and
     // it stops at once), for add_triangle_products_4; otherwise the channels. b for every channel in
@@ -1357,7 +1370,8 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
         break;
     }
     if (float_vectors) {
-      solve_float_vectors(A, inverse_diagonal, off_system, b, x_in_held, cg, first_guess, spent_data, spent_size, fit);
+      solve_float_vectors(A, inverse_diagonal, off_system, b, x_in_held, cg, first_guess, spent_data, spent_size,
+                          values_in_spent ? std::function<void()>(take_spent_for_values) : nullptr, fit);
     } else {
       // the solution padded to L lanes (not value-initialised: the first guess writes it whole), or
       // fit.values itself
@@ -1365,6 +1379,7 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
       double* const x = L != width ? padded.get() : fit.values.data();
       first_guess(b, x);
       block_conjugate_gradient(A, inverse_diagonal, off_system, b, L, cg, x, spent_data, spent_size, fit);
+      if (values_in_spent) take_spent_for_values();  // p and Ap there are dead; x is padded's
       if (L != width)
         for (std::size_t i = 0; i < N; ++i)
           for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];
