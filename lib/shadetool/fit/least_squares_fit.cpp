@@ -1163,8 +1163,9 @@ constexpr double kFloatTrigger = 0.8;
 // 4-8% faster). A server core's last-level cache.
 constexpr std::size_t kFloatVectorsAbove = std::size_t(32) << 20;
 
-// The 8-bit path's solve (least_squares_fit.h, Precision): x, r, p and Ap stored in float (p, Ap,
-// r, x in that order in the spent f while it lasts), b in double; every sum in double. The
+// The 8-bit path's solve (least_squares_fit.h, Precision): x, r and p stored in float, Ap and b in
+// double (Ap, p, r, x in that order in the spent f while it lasts; x in the caller's x_given when
+// non-null: the quadrature's scratch); every sum in double. The
 // recursion stops at kFloatTrigger of the accuracy bound; then the true residual t = b - A x of
 // the float x is computed in double, in place in b (read no more), and a channel is proven when
 // sum t_i^2 / M_ii is within the bound (or |t| within the tolerance of |b|). A channel that is not

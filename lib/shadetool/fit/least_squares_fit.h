@@ -259,7 +259,8 @@ std::vector<double> site_values_at_points(const FitQuadrature& q, const std::vec
 std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::vector<double>& node_values,
                                             std::size_t width);
 
-// How CG stores its vectors x, r, p and Ap (header, Precision).
+// How CG stores its vectors x, r and p (Ap, which the operator's scatter accumulates, is double
+// either way; header, Precision).
 enum class FitVectorStorage {
   Double,           // always double: the HDR path's, and the bits of each channel solved alone
   Float,            // float when the solve has an accuracy (8-bit output) and 3 channels; else double
@@ -300,7 +301,8 @@ struct LeastSquaresFit {
   std::size_t fallback_nodes = 0;   // nodes on no face of positive area: their point value
   std::size_t regularized_edges = 0;
   std::size_t skipped_edges = 0;    // interior edges left out of R (degenerate butterfly)
-  int iterations = 0;               // CG iterations, the most over the channels
+  int iterations = 0;               // CG iterations, the most over the channels (with a double
+                                    // finish: the float solve's and the finish's together)
   double residual = 0;              // relative residual reached, the largest over the channels
   bool converged = true;
   bool float_vectors = false;       // CG's vectors were stored in float (Precision)
@@ -333,9 +335,11 @@ LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector
 
 // The same, f handed over (moved in; empty after): once b is assembled f is read no more, and its
 // memory, already touched, holds CG's work vectors (p and Ap: 2 #nodes x 4 doubles for 3 channels,
-// p alone when f is smaller), so the solve does not fault in fresh pages for them (at 1M triangles
-// and 3 points, 32 of the bake's ~170 MB of fresh pages; bench/fit/results.md, fit10). For a
-// caller that has no further use for f (bake-lighting without --stats). The same bits.
+// p alone when f is smaller; on the float path Ap, p and r, as many as fit), so the solve does not
+// fault in fresh pages for them (at 1M triangles and 3 points, 32 of the bake's ~170 MB of fresh
+// pages; bench/fit/results.md, fit10), and for 3 channels the result's values take f's vector
+// after the solve (its capacity kept: f's). For a caller that has no further use for f
+// (bake-lighting without --stats). The same bits.
 LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
                                   const FitQuadrature& q, std::vector<double>&& f,
                                   const PointValuesAt& point_values_at, std::size_t width,
