@@ -24,6 +24,11 @@
 // FIT_THREADS=N in the environment: at most N threads (1: no thread pool spin in the CPU times).
 // FIT_MALLOC_KEEP=1: freed memory kept by the allocator (no page faults of first touch after the
 // first repetition).
+//        bench_fit solve SRC_DIR SAMPLES N [1m|99k]   (least_squares_fit alone; FIT_VECTORS=double: CG's
+//                  vectors in double, as the HDR path stores them)
+//        bench_fit bytes SRC_DIR SCENE SAMPLES   (1M torus, 8-bit: the bytes of the float-vector solve
+//                  against the double one, and the exact solution's distance to the byte boundary
+//                  where they differ)
 //        bench_fit picture SRC_DIR OUT.png   (point Gouraud | least-squares Gouraud | Phong, coarse)
 #include <algorithm>
 #include <cmath>
@@ -42,6 +47,7 @@
 #include <shadetool/fit/least_squares_fit.h>
 #include <shadetool/io/image_png.h>
 #include <shadetool/lighting/bake_lighting.h>
+#include <shadetool/lighting/encode_color.h>
 #include <shadetool/lighting/fit_vertex_lighting.h>
 #include <shadetool/lighting/read_scene.h>
 #include <shadetool/render/render_mesh.h>
@@ -519,9 +525,11 @@ int main(int argc, char** argv) {
     std::printf("elements %.3f ms, quadrature %.3f ms\n", median(t_el), median(t_q));
     return 0;
   }
-  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N [1m]: least_squares_fit alone, N times (10k (1M) torus, studio)
-    const bool million = argc > 5 && std::string(argv[5]) == "1m";
-    const Mesh mesh = million ? testing::torus(1000, 500, 1.0, 0.4).mesh : testing::torus(100, 50, 1.0, 0.4).mesh;
+  if (mode == "solve" && argc > 4) {  // bench_fit solve SRC SAMPLES N [1m|99k]: least_squares_fit alone, N times (10k (1M, 99k) torus, studio)
+    const std::string size = argc > 5 ? argv[5] : "";
+    const Mesh mesh = size == "1m"    ? testing::torus(1000, 500, 1.0, 0.4).mesh
+                      : size == "99k" ? testing::torus(316, 158, 1.0, 0.4).mesh
+                                      : testing::torus(100, 50, 1.0, 0.4).mesh;
     const Scene scene = read_scene(src + "/data/scenes/studio.json");
     const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex);
     const std::vector<double> world = world_positions(mesh, scene);
@@ -531,14 +539,62 @@ int main(int argc, char** argv) {
     LeastSquaresFitOptions o;
     o.upper = 1;
     o.accuracy = kEightBitFitAccuracy;
+    const char* vectors = std::getenv("FIT_VECTORS");  // "double": FitVectorStorage::Double (the HDR path's storage)
+    if (vectors && std::string(vectors) == "double") o.vectors = FitVectorStorage::Double;
     std::vector<double> t;
-    int iterations = 0;
+    LeastSquaresFit last;
     for (int k = 0; k < std::atoi(argv[4]); ++k) {
       const double t0 = cpu_ms();
-      iterations = least_squares_fit(e, world, q, f, point.rgb, 3, o).iterations;
+      last = least_squares_fit(e, world, q, f, point.rgb, 3, o);
       t.push_back(cpu_ms() - t0);
     }
-    std::printf("least_squares_fit %.3f ms (median of %zu, process CPU), %d CG iterations\n", median(t), t.size(), iterations);
+    std::printf("least_squares_fit %.3f ms (median of %zu, process CPU), %d CG iterations, vectors %s%s, residual %.3g\n",
+                median(t), t.size(), last.iterations, last.float_vectors ? "float" : "double",
+                last.double_finish ? " (finished in double)" : "", last.residual);
+    return 0;
+  }
+  if (mode == "bytes" && argc > 4) {  // bench_fit bytes SRC SCENE SAMPLES: the 8-bit bytes of float vs double vectors (1M torus)
+    const Mesh mesh = testing::torus(1000, 500, 1.0, 0.4).mesh;
+    const Scene scene = read_scene(src + "/data/scenes/" + argv[3] + ".json");
+    const BakeResult point = bake_lighting(mesh, scene, ShadingFrequency::PerVertex, {}, {}, VertexColors::None);
+    VertexFitOptions fit;
+    fit.method = VertexFit::LeastSquares;
+    fit.samples = std::atoi(argv[4]);
+    fit.solve.upper = 1;
+    fit.solve.accuracy = kEightBitFitAccuracy;
+    fit.measure_error = false;
+    const VertexLightingFit in_float = fit_vertex_lighting(mesh, scene, point, {}, {}, fit);
+    fit.solve.vectors = FitVectorStorage::Double;  // the solve before fit11 (the same bits)
+    const VertexLightingFit in_double = fit_vertex_lighting(mesh, scene, point, {}, {}, fit);
+    fit.solve.accuracy = 0;  // "exact": CG to a relative residual of 1e-14, double
+    fit.solve.tolerance = 1e-14;
+    const VertexLightingFit exact = fit_vertex_lighting(mesh, scene, point, {}, {}, fit);
+    const auto byte = [](double c) { return int(quantize_8bit(srgb_encode(c))); };
+    std::size_t differ = 0, values_differ = 0;
+    double worst_float = 0, worst_double = 0, worst_gap = 0;  // |c - c*|, and |c* - boundary| where the bytes differ
+    for (std::size_t i = 0; i < exact.rgb.size(); ++i) {
+      worst_float = std::max(worst_float, std::fabs(in_float.rgb[i] - exact.rgb[i]));
+      worst_double = std::max(worst_double, std::fabs(in_double.rgb[i] - exact.rgb[i]));
+      values_differ += in_float.rgb[i] != in_double.rgb[i];
+      const int a = byte(in_float.rgb[i]), b = byte(in_double.rgb[i]);
+      if (a == b) continue;
+      ++differ;
+      // the rounding boundary between the two bytes, in linear units: bisect srgb_encode
+      double lo = std::min(in_float.rgb[i], in_double.rgb[i]), hi = std::max(in_float.rgb[i], in_double.rgb[i]);
+      for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (byte(mid) == byte(lo) ? lo : hi) = mid;
+      }
+      worst_gap = std::max(worst_gap, std::fabs(exact.rgb[i] - hi));
+      std::printf("value %zu: float %.9f (byte %d), double %.9f (byte %d), exact %.9f, boundary %.9f\n", i,
+                  in_float.rgb[i], a, in_double.rgb[i], b, exact.rgb[i], hi);
+    }
+    std::printf("%s %s pt: %zu of %zu bytes differ (%zu values differ); max |c - c*| float %.3g, double %.3g (bound %.3g); "
+                "exact value within %.3g of the byte boundary where they differ; CG iterations float %d (float vectors %d, "
+                "double finish %d), double %d\n",
+                argv[3], argv[4], differ, exact.rgb.size(), values_differ, worst_float, worst_double, kEightBitFitAccuracy,
+                worst_gap, in_float.solve.iterations, int(in_float.solve.float_vectors), int(in_float.solve.double_finish),
+                in_double.solve.iterations);
     return 0;
   }
   if (mode == "once" && argc > 6) {  // bench_fit once SRC U V SCENE SAMPLES: one bake in this process (fresh)

@@ -5,8 +5,11 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <cstddef>
 #include <memory>
+#include <new>
 #include <string>
+#include <type_traits>
 
 
 #include <shadetool/core/error.h>
@@ -168,7 +171,7 @@ bool midpoint_edge(const std::uint32_t* vertex, const double* phi, int corners, 
 // every triangle, so the rule is asked once; quads' points one by one. When no point is a midpoint
 // (the 1-, 6- and 12-point rules, quads' Gauss points) both stay empty: every point its own site.
 // V: the vertex count.
-void assign_sites(FitQuadrature& q, std::size_t V) {
+void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   const std::size_t S = q.size(), R = q.rule.size(), T = q.tri_area.size();
   q.site.clear();
   q.site_point.clear();
@@ -224,10 +227,23 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
   std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1);
   // not zero-filled: an entry is written before it is read (below end[lo]); at 1M triangles the
-  // fill was two passes over 12 MB each
-  const std::unique_ptr<std::uint32_t[]> entry_hi(new std::uint32_t[offset[V]]), entry_site(new std::uint32_t[offset[V]]);
+  // fill was two passes over 12 MB each. One block of bytes, the two arrays placed in it, handed
+  // to `spare` after (FitScratch).
+  const std::size_t entries = offset[V];
+  std::unique_ptr<std::byte[]> block(new std::byte[2 * entries * sizeof(std::uint32_t)]);
+  std::uint32_t* const entry_hi = ::new (static_cast<void*>(block.get())) std::uint32_t[entries];
+  std::uint32_t* const entry_site =
+      ::new (static_cast<void*>(block.get() + entries * sizeof(std::uint32_t))) std::uint32_t[entries];
   q.site.resize(S);
-  q.site_point.resize(S);
+  // site_point: of its S possible entries only `sites` are written (half of them on a closed mesh
+  // under the 3-point rule). Above 4 MiB it is reserved and appended to, so that the unwritten half
+  // is never faulted in (6 MB at 1M triangles); below, sized and indexed (the appends cost 13% of
+  // the 10k torus's quadrature: bench/fit/results.md, fit11). The same entries either way.
+  const bool append_sites = S * sizeof(std::uint32_t) >= (std::size_t(4) << 20);
+  if (append_sites)
+    q.site_point.reserve(S);
+  else
+    q.site_point.resize(S);
   std::size_t sites = 0;
   const auto place = [&](std::size_t p, std::uint64_t key) {
     if (key != kNone) {
@@ -244,7 +260,11 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
       ++end[lo];
     }
     q.site[p] = std::uint32_t(sites);
-    q.site_point[sites++] = std::uint32_t(p);
+    if (append_sites)
+      q.site_point.push_back(std::uint32_t(p));
+    else
+      q.site_point[sites] = std::uint32_t(p);
+    ++sites;
   };
   if (store_keys)
     for (std::size_t p = 0; p < S; ++p) place(p, stored[p]);
@@ -258,6 +278,13 @@ void assign_sites(FitQuadrature& q, std::size_t V) {
         q.site_edge[2 * std::size_t(entry_site[k])] = std::uint32_t(v);
         q.site_edge[2 * std::size_t(entry_site[k]) + 1] = entry_hi[k];
       }
+  }
+  // The entries are read no more: handed over when they are worth keeping (4 MiB and more: 1M
+  // triangles hold 24 MB; kept alive below that, a block only moves the allocator's later
+  // choices, which measured slower on the 10k torus), else freed here as before.
+  if (spare && 2 * entries * sizeof(std::uint32_t) >= (std::size_t(4) << 20)) {
+    spare->bytes = std::move(block);
+    spare->size = 2 * entries * sizeof(std::uint32_t);
   }
 }
 
@@ -304,36 +331,83 @@ inline void add_triangle_product(const FitOperator& A, std::size_t t, const doub
   }
 }
 
+// Storage of CG's vectors (least_squares_fit.h, Precision): T = double, or float on the 8-bit path.
+// Every value is loaded into double and every operation and sum is done in double; only the store
+// rounds (to T). Loads and stores by memcpy: a float vector may live in the memory of a spent
+// std::vector<double> (the rvalue overload), so no float lvalue reads a double object.
+using Floats4 = float __attribute__((vector_size(16)));
+template <class T>
+inline __attribute__((always_inline)) void load4(Lanes4& v, const T* p) {
+  if constexpr (std::is_same_v<T, double>) {
+    std::memcpy(&v, p, sizeof v);
+  } else {
+    static_assert(std::is_same_v<T, float>);
+    float s[4];
+    std::memcpy(s, p, sizeof s);
+    v = Lanes4{s[0], s[1], s[2], s[3]};  // exact: every float is a double (element-wise: GCC 12 makes
+                                         // one vcvtps2pd of it, and four of __builtin_convertvector)
+  }
+}
+// Stores v (rounded to nearest in T) and leaves in v the value stored, so that later sums use what
+// the next pass will read. For T = double: a plain store, v unchanged (the double path's bits).
+template <class T>
+inline __attribute__((always_inline)) void store4(T* p, Lanes4& v) {
+  if constexpr (std::is_same_v<T, double>) {
+    std::memcpy(p, &v, sizeof v);
+  } else {
+    const Floats4 s = __builtin_convertvector(v, Floats4);  // rounded to nearest
+    std::memcpy(p, &s, sizeof s);
+    v = Lanes4{s[0], s[1], s[2], s[3]};
+  }
+}
+template <class T>
+inline double load1(const T* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return double(v);
+}
+template <class T>
+inline void store1(T* p, double v) {
+  const T s = T(v);
+  std::memcpy(p, &s, sizeof s);
+}
+
 // The same for every triangle, 4 lanes per node (3 channels and a zero pad, least_squares_fit's
 // layout for 3 channels): one 4-wide operation per node where add_triangle_product<1> does one
 // scalar one per lane. Built for AVX2 and for the baseline (target_clones; no FMA): per lane the
 // operations of add_triangle_product, in the same order, so the same bits on either and the bits
-// of one channel solved alone. The triangles are taken from four quarters of the list in turn
-// (apply_operator); xAx_out: 4 lanes, the four quarters' accumulators summed (0 + 1) + (2 + 3).
+// of one channel solved alone (XT = double). The triangles are taken from four quarters of the
+// list in turn (apply_operator); xAx_out: 4 lanes, the four quarters' accumulators summed
+// (0 + 1) + (2 + 3). XT: the storage of x (float on the 8-bit path); y is double (CG's Ap: a
+// float y would round at each node update, in the chain of updates, measured slower).
+// Subtract: y -= M_t x instead (the true residual b - A x, made in place in b; -(s t) is the bits
+// of s t negated, so b - A x has the rounding of the y = A x pass).
+template <class XT, bool Subtract>
 __attribute__((target_clones("avx2", "default")))
-void add_triangle_products_4(const FitOperator& A, const double* x, double* y, double* xAx_out) {
+void add_triangle_products_4(const FitOperator& A, const XT* x, double* y, double* xAx_out) {
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
   Lanes4 acc0 = {0, 0, 0, 0}, acc1 = acc0, acc2 = acc0, acc3 = acc0;
   const auto one = [&](std::size_t t, Lanes4& acc) __attribute__((always_inline)) {
-    const double s = A.tri_area[t] * kTwelfth;  // area/12 to within an ulp: a multiplication, not a division
-    if (s == 0) return;
+    const double scale = A.tri_area[t] * kTwelfth;  // area/12 to within an ulp: a multiplication, not a division
+    if (scale == 0) return;
+    const double s = Subtract ? -scale : scale;
     const std::size_t n0 = std::size_t(A.tri_node[3 * t]) * 4, n1 = std::size_t(A.tri_node[3 * t + 1]) * 4,
                       n2 = std::size_t(A.tri_node[3 * t + 2]) * 4;
     Lanes4 x0, x1, x2, y0, y1, y2;
-    std::memcpy(&x0, x + n0, sizeof x0);
-    std::memcpy(&x1, x + n1, sizeof x1);
-    std::memcpy(&x2, x + n2, sizeof x2);
+    load4(x0, x + n0);
+    load4(x1, x + n1);
+    load4(x2, x + n2);
     const Lanes4 sum = x0 + x1 + x2;
     const Lanes4 t0 = x0 + sum, t1 = x1 + sum, t2 = x2 + sum;
-    std::memcpy(&y0, y + n0, sizeof y0);  // load, add, store one node at a time: nodes may repeat
+    load4(y0, y + n0);  // load, add, store one node at a time: nodes may repeat
     y0 += s * t0;
-    std::memcpy(y + n0, &y0, sizeof y0);
-    std::memcpy(&y1, y + n1, sizeof y1);
+    store4(y + n0, y0);
+    load4(y1, y + n1);
     y1 += s * t1;
-    std::memcpy(y + n1, &y1, sizeof y1);
-    std::memcpy(&y2, y + n2, sizeof y2);
+    store4(y + n1, y1);
+    load4(y2, y + n2);
     y2 += s * t2;
-    std::memcpy(y + n2, &y2, sizeof y2);
+    store4(y + n2, y2);
     acc += s * (x0 * t0 + x1 * t1 + x2 * t2);
   };
   for (std::size_t i = 0; i < Q; ++i) {  // t = i, i + Q, i + 2Q, i + 3Q (the last round may hold fewer)
@@ -346,36 +420,45 @@ void add_triangle_products_4(const FitOperator& A, const double* x, double* y, d
   std::memcpy(xAx_out, &total, sizeof total);
 }
 
-// y = A x and xAx = x^T A x per lane (triangles' four accumulators, then the quads', then the
-// edges': the same order for W = 1 and 4). y_zeroed: y is 0 already (CG's direction pass clears it).
-template <std::size_t W>
-void apply_operator(const FitOperator& A, const double* x, double* y, double* xAx, bool y_zeroed) {
+// y = A x (Subtract: y -= A x) and xAx = x^T A x per lane (triangles' four accumulators, then the
+// quads', then the edges': the same order for W = 1 and 4). y_zeroed: y is 0 already (CG's
+// direction pass clears it). XT: as add_triangle_products_4 (float only with W = 4).
+template <std::size_t W, class XT = double, bool Subtract = false>
+void apply_operator(const FitOperator& A, const XT* x, double* y, double* xAx, bool y_zeroed) {
   constexpr std::size_t w = W;
+  static_assert(W == 4 || (std::is_same_v<XT, double> && !Subtract));
   if (!y_zeroed) std::fill(y, y + A.diagonal.size() * w, 0.0);
   // The triangles taken from four quarters of the list in turn: neighbouring triangles of a mesh
   // share nodes, so in list order each update of y waits for the store of the one before; four
   // far-apart chains overlap (bench/fit/results.md). A fixed order: the same bits on every run.
   const std::size_t T = A.triangles, Q = (T + 3) / 4;
   if constexpr (W == 4) {
-    add_triangle_products_4(A, x, y, xAx);
+    add_triangle_products_4<XT, Subtract>(A, x, y, xAx);
   } else {
     double acc[4][W] = {};
     for (std::size_t i = 0; i < Q; ++i)
       for (std::size_t t = i, a = 0; t < T; t += Q, ++a) add_triangle_product<W>(A, t, x, y, acc[a]);
     for (std::size_t c = 0; c < w; ++c) xAx[c] = (acc[0][c] + acc[1][c]) + (acc[2][c] + acc[3][c]);
   }
+  const auto X = [&](std::size_t i) { return load1(x + i); };
+  const auto add_y = [&](std::size_t i, double v) {
+    if constexpr (Subtract)
+      y[i] -= v;
+    else
+      y[i] += v;
+  };
   for (std::size_t k = 0; k < A.quad_mass.size() / 16; ++k) {
     const std::uint32_t* n = &A.quad_node[4 * k];
     const double* m = &A.quad_mass[16 * k];
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j)
-        for (std::size_t c = 0; c < w; ++c) y[n[i] * w + c] += m[4 * i + j] * x[n[j] * w + c];
+        for (std::size_t c = 0; c < w; ++c) add_y(n[i] * w + c, m[4 * i + j] * X(n[j] * w + c));
     for (std::size_t c = 0; c < w; ++c) {  // x^T m x, row by row
       double quad = 0;
       for (int i = 0; i < 4; ++i) {
         double row = 0;
-        for (int j = 0; j < 4; ++j) row += m[4 * i + j] * x[n[j] * w + c];
-        quad += x[n[i] * w + c] * row;
+        for (int j = 0; j < 4; ++j) row += m[4 * i + j] * X(n[j] * w + c);
+        quad += X(n[i] * w + c) * row;
       }
       xAx[c] += quad;
     }
@@ -384,8 +467,8 @@ void apply_operator(const FitOperator& A, const double* x, double* y, double* xA
     const std::uint32_t* n = &A.edge_node[4 * k];
     const double* d = &A.edge_d[4 * k];
     for (std::size_t c = 0; c < w; ++c) {
-      const double dx = d[0] * x[n[0] * w + c] + d[1] * x[n[1] * w + c] + d[2] * x[n[2] * w + c] + d[3] * x[n[3] * w + c];
-      for (int i = 0; i < 4; ++i) y[n[i] * w + c] += d[i] * dx;
+      const double dx = d[0] * X(n[0] * w + c) + d[1] * X(n[1] * w + c) + d[2] * X(n[2] * w + c) + d[3] * X(n[3] * w + c);
+      for (int i = 0; i < 4; ++i) add_y(n[i] * w + c, d[i] * dx);
       xAx[c] += dx * dx;  // x^T R_e x = (d . x)^2
     }
   }
@@ -490,23 +573,25 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
 // CG's per-iteration vector passes over 4 lanes per node (block_conjugate_gradient<4>), one 4-wide
 // operation per node where the scalar loops do four: per lane the same operations in the same
 // node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
-// builds (target_clones; no FMA).
+// builds (target_clones; no FMA). T: the vectors' storage (load4/store4: double, or float on the
+// 8-bit path; arithmetic and sums in double either way, each sum over the stored values).
 // r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new += r^2 inv_d_i,
 // per lane; Ap cleared for the next operator pass (its lines are in cache here: the direction pass
 // need not stream Ap). x += alpha p is left to the direction pass (lanes4_direction), which reads
 // p anyway, or to lanes4_add_step after the last step.
+template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const double alpha_in[4], double* Ap,
-                 double* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4]) {
+                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4]) {
   Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, Api, ri;
-  const Lanes4 zero = {0, 0, 0, 0};
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
-    std::memcpy(&Api, Ap + 4 * i, sizeof Api);
-    std::memcpy(&ri, r + 4 * i, sizeof ri);
+    Lanes4 zero = {0, 0, 0, 0};
+    load4(Api, Ap + 4 * i);
+    load4(ri, r + 4 * i);
     ri = ri - alpha * Api;
-    std::memcpy(r + 4 * i, &ri, sizeof ri);
-    std::memcpy(Ap + 4 * i, &zero, sizeof zero);
+    store4(r + 4 * i, ri);
+    store4(Ap + 4 * i, zero);
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
     abs_new += ri * ri * inv_d[i];
@@ -516,28 +601,30 @@ void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const 
   std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
 }
 // x += alpha p (the last step's, when no direction pass follows it).
+template <class T>
 __attribute__((target_clones("avx2", "default")))
-void lanes4_add_step(const double* p, std::size_t N, const double alpha_in[4], double* x) {
+void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x) {
   Lanes4 alpha, pi, xi;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
-    std::memcpy(&pi, p + 4 * i, sizeof pi);
-    std::memcpy(&xi, x + 4 * i, sizeof xi);
+    load4(pi, p + 4 * i);
+    load4(xi, x + 4 * i);
     xi += alpha * pi;
-    std::memcpy(x + 4 * i, &xi, sizeof xi);
+    store4(x + 4 * i, xi);
   }
 }
-// The first residual r = b - Ap (b_then_r: b in, r out), with sum b^2, sum r^2 and (inv_m
-// non-null) sum r^2 inv_m_i, per lane.
+// The first residual r = b - Ap (b double: for T = double r may be b itself, b in and r out), with
+// sum b^2, sum r^2 and (inv_m non-null) sum r^2 inv_m_i, per lane.
+template <class T>
 __attribute__((target_clones("avx2", "default")))
-void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, double* b_then_r, double rhs2_out[4],
+void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const double* b, T* r, double rhs2_out[4],
                      double res2_out[4], double res_mass_out[4]) {
   Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, bi, Api;
   for (std::size_t i = 0; i < N; ++i) {
-    std::memcpy(&bi, b_then_r + 4 * i, sizeof bi);
-    std::memcpy(&Api, Ap + 4 * i, sizeof Api);
-    const Lanes4 ri = bi - Api;
-    std::memcpy(b_then_r + 4 * i, &ri, sizeof ri);
+    std::memcpy(&bi, b + 4 * i, sizeof bi);
+    load4(Api, Ap + 4 * i);
+    Lanes4 ri = bi - Api;
+    store4(r + 4 * i, ri);
     rhs2 += bi * bi;
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
@@ -547,33 +634,47 @@ void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, doubl
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
 }
 // The first direction p = inv_d_i r, with sum r p, per lane.
+template <class T>
 __attribute__((target_clones("avx2", "default")))
-void lanes4_first_direction(const double* r, const double* inv_d, std::size_t N, double* p, double abs_out[4]) {
+void lanes4_first_direction(const T* r, const double* inv_d, std::size_t N, T* p, double abs_out[4]) {
   Lanes4 abs = {0, 0, 0, 0}, ri;
   for (std::size_t i = 0; i < N; ++i) {
-    std::memcpy(&ri, r + 4 * i, sizeof ri);
-    const Lanes4 pi = ri * inv_d[i];
-    std::memcpy(p + 4 * i, &pi, sizeof pi);
+    load4(ri, r + 4 * i);
+    Lanes4 pi = ri * inv_d[i];
+    store4(p + 4 * i, pi);
     abs += ri * pi;
   }
   std::memcpy(abs_out, &abs, sizeof abs);
 }
 // x += alpha p (the last step's, deferred: lanes4_step), then p = inv_d_i r + beta p, per lane.
+template <class T>
 __attribute__((target_clones("avx2", "default")))
-void lanes4_direction(const double* r, const double* inv_d, std::size_t N, const double alpha_in[4],
-                      const double beta_in[4], double* x, double* p) {
+void lanes4_direction(const T* r, const double* inv_d, std::size_t N, const double alpha_in[4],
+                      const double beta_in[4], T* x, T* p) {
   Lanes4 alpha, beta, ri, pi, xi;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   std::memcpy(&beta, beta_in, sizeof beta);
   for (std::size_t i = 0; i < N; ++i) {
-    std::memcpy(&ri, r + 4 * i, sizeof ri);
-    std::memcpy(&pi, p + 4 * i, sizeof pi);
-    std::memcpy(&xi, x + 4 * i, sizeof xi);
+    load4(ri, r + 4 * i);
+    load4(pi, p + 4 * i);
+    load4(xi, x + 4 * i);
     xi += alpha * pi;
     pi = ri * inv_d[i] + beta * pi;
-    std::memcpy(x + 4 * i, &xi, sizeof xi);
-    std::memcpy(p + 4 * i, &pi, sizeof pi);
+    store4(x + 4 * i, xi);
+    store4(p + 4 * i, pi);
   }
+}
+// sum t^2 and (inv_m non-null) sum t^2 inv_m_i per lane, t double (the true residual's check).
+__attribute__((target_clones("avx2", "default")))
+void lanes4_norms(const double* t, const double* inv_m, std::size_t N, double res2_out[4], double res_mass_out[4]) {
+  Lanes4 res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, ti;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::memcpy(&ti, t + 4 * i, sizeof ti);
+    res2 += ti * ti;
+    if (inv_m) res_mass += ti * ti * inv_m[i];
+  }
+  std::memcpy(res2_out, &res2, sizeof res2);
+  std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
 }
 
 // b_i += sum over the triangles' points of w_k phi_i(x_k) f(x_k) (least_squares_fit.h, b), one
@@ -666,41 +767,54 @@ void add_triangle_loads_4(const FitQuadrature& q, const TriangleLoads& g, const 
 
 struct BlockCgOptions {
   double tolerance = 1e-10;   // relative residual per channel
-  // > 0: also stop a channel once sum_i r_i^2 / inverse_mass_i <= accuracy_bound (least_squares_fit.h,
-  // Solver: then every value is within the accuracy of the exact solution)
+  // > 0: also stop a channel once sum_i r_i^2 / inverse_mass_i <= accuracy_trigger accuracy_bound
+  // (least_squares_fit.h, Solver: at the full bound every value is within the accuracy of the exact
+  // solution; float storage stops the recursion at a quarter of it and checks the true residual)
   double accuracy_bound = 0;
+  double accuracy_trigger = 1;
   const std::vector<double>* inverse_mass = nullptr;  // #nodes: 1 / M_ii (0 off the system)
   int max_iterations = 0;
-  // Memory for p and Ap (already touched: a spent f, least_squares_fit's rvalue overload), `work_size`
-  // doubles: p = work when it holds #nodes x W, Ap after it when it holds twice that; else allocated.
-  double* work = nullptr;
-  std::size_t work_size = 0;
+  std::array<double, 4>* rhs2_out = nullptr;  // non-null (W = 4): sum b^2 per lane
+};
+
+// Memory for CG's work vectors: `count` arrays of n values of T, carved from already-touched
+// memory (a spent f: least_squares_fit's rvalue overload; `spent_doubles` doubles) while it lasts,
+// in the order asked, the rest in one allocation (not value-initialised: each is written before it
+// is read).
+template <class T>
+struct WorkVectors {
+  std::unique_ptr<T[]> own;
+  std::array<T*, 4> at{};
+  WorkVectors(double* spent, std::size_t spent_doubles, std::size_t n, std::size_t count) {
+    const std::size_t room = spent && n > 0 ? spent_doubles * sizeof(double) / (n * sizeof(T)) : 0;  // divisor checked
+    const std::size_t in_spent = std::min(count, room);
+    own.reset(count > in_spent ? new T[(count - in_spent) * n] : nullptr);
+    for (std::size_t i = 0; i < count; ++i)  // T values in a double array: read and written by memcpy only
+      at[i] = i < in_spent ? reinterpret_cast<T*>(spent) + i * n : own.get() + (i - in_spent) * n;
+  }
 };
 
 // Jacobi-preconditioned conjugate gradient (Hestenes & Stiefel; the loop of Eigen's
 // ConjugateGradient) on W channels at once (W = 1 or 3): one operator pass per step serves all
-// channels, each with its own step lengths and its own stop. x: #nodes by W, the first guess in,
-// the solution out; rows in off_system stay 0. b_then_r: b in, the residual after (its memory is
-// the residual's: one array fewer to fault in). Counts into fit (iterations: operator passes, the
-// most over channels; residual: the largest relative residual; converged).
-template <std::size_t W>
+// channels, each with its own step lengths and its own stop. b: #nodes by W (double); r: the
+// residual (T = double: may be b itself, b in and r out: one array fewer to fault in). x: #nodes
+// by W, the first guess in, the solution out; rows in off_system stay 0. p, Ap: work vectors. T:
+// the vectors' storage (float only with W = 4; least_squares_fit.h, Precision). Counts into fit
+// (iterations: operator passes, the most over channels; residual: the largest relative residual
+// of the recursion; converged).
+template <std::size_t W, class T>
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
-                              const std::vector<std::uint32_t>& off_system, double* b_then_r,
-                              const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
+                              const std::vector<std::uint32_t>& off_system, const double* b, T* r,
+                              const BlockCgOptions& o, T* x, T* p, double* Ap, LeastSquaresFit& fit) {
+  static_assert(W == 4 || std::is_same_v<T, double>);
   using Channels = std::array<double, W>;
   const std::size_t N = inverse_diagonal.size(), n = N * W;
-  // Not value-initialised: the first direction writes p, the first operator pass clears Ap.
-  const bool p_in_work = o.work && o.work_size >= n, Ap_in_work = o.work && o.work_size >= 2 * n;
-  const std::unique_ptr<double[]> p_v(p_in_work ? nullptr : new double[n]), Ap_v(Ap_in_work ? nullptr : new double[n]);
-  double* const r = b_then_r;
-  double* const p = p_in_work ? o.work : p_v.get();
-  double* const Ap = Ap_in_work ? o.work + n : Ap_v.get();
   const double* const inv_d = inverse_diagonal.data();
   const double* const inv_m = o.inverse_mass ? o.inverse_mass->data() : nullptr;
   // out = A in, and in^T A in per channel (summed over the elements; rows off the system: in is 0
   // there, and out is set to 0)
-  const auto apply = [&](const double* in, double* out, double* inAin, bool out_zeroed) {
-    apply_operator<W>(A, in, out, inAin, out_zeroed);
+  const auto apply = [&](const T* in, double* out, double* inAin, bool out_zeroed) {
+    apply_operator<W, T>(A, in, out, inAin, out_zeroed);
     for (std::uint32_t i : off_system)
       for (std::size_t k = 0; k < W; ++k) out[i * W + k] = 0;
   };
@@ -708,14 +822,16 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   std::array<bool, W> active{};
   const bool bounded = o.accuracy_bound > 0 && inv_m;
   const bool mass_is_jacobi = inv_m == inv_d;  // lambda = 0: r^T D^-1 r is both the stop's sum and CG's r^T z
-  const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= o.accuracy_bound; };
+  const double stop_at = o.accuracy_trigger * o.accuracy_bound;
+  const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= stop_at; };
   apply(x, Ap, pAp.data(), false);  // pAp unused here
   if constexpr (W == 4) {
-    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, r, rhs2.data(), res2.data(), res_mass.data());
+    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data());
+    if (o.rhs2_out) *o.rhs2_out = rhs2;
   } else {
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
       for (std::size_t k = 0; k < W; ++k) {
-        const double bi = r[i + k];
+        const double bi = b[i + k];
         r[i + k] = bi - Ap[i + k];
         rhs2[k] += bi * bi;
         res2[k] += r[i + k] * r[i + k];
@@ -727,7 +843,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     threshold[k] = std::max(o.tolerance * o.tolerance * rhs2[k], std::numeric_limits<double>::min());
     active[k] = false;
     if (rhs2[k] == 0) {  // b = 0: the solution is 0
-      for (std::size_t i = k; i < n; i += W) x[i] = 0;
+      for (std::size_t i = k; i < n; i += W) store1(x + i, 0.0);
       res2[k] = 0;
     } else if (!(res2[k] < threshold[k] || accurate(k))) {
       active[k] = true;
@@ -799,22 +915,26 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   }
 }
 
-// b and x #nodes by `width` lanes (cg_lanes: 4 for 3 channels, the fourth b = 0 and so x = 0, a
-// channel solved at once); widths other than 1 and 4: one channel at a time. b: overwritten (the
-// residual).
+// b and x #nodes by `width` lanes, double (cg_lanes: 4 for 3 channels, the fourth b = 0 and so
+// x = 0, a channel solved at once); widths other than 1 and 4: one channel at a time. b:
+// overwritten (the residual). p and Ap in `spent` (spent_doubles already-touched doubles) while
+// it lasts (WorkVectors).
 void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& inverse_diagonal,
                               const std::vector<std::uint32_t>& off_system, double* b, std::size_t width,
-                              const BlockCgOptions& o, double* x, LeastSquaresFit& fit) {
-  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, o, x, fit);
-  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b, o, x, fit);
-  const std::size_t N = inverse_diagonal.size();
+                              const BlockCgOptions& o, double* x, double* spent, std::size_t spent_doubles,
+                              LeastSquaresFit& fit) {
+  const std::size_t N = inverse_diagonal.size(), W = width == 1 || width == 4 ? width : 1;
+  WorkVectors<double> work(spent, spent_doubles, N * W, 2);  // p, Ap
+  if (width == 1) return block_conjugate_gradient<1>(A, inverse_diagonal, off_system, b, b, o, x, work.at[0], work.at[1], fit);
+  if (width == 4) return block_conjugate_gradient<4>(A, inverse_diagonal, off_system, b, b, o, x, work.at[0], work.at[1], fit);
   std::vector<double> bk(N), xk(N);
   for (std::size_t k = 0; k < width; ++k) {
     for (std::size_t i = 0; i < N; ++i) {
       bk[i] = b[i * width + k];
       xk[i] = x[i * width + k];
     }
-    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk.data(), o, xk.data(), fit);
+    block_conjugate_gradient<1>(A, inverse_diagonal, off_system, bk.data(), bk.data(), o, xk.data(), work.at[0],
+                                work.at[1], fit);
     for (std::size_t i = 0; i < N; ++i) x[i * width + k] = xk[i];
   }
 }
@@ -873,7 +993,8 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
   return e;
 }
 
-FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& positions, int samples) {
+FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& positions, int samples,
+                             FitScratch* spare) {
   if (!triangle_quadrature_supported(samples))
     throw Error("fit_quadrature: " + std::to_string(samples) + " points per triangle is not a rule (1, 3, 6 or 12)");
   FitQuadrature q;
@@ -924,7 +1045,7 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
         q.quad_face.push_back(e.quad_face[k]);
       }
   }
-  assign_sites(q, positions.size() / 3);
+  assign_sites(q, positions.size() / 3, spare);
   return q;
 }
 
@@ -1028,6 +1149,100 @@ LeastSquaresFit least_squares_fit(const FitElements& e, const std::vector<double
 }
 
 namespace {
+// The float path's recursion stops at 0.8 of the accuracy bound (about 0.9 of it in the residual's
+// norm): the rest is room for the drift between the recursive residual and the true one, which
+// the check after the solve measures (least_squares_fit.h, Precision; on the tori of
+// bench/fit/results.md the two differed by at most 5% of the sum at the stop).
+constexpr double kFloatTrigger = 0.8;
+
+// FloatAboveCache: float vectors once the double path's per-iteration working set (x, r, p, Ap at
+// 32 bytes a node each, the triangles' nodes and areas at 20 bytes each) exceeds this: below it
+// the vectors stay in cache, the passes are bound by their operations and the float conversions
+// and the true residual's check cost more than the halved traffic saves (bench/fit/results.md,
+// fit11: the 99k torus, 6.4 MB of vectors, solved 10-20% slower in float; the 1M torus, 64 MB,
+// 4-8% faster). A server core's last-level cache.
+constexpr std::size_t kFloatVectorsAbove = std::size_t(32) << 20;
+
+// The 8-bit path's solve (least_squares_fit.h, Precision): x, r and p stored in float, Ap and b in
+// double (Ap, p, r, x in that order in the spent f while it lasts; x in the caller's x_given when
+// non-null: the quadrature's scratch); every sum in double. The
+// recursion stops at kFloatTrigger of the accuracy bound; then the true residual t = b - A x of
+// the float x is computed in double, in place in b (read no more), and a channel is proven when
+// sum t_i^2 / M_ii is within the bound (or |t| within the tolerance of |b|). A channel that is not
+// (the recursion drifted, or the bound lies below what float x can resolve) is finished in double:
+// CG on A e = t from e's lumped-mass guess, c = x + e. Writes fit.values (#nodes by 3, the rows in
+// the system; values_in_spent non-null: called first, it makes fit.values the spent f's vector)
+// and fit's counts (residual: the true one, relative to |b|).
+template <class FirstGuess>
+void solve_float_vectors(const FitOperator& A, const std::vector<double>& inverse_diagonal,
+                         const std::vector<std::uint32_t>& off_system, double* b, float* x_given,
+                         const BlockCgOptions& options, const FirstGuess& first_guess, double* spent,
+                         std::size_t spent_size, const std::function<void()>& values_in_spent,
+                         LeastSquaresFit& fit) {
+  const std::size_t N = inverse_diagonal.size(), n = 4 * N;
+  // Ap (double, n) first in the spent f, then p, r and x (float; x: x_given when non-null) in
+  // what is left of it
+  const WorkVectors<double> wide(spent, spent_size, n, 1);
+  const bool Ap_in_spent = spent && spent_size >= n;
+  const WorkVectors<float> v(Ap_in_spent ? spent + n : nullptr, Ap_in_spent ? spent_size - n : 0, n, x_given ? 2 : 3);
+  double* const Ap = wide.at[0];
+  float* const p = v.at[0];
+  float* const r = v.at[1];
+  float* const x = x_given ? x_given : v.at[2];
+  first_guess(b, x);
+  BlockCgOptions cg = options;
+  cg.accuracy_trigger = kFloatTrigger;
+  std::array<double, 4> rhs2{};
+  cg.rhs2_out = &rhs2;
+  fit.float_vectors = true;
+  block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b, r, cg, x, p, Ap, fit);
+  // The check: t = b - A x in double (x's float values exactly), sum t^2 and sum t^2 / M_ii per lane.
+  double unused[4], t2[4], t_mass[4];
+  apply_operator<4, float, true>(A, x, b, unused, true);
+  for (std::uint32_t i : off_system)
+    for (std::size_t k = 0; k < 4; ++k) b[4 * std::size_t(i) + k] = 0;
+  lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass);
+  std::array<bool, 4> proven{};
+  bool all = true;
+  double residual_proven = 0, t_relative_rest = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double relative = rhs2[k] > 0 ? std::sqrt(t2[k] / rhs2[k]) : 0.0;  // divisor checked
+    const double threshold = std::max(options.tolerance * options.tolerance * rhs2[k], std::numeric_limits<double>::min());
+    proven[k] = t_mass[k] <= options.accuracy_bound || t2[k] < threshold;  // b = 0: t = 0, proven
+    all = all && proven[k];
+    if (proven[k])
+      residual_proven = std::max(residual_proven, relative);
+    else
+      t_relative_rest = std::max(t_relative_rest, relative);
+  }
+  fit.residual = std::max(residual_proven, t_relative_rest);
+  fit.converged = all;
+  std::unique_ptr<double[]> correction;  // e, #nodes by 4, when a channel is finished in double
+  const int left = options.max_iterations - fit.iterations;
+  if (!all && left > 0) {
+    fit.double_finish = true;
+    for (std::size_t k = 0; k < 4; ++k)
+      if (proven[k])
+        for (std::size_t i = 0; i < N; ++i) b[4 * i + k] = 0;  // nothing left to solve: e = 0
+    correction.reset(new double[n]);
+    first_guess(b, correction.get());
+    BlockCgOptions rest = options;
+    rest.max_iterations = left;
+    rest.rhs2_out = nullptr;
+    LeastSquaresFit counts;
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b, 4, rest, correction.get(), nullptr, 0, counts);
+    fit.iterations += counts.iterations;
+    fit.residual = std::max(residual_proven, counts.residual * t_relative_rest);  // counts' residual: relative to |t|
+    fit.converged = counts.converged;
+  }
+  // fit.values into the spent f (values_in_spent non-null): its first 24 bytes a node are Ap's
+  // (double, placed first), dead now; x is never there (after Ap, p and r, or in the scratch)
+  if (values_in_spent) values_in_spent();
+  for (std::size_t i = 0; i < N; ++i)  // c = x + e in double (the float values exactly, e's rounding 2^-53)
+    for (std::size_t k = 0; k < 3; ++k)
+      fit.values[3 * i + k] = load1(x + 4 * i + k) + (correction ? correction[4 * i + k] : 0.0);
+}
+
 // least_squares_fit; spent: f's own vector when the caller handed it over (the rvalue overload): its
 // memory, already touched, holds CG's p and Ap once b is assembled (f is not read after that).
 LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
@@ -1064,22 +1279,48 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
       ++fit.fallback_nodes;
     }
   }
-  fit.values.assign(N * width, 0.0);
+  // fit.values in the spent f's memory (3 channels: written after the solve from the padded x,
+  // while CG's vectors there are dead), so that the output faults in no fresh page (12 MB at 1M);
+  // else a vector of its own (zero-filled: the fallback nodes' rows are written after).
+  const bool values_in_spent = spent && width == 3 && off_system.size() < N && spent->size() >= N * width;
+  const auto take_spent_for_values = [&] {  // after the solve; the vector keeps its capacity
+    fit.values = std::move(*spent);
+    fit.values.resize(N * width);
+  };
+  if (!values_in_spent) fit.values.assign(N * width, 0.0);
   if (off_system.size() < N) {
-    // b and the solution with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its
-    // solution is 0 and it stops at once), for add_triangle_products_4; otherwise the channels.
-    // padded is not value-initialised: the first guess below writes it whole.
+    // b with L lanes per node: 3 channels padded to 4 (the fourth b = 0, so its solution is 0 and
+    // it stops at once), for add_triangle_products_4; otherwise the channels. b for every channel in
+    // one pass over the points, in double (Precision: b is the check's reference).
     const std::size_t L = width == 3 ? 4 : width;
-    const std::unique_ptr<double[]> padded(L != width ? new double[N * L] : nullptr);
-    double* const x = L != width ? padded.get() : fit.values.data();
-    // b for every channel in one pass over the points.
-    std::vector<double> b(N * L, 0.0);
+    // b (and the float path's x: 4 bytes a lane) in the caller's spent memory when it holds them
+    // (LeastSquaresFitOptions::scratch), else allocated; zero-filled either way
+    std::unique_ptr<std::byte[]> held;
+    std::size_t held_size = 0;
+    if (options.scratch && options.scratch->size >= N * L * sizeof(double)) {
+      held = std::move(options.scratch->bytes);
+      held_size = options.scratch->size;
+      options.scratch->size = 0;
+    } else {
+      if (options.scratch) {  // too small to use: back to the allocator before b is allocated
+        options.scratch->bytes.reset();
+        options.scratch->size = 0;
+      }
+      held.reset(new std::byte[N * L * sizeof(double)]);
+      held_size = N * L * sizeof(double);
+    }
+    double* const b = ::new (static_cast<void*>(held.get())) double[N * L];
+    std::fill(b, b + N * L, 0.0);
+    float* const x_in_held =  // the float path's x after b, when there is room
+        held_size >= N * L * (sizeof(double) + sizeof(float))
+            ? ::new (static_cast<void*>(held.get() + N * L * sizeof(double))) float[N * L]
+            : nullptr;
     const TriangleLoads loads = triangle_loads(q.rule);
     const double* const in_system = off_system.empty() ? nullptr : inverse_diagonal.data();
     if (L == 4)
-      add_triangle_loads_4(q, loads, f.data(), per_site, in_system, b.data());
+      add_triangle_loads_4(q, loads, f.data(), per_site, in_system, b);
     else
-      add_triangle_loads(q, loads, f.data(), width, L, per_site, in_system, b.data());
+      add_triangle_loads(q, loads, f.data(), width, L, per_site, in_system, b);
     for (std::size_t m = 0, s = q.triangle_points(); m < q.quad_weight.size(); ++m, ++s) {  // the quads' points
       const double* fs = &f[(per_site ? q.site_of(s) : s) * width];
       for (int j = 0; j < 4; ++j) {
@@ -1092,11 +1333,21 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
     // The first guess: the lumped-mass projection c0_i = b_i / sum_j M_ij (the L2 projection with M
     // replaced by its row-sum diagonal; exact for a constant f). It needs only b, not the point
     // values, so the result does not depend on whether the caller computed them. 0 off the system.
-    for (std::size_t i = 0; i < N; ++i) {  // all L lanes (a pad lane: b = 0, so 0), one vector division
-      const double m = A.lumped_mass(i);
-      const bool mass = inverse_diagonal[i] != 0 && m > 0;  // off the system (no mass): 0 during CG
-      for (std::size_t k = 0; k < L; ++k) x[i * L + k] = mass ? b[i * L + k] / m : 0.0;  // divisor checked
-    }
+    // x: #nodes by L, of T (float: the division's result rounded once).
+    const auto first_guess = [&](const double* rhs, auto* x) {
+      for (std::size_t i = 0; i < N; ++i) {  // all L lanes (a pad lane: b = 0, so 0), one vector division
+        const double m = A.lumped_mass(i);
+        const bool mass = inverse_diagonal[i] != 0 && m > 0;  // off the system (no mass): 0 during CG
+        if (L == 4) {  // one 4-wide division and store (store4: rounded for float), per lane b_i / m
+          Lanes4 v;
+          std::memcpy(&v, rhs + 4 * i, sizeof v);
+          Lanes4 c = mass ? v / m : Lanes4{0, 0, 0, 0};  // divisor checked
+          store4(x + 4 * i, c);
+        } else {
+          for (std::size_t k = 0; k < L; ++k) store1(x + i * L + k, mass ? rhs[i * L + k] / m : 0.0);  // divisor checked
+        }
+      }
+    };
     BlockCgOptions cg;
     cg.tolerance = options.tolerance;
     // accuracy a: stop at sum r_i^2 / M_ii <= (a mu)^2 min M_ii (header, Solver); mu = 1/2 with
@@ -1107,14 +1358,33 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
-    if (spent) {  // b is assembled: f is read no more
-      cg.work = spent->data();
-      cg.work_size = spent->size();
+    // b is assembled: f is read no more, and its memory (spent) holds work vectors
+    double* const spent_data = spent ? spent->data() : nullptr;
+    const std::size_t spent_size = spent ? spent->size() : 0;
+    bool float_vectors = false;
+    const bool bounded = L == 4 && cg.accuracy_bound > 0;  // 3 channels in 4 lanes, an accuracy
+    switch (options.vectors) {
+      case FitVectorStorage::Double: break;
+      case FitVectorStorage::Float: float_vectors = bounded; break;
+      case FitVectorStorage::FloatAboveCache:
+        float_vectors = bounded && 4 * 32 * N + 20 * A.triangles > kFloatVectorsAbove;
+        break;
     }
-    block_conjugate_gradient(A, inverse_diagonal, off_system, b.data(), L, cg, x, fit);
-    if (L != width)
-      for (std::size_t i = 0; i < N; ++i)
-        for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];
+    if (float_vectors) {
+      solve_float_vectors(A, inverse_diagonal, off_system, b, x_in_held, cg, first_guess, spent_data, spent_size,
+                          values_in_spent ? std::function<void()>(take_spent_for_values) : nullptr, fit);
+    } else {
+      // the solution padded to L lanes (not value-initialised: the first guess writes it whole), or
+      // fit.values itself
+      const std::unique_ptr<double[]> padded(L != width ? new double[N * L] : nullptr);
+      double* const x = L != width ? padded.get() : fit.values.data();
+      first_guess(b, x);
+      block_conjugate_gradient(A, inverse_diagonal, off_system, b, L, cg, x, spent_data, spent_size, fit);
+      if (values_in_spent) take_spent_for_values();  // p and Ap there are dead; x is padded's
+      if (L != width)
+        for (std::size_t i = 0; i < N; ++i)
+          for (std::size_t k = 0; k < width; ++k) fit.values[i * width + k] = x[i * L + k];
+    }
   }
   if (!off_system.empty()) {  // the nodes outside the system keep their point values
     const std::vector<double> at = point_values_at(off_system);

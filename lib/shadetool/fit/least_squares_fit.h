@@ -66,14 +66,38 @@
 // accumulators (no pass over the nodes). Both are the same sums as the per-point and per-node
 // ones in another order: the colours move by rounding only, far inside the stop's accuracy
 // (bench/fit/results.md: over data/ and the corpus against the per-point sums).
-// Precision: double throughout; the assembly is sequential in element order and the solve single
-// threaded, so the result is the same bits for any thread count.
+// Precision: b is assembled in double, sequentially in element order, and the solve is single
+// threaded, so the result is the same bits for any thread count. CG's vectors are double, except
+// on the 8-bit path (accuracy a > 0, 3 channels; options.vectors Float, or FloatAboveCache, the
+// default, on meshes whose vectors do not stay in cache): there x, r and p are stored in float (16
+// bytes a node for 4 lanes instead of 32; Ap stays double: the operator's scatter adds into it
+// node by node, and a float store there lengthens every update's chain, measured slower), every
+// value loaded into double, every operation, sum and dot product done in double, only the store
+// rounded (relative 2^-24, about 6e-8: a float x is within 6e-8 |c| of the double one, some 16000
+// times inside a = 1/1020 for c in [0, 1]). Sums stay in double because the stop's
+// sum_i r_i^2 / M_ii adds #nodes terms: in float its rounding would grow with the count. What
+// float storage breaks is the proof above, which needs the true residual b - A c: the recursive
+// residual r (r -= alpha Ap, stored in float; x rounded at each step) drifts from it by rounding of
+// order 2^-24 |A| |x| summed over the steps. So the float recursion stops at 0.8 of the bound, and
+// the true residual t = b - A c of the float c is then computed in double (one operator pass, in
+// place in b, which is read no more) and tested against the full bound: the proof holds for t as
+// computed, whatever the drift (t's own rounding in double, about 2^-53 of |b|, is ignored as the
+// double path ignores its own). A channel whose t is not within the bound (the drift took more
+// than the margin, or the bound asks for more than a float c can resolve:
+// |D^-1/2 A (c - fl(c))| grows as sqrt(#nodes) while the bound does not) is finished in double: CG
+// on A e = t from e's lumped-mass guess, c + e (LeastSquaresFit::double_finish). The float c
+// itself is as good as a double one: Wathen's bound keeps the condition number of the
+// Jacobi-preconditioned M within 4 for any mesh, so rounding the vectors perturbs c by about 1e-7
+// of |c|; the sqrt(#nodes) is the 2-norm bound's, not the solution's. The double path (HDR,
+// accuracy 0, other widths, FitVectorStorage::Double) is unchanged: its bits are those of the
+// release before the float path.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
@@ -179,9 +203,23 @@ struct FitQuadrature {
       fn(p, &quad_node[4 * m], &quad_vertex[4 * m], &quad_phi[4 * m], 4, quad_weight[m]);
   }
 };
+// Memory one step of a fit has written and no longer needs, handed to the next step so that the
+// next step's arrays land on pages already faulted in (at 1M triangles every fresh MB costs about
+// 0.37 ms CPU in the kernel's page clearing and faults: bench/fit/results.md, fit10 and fit11).
+// Untyped bytes (not value-initialised): each user places its own arrays in them (placement new).
+// fit_quadrature leaves its site search's bucket entries here (8 bytes a midpoint: 24 MB at 1M
+// triangles and 3 points) when they take 4 MiB or more (none for rules without midpoints);
+// least_squares_fit places b (and the float path's x) in them when they are large enough
+// (LeastSquaresFitOptions::scratch), and frees them otherwise.
+struct FitScratch {
+  std::unique_ptr<std::byte[]> bytes;
+  std::size_t size = 0;  // bytes
+};
+
 // positions: #V by 3 (the space the area is measured in: world, for lighting). samples: 1, 3, 6, 12
-// (Error otherwise).
-FitQuadrature fit_quadrature(const FitElements& elements, const std::vector<double>& positions, int samples);
+// (Error otherwise). spare: non-null, receives the site search's spent memory (FitScratch).
+FitQuadrature fit_quadrature(const FitElements& elements, const std::vector<double>& positions, int samples,
+                             FitScratch* spare = nullptr);
 
 // Per-vertex data (#V by width) at the quadrature points (#points by width): sum phi_k data[vertex_k].
 std::vector<double> interpolate_vertex_data(const FitQuadrature& q, const std::vector<double>& vertex_data,
@@ -221,6 +259,15 @@ std::vector<double> site_values_at_points(const FitQuadrature& q, const std::vec
 std::vector<double> interpolate_node_values(const FitQuadrature& q, const std::vector<double>& node_values,
                                             std::size_t width);
 
+// How CG stores its vectors x, r and p (Ap, which the operator's scatter accumulates, is double
+// either way; header, Precision).
+enum class FitVectorStorage {
+  Double,           // always double: the HDR path's, and the bits of each channel solved alone
+  Float,            // float when the solve has an accuracy (8-bit output) and 3 channels; else double
+  FloatAboveCache,  // Float once the double vectors would not stay in cache (above 32 MiB: at 1M
+                    // triangles, not at 100k), where halving their bytes pays; else double
+};
+
 struct LeastSquaresFitOptions {
   double regularization = 0;  // lambda (dimensionless; 0: the plain least-squares solution, the
                              // least error; bench/fit/results.md: R costs 5x the solve's time)
@@ -229,6 +276,10 @@ struct LeastSquaresFitOptions {
   int max_iterations = 0;        // 0: 2 * #nodes (Eigen's default)
   double lower = 0;                                        // clamp after the solve
   double upper = std::numeric_limits<double>::infinity();
+  FitVectorStorage vectors = FitVectorStorage::FloatAboveCache;
+  // Spent memory the solve may use for b (and x): taken (the pointee is empty after); its
+  // placement changes no value. Null: allocated.
+  FitScratch* scratch = nullptr;
 };
 
 // A quarter of an 8-bit step: the accuracy an 8-bit output needs of the solve (see Solver above).
@@ -250,9 +301,12 @@ struct LeastSquaresFit {
   std::size_t fallback_nodes = 0;   // nodes on no face of positive area: their point value
   std::size_t regularized_edges = 0;
   std::size_t skipped_edges = 0;    // interior edges left out of R (degenerate butterfly)
-  int iterations = 0;               // CG iterations, the most over the channels
+  int iterations = 0;               // CG iterations, the most over the channels (with a double
+                                    // finish: the float solve's and the finish's together)
   double residual = 0;              // relative residual reached, the largest over the channels
   bool converged = true;
+  bool float_vectors = false;       // CG's vectors were stored in float (Precision)
+  bool double_finish = false;       // ... and a channel's true residual was above the bound: finished in double
 };
 
 // The nodes that touch no face of positive area (no triangle of q, no quad with mass): they are no
@@ -281,9 +335,11 @@ LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector
 
 // The same, f handed over (moved in; empty after): once b is assembled f is read no more, and its
 // memory, already touched, holds CG's work vectors (p and Ap: 2 #nodes x 4 doubles for 3 channels,
-// p alone when f is smaller), so the solve does not fault in fresh pages for them (at 1M triangles
-// and 3 points, 32 of the bake's ~170 MB of fresh pages; bench/fit/results.md, fit10). For a
-// caller that has no further use for f (bake-lighting without --stats). The same bits.
+// p alone when f is smaller; on the float path Ap, p and r, as many as fit), so the solve does not
+// fault in fresh pages for them (at 1M triangles and 3 points, 32 of the bake's ~170 MB of fresh
+// pages; bench/fit/results.md, fit10), and for 3 channels the result's values take f's vector
+// after the solve (its capacity kept: f's). For a caller that has no further use for f
+// (bake-lighting without --stats). The same bits.
 LeastSquaresFit least_squares_fit(const FitElements& elements, const std::vector<double>& positions,
                                   const FitQuadrature& q, std::vector<double>&& f,
                                   const PointValuesAt& point_values_at, std::size_t width,

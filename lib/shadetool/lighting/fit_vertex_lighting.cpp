@@ -119,7 +119,8 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   const std::vector<double> positions_placed = placed ? world_positions(mesh, scene) : std::vector<double>();
   const std::vector<double>& positions_world = placed ? positions_placed : mesh.positions;
   const FitElements elements = fit_elements(mesh);
-  const FitQuadrature q = fit_quadrature(elements, positions_world, fit.samples);
+  FitScratch spent;  // the site search's memory, for the solve's b (least_squares_fit.h, FitScratch)
+  const FitQuadrature q = fit_quadrature(elements, positions_world, fit.samples, &spent);
   out.quadrature_points = q.size();
   std::vector<double> f =  // at the sites: least_squares_fit and relative_l2_error read it per site
       lighting_at_sites(mesh, scene, q, positions_world, point.vertex_normals, options, shadows, &out.shadows);
@@ -132,12 +133,14 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   const auto shade_fallback = [&](const std::vector<std::uint32_t>& fallback) {
     return bake_vertex_colors(mesh, scene, point, fallback, options, shadows, out.fallback_counters);
   };
+  LeastSquaresFitOptions solve = fit.solve;
+  solve.scratch = &spent;
   if (point.rgb.empty() && !fit.measure_error)  // f has no further use: its memory holds CG's vectors
-    out.solve = least_squares_fit(elements, positions_world, q, std::move(f), shade_fallback, 3, fit.solve);
+    out.solve = least_squares_fit(elements, positions_world, q, std::move(f), shade_fallback, 3, solve);
   else if (point.rgb.empty())
-    out.solve = least_squares_fit(elements, positions_world, q, f, shade_fallback, 3, fit.solve);
+    out.solve = least_squares_fit(elements, positions_world, q, f, shade_fallback, 3, solve);
   else
-    out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb, 3, fit.solve);
+    out.solve = least_squares_fit(elements, positions_world, q, f, point.rgb, 3, solve);
   out.rgb = std::move(out.solve.values);
   out.solve.values.clear();
   if (!fit.measure_error) {
