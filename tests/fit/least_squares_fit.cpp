@@ -537,9 +537,10 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     std::vector<int> points_per_site(q3.sites(), 0);
     for (std::size_t s = 0; s < q3.size(); ++s) ++points_per_site[q3.site_of(s)];
     CHECK(std::count(points_per_site.begin(), points_per_site.end(), 2) == std::ptrdiff_t(q3.sites()));
-    // site_edge (every point a midpoint here): each site's two vertices, lower first, are the two
-    // corners of weight 1/2 of each of its points, and 0.5 p_lo + 0.5 p_hi is the site's place
-    REQUIRE(q3.site_edge.size() == 2 * q3.sites());
+    // site_edge_vertices (every point a midpoint here): each site's two vertices, lower first, are
+    // the two corners of weight 1/2 of each of its points, and 0.5 p_lo + 0.5 p_hi is the site's
+    // place, the bits of the point's own interpolation
+    REQUIRE(q3.midpoint_corners.size() == 3);
     std::size_t wrong_edge = 0, wrong_place = 0;
     for (std::size_t s = 0; s < q3.size(); ++s) {
       const FitPoint pt = q3.point(s);
@@ -548,10 +549,11 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
         if (pt.phi[j] == 0.5) ends.push_back(pt.vertex[j]);
       std::sort(ends.begin(), ends.end());
       const std::size_t i = q3.site_of(s);
-      wrong_edge += ends != std::vector<std::uint32_t>{q3.site_edge[2 * i], q3.site_edge[2 * i + 1]};
+      std::uint32_t lo = 0, hi = 0;
+      site_edge_vertices(q3, i, lo, hi);
+      wrong_edge += ends != std::vector<std::uint32_t>{lo, hi};
       for (int k = 0; k < 3; ++k)
-        wrong_place += 0.5 * mesh.positions[3 * q3.site_edge[2 * i] + k] + 0.5 * mesh.positions[3 * q3.site_edge[2 * i + 1] + k] !=
-                       at_points[3 * s + k];
+        wrong_place += 0.5 * mesh.positions[3 * lo + k] + 0.5 * mesh.positions[3 * hi + k] != at_points[3 * s + k];
     }
     CHECK(wrong_edge == 0);
     CHECK(wrong_place == 0);
@@ -570,7 +572,7 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
     for (int samples : {1, 6, 12}) {  // interior points: each its own site
       const FitQuadrature q = fit_quadrature(e, mesh.positions, samples);
       CHECK(q.sites() == q.size());
-      CHECK(q.site_edge.empty());
+      CHECK(q.midpoint_corners.empty());
     }
   }
 }
@@ -596,9 +598,9 @@ TEST_CASE("A large mesh's sites (keys recomputed, not stored) are one per edge, 
   const FitQuadrature without = fit_quadrature(e, mesh.positions, 3);
   CHECK(without.site == q3.site);
   CHECK(without.site_point == q3.site_point);
-  CHECK(without.site_edge == q3.site_edge);
+  CHECK(without.midpoint_corners == q3.midpoint_corners);
   REQUIRE(q3.sites() == 3 * e.triangles / 2);
-  REQUIRE(q3.site_edge.size() == 2 * q3.sites());
+  REQUIRE(q3.midpoint_corners.size() == 3);
   std::vector<int> points_per_site(q3.sites(), 0);
   std::size_t wrong_edge = 0, out_of_order = 0, next_site = 0;
   for (std::size_t s = 0; s < q3.size(); ++s) {
@@ -615,7 +617,9 @@ TEST_CASE("A large mesh's sites (keys recomputed, not stored) are one per edge, 
     for (int j = 0; j < pt.corners; ++j)
       if (pt.phi[j] == 0.5) ends.push_back(pt.vertex[j]);
     std::sort(ends.begin(), ends.end());
-    wrong_edge += ends != std::vector<std::uint32_t>{q3.site_edge[2 * i], q3.site_edge[2 * i + 1]};
+    std::uint32_t lo = 0, hi = 0;
+    site_edge_vertices(q3, i, lo, hi);
+    wrong_edge += ends != std::vector<std::uint32_t>{lo, hi};
   }
   CHECK(out_of_order == 0);
   CHECK(wrong_edge == 0);

@@ -175,7 +175,7 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   const std::size_t S = q.size(), R = q.rule.size(), T = q.tri_area.size();
   q.site.clear();
   q.site_point.clear();
-  q.site_edge.clear();
+  q.midpoint_corners.clear();
   std::vector<std::array<int, 2>> rule_edge(R, {-1, -1});  // local corners of a midpoint's edge, or -1
   bool rule_midpoints = false;
   for (std::size_t k = 0; k < R; ++k) {
@@ -223,7 +223,7 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
     ++midpoints;
   });
   if (midpoints == 0) return;  // every point its own site
-  const bool edges_only = midpoints == S;  // every site an edge's midpoint: site_edge (after the pass)
+  const bool edges_only = midpoints == S;  // every site an edge's midpoint: midpoint_corners (after the pass)
   for (std::size_t v = 0; v < V; ++v) offset[v + 1] += offset[v];
   std::vector<std::uint32_t> end(offset.begin(), offset.end() - 1);
   // not zero-filled: an entry is written before it is read (below end[lo]); at 1M triangles the
@@ -271,13 +271,10 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   else
     for_each_key(place);
   q.site_point.resize(sites);
-  if (edges_only) {  // each entry is one edge's site: (lower vertex = its bucket, entry_hi)
-    q.site_edge.resize(2 * sites);
-    for (std::size_t v = 0; v < V; ++v)
-      for (std::uint32_t k = offset[v]; k < end[v]; ++k) {
-        q.site_edge[2 * std::size_t(entry_site[k])] = std::uint32_t(v);
-        q.site_edge[2 * std::size_t(entry_site[k]) + 1] = entry_hi[k];
-      }
+  if (edges_only && q.quad_weight.empty()) {  // every point a triangle's midpoint: so every rule point
+    q.midpoint_corners.resize(R);
+    for (std::size_t k = 0; k < R; ++k)
+      q.midpoint_corners[k] = {std::uint8_t(rule_edge[k][0]), std::uint8_t(rule_edge[k][1])};
   }
   // The entries are read no more: handed over when they are worth keeping (4 MiB and more: 1M
   // triangles hold 24 MB; kept alive below that, a block only moves the allocator's later

@@ -93,6 +93,8 @@
 // release before the float path.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -170,9 +172,10 @@ struct FitQuadrature {
   std::vector<std::uint32_t> quad_face;     // 1 per quad point
   std::vector<std::uint32_t> site;          // 1 per point, or empty (site p is point p)
   std::vector<std::uint32_t> site_point;    // 1 per site: its first point, or empty (identity)
-  // 2 per site when every point is an edge's midpoint (the 3-point rule on triangles only): the
-  // edge's two vertices, lower first (a site's data is then 0.5 d_lo + 0.5 d_hi); else empty
-  std::vector<std::uint32_t> site_edge;
+  // When every point is an edge's midpoint (the 3-point rule on triangles only): per rule point,
+  // the two local corners of weight 1/2 (site_edge_vertices reads a site's edge through them and
+  // site_point: no array of 2 vertices a site, 12 MB of fresh pages at 1M triangles); else empty.
+  std::vector<std::array<std::uint8_t, 2>> midpoint_corners;
 
   std::size_t triangle_points() const { return tri_area.size() * rule.size(); }
   const std::uint32_t* triangle_vertices() const { return elements_vertex ? elements_vertex : tri_vertex.data(); }
@@ -249,6 +252,17 @@ inline void interpolate_vertex_data_at_site(const FitQuadrature& q, std::size_t 
     const std::size_t v = vertex[j];
     for (std::size_t k = 0; k < width; ++k) out[k] += phi[j] * vertex_data[v * width + k];
   }
+}
+// The edge of site i when every site is an edge's midpoint (!q.midpoint_corners.empty()): its two
+// vertices, lower first, from its first point's triangle (a site's data is then 0.5 d_lo + 0.5 d_hi,
+// the bits of interpolate_vertex_data_at_site: two products of 1/2 added, in either order).
+inline void site_edge_vertices(const FitQuadrature& q, std::size_t i, std::uint32_t& lo, std::uint32_t& hi) {
+  const std::size_t p = q.first_point(i), R = q.midpoint_corners.size();
+  const std::size_t j = R == 3 ? p / 3 : p / R;  // divisor: R >= 1 (the rule's points); 3 spelled out: no division
+  const std::array<std::uint8_t, 2>& c = q.midpoint_corners[p - j * R];
+  const std::uint32_t* const v = &q.triangle_vertices()[3 * j];
+  lo = std::min(v[c[0]], v[c[1]]);
+  hi = std::max(v[c[0]], v[c[1]]);
 }
 // The same at the sites (#sites by width), and values at the sites copied to their points.
 std::vector<double> interpolate_vertex_data_at_sites(const FitQuadrature& q, const std::vector<double>& vertex_data,

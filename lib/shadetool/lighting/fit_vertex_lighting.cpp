@@ -50,12 +50,13 @@ std::vector<double> lighting_at_sites(const Mesh& mesh, const Scene& scene, cons
       double soa[6][kBlock];  // px, py, pz, nx, ny, nz
       for (std::size_t begin = r.begin(); begin < r.end(); begin += kBlock) {
         const std::size_t count = std::min(kBlock, r.end() - begin);
-        if (!q.site_edge.empty()) {  // every site an edge's midpoint: 0.5 d_lo + 0.5 d_hi, no look-up of its point
+        if (!q.midpoint_corners.empty()) {  // every site an edge's midpoint: 0.5 d_lo + 0.5 d_hi
           const double* P = positions_world.data();
           const double* Nv = normals_world.data();
           for (std::size_t i = 0; i < count; ++i) {
-            const std::size_t a = 3 * std::size_t(q.site_edge[2 * (begin + i)]),
-                              b = 3 * std::size_t(q.site_edge[2 * (begin + i) + 1]);
+            std::uint32_t lo, hi;
+            site_edge_vertices(q, begin + i, lo, hi);
+            const std::size_t a = 3 * std::size_t(lo), b = 3 * std::size_t(hi);
             for (int k = 0; k < 3; ++k) {
               soa[k][i] = 0.5 * P[a + k] + 0.5 * P[b + k];
               soa[3 + k][i] = 0.5 * Nv[a + k] + 0.5 * Nv[b + k];  // renormalised by shade_point_block
