@@ -577,6 +577,39 @@ TEST_CASE("The 3-point rule's edge midpoints are one site per edge, each at the 
   }
 }
 
+TEST_CASE("A closed genus-0 mesh's spent site search holds b and the float x: the block is made as large as wanted",
+          "[fit][quadrature]") {
+  // Truth: Euler's formula for a closed genus-0 triangle mesh, T = 2V - 4, so the search's entries
+  // (8 bytes a midpoint, 3T midpoints) take 48V - 96 bytes, 96 short of b (32 bytes a node) and the
+  // float x (16); FitScratch::wanted asks for the rest. Placing b and x there changes no value.
+  const Mesh mesh = shadetool::testing::icosphere(7, 0.2).mesh;  // 163,842 vertices, 327,680 triangles
+  const FitElements e = fit_elements(mesh);
+  REQUIRE(e.triangles == 2 * e.nodes - 4);
+  FitScratch spare;
+  spare.wanted = fit_scratch_bytes(e.nodes, 3);
+  CHECK(spare.wanted == 48 * e.nodes);
+  const FitQuadrature q = fit_quadrature(e, mesh.positions, 3, &spare);
+  REQUIRE(8 * q.size() >= (std::size_t(4) << 20));  // handed over
+  CHECK(8 * q.size() == spare.wanted - 96);            // the entries alone are 96 bytes short
+  CHECK(spare.size == spare.wanted);
+  REQUIRE(spare.bytes != nullptr);
+  std::vector<double> f(3 * q.sites());
+  const std::vector<double> x = interpolate_vertex_data_at_sites(q, mesh.positions, 3);
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] = 0.5 + 0.4 * std::sin(3 * x[i]);
+  LeastSquaresFitOptions o;
+  o.accuracy = kEightBitFitAccuracy;
+  o.vectors = FitVectorStorage::Float;
+  o.lower = 0;
+  o.upper = 1;
+  const std::vector<double> point(3 * e.nodes, 0.0);
+  const LeastSquaresFit alone = least_squares_fit(e, mesh.positions, q, f, point, 3, o);
+  o.scratch = &spare;
+  const LeastSquaresFit placed = least_squares_fit(e, mesh.positions, q, f, point, 3, o);
+  CHECK(placed.float_vectors);
+  CHECK(spare.size == 0);  // taken
+  CHECK(placed.values == alone.values);
+}
+
 TEST_CASE("A large mesh's sites (keys recomputed, not stored) are one per edge, numbered by first point",
           "[fit][quadrature]") {
   // Truth: as above, a closed triangle mesh has E = 3T/2 edges and every 3-point-rule point is the

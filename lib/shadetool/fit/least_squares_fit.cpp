@@ -230,7 +230,11 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   // fill was two passes over 12 MB each. One block of bytes, the two arrays placed in it, handed
   // to `spare` after (FitScratch).
   const std::size_t entries = offset[V];
-  std::unique_ptr<std::byte[]> block(new std::byte[2 * entries * sizeof(std::uint32_t)]);
+  // handed over (below) from 4 MiB: then at least the bytes the caller wants (FitScratch::wanted)
+  const std::size_t entry_bytes = 2 * entries * sizeof(std::uint32_t);
+  const bool hand_over = spare && entry_bytes >= (std::size_t(4) << 20);
+  const std::size_t block_bytes = hand_over ? std::max(entry_bytes, spare->wanted) : entry_bytes;
+  std::unique_ptr<std::byte[]> block(new std::byte[block_bytes]);
   std::uint32_t* const entry_hi = ::new (static_cast<void*>(block.get())) std::uint32_t[entries];
   std::uint32_t* const entry_site =
       ::new (static_cast<void*>(block.get() + entries * sizeof(std::uint32_t))) std::uint32_t[entries];
@@ -279,9 +283,9 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   // The entries are read no more: handed over when they are worth keeping (4 MiB and more: 1M
   // triangles hold 24 MB; kept alive below that, a block only moves the allocator's later
   // choices, which measured slower on the 10k torus), else freed here as before.
-  if (spare && 2 * entries * sizeof(std::uint32_t) >= (std::size_t(4) << 20)) {
+  if (hand_over) {
     spare->bytes = std::move(block);
-    spare->size = 2 * entries * sizeof(std::uint32_t);
+    spare->size = block_bytes;
   }
 }
 

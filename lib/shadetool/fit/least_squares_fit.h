@@ -214,10 +214,21 @@ struct FitQuadrature {
 // triangles and 3 points) when they take 4 MiB or more (none for rules without midpoints);
 // least_squares_fit places b (and the float path's x) in them when they are large enough
 // (LeastSquaresFitOptions::scratch), and frees them otherwise.
+// wanted (in, set by the caller before fit_quadrature): the bytes the next step would place in
+// them (fit_scratch_bytes); when the entries are handed over the block is made at least that large.
+// The entries take 8 bytes x 3T = 48V - 96 on a closed genus-0 triangle mesh (T = 2V - 4), 96
+// bytes short of b and the float x (48 a node): without it the 1M-triangle sphere's x took fresh
+// pages. Bytes past the entries are untouched until used (no page is faulted in for them).
 struct FitScratch {
   std::unique_ptr<std::byte[]> bytes;
-  std::size_t size = 0;  // bytes
+  std::size_t size = 0;    // bytes
+  std::size_t wanted = 0;  // bytes (in)
 };
+// What least_squares_fit places in a FitScratch for `nodes` nodes and `width` channels: b (double,
+// 3 channels in 4 lanes) and, for 3 channels, the float path's x (4 bytes a lane).
+inline std::size_t fit_scratch_bytes(std::size_t nodes, std::size_t width) {
+  return width == 3 ? nodes * 4 * (sizeof(double) + sizeof(float)) : nodes * width * sizeof(double);
+}
 
 // positions: #V by 3 (the space the area is measured in: world, for lighting). samples: 1, 3, 6, 12
 // (Error otherwise). spare: non-null, receives the site search's spent memory (FitScratch).

@@ -120,7 +120,8 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
   const std::vector<double> positions_placed = placed ? world_positions(mesh, scene) : std::vector<double>();
   const std::vector<double>& positions_world = placed ? positions_placed : mesh.positions;
   const FitElements elements = fit_elements(mesh);
-  FitScratch spent;  // the site search's memory, for the solve's b (least_squares_fit.h, FitScratch)
+  FitScratch spent;  // the site search's memory, for the solve's b and x (least_squares_fit.h, FitScratch)
+  spent.wanted = fit_scratch_bytes(elements.nodes, 3);
   const FitQuadrature q = fit_quadrature(elements, positions_world, fit.samples, &spent);
   out.quadrature_points = q.size();
   std::vector<double> f =  // at the sites: least_squares_fit and relative_l2_error read it per site
