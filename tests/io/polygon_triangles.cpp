@@ -110,6 +110,19 @@ TEST_CASE("polygon_triangles: concave outlines are covered once, inside, none tu
   check_cover(star, order, 5 * 1.0 * 0.4 * std::sin(M_PI / 5));
 }
 
+TEST_CASE("polygon_triangles: a concave quad (a dart) from each of its corners, and a convex one, by the quad path", "[io][polygon_triangles]") {
+  // Dart (0,0) (2,1) (0,2) (0.5,1), reflex at (0.5,1): shoelace area (0 + 4 - 1 + 0) / 2 = 1.5.
+  const std::vector<std::array<double, 2>> dart{{0, 0}, {2, 1}, {0, 2}, {0.5, 1}};
+  for (std::uint32_t r = 0; r < 4; ++r) check_cover(dart, {r, (r + 1) % 4, (r + 2) % 4, (r + 3) % 4}, 1.5);
+  // A convex quad: the fan from corner 0, area by shoelace (0 + 6 + 2 - 0) / 2 = 4.
+  const std::vector<std::array<double, 2>> quad{{0, 0}, {3, 0}, {2, 2}, {0, 1}};
+  check_cover(quad, {0, 1, 2, 3}, 4.0);
+  const Planar p = place(quad, {0, 1, 2, 3}, 0, false);
+  std::vector<std::uint32_t> tri;
+  polygon_triangles(p.positions.data(), p.corners.data(), 4, tri);
+  CHECK(tri == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
+}
+
 TEST_CASE("polygon_triangles: a square with a square hole joined by a bridge (repeated vertices) is covered around the hole", "[io][polygon_triangles]") {
   // blender_minimal/keyhole.obj: outer 4 x 4, hole 2 x 2, area 16 - 4 = 12; corners 0 and 4 repeat.
   const std::vector<std::array<double, 2>> uv{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {3, 1}, {3, 3}, {1, 3}};

@@ -35,16 +35,19 @@ void fan(const std::vector<std::uint32_t>& idx, std::vector<std::uint32_t>& out)
 
 void polygon_triangles(const double* positions, const std::uint32_t* corners, std::uint32_t n,
                        std::vector<std::uint32_t>& out) {
-  std::vector<std::uint32_t> remaining(n);
-  for (std::uint32_t k = 0; k < n; ++k) remaining[k] = k;
   if (n < 3) return;
   if (n == 3) {
-    fan(remaining, out);
+    out.insert(out.end(), {0u, 1u, 2u});
     return;
   }
   const Vec3d N = newell_area_vector(positions, corners, n);
   const double ax = std::fabs(N.x), ay = std::fabs(N.y), az = std::fabs(N.z);
+  // Scratch reused across calls (a writer calls this once per face): no allocation per polygon.
+  thread_local std::vector<std::uint32_t> remaining;
+  thread_local std::vector<P2> p;
   if (!(std::isfinite(ax) && std::isfinite(ay) && std::isfinite(az)) || (ax == 0 && ay == 0 && az == 0)) {
+    remaining.resize(n);
+    for (std::uint32_t k = 0; k < n; ++k) remaining[k] = k;
     fan(remaining, out);  // no plane to clip in: the fan from corner 0
     return;
   }
@@ -53,10 +56,24 @@ void polygon_triangles(const double* positions, const std::uint32_t* corners, st
   const int drop = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
   const double sign = drop == 0 ? N.x : drop == 1 ? N.y : N.z;
   const int u = (drop + 1) % 3, v = (drop + 2) % 3;
-  std::vector<P2> p(n);
-  for (std::uint32_t k = 0; k < n; ++k) {
+  auto project = [&](std::uint32_t k) {
     const double* q = positions + 3 * std::size_t(corners[k]);
-    p[k] = sign > 0 ? P2{q[u], q[v]} : P2{q[v], q[u]};
+    return sign > 0 ? P2{q[u], q[v]} : P2{q[v], q[u]};
+  };
+  if (n == 4) {  // the common quad: the fan when both its triangles turn as the quad
+    const P2 q0 = project(0), q1 = project(1), q2 = project(2), q3 = project(3);
+    // turn(0,2,3) > 0 puts corner 3 outside triangle (0,1,2): the ear clipping below would cut
+    // corner 1 first and leave (0,2,3), the same triangles.
+    if (turn(q0, q1, q2) > 0 && turn(q0, q2, q3) > 0) {
+      out.insert(out.end(), {0u, 1u, 2u, 0u, 2u, 3u});
+      return;
+    }
+  }
+  remaining.resize(n);
+  p.resize(n);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    remaining[k] = k;
+    p[k] = project(k);
   }
   while (remaining.size() > 3) {
     const std::size_t m = remaining.size();
