@@ -321,7 +321,7 @@ void write_stl(const Mesh& mesh, bool binary, ByteSink& out, WriteInfo& info) {
     polygons += mesh.face_size(f) > 3;
   }
   if (triangles > std::numeric_limits<std::uint32_t>::max()) fail("<output>", 0, "too many triangles for STL (more than 2^32)");
-  if (polygons > 0) info.notes.push_back("split " + std::to_string(polygons) + " polygons into triangle fans for STL");
+  if (polygons > 0) info.notes.push_back("split " + std::to_string(polygons) + " polygons into triangles for STL (ear clipping: inside each outline, in its winding)");
   if (mesh.has_vertex_normals() || mesh.has_corner_normals())
     info.notes.push_back("vertex and corner normals not written: STL has only facet normals");
   if (mesh.has_vertex_colors() || mesh.has_face_colors()) info.notes.push_back("colours not written: STL has none");
