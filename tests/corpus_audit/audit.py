@@ -283,6 +283,8 @@ class Audit:
             except Exception as e:
                 self.finding(rel, label, "reread", "read_mesh cannot read our output: %r" % e)
                 continue
+            if oext in (".glb", ".gltf"):
+                points_attributes(out, outp)
             self.check_mesh(rel, label, name, args, kind, A, path, inp, inp_world, in_schema, out, oext, outp, err)
         if glbs and self.validator:
             self.validate(rel, glbs)
@@ -499,6 +501,24 @@ def alias_kept(pr, props):
 def named(err, words):
     low = err.lower()
     return any(w.lower() in low for w in words)
+
+
+def points_attributes(path, parts):
+    """read_mesh reads a glTF POINTS primitive (mode 0, a point cloud) as an empty part with no
+    attributes: name the attributes its JSON gives it (NORMAL, COLOR_n, TEXCOORD_n), so that a point
+    cloud's normals and colours written as glb are not reported as dropped (points.ply, pond.0.ply)."""
+    doc, _ = gltf_check.load(path)
+    for q in parts:
+        m = re.match(r"meshes\[(\d+)\]\.primitives\[(\d+)\]$", q["name"])
+        if not m or q["faces"]:
+            continue
+        prim = doc["meshes"][int(m.group(1))]["primitives"][int(m.group(2))]
+        if prim.get("mode", 4) != 0:
+            continue
+        a = prim.get("attributes", {})
+        q["attributes"] |= ({"normals"} if "NORMAL" in a else set()) | \
+            ({"colors"} if any(k.startswith("COLOR_") for k in a) else set()) | \
+            ({"texcoords"} if any(k.startswith("TEXCOORD_") for k in a) else set())
 
 
 def merge(parts):

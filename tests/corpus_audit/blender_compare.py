@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""blender_compare.py BIN SRC CORPUS OUT [--only REGEX] [--max-bytes N]: what Blender 3.4 shows
+"""blender_compare.py BIN SRC CORPUS OUT [--only REGEX] [--max-bytes N] [--reuse-dump]: what Blender 3.4 shows
 against what shadetool wrote, for corpus files up to N bytes (default 700 kB):
 
   normals  `normals` (authored normals kept) and `normals --recompute --crease 30`, each written as
@@ -126,13 +126,26 @@ def main():
             if r.returncode == 0:
                 jobs.append((rel, "bake-lighting -> " + e, o, "colours"))
     dump = os.path.join(out, "blender_dump.json")
-    subprocess.run(["nice", "-n", "10", blender, "-b", "--factory-startup", "--python", os.path.join(HERE, "blender_dump.py"),
-                    "--", dump] + [j[2] for j in jobs], capture_output=True, text=True, timeout=3600)
+    reuse = "--reuse-dump" in args and os.path.exists(dump)  # re-compare the last Blender import (harness work)
+    if os.path.exists(dump) and not reuse:
+        os.remove(dump)  # a dump of an earlier run must not stand in for this one
+    r = subprocess.CompletedProcess([], 0, "", "") if reuse else subprocess.run(["nice", "-n", "10", blender, "-b", "--factory-startup", "--python", os.path.join(HERE, "blender_dump.py"),
+                        "--", dump] + [j[2] for j in jobs], capture_output=True, text=True, timeout=3600, env=blender_env())
+    if not os.path.exists(dump):  # Blender died before writing: say how, not a bare FileNotFoundError
+        print("Blender wrote no %s (exit code %d); its last lines:\n%s" % (dump, r.returncode, "\n".join((r.stdout + r.stderr).splitlines()[-20:])))
+        return 2
     seen = json.load(open(dump))
     rows = []
+    known = []  # differences of a class proven to be Blender's with a minimal file: recorded, not findings
     bake_linear = {}
     for rel, label, o, what in jobs:
         b = seen.get(o)
+        m = re.search(r"Extension (\S+) is not available", (b or {}).get("error", ""))
+        if m and m.group(1) in required_extensions(os.path.join(corpus, rel)) and m.group(1) in required_extensions(o):
+            known.append((rel, label, "import", "Blender 3.4 refuses %s, which the input lists in extensionsRequired "
+                          "(kept, as glTF 2.0 3.12 asks): it refuses the input too" % m.group(1)))
+            print("note: %s [%s]: %s" % (rel, label, known[-1][3]))
+            continue
         if b is None or "error" in b:
             rows.append((rel, label, "import", "Blender could not import it: %s" % (b or {}).get("error", "no result")))
             continue
@@ -154,14 +167,18 @@ def main():
         if what == "colours":
             colours = gltf_colours(o) if o.endswith(".glb") else None
             if o.endswith(".obj"):  # `v x y z r g b`: the sRGB-encoded values, as Blender and MeshLab read them
-                obj_rows = [tuple(float(x) for x in l.split()[4:7]) for l in open(o) if l.startswith("v ") and len(l.split()) >= 7]
+                obj_rows = [tuple(float(x) for x in l.split()[4:7]) for l in open(o, encoding="latin-1") if l.startswith("v ") and len(l.split()) >= 7]
                 colours = {"": [tuple(srgb_decode(x) for x in c) for c in obj_rows]} if obj_rows else None
             if o.endswith(".ply"):
                 pc = ply_corner_colours(o)
                 colours = {"": [tuple(srgb_decode(x) for x in c) if pc[1] else c for c in pc[0]]} if pc else None
-        unmatched = off = total = 0
+        unmatched = off = total = off_zero_fan = 0
         worst = 0.0
         for pi, q in enumerate(parts):
+            # positions of the corners of this part's zero-area faces: Blender 3.4's glTF importer
+            # mis-shows the custom normals of the smooth fans that hold one (blender_minimal/)
+            zero_fan = {snap(q["positions"][i], scale) for face in q["faces"] if zero_area([q["positions"][i] for i in face])
+                        for i in face} if what == "normals" and o.endswith(".glb") else set()
             for f, face in enumerate(q["faces"]):
                 P = [q["positions"][i] for i in face]
                 if what == "normals" and zero_area(P):
@@ -170,18 +187,20 @@ def main():
                 if not cands:
                     unmatched += 1
                     continue
+                if len(cands) > 1:  # twins on one key (a face and its mirror closer than the grid): those that pair every corner
+                    unpaired = [corner_pairs(P, c["p"], scale).count(None) for c in cands]
+                    cands = [c for c, u in zip(cands, unpaired) if u == min(unpaired)]
                 if len(cands) == 1:
                     bp = cands[0]
                 elif what == "normals":
                     bp = best_twin(cands, q, f, P, scale)
                 else:  # coincident twins, each with its own vertices: the one whose colours are ours
                     bp = min(cands, key=lambda c: colour_gap(c, colours.get(q.get("source", q["name"])) if colours else None, face, P, scale))
+                pairs = corner_pairs(P, bp["p"], scale)
                 for k, i in enumerate(face):
-                    kp = snap(P[k], scale)
-                    bk = [snap(p, scale) for p in bp["p"]]
-                    if kp not in bk:
+                    j = pairs[k]
+                    if j is None:
                         continue
-                    j = bk.index(kp)
                     if what == "normals":
                         n = read_mesh_corner_normal(q, f, k)
                         if n is None:
@@ -195,6 +214,7 @@ def main():
                         total += 1
                         worst = max(worst, ang)
                         off += ang > 1.0
+                        off_zero_fan += ang > 1.0 and snap(P[k], scale) in zero_fan
                     elif colours is not None and bp["c"] is not None:
                         ours = colours[q.get("source", q["name"])][i]
                         theirs = bp["c"][j]
@@ -202,12 +222,26 @@ def main():
                         total += 1
                         worst = max(worst, d)
                         off += d > 2.0
+        if not b["polygons"]:  # Blender kept no polygon: drops faces with a repeated vertex, else a finding
+            repeated = sum(len(set(f)) < len(f) for q in parts for f in q["faces"])
+            faces = sum(len(q["faces"]) for q in parts)
+            if repeated == faces:  # Blender's PLY importer drops such a polygon (mesh.validate()), its OBJ importer splits it
+                known.append((rel, label, "import", "Blender kept none of our %d faces, each with a repeated vertex: its PLY "
+                              "importer drops such a polygon (blender_minimal/keyhole.ply), the input's own" % faces))
+                print("note: %s [%s]: %s" % (rel, label, known[-1][3]))
+                continue
+            rows.append((rel, label, "import", "Blender kept none of our %d faces (%d with a repeated vertex)" % (faces, repeated)))
+            continue
         if what == "colours" and (colours is None or all(bp["c"] is None for bp in b["polygons"])):
             rows.append((rel, label, "colours", "colours missing: ours %s, Blender's %s" % (
                 colours is not None, any(bp["c"] is not None for bp in b["polygons"]))))
         if unmatched:  # Blender's importers drop faces with a repeated vertex and merge others: a note
             print("note: %s [%s]: %d of our faces not found among Blender's polygons (not compared)" % (rel, label, unmatched))
-        if off:
+        if off and off == off_zero_fan:  # every one at a zero-area face's vertex, in a glb: Blender's class
+            known.append((rel, label, what, "%d of %d corners differ from Blender's (worst %.2f deg), every one at a vertex of a "
+                          "zero-area face: Blender 3.4's glTF custom normals in such a fan (blender_minimal/zero_area_fan.gltf)" % (off, total, worst)))
+            print("note: %s" % known[-1][3])
+        elif off:
             unit = "deg" if what == "normals" else "/255"
             rows.append((rel, label, what, "%d of %d corners differ from Blender's (worst %.2f %s)" % (off, total, worst, unit)))
         print("%s [%s]: %d corners compared, worst %.3g %s" % (rel, label, total, worst, "deg" if what == "normals" else "/255"), flush=True)
@@ -216,22 +250,70 @@ def main():
         for r in rows:
             f.write("\t".join(r) + "\n")
             print("FAIL %s [%s] %s: %s" % r)
+    with open(os.path.join(out, "blender_known.tsv"), "w") as f:  # Blender's own classes, proven by a minimal file
+        f.write("file\tcommand\tcheck\tdetail\n")
+        for r in known:
+            f.write("\t".join(r) + "\n")
+    if known:
+        print("blender: %d outputs differ only where Blender 3.4 is known to (blender_known.tsv)" % len(known))
     print("blender: %d outputs, %d findings" % (len(jobs), len(rows)))
     return 1 if rows else 0
+
+
+def required_extensions(path):
+    """The extensionsRequired of a glTF or glb file, or [] for any other file."""
+    if not path.lower().endswith((".gltf", ".glb")):
+        return []
+    import gltf_check
+    return gltf_check.load(path)[0].get("extensionsRequired", [])
+
+
+def blender_env():
+    """This environment without a pyenv interpreter on PATH: Debian's Blender finds its Python
+    packages (numpy) through the python3 on PATH, and a pyenv one has none (No module named 'numpy')."""
+    env = dict(os.environ)
+    env["PATH"] = os.pathsep.join(d for d in env.get("PATH", "").split(os.pathsep) if ".pyenv" not in d)
+    for k in [k for k in env if k.startswith("PYENV")]:
+        del env[k]
+    return env
 
 
 def best_twin(cands, q, f, P, scale):
     """Of Blender's coincident polygons, the one whose corner normals agree best with ours."""
     def agree(bp):
-        bk = [snap(p, scale) for p in bp["p"]]
+        pairs = corner_pairs(P, bp["p"], scale)
         s = 0.0
         for k in range(len(P)):
             n = read_mesh_corner_normal(q, f, k)
-            kp = snap(P[k], scale)
-            if n is not None and kp in bk:
-                s += sum(a * b for a, b in zip(n, bp["n"][bk.index(kp)]))
+            if n is not None and pairs[k] is not None:
+                s += sum(a * b for a, b in zip(n, bp["n"][pairs[k]]))
         return s
     return max(cands, key=agree)
+
+
+def corner_pairs(P, B, scale):
+    """For each of our corners P[k], the index of Blender's corner of polygon B at its position, or
+    None. Blender's importers keep a polygon's winding but may start it at another corner (the PLY
+    importer rotates faces whose third or fourth index is 0), so the pairing is the cyclic rotation
+    of B nearest to P (least sum of squared distances), each pair within the snap grid. Matching
+    each corner alone by its snapped position pairs the wrong corner when a face has two corners
+    closer than the grid (regr01.obj: corners 0.01 apart in a mesh 1,636 wide, grid 0.016) or at
+    one position (spider.obj's zero-area faces), and reported those as differences."""
+    n = len(P)
+    if len(B) != n:  # Blender split or merged it: pair each corner with its nearest, when on the grid
+        out = []
+        for p in P:
+            d, j = min((sum((a - b) ** 2 for a, b in zip(p, q)), j) for j, q in enumerate(B))
+            out.append(j if d <= scale * scale * 3 else None)
+        return out
+    best = None
+    for r in range(n):
+        d = sum(sum((a - b) ** 2 for a, b in zip(P[k], B[(k + r) % n])) for k in range(n))
+        if best is None or d < best[0]:
+            best = (d, r)
+    r = best[1]
+    return [(k + r) % n if sum((a - b) ** 2 for a, b in zip(P[k], B[(k + r) % n])) <= scale * scale * 3 else None
+            for k in range(n)]
 
 
 def zero_area(P):
@@ -247,12 +329,11 @@ def zero_area(P):
 def colour_gap(bp, ours, face, P, scale):
     if ours is None or bp["c"] is None:
         return 0.0
-    bk = [snap(p, scale) for p in bp["p"]]
+    pairs = corner_pairs(P, bp["p"], scale)
     gap = 0.0
     for k, i in enumerate(face):
-        kp = snap(P[k], scale)
-        if kp in bk:
-            gap += sum(abs(a - b) for a, b in zip(ours[i], bp["c"][bk.index(kp)]))
+        if pairs[k] is not None:
+            gap += sum(abs(a - b) for a, b in zip(ours[i], bp["c"][pairs[k]]))
     return gap
 
 

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstring>
 #include <limits>
+#include <vector>
 
 #include <shadetool/geometry/degenerate_face.h>
 
@@ -92,7 +93,7 @@ TEST_CASE("STL ascii: 9-digit values that are not floats are kept and written ba
   CHECK(read_text(out, Format::Stl).positions == m.positions);
 }
 
-TEST_CASE("STL writer: fans for polygons, computed unit normals, binary layout", "[stl]") {
+TEST_CASE("STL writer: a convex polygon as the fan from corner 0, computed unit normals, binary layout", "[stl]") {
   Mesh m;
   m.add_vertex({0, 0, 0});
   m.add_vertex({2, 0, 0});
@@ -113,7 +114,7 @@ TEST_CASE("STL writer: fans for polygons, computed unit normals, binary layout",
   CHECK(first[2] == 1.0f);
   CHECK(first[9] == 2.0f);  // third corner of the first fan triangle: (2,2,0)
   REQUIRE(wi.notes.size() == 1);
-  CHECK(wi.notes[0] == "split 1 polygons into triangle fans for STL");
+  CHECK(wi.notes[0] == "split 1 polygons into triangles for STL (ear clipping: inside each outline, in its winding)");
   o.binary = false;
   const std::string text = write_mesh_to_memory(m, o);
   CHECK(text.find("facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 2 0 0\nvertex 2 2 0\nendloop\nendfacet\n") !=
@@ -121,6 +122,34 @@ TEST_CASE("STL writer: fans for polygons, computed unit normals, binary layout",
   Mesh back = read_text(text, Format::Stl);
   CHECK(back.num_vertices() == 4);
   CHECK(back.num_faces() == 2);
+}
+
+TEST_CASE("STL writer: a concave polygon is written inside its outline, every facet facing as the polygon", "[stl][polygon_triangles]") {
+  // An L of three unit squares in z = 0, counter-clockwise seen from +z, starting at (0,2): the
+  // fan from corner 0 put its third triangle, (0,2) (2,1) (1,1), outside the L and turned over.
+  // Truth: area 3 (closed form), every facet normal +z, no facet's centroid in the missing square.
+  Mesh m;
+  for (const auto& p : std::vector<std::array<double, 2>>{{0, 2}, {0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}}) m.add_vertex({p[0], p[1], 0});
+  m.add_face({0, 1, 2, 3, 4, 5});
+  WriteOptions o;
+  o.format = Format::Stl;
+  const std::string bin = write_mesh_to_memory(m, o);
+  REQUIRE(bin.size() == 84 + 4 * 50);
+  double area = 0;
+  for (int t = 0; t < 4; ++t) {
+    float f[12];
+    std::memcpy(f, bin.data() + 84 + 50 * t, sizeof f);
+    CHECK(f[0] == 0.0f);
+    CHECK(f[1] == 0.0f);
+    CHECK(f[2] == 1.0f);  // facing +z, as the polygon
+    const double ax = f[6] - f[3], ay = f[7] - f[4], bx = f[9] - f[3], by = f[10] - f[4];
+    const double a = (ax * by - ay * bx) / 2;
+    CHECK(a > 0);  // wound as the polygon
+    area += a;
+    const double gx = (f[3] + f[6] + f[9]) / 3, gy = (f[4] + f[7] + f[10]) / 3;
+    CHECK(!(gx > 1 && gy > 1));  // not in the square the L leaves out
+  }
+  CHECK(area == Approx(3.0));
 }
 
 TEST_CASE("STL: errors", "[stl][errors]") {

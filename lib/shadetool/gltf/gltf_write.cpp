@@ -14,6 +14,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/shading_normals.h>
 #include <shadetool/core/unit_normals.h>
+#include <shadetool/io/polygon_triangles.h>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -469,15 +470,13 @@ struct PrimitiveWriter {
                             io::gltf::primitive_corners_equal(*source, src->indices, src->mode, gp.read_vertices,
                                                               mesh.corner_vertex, gp.json_path, name);
     if (!faces_same) {
-      std::vector<std::uint32_t> idx;
+      std::vector<std::uint32_t> idx, tri;
       idx.reserve(mesh.num_corners());
       for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
         const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-        for (std::uint32_t c = b + 1; c + 1 < e; ++c) {  // polygons as fans (triangles: one)
-          idx.push_back(corner_output[b]);
-          idx.push_back(corner_output[c]);
-          idx.push_back(corner_output[c + 1]);
-        }
+        tri.clear();  // a polygon's triangles inside its outline, in its winding (convex: the fan from corner 0)
+        polygon_triangles(mesh.positions.data(), mesh.corner_vertex.data() + b, e - b, tri);
+        for (const std::uint32_t k : tri) idx.push_back(corner_output[b + k]);
       }
       if (mesh.num_faces() == 0) {
         // A point cloud (no face; the readers keep one, e.g. a PLY with vertices only): POINTS, each

@@ -12,6 +12,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/io/engine/newell_normal.h>
+#include <shadetool/io/polygon_triangles.h>
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/engine/text_encoding.h>
 #include <shadetool/io/engine/text_parse.h>
@@ -320,7 +321,7 @@ void write_stl(const Mesh& mesh, bool binary, ByteSink& out, WriteInfo& info) {
     polygons += mesh.face_size(f) > 3;
   }
   if (triangles > std::numeric_limits<std::uint32_t>::max()) fail("<output>", 0, "too many triangles for STL (more than 2^32)");
-  if (polygons > 0) info.notes.push_back("split " + std::to_string(polygons) + " polygons into triangle fans for STL");
+  if (polygons > 0) info.notes.push_back("split " + std::to_string(polygons) + " polygons into triangles for STL (ear clipping: inside each outline, in its winding)");
   if (mesh.has_vertex_normals() || mesh.has_corner_normals())
     info.notes.push_back("vertex and corner normals not written: STL has only facet normals");
   if (mesh.has_vertex_colors() || mesh.has_face_colors()) info.notes.push_back("colours not written: STL has none");
@@ -338,20 +339,22 @@ void write_stl(const Mesh& mesh, bool binary, ByteSink& out, WriteInfo& info) {
   } else {
     out += "solid shadetool\n";
   }
+  std::vector<std::uint32_t> tri;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const std::uint32_t s = mesh.face_start[f], e = mesh.face_start[f + 1];
-    const Vec3d p0 = mesh.position(mesh.corner_vertex[s]);
-    for (std::uint32_t c = s + 1; c + 1 < e; ++c) {
-      const Vec3d p1 = mesh.position(mesh.corner_vertex[c]);
-      const Vec3d p2 = mesh.position(mesh.corner_vertex[c + 1]);
-      const std::uint32_t v0 = mesh.corner_vertex[s], v1 = mesh.corner_vertex[c], v2 = mesh.corner_vertex[c + 1];
+    tri.clear();  // a polygon's triangles inside its outline, in its winding (convex: the fan from corner 0)
+    if (e - s >= 3) polygon_triangles(mesh.positions.data(), mesh.corner_vertex.data() + s, e - s, tri);
+    for (std::size_t t = 0; t + 2 < tri.size(); t += 3) {
+      const std::uint32_t v0 = mesh.corner_vertex[s + tri[t]], v1 = mesh.corner_vertex[s + tri[t + 1]],
+                          v2 = mesh.corner_vertex[s + tri[t + 2]];
+      const Vec3d p0 = mesh.position(v0), p1 = mesh.position(v1), p2 = mesh.position(v2);
       Vec3d n = face_normals ? get3(mesh.face_normals, f) : triangle_normal(mesh, v0, v1, v2);
       const bool usable = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(n.x == 0 && n.y == 0 && n.z == 0);
       if (face_normals && !usable) {  // a zero or NaN face normal: the triangle's own instead
         n = triangle_normal(mesh, v0, v1, v2);
         ++replaced;
       }
-      if (n.x == 0 && n.y == 0 && n.z == 0) n = newell_normal(mesh, f);  // a fan triangle: its polygon's
+      if (n.x == 0 && n.y == 0 && n.z == 0) n = newell_normal(mesh, f);  // a triangle of no area: its polygon's
       if (n.x == 0 && n.y == 0 && n.z == 0) {  // no area at all: no normal of its own
         n = {0, 0, 1};
         ++no_area;

@@ -1,0 +1,34 @@
+// polygon_triangles.h: the triangles a writer of a triangles-only format (glTF, STL) puts in place
+// of one polygon face, by ear clipping in the polygon's own plane, so that a concave polygon is
+// covered once, inside its outline, with every triangle wound as the polygon is.
+//
+// Inputs:  positions   #V by 3 (double)
+//          corners     the face's n corner vertex indices (n >= 3), as the face lists them
+// Output:  3 (n - 2) indices into `corners` (0..n-1), appended to `out`, one triangle per 3, each
+//          in the polygon's winding. A convex polygon gives the fan from corner 0,
+//          (0,1,2) (0,2,3) ..., exactly the triangles writers wrote before; a triangle gives (0,1,2).
+// Method:  the polygon is projected on the coordinate plane its Newell normal
+//          (geometry/face_area_vector.h) is most nearly perpendicular to, oriented so that the
+//          polygon turns counter-clockwise; then ear clipping (Meisters, "Polygons have ears",
+//          Amer. Math. Monthly 82, 1975): a corner whose turn is convex and whose triangle holds no
+//          other remaining corner is cut off, searching from the second remaining corner each time
+//          (which gives the fan on a convex polygon). A corner at the position of one of the
+//          candidate triangle's corners (the two ends of a bridge to a hole, a repeated vertex) does
+//          not block it. Precision: double (projected 2D cross products, no division).
+// Degenerate input: a polygon whose Newell normal is zero or not finite (no area, collinear, NaN)
+//          has no plane to clip in: the fan from corner 0, as before. When no ear is found among
+//          the remaining corners (a self-intersecting outline), the remaining corners are written as
+//          the fan from the first of them: every corner and the triangle count are kept.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#pragma GCC visibility push(default)  // public API: exported from libshadetool.so
+namespace shadetool {
+
+void polygon_triangles(const double* positions, const std::uint32_t* corners, std::uint32_t n,
+                       std::vector<std::uint32_t>& out);
+
+}  // namespace shadetool
+#pragma GCC visibility pop
