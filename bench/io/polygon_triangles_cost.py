@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""polygon_triangles_cost.py BEFORE AFTER [RUNS] [DIR]: what ear clipping (io/polygon_triangles.h)
+"""polygon_triangles_cost.py BEFORE AFTER [RUNS] [DIR]: what ear clipping (geometry/polygon_triangles.h)
 costs the glTF writer against the fan it replaced, on the common case, a mesh of convex quads.
 
 Writes DIR/quads.obj (a 700 x 700 grid of quads, 490,000 faces, z = 0.05 sin 6x cos 5y) when absent,

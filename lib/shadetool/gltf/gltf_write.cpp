@@ -14,7 +14,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/core/shading_normals.h>
 #include <shadetool/core/unit_normals.h>
-#include <shadetool/io/polygon_triangles.h>
+#include <shadetool/geometry/polygon_triangles.h>
 
 #if defined(__linux__)
 #include <sys/mman.h>

@@ -12,7 +12,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/io/engine/newell_normal.h>
-#include <shadetool/io/polygon_triangles.h>
+#include <shadetool/geometry/polygon_triangles.h>
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/engine/text_encoding.h>
 #include <shadetool/io/engine/text_parse.h>

@@ -1,5 +1,5 @@
 // polygon_triangles.cpp: see polygon_triangles.h.
-#include <shadetool/io/polygon_triangles.h>
+#include <shadetool/geometry/polygon_triangles.h>
 
 #include <cmath>
 

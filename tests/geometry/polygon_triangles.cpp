@@ -1,4 +1,4 @@
-// Tests of io/polygon_triangles.h: the triangles the glTF and STL writers put in place of a polygon.
+// Tests of geometry/polygon_triangles.h: how a polygon is split into triangles (writers, render, occlusion, fit).
 // Truth the code did not produce: the polygon's area by the shoelace formula (closed forms for the
 // shapes below), each triangle's centroid inside the polygon by a crossing-number test, and, on a
 // convex polygon, the fan from corner 0 that the writers wrote before.
@@ -8,10 +8,10 @@
 #include <cmath>
 #include <vector>
 
-#include "io_test_util.h"
+#include "io/io_test_util.h"
 
 #include <shadetool/core/vec3.h>
-#include <shadetool/io/polygon_triangles.h>
+#include <shadetool/geometry/polygon_triangles.h>
 
 using namespace shadetool;
 
@@ -81,7 +81,7 @@ void check_cover(const std::vector<std::array<double, 2>>& uv, const std::vector
 
 }  // namespace
 
-TEST_CASE("polygon_triangles: a convex polygon gives the fan from corner 0 (what the writers wrote before)", "[io][polygon_triangles]") {
+TEST_CASE("polygon_triangles: a convex polygon gives the fan from corner 0 (what the writers wrote before)", "[geometry][polygon_triangles]") {
   std::vector<std::array<double, 2>> hex;
   for (int k = 0; k < 6; ++k) hex.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3)});
   const Planar p = place(hex, {0, 1, 2, 3, 4, 5}, 1, true);
@@ -91,7 +91,7 @@ TEST_CASE("polygon_triangles: a convex polygon gives the fan from corner 0 (what
   check_cover(hex, {0, 1, 2, 3, 4, 5}, 1.5 * std::sqrt(3.0));  // regular hexagon of circumradius 1: (3 sqrt 3 / 2) r^2
 }
 
-TEST_CASE("polygon_triangles: concave outlines are covered once, inside, none turned over", "[io][polygon_triangles]") {
+TEST_CASE("polygon_triangles: concave outlines are covered once, inside, none turned over", "[geometry][polygon_triangles]") {
   // An L of three unit squares, its reflex corner at (1, 1) placed where the fan from corner 0
   // would cut outside it: area 3.
   check_cover({{1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}, {2, 1}}, {0, 1, 2, 3, 4, 5}, 3.0);
@@ -110,7 +110,7 @@ TEST_CASE("polygon_triangles: concave outlines are covered once, inside, none tu
   check_cover(star, order, 5 * 1.0 * 0.4 * std::sin(M_PI / 5));
 }
 
-TEST_CASE("polygon_triangles: a concave quad (a dart) from each of its corners, and a convex one, by the quad path", "[io][polygon_triangles]") {
+TEST_CASE("polygon_triangles: a concave quad (a dart) from each of its corners, and a convex one, by the quad path", "[geometry][polygon_triangles]") {
   // Dart (0,0) (2,1) (0,2) (0.5,1), reflex at (0.5,1): shoelace area (0 + 4 - 1 + 0) / 2 = 1.5.
   const std::vector<std::array<double, 2>> dart{{0, 0}, {2, 1}, {0, 2}, {0.5, 1}};
   for (std::uint32_t r = 0; r < 4; ++r) check_cover(dart, {r, (r + 1) % 4, (r + 2) % 4, (r + 3) % 4}, 1.5);
@@ -123,13 +123,13 @@ TEST_CASE("polygon_triangles: a concave quad (a dart) from each of its corners, 
   CHECK(tri == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
 }
 
-TEST_CASE("polygon_triangles: a square with a square hole joined by a bridge (repeated vertices) is covered around the hole", "[io][polygon_triangles]") {
+TEST_CASE("polygon_triangles: a square with a square hole joined by a bridge (repeated vertices) is covered around the hole", "[geometry][polygon_triangles]") {
   // blender_minimal/keyhole.obj: outer 4 x 4, hole 2 x 2, area 16 - 4 = 12; corners 0 and 4 repeat.
   const std::vector<std::array<double, 2>> uv{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {3, 1}, {3, 3}, {1, 3}};
   check_cover(uv, {0, 1, 2, 3, 0, 4, 7, 6, 5, 4}, 12.0);
 }
 
-TEST_CASE("polygon_triangles: assimp's concave_polygon.obj is covered by 64 triangles of its winding, summing to its Newell area", "[io][polygon_triangles][xcorpus]") {
+TEST_CASE("polygon_triangles: assimp's concave_polygon.obj is covered by 64 triangles of its winding, summing to its Newell area", "[geometry][polygon_triangles][xcorpus]") {
   // The fan from corner 0 gave 29 of the 64 triangles turned over (Blender showed them, glb output).
   ReadInfo info;
   const Mesh m = read_mesh(iotest::data_path("corpus_extra/concave_polygon.obj"), Format::Auto, &info);
