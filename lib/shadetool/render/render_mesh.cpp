@@ -1,4 +1,4 @@
-// render_mesh.cpp: see render_mesh.h. Steps 1-3 (world and clip space, fanning, clipping,
+// render_mesh.cpp: see render_mesh.h. Steps 1-3 (world and clip space, splitting into triangles, clipping,
 // snapping, culling) are here; the tile loop is engine/tile_raster.cpp.
 #include <shadetool/render/render_mesh.h>
 
@@ -17,6 +17,7 @@
 #include <shadetool/render/engine/screen_triangle.h>
 #include <shadetool/render/fill_rule.h>
 #include <shadetool/core/vocabulary.h>
+#include <shadetool/geometry/polygon_triangles.h>
 #include <shadetool/geometry/winding_number.h>
 #include <shadetool/io/split_corner_normals.h>
 
@@ -262,7 +263,7 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
     }
   }
 
-  // 2-3. Fan, clip, snap, cull: fixed chunks of faces in parallel, joined in face order.
+  // 2-3. Split into triangles, clip, snap, cull: fixed chunks of faces in parallel, joined in face order.
   SetupContext ctx;
   ctx.sample_width = options.width * options.samples;
   ctx.sample_height = options.height * options.samples;
@@ -283,6 +284,7 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
     RenderStats& st = part_stats[k];
     SetupContext face_ctx = ctx;
     out.triangles.reserve(kChunk);
+    std::vector<std::uint32_t> split;  // one face's triangles (polygon_triangles), reused
     for (std::size_t f = k * kChunk; f < std::min(F, (k + 1) * kChunk); ++f) {
       const std::size_t size = mesh.face_size(f);
       if (size < 3) {
@@ -292,8 +294,14 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
       const std::uint32_t* corners = mesh.corner_vertex.data() + mesh.face_start[f];
       face_ctx.quad = size == 4;
       bool drawn = false, culled = false, outside = false;
-      for (std::size_t i = 1; i + 1 < size; ++i) {
-        const std::uint32_t v[3] = {corners[0], corners[i], corners[i + 1]};
+      // Triangles as corner positions within the face: a quad by its 0-2 diagonal (its shading is
+      // the bilinear map of all four corners, step 4), 5+ corners by geometry/polygon_triangles.h
+      // (inside the outline, as the glTF and STL writers split it; a convex polygon: the fan).
+      split.clear();
+      if (size == 4) split.insert(split.end(), {0u, 1u, 2u, 0u, 2u, 3u});
+      else polygon_triangles(mesh.positions.data(), corners, std::uint32_t(size), split);
+      for (std::size_t t = 0; t + 2 < split.size(); t += 3) {
+        const std::uint32_t v[3] = {corners[split[t]], corners[split[t + 1]], corners[split[t + 2]]};
         const VertexSetup* const c[3] = {&vertex_setup[v[0]], &vertex_setup[v[1]], &vertex_setup[v[2]]};
         ++st.triangles;
         switch (setup_triangle(face_ctx, std::uint32_t(f), v, c, out)) {

@@ -13,7 +13,9 @@
 //
 // Pipeline (one step per file):
 //   1. positions to world (M) and to clip space (camera.h); normals to world by sign(det) cof(M).
-//   2. faces fanned into triangles from corner 0; quads keep their four corners for shading.
+//   2. faces split into triangles: 5+ corners by geometry/polygon_triangles.h (ear clipping inside the
+//      outline, as the glTF and STL writers write them; a convex polygon: the fan from corner 0),
+//      quads along their 0-2 diagonal, keeping their four corners for shading.
 //   3. per triangle: clipped against near/far/guard band (clip_polygon.h), projected, snapped to
 //      1/256 of a sample (fill_rule.h), back faces culled unless scene.two_sided (orientation
 //      as seen by the camera, times sign(det(V M)): a mirror keeps its outside outside).

@@ -19,7 +19,7 @@ struct ScreenTriangle {
   double inv_w[3];              // 1 / w of each screen vertex (> 0)
   double z[3];                  // z / w (NDC depth)
   std::uint32_t face;
-  std::uint32_t vertex[3];      // mesh vertices of the ORIGINAL (fanned) triangle
+  std::uint32_t vertex[3];      // mesh vertices of the ORIGINAL triangle (of the face split, step 2)
   std::int32_t clip_index;      // -1: screen vertex i is original corner perm[i]; else into clip_b
   std::uint8_t perm[3];
   bool quad;                    // its face is a quad: bilinear interpolation of the 4 corners

@@ -1,0 +1,137 @@
+// Concave polygons of 5+ corners are drawn inside their outline, as the glTF and STL writers
+// write them (geometry/polygon_triangles.h), not as the fan from corner 0, which covers area
+// outside a concave outline and turns triangles over (culled: holes inside it).
+// Truth the renderer did not produce: each polygon's area by the shoelace formula and, per pixel
+// centre, a crossing-number point-in-polygon test, both computed here.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <shadetool/core/math_constants.h>
+#include "render_test_util.h"
+
+using namespace shadetool;
+using namespace shadetool::render_testing;
+
+namespace {
+
+using Outline = std::vector<std::array<double, 2>>;
+
+double shoelace_area(const Outline& p) {
+  double a = 0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto &u = p[k], &v = p[(k + 1) % p.size()];
+    a += u[0] * v[1] - v[0] * u[1];
+  }
+  return a / 2;
+}
+
+bool crossing_inside(const Outline& p, double x, double y) {
+  bool in = false;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto &a = p[k], &b = p[(k + 1) % p.size()];
+    if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))  // divisor: b.y != a.y here
+      in = !in;
+  }
+  return in;
+}
+
+// Distance from (x, y) to the outline's nearest edge.
+double outline_distance(const Outline& p, double x, double y) {
+  double best = 1e300;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto &a = p[k], &b = p[(k + 1) % p.size()];
+    const double ex = b[0] - a[0], ey = b[1] - a[1], len2 = ex * ex + ey * ey;
+    double t = len2 > 0 ? ((x - a[0]) * ex + (y - a[1]) * ey) / len2 : 0.0;  // divisor checked
+    t = std::min(1.0, std::max(0.0, t));
+    best = std::min(best, std::hypot(x - a[0] - t * ex, y - a[1] - t * ey));
+  }
+  return best;
+}
+
+struct Drawn {
+  std::size_t covered = 0;          // pixels drawn
+  std::size_t wrong_far = 0;        // pixels > 1 px from the outline drawn iff outside (or not drawn inside)
+  std::size_t lit_outside = 0;      // pixels outside the outline whose colour is not the background
+  std::size_t lit_outside_far = 0;  // of those, more than 1 px from the outline
+  std::size_t edge = 0;             // pixels within 1 px of the outline (where coverage may go either way)
+  std::size_t exact_mismatch = 0;   // pixels whose coverage differs from the crossing test (any distance)
+};
+
+// The outline as one face z = 0, counter-clockwise seen from the camera (+z), flat-shaded and lit
+// on a black background, back faces culled, one sample per pixel at its centre.
+Drawn draw(const Outline& p, int side) {
+  Mesh m;
+  std::vector<std::uint32_t> face;
+  for (const auto& q : p) {
+    face.push_back(std::uint32_t(m.num_vertices()));
+    m.add_vertex({q[0], q[1], 0});
+  }
+  m.add_face(face);
+  Scene s = pixel_exact_scene(side);
+  RenderOptions o;
+  o.width = o.height = side;
+  o.count_coverage = true;
+  o.shading = RenderShading::Flat;
+  const RenderResult r = render_mesh(m, s, o);
+  Drawn d;
+  for (int row = 0; row < side; ++row)
+    for (int col = 0; col < side; ++col) {
+      const double x = col + 0.5, y = side - row - 0.5;
+      const std::uint32_t c = r.coverage[std::size_t(row) * side + col];
+      const bool in = crossing_inside(p, x, y);
+      const float* rgb = r.image.pixel(col, row);
+      d.covered += c;
+      d.exact_mismatch += (c == 1) != in;
+      const bool near = outline_distance(p, x, y) <= 1.0;
+      if (!in && (rgb[0] != 0 || rgb[1] != 0 || rgb[2] != 0)) {
+        ++d.lit_outside;
+        d.lit_outside_far += !near;
+      }
+      if (near) ++d.edge;
+      else d.wrong_far += (c != (in ? 1u : 0u));
+    }
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("render: a concave polygon covers its outline's area once and nothing outside it", "[render][polygon_triangles]") {
+  // Axis-aligned outlines with integer corners: no pixel centre (x.5) lies on an edge, so the
+  // coverage must be the crossing test pixel for pixel and its count the shoelace area exactly.
+  SECTION("an L hexagon starting where the fan turns a triangle over and crosses the notch") {
+    Outline L;  // 3 squares of 16 px: (1,1) to (2,2) is the notch, corner 0 at (2,1)
+    for (const auto& q : Outline{{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}}) L.push_back({8 + 16 * q[0], 8 + 16 * q[1]});
+    REQUIRE(shoelace_area(L) == 768.0);
+    const Drawn d = draw(L, 48);
+    CHECK(d.covered == 768);
+    CHECK(d.exact_mismatch == 0);
+    CHECK(d.lit_outside == 0);
+  }
+  SECTION("a comb of three teeth, corner 0 at a reflex corner") {
+    Outline comb;  // base 0..5 x 0..1, teeth at x in [0,1], [2,3], [4,5] up to y = 2; area 8 squares of 8 px
+    for (const auto& q : Outline{{3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}})
+      comb.push_back({4 + 8 * q[0], 4 + 8 * q[1]});
+    REQUIRE(shoelace_area(comb) == 512.0);
+    const Drawn d = draw(comb, 48);
+    CHECK(d.covered == 512);
+    CHECK(d.exact_mismatch == 0);
+    CHECK(d.lit_outside == 0);
+  }
+  SECTION("a five-pointed star starting at an inner corner (slanted edges: exact away from them)") {
+    Outline star;
+    for (int k = 1; k <= 10; ++k) {
+      const double r = k % 2 ? 8.0 : 22.0, a = kPi / 2 + k * kPi / 5;
+      star.push_back({24.3 + r * std::cos(a), 23.7 + r * std::sin(a)});
+    }
+    const double area = shoelace_area(star);  // 5 * 22 * 8 * sin 36 deg
+    REQUIRE(area == Approx(5 * 22.0 * 8.0 * std::sin(kPi / 5)));
+    const Drawn d = draw(star, 48);
+    CHECK(d.wrong_far == 0);
+    CHECK(d.lit_outside_far == 0);
+    CHECK(std::fabs(double(d.covered) - area) <= double(d.edge));
+    CHECK(double(d.covered) > 0.9 * area);
+  }
+}
