@@ -9,6 +9,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/geometry/degenerate_face.h>
+#include <shadetool/geometry/polygon_triangles.h>
 #include <shadetool/visibility/engine/embree_scene.h>
 
 namespace shadetool {
@@ -85,20 +86,26 @@ VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl
   }
   // Index buffer: when every face is a kept triangle, the mesh's corner array already is Embree's
   // UINT3 layout and is shared (no copy: 12 B per triangle saved); otherwise (a degenerate face
-  // to leave out, a polygon to fan) a filtered, fanned copy owned here.
+  // to leave out, a polygon to split) a filtered, split copy owned here.
   const bool all_triangles = kept.size() == mesh.num_faces() && corners == 3 * kept.size();
   const std::uint32_t* indices = mesh.corner_vertex.data();
   stats_.triangles = kept.size();
   stats_.shared_indices = all_triangles;
   if (!all_triangles) {
     s.triangles.reserve(3 * (corners - 2 * kept.size()));
+    std::vector<std::uint32_t> split;  // one face's triangles as corner positions, reused
     for (const std::uint32_t f : kept) {
       const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-      for (std::uint32_t c = b + 1; c + 1 < e; ++c) {
-        s.triangles.push_back(mesh.corner_vertex[b]);
-        s.triangles.push_back(mesh.corner_vertex[c]);
-        s.triangles.push_back(mesh.corner_vertex[c + 1]);
+      // Triangles and quads: the fan from corner 0 (a quad on its 0-2 diagonal, as render
+      // rasterises it); 5+ corners: geometry/polygon_triangles.h, inside the outline, as render
+      // draws it and the glTF/STL writers write it (a convex polygon: the same fan).
+      split.clear();
+      if (e - b <= 4) {
+        for (std::uint32_t c = 1; c + 1 < e - b; ++c) split.insert(split.end(), {0u, c, c + 1});
+      } else {
+        polygon_triangles(mesh.positions.data(), mesh.corner_vertex.data() + b, e - b, split);
       }
+      for (const std::uint32_t k : split) s.triangles.push_back(mesh.corner_vertex[b + k]);
     }
     indices = s.triangles.data();
     stats_.triangles = s.triangles.size() / 3;

@@ -5,8 +5,10 @@
 //                outlive the scene with its corner_vertex unchanged (see Memory)
 // Builds:  an Embree triangle scene of the mesh's non-degenerate faces. Degenerate faces by the
 //          library's one rule, geometry/degenerate_face.h (fewer than 3 corners, repeated index,
-//          area vector zero to rounding, non-finite corner) take no part; polygons are fanned (c0, c_i, c_{i+1}) for the BVH only, the mesh is not
-//          touched.
+//          area vector zero to rounding, non-finite corner) take no part; for the BVH only (the mesh is not
+//          touched) quads are fanned (c0, c1, c2) (c0, c2, c3), as render rasterises them, and
+//          polygons of 5+ corners split inside their outline by geometry/polygon_triangles.h, as
+//          render draws them and the glTF/STL writers write them (a convex one: the same fan).
 // Frame:   Embree intersects in float. The BVH holds  local = (p - centre) * 2^-e  rounded once to
 //          float, where centre is the middle of the kept faces' bounding box (in double) and 2^e
 //          is the smallest power of two >= its half extent: |local| <= 1. Centring makes a mesh
@@ -18,7 +20,7 @@
 //          buffer and Embree's BVH. When every face is a non-degenerate triangle the index buffer
 //          IS the mesh's corner_vertex array (shared with Embree, not copied: `shared_indices`),
 //          so the mesh must outlive the scene and its corner_vertex must not change while the
-//          scene exists; otherwise the kept faces, fanned, are copied here (12 B per triangle).
+//          scene exists; otherwise the kept faces, split, are copied here (12 B per triangle).
 //          Then Embree's BVH in its compact layout (RTC_SCENE_FLAG_COMPACT, about
 //          36 B per triangle; bench/visibility/results.md), built in robust mode
 //          (RTC_SCENE_FLAG_ROBUST: watertight, no ray leaks between triangles sharing an edge);
@@ -39,7 +41,7 @@ namespace shadetool {
 
 struct VisibilitySceneStats {
   std::size_t faces_used = 0;           // faces in the BVH
-  std::size_t triangles = 0;            // triangles after fanning polygons
+  std::size_t triangles = 0;            // triangles after splitting polygons
   std::size_t degenerate_faces = 0;     // left out: too few corners, repeated index or zero area
   std::size_t nonfinite_faces = 0;      // left out: a NaN or Inf corner
   std::size_t bvh_bytes = 0;            // Embree's allocations for the scene (net, after build)
