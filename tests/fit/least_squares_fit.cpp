@@ -713,9 +713,9 @@ TEST_CASE("The quadrature's triangle areas are the scalar formula's bits, for or
   CHECK(expected.size() < m.num_faces());  // and the flat and NaN ones left out
 }
 
-TEST_CASE("The elements are the faces' fans from corner 0, in face order, also when the corners number 3 per face",
+TEST_CASE("The elements are the faces' triangles (a convex face: the fan from corner 0), in face order, also when the corners number 3 per face",
           "[fit][quadrature]") {
-  // Truth: the fans written out by hand. A mesh of triangles only takes a short way (its corners
+  // Truth: the fans of convex faces written out by hand. A mesh of triangles only takes a short way (its corners
   // are its triangles); a pentagon with two 2-gons also has 3 corners per face on average and must
   // not take it (3 fan triangles, 2 faces skipped), nor a triangle mesh with corner groups.
   Mesh tris;
@@ -752,14 +752,54 @@ TEST_CASE("The elements are the faces' fans from corner 0, in face order, also w
   Mesh mixed = tris;
   mixed.face_start = {0};
   mixed.corner_vertex.clear();
-  mixed.add_face({0, 1, 3, 4, 2});  // a pentagon: fan (0 1 3) (0 3 4) (0 4 2)
+  mixed.add_vertex({1, -1, 0});     // 5: with 0, 3, 4, 1 a convex pentagon (every turn checked by hand > 0)
+  mixed.add_face({0, 5, 3, 4, 1});  // convex: its triangles are the fan (0 5 3) (0 3 4) (0 4 1)
   mixed.add_face({1, 2});
   mixed.add_face({3, 4});
   REQUIRE(mixed.num_corners() == 3 * mixed.num_faces());
   const FitElements b = fit_elements(mixed);
-  CHECK(vertices_of(b) == std::vector<std::uint32_t>{0, 1, 3, 0, 3, 4, 0, 4, 2});
+  CHECK(vertices_of(b) == std::vector<std::uint32_t>{0, 5, 3, 0, 3, 4, 0, 4, 1});
   CHECK(faces_of(b) == std::vector<std::uint32_t>{0, 0, 0});
   CHECK(b.skipped_faces == 2);
+}
+
+TEST_CASE("A concave polygon's elements cover its outline once: their areas sum to its shoelace area, each centroid inside",
+          "[fit][quadrature][polygon_triangles]") {
+  // An L hexagon of three unit squares (notch (1,1)-(2,2)), corner 0 at (2,1), and a comb of
+  // three teeth (area 8), corner 0 at a reflex corner: the fan from corner 0 covers outside them
+  // (L: its triangles' areas sum to 4, not 3) and turns triangles over. Truth: the shoelace area and a
+  // crossing-number test, here.
+  const std::vector<std::vector<std::array<double, 2>>> outlines{
+      {{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}},
+      {{3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}}};
+  for (const auto& p : outlines) {
+    Mesh m;
+    std::vector<std::uint32_t> face;
+    double shoelace = 0;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      face.push_back(m.add_vertex({p[k][0], p[k][1], 0}));
+      shoelace += (p[k][0] * p[(k + 1) % p.size()][1] - p[(k + 1) % p.size()][0] * p[k][1]) / 2;
+    }
+    m.add_face(face);
+    const FitElements e = fit_elements(m);
+    REQUIRE(e.triangles == p.size() - 2);
+    const FitQuadrature q = fit_quadrature(e, m.positions, 1);
+    double sum = 0;
+    for (double a : q.tri_area) sum += a;
+    CHECK(sum == Approx(shoelace).epsilon(1e-14));
+    for (std::size_t t = 0; t < e.triangles; ++t) {
+      const std::uint32_t* v = e.triangle_vertices() + 3 * t;
+      const double x = (p[v[0]][0] + p[v[1]][0] + p[v[2]][0]) / 3, y = (p[v[0]][1] + p[v[1]][1] + p[v[2]][1]) / 3;
+      bool in = false;
+      for (std::size_t k = 0; k < p.size(); ++k) {
+        const auto &a = p[k], &b = p[(k + 1) % p.size()];
+        if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))  // divisor: b.y != a.y here
+          in = !in;
+      }
+      CHECK(in);
+      CHECK((p[v[1]][0] - p[v[0]][0]) * (p[v[2]][1] - p[v[0]][1]) - (p[v[1]][1] - p[v[0]][1]) * (p[v[2]][0] - p[v[0]][0]) > 0);  // wound as the polygon
+    }
+  }
 }
 
 TEST_CASE("The compact quadrature integrates 1 and x over a planar mesh exactly, and skips triangles of no area",

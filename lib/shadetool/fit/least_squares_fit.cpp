@@ -15,6 +15,7 @@
 #include <shadetool/core/error.h>
 #include <shadetool/fit/triangle_quadrature.h>
 #include <shadetool/geometry/face_area_vector.h>
+#include <shadetool/geometry/polygon_triangles.h>
 
 namespace shadetool {
 
@@ -969,6 +970,7 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
   e.quad_vertex.reserve(4 * quads);
   e.quad_node.reserve(4 * quads);
   e.quad_face.reserve(quads);
+  std::vector<std::uint32_t> split;  // one face's triangles as corner positions, reused
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const std::size_t size = mesh.face_size(f), c0 = mesh.face_start[f];
     if (size < 3) {
@@ -983,8 +985,13 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
       e.quad_face.push_back(std::uint32_t(f));
       continue;
     }
-    for (std::size_t i = 1; i + 1 < size; ++i) {  // fan from corner 0, as render draws it
-      for (std::size_t c : {c0, c0 + i, c0 + i + 1}) {
+    // As render draws it: geometry/polygon_triangles.h (inside the outline; a triangle, or a
+    // convex polygon: the fan from corner 0).
+    split.clear();
+    polygon_triangles(mesh.positions.data(), mesh.corner_vertex.data() + c0, std::uint32_t(size), split);
+    for (std::size_t t = 0; t + 2 < split.size(); t += 3) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::size_t c = c0 + split[t + k];
         e.tri_vertex.push_back(mesh.corner_vertex[c]);
         if (own_nodes) e.tri_node.push_back(corner_node[c]);
       }

@@ -4,7 +4,8 @@
 //
 // Objective, per channel:   E(c) = integral over S of (sum_i c_i phi_i(x) - f(x))^2 dA + lambda R(c)
 // phi_i are the hat functions Gouraud interpolation uses (render/render_mesh.h): barycentric on
-// triangles and on the fan (from corner 0) of polygons with 5 or more corners; on quads the
+// triangles and on the triangles of polygons with 5 or more corners (geometry/polygon_triangles.h:
+// inside the outline, as render draws them; a convex polygon: the fan from corner 0); on quads the
 // bilinear weights (1-u)(1-v), u(1-v), uv, (1-u)v of corners 0..3 (the map P(u, v) of
 // render/inverse_bilinear.h; render blends a planar quad exactly so, a non-planar one on its fan).
 // Its minimum solves the normal equations
@@ -17,7 +18,7 @@
 //       its points.
 //   R   the paper's edge-based regulariser (its section on regularisation; the form below is the
 //       one of NVIDIA's optix_prime_baking sample, adapted from P.-P. Sloan's code): for every edge
-//       shared by exactly two triangles T1, T2 (of the fans above; quads on their 0-2 diagonal),
+//       shared by exactly two triangles T1, T2 (of the splits above; quads on their 0-2 diagonal),
 //       the two triangles unfolded into one plane about the edge,
 //           R(c) = sum_edges (A1 + A2)^2 |grad g|T1 - grad g|T2|^2,   g = sum_i c_i phi_i,
 //       zero exactly when g is one linear function across the edge: it penalises kinks, not
@@ -119,7 +120,7 @@ namespace shadetool {
 // elements and stay unchanged) and triangle t is face t. Read the triangles through the accessors.
 struct FitElements {
   std::size_t nodes = 0;
-  std::size_t triangles = 0;                                     // the fans' triangles
+  std::size_t triangles = 0;                                     // the faces' triangles
   std::vector<std::uint32_t> tri_vertex, tri_node, tri_face;     // 3 (or 0), 3 (or 0), 1 (or 0) per triangle
   std::vector<std::uint32_t> quad_vertex, quad_node, quad_face;  // 4, 4, 1 per quad
   std::size_t skipped_faces = 0;                                 // fewer than 3 corners
