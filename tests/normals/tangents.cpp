@@ -3,6 +3,8 @@
 // node or the registry is missing).
 #include <catch2/catch.hpp>
 
+#include <array>
+
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -107,6 +109,34 @@ TEST_CASE("MikkTSpace: an affine texture map on a plane gives dP/du exactly, w t
         CHECK(t.tangents[4 * c + 3] == (det > 0 ? 1.0 : -1.0));
       }
     }
+  }
+}
+
+TEST_CASE("MikkTSpace: a concave polygon of 5+ corners under an affine map gives dP/du and w = +1 at every corner",
+          "[tangents][polygon_triangles]") {
+  // Truth: u = x, v = y on the plane z = 0, normal +z: the tangent is (1, 0, 0) and the map keeps
+  // orientation (w = +1) at every corner. An L hexagon (corner 0 at (2,1), notch (1,1)-(2,2)) and
+  // a comb: the fan from corner 0 turns a triangle over (negative texture area), which flips the
+  // handedness of the corners it alone holds.
+  const std::vector<std::vector<std::array<double, 2>>> outlines{
+      {{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}},
+      {{3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}}};
+  for (const auto& p : outlines) {
+    Mesh m;
+    std::vector<std::uint32_t> face;
+    for (const auto& q : p) {
+      face.push_back(m.add_vertex({q[0], q[1], 0}));
+      m.texcoords.insert(m.texcoords.end(), {q[0], q[1]});
+      m.vertex_normals.insert(m.vertex_normals.end(), {0, 0, 1});
+    }
+    m.add_face(face);
+    m.corner_texcoord_index = m.corner_vertex;
+    const TangentFrames t = mikktspace_tangents(m);
+    REQUIRE(t.tangents.size() == 4 * m.num_corners());
+    std::size_t wrong = 0;
+    for (std::size_t c = 0; c < m.num_corners(); ++c)
+      wrong += !(angle_deg(&t.tangents[4 * c], {1, 0, 0}) < 1e-4) || t.tangents[4 * c + 3] != 1.0;
+    CHECK(wrong == 0);
   }
 }
 

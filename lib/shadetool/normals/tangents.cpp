@@ -12,6 +12,7 @@
 
 #include <shadetool/core/error.h>
 #include <shadetool/core/shading_normals.h>
+#include <shadetool/geometry/polygon_triangles.h>
 #include <shadetool/normals/engine/tangent_corner_terms.h>
 
 namespace shadetool {
@@ -115,6 +116,7 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
     tris.index.push_back(welded[a]), tris.index.push_back(welded[b]), tris.index.push_back(welded[c]);
     tris.face.push_back(f);
   };
+  std::vector<std::uint32_t> split;  // a 5+-gon's triangles as corner positions, reused
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     if (!taken[f]) continue;
     const std::uint32_t b = mesh.face_start[f], n = mesh.face_start[f + 1] - b;
@@ -132,7 +134,11 @@ void make_triangles(const Mesh& mesh, const Corners& in, const std::vector<std::
       if (diagonal_02) { add(fu, b, b + 1, b + 2); add(fu, b, b + 2, b + 3); }
       else { add(fu, b, b + 1, b + 3); add(fu, b + 1, b + 2, b + 3); }
     } else {
-      for (std::uint32_t k = 1; k + 1 < n; ++k) add(fu, b, b + k, b + k + 1);  // fan (not in the reference)
+      // Not in the reference: geometry/polygon_triangles.h, inside the outline, as render draws
+      // the polygon and the glTF writer writes it (a convex polygon: the fan from corner 0).
+      split.clear();
+      polygon_triangles(mesh.positions.data(), mesh.corner_vertex.data() + b, n, split);
+      for (std::size_t t = 0; t + 2 < split.size(); t += 3) add(fu, b + split[t], b + split[t + 1], b + split[t + 2]);
     }
   }
   tris.count = tris.face.size();

@@ -23,8 +23,9 @@
 //
 // The algorithm, step by step as the reference (tangents.cpp names each step):
 //  1. triangles: a quad is split along its shorter diagonal in texture space (ties: in space; still
-//     tied: 0-2); a polygon of 5+ corners, which the reference skips, as a fan from its first
-//     corner (Blender triangulates such polygons before calling MikkTSpace).
+//     tied: 0-2); a polygon of 5+ corners, which the reference skips, by geometry/
+//     polygon_triangles.h (inside its outline, as render draws it; a convex polygon: the fan from
+//     its first corner; Blender triangulates such polygons before calling MikkTSpace).
 //  2. welding: corners with bitwise-equal (as float ==) position, normal and texture coordinate
 //     are one vertex; the mesh's own indices play no part.
 //  3. degenerate triangles (two equal positions) are set aside; a quad with one of them is marked.
