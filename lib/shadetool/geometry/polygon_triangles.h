@@ -1,6 +1,8 @@
-// polygon_triangles.h: the triangles a writer of a triangles-only format (glTF, STL) puts in place
-// of one polygon face, by ear clipping in the polygon's own plane, so that a concave polygon is
-// covered once, inside its outline, with every triangle wound as the polygon is.
+// polygon_triangles.h: the triangles of one polygon face, by ear clipping in the polygon's own
+// plane, so that a concave polygon is covered once, inside its outline, with every triangle wound
+// as the polygon is. The library's one rule for splitting a polygon of 5+ corners: the glTF and
+// STL writers (quads too), render, the occlusion/shadow BVH, the least-squares fit and tangents
+// (those four keep a quad on its 0-2 diagonal: render and the fit shade it bilinearly).
 //
 // Inputs:  positions   #V by 3 (double)
 //          corners     the face's n corner vertex indices (n >= 3), as the face lists them
