@@ -96,7 +96,7 @@ GltfDocument read_gltf(std::string_view bytes, const std::string& name);
 GltfDocument read_gltf(io::FileBytes&& file, const std::string& name);
 
 // A one-primitive document holding `mesh` (positions, normals, colours, texture coordinates;
-// polygons as triangle fans) for writing a non-glTF mesh as glTF: corner and face normals, face
+// polygons as the triangles of geometry/polygon_triangles.h) for writing a non-glTF mesh as glTF: corner and face normals, face
 // colours and per-corner texture coordinates split vertices; texture coordinates become
 // TEXCOORD_0 with v flipped (t' = 1 - t: glTF's origin is the image's top left).
 GltfDocument gltf_document_from_mesh(const Mesh& mesh);

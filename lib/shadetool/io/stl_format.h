@@ -10,8 +10,9 @@
 // rounded, and Mesh::precision follows the digit rule of OBJ (a hint for binary writers).
 // Merging uses an open-addressing hash table in flat arrays (no per-vertex allocation).
 //
-// Writing: binary (default) or ascii; polygons are split into triangle fans (a note says how many
-// polygons); each facet normal is the face normal if the mesh has them, else the unit normal of
+// Writing: binary (default) or ascii; polygons are split into triangles inside their outline
+// (geometry/polygon_triangles.h: ear clipping; a convex polygon gives the fan from corner 0; a note
+// says how many polygons); each facet normal is the face normal if the mesh has them, else the unit normal of
 // the triangle (cross product of its edges, (0,0,0) for a zero-area triangle). Vertex normals,
 // colours and texcoords have no STL form (notes). No vertices are split (split_vertices = 0).
 #pragma once
