@@ -161,3 +161,27 @@ TEST_CASE("polygon_triangles: assimp's concave_polygon.obj is covered by 64 tria
   CHECK(turned == 0);
   CHECK(sum == Approx(area).epsilon(1e-9));
 }
+
+TEST_CASE("polygon_triangles: a convex polygon of many corners takes the O(n) convex test and gives the fan", "[geometry][polygon_triangles]") {
+  // A regular 5,000-gon (every corner turns left, the edge directions go round once): the fan from
+  // corner 0, (0, k, k + 1), and the triangles' areas sum to the polygon's, (n / 2) sin(2 pi / n).
+  const std::uint32_t n = 5000;
+  std::vector<std::array<double, 2>> disc;
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    disc.push_back({std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n)});
+    order.push_back(k);
+  }
+  const Planar p = place(disc, order, 0, false);
+  std::vector<std::uint32_t> tri;
+  polygon_triangles(p.positions.data(), p.corners.data(), n, tri);
+  REQUIRE(tri.size() == 3 * std::size_t(n - 2));
+  std::size_t not_fan = 0;
+  double sum = 0;
+  for (std::uint32_t k = 0; k + 2 < n; ++k) {
+    if (tri[3 * k] != 0 || tri[3 * k + 1] != k + 1 || tri[3 * k + 2] != k + 2) ++not_fan;
+    sum += twice_area(disc[tri[3 * k]], disc[tri[3 * k + 1]], disc[tri[3 * k + 2]]) / 2;
+  }
+  CHECK(not_fan == 0);
+  CHECK(sum == Approx(0.5 * n * std::sin(2 * M_PI / n)).epsilon(1e-12));
+}

@@ -75,6 +75,28 @@ void polygon_triangles(const double* positions, const std::uint32_t* corners, st
     remaining[k] = k;
     p[k] = project(k);
   }
+  // A convex polygon in O(n): every corner turns left (turn > 0) and the edge directions go round
+  // once (turning number 1: the direction enters the half-plane of angles [0, pi) exactly once; a
+  // locally convex closed polygon turning once is convex and simple). Every corner is then an
+  // ear, so the ear clipping below would cut corner 1, then 2, ...: the fan from corner 0. Without
+  // this test that search is O(n^2) on a convex polygon (a 20,000-corner disc took 0.8 s).
+  {
+    auto upper = [](const P2& a, const P2& b) {  // the direction a -> b has its angle in [0, pi)
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      return dy > 0 || (dy == 0 && dx > 0);
+    };
+    bool convex = true;
+    std::uint32_t entries = 0;
+    for (std::uint32_t k = 0; k < n && convex; ++k) {
+      const P2 &a = p[k], &b = p[(k + 1) % n], &c = p[(k + 2) % n];
+      convex = turn(a, b, c) > 0;
+      if (!upper(a, b) && upper(b, c)) ++entries;
+    }
+    if (convex && entries == 1) {
+      fan(remaining, out);
+      return;
+    }
+  }
   while (remaining.size() > 3) {
     const std::size_t m = remaining.size();
     bool clipped = false;
