@@ -22,6 +22,7 @@
 #include <shadetool/fit/vertex_fit.h>
 #include <shadetool/geometry/face_area_vector.h>
 
+#include "geometry/polygon_outlines.h"
 #include "support/analytic_meshes.h"
 
 using namespace shadetool;
@@ -769,34 +770,22 @@ TEST_CASE("A concave polygon's elements cover its outline once: their areas sum 
   // three teeth (area 8), corner 0 at a reflex corner: the fan from corner 0 covers outside them
   // (L: its triangles' areas sum to 4, not 3) and turns triangles over. Truth: the shoelace area and a
   // crossing-number test, here.
-  const std::vector<std::vector<std::array<double, 2>>> outlines{
-      {{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}},
-      {{3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}}};
+  const std::vector<shadetool_test::Outline> outlines{shadetool_test::l_hexagon(), shadetool_test::comb()};
   for (const auto& p : outlines) {
     Mesh m;
     std::vector<std::uint32_t> face;
-    double shoelace = 0;
-    for (std::size_t k = 0; k < p.size(); ++k) {
-      face.push_back(m.add_vertex({p[k][0], p[k][1], 0}));
-      shoelace += (p[k][0] * p[(k + 1) % p.size()][1] - p[(k + 1) % p.size()][0] * p[k][1]) / 2;
-    }
+    for (const auto& q : p) face.push_back(m.add_vertex({q[0], q[1], 0}));
     m.add_face(face);
     const FitElements e = fit_elements(m);
     REQUIRE(e.triangles == p.size() - 2);
     const FitQuadrature q = fit_quadrature(e, m.positions, 1);
     double sum = 0;
     for (double a : q.tri_area) sum += a;
-    CHECK(sum == Approx(shoelace).epsilon(1e-14));
+    CHECK(sum == Approx(shadetool_test::shoelace_area(p)).epsilon(1e-14));
     for (std::size_t t = 0; t < e.triangles; ++t) {
       const std::uint32_t* v = e.triangle_vertices() + 3 * t;
       const double x = (p[v[0]][0] + p[v[1]][0] + p[v[2]][0]) / 3, y = (p[v[0]][1] + p[v[1]][1] + p[v[2]][1]) / 3;
-      bool in = false;
-      for (std::size_t k = 0; k < p.size(); ++k) {
-        const auto &a = p[k], &b = p[(k + 1) % p.size()];
-        if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))  // divisor: b.y != a.y here
-          in = !in;
-      }
-      CHECK(in);
+      CHECK(shadetool_test::crossing_inside(p, x, y));
       CHECK((p[v[1]][0] - p[v[0]][0]) * (p[v[2]][1] - p[v[0]][1]) - (p[v[1]][1] - p[v[0]][1]) * (p[v[2]][0] - p[v[0]][0]) > 0);  // wound as the polygon
     }
   }

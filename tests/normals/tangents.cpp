@@ -20,6 +20,7 @@
 #include <shadetool/files/mesh_files.h>
 #include <shadetool/normals/tangents.h>
 #include <shadetool/normals/update_mesh_normals.h>
+#include "geometry/polygon_outlines.h"
 #include "support/analytic_meshes.h"
 #include "support/mesh_file_list.h"
 #include "support/mikktspace_reference.h"
@@ -118,9 +119,7 @@ TEST_CASE("MikkTSpace: a concave polygon of 5+ corners under an affine map gives
   // orientation (w = +1) at every corner. An L hexagon (corner 0 at (2,1), notch (1,1)-(2,2)) and
   // a comb: the fan from corner 0 turns a triangle over (negative texture area), which flips the
   // handedness of the corners it alone holds.
-  const std::vector<std::vector<std::array<double, 2>>> outlines{
-      {{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}},
-      {{3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}}};
+  const std::vector<shadetool_test::Outline> outlines{shadetool_test::l_hexagon(), shadetool_test::comb()};
   for (const auto& p : outlines) {
     Mesh m;
     std::vector<std::uint32_t> face;

@@ -10,33 +10,15 @@
 #include <vector>
 
 #include <shadetool/core/math_constants.h>
+#include "geometry/polygon_outlines.h"
 #include "render_test_util.h"
 
 using namespace shadetool;
 using namespace shadetool::render_testing;
+using namespace shadetool_test;
 
 namespace {
 
-using Outline = std::vector<std::array<double, 2>>;
-
-double shoelace_area(const Outline& p) {
-  double a = 0;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const auto &u = p[k], &v = p[(k + 1) % p.size()];
-    a += u[0] * v[1] - v[0] * u[1];
-  }
-  return a / 2;
-}
-
-bool crossing_inside(const Outline& p, double x, double y) {
-  bool in = false;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const auto &a = p[k], &b = p[(k + 1) % p.size()];
-    if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))  // divisor: b.y != a.y here
-      in = !in;
-  }
-  return in;
-}
 
 // Distance from (x, y) to the outline's nearest edge.
 double outline_distance(const Outline& p, double x, double y) {
@@ -103,7 +85,7 @@ TEST_CASE("render: a concave polygon covers its outline's area once and nothing 
   // coverage must be the crossing test pixel for pixel and its count the shoelace area exactly.
   SECTION("an L hexagon starting where the fan turns a triangle over and crosses the notch") {
     Outline L;  // 3 squares of 16 px: (1,1) to (2,2) is the notch, corner 0 at (2,1)
-    for (const auto& q : Outline{{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}}) L.push_back({8 + 16 * q[0], 8 + 16 * q[1]});
+    for (const auto& q : l_hexagon()) L.push_back({8 + 16 * q[0], 8 + 16 * q[1]});
     REQUIRE(shoelace_area(L) == 768.0);
     const Drawn d = draw(L, 48);
     CHECK(d.covered == 768);
@@ -111,11 +93,10 @@ TEST_CASE("render: a concave polygon covers its outline's area once and nothing 
     CHECK(d.lit_outside == 0);
   }
   SECTION("a comb of three teeth, corner 0 at a reflex corner") {
-    Outline comb;  // base 0..5 x 0..1, teeth at x in [0,1], [2,3], [4,5] up to y = 2; area 8 squares of 8 px
-    for (const auto& q : Outline{{3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}})
-      comb.push_back({4 + 8 * q[0], 4 + 8 * q[1]});
-    REQUIRE(shoelace_area(comb) == 512.0);
-    const Drawn d = draw(comb, 48);
+    Outline teeth;  // base 0..5 x 0..1, teeth at x in [0,1], [2,3], [4,5] up to y = 2; area 8 squares of 8 px
+    for (const auto& q : comb()) teeth.push_back({4 + 8 * q[0], 4 + 8 * q[1]});
+    REQUIRE(shoelace_area(teeth) == 512.0);
+    const Drawn d = draw(teeth, 48);
     CHECK(d.covered == 512);
     CHECK(d.exact_mismatch == 0);
     CHECK(d.lit_outside == 0);

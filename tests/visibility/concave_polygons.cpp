@@ -11,22 +11,13 @@
 
 #include <shadetool/visibility/shadow_visibility.h>
 #include <shadetool/visibility/visibility_scene.h>
+#include "geometry/polygon_outlines.h"
 
 using namespace shadetool;
+using namespace shadetool_test;
 
 namespace {
 
-using Outline = std::vector<std::array<double, 2>>;
-
-bool crossing_inside(const Outline& p, double x, double y) {
-  bool in = false;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const auto &a = p[k], &b = p[(k + 1) % p.size()];
-    if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))  // divisor: b.y != a.y here
-      in = !in;
-  }
-  return in;
-}
 
 // The outline as a roof, one face at z = 1; points on a grid at z = 0 (cell centres, never under
 // an edge of the integer outlines below), normal +z, asking for a light straight above.
@@ -58,7 +49,7 @@ std::size_t wrong_shadows(const Outline& p, bool reversed) {
 TEST_CASE("occlusion: a concave polygon shadows exactly its outline (open under the notch of an L)", "[visibility][polygon_triangles]") {
   // The L of three unit squares with the notch (1,1)-(2,2), corner 0 at (2,1): the fan from it
   // covers part of the notch (and turns a triangle over across it).
-  const Outline L{{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}};
+  const Outline L = l_hexagon();
   for (bool reversed : {false, true}) {
     CHECK(wrong_shadows(L, reversed) == 0);
     // The point above the notch itself, asked alone.
@@ -73,8 +64,7 @@ TEST_CASE("occlusion: a concave polygon shadows exactly its outline (open under 
   }
   // A comb (base 0..5 x 0..1, teeth 1 high at x in [0,1], [2,3], [4,5]) halved to fit the grid,
   // corner 0 at a reflex corner.
-  Outline comb;
-  for (const auto& q : Outline{{3, 1}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}})
-    comb.push_back({q[0] / 2, q[1] / 2});
-  CHECK(wrong_shadows(comb, false) == 0);
+  Outline teeth;
+  for (const auto& q : comb()) teeth.push_back({q[0] / 2, q[1] / 2});
+  CHECK(wrong_shadows(teeth, false) == 0);
 }
