@@ -16,7 +16,12 @@
 //          other remaining corner is cut off, searching from the second remaining corner each time
 //          (which gives the fan on a convex polygon). A corner at the position of one of the
 //          candidate triangle's corners (the two ends of a bridge to a hole, a repeated vertex) does
-//          not block it. Precision: double (projected 2D cross products, no division).
+//          not block it. Only reflex corners are tested against a candidate (in a simple polygon
+//          no other can be the only one inside), found through a grid over the outline, so a
+//          polygon convex up to rounding costs about O(n) per reflex-dense row instead of O(n^2):
+//          the same ears in the same order as testing every corner. A convex polygon is recognised
+//          in O(n) and given the fan directly. Precision: double (projected 2D cross products; the
+//          grid's cell arithmetic only chooses which corners to test, with a cell of margin).
 // Degenerate input: a polygon whose Newell normal is zero or not finite (no area, collinear, NaN)
 //          has no plane to clip in: the fan from corner 0, as before. When no ear is found among
 //          the remaining corners (a self-intersecting outline), the remaining corners are written as
