@@ -1,6 +1,7 @@
-// Concave polygons of 5+ corners are drawn inside their outline, as the glTF and STL writers
-// write them (geometry/polygon_triangles.h), not as the fan from corner 0, which covers area
-// outside a concave outline and turns triangles over (culled: holes inside it).
+// Concave polygons of 5+ corners and concave quads are drawn inside their outline, as the glTF and
+// STL writers write them (geometry/polygon_triangles.h), not as the fan from corner 0 (a quad: its
+// 0-2 diagonal), which covers area outside a concave outline and turns triangles over (culled:
+// holes inside it).
 // Truth the renderer did not produce: each polygon's area by the shoelace formula and, per pixel
 // centre, a crossing-number point-in-polygon test, both computed here.
 #include <catch2/catch.hpp>
@@ -100,6 +101,24 @@ TEST_CASE("render: a concave polygon covers its outline's area once and nothing 
     CHECK(d.covered == 512);
     CHECK(d.exact_mismatch == 0);
     CHECK(d.lit_outside == 0);
+  }
+  SECTION("a concave quad (a dart) from each of its corners: through its reflex corner, not on 0-2") {
+    // Dart (4,4) (44,24) (4,44) (17,24), reflex at (17,24). Its slanted edges have slopes +-1/2 and
+    // +-20/13, so no pixel centre (x.5, y.5) lies on one: the coverage must be the crossing test
+    // pixel for pixel. On 0-2 with the reflex corner at 1 or 3, the triangle (0,1,2) covers the
+    // notch (lit outside) and (0,2,3) is turned over.
+    const Outline dart{{4, 4}, {44, 24}, {4, 44}, {17, 24}};
+    const double area = shoelace_area(dart);  // (4*24 - 44*4) + (44*44 - 4*24) + (4*24 - 17*44) + (17*4 - 4*24) over 2 = 540
+    REQUIRE(area == 540.0);
+    for (std::size_t r = 0; r < 4; ++r) {
+      Outline q;
+      for (std::size_t k = 0; k < 4; ++k) q.push_back(dart[(r + k) % 4]);  // reflex corner at 3, 2, 1, 0
+      const Drawn d = draw(q, 48);
+      INFO("reflex corner at " << (3 + 4 - r) % 4);
+      CHECK(d.exact_mismatch == 0);
+      CHECK(d.lit_outside == 0);
+      CHECK(std::fabs(double(d.covered) - area) <= double(d.edge));
+    }
   }
   SECTION("a five-pointed star starting at an inner corner (slanted edges: exact away from them)") {
     Outline star;

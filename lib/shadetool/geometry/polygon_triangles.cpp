@@ -26,6 +26,30 @@ bool inside(const P2& p, const P2& a, const P2& b, const P2& c) {
   return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
 }
 
+// The polygon's own plane as a coordinate plane: the axis of its Newell normal's largest component
+// dropped, (u, v) in the order that makes the outline turn counter-clockwise seen from the
+// normal's side. ok is false when the normal is zero or not finite (no plane).
+struct PlaneFrame {
+  bool ok = false;
+  bool swap = false;
+  int u = 0, v = 1;
+  P2 project(const double* q) const { return swap ? P2{q[v], q[u]} : P2{q[u], q[v]}; }
+};
+
+PlaneFrame plane_frame(const double* positions, const std::uint32_t* corners, std::uint32_t n) {
+  const Vec3d N = newell_area_vector(positions, corners, n);
+  const double ax = std::fabs(N.x), ay = std::fabs(N.y), az = std::fabs(N.z);
+  PlaneFrame f;
+  if (!(std::isfinite(ax) && std::isfinite(ay) && std::isfinite(az)) || (ax == 0 && ay == 0 && az == 0)) return f;
+  const int drop = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+  const double sign = drop == 0 ? N.x : drop == 1 ? N.y : N.z;
+  f.ok = true;
+  f.u = (drop + 1) % 3;
+  f.v = (drop + 2) % 3;
+  f.swap = !(sign > 0);
+  return f;
+}
+
 void fan(const std::vector<std::uint32_t>& idx, std::vector<std::uint32_t>& out) {
   for (std::size_t k = 1; k + 1 < idx.size(); ++k) {
     out.push_back(idx[0]);
@@ -181,26 +205,17 @@ void polygon_triangles(const double* positions, const std::uint32_t* corners, st
     out.insert(out.end(), {0u, 1u, 2u});
     return;
   }
-  const Vec3d N = newell_area_vector(positions, corners, n);
-  const double ax = std::fabs(N.x), ay = std::fabs(N.y), az = std::fabs(N.z);
+  const PlaneFrame frame = plane_frame(positions, corners, n);
   // Scratch reused across calls (a writer calls this once per face): no allocation per polygon.
   thread_local std::vector<std::uint32_t> remaining;
   thread_local std::vector<P2> p;
-  if (!(std::isfinite(ax) && std::isfinite(ay) && std::isfinite(az)) || (ax == 0 && ay == 0 && az == 0)) {
+  if (!frame.ok) {
     remaining.resize(n);
     for (std::uint32_t k = 0; k < n; ++k) remaining[k] = k;
     fan(remaining, out);  // no plane to clip in: the fan from corner 0
     return;
   }
-  // Drop the axis of N's largest component; (u, v) in the order that makes the outline turn
-  // counter-clockwise seen from N's side.
-  const int drop = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
-  const double sign = drop == 0 ? N.x : drop == 1 ? N.y : N.z;
-  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
-  auto project = [&](std::uint32_t k) {
-    const double* q = positions + 3 * std::size_t(corners[k]);
-    return sign > 0 ? P2{q[u], q[v]} : P2{q[v], q[u]};
-  };
+  auto project = [&](std::uint32_t k) { return frame.project(positions + 3 * std::size_t(corners[k])); };
   if (n == 4) {  // the common quad: the fan when both its triangles turn as the quad
     const P2 q0 = project(0), q1 = project(1), q2 = project(2), q3 = project(3);
     // turn(0,2,3) > 0 puts corner 3 outside triangle (0,1,2): the ear clipping below would cut
@@ -240,6 +255,16 @@ void polygon_triangles(const double* positions, const std::uint32_t* corners, st
   }
   clip_ears(p, n, out, remaining);
   fan(remaining, out);
+}
+
+bool quad_is_concave(const double* positions, const std::uint32_t* corners) {
+  const PlaneFrame frame = plane_frame(positions, corners, 4);
+  if (!frame.ok) return false;  // no plane: kept on its 0-2 diagonal
+  P2 q[4];
+  for (int k = 0; k < 4; ++k) q[k] = frame.project(positions + 3 * std::size_t(corners[k]));
+  for (int k = 0; k < 4; ++k)
+    if (turn(q[(k + 3) % 4], q[k], q[(k + 1) % 4]) < 0) return true;
+  return false;
 }
 
 }  // namespace shadetool

@@ -1,8 +1,10 @@
 // polygon_triangles.h: the triangles of one polygon face, by ear clipping in the polygon's own
 // plane, so that a concave polygon is covered once, inside its outline, with every triangle wound
 // as the polygon is. The library's one rule for splitting a polygon of 5+ corners: the glTF and
-// STL writers (quads too), render, the occlusion/shadow BVH, the least-squares fit and tangents
-// (those four keep a quad on its 0-2 diagonal: render and the fit shade it bilinearly).
+// STL writers (quads too), render, the occlusion/shadow BVH, the least-squares fit and tangents.
+// Render, the BVH and the fit keep a convex quad on its 0-2 diagonal (render and the fit shade it
+// bilinearly) and split a concave one (quad_is_concave below) by polygon_triangles; tangents keep
+// every quad whole (MikkTSpace chooses its diagonal).
 //
 // Inputs:  positions   #V by 3 (double)
 //          corners     the face's n corner vertex indices (n >= 3), as the face lists them
@@ -36,6 +38,21 @@ namespace shadetool {
 
 void polygon_triangles(const double* positions, const std::uint32_t* corners, std::uint32_t n,
                        std::vector<std::uint32_t>& out);
+
+// quad_is_concave: whether a quad (corners 0..3) turns right at one of its corners in its own
+// plane (the projection polygon_triangles clips in: Newell normal, dominant axis dropped, the
+// outline counter-clockwise). The one test of a concave quad for render, the BVH and the fit:
+//   true   a dart (one reflex corner) or a bowtie (two): its bilinear map folds, so it is not a
+//          valid parametrisation; it is split by polygon_triangles, through its reflex corner (on
+//          1-3 when the reflex corner is 1 or 3, where the 0-2 diagonal lies outside the quad, as
+//          Blender flips it: is_quad_flip_v3_first_third_fast in its mesh tessellation; on 0-2 when
+//          it is 0 or 2), which is what the glTF and STL writers write, and shaded linearly on each
+//          triangle.
+//   false  a convex quad, one with a straight corner (turn exactly 0), or one with no plane (Newell
+//          normal zero or not finite): kept on its 0-2 diagonal with its bilinear map, as before.
+// Inputs: positions #V by 3 (double), corners the quad's 4 vertex indices. Precision: double, the
+// same projected 2D cross products as polygon_triangles (no division).
+bool quad_is_concave(const double* positions, const std::uint32_t* corners);
 
 }  // namespace shadetool
 #pragma GCC visibility pop

@@ -292,13 +292,16 @@ RenderResult render_in_arena(const Mesh& mesh, const Scene& scene, const RenderO
         continue;
       }
       const std::uint32_t* corners = mesh.corner_vertex.data() + mesh.face_start[f];
-      face_ctx.quad = size == 4;
+      // A convex quad keeps its bilinear shading; a concave one (geometry/polygon_triangles.h
+      // quad_is_concave: its bilinear map folds) is two triangles shaded linearly.
+      face_ctx.quad = size == 4 && !quad_is_concave(mesh.positions.data(), corners);
       bool drawn = false, culled = false, outside = false;
-      // Triangles as corner positions within the face: a quad by its 0-2 diagonal (its shading is
-      // the bilinear map of all four corners, step 4), 5+ corners by geometry/polygon_triangles.h
-      // (inside the outline, as the glTF and STL writers split it; a convex polygon: the fan).
+      // Triangles as corner positions within the face: a convex quad by its 0-2 diagonal (its
+      // shading is the bilinear map of all four corners, step 4); a concave quad and 5+ corners by
+      // geometry/polygon_triangles.h (inside the outline, as the glTF and STL writers split it: a
+      // concave quad through its reflex corner; a convex polygon: the fan).
       split.clear();
-      if (size == 4) split.insert(split.end(), {0u, 1u, 2u, 0u, 2u, 3u});
+      if (face_ctx.quad) split.insert(split.end(), {0u, 1u, 2u, 0u, 2u, 3u});
       else polygon_triangles(mesh.positions.data(), corners, std::uint32_t(size), split);
       for (std::size_t t = 0; t + 2 < split.size(); t += 3) {
         const std::uint32_t v[3] = {corners[split[t]], corners[split[t + 1]], corners[split[t + 2]]};

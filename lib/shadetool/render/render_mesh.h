@@ -15,7 +15,10 @@
 //   1. positions to world (M) and to clip space (camera.h); normals to world by sign(det) cof(M).
 //   2. faces split into triangles: 5+ corners by geometry/polygon_triangles.h (ear clipping inside the
 //      outline, as the glTF and STL writers write them; a convex polygon: the fan from corner 0),
-//      quads along their 0-2 diagonal, keeping their four corners for shading.
+//      convex quads along their 0-2 diagonal, keeping their four corners for shading; a concave
+//      quad (polygon_triangles.h quad_is_concave: one corner turning right, its bilinear map folds)
+//      by polygon_triangles, through its reflex corner as the writers and Blender split it, each
+//      triangle shaded linearly as a triangle.
 //   3. per triangle: clipped against near/far/guard band (clip_polygon.h), projected, snapped to
 //      1/256 of a sample (fill_rule.h), back faces culled unless scene.two_sided (orientation
 //      as seen by the camera, times sign(det(V M)): a mirror keeps its outside outside).
@@ -32,7 +35,7 @@
 //                 (float output: --hdr), then interpolated
 //        phong    world position and world normal interpolated, the normal renormalised, the
 //                 lighting equation evaluated at the sample (render/lighting_adapter.h)
-//      quads: the sample's world point through the inverse bilinear map (inverse_bilinear.h) and
+//      convex quads: the sample's world point through the inverse bilinear map (inverse_bilinear.h) and
 //      the four corners' values (colours; for phong positions and normals) blended bilinearly,
 //      so no diagonal seam shows and the image does not depend on the diagonal fanned along;
 //   5. box filter: each pixel is the mean of its N x N samples (strata centres, background where
