@@ -1,4 +1,5 @@
-// The BVH holds a concave polygon of 5+ corners inside its outline (geometry/polygon_triangles.h),
+// The BVH holds a concave polygon of 5+ corners or a concave quad inside its outline
+// (geometry/polygon_triangles.h; a quad through its reflex corner, not on its 0-2 diagonal),
 // as render draws it and the glTF/STL writers write it: a point under the notch of an L hexagon
 // sees the sky straight above it, which the fan from corner 0 covered.
 // Truth the code did not produce: a crossing-number point-in-polygon test, computed here, of
@@ -67,4 +68,19 @@ TEST_CASE("occlusion: a concave polygon shadows exactly its outline (open under 
   Outline teeth;
   for (const auto& q : comb()) teeth.push_back({q[0] / 2, q[1] / 2});
   CHECK(wrong_shadows(teeth, false) == 0);
+}
+
+TEST_CASE("occlusion: a concave quad (a dart) shadows exactly its outline, from each of its corners", "[visibility][polygon_triangles]") {
+  // Dart (0,0) (4,2) (0,4) (1.5,2), reflex at (1.5,2); no grid point (x, y = 0.05 mod 0.1) lies on
+  // an edge (slopes +-1/2, +-4/3). On its 0-2 diagonal with the reflex corner at 1 or 3, the
+  // triangle (0,1,2) roofs the notch between (1.5,2) and the diagonal x = 0 or its turned-over
+  // twin: points there are shadowed though outside the outline.
+  const Outline dart{{0, 0}, {4, 2}, {0, 4}, {1.5, 2}};
+  REQUIRE(shoelace_area(dart) == 5.0);
+  for (std::size_t r = 0; r < 4; ++r) {
+    Outline q;
+    for (std::size_t k = 0; k < 4; ++k) q.push_back(dart[(r + k) % 4]);
+    INFO("reflex corner at " << (3 + 4 - r) % 4);
+    for (bool reversed : {false, true}) CHECK(wrong_shadows(q, reversed) == 0);
+  }
 }

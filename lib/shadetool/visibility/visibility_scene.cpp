@@ -96,11 +96,12 @@ VisibilityScene::VisibilityScene(const Mesh& mesh) : impl_(std::make_unique<Impl
     std::vector<std::uint32_t> split;  // one face's triangles as corner positions, reused
     for (const std::uint32_t f : kept) {
       const std::uint32_t b = mesh.face_start[f], e = mesh.face_start[f + 1];
-      // Triangles and quads: the fan from corner 0 (a quad on its 0-2 diagonal, as render
-      // rasterises it); 5+ corners: geometry/polygon_triangles.h, inside the outline, as render
-      // draws it and the glTF/STL writers write it (a convex polygon: the same fan).
+      // Triangles and convex quads: the fan from corner 0 (a quad on its 0-2 diagonal, as render
+      // rasterises it); a concave quad (geometry/polygon_triangles.h quad_is_concave) and 5+
+      // corners: polygon_triangles, inside the outline, as render draws it and the glTF/STL
+      // writers write it (a concave quad through its reflex corner; a convex polygon: the fan).
       split.clear();
-      if (e - b <= 4) {
+      if (e - b <= 3 || (e - b == 4 && !quad_is_concave(mesh.positions.data(), mesh.corner_vertex.data() + b))) {
         for (std::uint32_t c = 1; c + 1 < e - b; ++c) split.insert(split.end(), {0u, c, c + 1});
       } else {
         polygon_triangles(mesh.positions.data(), mesh.corner_vertex.data() + b, e - b, split);

@@ -6,9 +6,11 @@
 // Builds:  an Embree triangle scene of the mesh's non-degenerate faces. Degenerate faces by the
 //          library's one rule, geometry/degenerate_face.h (fewer than 3 corners, repeated index,
 //          area vector zero to rounding, non-finite corner) take no part; for the BVH only (the mesh is not
-//          touched) quads are fanned (c0, c1, c2) (c0, c2, c3), as render rasterises them, and
-//          polygons of 5+ corners split inside their outline by geometry/polygon_triangles.h, as
-//          render draws them and the glTF/STL writers write them (a convex one: the same fan).
+//          touched) convex quads are fanned (c0, c1, c2) (c0, c2, c3), as render rasterises them,
+//          and concave quads (polygon_triangles.h quad_is_concave) and polygons of 5+ corners
+//          split inside their outline by geometry/polygon_triangles.h, as render draws them and
+//          the glTF/STL writers write them (a concave quad through its reflex corner; a convex
+//          polygon: the same fan).
 // Frame:   Embree intersects in float. The BVH holds  local = (p - centre) * 2^-e  rounded once to
 //          float, where centre is the middle of the kept faces' bounding box (in double) and 2^e
 //          is the smallest power of two >= its half extent: |local| <= 1. Centring makes a mesh
