@@ -955,8 +955,9 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
   bool every_face_a_triangle = true;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const std::size_t size = mesh.face_size(f);
-    quads += size == 4;
-    triangles += size >= 3 && size != 4 ? size - 2 : 0;
+    const bool quad = size == 4 && !quad_is_concave(mesh.positions.data(), mesh.corner_vertex.data() + mesh.face_start[f]);
+    quads += quad;
+    triangles += size >= 3 && !quad ? size - 2 : 0;
     every_face_a_triangle = every_face_a_triangle && size == 3;
   }
   e.triangles = triangles;
@@ -977,7 +978,9 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
       ++e.skipped_faces;
       continue;
     }
-    if (size == 4) {
+    // A convex quad by its bilinear map; a concave one (geometry/polygon_triangles.h
+    // quad_is_concave: the map folds) as two triangles, below.
+    if (size == 4 && !quad_is_concave(mesh.positions.data(), mesh.corner_vertex.data() + c0)) {
       for (std::size_t j = 0; j < 4; ++j) {
         e.quad_vertex.push_back(mesh.corner_vertex[c0 + j]);
         e.quad_node.push_back(node_of(c0 + j));
@@ -986,7 +989,7 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
       continue;
     }
     // As render draws it: geometry/polygon_triangles.h (inside the outline; a triangle, or a
-    // convex polygon: the fan from corner 0).
+    // convex polygon: the fan from corner 0; a concave quad through its reflex corner).
     split.clear();
     polygon_triangles(mesh.positions.data(), mesh.corner_vertex.data() + c0, std::uint32_t(size), split);
     for (std::size_t t = 0; t + 2 < split.size(); t += 3) {

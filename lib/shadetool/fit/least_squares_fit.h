@@ -4,8 +4,9 @@
 //
 // Objective, per channel:   E(c) = integral over S of (sum_i c_i phi_i(x) - f(x))^2 dA + lambda R(c)
 // phi_i are the hat functions Gouraud interpolation uses (render/render_mesh.h): barycentric on
-// triangles and on the triangles of polygons with 5 or more corners (geometry/polygon_triangles.h:
-// inside the outline, as render draws them; a convex polygon: the fan from corner 0); on quads the
+// triangles and on the triangles of polygons with 5 or more corners and of concave quads
+// (geometry/polygon_triangles.h: inside the outline, as render draws them; a convex polygon: the
+// fan from corner 0; a concave quad, quad_is_concave, through its reflex corner); on convex quads the
 // bilinear weights (1-u)(1-v), u(1-v), uv, (1-u)v of corners 0..3 (the map P(u, v) of
 // render/inverse_bilinear.h; render blends a planar quad exactly so, a non-planar one on its fan).
 // Its minimum solves the normal equations
