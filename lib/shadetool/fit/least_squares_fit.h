@@ -19,8 +19,8 @@
 //       its points.
 //   R   the paper's edge-based regulariser (its section on regularisation; the form below is the
 //       one of NVIDIA's optix_prime_baking sample, adapted from P.-P. Sloan's code): for every edge
-//       shared by exactly two triangles T1, T2 (of the splits above; quads on their 0-2 diagonal),
-//       the two triangles unfolded into one plane about the edge,
+//       shared by exactly two triangles T1, T2 (of the splits above; convex quads on their 0-2
+//       diagonal), the two triangles unfolded into one plane about the edge,
 //           R(c) = sum_edges (A1 + A2)^2 |grad g|T1 - grad g|T2|^2,   g = sum_i c_i phi_i,
 //       zero exactly when g is one linear function across the edge: it penalises kinks, not
 //       slopes, so a linear signal is still reproduced exactly. (A1 + A2)^2 |grad|^2 has the units of

@@ -18,12 +18,13 @@
 //          other remaining corner is cut off, searching from the second remaining corner each time
 //          (which gives the fan on a convex polygon). A corner at the position of one of the
 //          candidate triangle's corners (the two ends of a bridge to a hole, a repeated vertex) does
-//          not block it. Only reflex corners are tested against a candidate (in a simple polygon
-//          no other can be the only one inside), found through a grid over the outline, so a
-//          polygon convex up to rounding costs about O(n) per reflex-dense row instead of O(n^2):
-//          the same ears in the same order as testing every corner. A convex polygon is recognised
-//          in O(n) and given the fan directly. Precision: double (projected 2D cross products; the
-//          grid's cell arithmetic only chooses which corners to test, with a cell of margin).
+//          not block it. Only reflex corners (turn <= 0) are tested against a candidate (in a
+//          simple polygon, when any corner lies in a candidate's triangle a reflex one does too),
+//          found through a grid over the outline (the cells the candidate crosses): the same ears
+//          in the same order as testing every corner, without its O(n) per ear on a polygon convex
+//          up to rounding (bench/geometry/results.md). A convex polygon is recognised in O(n) and
+//          given the fan directly. Precision: double (projected 2D cross products; the grid's cell
+//          arithmetic only chooses which corners to test, with a cell of margin).
 // Degenerate input: a polygon whose Newell normal is zero or not finite (no area, collinear, NaN)
 //          has no plane to clip in: the fan from corner 0, as before. When no ear is found among
 //          the remaining corners (a self-intersecting outline), the remaining corners are written as

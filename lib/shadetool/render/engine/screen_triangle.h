@@ -22,7 +22,7 @@ struct ScreenTriangle {
   std::uint32_t vertex[3];      // mesh vertices of the ORIGINAL triangle (of the face split, step 2)
   std::int32_t clip_index;      // -1: screen vertex i is original corner perm[i]; else into clip_b
   std::uint8_t perm[3];
-  bool quad;                    // its face is a quad: bilinear interpolation of the 4 corners
+  bool quad;                    // its face is a convex quad: bilinear interpolation of the 4 corners
   std::int32_t sx0, sx1, sy0, sy1;  // sample bounds, inclusive (may be empty: sx0 > sx1)
 };
 
