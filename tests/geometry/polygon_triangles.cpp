@@ -382,3 +382,36 @@ TEST_CASE("polygon_triangles: the reflex-corner ear search cuts exactly the ears
   CHECK(not_simple < 100);  // most random outlines are compared
   CHECK(d == 0);
 }
+
+TEST_CASE("quad_is_concave: a dart in any corner order, plane and winding is concave and split through its reflex corner; convex, straight-cornered and flat quads are not", "[geometry][polygon_triangles]") {
+  // Dart (0,0) (2,1) (0,2) (0.5,1): its reflex corner (0.5,1) is inside the triangle of the other
+  // three (by construction). Split through it: on 1-3 when it is corner 1 or 3 (the 0-2 diagonal
+  // lies outside the dart, where Blender flips the split too), on 0-2 when it is corner 0 or 2.
+  const std::vector<std::array<double, 2>> dart{{0, 0}, {2, 1}, {0, 2}, {0.5, 1}};
+  for (std::uint32_t r = 0; r < 4; ++r)
+    for (int plane = 0; plane < 3; ++plane)
+      for (bool mirror : {false, true}) {
+        const std::vector<std::uint32_t> order{r, (r + 1) % 4, (r + 2) % 4, (r + 3) % 4};
+        const Planar p = place(dart, order, plane, mirror);
+        const std::uint32_t reflex = (3 + 4 - r) % 4;  // the position of dart corner 3 in `order`
+        INFO("reflex corner at " << reflex << ", plane " << plane << (mirror ? ", mirrored" : ""));
+        CHECK(quad_is_concave(p.positions.data(), p.corners.data()));
+        std::vector<std::uint32_t> tri;
+        polygon_triangles(p.positions.data(), p.corners.data(), 4, tri);
+        REQUIRE(tri.size() == 6);
+        const std::uint32_t a = reflex % 2 ? 1 : 0, b = a + 2;  // the diagonal through the reflex corner
+        for (int t = 0; t < 2; ++t) {
+          const std::uint32_t* x = &tri[3 * t];
+          CHECK(((x[0] == a || x[1] == a || x[2] == a) && (x[0] == b || x[1] == b || x[2] == b)));  // both triangles hold the diagonal
+        }
+      }
+  const std::vector<std::array<double, 2>> convex{{0, 0}, {3, 0}, {2, 2}, {0, 1}};
+  const std::vector<std::array<double, 2>> straight{{0, 0}, {1, 0}, {2, 0}, {1, 1}};  // corner 1 on the edge 0-2
+  const std::vector<std::array<double, 2>> flat{{0, 0}, {1, 0}, {2, 0}, {3, 0}};      // no plane
+  for (const auto* q : {&convex, &straight, &flat})
+    for (int plane = 0; plane < 3; ++plane)
+      for (bool mirror : {false, true}) {
+        const Planar p = place(*q, {0, 1, 2, 3}, plane, mirror);
+        CHECK_FALSE(quad_is_concave(p.positions.data(), p.corners.data()));
+      }
+}
