@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <shadetool/core/math_constants.h>
+#include <shadetool/lighting/bake_lighting.h>
 #include "geometry/polygon_outlines.h"
 #include "render_test_util.h"
 
@@ -133,5 +134,63 @@ TEST_CASE("render: a concave polygon covers its outline's area once and nothing 
     CHECK(d.lit_outside_far == 0);
     CHECK(std::fabs(double(d.covered) - area) <= double(d.edge));
     CHECK(double(d.covered) > 0.9 * area);
+  }
+}
+
+TEST_CASE("render: a concave quad is shaded linearly on each triangle through its reflex corner (Gouraud)", "[render][polygon_triangles]") {
+  // The dart of the coverage test with a different normal at each corner, Gouraud-shaded,
+  // orthographic (screen-affine = affine on the face): every covered pixel's colour must be the
+  // linear interpolation of the corners' baked colours over the triangle (k, k+1, k+2) or
+  // (k, k+2, k+3) through the reflex corner k that holds the pixel centre, the barycentric
+  // coordinates computed here. The bilinear map of corners 0..3 (which folds on a dart) blends the
+  // four colours otherwise.
+  const Outline dart{{4, 4}, {44, 24}, {4, 44}, {17, 24}};
+  const double normals[4][3] = {{0.3, 0, 1}, {-0.2, 0.4, 1}, {0, -0.5, 1}, {0.6, 0.5, 1}};
+  for (std::size_t r = 0; r < 4; ++r) {
+    Mesh m;
+    Outline q;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t c = (r + k) % 4;
+      q.push_back(dart[c]);
+      m.add_vertex({dart[c][0], dart[c][1], 0});
+      const double* n = normals[c];
+      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);  // > 1 (n.z = 1)
+      m.vertex_normals.insert(m.vertex_normals.end(), {n[0] / len, n[1] / len, n[2] / len});
+    }
+    m.add_face({0, 1, 2, 3});
+    const std::size_t reflex = (3 + 4 - r) % 4;
+    const Scene s = pixel_exact_scene(48);
+    RenderOptions o;
+    o.width = o.height = 48;
+    o.count_coverage = true;
+    o.shading = RenderShading::Gouraud;
+    o.clamp_vertex_colors = false;
+    const RenderResult img = render_mesh(m, s, o);
+    const std::vector<double> baked = bake_lighting(m, s, ShadingFrequency::PerVertex).rgb;
+    std::size_t checked = 0, wrong = 0;
+    for (int row = 0; row < 48; ++row)
+      for (int col = 0; col < 48; ++col) {
+        if (img.coverage[std::size_t(row) * 48 + col] == 0) continue;
+        const double x = col + 0.5, y = 48 - row - 0.5;
+        for (std::size_t t = 0; t < 2; ++t) {
+          const std::size_t v[3] = {reflex, (reflex + 1 + t) % 4, (reflex + 2 + t) % 4};
+          const auto &a = q[v[0]], &b = q[v[1]], &c = q[v[2]];
+          const double d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);  // > 0: the dart's triangles turn left
+          const double l1 = ((x - a[0]) * (c[1] - a[1]) - (y - a[1]) * (c[0] - a[0])) / d;  // divisor: d != 0 (a triangle of the dart)
+          const double l2 = ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])) / d;
+          const double l0 = 1 - l1 - l2;
+          if (l0 < 0 || l1 < 0 || l2 < 0) continue;  // not in this triangle
+          ++checked;
+          const float* px = img.image.pixel(col, row);
+          for (int ch = 0; ch < 3; ++ch) {
+            const double want = l0 * baked[3 * v[0] + ch] + l1 * baked[3 * v[1] + ch] + l2 * baked[3 * v[2] + ch];
+            wrong += !(std::fabs(px[ch] - want) <= 1e-5);
+          }
+          break;
+        }
+      }
+    INFO("reflex corner at " << reflex);
+    CHECK(checked > 500);  // every covered pixel lies in one of the two triangles (540 in all)
+    CHECK(wrong == 0);
   }
 }
