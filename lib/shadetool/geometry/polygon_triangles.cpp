@@ -74,7 +74,7 @@ void fan(const std::vector<std::uint32_t>& idx, std::vector<std::uint32_t>& out)
 //   The grid: the reflex corners bucketed in about one cell per reflex corner over the outline's
 //   bounding box; a candidate visits, row by row, the cells its triangle crosses, widened by one
 //   cell each way (a corner's cell and the triangle's extent are computed with rounding far
-//   smaller than a cell; an axis whose cells would be within 1e-6 of the coordinates' size has one
+//   smaller than a cell: an axis whose cells would be within 1e-9 of the coordinates' size has one
 //   cell). Entries of corners cut or turned convex are unlinked when met.
 // Output: the triangles cut, appended to `out`; `rest` the corners left (3, or more when no ear is
 // found: a self-intersecting outline), in corner order.
@@ -101,7 +101,7 @@ void clip_ears(const std::vector<P2>& p, std::uint32_t n, std::vector<std::uint3
   const std::uint32_t g = std::max<std::uint32_t>(1, std::uint32_t(std::sqrt(double(reflex_count))));
   auto cells = [&](double lo, double hi) {
     const double size = (hi - lo) / g, scale = std::max(std::fabs(lo), std::fabs(hi));
-    return size > 1e-6 * scale && std::isfinite(size) ? g : 1u;
+    return size > 1e-9 * scale && std::isfinite(size) ? g : 1u;
   };
   const std::uint32_t gx = cells(x0, x1), gy = cells(y0, y1);
   const double sx = gx > 1 ? gx / (x1 - x0) : 0, sy = gy > 1 ? gy / (y1 - y0) : 0;  // divisors > 0 when g > 1 (checked in cells)
