@@ -490,6 +490,41 @@ TEST_CASE("OBJ: vt or vn lines no face references are named in a note (not read)
   CHECK(r.texcoords == std::vector<double>{0, 0, 1, 0});
 }
 
+TEST_CASE("OBJ: vn lines no corner names, beside ones that are named, are not read (a note); a zero one no longer "
+          "stops the writers",
+          "[obj][xcorpus3]") {
+  // MeshLab writes `vn 0 0 0` for the vertices no face uses (draco's testdata/test_nm.obj: 17 of
+  // 114). Truth: the same text without those vn lines, the corners renumbered by hand.
+  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nvn 0 0 1\nvn 0 0 0\nvn 0 1 0\nvn 1 0 0\n"
+                           "f 1//1 2//3 3//4\n";
+  ReadInfo info;
+  const Mesh m = read_text(text, Format::Obj, &info);
+  CHECK(info.notes == std::vector<std::string>{"1 of 4 normals (vn) no face references: not read"});
+  require_same_mesh(m, read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nvn 0 0 1\nvn 0 1 0\nvn 1 0 0\nf 1//1 2//2 3//3\n",
+                                 Format::Obj));
+  // Every format that holds normals writes the mesh (the zero vn is gone, not written).
+  for (Format f : {Format::Obj, Format::Ply, Format::Off, Format::Gltf}) {
+    WriteOptions o;
+    o.format = f;
+    CHECK(error_of([&] { write_mesh_to_memory(m, o); }).empty());
+  }
+  const std::string written = [&] {
+    WriteOptions o;
+    o.format = Format::Obj;
+    return write_mesh_to_memory(m, o);
+  }();
+  CHECK(written.find("vn 0 0 0") == std::string::npos);
+  // Face normals given to corners without vn are named by those corners: kept, no note about them
+  // beyond the usual one.
+  ReadInfo mixed;
+  const Mesh x = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 0\nvn 0 0 1\nf 1//2 2//2 3//2\nf 1 2 4\n",
+                           Format::Obj, &mixed);
+  CHECK(x.corner_normals.size() == 6);  // vn 2 and the second face's normal
+  CHECK(x.corner_normal_index == std::vector<std::uint32_t>{0, 0, 0, 1, 1, 1});
+  CHECK(mixed.notes.size() == 2);
+  CHECK(mixed.notes[0] == "1 of 2 normals (vn) no face references: not read");
+}
+
 TEST_CASE("OBJ: an MNI surface .obj (BIC's format: `P` and numbers) is refused as that format, by name", "[obj][xcorpus]") {
   // The first lines of pyvista's mni-surface-mesh.obj.
   CHECK(error_of([] { read_text("P 0.3 0.3 0.4 10 1 4\n -18 -16.85 2.5\n -17.75 -16.6 2.5\n -18 -16.6 2.25\n", Format::Obj, nullptr, "m.obj"); }) ==
