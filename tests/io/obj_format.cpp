@@ -534,3 +534,26 @@ TEST_CASE("OBJ: an MNI surface .obj (BIC's format: `P` and numbers) is refused a
   CHECK(error_of([] { read_text("Q 1\n", Format::Obj, nullptr, "m.obj"); }) ==
         "m.obj: not an OBJ file: no vertices, 1 line with unknown keywords (first: 'Q')");
 }
+
+TEST_CASE("OBJ writer: normals of a mesh without faces (a point cloud) are written as vn lines and named in a note, "
+          "since no reader ties them to a point",
+          "[obj][xcorpus3]") {
+  // draco's float_two_att_point_cloud.ply: 3 points with nx ny nz, written to OBJ.
+  const Mesh points = read_text("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                "property float z\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n"
+                                "4.9 2.9 3.8 1 0 0\n4.7 2.9 7.7 0 1 0\n4.1 2.6 1.4 0 0 1\n",
+                                Format::Ply);
+  REQUIRE(points.num_faces() == 0);
+  WriteOptions o;
+  o.format = Format::Obj;
+  WriteInfo info;
+  const std::string text = write_mesh_to_memory(points, o, &info);
+  CHECK(text.find("vn 1 0 0\nvn 0 1 0\nvn 0 0 1\n") != std::string::npos);
+  CHECK(text.find("\nf ") == std::string::npos);
+  CHECK(info.notes == std::vector<std::string>{"3 normals written as vn lines no face names: OBJ ties a normal to a face "
+                                               "corner, so readers do not read them back for points"});
+  // A mesh with faces gets no such note.
+  WriteInfo tri;
+  write_mesh_to_memory(read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n", Format::Obj), o, &tri);
+  CHECK(tri.notes.empty());
+}

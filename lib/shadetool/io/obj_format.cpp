@@ -983,6 +983,12 @@ void write_obj(const Mesh& input, ByteSink& out, WriteInfo& info) {
     case ShadingNormals::None: break;
   }
   if (const std::string note = face_normals_not_written_note(input, "OBJ"); !note.empty()) info.notes.push_back(note);
+  // Points (a mesh without faces, a PLY point cloud): OBJ ties a normal to a face corner only, so
+  // vn lines no face names are written but no reader (shadetool's included, note_skipped) reads them
+  // back: said, since what is written is as good as dropped.
+  if (pool && mesh.num_faces() == 0 && !pool->empty())
+    info.notes.push_back(std::to_string(pool->size() / 3) + " normals written as vn lines no face names: OBJ ties a "
+                         "normal to a face corner, so readers do not read them back for points");
   if (pool) {
     for (std::size_t i = 0; i + 3 <= pool->size(); i += 3) {
       out += "vn ";
