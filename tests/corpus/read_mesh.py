@@ -66,11 +66,20 @@ PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h",
              "double": "d", "float64": "d"}
 
 
+def fmt_is_ascii(header):
+    return b"format ascii" in header
+
+
 def read_ply(path):
     data = open(path, "rb").read()
     end = data.index(b"end_header")
     header = data[:end].decode("latin-1").splitlines()
-    body = data[data.index(b"\n", end) + 1:]
+    if data[:4] == b"ply\r" and data[4:5] not in (b"\n", b"\r"):  # header lines end in a lone CR (Rhino 6)
+        body = data[end + len(b"end_header\r"):]
+        if fmt_is_ascii(data[:end]):
+            body = body.replace(b"\r", b"\n")
+    else:
+        body = data[data.index(b"\n", end) + 1:]
     fmt = None
     elements = []
     for line in header:
