@@ -194,8 +194,12 @@ def read_off(path):
     pos += nv
     F = []
     for k in range(nf):
-        t = lines[pos + k]
+        t = list(lines[pos])
+        pos += 1
         n = int(t[0])
+        while len(t) < 1 + n:  # indices going on over the next lines (OFF is free-format; libigl-tutorial-data)
+            t += lines[pos]
+            pos += 1
         F.append(tuple(int(x) for x in t[1:1 + n]))
         colors = colors or len(t) > 1 + n  # a face colour after the indices
     attrs = {"normals"} if vn is not None else set()
