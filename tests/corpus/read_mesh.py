@@ -66,11 +66,20 @@ PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h",
              "double": "d", "float64": "d"}
 
 
+def fmt_is_ascii(header):
+    return b"format ascii" in header
+
+
 def read_ply(path):
     data = open(path, "rb").read()
     end = data.index(b"end_header")
     header = data[:end].decode("latin-1").splitlines()
-    body = data[data.index(b"\n", end) + 1:]
+    if data[:4] == b"ply\r" and data[4:5] not in (b"\n", b"\r"):  # header lines end in a lone CR (Rhino 6)
+        body = data[end + len(b"end_header\r"):]
+        if fmt_is_ascii(data[:end]):
+            body = body.replace(b"\r", b"\n")
+    else:
+        body = data[data.index(b"\n", end) + 1:]
     fmt = None
     elements = []
     for line in header:
@@ -185,8 +194,12 @@ def read_off(path):
     pos += nv
     F = []
     for k in range(nf):
-        t = lines[pos + k]
+        t = list(lines[pos])
+        pos += 1
         n = int(t[0])
+        while len(t) < 1 + n:  # indices going on over the next lines (OFF is free-format; libigl-tutorial-data)
+            t += lines[pos]
+            pos += 1
         F.append(tuple(int(x) for x in t[1:1 + n]))
         colors = colors or len(t) > 1 + n  # a face colour after the indices
     attrs = {"normals"} if vn is not None else set()
@@ -267,7 +280,9 @@ def gltf_unreferenced(path):
 
 
 def unreferenced(parts):
-    return sum(len(p["positions"]) - len({i for f in p["faces"] for i in f}) for p in parts)
+    """Vertices no face uses; a record of fewer than 3 vertices (`f 8 7`) is no face: the readers
+    skip it with a note, so its vertices count as unused (tinyobjloader's invalid-face-definition.obj)."""
+    return sum(len(p["positions"]) - len({i for f in p["faces"] if len(f) >= 3 for i in f}) for p in parts)
 
 
 def read(path):

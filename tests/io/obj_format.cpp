@@ -490,6 +490,41 @@ TEST_CASE("OBJ: vt or vn lines no face references are named in a note (not read)
   CHECK(r.texcoords == std::vector<double>{0, 0, 1, 0});
 }
 
+TEST_CASE("OBJ: vn lines no corner names, beside ones that are named, are not read (a note); a zero one no longer "
+          "stops the writers",
+          "[obj][xcorpus3]") {
+  // MeshLab writes `vn 0 0 0` for the vertices no face uses (draco's testdata/test_nm.obj: 17 of
+  // 114). Truth: the same text without those vn lines, the corners renumbered by hand.
+  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nvn 0 0 1\nvn 0 0 0\nvn 0 1 0\nvn 1 0 0\n"
+                           "f 1//1 2//3 3//4\n";
+  ReadInfo info;
+  const Mesh m = read_text(text, Format::Obj, &info);
+  CHECK(info.notes == std::vector<std::string>{"1 of 4 normals (vn) no face references: not read"});
+  require_same_mesh(m, read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nvn 0 0 1\nvn 0 1 0\nvn 1 0 0\nf 1//1 2//2 3//3\n",
+                                 Format::Obj));
+  // Every format that holds normals writes the mesh (the zero vn is gone, not written).
+  for (Format f : {Format::Obj, Format::Ply, Format::Off, Format::Gltf}) {
+    WriteOptions o;
+    o.format = f;
+    CHECK(error_of([&] { write_mesh_to_memory(m, o); }).empty());
+  }
+  const std::string written = [&] {
+    WriteOptions o;
+    o.format = Format::Obj;
+    return write_mesh_to_memory(m, o);
+  }();
+  CHECK(written.find("vn 0 0 0") == std::string::npos);
+  // Face normals given to corners without vn are named by those corners: kept, no note about them
+  // beyond the usual one.
+  ReadInfo mixed;
+  const Mesh x = read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 0\nvn 0 0 1\nf 1//2 2//2 3//2\nf 1 2 4\n",
+                           Format::Obj, &mixed);
+  CHECK(x.corner_normals.size() == 6);  // vn 2 and the second face's normal
+  CHECK(x.corner_normal_index == std::vector<std::uint32_t>{0, 0, 0, 1, 1, 1});
+  CHECK(mixed.notes.size() == 2);
+  CHECK(mixed.notes[0] == "1 of 2 normals (vn) no face references: not read");
+}
+
 TEST_CASE("OBJ: an MNI surface .obj (BIC's format: `P` and numbers) is refused as that format, by name", "[obj][xcorpus]") {
   // The first lines of pyvista's mni-surface-mesh.obj.
   CHECK(error_of([] { read_text("P 0.3 0.3 0.4 10 1 4\n -18 -16.85 2.5\n -17.75 -16.6 2.5\n -18 -16.6 2.25\n", Format::Obj, nullptr, "m.obj"); }) ==
@@ -498,4 +533,27 @@ TEST_CASE("OBJ: an MNI surface .obj (BIC's format: `P` and numbers) is refused a
   // Other keyword-less text keeps its message.
   CHECK(error_of([] { read_text("Q 1\n", Format::Obj, nullptr, "m.obj"); }) ==
         "m.obj: not an OBJ file: no vertices, 1 line with unknown keywords (first: 'Q')");
+}
+
+TEST_CASE("OBJ writer: normals of a mesh without faces (a point cloud) are written as vn lines and named in a note, "
+          "since no reader ties them to a point",
+          "[obj][xcorpus3]") {
+  // draco's float_two_att_point_cloud.ply: 3 points with nx ny nz, written to OBJ.
+  const Mesh points = read_text("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                "property float z\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n"
+                                "4.9 2.9 3.8 1 0 0\n4.7 2.9 7.7 0 1 0\n4.1 2.6 1.4 0 0 1\n",
+                                Format::Ply);
+  REQUIRE(points.num_faces() == 0);
+  WriteOptions o;
+  o.format = Format::Obj;
+  WriteInfo info;
+  const std::string text = write_mesh_to_memory(points, o, &info);
+  CHECK(text.find("vn 1 0 0\nvn 0 1 0\nvn 0 0 1\n") != std::string::npos);
+  CHECK(text.find("\nf ") == std::string::npos);
+  CHECK(info.notes == std::vector<std::string>{"3 normals written as vn lines no face names: OBJ ties a normal to a face "
+                                               "corner, so readers do not read them back for points"});
+  // A mesh with faces gets no such note.
+  WriteInfo tri;
+  write_mesh_to_memory(read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n", Format::Obj), o, &tri);
+  CHECK(tri.notes.empty());
 }

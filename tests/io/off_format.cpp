@@ -188,3 +188,27 @@ TEST_CASE("OFF: a face line of 0, 1 or 2 vertices is skipped with its colour, le
   CHECK(none.face_colors.empty());
   CHECK(none_info.notes == std::vector<std::string>{"skipped 2 of 2 face lines with fewer than 3 vertices (not a face), with their colours"});
 }
+
+TEST_CASE("OFF: a face's indices may go on over the following lines (libigl-tutorial-data's quad files, one index a "
+          "line), read as the same face on one line",
+          "[off][xcorpus3]") {
+  // The layout of inspired_mesh_quads_Conjugate.off (`4 887 \n46 \n888 \n0 \n\n4 888 ...`), small.
+  // Truth: the same numbers with each face on one line, the layout every OFF reader reads.
+  const std::string head = "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0.5 0\n";
+  const std::string spread = head + "4 0 \n1 \n2 \n3 \n\n3 1 # a comment between indices\n4\n2\n";
+  const std::string one_line = head + "4 0 1 2 3\n3 1 4 2\n";
+  ReadInfo info;
+  const Mesh m = read_text(spread, Format::Off, &info);
+  CHECK(info.notes.empty());
+  require_same_mesh(m, read_text(one_line, Format::Off));
+  CHECK(m.num_faces() == 2);
+  // A face colour follows the last index, on its line.
+  const Mesh c = read_text(head + "4 0 1\n2 3 255 0 0\n3 1 4 2 0 255 0\n", Format::Off);
+  require_same_mesh(c, read_text(head + "4 0 1 2 3 255 0 0\n3 1 4 2 0 255 0\n", Format::Off));
+  CHECK(c.face_colors == std::vector<float>{1, 0, 0, 0, 1, 0});
+  // A face whose indices run out at the end of the file still names the line and the count.
+  auto err = [](const std::string& text) { return error_of([&] { read_text(text, Format::Off, nullptr, "m.off"); }); };
+  CHECK(err(head + "4 0 1 2 3\n3 1\n4\n") == "m.off:9: face line has 2 indices, its size says 3");
+  CHECK(err(head + "4 0 1 2 3\n3 1\n4\n\n# end\n") == "m.off:9: face line has 2 indices, its size says 3");
+  CHECK(err(head + "4 0 1 2 3\n9 1 2\n").find("m.off:9: face line has fewer indices than its size 9") == 0);
+}

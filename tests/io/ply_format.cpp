@@ -551,3 +551,64 @@ TEST_CASE("PLY: a face of 0, 1 or 2 vertices is skipped with its properties, lea
   CHECK(error_of([&] { read_text(ply_with_faces("ascii", false, {all[0], {{0, 7}, {}, {}, 0, 0}}), Format::Ply, nullptr, "m.ply"); }) ==
         "m.ply:16: face 1 of 2: vertex index 7 out of range (5 vertices)");
 }
+
+TEST_CASE("PLY: header lines ending in a lone CR (classic Mac, Rhinoceros 6) read as the same header with LF ends",
+          "[ply][xcorpus3]") {
+  // Truth: the same bytes with each header line's CR replaced by LF, which every PLY reader reads.
+  // The binary body starts right after `end_header` and its CR; its first byte here is 0x0a (the
+  // float 0x3f80000a), so a reader that took CR LF as the line end would eat it and misread all.
+  auto header = [](const std::string& eol) {
+    return "ply" + eol + "format binary_little_endian 1.0" + eol + "comment Rhino" + eol + "element vertex 3" + eol +
+           "property float x" + eol + "property float y" + eol + "property float z" + eol + "element face 1" + eol +
+           "property list uchar int vertex_indices" + eol + "end_header" + eol;
+  };
+  Bytes body;
+  for (std::uint32_t bits : {0x3f80000au, 0u, 0u, 0u, 0x3f800000u, 0u, 0u, 0u, 0x3f800000u}) {
+    float f;
+    std::memcpy(&f, &bits, 4);
+    body.put(f);
+  }
+  body.put(std::uint8_t(3)).put(std::int32_t(0)).put(std::int32_t(1)).put(std::int32_t(2));
+  const Mesh lf = read_text(header("\n") + body.s, Format::Ply);
+  const Mesh cr = read_text(header("\r") + body.s, Format::Ply);
+  require_same_mesh(cr, lf);
+  CHECK(cr.num_faces() == 1);
+  float x0;
+  const std::uint32_t bits0 = 0x3f80000au;
+  std::memcpy(&x0, &bits0, 4);
+  CHECK(cr.positions[0] == double(x0));
+
+  // Ascii with CR lines: the body's lines are the lines an editor shows, also in messages.
+  const std::string ascii = "ply\rformat ascii 1.0\relement vertex 3\rproperty float x\rproperty float y\r"
+                            "property float z\relement face 1\rproperty list uchar int vertex_indices\rend_header\r";
+  const Mesh a = read_text(ascii + "0 0 0\r1 0 0\r0 1 0\r3 0 1 2\r", Format::Ply);
+  std::string as_lf = ascii + "0 0 0\r1 0 0\r0 1 0\r3 0 1 2\r";
+  std::replace(as_lf.begin(), as_lf.end(), '\r', '\n');
+  require_same_mesh(a, read_text(as_lf, Format::Ply));
+  CHECK(error_of([&] { read_text(ascii + "0 0 0\r1 0 0\r0 1 0\r3 0 1 3\r", Format::Ply, nullptr, "m.ply"); }) ==
+        "m.ply:13: face 0 of 1: vertex index 3 out of range (3 vertices)");
+}
+
+TEST_CASE("draco's Box.ply (Rhinoceros 6, CR header lines): 24 vertices, 4 triangles and 4 quads, as assimp reads it",
+          "[ply][xcorpus3][corpus]") {
+  ReadInfo info;
+  const std::string path = data_path("corpus_extra/rhino6_box_cr.ply");
+  const Mesh m = read_mesh(path, Format::Auto, &info);
+  CHECK(m.num_vertices() == 24);  // assimp info: 24 vertices, 12 faces after triangulating the quads
+  CHECK(m.num_faces() == 8);
+  std::size_t quads = 0;
+  for (std::size_t f = 0; f < m.num_faces(); ++f) quads += m.face_size(f) == 4;
+  CHECK(quads == 4);
+  CHECK(m.has_vertex_normals());
+  CHECK(m.has_vertex_colors());
+  // The file with its header's CRs made LFs (the body untouched) reads the same.
+  std::string text = read_file(path);
+  const std::size_t body = text.find("end_header\r") + std::strlen("end_header\r");
+  std::replace(text.begin(), text.begin() + std::ptrdiff_t(body), '\r', '\n');
+  require_same_mesh(m, read_text(text, Format::Ply));
+  // A box: every face normal is one of the six axis directions, each written normal unit length.
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    const double* n = &m.vertex_normals[3 * v];
+    CHECK(std::abs(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0) < 1e-5);
+  }
+}

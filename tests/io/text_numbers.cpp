@@ -140,3 +140,53 @@ TEST_CASE("parse_double_counting_digits gives parse_double's value and end and h
     }
   }
 }
+
+TEST_CASE("number tokens: Microsoft's 1.#INF, -1.#IND, 1.#QNAN read as inf and nan read; near misses stay malformed",
+          "[text][xcorpus3]") {
+  // Truth: the C99 spelling of the same value, read by fast_float.
+  auto value = [](const std::string& s, double& v) {
+    const char* p = s.data();
+    const bool ok = parse_double(p, s.data() + s.size(), v);
+    return ok && p == s.data() + s.size();
+  };
+  double v = 0, c99 = 0;
+  for (const char* s : {"1.#INF", "+1.#INF", "1.#INF00", "-1.#INF"}) {
+    CAPTURE(s);
+    REQUIRE(value(s, v));
+    REQUIRE(value(s[0] == '-' ? "-inf" : "inf", c99));
+    CHECK(v == c99);
+  }
+  for (const char* s : {"1.#IND", "-1.#IND", "-1.#IND000", "1.#QNAN", "-1.#QNAN0", "1.#SNAN"}) {
+    CAPTURE(s);
+    REQUIRE(value(s, v));
+    CHECK(std::isnan(v));
+  }
+  for (const char* s : {"2.#INF", "1.#INFX", "1.#", "1.#INF0x", "1#INF", "1.#inf", "1.5#INF"}) {
+    CAPTURE(s);
+    CHECK(!value(s, v));
+  }
+  // The OBJ hot loop's parser agrees token for token.
+  for (const char* s : {"1.#INF", "-1.#IND", "1.#QNAN0", "2.#INF", "1.#INFX"}) {
+    CAPTURE(s);
+    const std::string t = s;
+    const char* p = t.data();
+    double a = 0, b = 0;
+    bool more = true;
+    const bool ok = parse_double_counting_digits(p, t.data() + t.size(), a, more);
+    CHECK(ok == value(t, b));
+    if (ok) {
+      CHECK((std::isnan(a) ? std::isnan(b) : a == b));
+      CHECK(!more);
+    }
+  }
+  // tinyobjloader's test-nan.obj: its vertices read as the same text with C99 spellings reads.
+  const std::string msvc = "v 1.#IND -1.#IND 1.#IND\nv 1.#INF -1.#INF 1.#INF\nv 0 0 0\nf 1 2 3\n";
+  const std::string c99text = "v nan -nan nan\nv inf -inf inf\nv 0 0 0\nf 1 2 3\n";
+  const Mesh a = iotest::read_text(msvc, Format::Obj), b = iotest::read_text(c99text, Format::Obj);
+  REQUIRE(a.positions.size() == b.positions.size());
+  for (std::size_t i = 0; i < a.positions.size(); ++i) {
+    CAPTURE(i);
+    CHECK((std::isnan(b.positions[i]) ? std::isnan(a.positions[i]) : a.positions[i] == b.positions[i]));
+  }
+  CHECK(a.corner_vertex == b.corner_vertex);
+}

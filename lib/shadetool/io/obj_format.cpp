@@ -764,6 +764,35 @@ void validate_lines(const ObjLines& s, const std::string& name) {
     fail(name, 0, "too many vertices (more than 2^32)");
 }
 
+// vn lines that no face corner names are no part of the mesh: not read (a note), as when no corner
+// names any (note_skipped). Kept in the pool they were written back by every OBJ output, and a zero
+// one (MeshLab writes `vn 0 0 0` for the vertices no face uses: draco's testdata/test_nm.obj) made
+// every writer refuse the mesh, `repair` included, since no writer writes a zero normal. The pool
+// keeps its order; cn is renumbered. file_normals: the entries read from the file (those after it
+// are the face normals given to corners without vn, all named by a corner).
+void drop_unreferenced_normals(std::vector<double>& normals, std::vector<std::uint32_t>& cn, std::size_t file_normals,
+                               ReadInfo& info) {
+  const std::size_t pool = normals.size() / 3;
+  std::vector<std::uint32_t> renumber(pool, kNone);
+  for (std::uint32_t e : cn)
+    if (e != kNone) renumber[e] = 0;  // named by a corner
+  std::size_t dropped = 0;
+  for (std::size_t e = 0; e < file_normals; ++e) dropped += renumber[e] == kNone;
+  if (dropped == 0) return;
+  std::size_t kept = 0;
+  for (std::size_t e = 0; e < pool; ++e) {
+    if (renumber[e] == kNone) continue;
+    renumber[e] = std::uint32_t(kept);
+    for (std::size_t k = 0; k < 3; ++k) normals[3 * kept + k] = normals[3 * e + k];
+    ++kept;
+  }
+  normals.resize(3 * kept);
+  for (std::uint32_t& e : cn)
+    if (e != kNone) e = renumber[e];
+  info.notes.push_back(std::to_string(dropped) + " of " + std::to_string(file_normals) +
+                       " normals (vn) no face references: not read");
+}
+
 // Step 3, build: the vn pool and per-corner indices become the mesh's corner normals.
 void build_corner_normals(ObjLines& s, ReadInfo& info) {
   Mesh& mesh = s.mesh;
@@ -773,6 +802,7 @@ void build_corner_normals(ObjLines& s, ReadInfo& info) {
   // holds a normal for every corner or none); the faces that had vn keep theirs exactly.
   std::vector<double>& normals = s.normals;
   std::vector<std::uint32_t>& cn = s.cn;
+  const std::size_t file_normals = normals.size() / 3;
   std::size_t filled = 0, degenerate = 0;
   std::uint32_t face_entry = kNone;
   for (std::size_t f = 0; f + 1 < mesh.face_start.size(); ++f) {
@@ -792,6 +822,7 @@ void build_corner_normals(ObjLines& s, ReadInfo& info) {
       ++filled;
     }
   }
+  drop_unreferenced_normals(normals, cn, file_normals, info);
   mesh.corner_normals = std::move(normals);
   mesh.corner_normal_index = std::move(cn);
   if (filled > 0)
@@ -952,6 +983,12 @@ void write_obj(const Mesh& input, ByteSink& out, WriteInfo& info) {
     case ShadingNormals::None: break;
   }
   if (const std::string note = face_normals_not_written_note(input, "OBJ"); !note.empty()) info.notes.push_back(note);
+  // Points (a mesh without faces, a PLY point cloud): OBJ ties a normal to a face corner only, so
+  // vn lines no face names are written but no reader (shadetool's included, note_skipped) reads them
+  // back: said, since what is written is as good as dropped.
+  if (pool && mesh.num_faces() == 0 && !pool->empty())
+    info.notes.push_back(std::to_string(pool->size() / 3) + " normals written as vn lines no face names: OBJ ties a "
+                         "normal to a face corner, so readers do not read them back for points");
   if (pool) {
     for (std::size_t i = 0; i + 3 <= pool->size(); i += 3) {
       out += "vn ";

@@ -207,15 +207,22 @@ std::size_t read_off_faces(const OffHeader& h, OffBody& body, Mesh& mesh, std::v
     if (!lines.next(b, e))
       fail(name, lines.line(), "file ends after " + std::to_string(f) + " of " + std::to_string(h.nf) + " faces");
     const char* p = b;
+    const std::size_t face_line = lines.line();
     std::int64_t k;
     if (!parse_int64(p, e, k) || (p < e && !is_space(*p)) || k < 0)
       fail(name, lines.line(), "malformed face size '" + token_at(b, e) + "'");
-    if (std::uint64_t(k) > std::uint64_t(e - p)) fail(name, lines.line(), "face line has fewer indices than its size " + std::to_string(k));
+    if (std::uint64_t(k) > std::uint64_t(e - p) + lines.remaining())
+      fail(name, lines.line(), "face line has fewer indices than its size " + std::to_string(k));
     const std::size_t first_corner = mesh.corner_vertex.size();
     for (std::int64_t i = 0; i < k; ++i) {
       const char* t = skip_spaces(p, e);
       std::int64_t idx;
-      if (t == e) fail(name, lines.line(), "face line has " + std::to_string(i) + " indices, its size says " + std::to_string(k));
+      // Indices may go on over the next lines (Geomview's OFF is free-format; libigl's readOFF
+      // reads them with fscanf, and libigl-tutorial-data's inspired_mesh_quads_*.off write one
+      // index a line). The colour, if any, follows the last index on its line.
+      const char *nb, *ne;
+      if (t == e && lines.next(nb, ne)) t = p = b = nb, e = ne;
+      if (t == e) fail(name, face_line, "face line has " + std::to_string(i) + " indices, its size says " + std::to_string(k));
       if (!parse_int64(p, e, idx) || (p < e && !is_space(*p)))
         fail(name, lines.line(), "malformed vertex index '" + token_at(t, e) + "'");
       if (idx < 0 || std::uint64_t(idx) >= h.nv)

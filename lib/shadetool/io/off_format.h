@@ -8,7 +8,10 @@
 // 0..255 and divided by 255; colours with a decimal point or exponent are taken as floats in [0,1].
 // Four components whose alpha is 1 everywhere read as rgb (Mesh::color_channels 3): the writer
 // gives rgb colours alpha 1.
-// Comments (#) and blank lines are skipped anywhere. CR, LF and CRLF line endings, a UTF-8 BOM. Each vertex and face is one line; a line with
+// Comments (#) and blank lines are skipped anywhere. CR, LF and CRLF line endings, a UTF-8 BOM. Each vertex and face is one line,
+// except that a face's indices may go on over the following lines (Geomview's OFF is free-format;
+// libigl's readOFF reads indices with fscanf; libigl-tutorial-data writes some files one index a
+// line), its colour then following the last index on that line; a line with
 // the wrong number of values, or content after the last face, means the header counts disagree
 // with the body and is an error. Counts are bounded by the file size before allocation.
 // Precision: as OBJ (obj_format.h): values stored as parsed, never rounded; Mesh::precision is

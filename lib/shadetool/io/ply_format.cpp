@@ -15,12 +15,23 @@
 #include <shadetool/io/engine/ply_properties.h>
 #include <shadetool/io/engine/ply_types.h>
 #include <shadetool/io/engine/number_text.h>
+#include <shadetool/io/engine/text_encoding.h>
 #include <shadetool/io/split_corner_normals.h>
 
 namespace shadetool::io {
 
-Mesh read_ply(std::string_view bytes, const std::string& name, ReadInfo& info) {
-  ply::PlyHeader header = ply::parse_ply_header(bytes, name, info);             // elements, types
+Mesh read_ply(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
+  ply::PlyHeader header = ply::parse_ply_header(file_bytes, name, info);        // elements, types
+  // An ascii file whose lines end in a lone CR is read with its line ends as LF, so that its body's
+  // lines (and the line numbers in messages) are the lines an editor shows. Binary bodies are
+  // bytes: never rewritten.
+  std::string_view bytes = file_bytes;
+  const LineEndings as_lf(header.cr_lines && header.encoding == ply::Encoding::Ascii ? file_bytes : std::string_view());
+  if (header.cr_lines && header.encoding == ply::Encoding::Ascii) {
+    bytes = as_lf.lf();
+    ReadInfo again;  // the notes of the header were given by the first reading
+    header = ply::parse_ply_header(bytes, name, again);
+  }
   const ply::PlyLayout layout = ply::map_ply_properties(header.elements, name);  // which array each goes to
   Mesh mesh = ply::read_ply_body(bytes, header, layout, name, info);            // the values
   mesh.comments = std::move(header.comments);

@@ -15,10 +15,17 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, Read
   const char* p = bytes.data();
   const char* const end = p + bytes.size();
   std::size_t line = 0;
+  // Header lines end in LF (CRLF: the CR is trailing space), or, when the magic line is `ply`
+  // followed by a lone CR, in CR (classic Mac; Rhinoceros 6's PLY exporter, draco's
+  // testdata/Box.ply): assimp and draco read those. A binary body then starts right after
+  // `end_header` and its CR, so no LF is eaten from it. Decided once, from the magic line, so
+  // every file that reads with LF lines reads the same.
+  const bool cr_lines = bytes.size() > 4 && bytes.substr(0, 4) == "ply\r" && bytes[4] != '\n' && bytes[4] != '\r';
+  const char eol_char = cr_lines ? '\r' : '\n';
 
   auto next_line = [&](std::string_view& out) -> bool {
     if (p >= end) return false;
-    const char* eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
+    const char* eol = static_cast<const char*>(std::memchr(p, eol_char, std::size_t(end - p)));
     const char* stop = eol ? eol : end;
     const char* e = stop;
     while (e > p && is_space(e[-1])) --e;
@@ -106,6 +113,7 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& name, Read
   if (!have_format) fail(name, 2, "PLY header has no format line");
   header.body_offset = std::size_t(p - bytes.data());
   header.lines = line;
+  header.cr_lines = cr_lines;
   return header;
 }
 

@@ -2,7 +2,8 @@
 //
 // Numbers are parsed with fast_float (exact IEEE round-to-nearest, like strtod, without locale or
 // stream overhead). A token must end at whitespace or the end of the line: "1.5x" is malformed.
-// NaN and Inf ("nan", "inf", "infinity", any case) are accepted: `shadetool info` reports them.
+// NaN and Inf ("nan", "inf", "infinity", any case, and Microsoft's 1.#INF, -1.#IND, 1.#QNAN) are
+// accepted: `shadetool info` reports them.
 #pragma once
 
 #include <cstddef>
@@ -24,6 +25,33 @@ inline const char* skip_spaces(const char* p, const char* end) {
   return p;
 }
 
+// Microsoft's C runtime (printf before Visual Studio 2015) wrote Inf and NaN as 1.#INF, -1.#INF,
+// 1.#IND, -1.#IND, 1.#QNAN, 1.#SNAN, zeros following at a fixed precision (1.#INF00, -1.#IND000):
+// exporters built with it put these in OBJ files (tinyobjloader's models/test-nan.obj). They read
+// as "inf" and "nan" read. q: the token after an optional '+'. Returns the end of the token, or
+// nullptr when it is not one of these (a malformed number then).
+inline const char* parse_msvc_nonfinite(const char* q, const char* end, double& value) {
+  const bool negative = q < end && *q == '-';
+  const char* t = q + (negative ? 1 : 0);
+  if (end - t < 3 || t[0] != '1' || t[1] != '.' || t[2] != '#') return nullptr;
+  t += 3;
+  const std::string_view rest(t, std::size_t(end - t));
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const struct {
+    std::string_view word;
+    double v;
+  } words[] = {{"INF", inf}, {"IND", nan}, {"QNAN", nan}, {"SNAN", nan}};
+  for (const auto& w : words) {
+    if (rest.substr(0, w.word.size()) != w.word) continue;
+    const char* e = t + w.word.size();
+    while (e < end && *e == '0') ++e;
+    if (e < end && !is_space_or_newline(*e)) return nullptr;
+    value = negative ? -w.v : w.v;
+    return e;
+  }
+  return nullptr;
+}
+
 // Parses a double starting at p (after optional spaces); on success advances p past the token.
 // Returns false for a malformed token (p is left at its start).
 inline bool parse_double(const char*& p, const char* end, double& value) {
@@ -32,6 +60,11 @@ inline bool parse_double(const char*& p, const char* end, double& value) {
   if (q < end && *q == '+') ++q;  // fast_float refuses a leading '+', strtod accepts it
   auto r = fast_float::from_chars(q, end, value);
   if (r.ec != std::errc() || (r.ptr < end && !is_space_or_newline(*r.ptr))) {
+    if (r.ec == std::errc() && r.ptr < end && *r.ptr == '#')  // 1.#INF, -1.#IND: Microsoft's spellings
+      if (const char* e = parse_msvc_nonfinite(q, end, value)) {
+        p = e;
+        return true;
+      }
     p = start;
     return false;
   }
@@ -99,7 +132,13 @@ inline bool parse_double_counting_digits(const char*& p, const char* end, double
   using Binary = fast_float::binary_format<double>;
   if (pns.valid && !pns.too_many_digits && pns.exponent >= Binary::min_exponent_fast_path() &&
       pns.exponent <= Binary::max_exponent_fast_path() && pns.mantissa <= Binary::max_mantissa_fast_path()) {
-    if (pns.lastmatch < end && !is_space_or_newline(*pns.lastmatch)) return false;
+    if (pns.lastmatch < end && !is_space_or_newline(*pns.lastmatch)) {
+      if (*pns.lastmatch != '#') return false;
+      // 1.#INF, -1.#IND: parse_double reads them (parse_msvc_nonfinite)
+      if (!parse_double(p, end, value)) return false;
+      more_digits = false;
+      return true;
+    }
     double v = double(pns.mantissa);
     if (pns.exponent < 0) v = v / Binary::exact_power_of_ten(-pns.exponent);
     else v = v * Binary::exact_power_of_ten(pns.exponent);
