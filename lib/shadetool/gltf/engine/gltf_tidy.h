@@ -7,8 +7,11 @@
 // boundary plus its old offset mod 4 (so that every accessor keeps its alignment, glTF 2.0
 // 3.6.2.4). Every index is remapped: primitives' attributes, indices and targets, skins'
 // inverseBindMatrices, animation samplers, accessors' bufferView and sparse views, images'
-// bufferView, EXT_mesh_gpu_instancing's attributes. An extension it does not know (in
-// extensionsUsed) could hold such an index: then nothing is pruned and a note says so; unless the
+// bufferView, EXT_mesh_gpu_instancing's attributes, EXT_structural_metadata's property tables'
+// views (values, arrayOffsets, stringOffsets; these keep their offset mod 8, as their components
+// may be 8 bytes long). CESIUM_RTC and EXT_mesh_features hold no such index. An extension it does
+// not know (in extensionsUsed) could hold such an index: then nothing is pruned and a note says so;
+// unless the
 // extension holds no number in any of its `extensions` objects (FB_ngon_encoding's are empty; an
 // extension may be listed with no object at all): with no number it names no index. Nothing
 // unreferenced and no `compact`: nothing changes (bytes identical); `compact` rebuilds the buffer
