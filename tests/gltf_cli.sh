@@ -744,6 +744,23 @@ assert len(a) == 5 and a == b, [(x[:3], y[:3]) for x, y in zip(a, b) if x != y]'
     check "EXT_structural_metadata -> $out: no more UNUSED_OBJECT than the input ($unused_in)" test "$(grep -c UNUSED_OBJECT "$tmp/validator.txt")" -le "$unused_in"
   fi
 done
+# Vertex attributes whose elements do not start on multiples of 4 bytes (glTF 2.0 3.6.2.4; the same
+# BoxMeta.gltf packs its UNSIGNED_BYTE _FEATURE_ID_0 and UNSIGNED_SHORT _FEATURE_ID_1 tightly: the
+# validator's MESH_PRIMITIVE_ACCESSOR_UNALIGNED, which every output repeated): copied with a
+# byteStride of a multiple of 4, so the output is valid; every attribute's values kept (gltf_check
+# reads both files).
+if [ -n "$validate" ]; then
+  valid "$meta" > /dev/null
+  check "unaligned vertex attributes: the input has MESH_PRIMITIVE_ACCESSOR_UNALIGNED (the premise)" grep -q MESH_PRIMITIVE_ACCESSOR_UNALIGNED "$tmp/validator.txt"
+fi
+for out in meta_n.glb meta_n.gltf; do
+  "$bin" normals "$meta" -o "$tmp/$out" 2> "$tmp/meta.err"
+  check "unaligned vertex attributes -> $out: valid" valid "$tmp/$out"
+  check "unaligned vertex attributes -> $out: a note names the copy" grep -q "2 vertex attribute accessors whose elements did not start on multiples of 4 bytes" "$tmp/meta.err"
+  check "unaligned vertex attributes -> $out: every attribute kept" gcheck keep "$meta" "$tmp/$out"
+done
+check "unaligned vertex attributes -> meta.glb (transform): valid" valid "$tmp/meta.glb"
+
 derive "$fx/rich.gltf" "$tmp/rtc.gltf" '
 d["extensionsUsed"] = d.get("extensionsUsed", []) + ["CESIUM_RTC"]
 d.setdefault("extensions", {})["CESIUM_RTC"] = {"center": [-123.4, 234.5, 345678.9]}'

@@ -373,8 +373,26 @@ std::size_t align_accessors(json& j, std::string& bytes, std::vector<std::string
   if (!j.contains("accessors") || !j["accessors"].is_array() || !j.contains("bufferViews") || !j["bufferViews"].is_array())
     return 0;
   json& views = j["bufferViews"];
-  std::size_t moved = 0;
-  std::string first;
+  // Accessors read as vertex attributes (a primitive's attributes, its morph targets'): each element
+  // at a multiple of 4 bytes (glTF 2.0 3.6.2.4), not only each component at a multiple of its size.
+  std::vector<bool> vertex_attribute(j["accessors"].size(), false);
+  if (j.contains("meshes") && j["meshes"].is_array())
+    for (const json& mesh : j["meshes"]) {
+      if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+      for (const json& prim : mesh["primitives"]) {
+        if (!prim.is_object()) continue;
+        auto mark = [&vertex_attribute](const json& attributes) {
+          if (!attributes.is_object()) return;
+          for (const json& v : attributes)
+            if (is_index(v) && v.get<std::size_t>() < vertex_attribute.size()) vertex_attribute[v.get<std::size_t>()] = true;
+        };
+        if (prim.contains("attributes")) mark(prim["attributes"]);
+        if (prim.contains("targets") && prim["targets"].is_array())
+          for (const json& t : prim["targets"]) mark(t);
+      }
+    }
+  std::size_t moved = 0, moved_attributes = 0;
+  std::string first, first_attribute;
   for (std::size_t i = 0; i < j["accessors"].size(); ++i) {
     json& a = j["accessors"][i];
     if (!a.is_object() || a.contains("sparse") || !a.contains("bufferView") || !is_index(a["bufferView"]) ||
@@ -387,28 +405,40 @@ std::size_t align_accessors(json& j, std::string& bytes, std::vector<std::string
     const std::size_t view_offset = v.value("byteOffset", std::size_t(0)), view_length = v.value("byteLength", std::size_t(0));
     const std::size_t start = view_offset + a.value("byteOffset", std::size_t(0));
     const std::size_t stride = v.value("byteStride", std::size_t(0));
-    if (start % std::size_t(cb) == 0 && stride % std::size_t(cb) == 0) continue;
     const std::size_t elem = std::size_t(comps) * std::size_t(cb), count = a.value("count", std::size_t(0));
     const std::size_t step = stride ? stride : elem;
+    const bool components_aligned = start % std::size_t(cb) == 0 && stride % std::size_t(cb) == 0;
+    const bool elements_aligned = !vertex_attribute[i] || (start % 4 == 0 && step % 4 == 0);
+    if (components_aligned && elements_aligned) continue;
     if (view_offset + view_length > bytes.size() || (count > 0 && start + (count - 1) * step + elem > view_offset + view_length))
       continue;  // out of bounds: the reader refused such files already; nothing to copy
-    const std::size_t out_stride = stride ? (elem + 3) / 4 * 4 : elem;
+    // A vertex attribute's elements padded to 4 bytes (a byteStride then names the padding); any
+    // other accessor packed, or strided as it was.
+    const std::size_t out_stride = stride || vertex_attribute[i] ? (elem + 3) / 4 * 4 : elem;
     while (bytes.size() % 4) bytes.push_back('\0');
     const std::size_t at = bytes.size();
     bytes.resize(at + count * out_stride, '\0');
     for (std::size_t e = 0; e < count; ++e) std::memcpy(&bytes[at + e * out_stride], &bytes[start + e * step], elem);
     json nv = {{"buffer", 0}, {"byteOffset", at}, {"byteLength", count * out_stride}};
-    if (stride) nv["byteStride"] = out_stride;
+    if (stride || out_stride != elem) nv["byteStride"] = out_stride;
     if (v.contains("target")) nv["target"] = v["target"];
     views.push_back(std::move(nv));
     a["bufferView"] = views.size() - 1;
     a.erase("byteOffset");
-    if (moved++ == 0) first = "accessors[" + std::to_string(i) + "]";
+    if (components_aligned) {
+      if (moved_attributes++ == 0) first_attribute = "accessors[" + std::to_string(i) + "]";
+    } else if (moved++ == 0) {
+      first = "accessors[" + std::to_string(i) + "]";
+    }
   }
+  if (moved_attributes > 0)
+    notes.push_back(std::to_string(moved_attributes) + " vertex attribute accessors whose elements did not start on " +
+                    "multiples of 4 bytes (first " + first_attribute + ") copied to bufferViews with a byteStride " +
+                    "of a multiple of 4 (glTF 2.0 3.6.2.4)");
   if (moved > 0)
     notes.push_back(std::to_string(moved) + " accessors whose data did not start on a multiple of its component size " +
                     "(first " + first + ") copied to aligned bufferViews (glTF 2.0 3.6.2.4)");
-  return moved;
+  return moved + moved_attributes;
 }
 
 std::size_t exact_bounds(json& j, const std::string& bytes, std::vector<std::string>& notes) {

@@ -20,8 +20,12 @@
 // align_accessors: an accessor whose data does not start on a multiple of its component size
 // (glTF 2.0 3.6.2.4; files that other programs wrote have them, and the validator rejects them)
 // gets its elements copied to a new bufferView at a 4-byte boundary (the view's byteStride kept
-// when it had one, else packed); the old view is left for prune_unreferenced. Sparse accessors and
-// data outside buffer 0 are left alone.
+// when it had one, else packed); the old view is left for prune_unreferenced. So does an accessor
+// that a primitive or a morph target reads as a vertex attribute whose elements do not each start
+// on a multiple of 4 bytes (3.6.2.4 again; the validator's MESH_PRIMITIVE_ACCESSOR_UNALIGNED):
+// draco's BoxMeta.gltf packs its UNSIGNED_BYTE and UNSIGNED_SHORT _FEATURE_ID_n tightly; copied
+// with a byteStride of the element size rounded up to 4 (the padding bytes zero). Sparse accessors
+// and data outside buffer 0 are left alone.
 //
 // exact_bounds: every accessor that has `min`/`max` gets the exact bounds of its values (raw
 // component values: integers as stored, also when `normalized`; floats as float32; sparse
@@ -40,7 +44,7 @@ namespace shadetool::io::gltf {
 std::size_t prune_unreferenced(nlohmann::json& document, std::string& bytes, std::vector<std::string>& notes,
                                bool compact = false);
 
-// Returns the number of accessors moved (named in one note).
+// Returns the number of accessors moved (named in one note per rule).
 std::size_t align_accessors(nlohmann::json& document, std::string& bytes, std::vector<std::string>& notes);
 
 // Returns the number of accessors whose min/max were corrected (named in one note).
