@@ -710,5 +710,68 @@ assert p["mode"] == 0 and "indices" not in p, p
 a = j["accessors"][p["attributes"]["POSITION"]]
 assert a["count"] == 3 and a["min"] == [1, 0, 0] and a["max"] == [2, 1, 0], a' "$tmp/points.glb" "$src/tests/gltf"
 
+# Known extensions that look like unknown ones (xcorpus4: draco's BoxMeta.gltf, glTF-Transform's
+# EXT_structural_metadata tests, draco's one_face_123_cesium_rtc.gltf): CESIUM_RTC holds a centre,
+# EXT_mesh_features feature counts, _FEATURE_ID_n suffixes, textures and property tables; neither
+# names an accessor or a bufferView. EXT_structural_metadata's property tables name bufferViews no
+# accessor refers to (values, arrayOffsets, stringOffsets). Before: everything kept with a "may
+# refer to them" note, the replaced POSITION and NORMAL left as UNUSED_OBJECT. Now the replaced
+# accessors go, and each property table view is kept with its bytes and its offset mod 8 (the
+# table's components may be 8 bytes), its index remapped. Truth: the input's own property-table
+# bytes, read by gltf_check.py from the file draco's tests wrote.
+meta=$src/data/corpus_extra/draco_BoxMeta/BoxMeta.gltf
+for out in meta.glb meta.gltf; do
+  "$bin" transform --scale -1,1,1 "$meta" -o "$tmp/$out" 2> "$tmp/meta.err"
+  check "EXT_structural_metadata -> $out: exit 0" test $? -eq 0
+  check "EXT_structural_metadata -> $out: no 'may refer to them' note" bash -c "! grep -q 'may refer to them' '$tmp/meta.err'"
+  check "EXT_structural_metadata -> $out: the replaced accessors removed (every accessor referenced)" all_referenced "$tmp/$out"
+  check "EXT_structural_metadata -> $out: each property table view holds the input's bytes, at its offset mod 8" "$py" -c '
+import sys; sys.path.insert(0, sys.argv[3]); import gltf_check
+def views(path):
+    j, bufs = gltf_check.load(path); out = []
+    for t in j["extensions"]["EXT_structural_metadata"]["propertyTables"]:
+        for name, prop in sorted(t["properties"].items()):
+            for key in ("values", "arrayOffsets", "stringOffsets"):
+                if key in prop:
+                    v = j["bufferViews"][prop[key]]; o = v.get("byteOffset", 0)
+                    out.append((name, key, o % 8, bytes(bufs[v["buffer"]][o:o + v["byteLength"]])))
+    return out
+a, b = views(sys.argv[1]), views(sys.argv[2])
+assert len(a) == 5 and a == b, [(x[:3], y[:3]) for x, y in zip(a, b) if x != y]' "$meta" "$tmp/$out" "$src/tests/gltf"
+  if [ -n "$validate" ]; then
+    valid "$meta" > /dev/null; unused_in=$(grep -c UNUSED_OBJECT "$tmp/validator.txt")
+    valid "$tmp/$out" > /dev/null
+    check "EXT_structural_metadata -> $out: no more UNUSED_OBJECT than the input ($unused_in)" test "$(grep -c UNUSED_OBJECT "$tmp/validator.txt")" -le "$unused_in"
+  fi
+done
+# Vertex attributes whose elements do not start on multiples of 4 bytes (glTF 2.0 3.6.2.4; the same
+# BoxMeta.gltf packs its UNSIGNED_BYTE _FEATURE_ID_0 and UNSIGNED_SHORT _FEATURE_ID_1 tightly: the
+# validator's MESH_PRIMITIVE_ACCESSOR_UNALIGNED, which every output repeated): copied with a
+# byteStride of a multiple of 4, so the output is valid; every attribute's values kept (gltf_check
+# reads both files).
+if [ -n "$validate" ]; then
+  valid "$meta" > /dev/null
+  check "unaligned vertex attributes: the input has MESH_PRIMITIVE_ACCESSOR_UNALIGNED (the premise)" grep -q MESH_PRIMITIVE_ACCESSOR_UNALIGNED "$tmp/validator.txt"
+fi
+for out in meta_n.glb meta_n.gltf; do
+  "$bin" normals "$meta" -o "$tmp/$out" 2> "$tmp/meta.err"
+  check "unaligned vertex attributes -> $out: valid" valid "$tmp/$out"
+  check "unaligned vertex attributes -> $out: a note names the copy" grep -q "2 vertex attribute accessors whose elements did not start on multiples of 4 bytes" "$tmp/meta.err"
+  check "unaligned vertex attributes -> $out: every attribute kept" gcheck keep "$meta" "$tmp/$out"
+done
+check "unaligned vertex attributes -> meta.glb (transform): valid" valid "$tmp/meta.glb"
+
+derive "$fx/rich.gltf" "$tmp/rtc.gltf" '
+d["extensionsUsed"] = d.get("extensionsUsed", []) + ["CESIUM_RTC"]
+d.setdefault("extensions", {})["CESIUM_RTC"] = {"center": [-123.4, 234.5, 345678.9]}'
+"$bin" normals --recompute "$tmp/rtc.gltf" -o "$tmp/rtc.glb" 2> "$tmp/rtc.err"
+check "CESIUM_RTC: exit 0" test $? -eq 0
+check "CESIUM_RTC: the replaced NORMAL removed (every accessor referenced)" all_referenced "$tmp/rtc.glb"
+check "CESIUM_RTC: no 'may refer to them' note" bash -c "! grep -q 'may refer to them' '$tmp/rtc.err'"
+check "CESIUM_RTC: the centre kept" "$py" -c '
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+j, _ = gltf_check.load(sys.argv[1])
+assert j["extensions"]["CESIUM_RTC"] == {"center": [-123.4, 234.5, 345678.9]}, j.get("extensions")' "$tmp/rtc.glb" "$src/tests/gltf"
+
 echo "gltf_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -115,7 +115,8 @@ def strip_refs(mesh):
 
 def resolved(doc, bufs, key):
     """doc[key] with every accessor index replaced by the accessor's values (skins' inverse bind
-    matrices, animation samplers): a writer may renumber accessors, not change what they hold."""
+    matrices, animation samplers) and every bufferView index of EXT_structural_metadata's property
+    tables by the view's bytes: a writer may renumber accessors and views, not change what they hold."""
     v = json.loads(json.dumps(doc.get(key)))
     if key == "skins":
         for s in v or []:
@@ -127,6 +128,14 @@ def resolved(doc, bufs, key):
                 for k in ("input", "output"):
                     if k in s:
                         s[k] = accessor(doc, bufs, s[k])
+    if key == "extensions":  # EXT_structural_metadata's property tables name bufferViews
+        for t in ((v or {}).get("EXT_structural_metadata") or {}).get("propertyTables", []):
+            for prop in t.get("properties", {}).values():
+                for k in ("values", "arrayOffsets", "stringOffsets"):
+                    if k in prop:
+                        bv = doc["bufferViews"][prop[k]]
+                        o = bv.get("byteOffset", 0)
+                        prop[k] = bufs[bv["buffer"]][o:o + bv["byteLength"]].hex()
     return v
 
 

@@ -150,6 +150,56 @@ TEST_CASE("glTF scene: a document without scenes places its root nodes; bad node
   }
 }
 
+TEST_CASE("glTF scene: EXT_mesh_gpu_instancing places the mesh once per instance, by node * T R S", "[gltf][scene]") {
+  // xcorpus4: glTF-Blender-IO's 24_gpu_instancing.gltf (1899 teapots on 2 nodes) became 2 teapots
+  // in every world-space output, silently. Positions by hand: instance 0 only the node's
+  // translation; instance 1 p -> (10, 0, 0) + (0, 0, 3) + R_z(90) (2 p).
+  Built b = two_meshes();
+  const double h = std::sqrt(0.5);
+  const int t = float_accessor(b, {0, 0, 0, 0, 0, 3}, "VEC3", 3);
+  const int r = float_accessor(b, {0, 0, 0, 1, 0, 0, float(h), float(h)}, "VEC4", 4);
+  const int s = float_accessor(b, {1, 1, 1, 2, 2, 2}, "VEC3", 3);
+  b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+  b.doc["nodes"] = json::array({{{"mesh", 0}, {"translation", {10, 0, 0}},
+                                 {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", t}, {"ROTATION", r}, {"SCALE", s}}}}}}}}});
+  std::vector<std::string> notes;
+  const Mesh m = world_of(b, notes);
+  REQUIRE(m.num_faces() == 3);  // two instances of mesh 0, mesh 1 once in object space
+  require_near(m.position(0), {10, 0, 0});
+  require_near(m.position(1), {11, 0, 0});
+  require_near(m.position(2), {10, 1, 0});
+  require_near(m.position(3), {10, 0, 3});
+  require_near(m.position(4), {10, 2, 3});
+  require_near(m.position(5), {8, 0, 3});
+  CHECK(face_cross(m, 1).z > 0);  // a rotation and a positive scale keep the face up
+  CHECK(has_note(notes, "2 of them EXT_mesh_gpu_instancing instances"));
+
+  // Only TRANSLATION: rotation and scale identity.
+  Built c = two_meshes();
+  const int t2 = float_accessor(c, {0, 0, 0, 5, 0, 0, 0, 5, 0}, "VEC3", 3);
+  c.doc["nodes"] = json::array({{{"mesh", 0}, {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", t2}}}}}}}}});
+  std::vector<std::string> n2;
+  const Mesh m2 = world_of(c, n2);
+  REQUIRE(m2.num_faces() == 4);
+  require_near(m2.position(4), {6, 0, 0});
+  require_near(m2.position(8), {0, 6, 0});
+
+  // Attributes of different counts: one error naming the file and the JSON path.
+  Built d = two_meshes();
+  const int t3 = float_accessor(d, {0, 0, 0, 5, 0, 0, 0, 5, 0}, "VEC3", 3);
+  const int s3 = float_accessor(d, {1, 1, 1, 2, 2, 2}, "VEC3", 3);
+  d.doc["nodes"] = json::array({{{"mesh", 0}, {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", t3}, {"SCALE", s3}}}}}}}}});
+  std::vector<std::string> n3;
+  try {
+    world_of(d, n3);
+    FAIL("accepted instance attributes of 3 and 2 elements");
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    CHECK(what.find("scene.glb") != std::string::npos);
+    CHECK(what.find("nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.SCALE: 2 instances, not 3") != std::string::npos);
+  }
+}
+
 TEST_CASE("glTF scene: read_mesh gives the world-space mesh", "[gltf][scene]") {
   Built b = two_meshes();
   b.doc["scenes"] = json::array({{{"nodes", {0}}}});

@@ -274,6 +274,55 @@ std::vector<GltfNodePlacement> gltf_scene_nodes(const GltfDocument& document) {
   return out;
 }
 
+namespace {
+
+// The placements of node `n`'s mesh: the node itself, or with EXT_mesh_gpu_instancing one per
+// instance, world_from_node * T_i R_i S_i (the instance's TRANSLATION, ROTATION, SCALE accessors:
+// the same rules as a node's T R S, glTF 2.0 3.5.2, so local_matrix reads them); `instanced` says
+// which.
+std::vector<GltfNodePlacement> instance_placements(const GltfDocument& document, const GltfNodePlacement& n, bool& instanced) {
+  instanced = false;
+  const json& node = document.source->json["nodes"][n.node];
+  if (!node.contains("extensions") || !node["extensions"].is_object() || !node["extensions"].contains("EXT_mesh_gpu_instancing"))
+    return {n};
+  const std::string& name = document.source->name;
+  const std::string path = node_path(n.node) + ".extensions.EXT_mesh_gpu_instancing.attributes";
+  const json& ext = node["extensions"]["EXT_mesh_gpu_instancing"];
+  if (!ext.is_object() || !ext.contains("attributes") || !ext["attributes"].is_object()) fail(name, 0, path + ": missing (an object)");
+  const json& attributes = ext["attributes"];
+  struct Part { const char* key; std::size_t size; std::vector<double> values; };
+  Part parts[3] = {{"TRANSLATION", 3, {}}, {"ROTATION", 4, {}}, {"SCALE", 3, {}}};
+  std::size_t count = 0;
+  bool any = false;
+  for (Part& part : parts) {
+    if (!attributes.contains(part.key)) continue;
+    const json& a = attributes[part.key];
+    if (!a.is_number_unsigned()) fail(name, 0, path + "." + part.key + ": not an accessor index");
+    part.values = io::gltf::accessor_doubles(*document.source, a.get<int>(), name);
+    const std::size_t c = part.values.size() / part.size;  // size > 0
+    if (c * part.size != part.values.size())
+      fail(name, 0, path + "." + part.key + ": not " + std::to_string(part.size) + " numbers per instance");
+    if (any && c != count) fail(name, 0, path + "." + part.key + ": " + std::to_string(c) + " instances, not " + std::to_string(count));
+    count = c;
+    any = true;
+  }
+  if (!any) return {n};  // no attribute: the node's mesh once (the extension's default)
+  std::vector<GltfNodePlacement> out;
+  out.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    json trs = json::object();
+    for (const Part& part : parts)
+      if (!part.values.empty())
+        trs[part.key[0] == 'T' ? "translation" : part.key[0] == 'R' ? "rotation" : "scale"] =
+            std::vector<double>(part.values.begin() + std::ptrdiff_t(i * part.size), part.values.begin() + std::ptrdiff_t((i + 1) * part.size));
+    out.push_back({n.node, compose(n.world, local_matrix(trs, path + " (instance " + std::to_string(i) + ")", name))});
+  }
+  instanced = true;
+  return out;
+}
+
+}  // namespace
+
 std::vector<GltfPrimitivePlacements> gltf_primitive_placements(const GltfDocument& document) {
   std::vector<GltfPrimitivePlacements> out(document.primitives.size());
   const std::vector<GltfNodePlacement> placements = gltf_scene_nodes(document);
@@ -285,12 +334,17 @@ std::vector<GltfPrimitivePlacements> gltf_primitive_placements(const GltfDocumen
       if (!node.contains("mesh") || !node["mesh"].is_number_unsigned() || node["mesh"].get<std::size_t>() != document.primitives[i].mesh_index)
         continue;
       out[i].in_scene = true;
-      if (classify_affine(n.world).path == TransformPath::Singular) {
-        out[i].singular_nodes.push_back(n.node);
-        continue;
+      bool instanced = false;
+      const std::vector<GltfNodePlacement> instances = instance_placements(document, n, instanced);
+      if (instanced) out[i].gpu_instances += instances.size();
+      for (const GltfNodePlacement& placed : instances) {
+        if (classify_affine(placed.world).path == TransformPath::Singular) {
+          out[i].singular_nodes.push_back(n.node);
+          continue;
+        }
+        out[i].nodes.push_back(placed);
+        if (node.contains("skin")) out[i].skinned_nodes.push_back(n.node);
       }
-      out[i].nodes.push_back(n);
-      if (node.contains("skin")) out[i].skinned_nodes.push_back(n.node);
     }
   return out;
 }
@@ -312,7 +366,7 @@ Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& not
 
   Mesh out;
   std::vector<std::string> unplaced, hidden, skinned, morphed, uv_changed;
-  std::size_t instances = 0, repeated = 0, left_out = 0;
+  std::size_t instances = 0, repeated = 0, left_out = 0, gpu_instances = 0;
   bool any_placed = false;
   for (std::size_t i = 0; i < document.primitives.size(); ++i) {
     const GltfPrimitive& p = document.primitives[i];
@@ -321,6 +375,7 @@ Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& not
     const std::vector<double> uv = gltf_texcoords(document, p, changed);
     if (changed) uv_changed.push_back(p.json_path);
     if (!p.targets.empty()) morphed.push_back(p.json_path);
+    gpu_instances += where.gpu_instances;
     for (std::size_t n : where.singular_nodes) hidden.push_back(node_path(n));
     for (std::size_t n : where.skinned_nodes) skinned.push_back(node_path(n));
     if (!where.in_scene) {  // in no node of the scene: once, in its object space
@@ -347,7 +402,10 @@ Mesh gltf_world_mesh(const GltfDocument& document, std::vector<std::string>& not
   };
   if (any_placed)
     notes.push_back(std::to_string(instances) + " glTF primitive instances placed in world space by their nodes' matrices" +
-                    (repeated ? " (" + std::to_string(repeated) + " repeated: meshes shown by several nodes)" : std::string()));
+                    (repeated ? " (" + std::to_string(repeated) + " repeated: meshes shown by several nodes" +
+                                    (gpu_instances ? " or instances" : "") + ")" : std::string()) +
+                    (gpu_instances ? "; " + std::to_string(gpu_instances) + " of them EXT_mesh_gpu_instancing instances" +
+                                     " (node * T R S of each)" : std::string()));
   if (left_out)
     notes.push_back(std::to_string(left_out) + " vertex copies not written: each primitive instance carries the vertices " +
                     "its faces use (primitives share POSITION accessors; a vertex no face uses is written once)");

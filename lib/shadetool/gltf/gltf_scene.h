@@ -13,6 +13,9 @@
 // node's world matrix through lib/transform's transform_mesh (positions A p + t, normals
 // sign(det A) cof(A) n, the winding reversed where det A < 0: glTF 2.0, 3.7.2.1, a mirrored node
 // draws its triangles clockwise, so the faces keep facing out), then concatenated in scene order:
+//   - a node with EXT_mesh_gpu_instancing places its mesh once per instance, by world_from_node
+//     * T_i R_i S_i (the extension's TRANSLATION, ROTATION, SCALE accessors, read as a node's
+//     T R S; an attribute absent: identity; counts that differ: an Error naming the JSON path);
 //   - a mesh shown by K nodes is written K times; a mesh no node of the scene shows is written
 //     once in its object space; a node with a singular matrix (scale 0: hidden) places nothing;
 //     a skinned node is placed by its node's matrix (the bind pose: joints are not applied);
@@ -53,9 +56,11 @@ std::vector<GltfNodePlacement> gltf_scene_nodes(const GltfDocument& document);
 // order: `nodes` those with an invertible world matrix, `singular_nodes` those with a singular one
 // (scale 0: hidden; they place nothing), `skinned_nodes` those of `nodes` with a skin. in_scene is
 // false when no node of the scene shows the primitive's mesh (gltf_world_mesh then writes it once
-// in its object space).
+// in its object space). A node with EXT_mesh_gpu_instancing gives one entry per instance (its
+// world matrix times the instance's T R S; the same node index each time), gpu_instances counts them.
 struct GltfPrimitivePlacements {
   bool in_scene = false;
+  std::size_t gpu_instances = 0;
   std::vector<GltfNodePlacement> nodes;
   std::vector<std::size_t> singular_nodes, skinned_nodes;
 };

@@ -16,7 +16,10 @@ namespace {
 using nlohmann::json;
 
 // Extensions that hold no accessor or bufferView index (their indices name materials, images,
-// textures, lights or nothing), and the two whose indices are remapped here.
+// textures, lights or nothing; CESIUM_RTC holds a centre; EXT_mesh_features' numbers are feature
+// counts, _FEATURE_ID_n suffixes, textures and property tables), and the three whose indices are
+// remapped here (EXT_mesh_gpu_instancing's accessors, KHR_draco_mesh_compression's and
+// EXT_structural_metadata's bufferViews).
 const std::set<std::string> kNoAccessorReferences = {
     "KHR_lights_punctual", "KHR_materials_anisotropy", "KHR_materials_clearcoat", "KHR_materials_dispersion",
     "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_iridescence",
@@ -24,7 +27,8 @@ const std::set<std::string> kNoAccessorReferences = {
     "KHR_materials_transmission", "KHR_materials_unlit", "KHR_materials_variants", "KHR_materials_volume",
     "KHR_mesh_quantization", "KHR_texture_basisu", "KHR_texture_transform", "KHR_xmp_json_ld", "EXT_texture_webp",
     "EXT_texture_avif", "EXT_lights_image_based", "MSFT_lod", "MSFT_texture_dds",
-    "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression", "KHR_materials_common"};
+    "EXT_mesh_gpu_instancing", "KHR_draco_mesh_compression", "KHR_materials_common", "CESIUM_RTC", "EXT_mesh_features",
+    "EXT_structural_metadata"};
 
 bool is_index(const json& v) { return v.is_number_integer() && v.get<long long>() >= 0; }
 
@@ -67,9 +71,30 @@ void for_each_accessor_ref(json& j, F f) {
     }
 }
 
-// Applies `f` to every bufferView index held outside the accessors (images, Draco's data).
+// Applies `f` to every bufferView of EXT_structural_metadata's property tables (the binary table
+// format: propertyTables[].properties.*.values, arrayOffsets and stringOffsets; its property
+// textures name textures, its property attributes name attributes, its schema holds no index).
+template <class F>
+void for_each_metadata_view_ref(json& j, F f) {
+  if (!j.contains("extensions") || !j["extensions"].is_object() || !j["extensions"].contains("EXT_structural_metadata"))
+    return;
+  json& meta = j["extensions"]["EXT_structural_metadata"];
+  if (!meta.is_object() || !meta.contains("propertyTables") || !meta["propertyTables"].is_array()) return;
+  for (json& table : meta["propertyTables"]) {
+    if (!table.is_object() || !table.contains("properties") || !table["properties"].is_object()) continue;
+    for (auto& [name, property] : table["properties"].items()) {
+      if (!property.is_object()) continue;
+      for (const char* key : {"values", "arrayOffsets", "stringOffsets"})
+        if (property.contains(key)) f(property[key]);
+    }
+  }
+}
+
+// Applies `f` to every bufferView index held outside the accessors (images, Draco's data,
+// EXT_structural_metadata's property tables).
 template <class F>
 void for_each_other_view_ref(json& j, F f) {
+  for_each_metadata_view_ref(j, f);
   if (j.contains("images") && j["images"].is_array())
     for (json& im : j["images"])
       if (im.is_object() && im.contains("bufferView")) f(im["bufferView"]);
@@ -165,6 +190,13 @@ std::size_t prune_unreferenced(json& j, std::string& bytes, std::vector<std::str
   // A view outside buffer 0 (not merged by the writer) is kept where it is, unmoved.
   for (std::size_t v = 0; v < views.size(); ++v)
     if (!views[v].is_object() || views[v].value("buffer", 0) != 0) view_used[v] = true;
+  // A property table's view keeps its offset mod 8 (its components may be 8 bytes: FLOAT64, INT64,
+  // UINT64 offsets; EXT_structural_metadata aligns each to its component size), every other view its
+  // offset mod 4 (no glTF component is longer).
+  std::vector<std::size_t> view_alignment(views.size(), 4);
+  for_each_metadata_view_ref(j, [&view_alignment](json& v) {
+    if (is_index(v) && v.get<std::size_t>() < view_alignment.size()) view_alignment[v.get<std::size_t>()] = 8;
+  });
   const std::vector<long> accessor_to = remap_of(accessor_used), view_to = remap_of(view_used);
   auto remap = [](const std::vector<long>& to) {
     return [&to](json& v) {
@@ -174,7 +206,7 @@ std::size_t prune_unreferenced(json& j, std::string& bytes, std::vector<std::str
   for_each_accessor_ref(j, remap(accessor_to));
   for_each_other_view_ref(j, remap(view_to));
 
-  // The buffer from the views kept, each at a 4-byte boundary plus its old offset mod 4.
+  // The buffer from the views kept, each at a 4-byte (8-byte) boundary plus its old offset mod 4 (8).
   std::string packed;
   packed.reserve(bytes.size() + (std::size_t(1) << 20));  // room for the GLB headers and JSON in front
   json kept_views = json::array();
@@ -183,7 +215,8 @@ std::size_t prune_unreferenced(json& j, std::string& bytes, std::vector<std::str
     json view = views[v];
     if (view.value("buffer", 0) == 0) {
       const std::size_t offset = view.value("byteOffset", std::size_t(0)), length = view.value("byteLength", std::size_t(0));
-      while (packed.size() % 4 != offset % 4) packed.push_back('\0');
+      const std::size_t alignment = view_alignment[v];
+      while (packed.size() % alignment != offset % alignment) packed.push_back('\0');
       const std::size_t now = packed.size();
       if (offset <= bytes.size()) packed.append(bytes, offset, std::min(length, bytes.size() - offset));
       packed.resize(now + length, '\0');
@@ -340,8 +373,26 @@ std::size_t align_accessors(json& j, std::string& bytes, std::vector<std::string
   if (!j.contains("accessors") || !j["accessors"].is_array() || !j.contains("bufferViews") || !j["bufferViews"].is_array())
     return 0;
   json& views = j["bufferViews"];
-  std::size_t moved = 0;
-  std::string first;
+  // Accessors read as vertex attributes (a primitive's attributes, its morph targets'): each element
+  // at a multiple of 4 bytes (glTF 2.0 3.6.2.4), not only each component at a multiple of its size.
+  std::vector<bool> vertex_attribute(j["accessors"].size(), false);
+  if (j.contains("meshes") && j["meshes"].is_array())
+    for (const json& mesh : j["meshes"]) {
+      if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+      for (const json& prim : mesh["primitives"]) {
+        if (!prim.is_object()) continue;
+        auto mark = [&vertex_attribute](const json& attributes) {
+          if (!attributes.is_object()) return;
+          for (const json& v : attributes)
+            if (is_index(v) && v.get<std::size_t>() < vertex_attribute.size()) vertex_attribute[v.get<std::size_t>()] = true;
+        };
+        if (prim.contains("attributes")) mark(prim["attributes"]);
+        if (prim.contains("targets") && prim["targets"].is_array())
+          for (const json& t : prim["targets"]) mark(t);
+      }
+    }
+  std::size_t moved = 0, moved_attributes = 0;
+  std::string first, first_attribute;
   for (std::size_t i = 0; i < j["accessors"].size(); ++i) {
     json& a = j["accessors"][i];
     if (!a.is_object() || a.contains("sparse") || !a.contains("bufferView") || !is_index(a["bufferView"]) ||
@@ -354,28 +405,40 @@ std::size_t align_accessors(json& j, std::string& bytes, std::vector<std::string
     const std::size_t view_offset = v.value("byteOffset", std::size_t(0)), view_length = v.value("byteLength", std::size_t(0));
     const std::size_t start = view_offset + a.value("byteOffset", std::size_t(0));
     const std::size_t stride = v.value("byteStride", std::size_t(0));
-    if (start % std::size_t(cb) == 0 && stride % std::size_t(cb) == 0) continue;
     const std::size_t elem = std::size_t(comps) * std::size_t(cb), count = a.value("count", std::size_t(0));
     const std::size_t step = stride ? stride : elem;
+    const bool components_aligned = start % std::size_t(cb) == 0 && stride % std::size_t(cb) == 0;
+    const bool elements_aligned = !vertex_attribute[i] || (start % 4 == 0 && step % 4 == 0);
+    if (components_aligned && elements_aligned) continue;
     if (view_offset + view_length > bytes.size() || (count > 0 && start + (count - 1) * step + elem > view_offset + view_length))
       continue;  // out of bounds: the reader refused such files already; nothing to copy
-    const std::size_t out_stride = stride ? (elem + 3) / 4 * 4 : elem;
+    // A vertex attribute's elements padded to 4 bytes (a byteStride then names the padding); any
+    // other accessor packed, or strided as it was.
+    const std::size_t out_stride = stride || vertex_attribute[i] ? (elem + 3) / 4 * 4 : elem;
     while (bytes.size() % 4) bytes.push_back('\0');
     const std::size_t at = bytes.size();
     bytes.resize(at + count * out_stride, '\0');
     for (std::size_t e = 0; e < count; ++e) std::memcpy(&bytes[at + e * out_stride], &bytes[start + e * step], elem);
     json nv = {{"buffer", 0}, {"byteOffset", at}, {"byteLength", count * out_stride}};
-    if (stride) nv["byteStride"] = out_stride;
+    if (stride || out_stride != elem) nv["byteStride"] = out_stride;
     if (v.contains("target")) nv["target"] = v["target"];
     views.push_back(std::move(nv));
     a["bufferView"] = views.size() - 1;
     a.erase("byteOffset");
-    if (moved++ == 0) first = "accessors[" + std::to_string(i) + "]";
+    if (components_aligned) {
+      if (moved_attributes++ == 0) first_attribute = "accessors[" + std::to_string(i) + "]";
+    } else if (moved++ == 0) {
+      first = "accessors[" + std::to_string(i) + "]";
+    }
   }
+  if (moved_attributes > 0)
+    notes.push_back(std::to_string(moved_attributes) + " vertex attribute accessors whose elements did not start on " +
+                    "multiples of 4 bytes (first " + first_attribute + ") copied to bufferViews with a byteStride " +
+                    "of a multiple of 4 (glTF 2.0 3.6.2.4)");
   if (moved > 0)
     notes.push_back(std::to_string(moved) + " accessors whose data did not start on a multiple of its component size " +
                     "(first " + first + ") copied to aligned bufferViews (glTF 2.0 3.6.2.4)");
-  return moved;
+  return moved + moved_attributes;
 }
 
 std::size_t exact_bounds(json& j, const std::string& bytes, std::vector<std::string>& notes) {
