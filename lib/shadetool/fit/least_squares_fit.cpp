@@ -572,20 +572,30 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   }
 }
 
+// The larger of a and b, b when b is NaN (a NaN residual fails the stop's test).
+inline double max_keeping_nan(double a, double b) { return a >= b ? a : b; }
+// acc = max(acc, |v| scale) per lane (a NaN in |v| scale is kept, so that a NaN residual fails the
+// stop's test). By reference: a 32-byte vector is not passed by value (ABI).
+inline __attribute__((always_inline)) void lanes4_max_abs(Lanes4& acc, const Lanes4& v, double scale) {
+  const Lanes4 a = (v < 0 ? -v : v) * scale;
+  acc = acc >= a ? acc : a;
+}
+
 // CG's per-iteration vector passes over 4 lanes per node (block_conjugate_gradient<4>), one 4-wide
 // operation per node where the scalar loops do four: per lane the same operations in the same
 // node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
 // builds (target_clones; no FMA). T: the vectors' storage (load4/store4: double, or float on the
 // 8-bit path; arithmetic and sums in double either way, each sum over the stored values).
-// r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new += r^2 inv_d_i,
-// per lane; Ap cleared for the next operator pass (its lines are in cache here: the direction pass
+// r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new += r^2 inv_d_i;
+// res_max = max |r_i| inv_d_i (res_max_out non-null: the sharp stop's term, fit_error_bound), per
+// lane; Ap cleared for the next operator pass (its lines are in cache here: the direction pass
 // need not stream Ap). x += alpha p is left to the direction pass (lanes4_direction), which reads
 // p anyway, or to lanes4_add_step after the last step.
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const double alpha_in[4], double* Ap,
-                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4]) {
-  Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, Api, ri;
+                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4], double* res_max_out) {
+  Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, Api, ri;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
     Lanes4 zero = {0, 0, 0, 0};
@@ -597,10 +607,12 @@ void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const 
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
     abs_new += ri * ri * inv_d[i];
+    if (res_max_out) lanes4_max_abs(res_max, ri, inv_d[i]);
   }
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
+  if (res_max_out) std::memcpy(res_max_out, &res_max, sizeof res_max);
 }
 // x += alpha p (the last step's, when no direction pass follows it).
 template <class T>
@@ -616,12 +628,12 @@ void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x) 
   }
 }
 // The first residual r = b - Ap (b double: for T = double r may be b itself, b in and r out), with
-// sum b^2, sum r^2 and (inv_m non-null) sum r^2 inv_m_i, per lane.
+// sum b^2, sum r^2 and (inv_m non-null) sum r^2 inv_m_i and max |r_i| inv_m_i, per lane.
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const double* b, T* r, double rhs2_out[4],
-                     double res2_out[4], double res_mass_out[4]) {
-  Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, bi, Api;
+                     double res2_out[4], double res_mass_out[4], double res_max_out[4]) {
+  Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, bi, Api;
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&bi, b + 4 * i, sizeof bi);
     load4(Api, Ap + 4 * i);
@@ -629,11 +641,15 @@ void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const
     store4(r + 4 * i, ri);
     rhs2 += bi * bi;
     res2 += ri * ri;
-    if (inv_m) res_mass += ri * ri * inv_m[i];
+    if (inv_m) {
+      res_mass += ri * ri * inv_m[i];
+      lanes4_max_abs(res_max, ri, inv_m[i]);
+    }
   }
   std::memcpy(rhs2_out, &rhs2, sizeof rhs2);
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
+  std::memcpy(res_max_out, &res_max, sizeof res_max);
 }
 // The first direction p = inv_d_i r, with sum r p, per lane.
 template <class T>
@@ -666,17 +682,23 @@ void lanes4_direction(const T* r, const double* inv_d, std::size_t N, const doub
     store4(p + 4 * i, pi);
   }
 }
-// sum t^2 and (inv_m non-null) sum t^2 inv_m_i per lane, t double (the true residual's check).
+// sum t^2 and (inv_m non-null) sum t^2 inv_m_i and max |t_i| inv_m_i per lane, t double (the true
+// residual's check).
 __attribute__((target_clones("avx2", "default")))
-void lanes4_norms(const double* t, const double* inv_m, std::size_t N, double res2_out[4], double res_mass_out[4]) {
-  Lanes4 res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, ti;
+void lanes4_norms(const double* t, const double* inv_m, std::size_t N, double res2_out[4], double res_mass_out[4],
+                  double res_max_out[4]) {
+  Lanes4 res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, ti;
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&ti, t + 4 * i, sizeof ti);
     res2 += ti * ti;
-    if (inv_m) res_mass += ti * ti * inv_m[i];
+    if (inv_m) {
+      res_mass += ti * ti * inv_m[i];
+      lanes4_max_abs(res_max, ti, inv_m[i]);
+    }
   }
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
+  std::memcpy(res_max_out, &res_max, sizeof res_max);
 }
 
 // b_i += sum over the triangles' points of w_k phi_i(x_k) f(x_k) (least_squares_fit.h, b), one
@@ -774,6 +796,12 @@ struct BlockCgOptions {
   // solution; float storage stops the recursion at a quarter of it and checks the true residual)
   double accuracy_bound = 0;
   double accuracy_trigger = 1;
+  // > 0 (with accuracy_bound): the sharp stop (least_squares_fit.h, Solver; lambda = 0, triangles
+  // only, inverse_mass the Jacobi diagonal): a channel stops once fit_error_bound(max_i |r_i| / M_ii,
+  // sum_i r_i^2 / M_ii, min M_ii) <= sqrt(accuracy_trigger) accuracy (the same margin as the sum's
+  // trigger, in the norm). 0: the 2-norm stop, sum_i r_i^2 / M_ii <= accuracy_trigger accuracy_bound.
+  double sharp_accuracy = 0;
+  double min_mass = 0;  // min M_ii over the system (> 0 with sharp_accuracy)
   const std::vector<double>* inverse_mass = nullptr;  // #nodes: 1 / M_ii (0 off the system)
   int max_iterations = 0;
   std::array<double, 4>* rhs2_out = nullptr;  // non-null (W = 4): sum b^2 per lane
@@ -820,15 +848,20 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::uint32_t i : off_system)
       for (std::size_t k = 0; k < W; ++k) out[i * W + k] = 0;
   };
-  Channels rhs2{}, res2{}, res_mass{}, threshold{}, abs_new{}, abs_old{}, pAp{}, alpha{}, beta{};
+  Channels rhs2{}, res2{}, res_mass{}, res_max{}, threshold{}, abs_new{}, abs_old{}, pAp{}, alpha{}, beta{};
   std::array<bool, W> active{};
   const bool bounded = o.accuracy_bound > 0 && inv_m;
   const bool mass_is_jacobi = inv_m == inv_d;  // lambda = 0: r^T D^-1 r is both the stop's sum and CG's r^T z
+  const bool sharp = bounded && mass_is_jacobi && o.sharp_accuracy > 0 && o.min_mass > 0;
   const double stop_at = o.accuracy_trigger * o.accuracy_bound;
-  const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= stop_at; };
+  const double sharp_stop_at = std::sqrt(o.accuracy_trigger) * o.sharp_accuracy;
+  const auto accurate = [&](std::size_t k) {
+    if (!bounded) return false;
+    return sharp ? fit_error_bound(res_max[k], res_mass[k], o.min_mass) <= sharp_stop_at : res_mass[k] <= stop_at;
+  };
   apply(x, Ap, pAp.data(), false);  // pAp unused here
   if constexpr (W == 4) {
-    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data());
+    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data(), res_max.data());
     if (o.rhs2_out) *o.rhs2_out = rhs2;
   } else {
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -837,7 +870,10 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
         r[i + k] = bi - Ap[i + k];
         rhs2[k] += bi * bi;
         res2[k] += r[i + k] * r[i + k];
-        if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
+        if (bounded) {
+          res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
+          res_max[k] = max_keeping_nan(res_max[k], std::fabs(r[i + k]) * inv_m[node]);
+        }
       }
   }
   std::size_t running = 0;
@@ -870,11 +906,12 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
     res2.fill(0.0);
     res_mass.fill(0.0);
+    res_max.fill(0.0);
     abs_old = abs_new;
     abs_new.fill(0.0);
     if constexpr (W == 4) {  // z = D^-1 r, not stored; x += alpha p in the direction pass (or below)
       lanes4_step(inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), Ap, r, res2.data(),
-                  res_mass.data(), abs_new.data());
+                  res_mass.data(), abs_new.data(), sharp ? res_max.data() : nullptr);
       x_behind = true;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
@@ -885,6 +922,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
           res2[k] += ri * ri;
           if (bounded && !mass_is_jacobi) res_mass[k] += ri * ri * inv_m[node];
           abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
+          if (sharp) res_max[k] = max_keeping_nan(res_max[k], std::fabs(ri) * inv_d[node]);
         }
     }
     if (bounded && mass_is_jacobi) res_mass = abs_new;  // sum r_i^2 inv_m_i with inv_m = inv_d: the same sum
@@ -1205,18 +1243,21 @@ void solve_float_vectors(const FitOperator& A, const std::vector<double>& invers
   fit.float_vectors = true;
   block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b, r, cg, x, p, Ap, fit);
   // The check: t = b - A x in double (x's float values exactly), sum t^2 and sum t^2 / M_ii per lane.
-  double unused[4], t2[4], t_mass[4];
+  double unused[4], t2[4], t_mass[4], t_max[4];
   apply_operator<4, float, true>(A, x, b, unused, true);
   for (std::uint32_t i : off_system)
     for (std::size_t k = 0; k < 4; ++k) b[4 * std::size_t(i) + k] = 0;
-  lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass);
+  lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass, t_max);
+  const bool sharp = options.sharp_accuracy > 0 && options.min_mass > 0 && options.inverse_mass == &inverse_diagonal;
   std::array<bool, 4> proven{};
   bool all = true;
   double residual_proven = 0, t_relative_rest = 0;
   for (std::size_t k = 0; k < 4; ++k) {
     const double relative = rhs2[k] > 0 ? std::sqrt(t2[k] / rhs2[k]) : 0.0;  // divisor checked
     const double threshold = std::max(options.tolerance * options.tolerance * rhs2[k], std::numeric_limits<double>::min());
-    proven[k] = t_mass[k] <= options.accuracy_bound || t2[k] < threshold;  // b = 0: t = 0, proven
+    const bool within = sharp ? fit_error_bound(t_max[k], t_mass[k], options.min_mass) <= options.sharp_accuracy
+                              : t_mass[k] <= options.accuracy_bound;
+    proven[k] = within || t2[k] < threshold;  // b = 0: t = 0, proven
     all = all && proven[k];
     if (proven[k])
       residual_proven = std::max(residual_proven, relative);
@@ -1364,6 +1405,10 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
     if (options.accuracy > 0 && min_mass > 0 && std::isfinite(min_mass)) {
       cg.accuracy_bound = options.accuracy * mu * options.accuracy * mu * min_mass;
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
+      if (!regularized && e.quad_face.empty()) {  // D^-1 A = D^-1 M, its spectrum in [1/2, 2] (Wathen)
+        cg.sharp_accuracy = options.accuracy;
+        cg.min_mass = min_mass;
+      }
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
     // b is assembled: f is read no more, and its memory (spent) holds work vectors
