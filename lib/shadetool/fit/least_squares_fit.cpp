@@ -236,9 +236,9 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   const bool hand_over = spare && entry_bytes >= (std::size_t(4) << 20);
   const std::size_t block_bytes = hand_over ? std::max(entry_bytes, spare->wanted) : entry_bytes;
   std::unique_ptr<std::byte[]> block(new std::byte[block_bytes]);
-  std::uint32_t* const entry_hi = ::new (static_cast<void*>(block.get())) std::uint32_t[entries];
-  std::uint32_t* const entry_site =
-      ::new (static_cast<void*>(block.get() + entries * sizeof(std::uint32_t))) std::uint32_t[entries];
+  // entry k: its higher vertex at 2k, its site at 2k + 1 (one cache line for both: a point that
+  // finds its edge reads the site beside the vertex it compared)
+  std::uint32_t* const entry = ::new (static_cast<void*>(block.get())) std::uint32_t[2 * entries];
   q.site.resize(S);
   // site_point: of its S possible entries only `sites` are written (half of them on a closed mesh
   // under the 3-point rule). Above 4 MiB it is reserved and appended to, so that the unwritten half
@@ -255,13 +255,13 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
       const std::size_t lo = key >> 32;
       const std::uint32_t hi = std::uint32_t(key);
       std::uint32_t k = offset[lo];
-      while (k < end[lo] && entry_hi[k] != hi) ++k;
+      while (k < end[lo] && entry[2 * std::size_t(k)] != hi) ++k;
       if (k < end[lo]) {  // an earlier point of this edge: its site
-        q.site[p] = entry_site[k];
+        q.site[p] = entry[2 * std::size_t(k) + 1];
         return;
       }
-      entry_hi[k] = hi;  // the first point of this edge
-      entry_site[k] = std::uint32_t(sites);
+      entry[2 * std::size_t(k)] = hi;  // the first point of this edge
+      entry[2 * std::size_t(k) + 1] = std::uint32_t(sites);
       ++end[lo];
     }
     q.site[p] = std::uint32_t(sites);
