@@ -996,7 +996,8 @@ TEST_CASE("Vectors in float: the true residual b - A c meets the 8-bit stop's bo
   // and the bound's formula written out here (not the library's fit_error_bound). On signals of size 1 the float values meet it;
   // on signals of size 1e4 (a float holds them to about 6e-4, within a = 1/1020 per value but not
   // within the 2-norm bound over 642 nodes) only a finish in double can, and it must happen: a
-  // solve that trusted its float recursion (or skipped the check) fails this test.
+  // solve that trusted its float recursion without the drift bound (or skipped the check) fails
+  // this test.
   const Mesh sphere = shadetool::testing::icosphere(3, 0.2).mesh;  // 642 vertices
   const std::size_t V = sphere.num_vertices();
   for (double size : {1.0, 1e4}) {
@@ -1038,6 +1039,10 @@ TEST_CASE("Vectors in float: the true residual b - A c meets the 8-bit stop's bo
       CHECK(worst_ratio > 0.25);         // a stop that waited for the 2-norm bound (8/3 tighter) ends far below
       CHECK(worst_value <= kEightBitFitAccuracy);
       CHECK(fit.double_finish == (size > 1));  // float values of size 1e4 cannot meet it
+      // size 1: proven by the recursion's residual and its drift bound, without the true residual's
+      // pass (so this test checks that bound's promise on t); size 1e4: the drift bound (rounding
+      // of values of 1e4) is above a, so the check runs and finishes in double
+      CHECK(fit.drift_bounded == (size == 1));
     }
   }
 }

@@ -581,6 +581,23 @@ inline __attribute__((always_inline)) void lanes4_max_abs(Lanes4& acc, const Lan
   acc = acc >= a ? acc : a;
 }
 
+// The rounding of one float store, per lane: d = exact - stored (exact in double: a double and its
+// rounding to float differ by a double, Sterbenz), summed as d^2 weight into mass and as |d| scale
+// into max (the drift bound of the float path, least_squares_fit.h, Precision).
+struct Drift4 {
+  Lanes4 mass = {0, 0, 0, 0}, max = {0, 0, 0, 0};
+  void out(double* to) const {  // mass[4], then max[4]
+    std::memcpy(to, &mass, sizeof mass);
+    std::memcpy(to + 4, &max, sizeof max);
+  }
+};
+inline __attribute__((always_inline)) void add_drift(Drift4& drift, const Lanes4& exact, const Lanes4& stored,
+                                                     double weight, double scale) {
+  const Lanes4 d = exact - stored;
+  drift.mass += d * d * weight;
+  lanes4_max_abs(drift.max, d, scale);
+}
+
 // CG's per-iteration vector passes over 4 lanes per node (block_conjugate_gradient<4>), one 4-wide
 // operation per node where the scalar loops do four: per lane the same operations in the same
 // node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
@@ -594,15 +611,19 @@ inline __attribute__((always_inline)) void lanes4_max_abs(Lanes4& acc, const Lan
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const double alpha_in[4], double* Ap,
-                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4], double* res_max_out) {
+                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4], double* res_max_out,
+                 double* drift_out) {
   Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, Api, ri;
+  Drift4 drift;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
     Lanes4 zero = {0, 0, 0, 0};
     load4(Api, Ap + 4 * i);
     load4(ri, r + 4 * i);
     ri = ri - alpha * Api;
+    const Lanes4 exact = ri;
     store4(r + 4 * i, ri);
+    if (drift_out) add_drift(drift, exact, ri, inv_d[i], inv_d[i]);  // sum dr^2 / M_ii, max |dr| / M_ii
     store4(Ap + 4 * i, zero);
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
@@ -613,32 +634,42 @@ void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const 
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
   if (res_max_out) std::memcpy(res_max_out, &res_max, sizeof res_max);
+  if (drift_out) drift.out(drift_out);
 }
 // x += alpha p (the last step's, when no direction pass follows it).
 template <class T>
 __attribute__((target_clones("avx2", "default")))
-void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x) {
+void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x, const double* diagonal,
+                     double* drift_out) {
   Lanes4 alpha, pi, xi;
+  Drift4 drift;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
     load4(pi, p + 4 * i);
     load4(xi, x + 4 * i);
     xi += alpha * pi;
+    const Lanes4 exact = xi;
     store4(x + 4 * i, xi);
+    if (drift_out) add_drift(drift, exact, xi, diagonal[i], 1.0);  // sum M_ii dx^2, max |dx|
   }
+  if (drift_out) drift.out(drift_out);
 }
 // The first residual r = b - Ap (b double: for T = double r may be b itself, b in and r out), with
 // sum b^2, sum r^2 and (inv_m non-null) sum r^2 inv_m_i and max |r_i| inv_m_i, per lane.
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const double* b, T* r, double rhs2_out[4],
-                     double res2_out[4], double res_mass_out[4], double res_max_out[4]) {
+                     double res2_out[4], double res_mass_out[4], double res_max_out[4], const double* inv_d,
+                     double* drift_out) {
   Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, bi, Api;
+  Drift4 drift;
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&bi, b + 4 * i, sizeof bi);
     load4(Api, Ap + 4 * i);
     Lanes4 ri = bi - Api;
+    const Lanes4 exact = ri;
     store4(r + 4 * i, ri);
+    if (drift_out) add_drift(drift, exact, ri, inv_d[i], inv_d[i]);
     rhs2 += bi * bi;
     res2 += ri * ri;
     if (inv_m) {
@@ -650,6 +681,7 @@ void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(res_max_out, &res_max, sizeof res_max);
+  if (drift_out) drift.out(drift_out);
 }
 // The first direction p = inv_d_i r, with sum r p, per lane.
 template <class T>
@@ -668,8 +700,9 @@ void lanes4_first_direction(const T* r, const double* inv_d, std::size_t N, T* p
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_direction(const T* r, const double* inv_d, std::size_t N, const double alpha_in[4],
-                      const double beta_in[4], T* x, T* p) {
+                      const double beta_in[4], T* x, T* p, const double* diagonal, double* drift_out) {
   Lanes4 alpha, beta, ri, pi, xi;
+  Drift4 drift;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   std::memcpy(&beta, beta_in, sizeof beta);
   for (std::size_t i = 0; i < N; ++i) {
@@ -678,9 +711,12 @@ void lanes4_direction(const T* r, const double* inv_d, std::size_t N, const doub
     load4(xi, x + 4 * i);
     xi += alpha * pi;
     pi = ri * inv_d[i] + beta * pi;
+    const Lanes4 exact = xi;
     store4(x + 4 * i, xi);
     store4(p + 4 * i, pi);
+    if (drift_out) add_drift(drift, exact, xi, diagonal[i], 1.0);  // sum M_ii dx^2, max |dx|
   }
+  if (drift_out) drift.out(drift_out);
 }
 // sum t^2 and (inv_m non-null) sum t^2 inv_m_i and max |t_i| inv_m_i per lane, t double (the true
 // residual's check).
@@ -805,6 +841,27 @@ struct BlockCgOptions {
   const std::vector<double>* inverse_mass = nullptr;  // #nodes: 1 / M_ii (0 off the system)
   int max_iterations = 0;
   std::array<double, 4>* rhs2_out = nullptr;  // non-null (W = 4): sum b^2 per lane
+  // Non-null (W = 4, float storage, the sharp stop): the drift of the recursive residual r from the
+  // true one t = b - A x bounded as it accrues (least_squares_fit.h, Precision).
+  struct Drift* drift = nullptr;
+};
+
+// The float path's drift bound, per lane: every float store of r (r_k, its rounding dr = exact -
+// stored) and of x (dx) moves t - r by dr or A dx, so at the end
+//   |D^-1/2 (t - r)|_2 <= sum over the stores (|D^-1/2 dr|_2 or 2 |D^1/2 dx|_2)      (norm)
+//   max_i |t_i - r_i| / M_ii <= sum over the stores (max_i |dr_i| / M_ii or 2 max_i |dx_i|)  (max)
+// (lambda = 0, triangles: |D^-1/2 A D^-1/2|_2 <= 2, Wathen, and the rows of A are positive and sum
+// to 2 M_ii). diagonal: M_ii (in). res_mass, res_max: the last recursive r's sum r_i^2 / M_ii and
+// max_i |r_i| / M_ii (out).
+struct Drift {
+  const double* diagonal = nullptr;
+  std::array<double, 4> norm{}, max{}, res_mass{}, res_max{};
+  void add(const double sums[8], double factor) {  // sums: a pass's Drift4 (mass[4], max[4])
+    for (int k = 0; k < 4; ++k) {
+      norm[k] += factor * std::sqrt(sums[k]);
+      max[k] += factor * sums[4 + k];
+    }
+  }
 };
 
 // Memory for CG's work vectors: `count` arrays of n values of T, carved from already-touched
@@ -861,7 +918,10 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   };
   apply(x, Ap, pAp.data(), false);  // pAp unused here
   if constexpr (W == 4) {
-    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data(), res_max.data());
+    double sums[8];
+    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data(), res_max.data(),
+                    inv_d, o.drift ? sums : nullptr);
+    if (o.drift) o.drift->add(sums, 1);
     if (o.rhs2_out) *o.rhs2_out = rhs2;
   } else {
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -910,8 +970,10 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     abs_old = abs_new;
     abs_new.fill(0.0);
     if constexpr (W == 4) {  // z = D^-1 r, not stored; x += alpha p in the direction pass (or below)
+      double sums[8];
       lanes4_step(inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), Ap, r, res2.data(),
-                  res_mass.data(), abs_new.data(), sharp ? res_max.data() : nullptr);
+                  res_mass.data(), abs_new.data(), sharp ? res_max.data() : nullptr, o.drift ? sums : nullptr);
+      if (o.drift) o.drift->add(sums, 1);
       x_behind = true;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
@@ -935,7 +997,10 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
     if constexpr (W == 4) {
-      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, p);
+      double sums[8];
+      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, p, o.drift ? o.drift->diagonal : nullptr,
+                       o.drift ? sums : nullptr);
+      if (o.drift) o.drift->add(sums, 2);
       x_behind = false;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -946,7 +1011,17 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     }
   }
   if constexpr (W == 4)
-    if (x_behind) lanes4_add_step(p, N, alpha.data(), x);
+    if (x_behind) {
+      double sums[8];
+      lanes4_add_step(p, N, alpha.data(), x, o.drift ? o.drift->diagonal : nullptr, o.drift ? sums : nullptr);
+      if (o.drift) o.drift->add(sums, 2);
+    }
+  if constexpr (W == 4)
+    if (o.drift)
+      for (std::size_t k = 0; k < 4; ++k) {
+        o.drift->res_mass[k] = res_mass[k];
+        o.drift->res_max[k] = res_max[k];
+      }
   fit.iterations = std::max(fit.iterations, iterations);
   for (std::size_t k = 0; k < W; ++k) {
     const double relative = rhs2[k] > 0 ? std::sqrt(res2[k] / rhs2[k]) : 0.0;  // divisor checked
@@ -1209,6 +1284,57 @@ constexpr double kFloatTrigger = 0.8;
 // 4-8% faster). A server core's last-level cache.
 constexpr std::size_t kFloatVectorsAbove = std::size_t(32) << 20;
 
+// The float path's check (solve_float_vectors, when the drift bound does not prove every channel):
+// t = b - A x in double (x's float values exactly, in place in b), each channel proven by the stop
+// on t, or finished in double (correction: e, #nodes by 4).
+template <class FirstGuess>
+void check_and_finish(const FitOperator& A, const std::vector<double>& inverse_diagonal,
+                      const std::vector<std::uint32_t>& off_system, double* b, const float* x,
+                      const BlockCgOptions& options, const FirstGuess& first_guess, const std::array<double, 4>& rhs2,
+                      bool sharp, std::unique_ptr<double[]>& correction, LeastSquaresFit& fit) {
+  const std::size_t N = inverse_diagonal.size(), n = 4 * N;
+  // The check: t = b - A x in double (x's float values exactly), sum t^2 and sum t^2 / M_ii per lane.
+  double unused[4], t2[4], t_mass[4], t_max[4];
+  apply_operator<4, float, true>(A, x, b, unused, true);
+  for (std::uint32_t i : off_system)
+    for (std::size_t k = 0; k < 4; ++k) b[4 * std::size_t(i) + k] = 0;
+  lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass, t_max);
+  std::array<bool, 4> proven{};
+  bool all = true;
+  double residual_proven = 0, t_relative_rest = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double relative = rhs2[k] > 0 ? std::sqrt(t2[k] / rhs2[k]) : 0.0;  // divisor checked
+    const double threshold = std::max(options.tolerance * options.tolerance * rhs2[k], std::numeric_limits<double>::min());
+    const bool within = sharp ? fit_error_bound(t_max[k], t_mass[k], options.min_mass) <= options.sharp_accuracy
+                              : t_mass[k] <= options.accuracy_bound;
+    proven[k] = within || t2[k] < threshold;  // b = 0: t = 0, proven
+    all = all && proven[k];
+    if (proven[k])
+      residual_proven = std::max(residual_proven, relative);
+    else
+      t_relative_rest = std::max(t_relative_rest, relative);
+  }
+  fit.residual = std::max(residual_proven, t_relative_rest);
+  fit.converged = all;
+  const int left = options.max_iterations - fit.iterations;
+  if (!all && left > 0) {
+    fit.double_finish = true;
+    for (std::size_t k = 0; k < 4; ++k)
+      if (proven[k])
+        for (std::size_t i = 0; i < N; ++i) b[4 * i + k] = 0;  // nothing left to solve: e = 0
+    correction.reset(new double[n]);
+    first_guess(b, correction.get());
+    BlockCgOptions rest = options;
+    rest.max_iterations = left;
+    rest.rhs2_out = nullptr;
+    LeastSquaresFit counts;
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b, 4, rest, correction.get(), nullptr, 0, counts);
+    fit.iterations += counts.iterations;
+    fit.residual = std::max(residual_proven, counts.residual * t_relative_rest);  // counts' residual: relative to |t|
+    fit.converged = counts.converged;
+  }
+}
+
 // The 8-bit path's solve (least_squares_fit.h, Precision): x, r and p stored in float, Ap and b in
 // double (Ap, p, r, x in that order in the spent f while it lasts; x in the caller's x_given when
 // non-null: the quadrature's scratch); every sum in double. The
@@ -1241,49 +1367,25 @@ void solve_float_vectors(const FitOperator& A, const std::vector<double>& invers
   std::array<double, 4> rhs2{};
   cg.rhs2_out = &rhs2;
   fit.float_vectors = true;
-  block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b, r, cg, x, p, Ap, fit);
-  // The check: t = b - A x in double (x's float values exactly), sum t^2 and sum t^2 / M_ii per lane.
-  double unused[4], t2[4], t_mass[4], t_max[4];
-  apply_operator<4, float, true>(A, x, b, unused, true);
-  for (std::uint32_t i : off_system)
-    for (std::size_t k = 0; k < 4; ++k) b[4 * std::size_t(i) + k] = 0;
-  lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass, t_max);
   const bool sharp = options.sharp_accuracy > 0 && options.min_mass > 0 && options.inverse_mass == &inverse_diagonal;
-  std::array<bool, 4> proven{};
-  bool all = true;
-  double residual_proven = 0, t_relative_rest = 0;
-  for (std::size_t k = 0; k < 4; ++k) {
-    const double relative = rhs2[k] > 0 ? std::sqrt(t2[k] / rhs2[k]) : 0.0;  // divisor checked
-    const double threshold = std::max(options.tolerance * options.tolerance * rhs2[k], std::numeric_limits<double>::min());
-    const bool within = sharp ? fit_error_bound(t_max[k], t_mass[k], options.min_mass) <= options.sharp_accuracy
-                              : t_mass[k] <= options.accuracy_bound;
-    proven[k] = within || t2[k] < threshold;  // b = 0: t = 0, proven
-    all = all && proven[k];
-    if (proven[k])
-      residual_proven = std::max(residual_proven, relative);
-    else
-      t_relative_rest = std::max(t_relative_rest, relative);
+  Drift drift;  // the sharp stop: the drift bounded as it accrues (Drift)
+  drift.diagonal = A.diagonal.data();
+  if (sharp) cg.drift = &drift;
+  block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b, r, cg, x, p, Ap, fit);
+  // Proven without the check when the recursion's residual and the drift bound meet the sharp stop
+  // for every channel: |D^-1/2 t| <= |D^-1/2 r| + norm, max |t_i| / M_ii <= max |r_i| / M_ii + max.
+  bool drift_proven = sharp;
+  for (std::size_t k = 0; k < 4 && drift_proven; ++k) {
+    const double norm = std::sqrt(drift.res_mass[k]) + drift.norm[k];
+    drift_proven = rhs2[k] == 0 ||
+                   fit_error_bound(drift.res_max[k] + drift.max[k], norm * norm, options.min_mass) <= options.sharp_accuracy;
   }
-  fit.residual = std::max(residual_proven, t_relative_rest);
-  fit.converged = all;
+  if (drift_proven) {
+    fit.drift_bounded = true;
+    fit.converged = true;
+  }
   std::unique_ptr<double[]> correction;  // e, #nodes by 4, when a channel is finished in double
-  const int left = options.max_iterations - fit.iterations;
-  if (!all && left > 0) {
-    fit.double_finish = true;
-    for (std::size_t k = 0; k < 4; ++k)
-      if (proven[k])
-        for (std::size_t i = 0; i < N; ++i) b[4 * i + k] = 0;  // nothing left to solve: e = 0
-    correction.reset(new double[n]);
-    first_guess(b, correction.get());
-    BlockCgOptions rest = options;
-    rest.max_iterations = left;
-    rest.rhs2_out = nullptr;
-    LeastSquaresFit counts;
-    block_conjugate_gradient(A, inverse_diagonal, off_system, b, 4, rest, correction.get(), nullptr, 0, counts);
-    fit.iterations += counts.iterations;
-    fit.residual = std::max(residual_proven, counts.residual * t_relative_rest);  // counts' residual: relative to |t|
-    fit.converged = counts.converged;
-  }
+  if (!drift_proven) check_and_finish(A, inverse_diagonal, off_system, b, x, options, first_guess, rhs2, sharp, correction, fit);
   // fit.values into the spent f (values_in_spent non-null): its first 24 bytes a node are Ap's
   // (double, placed first), dead now; x is never there (after Ap, p and r, or in the scratch)
   if (values_in_spent) values_in_spent();

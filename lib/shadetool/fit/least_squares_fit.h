@@ -92,11 +92,21 @@
 // sum_i r_i^2 / M_ii adds #nodes terms: in float its rounding would grow with the count. What
 // float storage breaks is the proof above, which needs the true residual b - A c: the recursive
 // residual r (r -= alpha Ap, stored in float; x rounded at each step) drifts from it by rounding of
-// order 2^-24 |A| |x| summed over the steps. So the float recursion stops at 0.8 of the bound, and
-// the true residual t = b - A c of the float c is then computed in double (one operator pass, in
-// place in b, which is read no more) and tested against the full bound: the proof holds for t as
-// computed, whatever the drift (t's own rounding in double, about 2^-53 of |b|, is ignored as the
-// double path ignores its own). A channel whose t is not within the bound (the drift took more
+// order 2^-24 |A| |x| summed over the steps. So the float recursion stops at 0.8 of the bound.
+// With the sharp stop the drift is then bounded from the roundings themselves, measured as they
+// happen: each float store of r (exact value minus stored value dr, exact in double) moves t - r
+// by dr, each store of x (dx) by A dx, and nothing else does (x0 is what it is, and t0 = b - A x0
+// is what the first residual rounds), so t - r is the sum of those moves and
+//     |D^-1/2 (t - r)|_2 <= sum (|D^-1/2 dr|_2 or 2 |D^1/2 dx|_2)   (|D^-1/2 A D^-1/2|_2 <= 2)
+//     max_i |t_i - r_i| / M_ii <= sum (max |dr_i| / M_ii or 2 max |dx_i|)   (A >= 0, rows sum to 2 M_ii)
+// (the sums accumulated in the vector passes that make the stores: no pass of their own). When
+// fit_error_bound of r's sums plus these is within a for every channel, the channel is proven
+// without t (LeastSquaresFit::drift_bounded; on the 1M torus the bound is a few % of a: values of
+// size 1 round by 6e-8). Otherwise (quads, lambda > 0, large values) the true residual t = b - A c
+// of the float c is computed in double (one operator pass, in place in b, which is read no more)
+// and tested against the full bound: the proof holds for t as computed, whatever the drift. Either
+// way the doubles' own roundings (t's, A p's: about 2^-53 of |b|) are ignored as the double path
+// ignores its own. A channel whose t is not within the bound (the drift took more
 // than the margin, or the bound asks for more than a float c can resolve:
 // |D^-1/2 A (c - fl(c))| grows as sqrt(#nodes) while the bound does not) is finished in double: CG
 // on A e = t from e's lumped-mass guess, c + e (LeastSquaresFit::double_finish). The float c
@@ -355,6 +365,8 @@ struct LeastSquaresFit {
   bool converged = true;
   bool float_vectors = false;       // CG's vectors were stored in float (Precision)
   bool double_finish = false;       // ... and a channel's true residual was above the bound: finished in double
+  bool drift_bounded = false;       // ... and every channel proven by the recursion's residual and the drift
+                                    // bound (Precision), without the true residual's operator pass
 };
 
 // The nodes that touch no face of positive area (no triangle of q, no quad with mass): they are no
