@@ -581,9 +581,9 @@ inline __attribute__((always_inline)) void lanes4_max_abs(Lanes4& acc, const Lan
   acc = acc >= a ? acc : a;
 }
 
-// The rounding of one float store, per lane: d = exact - stored (exact in double: a double and its
-// rounding to float differ by a double, Sterbenz), summed as d^2 weight into mass and as |d| scale
-// into max (the drift bound of the float path, least_squares_fit.h, Precision).
+// The rounding of one float store of x, per lane: d = exact - stored (exact in double: a double and
+// its rounding to float differ by a double, Sterbenz), summed as d^2 into mass and as |d| into max
+// (the drift bound of the float path, least_squares_fit.h, Precision; Drift).
 struct Drift4 {
   Lanes4 mass = {0, 0, 0, 0}, max = {0, 0, 0, 0};
   void out(double* to) const {  // mass[4], then max[4]
@@ -591,11 +591,10 @@ struct Drift4 {
     std::memcpy(to + 4, &max, sizeof max);
   }
 };
-inline __attribute__((always_inline)) void add_drift(Drift4& drift, const Lanes4& exact, const Lanes4& stored,
-                                                     double weight, double scale) {
+inline __attribute__((always_inline)) void add_drift(Drift4& drift, const Lanes4& exact, const Lanes4& stored) {
   const Lanes4 d = exact - stored;
-  drift.mass += d * d * weight;
-  lanes4_max_abs(drift.max, d, scale);
+  drift.mass += d * d;
+  lanes4_max_abs(drift.max, d, 1.0);
 }
 
 // CG's per-iteration vector passes over 4 lanes per node (block_conjugate_gradient<4>), one 4-wide
@@ -611,19 +610,15 @@ inline __attribute__((always_inline)) void add_drift(Drift4& drift, const Lanes4
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const double alpha_in[4], double* Ap,
-                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4], double* res_max_out,
-                 double* drift_out) {
+                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4], double* res_max_out) {
   Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, Api, ri;
-  Drift4 drift;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
     Lanes4 zero = {0, 0, 0, 0};
     load4(Api, Ap + 4 * i);
     load4(ri, r + 4 * i);
     ri = ri - alpha * Api;
-    const Lanes4 exact = ri;
     store4(r + 4 * i, ri);
-    if (drift_out) add_drift(drift, exact, ri, inv_d[i], inv_d[i]);  // sum dr^2 / M_ii, max |dr| / M_ii
     store4(Ap + 4 * i, zero);
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
@@ -634,13 +629,11 @@ void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const 
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
   if (res_max_out) std::memcpy(res_max_out, &res_max, sizeof res_max);
-  if (drift_out) drift.out(drift_out);
 }
 // x += alpha p (the last step's, when no direction pass follows it).
 template <class T>
 __attribute__((target_clones("avx2", "default")))
-void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x, const double* diagonal,
-                     double* drift_out) {
+void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x, double* drift_out) {
   Lanes4 alpha, pi, xi;
   Drift4 drift;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
@@ -650,7 +643,7 @@ void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x, 
     xi += alpha * pi;
     const Lanes4 exact = xi;
     store4(x + 4 * i, xi);
-    if (drift_out) add_drift(drift, exact, xi, diagonal[i], 1.0);  // sum M_ii dx^2, max |dx|
+    if (drift_out) add_drift(drift, exact, xi);  // sum dx^2, max |dx|
   }
   if (drift_out) drift.out(drift_out);
 }
@@ -659,17 +652,13 @@ void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x, 
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const double* b, T* r, double rhs2_out[4],
-                     double res2_out[4], double res_mass_out[4], double res_max_out[4], const double* inv_d,
-                     double* drift_out) {
+                     double res2_out[4], double res_mass_out[4], double res_max_out[4]) {
   Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, bi, Api;
-  Drift4 drift;
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&bi, b + 4 * i, sizeof bi);
     load4(Api, Ap + 4 * i);
     Lanes4 ri = bi - Api;
-    const Lanes4 exact = ri;
     store4(r + 4 * i, ri);
-    if (drift_out) add_drift(drift, exact, ri, inv_d[i], inv_d[i]);
     rhs2 += bi * bi;
     res2 += ri * ri;
     if (inv_m) {
@@ -681,7 +670,6 @@ void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(res_max_out, &res_max, sizeof res_max);
-  if (drift_out) drift.out(drift_out);
 }
 // The first direction p = inv_d_i r, with sum r p, per lane.
 template <class T>
@@ -700,7 +688,7 @@ void lanes4_first_direction(const T* r, const double* inv_d, std::size_t N, T* p
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_direction(const T* r, const double* inv_d, std::size_t N, const double alpha_in[4],
-                      const double beta_in[4], T* x, T* p, const double* diagonal, double* drift_out) {
+                      const double beta_in[4], T* x, T* p, double* drift_out) {
   Lanes4 alpha, beta, ri, pi, xi;
   Drift4 drift;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
@@ -714,7 +702,7 @@ void lanes4_direction(const T* r, const double* inv_d, std::size_t N, const doub
     const Lanes4 exact = xi;
     store4(x + 4 * i, xi);
     store4(p + 4 * i, pi);
-    if (drift_out) add_drift(drift, exact, xi, diagonal[i], 1.0);  // sum M_ii dx^2, max |dx|
+    if (drift_out) add_drift(drift, exact, xi);  // sum dx^2, max |dx|
   }
   if (drift_out) drift.out(drift_out);
 }
@@ -846,20 +834,32 @@ struct BlockCgOptions {
   struct Drift* drift = nullptr;
 };
 
-// The float path's drift bound, per lane: every float store of r (r_k, its rounding dr = exact -
-// stored) and of x (dx) moves t - r by dr or A dx, so at the end
-//   |D^-1/2 (t - r)|_2 <= sum over the stores (|D^-1/2 dr|_2 or 2 |D^1/2 dx|_2)      (norm)
-//   max_i |t_i - r_i| / M_ii <= sum over the stores (max_i |dr_i| / M_ii or 2 max_i |dx_i|)  (max)
+// The float path's drift bound, per lane: every float store of r (its rounding dr = exact - stored)
+// and of x (dx) moves t - r by dr or A dx, so at the end
+//   |D^-1/2 (t - r)|_2 <= sum over the stores (|D^-1/2 dr|_2 or 2 |D^1/2 dx|_2)
+//   max_i |t_i - r_i| / M_ii <= sum over the stores (max_i |dr_i| / M_ii or 2 max_i |dx_i|)
 // (lambda = 0, triangles: |D^-1/2 A D^-1/2|_2 <= 2, Wathen, and the rows of A are positive and sum
-// to 2 M_ii). diagonal: M_ii (in). res_mass, res_max: the last recursive r's sum r_i^2 / M_ii and
-// max_i |r_i| / M_ii (out).
+// to 2 M_ii). r's roundings from the stored r's own sums, which the stop computes anyway: rounding
+// to nearest float, |dr_i| <= u |r_i| + 2^-150 (u = 2^-24; the absolute term for a subnormal r), so
+// |D^-1/2 dr|_2 <= u sqrt(sum r_i^2 / M_ii) + 2^-150 sqrt(#nodes max 1 / M_ii) and max_i |dr_i| / M_ii
+// <= u max_i |r_i| / M_ii + 2^-150 max 1 / M_ii. x's measured in the passes that store x (sum dx^2,
+// max |dx|), |D^1/2 dx|_2 <= sqrt(max M_ii) |dx|_2. res_mass, res_max: the last recursive r's sums
+// (out).
 struct Drift {
-  const double* diagonal = nullptr;
+  double max_mass = 0, max_inverse_mass = 0;  // max M_ii and max 1 / M_ii over the system (in)
+  std::size_t nodes = 0;                      // (in)
   std::array<double, 4> norm{}, max{}, res_mass{}, res_max{};
-  void add(const double sums[8], double factor) {  // sums: a pass's Drift4 (mass[4], max[4])
+  void add_r(const std::array<double, 4>& mass, const std::array<double, 4>& largest) {  // a store of r
+    constexpr double u = 0x1p-24, tiny = 0x1p-150;
     for (int k = 0; k < 4; ++k) {
-      norm[k] += factor * std::sqrt(sums[k]);
-      max[k] += factor * sums[4 + k];
+      norm[k] += u * std::sqrt(mass[k]) + tiny * std::sqrt(double(nodes) * max_inverse_mass);
+      max[k] += u * largest[k] + tiny * max_inverse_mass;
+    }
+  }
+  void add_x(const double sums[8]) {  // a store of x: a pass's Drift4 (sum dx^2 [4], max |dx| [4])
+    for (int k = 0; k < 4; ++k) {
+      norm[k] += 2 * std::sqrt(max_mass * sums[k]);
+      max[k] += 2 * sums[4 + k];
     }
   }
 };
@@ -918,10 +918,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   };
   apply(x, Ap, pAp.data(), false);  // pAp unused here
   if constexpr (W == 4) {
-    double sums[8];
-    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data(), res_max.data(),
-                    inv_d, o.drift ? sums : nullptr);
-    if (o.drift) o.drift->add(sums, 1);
+    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data(), res_max.data());
+    if (o.drift) o.drift->add_r(res_mass, res_max);  // inv_m = inv_d (the sharp stop)
     if (o.rhs2_out) *o.rhs2_out = rhs2;
   } else {
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -970,10 +968,9 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     abs_old = abs_new;
     abs_new.fill(0.0);
     if constexpr (W == 4) {  // z = D^-1 r, not stored; x += alpha p in the direction pass (or below)
-      double sums[8];
       lanes4_step(inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), Ap, r, res2.data(),
-                  res_mass.data(), abs_new.data(), sharp ? res_max.data() : nullptr, o.drift ? sums : nullptr);
-      if (o.drift) o.drift->add(sums, 1);
+                  res_mass.data(), abs_new.data(), sharp ? res_max.data() : nullptr);
+      if (o.drift) o.drift->add_r(abs_new, res_max);  // sum r_i^2 / M_ii (abs_new: inv_d = inv_m)
       x_behind = true;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
@@ -998,9 +995,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
     if constexpr (W == 4) {
       double sums[8];
-      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, p, o.drift ? o.drift->diagonal : nullptr,
-                       o.drift ? sums : nullptr);
-      if (o.drift) o.drift->add(sums, 2);
+      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, p, o.drift ? sums : nullptr);
+      if (o.drift) o.drift->add_x(sums);
       x_behind = false;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -1013,8 +1009,8 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
   if constexpr (W == 4)
     if (x_behind) {
       double sums[8];
-      lanes4_add_step(p, N, alpha.data(), x, o.drift ? o.drift->diagonal : nullptr, o.drift ? sums : nullptr);
-      if (o.drift) o.drift->add(sums, 2);
+      lanes4_add_step(p, N, alpha.data(), x, o.drift ? sums : nullptr);
+      if (o.drift) o.drift->add_x(sums);
     }
   if constexpr (W == 4)
     if (o.drift)
@@ -1369,8 +1365,12 @@ void solve_float_vectors(const FitOperator& A, const std::vector<double>& invers
   fit.float_vectors = true;
   const bool sharp = options.sharp_accuracy > 0 && options.min_mass > 0 && options.inverse_mass == &inverse_diagonal;
   Drift drift;  // the sharp stop: the drift bounded as it accrues (Drift)
-  drift.diagonal = A.diagonal.data();
-  if (sharp) cg.drift = &drift;
+  if (sharp) {
+    drift.nodes = N;
+    for (std::size_t i = 0; i < N; ++i) drift.max_mass = std::max(drift.max_mass, A.diagonal[i]);
+    drift.max_inverse_mass = 1 / options.min_mass;  // divisor checked: sharp needs min_mass > 0
+    cg.drift = &drift;
+  }
   block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b, r, cg, x, p, Ap, fit);
   // Proven without the check when the recursion's residual and the drift bound meet the sharp stop
   // for every channel: |D^-1/2 t| <= |D^-1/2 r| + norm, max |t_i| / M_ii <= max |r_i| / M_ii + max.

@@ -93,13 +93,15 @@
 // float storage breaks is the proof above, which needs the true residual b - A c: the recursive
 // residual r (r -= alpha Ap, stored in float; x rounded at each step) drifts from it by rounding of
 // order 2^-24 |A| |x| summed over the steps. So the float recursion stops at 0.8 of the bound.
-// With the sharp stop the drift is then bounded from the roundings themselves, measured as they
-// happen: each float store of r (exact value minus stored value dr, exact in double) moves t - r
-// by dr, each store of x (dx) by A dx, and nothing else does (x0 is what it is, and t0 = b - A x0
-// is what the first residual rounds), so t - r is the sum of those moves and
-//     |D^-1/2 (t - r)|_2 <= sum (|D^-1/2 dr|_2 or 2 |D^1/2 dx|_2)   (|D^-1/2 A D^-1/2|_2 <= 2)
+// With the sharp stop the drift is then bounded from the roundings themselves: each float store of
+// r (exact value minus stored value dr) moves t - r by dr, each store of x (dx) by A dx, and nothing
+// else does (x0 is what it is, and t0 = b - A x0 is what the first residual rounds), so t - r is
+// the sum of those moves and
+//     |D^-1/2 (t - r)|_2 <= sum (|D^-1/2 dr|_2 or 2 sqrt(max M_ii) |dx|_2)   (|D^-1/2 A D^-1/2|_2 <= 2)
 //     max_i |t_i - r_i| / M_ii <= sum (max |dr_i| / M_ii or 2 max |dx_i|)   (A >= 0, rows sum to 2 M_ii)
-// (the sums accumulated in the vector passes that make the stores: no pass of their own). When
+// r's terms from the stored r's own sums (|dr_i| <= 2^-24 |r_i| + 2^-150: rounding to nearest,
+// a subnormal's absolute error), x's measured exactly (a double and its float rounding differ by a
+// double) in the passes that store x: no pass of their own. When
 // fit_error_bound of r's sums plus these is within a for every channel, the channel is proven
 // without t (LeastSquaresFit::drift_bounded; on the 1M torus the bound is a few % of a: values of
 // size 1 round by 6e-8). Otherwise (quads, lambda > 0, large values) the true residual t = b - A c
