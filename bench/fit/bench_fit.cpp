@@ -591,9 +591,10 @@ int main(int argc, char** argv) {
     }
     std::printf("%s %s pt: %zu of %zu bytes differ (%zu values differ); max |c - c*| float %.3g, double %.3g (bound %.3g); "
                 "exact value within %.3g of the byte boundary where they differ; CG iterations float %d (float vectors %d, "
-                "double finish %d), double %d\n",
+                "double finish %d, drift bounded %d), double %d\n",
                 argv[3], argv[4], differ, exact.rgb.size(), values_differ, worst_float, worst_double, kEightBitFitAccuracy,
                 worst_gap, in_float.solve.iterations, int(in_float.solve.float_vectors), int(in_float.solve.double_finish),
+                int(in_float.solve.drift_bounded),
                 in_double.solve.iterations);
     return 0;
   }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <shadetool/lighting/fit_vertex_lighting.h>
 
@@ -202,5 +203,46 @@ TEST_CASE("Without the point colours (VertexColors::None) the fit is the same bi
     if (shadows_on) CHECK(without.fallback_counters.shadowed > 0);  // the sky partly hidden: the seeds matter
     for (std::uint32_t v : {a - 1, a, a + 1, a + 2})
       for (int k = 0; k < 3; ++k) CHECK(without.rgb[3 * v + k] == std::min(std::max(full.rgb[3 * v + k], 0.0), 1.0));
+  }
+}
+
+TEST_CASE("f clamped as it is shaded (lighting_at_sites' bounds) is the unclamped f clamped after, bit for bit, "
+          "with and without shadows",
+          "[lighting][fit]") {
+  // Truth: the unbounded f (the default bounds change nothing: every value compared with the
+  // unbounded call's) with std::min(std::max(v, lower), upper) applied here afterwards. A bright
+  // point light with a highlight puts values above 1, a dark side below 0.2; bounds [0.2, 1].
+  const Mesh sphere = icosphere(2).mesh;
+  Scene scene = dark_scene(ShadingModel::Phong);
+  scene.material.diffuse = {0.9, 0.9, 0.9};
+  scene.material.specular = {0.9, 0.9, 0.9};
+  scene.material.shininess = 20;
+  scene.lights.push_back(point_light({2.5, 1.5, 3}, {1, 0, 0}, {3, 3, 3}));
+  scene.camera_from_world = camera_at({0, 0, 4});
+  scene.has_camera = true;
+  const BakeResult point = bake_lighting(sphere, scene, ShadingFrequency::PerVertex, {}, {});
+  const std::vector<double> world = world_positions(sphere, scene);
+  const FitElements e = fit_elements(sphere);
+  for (int samples : {1, 3}) {
+    const FitQuadrature q = fit_quadrature(e, world, samples);
+    for (bool shadows_on : {false, true}) {
+      ShadowOptions shadows;
+      shadows.enabled = shadows_on;
+      const std::vector<double> raw = lighting_at_sites(sphere, scene, q, world, point.vertex_normals, {}, shadows);
+      const std::vector<double> bounded =
+          lighting_at_sites(sphere, scene, q, world, point.vertex_normals, {}, shadows, nullptr, 0.2, 1.0);
+      REQUIRE(bounded.size() == raw.size());
+      std::size_t above = 0, below = 0, differ = 0;
+      for (std::size_t i = 0; i < raw.size(); ++i) {
+        above += raw[i] > 1.0;
+        below += raw[i] < 0.2;
+        const double expected = std::min(std::max(raw[i], 0.2), 1.0);
+        differ += std::memcmp(&expected, &bounded[i], sizeof expected) != 0;
+      }
+      INFO(samples << " points, shadows " << shadows_on << ": " << above << " values above 1, " << below << " below 0.2");
+      CHECK(above > 0);
+      CHECK(below > 0);
+      CHECK(differ == 0);
+    }
   }
 }

@@ -236,9 +236,9 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   const bool hand_over = spare && entry_bytes >= (std::size_t(4) << 20);
   const std::size_t block_bytes = hand_over ? std::max(entry_bytes, spare->wanted) : entry_bytes;
   std::unique_ptr<std::byte[]> block(new std::byte[block_bytes]);
-  std::uint32_t* const entry_hi = ::new (static_cast<void*>(block.get())) std::uint32_t[entries];
-  std::uint32_t* const entry_site =
-      ::new (static_cast<void*>(block.get() + entries * sizeof(std::uint32_t))) std::uint32_t[entries];
+  // entry k: its higher vertex at 2k, its site at 2k + 1 (one cache line for both: a point that
+  // finds its edge reads the site beside the vertex it compared)
+  std::uint32_t* const entry = ::new (static_cast<void*>(block.get())) std::uint32_t[2 * entries];
   q.site.resize(S);
   // site_point: of its S possible entries only `sites` are written (half of them on a closed mesh
   // under the 3-point rule). Above 4 MiB it is reserved and appended to, so that the unwritten half
@@ -255,13 +255,13 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
       const std::size_t lo = key >> 32;
       const std::uint32_t hi = std::uint32_t(key);
       std::uint32_t k = offset[lo];
-      while (k < end[lo] && entry_hi[k] != hi) ++k;
+      while (k < end[lo] && entry[2 * std::size_t(k)] != hi) ++k;
       if (k < end[lo]) {  // an earlier point of this edge: its site
-        q.site[p] = entry_site[k];
+        q.site[p] = entry[2 * std::size_t(k) + 1];
         return;
       }
-      entry_hi[k] = hi;  // the first point of this edge
-      entry_site[k] = std::uint32_t(sites);
+      entry[2 * std::size_t(k)] = hi;  // the first point of this edge
+      entry[2 * std::size_t(k) + 1] = std::uint32_t(sites);
       ++end[lo];
     }
     q.site[p] = std::uint32_t(sites);
@@ -572,20 +572,46 @@ void build_fit_operator(const FitElements& e, const std::vector<double>& positio
   }
 }
 
+// The larger of a and b, b when b is NaN (a NaN residual fails the stop's test).
+inline double max_keeping_nan(double a, double b) { return a >= b ? a : b; }
+// acc = max(acc, |v| scale) per lane (a NaN in |v| scale is kept, so that a NaN residual fails the
+// stop's test). By reference: a 32-byte vector is not passed by value (ABI).
+inline __attribute__((always_inline)) void lanes4_max_abs(Lanes4& acc, const Lanes4& v, double scale) {
+  const Lanes4 a = (v < 0 ? -v : v) * scale;
+  acc = acc >= a ? acc : a;
+}
+
+// The rounding of one float store of x, per lane: d = exact - stored (exact in double: a double and
+// its rounding to float differ by a double, Sterbenz), summed as d^2 into mass and as |d| into max
+// (the drift bound of the float path, least_squares_fit.h, Precision; Drift).
+struct Drift4 {
+  Lanes4 mass = {0, 0, 0, 0}, max = {0, 0, 0, 0};
+  void out(double* to) const {  // mass[4], then max[4]
+    std::memcpy(to, &mass, sizeof mass);
+    std::memcpy(to + 4, &max, sizeof max);
+  }
+};
+inline __attribute__((always_inline)) void add_drift(Drift4& drift, const Lanes4& exact, const Lanes4& stored) {
+  const Lanes4 d = exact - stored;
+  drift.mass += d * d;
+  lanes4_max_abs(drift.max, d, 1.0);
+}
+
 // CG's per-iteration vector passes over 4 lanes per node (block_conjugate_gradient<4>), one 4-wide
 // operation per node where the scalar loops do four: per lane the same operations in the same
 // node order (each lane's sums run over the nodes in turn), so the same bits. AVX2 and baseline
 // builds (target_clones; no FMA). T: the vectors' storage (load4/store4: double, or float on the
 // 8-bit path; arithmetic and sums in double either way, each sum over the stored values).
-// r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new += r^2 inv_d_i,
-// per lane; Ap cleared for the next operator pass (its lines are in cache here: the direction pass
+// r -= alpha Ap; res2 += r^2; res_mass += r^2 inv_m_i (inv_m non-null); abs_new += r^2 inv_d_i;
+// res_max = max |r_i| inv_d_i (res_max_out non-null: the sharp stop's term, fit_error_bound), per
+// lane; Ap cleared for the next operator pass (its lines are in cache here: the direction pass
 // need not stream Ap). x += alpha p is left to the direction pass (lanes4_direction), which reads
 // p anyway, or to lanes4_add_step after the last step.
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const double alpha_in[4], double* Ap,
-                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4]) {
-  Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, Api, ri;
+                 T* r, double res2_out[4], double res_mass_out[4], double abs_new_out[4], double* res_max_out) {
+  Lanes4 alpha, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, abs_new = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, Api, ri;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
     Lanes4 zero = {0, 0, 0, 0};
@@ -597,31 +623,37 @@ void lanes4_step(const double* inv_d, const double* inv_m, std::size_t N, const 
     res2 += ri * ri;
     if (inv_m) res_mass += ri * ri * inv_m[i];
     abs_new += ri * ri * inv_d[i];
+    if (res_max_out) lanes4_max_abs(res_max, ri, inv_d[i]);
   }
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
   std::memcpy(abs_new_out, &abs_new, sizeof abs_new);
+  if (res_max_out) std::memcpy(res_max_out, &res_max, sizeof res_max);
 }
 // x += alpha p (the last step's, when no direction pass follows it).
 template <class T>
 __attribute__((target_clones("avx2", "default")))
-void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x) {
+void lanes4_add_step(const T* p, std::size_t N, const double alpha_in[4], T* x, double* drift_out) {
   Lanes4 alpha, pi, xi;
+  Drift4 drift;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   for (std::size_t i = 0; i < N; ++i) {
     load4(pi, p + 4 * i);
     load4(xi, x + 4 * i);
     xi += alpha * pi;
+    const Lanes4 exact = xi;
     store4(x + 4 * i, xi);
+    if (drift_out) add_drift(drift, exact, xi);  // sum dx^2, max |dx|
   }
+  if (drift_out) drift.out(drift_out);
 }
 // The first residual r = b - Ap (b double: for T = double r may be b itself, b in and r out), with
-// sum b^2, sum r^2 and (inv_m non-null) sum r^2 inv_m_i, per lane.
+// sum b^2, sum r^2 and (inv_m non-null) sum r^2 inv_m_i and max |r_i| inv_m_i, per lane.
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const double* b, T* r, double rhs2_out[4],
-                     double res2_out[4], double res_mass_out[4]) {
-  Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, bi, Api;
+                     double res2_out[4], double res_mass_out[4], double res_max_out[4]) {
+  Lanes4 rhs2 = {0, 0, 0, 0}, res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, bi, Api;
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&bi, b + 4 * i, sizeof bi);
     load4(Api, Ap + 4 * i);
@@ -629,11 +661,15 @@ void lanes4_residual(const double* Ap, const double* inv_m, std::size_t N, const
     store4(r + 4 * i, ri);
     rhs2 += bi * bi;
     res2 += ri * ri;
-    if (inv_m) res_mass += ri * ri * inv_m[i];
+    if (inv_m) {
+      res_mass += ri * ri * inv_m[i];
+      lanes4_max_abs(res_max, ri, inv_m[i]);
+    }
   }
   std::memcpy(rhs2_out, &rhs2, sizeof rhs2);
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
+  std::memcpy(res_max_out, &res_max, sizeof res_max);
 }
 // The first direction p = inv_d_i r, with sum r p, per lane.
 template <class T>
@@ -652,8 +688,9 @@ void lanes4_first_direction(const T* r, const double* inv_d, std::size_t N, T* p
 template <class T>
 __attribute__((target_clones("avx2", "default")))
 void lanes4_direction(const T* r, const double* inv_d, std::size_t N, const double alpha_in[4],
-                      const double beta_in[4], T* x, T* p) {
+                      const double beta_in[4], T* x, T* p, double* drift_out) {
   Lanes4 alpha, beta, ri, pi, xi;
+  Drift4 drift;
   std::memcpy(&alpha, alpha_in, sizeof alpha);
   std::memcpy(&beta, beta_in, sizeof beta);
   for (std::size_t i = 0; i < N; ++i) {
@@ -662,21 +699,30 @@ void lanes4_direction(const T* r, const double* inv_d, std::size_t N, const doub
     load4(xi, x + 4 * i);
     xi += alpha * pi;
     pi = ri * inv_d[i] + beta * pi;
+    const Lanes4 exact = xi;
     store4(x + 4 * i, xi);
     store4(p + 4 * i, pi);
+    if (drift_out) add_drift(drift, exact, xi);  // sum dx^2, max |dx|
   }
+  if (drift_out) drift.out(drift_out);
 }
-// sum t^2 and (inv_m non-null) sum t^2 inv_m_i per lane, t double (the true residual's check).
+// sum t^2 and (inv_m non-null) sum t^2 inv_m_i and max |t_i| inv_m_i per lane, t double (the true
+// residual's check).
 __attribute__((target_clones("avx2", "default")))
-void lanes4_norms(const double* t, const double* inv_m, std::size_t N, double res2_out[4], double res_mass_out[4]) {
-  Lanes4 res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, ti;
+void lanes4_norms(const double* t, const double* inv_m, std::size_t N, double res2_out[4], double res_mass_out[4],
+                  double res_max_out[4]) {
+  Lanes4 res2 = {0, 0, 0, 0}, res_mass = {0, 0, 0, 0}, res_max = {0, 0, 0, 0}, ti;
   for (std::size_t i = 0; i < N; ++i) {
     std::memcpy(&ti, t + 4 * i, sizeof ti);
     res2 += ti * ti;
-    if (inv_m) res_mass += ti * ti * inv_m[i];
+    if (inv_m) {
+      res_mass += ti * ti * inv_m[i];
+      lanes4_max_abs(res_max, ti, inv_m[i]);
+    }
   }
   std::memcpy(res2_out, &res2, sizeof res2);
   std::memcpy(res_mass_out, &res_mass, sizeof res_mass);
+  std::memcpy(res_max_out, &res_max, sizeof res_max);
 }
 
 // b_i += sum over the triangles' points of w_k phi_i(x_k) f(x_k) (least_squares_fit.h, b), one
@@ -774,9 +820,48 @@ struct BlockCgOptions {
   // solution; float storage stops the recursion at a quarter of it and checks the true residual)
   double accuracy_bound = 0;
   double accuracy_trigger = 1;
+  // > 0 (with accuracy_bound): the sharp stop (least_squares_fit.h, Solver; lambda = 0, triangles
+  // only, inverse_mass the Jacobi diagonal): a channel stops once fit_error_bound(max_i |r_i| / M_ii,
+  // sum_i r_i^2 / M_ii, min M_ii) <= sqrt(accuracy_trigger) accuracy (the same margin as the sum's
+  // trigger, in the norm). 0: the 2-norm stop, sum_i r_i^2 / M_ii <= accuracy_trigger accuracy_bound.
+  double sharp_accuracy = 0;
+  double min_mass = 0;  // min M_ii over the system (> 0 with sharp_accuracy)
   const std::vector<double>* inverse_mass = nullptr;  // #nodes: 1 / M_ii (0 off the system)
   int max_iterations = 0;
   std::array<double, 4>* rhs2_out = nullptr;  // non-null (W = 4): sum b^2 per lane
+  // Non-null (W = 4, float storage, the sharp stop): the drift of the recursive residual r from the
+  // true one t = b - A x bounded as it accrues (least_squares_fit.h, Precision).
+  struct Drift* drift = nullptr;
+};
+
+// The float path's drift bound, per lane: every float store of r (its rounding dr = exact - stored)
+// and of x (dx) moves t - r by dr or A dx, so at the end
+//   |D^-1/2 (t - r)|_2 <= sum over the stores (|D^-1/2 dr|_2 or 2 |D^1/2 dx|_2)
+//   max_i |t_i - r_i| / M_ii <= sum over the stores (max_i |dr_i| / M_ii or 2 max_i |dx_i|)
+// (lambda = 0, triangles: |D^-1/2 A D^-1/2|_2 <= 2, Wathen, and the rows of A are positive and sum
+// to 2 M_ii). r's roundings from the stored r's own sums, which the stop computes anyway: rounding
+// to nearest float, |dr_i| <= u |r_i| + 2^-150 (u = 2^-24; the absolute term for a subnormal r), so
+// |D^-1/2 dr|_2 <= u sqrt(sum r_i^2 / M_ii) + 2^-150 sqrt(#nodes max 1 / M_ii) and max_i |dr_i| / M_ii
+// <= u max_i |r_i| / M_ii + 2^-150 max 1 / M_ii. x's measured in the passes that store x (sum dx^2,
+// max |dx|), |D^1/2 dx|_2 <= sqrt(max M_ii) |dx|_2. res_mass, res_max: the last recursive r's sums
+// (out).
+struct Drift {
+  double max_mass = 0, max_inverse_mass = 0;  // max M_ii and max 1 / M_ii over the system (in)
+  std::size_t nodes = 0;                      // (in)
+  std::array<double, 4> norm{}, max{}, res_mass{}, res_max{};
+  void add_r(const std::array<double, 4>& mass, const std::array<double, 4>& largest) {  // a store of r
+    constexpr double u = 0x1p-24, tiny = 0x1p-150;
+    for (int k = 0; k < 4; ++k) {
+      norm[k] += u * std::sqrt(mass[k]) + tiny * std::sqrt(double(nodes) * max_inverse_mass);
+      max[k] += u * largest[k] + tiny * max_inverse_mass;
+    }
+  }
+  void add_x(const double sums[8]) {  // a store of x: a pass's Drift4 (sum dx^2 [4], max |dx| [4])
+    for (int k = 0; k < 4; ++k) {
+      norm[k] += 2 * std::sqrt(max_mass * sums[k]);
+      max[k] += 2 * sums[4 + k];
+    }
+  }
 };
 
 // Memory for CG's work vectors: `count` arrays of n values of T, carved from already-touched
@@ -820,15 +905,21 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::uint32_t i : off_system)
       for (std::size_t k = 0; k < W; ++k) out[i * W + k] = 0;
   };
-  Channels rhs2{}, res2{}, res_mass{}, threshold{}, abs_new{}, abs_old{}, pAp{}, alpha{}, beta{};
+  Channels rhs2{}, res2{}, res_mass{}, res_max{}, threshold{}, abs_new{}, abs_old{}, pAp{}, alpha{}, beta{};
   std::array<bool, W> active{};
   const bool bounded = o.accuracy_bound > 0 && inv_m;
   const bool mass_is_jacobi = inv_m == inv_d;  // lambda = 0: r^T D^-1 r is both the stop's sum and CG's r^T z
+  const bool sharp = bounded && mass_is_jacobi && o.sharp_accuracy > 0 && o.min_mass > 0;
   const double stop_at = o.accuracy_trigger * o.accuracy_bound;
-  const auto accurate = [&](std::size_t k) { return bounded && res_mass[k] <= stop_at; };
+  const double sharp_stop_at = std::sqrt(o.accuracy_trigger) * o.sharp_accuracy;
+  const auto accurate = [&](std::size_t k) {
+    if (!bounded) return false;
+    return sharp ? fit_error_bound(res_max[k], res_mass[k], o.min_mass) <= sharp_stop_at : res_mass[k] <= stop_at;
+  };
   apply(x, Ap, pAp.data(), false);  // pAp unused here
   if constexpr (W == 4) {
-    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data());
+    lanes4_residual(Ap, bounded ? inv_m : nullptr, N, b, r, rhs2.data(), res2.data(), res_mass.data(), res_max.data());
+    if (o.drift) o.drift->add_r(res_mass, res_max);  // inv_m = inv_d (the sharp stop)
     if (o.rhs2_out) *o.rhs2_out = rhs2;
   } else {
     for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -837,7 +928,10 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
         r[i + k] = bi - Ap[i + k];
         rhs2[k] += bi * bi;
         res2[k] += r[i + k] * r[i + k];
-        if (bounded) res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
+        if (bounded) {
+          res_mass[k] += r[i + k] * r[i + k] * inv_m[node];
+          res_max[k] = max_keeping_nan(res_max[k], std::fabs(r[i + k]) * inv_m[node]);
+        }
       }
   }
   std::size_t running = 0;
@@ -870,11 +964,13 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
       alpha[k] = active[k] && pAp[k] > 0 ? abs_new[k] / pAp[k] : 0;
     res2.fill(0.0);
     res_mass.fill(0.0);
+    res_max.fill(0.0);
     abs_old = abs_new;
     abs_new.fill(0.0);
     if constexpr (W == 4) {  // z = D^-1 r, not stored; x += alpha p in the direction pass (or below)
       lanes4_step(inv_d, bounded && !mass_is_jacobi ? inv_m : nullptr, N, alpha.data(), Ap, r, res2.data(),
-                  res_mass.data(), abs_new.data());
+                  res_mass.data(), abs_new.data(), sharp ? res_max.data() : nullptr);
+      if (o.drift) o.drift->add_r(abs_new, res_max);  // sum r_i^2 / M_ii (abs_new: inv_d = inv_m)
       x_behind = true;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)  // z = D^-1 r, not stored
@@ -885,6 +981,7 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
           res2[k] += ri * ri;
           if (bounded && !mass_is_jacobi) res_mass[k] += ri * ri * inv_m[node];
           abs_new[k] += ri * ri * inv_d[node];  // r^T z for the next step (unused if this one stops)
+          if (sharp) res_max[k] = max_keeping_nan(res_max[k], std::fabs(ri) * inv_d[node]);
         }
     }
     if (bounded && mass_is_jacobi) res_mass = abs_new;  // sum r_i^2 inv_m_i with inv_m = inv_d: the same sum
@@ -897,7 +994,9 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     for (std::size_t k = 0; k < W; ++k)  // divisor checked; a stopped channel's p no longer matters (alpha 0)
       beta[k] = active[k] && abs_old[k] > 0 ? abs_new[k] / abs_old[k] : 0;
     if constexpr (W == 4) {
-      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, p);
+      double sums[8];
+      lanes4_direction(r, inv_d, N, alpha.data(), beta.data(), x, p, o.drift ? sums : nullptr);
+      if (o.drift) o.drift->add_x(sums);
       x_behind = false;
     } else {
       for (std::size_t i = 0, node = 0; i < n; i += W, ++node)
@@ -908,7 +1007,17 @@ void block_conjugate_gradient(const FitOperator& A, const std::vector<double>& i
     }
   }
   if constexpr (W == 4)
-    if (x_behind) lanes4_add_step(p, N, alpha.data(), x);
+    if (x_behind) {
+      double sums[8];
+      lanes4_add_step(p, N, alpha.data(), x, o.drift ? sums : nullptr);
+      if (o.drift) o.drift->add_x(sums);
+    }
+  if constexpr (W == 4)
+    if (o.drift)
+      for (std::size_t k = 0; k < 4; ++k) {
+        o.drift->res_mass[k] = res_mass[k];
+        o.drift->res_max[k] = res_max[k];
+      }
   fit.iterations = std::max(fit.iterations, iterations);
   for (std::size_t k = 0; k < W; ++k) {
     const double relative = rhs2[k] > 0 ? std::sqrt(res2[k] / rhs2[k]) : 0.0;  // divisor checked
@@ -1174,6 +1283,57 @@ constexpr double kFloatTrigger = 0.8;
 // 4-8% faster). A server core's last-level cache.
 constexpr std::size_t kFloatVectorsAbove = std::size_t(32) << 20;
 
+// The float path's check (solve_float_vectors, when the drift bound does not prove every channel):
+// t = b - A x in double (x's float values exactly, in place in b), each channel proven by the stop
+// on t, or finished in double (correction: e, #nodes by 4).
+template <class FirstGuess>
+void check_and_finish(const FitOperator& A, const std::vector<double>& inverse_diagonal,
+                      const std::vector<std::uint32_t>& off_system, double* b, const float* x,
+                      const BlockCgOptions& options, const FirstGuess& first_guess, const std::array<double, 4>& rhs2,
+                      bool sharp, std::unique_ptr<double[]>& correction, LeastSquaresFit& fit) {
+  const std::size_t N = inverse_diagonal.size(), n = 4 * N;
+  // The check: t = b - A x in double (x's float values exactly), sum t^2 and sum t^2 / M_ii per lane.
+  double unused[4], t2[4], t_mass[4], t_max[4];
+  apply_operator<4, float, true>(A, x, b, unused, true);
+  for (std::uint32_t i : off_system)
+    for (std::size_t k = 0; k < 4; ++k) b[4 * std::size_t(i) + k] = 0;
+  lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass, t_max);
+  std::array<bool, 4> proven{};
+  bool all = true;
+  double residual_proven = 0, t_relative_rest = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double relative = rhs2[k] > 0 ? std::sqrt(t2[k] / rhs2[k]) : 0.0;  // divisor checked
+    const double threshold = std::max(options.tolerance * options.tolerance * rhs2[k], std::numeric_limits<double>::min());
+    const bool within = sharp ? fit_error_bound(t_max[k], t_mass[k], options.min_mass) <= options.sharp_accuracy
+                              : t_mass[k] <= options.accuracy_bound;
+    proven[k] = within || t2[k] < threshold;  // b = 0: t = 0, proven
+    all = all && proven[k];
+    if (proven[k])
+      residual_proven = std::max(residual_proven, relative);
+    else
+      t_relative_rest = std::max(t_relative_rest, relative);
+  }
+  fit.residual = std::max(residual_proven, t_relative_rest);
+  fit.converged = all;
+  const int left = options.max_iterations - fit.iterations;
+  if (!all && left > 0) {
+    fit.double_finish = true;
+    for (std::size_t k = 0; k < 4; ++k)
+      if (proven[k])
+        for (std::size_t i = 0; i < N; ++i) b[4 * i + k] = 0;  // nothing left to solve: e = 0
+    correction.reset(new double[n]);
+    first_guess(b, correction.get());
+    BlockCgOptions rest = options;
+    rest.max_iterations = left;
+    rest.rhs2_out = nullptr;
+    LeastSquaresFit counts;
+    block_conjugate_gradient(A, inverse_diagonal, off_system, b, 4, rest, correction.get(), nullptr, 0, counts);
+    fit.iterations += counts.iterations;
+    fit.residual = std::max(residual_proven, counts.residual * t_relative_rest);  // counts' residual: relative to |t|
+    fit.converged = counts.converged;
+  }
+}
+
 // The 8-bit path's solve (least_squares_fit.h, Precision): x, r and p stored in float, Ap and b in
 // double (Ap, p, r, x in that order in the spent f while it lasts; x in the caller's x_given when
 // non-null: the quadrature's scratch); every sum in double. The
@@ -1206,46 +1366,29 @@ void solve_float_vectors(const FitOperator& A, const std::vector<double>& invers
   std::array<double, 4> rhs2{};
   cg.rhs2_out = &rhs2;
   fit.float_vectors = true;
+  const bool sharp = options.sharp_accuracy > 0 && options.min_mass > 0 && options.inverse_mass == &inverse_diagonal;
+  Drift drift;  // the sharp stop: the drift bounded as it accrues (Drift)
+  if (sharp) {
+    drift.nodes = N;
+    for (std::size_t i = 0; i < N; ++i) drift.max_mass = std::max(drift.max_mass, A.diagonal[i]);
+    drift.max_inverse_mass = 1 / options.min_mass;  // divisor checked: sharp needs min_mass > 0
+    cg.drift = &drift;
+  }
   block_conjugate_gradient<4, float>(A, inverse_diagonal, off_system, b, r, cg, x, p, Ap, fit);
-  // The check: t = b - A x in double (x's float values exactly), sum t^2 and sum t^2 / M_ii per lane.
-  double unused[4], t2[4], t_mass[4];
-  apply_operator<4, float, true>(A, x, b, unused, true);
-  for (std::uint32_t i : off_system)
-    for (std::size_t k = 0; k < 4; ++k) b[4 * std::size_t(i) + k] = 0;
-  lanes4_norms(b, options.inverse_mass->data(), N, t2, t_mass);
-  std::array<bool, 4> proven{};
-  bool all = true;
-  double residual_proven = 0, t_relative_rest = 0;
-  for (std::size_t k = 0; k < 4; ++k) {
-    const double relative = rhs2[k] > 0 ? std::sqrt(t2[k] / rhs2[k]) : 0.0;  // divisor checked
-    const double threshold = std::max(options.tolerance * options.tolerance * rhs2[k], std::numeric_limits<double>::min());
-    proven[k] = t_mass[k] <= options.accuracy_bound || t2[k] < threshold;  // b = 0: t = 0, proven
-    all = all && proven[k];
-    if (proven[k])
-      residual_proven = std::max(residual_proven, relative);
-    else
-      t_relative_rest = std::max(t_relative_rest, relative);
+  // Proven without the check when the recursion's residual and the drift bound meet the sharp stop
+  // for every channel: |D^-1/2 t| <= |D^-1/2 r| + norm, max |t_i| / M_ii <= max |r_i| / M_ii + max.
+  bool drift_proven = sharp;
+  for (std::size_t k = 0; k < 4 && drift_proven; ++k) {
+    const double norm = std::sqrt(drift.res_mass[k]) + drift.norm[k];
+    drift_proven = rhs2[k] == 0 ||
+                   fit_error_bound(drift.res_max[k] + drift.max[k], norm * norm, options.min_mass) <= options.sharp_accuracy;
   }
-  fit.residual = std::max(residual_proven, t_relative_rest);
-  fit.converged = all;
+  if (drift_proven) {
+    fit.drift_bounded = true;
+    fit.converged = true;
+  }
   std::unique_ptr<double[]> correction;  // e, #nodes by 4, when a channel is finished in double
-  const int left = options.max_iterations - fit.iterations;
-  if (!all && left > 0) {
-    fit.double_finish = true;
-    for (std::size_t k = 0; k < 4; ++k)
-      if (proven[k])
-        for (std::size_t i = 0; i < N; ++i) b[4 * i + k] = 0;  // nothing left to solve: e = 0
-    correction.reset(new double[n]);
-    first_guess(b, correction.get());
-    BlockCgOptions rest = options;
-    rest.max_iterations = left;
-    rest.rhs2_out = nullptr;
-    LeastSquaresFit counts;
-    block_conjugate_gradient(A, inverse_diagonal, off_system, b, 4, rest, correction.get(), nullptr, 0, counts);
-    fit.iterations += counts.iterations;
-    fit.residual = std::max(residual_proven, counts.residual * t_relative_rest);  // counts' residual: relative to |t|
-    fit.converged = counts.converged;
-  }
+  if (!drift_proven) check_and_finish(A, inverse_diagonal, off_system, b, x, options, first_guess, rhs2, sharp, correction, fit);
   // fit.values into the spent f (values_in_spent non-null): its first 24 bytes a node are Ap's
   // (double, placed first), dead now; x is never there (after Ap, p and r, or in the scratch)
   if (values_in_spent) values_in_spent();
@@ -1367,6 +1510,10 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
     if (options.accuracy > 0 && min_mass > 0 && std::isfinite(min_mass)) {
       cg.accuracy_bound = options.accuracy * mu * options.accuracy * mu * min_mass;
       cg.inverse_mass = regularized ? &inverse_mass : &inverse_diagonal;
+      if (!regularized && e.quad_face.empty()) {  // D^-1 A = D^-1 M, its spectrum in [1/2, 2] (Wathen)
+        cg.sharp_accuracy = options.accuracy;
+        cg.min_mass = min_mass;
+      }
     }
     cg.max_iterations = options.max_iterations > 0 ? options.max_iterations : int(2 * (N - off_system.size()));
     // b is assembled: f is read no more, and its memory (spent) holds work vectors

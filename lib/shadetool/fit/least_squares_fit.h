@@ -53,7 +53,20 @@
 // near it, tests/fit checks jittered ones; so mu = 1/2 without quads, 1/4 with), and R positive
 // semi-definite:  mu |D^1/2 e|^2 <= e^T M e <= e^T A e = e^T r <= |D^1/2 e| |D^-1/2 r|,  so
 //     |e|_inf <= |e|_2 <= |D^1/2 e|_2 / sqrt(min D) <= |D^-1/2 r|_2 / (mu sqrt(min D)),
-// and CG stops at sum_i r_i^2 / M_ii <= (a mu)^2 min_i M_ii. The 8-bit bytes
+// and CG stops at sum_i r_i^2 / M_ii <= (a mu)^2 min_i M_ii (the 2-norm stop).
+// Sharp stop (lambda = 0 and triangles only, the common case; fit_error_bound): then A = M and the
+// spectrum of B = D^-1/2 M D^-1/2 lies in [1/2, 2] (Wathen: each element's D_t^-1 M_t has the
+// eigenvalues 1/2, 1/2, 2, and x^T M x / x^T D x is a ratio of sums of the elements' terms), so the
+// eigenvalues 1/l of B^-1 lie in [1/2, 2] and those of E = B^-1 - (5/4) I in [-3/4, 3/4]: |E|_2 <=
+// 3/4. With s = D^-1/2 r, e = D^-1/2 B^-1 s = D^-1/2 ((5/4) s + E s), and |(E s)_i| <= |E s|_2 <=
+// (3/4) |s|_2, so for every node i
+//     |e_i| <= (5/4) |r_i| / M_ii + (3/4) |D^-1/2 r|_2 / sqrt(M_ii)
+//           <= (5/4) max_i |r_i| / M_ii + (3/4) sqrt(sum_i r_i^2 / M_ii / min_i M_ii),
+// and CG stops when that is <= a. It is never above the 2-norm bound 2 |D^-1/2 r|_2 / sqrt(min D)
+// (max_i |r_i| / M_ii <= |D^-1/2 r|_2 / sqrt(min D)), and below it by up to 8/3 where the residual
+// is spread over many nodes (the 2-norm term dominates: 3/4 against 2): on the 1M torus one CG
+// iteration fewer (bench/fit/results.md, fit13). With quads (no proven upper eigenvalue bound for a
+// distorted quad) or lambda > 0 (D^-1 A's upper bound unknown) the 2-norm stop stays. The 8-bit bytes
 // written then differ from the exact solution's only where that value lies within a of a rounding
 // boundary (bench/fit/results.md: on the 10k torus 8 CG iterations instead of 17 under the studio
 // scene, 3 instead of 13 under the window). Nodes
@@ -80,11 +93,23 @@
 // sum_i r_i^2 / M_ii adds #nodes terms: in float its rounding would grow with the count. What
 // float storage breaks is the proof above, which needs the true residual b - A c: the recursive
 // residual r (r -= alpha Ap, stored in float; x rounded at each step) drifts from it by rounding of
-// order 2^-24 |A| |x| summed over the steps. So the float recursion stops at 0.8 of the bound, and
-// the true residual t = b - A c of the float c is then computed in double (one operator pass, in
-// place in b, which is read no more) and tested against the full bound: the proof holds for t as
-// computed, whatever the drift (t's own rounding in double, about 2^-53 of |b|, is ignored as the
-// double path ignores its own). A channel whose t is not within the bound (the drift took more
+// order 2^-24 |A| |x| summed over the steps. So the float recursion stops at 0.8 of the bound.
+// With the sharp stop the drift is then bounded from the roundings themselves: each float store of
+// r (exact value minus stored value dr) moves t - r by dr, each store of x (dx) by A dx, and nothing
+// else does (x0 is what it is, and t0 = b - A x0 is what the first residual rounds), so t - r is
+// the sum of those moves and
+//     |D^-1/2 (t - r)|_2 <= sum (|D^-1/2 dr|_2 or 2 sqrt(max M_ii) |dx|_2)   (|D^-1/2 A D^-1/2|_2 <= 2)
+//     max_i |t_i - r_i| / M_ii <= sum (max |dr_i| / M_ii or 2 max |dx_i|)   (A >= 0, rows sum to 2 M_ii)
+// r's terms from the stored r's own sums (|dr_i| <= 2^-24 |r_i| + 2^-150: rounding to nearest,
+// a subnormal's absolute error), x's measured exactly (a double and its float rounding differ by a
+// double) in the passes that store x: no pass of their own. When
+// fit_error_bound of r's sums plus these is within a for every channel, the channel is proven
+// without t (LeastSquaresFit::drift_bounded; on the 1M torus the bound is a few % of a: values of
+// size 1 round by 6e-8). Otherwise (quads, lambda > 0, large values) the true residual t = b - A c
+// of the float c is computed in double (one operator pass, in place in b, which is read no more)
+// and tested against the full bound: the proof holds for t as computed, whatever the drift. Either
+// way the doubles' own roundings (t's, A p's: about 2^-53 of |b|) are ignored as the double path
+// ignores its own. A channel whose t is not within the bound (the drift took more
 // than the margin, or the bound asks for more than a float c can resolve:
 // |D^-1/2 A (c - fl(c))| grows as sqrt(#nodes) while the bound does not) is finished in double: CG
 // on A e = t from e's lumped-mass guess, c + e (LeastSquaresFit::double_finish). The float c
@@ -97,6 +122,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -309,6 +335,14 @@ struct LeastSquaresFitOptions {
   FitScratch* scratch = nullptr;
 };
 
+// The sharp stop's bound on max_i |c_i - c*_i| (Solver above; lambda = 0, triangles only) from the
+// residual r = A c - b: res_max = max_i |r_i| / M_ii, res_mass = sum_i r_i^2 / M_ii, min_mass =
+// min_i M_ii over the system. Infinity when min_mass is not > 0 (no bound).
+inline double fit_error_bound(double res_max, double res_mass, double min_mass) {
+  return min_mass > 0 ? 1.25 * res_max + 0.75 * std::sqrt(res_mass / min_mass)  // divisor checked
+                      : std::numeric_limits<double>::infinity();
+}
+
 // A quarter of an 8-bit step: the accuracy an 8-bit output needs of the solve (see Solver above).
 constexpr double kEightBitFitAccuracy = 1.0 / 1020;
 
@@ -334,6 +368,8 @@ struct LeastSquaresFit {
   bool converged = true;
   bool float_vectors = false;       // CG's vectors were stored in float (Precision)
   bool double_finish = false;       // ... and a channel's true residual was above the bound: finished in double
+  bool drift_bounded = false;       // ... and every channel proven by the recursion's residual and the drift
+                                    // bound (Precision), without the true residual's operator pass
 };
 
 // The nodes that touch no face of positive area (no triangle of q, no quad with mass): they are no

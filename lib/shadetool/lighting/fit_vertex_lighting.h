@@ -27,6 +27,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include <shadetool/core/mesh.h>
@@ -53,11 +54,15 @@ VertexLightingFit fit_vertex_lighting(const Mesh& mesh, const Scene& scene, cons
 
 // f at the sites of q (#sites by 3: a shared edge midpoint once), the per-point lighting described
 // above, as fit_vertex_lighting fits it; lighting_at_quadrature: the same at every point (#points
-// by 3), for benchmarks and tests to measure any colours against the same f.
+// by 3), for benchmarks and tests to measure any colours against the same f. lower, upper: every
+// value v is stored as min(max(v, lower), upper) (fit_vertex_lighting's target, the colour as it
+// will be shown), clamped in the shading pass where it is still in cache (the defaults: unchanged).
 std::vector<double> lighting_at_sites(const Mesh& mesh, const Scene& scene, const FitQuadrature& q,
                                       const std::vector<double>& positions_world,
                                       const std::vector<double>& vertex_normals_object, const ShadeOptions& options,
-                                      const ShadowOptions& shadows, ShadowStats* shadow_stats = nullptr);
+                                      const ShadowOptions& shadows, ShadowStats* shadow_stats = nullptr,
+                                      double lower = -std::numeric_limits<double>::infinity(),
+                                      double upper = std::numeric_limits<double>::infinity());
 std::vector<double> lighting_at_quadrature(const Mesh& mesh, const Scene& scene, const FitQuadrature& q,
                                            const std::vector<double>& positions_world,
                                            const std::vector<double>& vertex_normals_object,
