@@ -167,7 +167,7 @@ case('off_short_face_index_out_of_range.off', 'OFF\n3 2 0\n' + TRI_OFF + '3 0 1 
      'vertex index 5 out of range', 'a 2-gon (skipped) naming a vertex past the last: still refused')
 case('off_malformed_count.off', 'OFF\n3 x 0\n' + TRI_OFF + '3 0 1 2\n', 'read', "malformed count 'x'",
      'a word for a count')
-case('off_binary.off', 'OFF BINARY\n', 'read', 'binary OFF is not supported', 'the binary variant')
+case('off_binary.off', 'OFF BINARY\n', 'read', 'binary OFF: byte 11: the body ends before the counts', 'a binary OFF with no body')
 case('off_vertex_two_values.off', 'OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n', 'read', 'vertex line has 2 values',
      'a vertex with two coordinates')
 case('off_very_long_line.off', 'OFF\n3 1 0\n' + TRI_OFF + '3 0 1 2 ' + '9' * 300_000 + '\n', 'read',

@@ -142,7 +142,10 @@ TEST_CASE("OFF: errors name the file and line", "[off][errors]") {
   CHECK(err("OFF\n3 x 0\n") == "m.off:2: malformed count 'x' (expected: #vertices #faces #edges)");
   CHECK(err("4OFF\n") == "m.off:1: unsupported OFF variant '4OFF' (supported: [ST][C][N]OFF)");
   CHECK(err("PLY\n") == "m.off:1: not an OFF file (header is 'PLY')");
-  CHECK(err("OFF BINARY\n3 1 0\n") == "m.off:1: binary OFF is not supported");
+  CHECK(err("OFF BINARY\n3 1 0\n") ==
+        "m.off: binary OFF: byte 11: the body ends before the counts #V #F #E (12 bytes) (read in Geomview's big-endian "
+        "layout; pmp-library's and little-endian layouts do not fit either)");
+  CHECK(err("OFF\n3 1 0 BINARY\n") == "m.off:2: unexpected 'BINARY' after the counts");
   CHECK(err("OFF\n1099511627776 1 0\n0 0 0\n").find("m.off:2: header claims 1099511627776 vertices") == 0);
 }
 
@@ -211,4 +214,103 @@ TEST_CASE("OFF: a face's indices may go on over the following lines (libigl-tuto
   CHECK(err(head + "4 0 1 2 3\n3 1\n4\n") == "m.off:9: face line has 2 indices, its size says 3");
   CHECK(err(head + "4 0 1 2 3\n3 1\n4\n\n# end\n") == "m.off:9: face line has 2 indices, its size says 3");
   CHECK(err(head + "4 0 1 2 3\n9 1 2\n").find("m.off:9: face line has fewer indices than its size 9") == 0);
+}
+
+namespace {
+// Binary OFF bytes written by the test, word by word, in one of the four layouts.
+struct BinaryOff {
+  bool big_endian = true;
+  bool face_color_count = true;  // Geomview's ncolors after each face's indices (pmp-library writes none)
+  std::string bytes;
+  void word(std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes += char(big_endian ? (v >> (24 - 8 * i)) & 0xff : (v >> (8 * i)) & 0xff);
+  }
+  void f32(float x) {
+    std::uint32_t v;
+    std::memcpy(&v, &x, 4);
+    word(v);
+  }
+};
+}  // namespace
+
+TEST_CASE("Binary OFF (Geomview's big-endian layout and pmp-library's, either byte order) reads as the same text OFF",
+          "[off][xcorpus6]") {
+  // A square of two faces, one of them a quad, and a 2-index line that is no face; the truth is the
+  // same mesh written as text OFF, and the literal values the test put into the bytes.
+  const float P[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.1f}, {0, 1, 0}, {2, 0.5f, -0.25f}};
+  const std::string text = "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0.1\n0 1 0\n2 0.5 -0.25\n4 0 1 2 3\n2 0 4\n3 1 4 2\n";
+  const Mesh truth = read_text(text, Format::Off);
+  for (bool big : {true, false})
+    for (bool counts : {true, false}) {
+      BinaryOff b{big, counts, "OFF BINARY\n"};
+      b.word(5), b.word(3), b.word(0);
+      for (auto& p : P) b.f32(p[0]), b.f32(p[1]), b.f32(p[2]);
+      for (std::vector<std::uint32_t> f : {std::vector<std::uint32_t>{0, 1, 2, 3}, {0, 4}, {1, 4, 2}}) {
+        b.word(std::uint32_t(f.size()));
+        for (auto i : f) b.word(i);
+        if (counts) b.word(0);
+      }
+      ReadInfo info;
+      const Mesh m = read_text(b.bytes, Format::Off, &info, "b.off");
+      INFO("big-endian " << big << ", colour counts " << counts);
+      CHECK(m.face_start == std::vector<std::uint32_t>{0, 4, 7});
+      CHECK(m.corner_vertex == std::vector<std::uint32_t>{0, 1, 2, 3, 1, 4, 2});
+      CHECK(m.positions[8] == double(0.1f));
+      CHECK(m.positions[14] == -0.25);
+      CHECK(m.precision == ValuePrecision::Float);
+      CHECK(m.num_vertices() == truth.num_vertices());
+      for (std::size_t i = 0; i < m.positions.size(); ++i) CHECK(float(m.positions[i]) == float(truth.positions[i]));
+      CHECK(m.face_start == truth.face_start);
+      CHECK(m.corner_vertex == truth.corner_vertex);
+      // Notes: the skipped 2-index line, and which layout when it is not Geomview's.
+      CHECK(info.notes.size() == (big && counts ? 1u : 2u));
+      CHECK(info.notes.back().find("skipped 1 faces with fewer than 3 vertices") == 0);
+    }
+}
+
+TEST_CASE("Binary CNOFF: normals, rgba vertex colours and rgb face colours as floats (Geomview's layout)", "[off][xcorpus6]") {
+  BinaryOff b{true, true, "CNOFF BINARY\r\n"};
+  b.word(3), b.word(1), b.word(3);
+  const float V[3][10] = {{0, 0, 0, 0, 0, 1, 1, 0, 0, 0.5f}, {1, 0, 0, 0, 0, 1, 0, 1, 0, 1}, {0, 1, 0, 0.6f, 0, 0.8f, 0, 0, 1, 1}};
+  for (auto& v : V)
+    for (float x : v) b.f32(x);
+  b.word(3), b.word(0), b.word(1), b.word(2), b.word(3), b.f32(0.25f), b.f32(0.5f), b.f32(0.75f);
+  const Mesh m = read_text(b.bytes, Format::Off);
+  CHECK(m.vertex_normals == std::vector<double>{0, 0, 1, 0, 0, 1, double(0.6f), 0, double(0.8f)});
+  CHECK(m.color_channels == 4);  // one vertex alpha is 0.5
+  CHECK(m.vertex_colors == std::vector<float>{1, 0, 0, 0.5f, 0, 1, 0, 1, 0, 0, 1, 1});
+  CHECK(m.face_colors == std::vector<float>{0.25f, 0.5f, 0.75f, 1});
+  CHECK(m.colors_are_float);
+  // The same body one byte short fits no layout: one line naming the file and the byte.
+  const std::string cut = b.bytes.substr(0, b.bytes.size() - 1);
+  const std::string e = error_of([&] { read_text(cut, Format::Off, nullptr, "c.off"); });
+  CHECK(e.find("c.off: binary OFF: byte ") == 0);
+  // Counts larger than the bytes are refused before any allocation.
+  BinaryOff big{true, true, "OFF BINARY\n"};
+  big.word(0x7fffffff), big.word(1), big.word(0);
+  CHECK(error_of([&] { read_text(big.bytes, Format::Off, nullptr, "h.off"); }).find(
+            "h.off: binary OFF: byte 23: the counts (2147483647 vertices, 1 faces) need more bytes than the file holds") == 0);
+}
+
+TEST_CASE("pmp-library's beetle.off (binary OFF, little-endian, no face colour counts) as Python's struct reads it",
+          "[off][xcorpus6][corpus]") {
+  // Truth: the file read with Python's struct.unpack ('<3i', then '<f' and '<i' words) outside
+  // shadetool: 5105 vertices, 9664 triangles, the body ending exactly at the file's end.
+  ReadInfo info;
+  const Mesh m = read_mesh(data_path("corpus_extra/pmp_beetle_binary.off"), Format::Auto, &info);
+  REQUIRE(m.num_vertices() == 5105);
+  REQUIRE(m.num_faces() == 9664);
+  CHECK(m.positions[0] == 1.4375);
+  CHECK(m.positions[1] == double(12.78439998626709f));
+  CHECK(m.positions[3 * 5104 + 2] == double(-30.760900497436523f));
+  CHECK(std::vector<std::uint32_t>(m.corner_vertex.begin(), m.corner_vertex.begin() + 3) == std::vector<std::uint32_t>{0, 1, 2});
+  CHECK(std::vector<std::uint32_t>(m.corner_vertex.end() - 3, m.corner_vertex.end()) == std::vector<std::uint32_t>{5089, 5103, 5094});
+  std::uint64_t index_sum = 0;
+  for (auto i : m.corner_vertex) index_sum += i;
+  CHECK(index_sum == 74547235u);
+  double sy = 0;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) sy += m.positions[3 * v + 1];
+  CHECK(sy == Approx(154646.52290439606).epsilon(1e-12));
+  REQUIRE(info.notes.size() == 1);
+  CHECK(info.notes[0] == "binary OFF read in little-endian without face colour counts (pmp-library before 3.0)");
 }

@@ -13,6 +13,7 @@
 #include <shadetool/io/split_corner_normals.h>
 #include <shadetool/io/engine/text_encoding.h>
 #include <shadetool/io/engine/text_parse.h>
+#include <shadetool/io/off_binary.h>
 
 namespace shadetool::io {
 
@@ -84,6 +85,34 @@ struct OffBody {
   }
 };
 
+// The flags of a keyword [ST][C][N]OFF: sets them and returns where "OFF" should start.
+std::size_t keyword_flags(std::string_view k, bool& has_st, bool& has_c, bool& has_n) {
+  std::size_t i = 0;
+  if (k.compare(i, 2, "ST") == 0) has_st = true, i += 2;
+  if (i < k.size() && k[i] == 'C') has_c = true, ++i;
+  if (i < k.size() && k[i] == 'N') has_n = true, ++i;
+  return i;
+}
+
+// A binary OFF's header line, `[ST][C][N]OFF BINARY` (the first line, spaces around the words,
+// CRLF allowed): its flags and the length of the line with its '\n'; false for a text OFF.
+bool binary_off_header(std::string_view t, OffBinaryFlags& fl, std::size_t& header_bytes) {
+  const std::size_t nl = t.find('\n');
+  if (nl == std::string_view::npos) return false;
+  const char* b = skip_spaces(t.data(), t.data() + nl);
+  const char* e = t.data() + nl;
+  while (e > b && is_space(e[-1])) --e;  // CR and spaces
+  const char* q = b;
+  while (q < e && !is_space(*q)) ++q;
+  const std::string_view k(b, std::size_t(q - b));
+  const std::size_t i = keyword_flags(k, fl.has_st, fl.has_c, fl.has_n);
+  if (k.substr(i) != "OFF") return false;
+  q = skip_spaces(q, e);
+  if (std::string_view(q, std::size_t(e - q)) != "BINARY") return false;
+  header_bytes = nl + 1;
+  return true;
+}
+
 // Step 1, read the header: the keyword's flags, then the counts, bounded by the bytes that follow.
 OffHeader read_off_header(Lines& lines, const std::string& name) {
   OffHeader h;
@@ -97,10 +126,7 @@ OffHeader read_off_header(Lines& lines, const std::string& name) {
     const char* kw = b;
     while (q < e && !is_space(*q)) ++q;
     std::string k(kw, q);
-    std::size_t i = 0;
-    if (k.compare(i, 2, "ST") == 0) h.has_st = true, i += 2;
-    if (i < k.size() && k[i] == 'C') h.has_c = true, ++i;
-    if (i < k.size() && k[i] == 'N') h.has_n = true, ++i;
+    const std::size_t i = keyword_flags(k, h.has_st, h.has_c, h.has_n);
     // A digit right after the keyword starts the counts (`OFF8 6 12`, trimesh's whitespace.off):
     // no [ST][C][N]OFF variant ends in a digit, so the keyword cannot be read otherwise.
     if (k.compare(i, 3, "OFF") == 0 && i + 3 < k.size() && k[i + 3] >= '0' && k[i + 3] <= '9') {
@@ -113,8 +139,8 @@ OffHeader read_off_header(Lines& lines, const std::string& name) {
       fail(name, lines.line(), "not an OFF file (header is '" + k + "')");
     }
     q = skip_spaces(q, e);
-    if (q < e && std::string_view(q, std::size_t(e - q)).substr(0, 6) == "BINARY")
-      fail(name, lines.line(), "binary OFF is not supported");
+    if (q < e && std::string_view(q, std::size_t(e - q)).substr(0, 6) == "BINARY")  // not on the first line
+      fail(name, lines.line(), "binary OFF's header must be the file's first line, `[ST][C][N]OFF BINARY`");
     if (q == e) {  // the counts are on the next line
       if (!lines.next(b, e)) fail(name, lines.line(), "OFF file ends before the counts line");
       q = b;
@@ -290,7 +316,13 @@ void build_off_attributes(const OffHeader& h, const OffBody& body, const std::ve
 
 Mesh read_off(std::string_view file_bytes, const std::string& name, ReadInfo& info) {
   refuse_utf16(file_bytes, name);
-  const LineEndings text(skip_utf8_bom(file_bytes));  // CR, LF, CRLF, mixed: all LF
+  OffBinaryFlags binary_flags;
+  std::size_t header_bytes = 0;
+  const std::string_view unmarked = skip_utf8_bom(file_bytes);
+  if (binary_off_header(unmarked, binary_flags, header_bytes))
+    return read_off_binary_body(unmarked.substr(header_bytes), header_bytes + (file_bytes.size() - unmarked.size()),
+                                binary_flags, name, info);
+  const LineEndings text(unmarked);  // CR, LF, CRLF, mixed: all LF
   Lines lines(text.lf());
   const OffHeader header = read_off_header(lines, name);
   OffBody body{lines, name};

@@ -1,6 +1,7 @@
 // off_format.h: Geomview OFF reader and writer (OFF, COFF, NOFF, CNOFF, STOFF...).
 //
-// Reading: an optional header keyword [ST][C][N]OFF (4OFF, nOFF and binary OFF are refused),
+// Reading: an optional header keyword [ST][C][N]OFF (4OFF and nOFF are refused; `[ST][C][N]OFF
+// BINARY` on the first line is read by io/off_binary.h, Geomview's and pmp-library's layouts),
 // then `#V #F [#E]` (on the keyword's line or the next; a digit right after the keyword, `OFF8 6 12`,
 // starts the counts, as trimesh reads it: no variant's keyword ends in a digit), #V vertex lines `x y z [nx ny nz] [r g b [a]] [s t]` and #F face lines
 // `k i_1 ... i_k [r g b [a]]` (0-based indices, polygons kept; a line with k < 3 is not a face:
