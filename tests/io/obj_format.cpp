@@ -3,6 +3,10 @@
 #include <cmath>
 #include <cstring>
 
+#include <tbb/task_arena.h>
+
+#include <shadetool/io/obj_format.h>
+
 #include "io_test_util.h"
 
 using namespace shadetool;
@@ -556,4 +560,31 @@ TEST_CASE("OBJ writer: normals of a mesh without faces (a point cloud) are writt
   WriteInfo tri;
   write_mesh_to_memory(read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n", Format::Obj), o, &tri);
   CHECK(tri.notes.empty());
+}
+
+TEST_CASE("OBJ `v x y z w`: positions are x y z as written (as Blender 3.4 imports them), a w other than 1 counted in a note",
+          "[obj][xcorpus6]") {
+  // PDAL's test/data/obj/hyper_box.obj writes every vertex with a fourth value (0.5 and -0.5);
+  // the mesh's truth is the same lines with w removed (Blender 3.4's importer gives exactly those
+  // positions; assimp divides by w instead). w is not dropped silently: the note counts it.
+  const std::string faces = "f 1 2 3\nf 1 3 4\n";
+  const std::string with_w = "v 0 0 0 0.5\nv 1 0 0 0.5\nv 1 1 0 1\nv 0 1 0 -0.5\n" + faces;
+  const std::string without_w = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n" + faces;
+  for (std::size_t chunk : {std::size_t(0), std::size_t(12)}) {  // serial, and parallel chunks of a line or two
+    ReadInfo info, plain_info;
+    Mesh m, truth;
+    tbb::task_arena(2).execute([&] {
+      m = io::read_obj(with_w, "w.obj", info, io::ObjReadOptions{chunk});
+      truth = io::read_obj(without_w, "p.obj", plain_info, io::ObjReadOptions{chunk});
+    });
+    require_same_mesh(m, truth);
+    CHECK(plain_info.notes.empty());
+    REQUIRE(info.notes.size() == 1);
+    CHECK(info.notes[0] ==
+          "3 of 4 vertices have a weight w other than 1 (v x y z w): not read, positions are x y z as written (as Blender "
+          "reads them; assimp divides by w)");
+  }
+  ReadInfo ones;
+  read_text("v 0 0 0 1\nv 1 0 0 1.0\nv 0 1 0 1\nf 1 2 3\n", Format::Obj, &ones);
+  CHECK(ones.notes.empty());  // w = 1, the spec's default, changes nothing: no note
 }

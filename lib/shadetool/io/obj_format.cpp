@@ -73,6 +73,7 @@ struct ObjChunk {
   std::vector<float> rgba;                     // 4 per chunk vertex once any has a colour
   int color_channels = 0;                      // 3 or 4 once seen
   std::size_t colored_vertices = 0;
+  std::size_t weighted_vertices = 0;           // `v x y z w` with w != 1 (w not read)
   std::vector<std::uint32_t> cn, ct;           // per chunk corner, kNone where absent (lazily)
   bool have_cn = false, have_ct = false;
   std::size_t corners_with_normal = 0, corners_with_tex = 0;
@@ -195,6 +196,7 @@ void read_v(ObjChunk& s, ObjArrays& a, ObjLine& l, const std::string& name) {
   if (kPlaced && s.read.v >= s.room.v) throw Miscounted{};
   put<kPlaced>(a.mesh.positions, s.at.v + s.read.v, v, 3);
   ++s.read.v;
+  if (n == 4 && v[3] != 1.0) ++s.weighted_vertices;  // w: not read (note_skipped)
   if (n >= 6) {
     if (s.rgba.empty()) s.rgba.assign(4 * (s.read.v - 1), 1.0f);
     s.rgba.insert(s.rgba.end(), {float(v[3]), float(v[4]), float(v[5]), n == 7 ? float(v[6]) : 1.0f});
@@ -455,6 +457,7 @@ struct ObjLines {
   std::vector<float> rgba;                     // 4 per vertex once any vertex has a colour
   int color_channels = 0;
   std::size_t colored_vertices = 0;
+  std::size_t weighted_vertices = 0;           // `v x y z w` with w != 1 (w not read)
   std::vector<std::uint32_t> cn, ct;           // per corner, kNone where absent
   std::size_t corners_with_normal = 0, corners_with_tex = 0;
   std::size_t dangling_normal = 0, dangling_tex = 0;
@@ -527,6 +530,7 @@ void merge_chunks(std::vector<ObjChunk>& chunks, ObjLines& s) {
     s.tex_dims = std::max(s.tex_dims, c.tex_dims);
     s.color_channels = std::max(s.color_channels, c.color_channels);
     s.colored_vertices += c.colored_vertices;
+    s.weighted_vertices += c.weighted_vertices;
     s.corners_with_normal += c.corners_with_normal;
     s.corners_with_tex += c.corners_with_tex;
     s.dangling_normal += c.dangling_normal;
@@ -872,6 +876,12 @@ void note_skipped(const ObjLines& s, ReadInfo& info) {
                          (s.dangling_normal > 0 && s.dangling_tex > 0 ? "vn or vt" : s.dangling_normal > 0 ? "vn" : "vt") +
                          " line before them: those indices ignored (as assimp does)");
   }
+  // `v x y z w`: the rational weight of a curve's control point (OBJ spec); a mesh's position is
+  // x y z as written, as Blender 3.4 and PDAL read it (assimp divides x y z by w).
+  if (s.weighted_vertices > 0)
+    info.notes.push_back(std::to_string(s.weighted_vertices) + " of " + std::to_string(s.mesh.num_vertices()) +
+                         " vertices have a weight w other than 1 (v x y z w): not read, positions are x y z as "
+                         "written (as Blender reads them; assimp divides by w)");
   // vt / vn lines no face corner names (faces written `f 1 2 3`): not read, said.
   auto unreferenced = [&](std::size_t n, std::size_t referenced, const char* what) {
     if (n > 0 && referenced == 0)

@@ -1,6 +1,8 @@
 // obj_format.h: Wavefront OBJ reader and writer.
 //
-// Reading keeps: `v x y z [w]` and `v x y z r g b [a]` (vertex colours, float in [0,1]),
+// Reading keeps: `v x y z [w]` (w, a curve's rational weight, is not read: positions are x y z
+// as written, as Blender reads them; a note counts w other than 1) and `v x y z r g b [a]`
+// (vertex colours, float in [0,1]),
 // `vn` (pool of corner normals, per-corner index), `vt u [v [w]]` (texcoord pool, per-corner
 // index), `f` in the forms i, i/j, i//k, i/j/k with negative (relative) indices, polygons of any
 // size, in order. An empty vt or vn field (`1/`, `1//`, `1/1/`) is absent (tinyobjloader, assimp,
