@@ -1,6 +1,7 @@
 // Tests of io/stl_format: binary and ascii bytes built here, merging of identical positions,
 // facet normals, fan triangulation on write, and the error messages.
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -231,4 +232,77 @@ TEST_CASE("STL: a facet degenerate by the library's rule keeps its authored norm
   WriteInfo wi;
   const std::string text = write_mesh_to_memory(plain, o, &wi);
   CHECK(wi.notes.size() == 1);
+}
+
+namespace {
+
+// A binary STL of `attributes.size()` copies of one triangle with the given 80-byte header and
+// attribute words (little-endian), built byte by byte here.
+std::string binary_stl_with_attributes(const std::string& header, const std::vector<std::uint16_t>& attributes) {
+  std::string s = header;
+  s.resize(80, ' ');
+  const std::uint32_t n = std::uint32_t(attributes.size());
+  s += std::string{char(n & 0xff), char((n >> 8) & 0xff), char((n >> 16) & 0xff), char(n >> 24)};
+  const float tri[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+  for (std::size_t t = 0; t < attributes.size(); ++t) {
+    for (float x : tri) {
+      char b[4];
+      std::memcpy(b, &x, 4);  // tests run on little-endian hosts (x86, arm64)
+      s.append(b, 4);
+    }
+    s += std::string{char(attributes[t] & 0xff), char(attributes[t] >> 8)};
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("STL binary: Materialise colours (COLOR= header, bit 15 clear: R G B in bits 0-4, 5-9, 10-14) read as face colours",
+          "[stl][color]") {
+  // Magics' convention (its "STL colour" documentation, and Wikipedia's STL page): header
+  // "COLOR=" + R G B A of the default; per facet bit 15 clear = its own 5-bit colour, R lowest.
+  // Expected values are written from that layout by hand: 31 = full, 16 of 31, the default bytes / 255.
+  const std::string header = std::string("STLB ATF 12.4.0.73 COLOR=") + char(0xd9) + char(0xd3) + char(0xc9) + char(0xff);
+  const std::uint16_t own = std::uint16_t(31 | (0 << 5) | (16 << 10));  // R 31, G 0, B 16, bit 15 clear
+  const std::uint16_t use_default = 0x8000;
+  ReadInfo info;
+  const Mesh m = read_text(binary_stl_with_attributes(header, {own, use_default}), Format::Stl, &info);
+  REQUIRE(m.has_face_colors());
+  CHECK(m.color_channels == 3);
+  CHECK(!m.colors_are_float);
+  CHECK(m.face_colors[0] == Approx(1.0));
+  CHECK(m.face_colors[1] == Approx(0.0));
+  CHECK(m.face_colors[2] == Approx(16.0 / 31.0));
+  CHECK(m.face_colors[3] == Approx(0xd9 / 255.0));
+  CHECK(m.face_colors[4] == Approx(0xd3 / 255.0));
+  CHECK(m.face_colors[5] == Approx(0xc9 / 255.0));
+  bool named = false;
+  for (const auto& n : info.notes) named = named || n.find("1 facets with their own colour, 1 with the header's default") != std::string::npos;
+  CHECK(named);
+
+  // The same bytes through PLY and back: the colours survive as bytes round(v * 255).
+  WriteOptions o;
+  o.format = Format::Ply;
+  const Mesh back = read_text(write_mesh_to_memory(m, o), Format::Ply);
+  REQUIRE(back.has_face_colors());
+  CHECK(back.face_colors[0] * 255 == Approx(255));
+  CHECK(back.face_colors[2] * 255 == Approx(std::round(16.0 / 31.0 * 255)));
+}
+
+TEST_CASE("STL binary: attribute bytes without a COLOR= header are not colours, and a note counts them", "[stl][color]") {
+  // Meshmixer writes 0xFFFF on every facet, VisCAM B G R with bit 15 set: no marker tells them apart.
+  ReadInfo info;
+  const Mesh m = read_text(binary_stl_with_attributes("MESHMIXER-STL-BINARY-FORMAT", {0xffff, 0xffff, 0}), Format::Stl, &info);
+  CHECK(!m.has_face_colors());
+  bool named = false;
+  for (const auto& n : info.notes) named = named || n.find("attribute bytes non-zero on 2 of 3 facets") != std::string::npos;
+  CHECK(named);
+  // All-zero attribute bytes (what most exporters write) say nothing: no note about them.
+  ReadInfo plain;
+  read_text(binary_stl_with_attributes("plain", {0, 0}), Format::Stl, &plain);
+  for (const auto& n : plain.notes) CHECK(n.find("attribute") == std::string::npos);
+  // A COLOR= header whose facets all hold 0 would make every facet black: read as no colours, with a note.
+  ReadInfo copied;
+  const Mesh c = read_text(binary_stl_with_attributes("COLOR=abcd", {0, 0}), Format::Stl, &copied);
+  CHECK(!c.has_face_colors());
 }

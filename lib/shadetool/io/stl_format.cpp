@@ -163,6 +163,56 @@ void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merg
                          std::to_string(mesh.num_vertices()) + " shared vertices");
 }
 
+// The 2 attribute bytes of each binary facet as colours, by the one convention a file marks as its
+// own: Materialise Magics writes "COLOR=" and four bytes R G B A (the default colour) into the
+// 80-byte header; a facet whose attribute has bit 15 clear has its own colour, R in bits 0-4,
+// G in 5-9, B in 10-14 (5 bits each, 31 = full: value / 31); bit 15 set means the default colour
+// (bytes / 255). Colours are stored as read (uchar-like values in [0,1], 3 channels; a default
+// alpha other than 255 is named in a note). A COLOR= header with every attribute 0 is read as no
+// colours (every facet black by the rule: a tool that copied the header, not a colour), with a note.
+// Without a COLOR= header the bytes have no marked meaning (VisCAM/SolidView put B,G,R with bit 15
+// set "valid"; others write 0xFFFF or counts), so non-zero bytes are not read, and a note says so.
+void read_attribute_colors(std::string_view header, const std::vector<std::uint16_t>& attributes, Mesh& mesh,
+                           ReadInfo& info) {
+  std::size_t nonzero = 0;
+  for (std::uint16_t a : attributes) nonzero += a != 0;
+  const std::size_t key = header.find("COLOR=");
+  const bool materialise = key != std::string_view::npos && key + 6 + 4 <= header.size();
+  if (!materialise) {
+    if (nonzero > 0)
+      info.notes.push_back("attribute bytes non-zero on " + std::to_string(nonzero) + " of " +
+                           std::to_string(attributes.size()) +
+                           " facets, no COLOR= in the header: not read as colours (no marked convention)");
+    return;
+  }
+  if (nonzero == 0) {
+    info.notes.push_back("header has COLOR= but every facet's attribute bytes are 0: no colours read");
+    return;
+  }
+  const unsigned char* d = reinterpret_cast<const unsigned char*>(header.data() + key + 6);
+  const float fallback[3] = {d[0] / 255.0f, d[1] / 255.0f, d[2] / 255.0f};
+  mesh.color_channels = 3;
+  mesh.colors_are_float = false;
+  mesh.face_colors.resize(3 * attributes.size());
+  std::size_t own = 0;
+  for (std::size_t f = 0; f < attributes.size(); ++f) {
+    const std::uint16_t a = attributes[f];
+    float* c = &mesh.face_colors[3 * f];
+    if (a & 0x8000u) {
+      std::copy(fallback, fallback + 3, c);
+    } else {
+      c[0] = float(a & 31u) / 31.0f;
+      c[1] = float((a >> 5) & 31u) / 31.0f;
+      c[2] = float((a >> 10) & 31u) / 31.0f;
+      ++own;
+    }
+  }
+  info.notes.push_back("face colours read from the attribute bytes (Materialise COLOR= header): " + std::to_string(own) +
+                       " facets with their own colour, " + std::to_string(attributes.size() - own) +
+                       " with the header's default" +
+                       (d[3] != 255 && own < attributes.size() ? ", whose alpha " + std::to_string(int(d[3])) + " is not kept" : std::string()));
+}
+
 Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
   Mesh mesh;
   mesh.precision = ValuePrecision::Float;
@@ -171,6 +221,7 @@ Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
   reserve_bulk(mesh.corner_vertex, 3 * std::size_t(n));
   reserve_bulk(mesh.face_start, std::size_t(n) + 1);
   std::vector<double> normals(3 * std::size_t(n));
+  std::vector<std::uint16_t> attributes(n);
   const char* p = bytes.data() + 84;
   for (std::uint32_t t = 0; t < n; ++t, p += 50) {
     for (int k = 0; k < 3; ++k) normals[3 * std::size_t(t) + std::size_t(k)] = load_le_float(p + 4 * k);
@@ -179,8 +230,10 @@ Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
       mesh.corner_vertex.push_back(merger.add(load_le_float(q), load_le_float(q + 4), load_le_float(q + 8)));
     }
     mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
+    attributes[t] = std::uint16_t(std::uint8_t(p[48]) | std::uint16_t(std::uint8_t(p[49])) << 8);
   }
   finish(mesh, normals, merger, info);
+  read_attribute_colors(bytes.substr(0, 80), attributes, mesh, info);
   return mesh;
 }
 

@@ -9,6 +9,9 @@
 // zero. Binary STL is float (Mesh::precision = Float); ascii values are stored as parsed, never
 // rounded, and Mesh::precision follows the digit rule of OBJ (a hint for binary writers).
 // Merging uses an open-addressing hash table in flat arrays (no per-vertex allocation).
+// Binary colours: the attribute bytes are read as face colours when the header marks Materialise's
+// convention ("COLOR=" + default R G B A; bit 15 clear: own colour R bits 0-4, G 5-9, B 10-14 of 31;
+// set: the default); unmarked non-zero attribute bytes are not read, and a note counts them.
 //
 // Writing: binary (default) or ascii; polygons are split into triangles inside their outline
 // (geometry/polygon_triangles.h: ear clipping; a convex polygon gives the fan from corner 0; a note
