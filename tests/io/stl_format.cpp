@@ -306,3 +306,22 @@ TEST_CASE("STL binary: attribute bytes without a COLOR= header are not colours, 
   const Mesh c = read_text(binary_stl_with_attributes("COLOR=abcd", {0, 0}), Format::Stl, &copied);
   CHECK(!c.has_face_colors());
 }
+
+TEST_CASE("STL: an ascii file with a control byte (cut or overwritten) is refused naming the byte's line, not as a binary count",
+          "[stl]") {
+  // OpenSCAD's tests/data/stl/unparseable.stl: "solid ... facet normal ... vertex 2.000000e+0", then
+  // spaces and a 0x10 byte. The line is counted here from the bytes the test builds.
+  std::string bytes = "solid cut\n  facet normal 0 0 1\n    outer loop\n      vertex 2.0e+0";
+  bytes += std::string(100, ' ');
+  bytes += '\x10';
+  bytes += "  ";
+  const std::string expect_line = std::to_string(1 + std::count(bytes.begin(), bytes.end(), '\n'));  // 4
+  const std::string e = error_of([&] { read_text(bytes, Format::Stl, nullptr, "cut.stl"); });
+  CHECK(e.rfind("cut.stl:" + expect_line + ": starts with 'solid' (ascii STL) but holds the control byte 0x10", 0) == 0);
+  // A binary file whose 80-byte header starts with "solid" keeps the binary message (one line, no facet before its
+  // control bytes).
+  std::string bin(80, ' ');
+  bin.replace(0, 5, "solid");
+  bin += std::string("\x01\0\0\0", 4) + std::string(49, '\x01');
+  CHECK(error_of([&] { read_text(bin, Format::Stl, nullptr, "m.stl"); }).find("truncated or not STL") != std::string::npos);
+}

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -340,12 +341,26 @@ Mesh read_stl(std::string_view file_bytes, const std::string& name, ReadInfo& in
   const char* end = p + bytes.size();
   while (p < end && is_space_or_newline(*p)) ++p;
   if (end - p >= 5 && std::memcmp(p, "solid", 5) == 0 && (end - p == 5 || is_space_or_newline(p[5]))) {
-    bool text = true;
-    for (const char* q = bytes.data(); q < end && q < bytes.data() + 1024; ++q) {
+    const char* control = nullptr;  // the first byte no text holds, in the first 1024
+    for (const char* q = bytes.data(); q < end && q < bytes.data() + 1024 && !control; ++q) {
       const unsigned char c = static_cast<unsigned char>(*q);
-      text = text && (c >= 0x20 || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v');
+      if (!(c >= 0x20 || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v')) control = q;
     }
-    if (text || bytes.size() < 84) return read_ascii(bytes, name, info);
+    if (!control || bytes.size() < 84) return read_ascii(bytes, name, info);
+    // Starts as ascii STL with a facet on lines of text before a control byte, and its size is no
+    // binary STL's: an ascii file cut or overwritten. Name the byte's line and both readings.
+    // (A binary header is one line of 80 bytes: no newline and 'facet' before its control bytes.)
+    const std::string_view before(bytes.data(), std::size_t(control - bytes.data()));
+    if (before.find('\n') != std::string_view::npos && before.find("facet") != std::string_view::npos) {
+      const std::size_t line = 1 + std::size_t(std::count(bytes.data(), control, '\n'));
+      const std::uint32_t n = load_le_u32(bytes.data() + 80);
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", unsigned(static_cast<unsigned char>(*control)));
+      fail(name, line, "starts with 'solid' (ascii STL) but holds the control byte " + std::string(hex) +
+                           " here, and is no binary STL either: its header says " + std::to_string(n) + " triangles (" +
+                           std::to_string(84 + 50 * std::uint64_t(n)) + " bytes), the file has " +
+                           std::to_string(bytes.size()) + " bytes");
+    }
   }
   if (bytes.size() >= 84) {
     const std::uint32_t n = load_le_u32(bytes.data() + 80);

@@ -2,7 +2,9 @@
 //
 // Reading: binary when the size is exactly 84 + 50 * (triangle count in the header); ascii when
 // the file starts with `solid` (several solids, and loops of more than 3 vertices, are kept);
-// any other file is refused, a binary file whose size disagrees with its count as truncated.
+// any other file is refused, a binary file whose size disagrees with its count as truncated, and a
+// file that starts as ascii (lines of text with a facet) and then holds a control byte, at the
+// line of that byte (an ascii file cut or overwritten; OpenSCAD's unparseable.stl).
 // STL stores a triangle soup: corners with identical positions (equal as values; -0 equals 0,
 // NaN equals nothing) are merged into one vertex, in order of first appearance; the number merged
 // is ReadInfo::merged_vertices (and a note). Facet normals are kept as face normals unless all are
