@@ -325,3 +325,28 @@ TEST_CASE("STL: an ascii file with a control byte (cut or overwritten) is refuse
   bin += std::string("\x01\0\0\0", 4) + std::string(49, '\x01');
   CHECK(error_of([&] { read_text(bin, Format::Stl, nullptr, "m.stl"); }).find("truncated or not STL") != std::string::npos);
 }
+
+TEST_CASE("STL: NaN/Inf facet normals (OpenSCAD writes `facet normal nan nan nan` on slivers) become the triangle's own, +z without area",
+          "[stl]") {
+  // Truth by hand: (0,0,0),(1,0,0),(0,1,0) wound counter-clockwise seen from +z has normal +z; the
+  // second triangle (0,0,0),(0,0,1),(1,0,0) has (0,0,1)x(1,0,0) = (0,1,0); the third has no area.
+  const std::string text =
+      "solid s\n"
+      "facet normal nan nan nan\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+      "facet normal inf -inf 0\nouter loop\nvertex 0 0 0\nvertex 0 0 1\nvertex 1 0 0\nendloop\nendfacet\n"
+      "facet normal nan nan nan\nouter loop\nvertex 0 0 0\nvertex 2 0 0\nvertex 4 0 0\nendloop\nendfacet\n"
+      "endsolid s\n";
+  ReadInfo info;
+  const Mesh m = read_text(text, Format::Stl, &info);
+  REQUIRE(m.has_face_normals());
+  CHECK(m.face_normals == std::vector<double>{0, 0, 1, 0, 1, 0, 0, 0, 1});
+  bool named = false;
+  for (const auto& n : info.notes) named = named || n.find("3 NaN or Inf (+z where no area)") != std::string::npos;
+  CHECK(named);
+  // The same file with the normals the test computed above written in place of NaN/Inf (the sliver's
+  // left NaN: it has none) reads to the same face normals.
+  std::string fixed = text;
+  fixed.replace(fixed.find("nan nan nan"), 11, "0 0 1");
+  fixed.replace(fixed.find("inf -inf 0"), 10, "0 1 0");
+  CHECK(read_text(fixed, Format::Stl).face_normals == m.face_normals);
+}

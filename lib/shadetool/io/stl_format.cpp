@@ -126,35 +126,42 @@ Vec3d triangle_normal(const Mesh& mesh, std::uint32_t v0, std::uint32_t v1, std:
 // replaced by the triangle's unit normal; a zero normal of a triangle with no area becomes +z.
 // A triangle with no area has no winding to be against: its non-zero facet normal is kept as read
 // (the writer gives such triangles +z; reading that back changes nothing).
-// NaN/Inf normals stay as read (info reports them; commands refuse them). All zero: none kept.
+// A NaN/Inf facet normal (OpenSCAD writes `facet normal nan nan nan` for a sliver) is replaced the
+// same way as a zero one: the triangle's own, +z with no area; a facet normal repeats the winding,
+// and every command refused the whole file for it. Counted in the note. All zero: none kept.
 void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merger, ReadInfo& info) {
   bool any = false;
   for (double n : normals) any = any || n != 0;
   if (any) {
-    std::size_t zero = 0, against = 0, no_area = 0;
+    std::size_t zero = 0, against = 0, no_area = 0, nonfinite = 0;
     for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
       const std::uint32_t c = mesh.face_start[f];
       const Vec3d g = triangle_normal(mesh, mesh.corner_vertex[c], mesh.corner_vertex[c + 1], mesh.corner_vertex[c + 2]);
       const Vec3d n = get3(normals, f);
+      const bool finite = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
       const bool is_zero = n.x == 0 && n.y == 0 && n.z == 0;
       const bool arealess = g.x == 0 && g.y == 0 && g.z == 0;
-      if (is_zero && arealess) {
+      if (!finite) {
+        set3(normals, f, arealess ? Vec3d{0, 0, 1} : g);
+        ++nonfinite;
+      } else if (is_zero && arealess) {
         set3(normals, f, {0, 0, 1});
         ++no_area;
       } else if (is_zero) {
         set3(normals, f, g);
         ++zero;
-      } else if (!arealess && std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(dot(n, g) > 0)) {
-        // against the winding, or perpendicular to the face (NaN/Inf stay as read: info reports them)
+      } else if (!arealess && !(dot(n, g) > 0)) {
+        // against the winding, or perpendicular to the face
         set3(normals, f, g);
         ++against;
       }
     }
     mesh.face_normals = std::move(normals);
-    if (zero + against + no_area > 0)
+    if (zero + against + no_area + nonfinite > 0)
       info.notes.push_back("facet normals replaced by the triangles' own: " + std::to_string(zero) + " zero, " +
                            std::to_string(against) + " against the winding" +
-                           (no_area > 0 ? ", " + std::to_string(no_area) + " zero on a triangle with no area (+z)" : std::string()));
+                           (no_area > 0 ? ", " + std::to_string(no_area) + " zero on a triangle with no area (+z)" : std::string()) +
+                           (nonfinite > 0 ? ", " + std::to_string(nonfinite) + " NaN or Inf (+z where no area)" : std::string()));
   } else if (mesh.num_faces() > 0) {
     info.notes.push_back("facet normals all (0,0,0): not kept (normals are computed from the triangles where needed)");
   }
