@@ -350,3 +350,41 @@ TEST_CASE("STL: NaN/Inf facet normals (OpenSCAD writes `facet normal nan nan nan
   fixed.replace(fixed.find("inf -inf 0"), 10, "0 1 0");
   CHECK(read_text(fixed, Format::Stl).face_normals == m.face_normals);
 }
+
+TEST_CASE("STL: facet normals in another frame (Meshmixer: (nx, nz, -ny) of the triangle's own) are replaced, whole file",
+          "[stl]") {
+  // A closed tetrahedron wound outward; each facet's normal computed here by cross product, then
+  // written either as is or as Meshmixer writes it (its Y-up frame: every facet of PrusaSlicer's
+  // Meshmixer printer beds is exactly (nx, nz, -ny) of its triangle's own).
+  const std::array<std::array<float, 3>, 4> p = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  const std::array<std::array<int, 3>, 4> tris = {{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  auto facets = [&](bool meshmixer) {
+    std::vector<std::array<float, 12>> out;
+    for (const auto& t : tris) {
+      const auto &a = p[std::size_t(t[0])], &b = p[std::size_t(t[1])], &c = p[std::size_t(t[2])];
+      const float e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      float n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+      const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);  // > 0: no face of it is degenerate
+      for (float& x : n) x /= len;
+      const std::array<float, 3> w = meshmixer ? std::array<float, 3>{n[0], n[2], -n[1]} : std::array<float, 3>{n[0], n[1], n[2]};
+      out.push_back({w[0], w[1], w[2], a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]});
+    }
+    return out;
+  };
+  ReadInfo clean_info;
+  const Mesh clean = read_text(binary_stl(facets(false), 4), Format::Stl, &clean_info);
+  REQUIRE(clean.has_face_normals());  // the right normals are kept as read
+  CHECK(clean.face_normals[0] == Approx(0.0).margin(1e-7));
+  CHECK(clean.face_normals[2] == Approx(-1.0));  // face {0,2,1} lies in z = 0, outward is -z
+  ReadInfo info;
+  const Mesh m = read_text(binary_stl(facets(true), 4), Format::Stl, &info);
+  // Every facet's normal is its triangle's own: the clean file's normals (computed by the test).
+  REQUIRE(m.has_face_normals());
+  for (std::size_t k = 0; k < 12; ++k) CHECK(m.face_normals[k] == Approx(clean.face_normals[k]).margin(1e-6));
+  bool named = false;
+  for (const auto& n : info.notes)
+    named = named || n.rfind("facet normals replaced by the triangles' own on all 4 facets with area: the median is", 0) == 0;
+  CHECK(named);
+  CHECK(m.positions == clean.positions);
+  CHECK(m.corner_vertex == clean.corner_vertex);
+}

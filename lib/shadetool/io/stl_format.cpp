@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/math_constants.h>
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/io/engine/newell_normal.h>
@@ -129,11 +130,21 @@ Vec3d triangle_normal(const Mesh& mesh, std::uint32_t v0, std::uint32_t v1, std:
 // A NaN/Inf facet normal (OpenSCAD writes `facet normal nan nan nan` for a sliver) is replaced the
 // same way as a zero one: the triangle's own, +z with no area; a facet normal repeats the winding,
 // and every command refused the whole file for it. Counted in the note. All zero: none kept.
+// Whole file: when the median facet normal (of triangles with area and a finite non-zero normal)
+// is more than 45 degrees from its triangle's own, the normals are not the triangles' (Meshmixer
+// writes them in its Y-up frame beside Z-up positions: 60-90 degrees off on most facets, and the
+// per-facet rule above would keep every one that is less than 90 off): every facet with area gets
+// its triangle's own, and a note gives the median (only where the per-facet rule would keep one
+// more than 45 degrees off: a file whose usable normals are all against the winding keeps its note). Clean files have medians below a degree;
+// exporters' rounding never reaches 45.
 void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merger, ReadInfo& info) {
   bool any = false;
   for (double n : normals) any = any || n != 0;
   if (any) {
     std::size_t zero = 0, against = 0, no_area = 0, nonfinite = 0;
+    std::vector<float> cosines;  // per facet with area and a usable normal: cos(facet normal, triangle's own)
+    cosines.reserve(mesh.num_faces());
+    std::size_t kept_far = 0;
     for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
       const std::uint32_t c = mesh.face_start[f];
       const Vec3d g = triangle_normal(mesh, mesh.corner_vertex[c], mesh.corner_vertex[c + 1], mesh.corner_vertex[c + 2]);
@@ -141,6 +152,11 @@ void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merg
       const bool finite = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
       const bool is_zero = n.x == 0 && n.y == 0 && n.z == 0;
       const bool arealess = g.x == 0 && g.y == 0 && g.z == 0;
+      if (finite && !is_zero && !arealess) {
+        const double len = length(n);
+        cosines.push_back(len > 0 && std::isfinite(len) ? float(dot(n, g) / len) : 0.0f);  // divisor checked
+        kept_far += cosines.back() > 0 && cosines.back() < 0.70710678f;  // kept below, yet over 45 degrees off
+      }
       if (!finite) {
         set3(normals, f, arealess ? Vec3d{0, 0, 1} : g);
         ++nonfinite;
@@ -156,8 +172,29 @@ void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merg
         ++against;
       }
     }
+    float median = 1;
+    if (!cosines.empty()) {
+      auto mid = cosines.begin() + std::ptrdiff_t(cosines.size() / 2);
+      std::nth_element(cosines.begin(), mid, cosines.end());
+      median = *mid;
+    }
+    const bool other_frame = median < 0.70710678f && kept_far > 0;  // cos 45 degrees
+    if (other_frame) {  // every facet with area gets its triangle's own
+      std::size_t replaced = 0;
+      for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+        const std::uint32_t c = mesh.face_start[f];
+        const Vec3d g = triangle_normal(mesh, mesh.corner_vertex[c], mesh.corner_vertex[c + 1], mesh.corner_vertex[c + 2]);
+        if (g.x == 0 && g.y == 0 && g.z == 0) continue;  // no area: as decided above
+        set3(normals, f, g);
+        ++replaced;
+      }
+      const double degrees = std::acos(double(std::max(-1.0f, median))) * 180.0 / kPi;
+      info.notes.push_back("facet normals replaced by the triangles' own on all " + std::to_string(replaced) +
+                           " facets with area: the median is " + std::to_string(int(std::lround(degrees))) +
+                           " degrees from its triangle's own (normals in another frame, as Meshmixer writes them)");
+    }
     mesh.face_normals = std::move(normals);
-    if (zero + against + no_area + nonfinite > 0)
+    if (!other_frame && zero + against + no_area + nonfinite > 0)
       info.notes.push_back("facet normals replaced by the triangles' own: " + std::to_string(zero) + " zero, " +
                            std::to_string(against) + " against the winding" +
                            (no_area > 0 ? ", " + std::to_string(no_area) + " zero on a triangle with no area (+z)" : std::string()) +

@@ -8,7 +8,9 @@
 // STL stores a triangle soup: corners with identical positions (equal as values; -0 equals 0,
 // NaN equals nothing) are merged into one vertex, in order of first appearance; the number merged
 // is ReadInfo::merged_vertices (and a note). Facet normals are kept as face normals unless all are
-// zero; zero, NaN/Inf and against-the-winding ones are replaced by the triangle's own (a note). Binary STL is float (Mesh::precision = Float); ascii values are stored as parsed, never
+// zero; zero, NaN/Inf and against-the-winding ones are replaced by the triangle's own (a note);
+// all are when the median facet is more than 45 degrees from its triangle's own (normals in
+// another frame: Meshmixer's Y-up), with a note. Binary STL is float (Mesh::precision = Float); ascii values are stored as parsed, never
 // rounded, and Mesh::precision follows the digit rule of OBJ (a hint for binary writers).
 // Merging uses an open-addressing hash table in flat arrays (no per-vertex allocation).
 // Binary colours: the attribute bytes are read as face colours when the header marks Materialise's
