@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <vector>
 
 #include <shadetool/core/error.h>
+#include <shadetool/core/math_constants.h>
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/geometry/degenerate_face.h>
 #include <shadetool/io/engine/newell_normal.h>
@@ -125,35 +127,78 @@ Vec3d triangle_normal(const Mesh& mesh, std::uint32_t v0, std::uint32_t v1, std:
 // replaced by the triangle's unit normal; a zero normal of a triangle with no area becomes +z.
 // A triangle with no area has no winding to be against: its non-zero facet normal is kept as read
 // (the writer gives such triangles +z; reading that back changes nothing).
-// NaN/Inf normals stay as read (info reports them; commands refuse them). All zero: none kept.
+// A NaN/Inf facet normal (OpenSCAD writes `facet normal nan nan nan` for a sliver) is replaced the
+// same way as a zero one: the triangle's own, +z with no area; a facet normal repeats the winding,
+// and every command refused the whole file for it. Counted in the note. All zero: none kept.
+// Whole file: when the median facet normal (of triangles with area and a finite non-zero normal)
+// is more than 45 degrees from its triangle's own, the normals are not the triangles' (Meshmixer
+// writes them in its Y-up frame beside Z-up positions: 60-90 degrees off on most facets, and the
+// per-facet rule above would keep every one that is less than 90 off): every facet with area gets
+// its triangle's own, and a note gives the median (only where the per-facet rule would keep one
+// more than 45 degrees off: a file whose usable normals are all against the winding keeps its note). Clean files have medians below a degree;
+// exporters' rounding never reaches 45.
 void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merger, ReadInfo& info) {
   bool any = false;
   for (double n : normals) any = any || n != 0;
   if (any) {
-    std::size_t zero = 0, against = 0, no_area = 0;
+    std::size_t zero = 0, against = 0, no_area = 0, nonfinite = 0;
+    std::vector<float> cosines;  // per facet with area and a usable normal: cos(facet normal, triangle's own)
+    cosines.reserve(mesh.num_faces());
+    std::size_t kept_far = 0;
     for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
       const std::uint32_t c = mesh.face_start[f];
       const Vec3d g = triangle_normal(mesh, mesh.corner_vertex[c], mesh.corner_vertex[c + 1], mesh.corner_vertex[c + 2]);
       const Vec3d n = get3(normals, f);
+      const bool finite = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
       const bool is_zero = n.x == 0 && n.y == 0 && n.z == 0;
       const bool arealess = g.x == 0 && g.y == 0 && g.z == 0;
-      if (is_zero && arealess) {
+      if (finite && !is_zero && !arealess) {
+        const double len = length(n);
+        cosines.push_back(len > 0 && std::isfinite(len) ? float(dot(n, g) / len) : 0.0f);  // divisor checked
+        kept_far += cosines.back() > 0 && cosines.back() < 0.70710678f;  // kept below, yet over 45 degrees off
+      }
+      if (!finite) {
+        set3(normals, f, arealess ? Vec3d{0, 0, 1} : g);
+        ++nonfinite;
+      } else if (is_zero && arealess) {
         set3(normals, f, {0, 0, 1});
         ++no_area;
       } else if (is_zero) {
         set3(normals, f, g);
         ++zero;
-      } else if (!arealess && std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && !(dot(n, g) > 0)) {
-        // against the winding, or perpendicular to the face (NaN/Inf stay as read: info reports them)
+      } else if (!arealess && !(dot(n, g) > 0)) {
+        // against the winding, or perpendicular to the face
         set3(normals, f, g);
         ++against;
       }
     }
+    float median = 1;
+    if (!cosines.empty()) {
+      auto mid = cosines.begin() + std::ptrdiff_t(cosines.size() / 2);
+      std::nth_element(cosines.begin(), mid, cosines.end());
+      median = *mid;
+    }
+    const bool other_frame = median < 0.70710678f && kept_far > 0;  // cos 45 degrees
+    if (other_frame) {  // every facet with area gets its triangle's own
+      std::size_t replaced = 0;
+      for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+        const std::uint32_t c = mesh.face_start[f];
+        const Vec3d g = triangle_normal(mesh, mesh.corner_vertex[c], mesh.corner_vertex[c + 1], mesh.corner_vertex[c + 2]);
+        if (g.x == 0 && g.y == 0 && g.z == 0) continue;  // no area: as decided above
+        set3(normals, f, g);
+        ++replaced;
+      }
+      const double degrees = std::acos(double(std::max(-1.0f, median))) * 180.0 / kPi;
+      info.notes.push_back("facet normals replaced by the triangles' own on all " + std::to_string(replaced) +
+                           " facets with area: the median is " + std::to_string(int(std::lround(degrees))) +
+                           " degrees from its triangle's own (normals in another frame, as Meshmixer writes them)");
+    }
     mesh.face_normals = std::move(normals);
-    if (zero + against + no_area > 0)
+    if (!other_frame && zero + against + no_area + nonfinite > 0)
       info.notes.push_back("facet normals replaced by the triangles' own: " + std::to_string(zero) + " zero, " +
                            std::to_string(against) + " against the winding" +
-                           (no_area > 0 ? ", " + std::to_string(no_area) + " zero on a triangle with no area (+z)" : std::string()));
+                           (no_area > 0 ? ", " + std::to_string(no_area) + " zero on a triangle with no area (+z)" : std::string()) +
+                           (nonfinite > 0 ? ", " + std::to_string(nonfinite) + " NaN or Inf (+z where no area)" : std::string()));
   } else if (mesh.num_faces() > 0) {
     info.notes.push_back("facet normals all (0,0,0): not kept (normals are computed from the triangles where needed)");
   }
@@ -161,6 +206,56 @@ void finish(Mesh& mesh, std::vector<double>& normals, const PositionMerger& merg
   if (merger.merged() > 0)
     info.notes.push_back("merged " + std::to_string(merger.merged()) + " corners with identical positions into " +
                          std::to_string(mesh.num_vertices()) + " shared vertices");
+}
+
+// The 2 attribute bytes of each binary facet as colours, by the one convention a file marks as its
+// own: Materialise Magics writes "COLOR=" and four bytes R G B A (the default colour) into the
+// 80-byte header; a facet whose attribute has bit 15 clear has its own colour, R in bits 0-4,
+// G in 5-9, B in 10-14 (5 bits each, 31 = full: value / 31); bit 15 set means the default colour
+// (bytes / 255). Colours are stored as read (uchar-like values in [0,1], 3 channels; a default
+// alpha other than 255 is named in a note). A COLOR= header with every attribute 0 is read as no
+// colours (every facet black by the rule: a tool that copied the header, not a colour), with a note.
+// Without a COLOR= header the bytes have no marked meaning (VisCAM/SolidView put B,G,R with bit 15
+// set "valid"; others write 0xFFFF or counts), so non-zero bytes are not read, and a note says so.
+void read_attribute_colors(std::string_view header, const std::vector<std::uint16_t>& attributes, Mesh& mesh,
+                           ReadInfo& info) {
+  std::size_t nonzero = 0;
+  for (std::uint16_t a : attributes) nonzero += a != 0;
+  const std::size_t key = header.find("COLOR=");
+  const bool materialise = key != std::string_view::npos && key + 6 + 4 <= header.size();
+  if (!materialise) {
+    if (nonzero > 0)
+      info.notes.push_back("attribute bytes non-zero on " + std::to_string(nonzero) + " of " +
+                           std::to_string(attributes.size()) +
+                           " facets, no COLOR= in the header: not read as colours (no marked convention)");
+    return;
+  }
+  if (nonzero == 0) {
+    info.notes.push_back("header has COLOR= but every facet's attribute bytes are 0: no colours read");
+    return;
+  }
+  const unsigned char* d = reinterpret_cast<const unsigned char*>(header.data() + key + 6);
+  const float fallback[3] = {d[0] / 255.0f, d[1] / 255.0f, d[2] / 255.0f};
+  mesh.color_channels = 3;
+  mesh.colors_are_float = false;
+  mesh.face_colors.resize(3 * attributes.size());
+  std::size_t own = 0;
+  for (std::size_t f = 0; f < attributes.size(); ++f) {
+    const std::uint16_t a = attributes[f];
+    float* c = &mesh.face_colors[3 * f];
+    if (a & 0x8000u) {
+      std::copy(fallback, fallback + 3, c);
+    } else {
+      c[0] = float(a & 31u) / 31.0f;
+      c[1] = float((a >> 5) & 31u) / 31.0f;
+      c[2] = float((a >> 10) & 31u) / 31.0f;
+      ++own;
+    }
+  }
+  info.notes.push_back("face colours read from the attribute bytes (Materialise COLOR= header): " + std::to_string(own) +
+                       " facets with their own colour, " + std::to_string(attributes.size() - own) +
+                       " with the header's default" +
+                       (d[3] != 255 && own < attributes.size() ? ", whose alpha " + std::to_string(int(d[3])) + " is not kept" : std::string()));
 }
 
 Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
@@ -171,6 +266,7 @@ Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
   reserve_bulk(mesh.corner_vertex, 3 * std::size_t(n));
   reserve_bulk(mesh.face_start, std::size_t(n) + 1);
   std::vector<double> normals(3 * std::size_t(n));
+  std::vector<std::uint16_t> attributes(n);
   const char* p = bytes.data() + 84;
   for (std::uint32_t t = 0; t < n; ++t, p += 50) {
     for (int k = 0; k < 3; ++k) normals[3 * std::size_t(t) + std::size_t(k)] = load_le_float(p + 4 * k);
@@ -179,8 +275,10 @@ Mesh read_binary(std::string_view bytes, std::uint32_t n, ReadInfo& info) {
       mesh.corner_vertex.push_back(merger.add(load_le_float(q), load_le_float(q + 4), load_le_float(q + 8)));
     }
     mesh.face_start.push_back(std::uint32_t(mesh.corner_vertex.size()));
+    attributes[t] = std::uint16_t(std::uint8_t(p[48]) | std::uint16_t(std::uint8_t(p[49])) << 8);
   }
   finish(mesh, normals, merger, info);
+  read_attribute_colors(bytes.substr(0, 80), attributes, mesh, info);
   return mesh;
 }
 
@@ -287,12 +385,26 @@ Mesh read_stl(std::string_view file_bytes, const std::string& name, ReadInfo& in
   const char* end = p + bytes.size();
   while (p < end && is_space_or_newline(*p)) ++p;
   if (end - p >= 5 && std::memcmp(p, "solid", 5) == 0 && (end - p == 5 || is_space_or_newline(p[5]))) {
-    bool text = true;
-    for (const char* q = bytes.data(); q < end && q < bytes.data() + 1024; ++q) {
+    const char* control = nullptr;  // the first byte no text holds, in the first 1024
+    for (const char* q = bytes.data(); q < end && q < bytes.data() + 1024 && !control; ++q) {
       const unsigned char c = static_cast<unsigned char>(*q);
-      text = text && (c >= 0x20 || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v');
+      if (!(c >= 0x20 || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v')) control = q;
     }
-    if (text || bytes.size() < 84) return read_ascii(bytes, name, info);
+    if (!control || bytes.size() < 84) return read_ascii(bytes, name, info);
+    // Starts as ascii STL with a facet on lines of text before a control byte, and its size is no
+    // binary STL's: an ascii file cut or overwritten. Name the byte's line and both readings.
+    // (A binary header is one line of 80 bytes: no newline and 'facet' before its control bytes.)
+    const std::string_view before(bytes.data(), std::size_t(control - bytes.data()));
+    if (before.find('\n') != std::string_view::npos && before.find("facet") != std::string_view::npos) {
+      const std::size_t line = 1 + std::size_t(std::count(bytes.data(), control, '\n'));
+      const std::uint32_t n = load_le_u32(bytes.data() + 80);
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", unsigned(static_cast<unsigned char>(*control)));
+      fail(name, line, "starts with 'solid' (ascii STL) but holds the control byte " + std::string(hex) +
+                           " here, and is no binary STL either: its header says " + std::to_string(n) + " triangles (" +
+                           std::to_string(84 + 50 * std::uint64_t(n)) + " bytes), the file has " +
+                           std::to_string(bytes.size()) + " bytes");
+    }
   }
   if (bytes.size() >= 84) {
     const std::uint32_t n = load_le_u32(bytes.data() + 80);
