@@ -262,6 +262,18 @@ info=json.loads(open(sys.argv[1]).read())["stats"]; d=json.load(open(sys.argv[2]
 prims=[p for m in d["meshes"] for p in m["primitives"] if p.get("mode",4) in (0,1,2,3)]
 assert info["faces"]==0 and info["points_lines_primitives"]==len(prims)>0, info
 assert info["points_lines_vertices"]==sum(d["accessors"][p["attributes"]["POSITION"]]["count"] for p in prims), info' "$tmp/info.json" "$fx/points_lines.gltf"
+# render has no glTF path of its own: it read such a file as one Mesh and said "no vertex in the
+# file", though it has vertices. It says what the file is, with the counts the JSON holds.
+rm -f "$tmp/points.png"
+"$bin" render "$fx/points_lines.gltf" -o "$tmp/points.png" 2> "$tmp/err.txt"
+check "points_lines: render refused (exit 1), nothing written" test $? -eq 1 -a ! -e "$tmp/points.png"
+check "points_lines: render says so in one line naming the file" bash -c "test \$(wc -l < '$tmp/err.txt') -eq 1 && grep -qF 'points_lines.gltf: a glTF whose primitives are points or lines only' '$tmp/err.txt'"
+check "points_lines: render's counts are the JSON's" "$py" -c '
+import json,re,sys
+d=json.load(open(sys.argv[2])); err=open(sys.argv[1]).read()
+prims=[p for m in d["meshes"] for p in m["primitives"] if p.get("mode",4) in (0,1,2,3)]
+n=sum(d["accessors"][p["attributes"]["POSITION"]]["count"] for p in prims)
+assert "(%d POINTS/LINES primitives, %d vertices)" % (len(prims), n) in err, err' "$tmp/err.txt" "$fx/points_lines.gltf"
 
 # Exact bounds (issue 27, 16): a split that drops an unused vertex, and an input whose NORMAL
 # min/max do not hold; every output's accessors have exact min/max (the validator computes them).
