@@ -87,6 +87,8 @@ Mesh read_gltf_entry(std::string_view bytes, const std::string& name, ReadInfo& 
     fail(name, 0, "a glTF whose primitives are points or lines only (" + std::to_string(doc.passed_through_primitives) +
                       " POINTS/LINES primitives, " + std::to_string(doc.passed_through_vertices) +
                       " vertices): no triangle to read as a mesh");
+  if (doc.primitives.empty())  // no mesh, or triangle primitives without POSITION only (a note names them)
+    fail(name, 0, "a glTF with no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive with positions: nothing to read as a mesh");
   return gltf_world_mesh(doc, info.notes);
 }
 void write_gltf_entry(const Mesh& mesh, const WriteOptions& options, io::ByteSink& out, WriteInfo& info) {
