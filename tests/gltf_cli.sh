@@ -298,6 +298,19 @@ check "no_position -> PLY: the one triangle" "$py" -c '
 import sys; sys.path.insert(0, sys.argv[2]); import read_mesh
 parts = read_mesh.read(sys.argv[1]); assert sum(len(q["faces"]) for q in parts) == 1, parts' "$tmp/no_position.ply" "$src/tests/corpus"
 
+# A glTF with an image and no mesh, written unchanged: its image moves into the buffer, and the
+# writer left an empty "accessors" array behind (every output of magnum's image*.gltf failed the
+# validator with EMPTY_ENTITY /accessors).
+for out in image_only.glb image_only.gltf; do
+  "$bin" normals "$fx/image_only.gltf" -o "$tmp/$out" -q
+  check "image_only -> $out: exit 0" test $? -eq 0
+  check "image_only -> $out: valid" valid "$tmp/$out"
+  check "image_only -> $out: no empty top-level array" "$py" -c '
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+d, b = gltf_check.load(sys.argv[1]); assert not [k for k, v in d.items() if v == []], d.keys()
+assert len(d["images"]) == 1, d' "$tmp/$out" "$src/tests/gltf"
+done
+
 # Exact bounds (issue 27, 16): a split that drops an unused vertex, and an input whose NORMAL
 # min/max do not hold; every output's accessors have exact min/max (the validator computes them).
 for args in "--faces" "--recompute --crease 30" ""; do

@@ -253,6 +253,11 @@ def small_fixtures(out):
     embedded(b, {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
                  "meshes": [{"primitives": [{"attributes": {"POSITION": p}}, {"attributes": {"NORMAL": n}}]}]},
              "no_position.gltf")
+    # An image and no mesh (magnum-plugins' image.gltf): written unchanged, the image moved into
+    # the buffer; no accessor, so no "accessors" array (an empty one is the validator's EMPTY_ENTITY).
+    with open(os.path.join(out, "image_only.gltf"), "w") as f:
+        json.dump({"asset": {"version": "2.0"},
+                   "images": [{"uri": "data:image/png;base64," + base64.b64encode(png_bytes()).decode()}]}, f)
 
 
 def misaligned_fixture(out):
