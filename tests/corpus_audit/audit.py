@@ -317,8 +317,8 @@ class Audit:
         gltf_in = ext in (".gltf", ".glb")
         try:
             inp_world = world_parts(path, inp) if (inp is not None and gltf_in) else None
-        except ValueError as e:
-            print("note: %s: cannot place its instances (%s): exit status checked only" % (rel, e))
+        except (ValueError, LookupError, TypeError) as e:  # a cycle, a node/mesh index out of range, a bad type
+            print("note: %s: cannot place its instances (%r): exit status checked only" % (rel, e))
             inp, inp_world = None, None
         in_schema = ply_schema(path) if ext == ".ply" else None
         work = os.path.join(self.out, "work")
