@@ -262,6 +262,54 @@ info=json.loads(open(sys.argv[1]).read())["stats"]; d=json.load(open(sys.argv[2]
 prims=[p for m in d["meshes"] for p in m["primitives"] if p.get("mode",4) in (0,1,2,3)]
 assert info["faces"]==0 and info["points_lines_primitives"]==len(prims)>0, info
 assert info["points_lines_vertices"]==sum(d["accessors"][p["attributes"]["POSITION"]]["count"] for p in prims), info' "$tmp/info.json" "$fx/points_lines.gltf"
+# render has no glTF path of its own: it read such a file as one Mesh and said "no vertex in the
+# file", though it has vertices. It says what the file is, with the counts the JSON holds.
+rm -f "$tmp/points.png"
+"$bin" render "$fx/points_lines.gltf" -o "$tmp/points.png" 2> "$tmp/err.txt"
+check "points_lines: render refused (exit 1), nothing written" test $? -eq 1 -a ! -e "$tmp/points.png"
+check "points_lines: render says so in one line naming the file" bash -c "test \$(wc -l < '$tmp/err.txt') -eq 1 && grep -qF 'points_lines.gltf: a glTF whose primitives are points or lines only' '$tmp/err.txt'"
+check "points_lines: render's counts are the JSON's" "$py" -c '
+import json,re,sys
+d=json.load(open(sys.argv[2])); err=open(sys.argv[1]).read()
+prims=[p for m in d["meshes"] for p in m["primitives"] if p.get("mode",4) in (0,1,2,3)]
+n=sum(d["accessors"][p["attributes"]["POSITION"]]["count"] for p in prims)
+assert "(%d POINTS/LINES primitives, %d vertices)" % (len(prims), n) in err, err' "$tmp/err.txt" "$fx/points_lines.gltf"
+
+# A triangle primitive without POSITION (glTF 2.0 3.7.2.1: nothing to draw; magnum's mesh.gltf,
+# scene.gltf...) made the whole file refused. The other primitive is read, this one kept as it is:
+# the validator's count of MESH_PRIMITIVE_NO_POSITION is the input's, and the written NORMAL of the
+# read triangle is the closed-form +z of the triangle (0,0,0) (1,0,0) (0,1,0).
+"$bin" normals "$fx/no_position.gltf" -o "$tmp/no_position.glb" --recompute 2> "$tmp/err.txt"
+check "no_position: normals exit 0" test $? -eq 0
+check "no_position: a note names the primitive" grep -qF "meshes[0].primitives[1]: no POSITION" "$tmp/err.txt"
+check "no_position: the primitive without POSITION kept as it is" "$py" "$src/tests/gltf/gltf_check.py" keep "$fx/no_position.gltf" "$tmp/no_position.glb" --changed NORMAL
+check "no_position: the read triangle's NORMAL is +z" "$py" -c '
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+d, b = gltf_check.load(sys.argv[1]); p = d["meshes"][0]["primitives"]
+assert "POSITION" not in p[1]["attributes"], p
+n = gltf_check.accessor(d, b, p[0]["attributes"]["NORMAL"])
+assert all(abs(v[0]) < 1e-6 and abs(v[1]) < 1e-6 and abs(v[2] - 1) < 1e-6 for v in n), n' "$tmp/no_position.glb" "$src/tests/gltf"
+if [ -n "$validate" ]; then
+  $validate "$fx/no_position.gltf" > "$tmp/v_in.txt"; $validate "$tmp/no_position.glb" > "$tmp/v_out.txt"
+  check "no_position: output valid, as many MESH_PRIMITIVE_NO_POSITION as the input" bash -c "grep -q ': 0 errors' '$tmp/v_out.txt' && test \$(grep -c NO_POSITION '$tmp/v_in.txt') -eq 1 -a \$(grep -c NO_POSITION '$tmp/v_out.txt') -eq 1"
+fi
+"$bin" normals "$fx/no_position.gltf" -o "$tmp/no_position.ply" -q
+check "no_position -> PLY: the one triangle" "$py" -c '
+import sys; sys.path.insert(0, sys.argv[2]); import read_mesh
+parts = read_mesh.read(sys.argv[1]); assert sum(len(q["faces"]) for q in parts) == 1, parts' "$tmp/no_position.ply" "$src/tests/corpus"
+
+# A glTF with an image and no mesh, written unchanged: its image moves into the buffer, and the
+# writer left an empty "accessors" array behind (every output of magnum's image*.gltf failed the
+# validator with EMPTY_ENTITY /accessors).
+for out in image_only.glb image_only.gltf; do
+  "$bin" normals "$fx/image_only.gltf" -o "$tmp/$out" -q
+  check "image_only -> $out: exit 0" test $? -eq 0
+  check "image_only -> $out: valid" valid "$tmp/$out"
+  check "image_only -> $out: no empty top-level array" "$py" -c '
+import sys; sys.path.insert(0, sys.argv[2]); import gltf_check
+d, b = gltf_check.load(sys.argv[1]); assert not [k for k, v in d.items() if v == []], d.keys()
+assert len(d["images"]) == 1, d' "$tmp/$out" "$src/tests/gltf"
+done
 
 # Exact bounds (issue 27, 16): a split that drops an unused vertex, and an input whose NORMAL
 # min/max do not hold; every output's accessors have exact min/max (the validator computes them).

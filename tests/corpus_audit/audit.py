@@ -4,8 +4,9 @@ over every file of the real-file corpus (meshes other programs wrote, CORPUS/MAN
 every output format the input makes sense in, each output checked with tools other than shadetool:
 
   exit      status 0 (or a usage refusal we expect, e.g. colours into STL)
-  validator glTF outputs: the Khronos glTF Validator (npm gltf-validator, when OUT/../ has it or
-            $GLTF_VALIDATOR_NODE_PATH points at its node_modules) reports 0 errors
+  validator glTF outputs: the Khronos glTF Validator (npm gltf-validator: $GLTF_VALIDATOR_NODE_PATH,
+            else installed beside BIN as tests/gltf_cli.sh does; skipped loudly without node/npm)
+            reports 0 errors
   assimp    `assimp info -raw` reads the output and counts the faces our own reader counts
   normals   every written normal (vertex, face, OBJ vn, glTF NORMAL) finite, non-zero and of unit
             length within 1e-3
@@ -19,8 +20,8 @@ every output format the input makes sense in, each output checked with tools oth
   attrs     every attribute of the input (normals, colours, texcoords, quality; PLY: every extra
             vertex/face property and element) in the output or named on stderr
 Writes OUT/results.tsv (file, command, check, detail) and prints a summary per check. assimp's own
-refusals of a known class (assimp_own_refusal: no faces, a binary PLY body starting with 0x0a) go
-to OUT/known.tsv instead, not findings.
+refusals of a known class (assimp_own_refusal: no faces, a binary PLY body starting with 0x0a; or
+an output of an input assimp cannot read either) go to OUT/known.tsv instead, not findings.
 Independent readers: tests/corpus/read_mesh.py (pure Python), assimp, gltf-validator.
 """
 import json
@@ -91,8 +92,9 @@ IDENTITY = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
 
 def gltf_instances(path):
     """[(mesh index, world matrix)] in depth-first scene order (the default scene, else scene 0,
-    else every root)."""
-    doc, _ = gltf_check.load(path)
+    else every root); a node with EXT_mesh_gpu_instancing once per instance; a mesh no node shows
+    once at identity (as gltf_scene.h places them)."""
+    doc, buffers = gltf_check.load(path)
     nodes = doc.get("nodes", [])
     scenes = doc.get("scenes", [])
     if scenes:
@@ -101,6 +103,7 @@ def gltf_instances(path):
         children = {c for n in nodes for c in n.get("children", [])}
         roots = [i for i in range(len(nodes)) if i not in children]
     out = []
+    shown = set()
 
     def walk(i, parent, seen=()):
         if i in seen:  # a node graph with a cycle (invalid glTF; assimp's RecursiveNodes): no instance
@@ -108,11 +111,42 @@ def gltf_instances(path):
         seen = seen + (i,)
         m = mat_mul(parent, node_matrix(nodes[i]))
         if "mesh" in nodes[i]:
-            out.append((nodes[i]["mesh"], m))
+            shown.add(nodes[i]["mesh"])
+            for w in gpu_instance_matrices(doc, buffers, nodes[i], m):
+                if det3(w) != 0:  # a singular matrix (scale 0) hides the instance: nothing placed
+                    out.append((nodes[i]["mesh"], w))
         for c in nodes[i].get("children", []):
             walk(c, m, seen)
     for r in roots:
         walk(r, IDENTITY)
+    # a mesh no node of the scene shows: written once in its object space (gltf_scene.h)
+    out += [(k, IDENTITY) for k in range(len(doc.get("meshes", []))) if k not in shown]
+    return out
+
+
+def det3(m):
+    return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+
+
+def gpu_instance_matrices(doc, buffers, node, world):
+    """The world matrices a node shows its mesh at: [world], or with EXT_mesh_gpu_instancing one per
+    instance, world * T_i R_i S_i (the extension's TRANSLATION, ROTATION, SCALE accessors read as a
+    node's T R S; an attribute absent: identity). Decoded by gltf_check.accessor (normalized
+    integer rotations to [-1, 1]), independently of the library."""
+    ext = node.get("extensions", {}).get("EXT_mesh_gpu_instancing")
+    if not ext or not ext.get("attributes"):
+        return [world]
+    cols = {k: gltf_check.accessor(doc, buffers, a) for k, a in ext["attributes"].items()
+            if k in ("TRANSLATION", "ROTATION", "SCALE")}
+    n = max(len(v) for v in cols.values()) if cols else 0
+    out = []
+    for i in range(n):
+        trs = {}
+        for k, key in (("TRANSLATION", "translation"), ("ROTATION", "rotation"), ("SCALE", "scale")):
+            if k in cols:
+                trs[key] = list(cols[k][i])
+        out.append(mat_mul(world, node_matrix(trs)))
     return out
 
 
@@ -250,8 +284,17 @@ class Audit:
         self.bin, self.src, self.corpus, self.out, self.validator = bin_, src, corpus, out, validator
         self.rows = []
         self.known = []  # (file, command, check, detail) of other programs' own refusals
+        self.assimp_input = {}  # input path -> assimp cannot read it
         self.big_bytes = int(os.environ.get("AUDIT_BIG_BYTES", "1500000"))  # larger inputs: --quick
         self.runs = 0
+
+    def assimp_refuses_input(self, path):
+        """True when assimp cannot read the input itself (glTF with quantized SHORT positions, a
+        file without meshes...): its refusal of an output then says nothing about our writer.
+        Read once per input."""
+        if path not in self.assimp_input:
+            self.assimp_input[path] = assimp_faces(path)[0] is None
+        return self.assimp_input[path]
 
     def known_row(self, rel, cmd, check, detail):
         """A refusal by another program that is that program's own (a known class): listed in
@@ -274,8 +317,8 @@ class Audit:
         gltf_in = ext in (".gltf", ".glb")
         try:
             inp_world = world_parts(path, inp) if (inp is not None and gltf_in) else None
-        except ValueError as e:
-            print("note: %s: cannot place its instances (%s): exit status checked only" % (rel, e))
+        except (ValueError, LookupError, TypeError) as e:  # a cycle, a node/mesh index out of range, a bad type
+            print("note: %s: cannot place its instances (%r): exit status checked only" % (rel, e))
             inp, inp_world = None, None
         in_schema = ply_schema(path) if ext == ".ply" else None
         work = os.path.join(self.out, "work")
@@ -359,6 +402,8 @@ class Audit:
         nf_assimp, why = assimp_faces(out)
         if nf_assimp is None:
             own = assimp_own_refusal(out, nf_poly)
+            if not own and self.assimp_refuses_input(path):
+                own = "it cannot read the input either"
             if own:
                 self.known_row(rel, label, "assimp", "assimp cannot read it (%s: assimp's own): %s" % (own, why))
             else:
@@ -569,6 +614,31 @@ def merge(parts):
     return read_mesh.part(P, F, vertex_normals=vn if has_vn else None, attributes=attrs or set())
 
 
+def find_validator(bin_, src, out):
+    """The node_modules holding the Khronos glTF Validator: $GLTF_VALIDATOR_NODE_PATH, else the one
+    beside BIN (BIN's directory/gltf-validator-node/node_modules), installed there on first use by
+    tests/gltf/validator.sh, the install tests/gltf_cli.sh uses (one home for it). None, said
+    loudly on stderr and in the summary, when neither works (no node, no npm registry)."""
+    env = os.environ.get("GLTF_VALIDATOR_NODE_PATH")
+    if env:
+        if os.path.isdir(os.path.join(env, "gltf-validator")):
+            return env
+        sys.stderr.write("audit: GLTF_VALIDATOR_NODE_PATH=%s has no gltf-validator\n" % env)
+    bin_dir = os.path.dirname(os.path.abspath(bin_))
+    tmp = os.path.join(out, "validator-install")
+    os.makedirs(tmp, exist_ok=True)
+    script = 'bin="$1"; src="$2"; tmp="$3"; source "$src/tests/gltf/validator.sh" >&2; echo "NODE_PATH=${validate:+$NODE_PATH}"'
+    p = subprocess.run(["bash", "-c", script, "-", os.path.abspath(bin_), os.path.abspath(src), tmp],
+                       capture_output=True, text=True)
+    m = re.search(r"^NODE_PATH=(\S+)$", p.stdout, re.M)
+    if m and os.path.isdir(os.path.join(m.group(1), "gltf-validator")):
+        return m.group(1)
+    sys.stderr.write("audit: WARNING: every glTF Validator check SKIPPED: no gltf-validator in %s/gltf-validator-node "
+                     "and tests/gltf/validator.sh could not install it (%s)\n"
+                     % (bin_dir, (p.stderr.strip() or "no reason given").splitlines()[-1]))
+    return None
+
+
 def main():
     args = sys.argv[1:]
     quick = "--quick" in args
@@ -577,12 +647,7 @@ def main():
         only = args[args.index("--only") + 1]
     bin_, src, corpus, out = [a for a in args if not a.startswith("--") and a != only][:4]
     os.makedirs(out, exist_ok=True)
-    validator = os.environ.get("GLTF_VALIDATOR_NODE_PATH")
-    if not validator:
-        guess = os.path.join(os.path.dirname(bin_), "gltf-validator-node", "node_modules")
-        validator = guess if os.path.isdir(os.path.join(guess, "gltf-validator")) else None
-    if not validator:
-        print("skipped: glTF Validator checks (no gltf-validator under the build tree; see README)")
+    validator = find_validator(bin_, src, out)
     files = [l.split("\t")[0] for l in open(os.path.join(corpus, "MANIFEST.tsv")).read().splitlines()[1:] if l.strip()]
     if only:
         files = [f for f in files if re.search(only, f)]
@@ -603,8 +668,9 @@ def main():
     by_check = {}
     for r in a.rows:
         by_check[r[2]] = by_check.get(r[2], 0) + 1
-    print("audit: %d files, %d runs, %d findings %s, %d known (known.tsv), %.0f s" % (len(files), a.runs, len(a.rows), by_check,
-                                                                          len(a.known), time.time() - t0))
+    print("audit: %d files, %d runs, %d findings %s, %d known (known.tsv), %.0f s%s" % (len(files), a.runs, len(a.rows), by_check,
+                                                                            len(a.known), time.time() - t0,
+                                                                            "" if validator else "; glTF Validator checks SKIPPED"))
     return 1 if a.rows else 0
 
 

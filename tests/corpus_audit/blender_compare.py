@@ -78,6 +78,8 @@ def gltf_colours(path):
     out = {}  # by the primitive's JSON path, as read_mesh names parts
     for mi, m in enumerate(doc.get("meshes", [])):
         for k, p in enumerate(m["primitives"]):
+            if p.get("mode", 4) not in (4, 5, 6):
+                continue  # points and lines: read_mesh names no part for them, Blender shows no face
             if "COLOR_0" not in p["attributes"]:
                 return None
             a = doc["accessors"][p["attributes"]["COLOR_0"]]

@@ -244,6 +244,20 @@ def small_fixtures(out):
     embedded(b, {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
                  "meshes": [{"primitives": [{"attributes": {"POSITION": p, "TEXCOORD_0": t, "NORMAL": n},
                                              "indices": i}]}]}, "bounds.gltf")
+    # A triangle primitive without POSITION beside one with it (magnum-plugins' GltfImporter test
+    # files have such; glTF 2.0 3.7.2.1: valid, nothing to draw; the validator warns
+    # MESH_PRIMITIVE_NO_POSITION): the other primitive is read, this one is left as it is.
+    b = Builder()
+    p = b.floats([(0, 0, 0), (1, 0, 0), (0, 1, 0)], "VEC3", minmax=True)
+    n = b.floats([(0, 0, 1)] * 3, "VEC3")
+    embedded(b, {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+                 "meshes": [{"primitives": [{"attributes": {"POSITION": p}}, {"attributes": {"NORMAL": n}}]}]},
+             "no_position.gltf")
+    # An image and no mesh (magnum-plugins' image.gltf): written unchanged, the image moved into
+    # the buffer; no accessor, so no "accessors" array (an empty one is the validator's EMPTY_ENTITY).
+    with open(os.path.join(out, "image_only.gltf"), "w") as f:
+        json.dump({"asset": {"version": "2.0"},
+                   "images": [{"uri": "data:image/png;base64," + base64.b64encode(png_bytes()).decode()}]}, f)
 
 
 def misaligned_fixture(out):

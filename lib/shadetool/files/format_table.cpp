@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <string>
 
 #include <shadetool/core/error.h>
 #include <shadetool/gltf/gltf_document.h>
@@ -80,6 +81,14 @@ bool detect_gltf(std::string_view bytes) {
 Mesh read_gltf_entry(std::string_view bytes, const std::string& name, ReadInfo& info) {
   const GltfDocument doc = read_gltf(bytes, name);
   info.notes.insert(info.notes.end(), doc.notes.begin(), doc.notes.end());  // compressed geometry decoded
+  // Points and lines are carried by glTF outputs only (cli/driver.cpp); as one Mesh they are
+  // nothing, and "no vertex in the file" (mesh_files.cpp) would be wrong: they have vertices.
+  if (doc.primitives.empty() && doc.passed_through_primitives > 0)
+    fail(name, 0, "a glTF whose primitives are points or lines only (" + std::to_string(doc.passed_through_primitives) +
+                      " POINTS/LINES primitives, " + std::to_string(doc.passed_through_vertices) +
+                      " vertices): no triangle to read as a mesh");
+  if (doc.primitives.empty())  // no mesh, or triangle primitives without POSITION only (a note names them)
+    fail(name, 0, "a glTF with no TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN primitive with positions: nothing to read as a mesh");
   return gltf_world_mesh(doc, info.notes);
 }
 void write_gltf_entry(const Mesh& mesh, const WriteOptions& options, io::ByteSink& out, WriteInfo& info) {

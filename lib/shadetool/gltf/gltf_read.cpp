@@ -325,6 +325,7 @@ GltfDocument read_document(std::string_view bytes, const std::string& name, io::
   io::gltf::decode_compressed(*source, compressed, doc.notes);
   const bool quantized = has_extension(source->json, "KHR_mesh_quantization");
   const tinygltf::Model& model = source->model;
+  std::vector<std::string> positionless;  // JSON paths of triangle primitives without POSITION
   for (std::size_t m = 0; m < model.meshes.size(); ++m)
     for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
       const int mode = model.meshes[m].primitives[p].mode;
@@ -341,9 +342,21 @@ GltfDocument read_document(std::string_view bytes, const std::string& name, io::
       gp.mesh_index = m;
       gp.primitive_index = p;
       gp.json_path = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
+      // No POSITION: nothing to draw. glTF 2.0 (3.7.2.1) lets a primitive omit it ("client
+      // implementations SHOULD skip primitive's rendering"; the validator's warning
+      // MESH_PRIMITIVE_NO_POSITION): left as it is, named in a note, not refused.
+      if (!model.meshes[m].primitives[p].attributes.count("POSITION")) {
+        positionless.push_back(gp.json_path);
+        continue;
+      }
       decode_primitive(*source, quantized, gp, name);
       doc.primitives.push_back(std::move(gp));
     }
+  if (!positionless.empty()) {
+    doc.positionless_primitives = positionless.size();
+    doc.notes.push_back(positionless[0] + (positionless.size() > 1 ? " and " + std::to_string(positionless.size() - 1) + " more primitives" : "") +
+                        ": no POSITION (nothing to draw, glTF 2.0 3.7.2.1): left as it is, not in the mesh");
+  }
   doc.source = std::move(source);
   return doc;
 }

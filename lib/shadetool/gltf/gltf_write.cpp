@@ -673,10 +673,13 @@ std::string write_gltf(const GltfDocument& doc, bool binary, const std::string& 
   io::gltf::exact_bounds(j, out.bytes, result.notes);
 
   out.align(4);
+  // The schema wants every top-level array non-empty (the validator's EMPTY_ENTITY): the two this
+  // writer made for itself go when nothing is in them (a file with images and no mesh moves its
+  // images into the buffer and has bufferViews, but no accessor).
+  if (j["bufferViews"].empty()) j.erase("bufferViews");
+  if (j["accessors"].empty()) j.erase("accessors");
   if (out.bytes.empty()) {
     j.erase("buffers");
-    if (j["bufferViews"].empty()) j.erase("bufferViews");
-    if (j["accessors"].empty()) j.erase("accessors");
   } else {
     json buffer = {{"byteLength", out.bytes.size()}};
     if (!binary && !buffer_uri.empty()) {
