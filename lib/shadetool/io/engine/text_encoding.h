@@ -44,7 +44,8 @@ inline std::string_view skip_utf8_bom(std::string_view bytes) {
 class LineEndings {
  public:
   explicit LineEndings(std::string_view bytes) : view_(bytes) {
-    if (!std::memchr(bytes.data(), '\r', bytes.size())) return;
+    // An empty view may have a null data(): memchr must not see it (UBSan: null argument).
+    if (bytes.empty() || !std::memchr(bytes.data(), '\r', bytes.size())) return;
     copy_.reserve(bytes.size());
     for (std::size_t i = 0; i < bytes.size(); ++i) {
       if (bytes[i] != '\r') {
