@@ -25,20 +25,28 @@
 #pragma GCC visibility push(default)  // public API: exported from libshadetool.so
 namespace shadetool {
 
+// Asks the kernel to back the 2 MiB-aligned interior of [p, p + bytes) with transparent huge pages
+// (madvise MADV_HUGEPAGE), for blocks of 4 MiB or more on Linux; call it before the block is first
+// written. Elsewhere, or where huge pages are off, nothing changes. The one home of the advice:
+// reserve_bulk, the fit's blocks (fit/least_squares_fit.cpp) and the glTF writer call it.
+inline void advise_huge_pages(const void* p, std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t(1) << 21;
+  if (!p || bytes < 2 * kHuge) return;
+  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(p), end = begin + bytes;
+  const std::uintptr_t b = (begin + kHuge - 1) & ~(kHuge - 1), e = end & ~(kHuge - 1);
+  if (e > b) ::madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
 template <class T, class Allocator>
 void reserve_bulk(std::vector<T, Allocator>& v, std::size_t n) {
   const bool fresh = v.capacity() < n;
   v.reserve(n);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t kHuge = std::uintptr_t(1) << 21;
-  if (!fresh || n * sizeof(T) < 2 * kHuge) return;
-  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(v.data());
-  const std::uintptr_t end = begin + n * sizeof(T);
-  const std::uintptr_t b = (begin + kHuge - 1) & ~(kHuge - 1), e = end & ~(kHuge - 1);
-  if (e > b) ::madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
-#else
-  (void)fresh;
-#endif
+  if (fresh) advise_huge_pages(v.data(), n * sizeof(T));
 }
 
 // An allocator for large scratch and output arrays: value-initialisation is default-initialisation

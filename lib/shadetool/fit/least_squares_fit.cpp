@@ -12,6 +12,7 @@
 #include <type_traits>
 
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 #include <shadetool/fit/triangle_quadrature.h>
 #include <shadetool/geometry/face_area_vector.h>
@@ -236,9 +237,11 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   const bool hand_over = spare && entry_bytes >= (std::size_t(4) << 20);
   const std::size_t block_bytes = hand_over ? std::max(entry_bytes, spare->wanted) : entry_bytes;
   std::unique_ptr<std::byte[]> block(new std::byte[block_bytes]);
+  advise_huge_pages(block.get(), block_bytes);
   // entry k: its higher vertex at 2k, its site at 2k + 1 (one cache line for both: a point that
   // finds its edge reads the site beside the vertex it compared)
   std::uint32_t* const entry = ::new (static_cast<void*>(block.get())) std::uint32_t[2 * entries];
+  reserve_bulk(q.site, S);
   q.site.resize(S);
   // site_point: of its S possible entries only `sites` are written (half of them on a closed mesh
   // under the 3-point rule). Above 4 MiB it is reserved and appended to, so that the unwritten half
@@ -246,7 +249,7 @@ void assign_sites(FitQuadrature& q, std::size_t V, FitScratch* spare) {
   // the 10k torus's quadrature: bench/fit/results.md, fit11). The same entries either way.
   const bool append_sites = S * sizeof(std::uint32_t) >= (std::size_t(4) << 20);
   if (append_sites)
-    q.site_point.reserve(S);
+    reserve_bulk(q.site_point, S);
   else
     q.site_point.resize(S);
   std::size_t sites = 0;
@@ -482,6 +485,7 @@ void apply_operator(const FitOperator& A, const XT* x, double* y, double* xAx, b
 void build_fit_operator(const FitElements& e, const std::vector<double>& positions, const FitQuadrature& q,
                         double lambda, FitOperator& A, std::vector<double>& mass_diagonal, LeastSquaresFit& fit) {
   const std::size_t N = e.nodes, T = q.tri_area.size();
+  reserve_bulk(A.diagonal, N);
   A.diagonal.assign(N, 0.0);
   A.tri_node = q.triangle_nodes();
   A.tri_area = q.tri_area.data();
@@ -1074,9 +1078,9 @@ FitElements fit_elements(const Mesh& mesh, const std::vector<std::uint32_t>& cor
     e.mesh_corner_vertex = mesh.corner_vertex.data();
     return e;
   }
-  e.tri_vertex.reserve(3 * triangles);
-  if (own_nodes) e.tri_node.reserve(3 * triangles);  // else empty: the nodes are the vertices
-  e.tri_face.reserve(triangles);
+  reserve_bulk(e.tri_vertex, 3 * triangles);
+  if (own_nodes) reserve_bulk(e.tri_node, 3 * triangles);  // else empty: the nodes are the vertices
+  reserve_bulk(e.tri_face, triangles);
   e.quad_vertex.reserve(4 * quads);
   e.quad_node.reserve(4 * quads);
   e.quad_face.reserve(quads);
@@ -1123,6 +1127,7 @@ FitQuadrature fit_quadrature(const FitElements& e, const std::vector<double>& po
   const std::size_t T = e.triangles;
   q.element_triangles = T;
   // The areas in place, then the triangles of positive area kept (all of them, the common case: copies).
+  reserve_bulk(q.tri_area, T);
   q.tri_area.resize(T);
   triangle_areas(positions, e.triangle_vertices(), T, q.tri_area.data());
   std::size_t kept = 0;
@@ -1420,7 +1425,9 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
   // The system over the nodes with mass; the others keep their point value.
   // Jacobi preconditioner and 1 / M_ii (the same with lambda = 0); 0 off the system
   const bool regularized = options.regularization > 0;
-  std::vector<double> inverse_diagonal(N, 0.0), inverse_mass(regularized ? N : 0, 0.0);
+  std::vector<double> inverse_diagonal, inverse_mass(regularized ? N : 0, 0.0);
+  reserve_bulk(inverse_diagonal, N);
+  inverse_diagonal.assign(N, 0.0);
   std::vector<std::uint32_t> off_system;
   double min_mass = std::numeric_limits<double>::infinity();  // over the nodes of the system
   for (std::size_t i = 0; i < N; ++i) {
@@ -1462,6 +1469,7 @@ LeastSquaresFit fit_with(const FitElements& e, const std::vector<double>& positi
       }
       held.reset(new std::byte[N * L * sizeof(double)]);
       held_size = N * L * sizeof(double);
+      advise_huge_pages(held.get(), held_size);
     }
     double* const b = ::new (static_cast<void*>(held.get())) double[N * L];
     std::fill(b, b + N * L, 0.0);

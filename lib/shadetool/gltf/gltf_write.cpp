@@ -11,14 +11,12 @@
 #include <limits>
 #include <unordered_map>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/core/error.h>
 #include <shadetool/core/shading_normals.h>
 #include <shadetool/core/unit_normals.h>
 #include <shadetool/geometry/polygon_triangles.h>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 #include "engine/gltf_accessor.h"
 #include "engine/gltf_source.h"
 #include "engine/gltf_tidy.h"
@@ -168,14 +166,9 @@ std::vector<T> gather(const std::vector<T>& a, std::size_t comps, const std::vec
 // memory is most of the cost of writing, as in core/bulk_reserve.h; only the 2 MiB-aligned
 // interior is advised).
 void reserve_output(std::string& s, std::size_t n) {
+  const bool fresh = s.capacity() < n;
   s.reserve(n);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t kHuge = std::uintptr_t(1) << 21;
-  if (n < 2 * kHuge) return;
-  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(s.data()), end = begin + n;
-  const std::uintptr_t b = (begin + kHuge - 1) & ~(kHuge - 1), e = end & ~(kHuge - 1);
-  if (e > b) ::madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
-#endif
+  if (fresh) advise_huge_pages(s.data(), n);
 }
 
 std::string base64(const std::string& in) {

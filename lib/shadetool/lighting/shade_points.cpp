@@ -1,6 +1,7 @@
 // shade_points.cpp: see shade_points.h.
 #include <shadetool/lighting/shade_points.h>
 
+#include <shadetool/core/bulk_reserve.h>
 #include <shadetool/lighting/engine/shade_batched.h>
 #include <shadetool/lighting/engine/shade_point.h>
 #include <shadetool/lighting/engine/skip_options.h>
@@ -122,7 +123,9 @@ std::vector<double> shade_points(const Scene& scene, const std::vector<double>& 
   eq.shininess = scene.material.shininess;
   eq.base = r.plan.base;
 
-  std::vector<double> out(3 * n);
+  std::vector<double> out;  // on huge pages from 4 MiB (core/bulk_reserve.h)
+  reserve_bulk(out, 3 * n);
+  out.resize(3 * n);
   const double* P = points_object.data();
   const double* N = normals_object.data();
   const double* V = nullptr;
