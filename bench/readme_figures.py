@@ -225,6 +225,13 @@ def fit(args):
     out.append(Figure("fit.studio.error_floor", "least squares",
                       "the least error any vertex colours in [0, 1] can have, change from point samples (torus 10k tri, studio; box-constrained minimum, 12-point rule)",
                       f"{float(m.group(1)):.1f}%" if m else "not measured", "", "", "bench/fit/results.md"))
+    # The same fit without the 8-bit bounds (`--hdr`: target and colours unclamped), where the
+    # floor above does not apply: `bench_fit errors` (12-point reference, λ = 0, 3-point rule).
+    txt = run([os.path.join(args.build_dir, "bench", "fit", "bench_fit"), "errors", SRC, "20000"])
+    m = re.search(r"^\| torus 10k tri \| studio \| HDR \|(?:[^|]*\|){5} *([+-]?\d+)% *\|", txt, re.M)
+    out.append(judged("fit.studio.error_hdr", "least squares",
+                      "relative L2 error against Phong without the 8-bit bounds (`--hdr`), change from point samples (torus 10k tri, studio, 3-point rule)",
+                      float(m.group(1)) if m else None, -30, "bench/fit/results.md", higher_is_better=False, unit="%", digits=0))
     return out
 
 

@@ -12,7 +12,7 @@
 #            --out DIR (default bench/results), --jobs N (build jobs, default 2)
 #
 # It installs the anchors' Debian packages itself (apt-get, when run as root or with sudo):
-# libcgal-dev libopen3d-dev libassimp-dev assimp-utils hyperfine gnuplot-nox time xvfb python3,
+# libcgal-dev libopen3d-dev libassimp-dev assimp-utils hyperfine gnuplot-nox time xvfb python3 libosmesa6-dev (the render anchor, Mesa llvmpipe),
 # and meshlab when the archive has it. The main build never needs them: the benchmark targets exist
 # only with -DSHADETOOL_BUILD_BENCH=ON, in a build directory of their own.
 set -euo pipefail
@@ -45,7 +45,7 @@ if [ $install = 1 ]; then
   sudo=""
   [ "$(id -u)" = 0 ] || sudo=$(command -v sudo || true)
   if [ "$(id -u)" = 0 ] || [ -n "$sudo" ]; then
-    want="libcgal-dev libopen3d-dev libassimp-dev assimp-utils hyperfine gnuplot-nox time xvfb python3"
+    want="libcgal-dev libopen3d-dev libassimp-dev assimp-utils hyperfine gnuplot-nox time xvfb python3 libosmesa6-dev"
     missing=""
     for p in $want meshlab; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
     if [ -n "$missing" ]; then

@@ -392,3 +392,94 @@ TEST_CASE("glTF read from a file: a bad BIN chunk or index gives tinygltf's mess
     if (what == "index out of range") CHECK_THAT(expected, Catch::Contains("index 9"));
   }
 }
+
+TEST_CASE("glTF bad input that tinygltf words without a path: named by its JSON path first", "[gltf][bad]") {
+  // Truth: glTF 2.0 5.11.4 (byteStride 4..252, a multiple of 4), GLB 4.4.3.3 (buffer 0 in the BIN
+  // chunk), 5.18 (an image has a uri or a bufferView), the validator's BUFFER_BYTE_LENGTH_MISMATCH
+  // (an external file shorter than byteLength).
+  const std::string glb = quad_glb(5123);
+  json j = glb_json(glb);
+  const std::string bin = glb.substr(20 + u32_at(glb, 12) + 8);
+  SECTION("byteStride not a multiple of 4") {
+    j["bufferViews"][0]["byteStride"] = 6;
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }),
+               Catch::Contains("x.glb: bufferViews[0].byteStride: 6 is not a multiple of 4"));
+  }
+  SECTION("byteStride above 252") {
+    j["bufferViews"][0]["byteStride"] = 256;
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }), Catch::Contains("bufferViews[0].byteStride: 256"));
+  }
+  SECTION("buffer 0 longer than the BIN chunk") {
+    j["buffers"][0]["byteLength"] = bin.size() + 64;
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }),
+               Catch::Contains("x.glb: buffers[0].byteLength: " + std::to_string(bin.size() + 64) +
+                               " bytes declared, but the GLB's BIN chunk holds " + std::to_string(bin.size())));
+  }
+  SECTION("an image with neither uri nor bufferView") {
+    j["images"] = json::array({{{"name", "lost"}}});
+    CHECK_THAT(error_of([&] { read_gltf(make_glb(j, bin), "x.glb"); }), Catch::Contains("x.glb: images[0]: neither uri nor bufferView"));
+  }
+}
+
+TEST_CASE("glTF read: external buffers by percent-encoded uri, longer than byteLength, or short", "[gltf]") {
+  // Truth: the same quad read from a GLB. A file longer than byteLength is valid glTF (the
+  // validator flags only a shorter one); its first byteLength bytes are the buffer.
+  ScratchDir dir;
+  const std::string glb = quad_glb(5123);
+  const Mesh expected = read_gltf(glb, "q.glb").primitives.at(0).mesh;
+  json j = glb_json(glb);
+  const std::string bin = glb.substr(20 + u32_at(glb, 12) + 8);
+  j["buffers"][0]["uri"] = "quad%20data.bin";  // the file "quad data.bin"
+  j["buffers"][0]["byteLength"] = bin.size();
+  const std::string path = dir / "quad.gltf";
+  write_file(path, j.dump());
+  SECTION("percent-encoded uri, exact size") {
+    write_file(dir / "quad data.bin", bin);
+    const GltfDocument doc = read_gltf(io::read_file_bytes(path), path);
+    CHECK(doc.primitives.at(0).mesh.positions == expected.positions);
+    CHECK(doc.primitives.at(0).mesh.corner_vertex == expected.corner_vertex);
+  }
+  SECTION("a file 100 bytes longer than byteLength") {
+    write_file(dir / "quad data.bin", bin + std::string(100, '\x7f'));
+    const GltfDocument doc = read_gltf(io::read_file_bytes(path), path);
+    CHECK(doc.primitives.at(0).mesh.positions == expected.positions);
+    CHECK(doc.primitives.at(0).mesh.corner_vertex == expected.corner_vertex);
+  }
+  SECTION("a file shorter than byteLength: refused, named by its path") {
+    write_file(dir / "quad data.bin", bin.substr(0, 40));
+    CHECK_THAT(error_of([&] { read_gltf(io::read_file_bytes(path), path); }),
+               Catch::Contains("buffers[0].byteLength: " + std::to_string(bin.size()) +
+                               " bytes declared, but 'quad%20data.bin' holds 40"));
+  }
+}
+
+TEST_CASE("glTF read: indices without a bufferView are zeros, then their sparse values (5.1.1)", "[gltf]") {
+  // Truth: the same quad with its indices in a buffer view. tinygltf's loader refuses such indices;
+  // the reader gives it the JSON without them and reads them itself.
+  const std::string glb = quad_glb(5123);
+  const Mesh expected = read_gltf(glb, "q.glb").primitives.at(0).mesh;
+  json j = glb_json(glb);
+  std::string bin = glb.substr(20 + u32_at(glb, 12) + 8);
+  SECTION("sparse values give the triangles") {
+    const std::size_t at = bin.size();
+    bin += std::string("\0\1\2\3\4\5\0\0", 8);  // sparse indices 0..5 (UNSIGNED_BYTE), padded
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 6}});
+    j["buffers"][0]["byteLength"] = bin.size();
+    j["accessors"][1].erase("bufferView");
+    j["accessors"][1]["sparse"] = {{"count", 6},
+                                   {"indices", {{"bufferView", int(j["bufferViews"].size()) - 1}, {"componentType", 5121}}},
+                                   {"values", {{"bufferView", 1}}}};
+    const GltfDocument doc = read_gltf(make_glb(j, bin), "q.glb");
+    CHECK(doc.primitives.at(0).mesh.positions == expected.positions);
+    CHECK(doc.primitives.at(0).mesh.corner_vertex == expected.corner_vertex);
+  }
+  SECTION("no sparse values: every index 0") {
+    j["accessors"][1].erase("bufferView");
+    const std::string message = error_of([&] {
+      const GltfDocument doc = read_gltf(make_glb(j, bin), "q.glb");
+      for (const auto& p : doc.primitives)
+        for (std::uint32_t v : p.mesh.corner_vertex) CHECK(v == 0);
+    });
+    CHECK_THAT(message, !Catch::Contains("invalid bufferView"));
+  }
+}

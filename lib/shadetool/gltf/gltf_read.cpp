@@ -1,6 +1,8 @@
 // gltf_read.cpp: .gltf / .glb -> GltfDocument (see gltf_document.h).
 #include <shadetool/gltf/gltf_document.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -49,19 +51,134 @@ bool has_extension(const json& j, const char* ext) {
   return false;
 }
 
-// Every external buffer must be there: one line naming it, before tinygltf's own message.
-void require_buffer_files(const json& j, const std::string& name) {
-  if (!j.contains("buffers") || !j["buffers"].is_array()) return;
+// A URI's percent-encoded bytes decoded (RFC 3986, 2.1; as tinygltf decodes a buffer's uri): an
+// exporter writes "my%20mesh.bin" for the file "my mesh.bin". A '%' without two hex digits is kept.
+std::string uri_decoded(const std::string& uri) {
+  const auto hex = [](char c) {
+    return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+  };
+  std::string out;
+  out.reserve(uri.size());
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+      out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// External buffer files longer than their byteLength, by canonical path: valid glTF (the Khronos
+// validator's BUFFER_BYTE_LENGTH_MISMATCH is for a shorter file only), whose first byteLength bytes
+// are the buffer. tinygltf refuses any size but byteLength ("File size mismatch"), so the reader's
+// file callback (read_buffer_file) hands it those bytes.
+using LongerFiles = std::vector<std::pair<std::string, std::uint64_t>>;
+
+std::string canonical_or_same(const std::string& path) {
+  std::error_code ec;
+  const fs::path c = fs::weakly_canonical(fs::path(path), ec);
+  return ec ? path : c.string();
+}
+
+bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  if (!tinygltf::ReadWholeFile(out, err, path, nullptr)) return false;
+  const LongerFiles& longer = *static_cast<const LongerFiles*>(user);
+  const std::string key = canonical_or_same(path);
+  for (const auto& [file, length] : longer)
+    if (file == key && out->size() > length) out->resize(std::size_t(length));
+  return true;
+}
+
+// Every external buffer must be there and hold its byteLength: one line naming its JSON path,
+// before tinygltf's own words. Returns the files longer than their byteLength (LongerFiles).
+LongerFiles require_buffer_files(const json& j, const std::string& name) {
+  LongerFiles longer;
+  if (!j.contains("buffers") || !j["buffers"].is_array()) return longer;
   const fs::path base = fs::path(name).parent_path();
   for (std::size_t b = 0; b < j["buffers"].size(); ++b) {
     const json& buf = j["buffers"][b];
     if (!buf.is_object() || !buf.contains("uri") || !buf["uri"].is_string()) continue;
     const std::string uri = buf["uri"].get<std::string>();
     if (uri.rfind("data:", 0) == 0) continue;
+    const std::string at = "buffers[" + std::to_string(b) + "]";
     std::error_code ec;
-    if (!fs::is_regular_file(base / uri, ec))
-      fail(name, 0, "buffers[" + std::to_string(b) + "].uri: cannot read '" + uri + "' (no such file beside the .gltf)");
+    const fs::path file = base / uri_decoded(uri);
+    if (!fs::is_regular_file(file, ec))
+      fail(name, 0, at + ".uri: cannot read '" + uri + "' (no such file beside the .gltf)");
+    if (!buf.contains("byteLength") || !buf["byteLength"].is_number_unsigned()) continue;  // tinygltf's schema words
+    const std::uint64_t declared = buf["byteLength"].get<std::uint64_t>();
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (ec) continue;
+    if (size < declared)
+      fail(name, 0, at + ".byteLength: " + std::to_string(declared) + " bytes declared, but '" + uri + "' holds " +
+                        std::to_string(size));
+    if (size > declared) longer.emplace_back(canonical_or_same(file.string()), declared);
   }
+  return longer;
+}
+
+// A buffer view's byteStride, where tinygltf refuses it in its own words: glTF 2.0 5.11.4 (4 to
+// 252, a multiple of 4).
+void require_byte_strides(const json& j, const std::string& name) {
+  if (!j.contains("bufferViews") || !j["bufferViews"].is_array()) return;
+  for (std::size_t v = 0; v < j["bufferViews"].size(); ++v) {
+    const json& view = j["bufferViews"][v];
+    if (!view.is_object() || !view.contains("byteStride") || !view["byteStride"].is_number_integer()) continue;
+    const long long stride = view["byteStride"].get<long long>();
+    if (stride < 4 || stride > 252 || stride % 4 != 0)
+      fail(name, 0, "bufferViews[" + std::to_string(v) + "].byteStride: " + std::to_string(stride) +
+                        " is not a multiple of 4 from 4 to 252");
+  }
+}
+
+// A GLB's buffer 0 without a uri is the BIN chunk (glTF 2.0, 5.1.4 / GLB 4.4.3.3): its byteLength
+// must fit in the chunk (which may be up to 3 bytes longer). An image needs a uri or a bufferView
+// (5.18). Named by their JSON path here; tinygltf's loader says them without one.
+void require_bin_chunk_and_images(std::string_view bytes, bool binary, std::size_t json_chunk, const json& j,
+                                  const std::string& name) {
+  if (binary && j.contains("buffers") && j["buffers"].is_array() && !j["buffers"].empty() && j["buffers"][0].is_object() &&
+      !j["buffers"][0].contains("uri") && j["buffers"][0].contains("byteLength") &&
+      j["buffers"][0]["byteLength"].is_number_unsigned()) {
+    const std::uint64_t declared = j["buffers"][0]["byteLength"].get<std::uint64_t>();
+    const std::uint64_t header = 20 + std::uint64_t(json_chunk);
+    std::uint64_t chunk = 0;  // no BIN chunk: 0 bytes
+    if (header + 8 <= bytes.size() && le32(bytes.data() + header + 4) == 0x004E4942u)
+      chunk = std::min<std::uint64_t>(le32(bytes.data() + header), bytes.size() - header - 8);
+    if (declared > chunk)
+      fail(name, 0, "buffers[0].byteLength: " + std::to_string(declared) + " bytes declared, but the GLB's BIN chunk holds " +
+                        std::to_string(chunk));
+  }
+  if (!j.contains("images") || !j["images"].is_array()) return;
+  for (std::size_t i = 0; i < j["images"].size(); ++i) {
+    const json& image = j["images"][i];
+    if (image.is_object() && !image.contains("uri") && !image.contains("bufferView"))
+      fail(name, 0, "images[" + std::to_string(i) + "]: neither uri nor bufferView (glTF 2.0 5.18: one is required)");
+  }
+}
+
+// Primitives whose indices accessor has no bufferView: {mesh, primitive, accessor}. Such an
+// accessor is zeros, then its sparse values (glTF 2.0, 5.1.1: "When bufferView is undefined, the
+// accessor MUST be initialized with zeros"), as engine/gltf_accessor.cpp reads it; tinygltf's loader
+// refuses it as indices ("accessor[N] invalid bufferView"), so the loader is given the JSON without
+// those indices and they are put back into its model after.
+std::vector<std::array<std::size_t, 3>> viewless_indices(const json& j) {
+  std::vector<std::array<std::size_t, 3>> out;
+  if (!j.contains("meshes") || !j["meshes"].is_array() || !j.contains("accessors") || !j["accessors"].is_array()) return out;
+  const json& accessors = j["accessors"];
+  for (std::size_t m = 0; m < j["meshes"].size(); ++m) {
+    const json& mesh = j["meshes"][m];
+    if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+    for (std::size_t p = 0; p < mesh["primitives"].size(); ++p) {
+      const json& prim = mesh["primitives"][p];
+      if (!prim.is_object() || !prim.contains("indices") || !prim["indices"].is_number_unsigned()) continue;
+      const std::size_t a = prim["indices"].get<std::size_t>();
+      if (prim.contains("extensions") && prim["extensions"].is_object() && !prim["extensions"].empty()) continue;  // compressed: decode_compressed's
+      if (a < accessors.size() && accessors[a].is_object() && !accessors[a].contains("bufferView")) out.push_back({m, p, a});
+    }
+  }
+  return out;
 }
 
 // The node graph must be a forest (glTF 2.0, 3.5.3): no node is its own ancestor, none has two
@@ -265,12 +382,23 @@ GltfDocument read_document(std::string_view bytes, const std::string& name, io::
   io::gltf::require_schema_types(source->json, name);
   io::gltf::CompressedPlan compressed;  // what the loader must not see (engine/gltf_decompress.h)
   std::string edited_json = io::gltf::prepare_compressed(*source, compressed);
-  require_buffer_files(source->json, name);
+  const LongerFiles longer = require_buffer_files(source->json, name);
+  require_byte_strides(source->json, name);
+  require_bin_chunk_and_images(bytes, binary, json_text.size(), source->json, name);
   require_node_forest(source->json, name);
+  const std::vector<std::array<std::size_t, 3>> viewless = viewless_indices(source->json);
+  if (!viewless.empty()) {  // the loader's JSON without them (viewless_indices)
+    json for_loader = edited_json.empty() ? source->json : json::parse(edited_json);
+    for (const auto& [m, p, a] : viewless) for_loader["meshes"][m]["primitives"][p].erase("indices");
+    edited_json = for_loader.dump();
+  }
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_bytes, nullptr);
   loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
+  if (!longer.empty())
+    loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_buffer_file, &tinygltf::WriteWholeFile,
+                           const_cast<LongerFiles*>(&longer)});
   std::string err, warn;
   std::string base = fs::path(name).parent_path().string();
   if (base.empty()) base = ".";
@@ -312,6 +440,7 @@ GltfDocument read_document(std::string_view bytes, const std::string& name, io::
     fail(name, 0, line);
   }
 
+  for (const auto& [m, p, a] : viewless) source->model.meshes[m].primitives[p].indices = int(a);
   if (!bin.empty()) {
     source->model.buffers[0].data = std::vector<unsigned char>();
     source->model.buffers[0].uri.clear();
