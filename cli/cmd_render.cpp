@@ -3,6 +3,7 @@
 // the picture to the driver (OutputKind::Image), which checks and writes the output like every
 // other subcommand's: PNG (8-bit sRGB) or, with --hdr or a .pfm output, PFM (linear float).
 #include <CLI/CLI.hpp>
+#include <array>
 
 #include <filesystem>
 #include <string>
@@ -28,9 +29,9 @@ namespace fs = std::filesystem;
 struct RenderCliOptions {
   std::string scene;
   std::string shading = shadetool::render_shading_name(shadetool::RenderShading::Phong);
-  std::vector<int> size{800, 600};
+  std::array<int, 2> size{800, 600};  // one value W,H (or W H): an input after it is not taken as a third
   int samples = 1;
-  std::vector<double> background{0, 0, 0};
+  std::array<double, 3> background{0, 0, 0};
   std::string model;
   std::string space = shadetool::shading_space_name(shadetool::ShadingSpace::Auto);
   bool hdr = false;
@@ -79,11 +80,9 @@ RegisterCommand reg("render", HelpSection::Shade, [](CLI::App& app) -> std::func
       ->check(CLI::IsMember(shadetool::camera_choice_names()));
   sub->add_option("--shading", opt.shading, "flat (face normal), gouraud (baked vertex colours) or phong (per sample; default)")
       ->check(CLI::IsMember(shadetool::render_shading_names()));
-  sub->add_option("--size", opt.size, "Image size W,H in pixels (default 800,600)")->delimiter(',')->expected(2);
+  sub->add_option("--size", opt.size, "Image size W,H in pixels (default 800,600)")->delimiter(',');
   sub->add_option("--samples", opt.samples, "N: N x N samples per pixel, box-filtered (default 1; 1..16)");
-  sub->add_option("--background", opt.background, "Background colour R,G,B, linear (default 0,0,0)")
-      ->delimiter(',')
-      ->expected(3);
+  sub->add_option("--background", opt.background, "Background colour R,G,B, linear (default 0,0,0)")->delimiter(',');
   sub->add_option("--model", opt.model, "Shading model, overriding the scene's")
       ->check(CLI::IsMember(shadetool::shading_model_names()));
   sub->add_option("--space", opt.space,

@@ -132,6 +132,15 @@ for args in "" "no-such-command" "normals" "normals $tmp/a.obj --crease" "normal
   "$bin" $args > "$tmp/out.txt" 2> "$tmp/err.txt"
   check "shadetool $args: parse error exits 2" test $? -eq 2 -a ! -s "$tmp/out.txt" -a -s "$tmp/err.txt"
 done
+# A list option before the inputs takes its one value, not the input after it (`--size 160,120
+# IN`, as people type it: CLI11 took IN as a third value and refused the line), and W H still works.
+for args in "--size 32,24" "--size 32 24" "--size 32,24 --background 0.1,0.2,0.3"; do
+  rm -f "$tmp/size.png"
+  "$bin" render $args "$tmp/a.obj" -o "$tmp/size.png" -q 2> "$tmp/err.txt"
+  check "render $args IN: exit 0, a 32 x 24 image" test $? -eq 0 -a "$(od -An -tu1 -j16 -N8 "$tmp/size.png" 2>/dev/null | tr -s ' ')" = " 0 0 0 32 0 0 0 24"
+done
+"$bin" render --size 32 "$tmp/a.obj" -o "$tmp/size1.png" > "$tmp/out.txt" 2> "$tmp/err.txt"
+check "render --size W IN: parse error exits 2, no image" test $? -eq 2 -a ! -e "$tmp/size1.png"
 # Subcommands in --help by section (inspect, edit, shade), then by name (cli/command_registry.h).
 order=$("$bin" --help | awk '/^Subcommands:/{s=1; next} s && /^  [a-z]/{printf "%s ", $1}')
 check "--help lists the subcommands in section order" test "$order" = "info normals repair transform bake-lighting occlusion render "
