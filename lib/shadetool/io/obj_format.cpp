@@ -23,6 +23,7 @@
 #include <shadetool/io/file_bytes.h>
 #include <shadetool/io/engine/newell_normal.h>
 #include <shadetool/io/engine/obj_statement_counts.h>
+#include <shadetool/io/engine/rgba_channels.h>
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/split_face_colors.h>
 #include <shadetool/io/engine/text_encoding.h>
@@ -856,10 +857,7 @@ void build_vertex_colors(ObjLines& s, ReadInfo& info) {
   Mesh& mesh = s.mesh;
   mesh.color_channels = s.color_channels;
   mesh.colors_are_float = true;
-  mesh.vertex_colors.resize(mesh.num_vertices() * std::size_t(s.color_channels));
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v)
-    for (int k = 0; k < s.color_channels; ++k)
-      mesh.vertex_colors[v * std::size_t(s.color_channels) + std::size_t(k)] = s.rgba[4 * v + std::size_t(k)];
+  pack_rgba(s.rgba, s.color_channels, mesh.vertex_colors);
   if (s.colored_vertices < mesh.num_vertices())
     info.notes.push_back(std::to_string(mesh.num_vertices() - s.colored_vertices) + " of " +
                          std::to_string(mesh.num_vertices()) + " vertices have no colour: given white");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <shadetool/core/error.h>
+#include <shadetool/io/engine/rgba_channels.h>
 
 namespace shadetool::io {
 
@@ -163,14 +164,8 @@ Mesh read_off_binary_body(std::string_view body, std::size_t header_bytes, OffBi
     }
     Mesh& m = a.mesh;
     const int channels = a.any_alpha ? 4 : 3;
-    auto pack = [&](const std::vector<float>& rgba, std::vector<float>& out) {
-      const std::size_t n = rgba.size() / 4;
-      out.resize(n * std::size_t(channels));
-      for (std::size_t j = 0; j < n; ++j)
-        for (int k = 0; k < channels; ++k) out[j * std::size_t(channels) + std::size_t(k)] = rgba[4 * j + std::size_t(k)];
-    };
-    if (flags.has_c) pack(a.vrgba, m.vertex_colors);
-    if (!a.frgba.empty()) pack(a.frgba, m.face_colors);
+    if (flags.has_c) pack_rgba(a.vrgba, channels, m.vertex_colors);
+    if (!a.frgba.empty()) pack_rgba(a.frgba, channels, m.face_colors);
     m.color_channels = channels;
     m.colors_are_float = true;
     m.precision = ValuePrecision::Float;

@@ -11,6 +11,7 @@
 #include <shadetool/core/bulk_reserve.h>
 #include <shadetool/io/engine/number_text.h>
 #include <shadetool/io/split_corner_normals.h>
+#include <shadetool/io/engine/rgba_channels.h>
 #include <shadetool/io/engine/text_encoding.h>
 #include <shadetool/io/engine/text_parse.h>
 #include <shadetool/io/off_binary.h>
@@ -293,14 +294,8 @@ void build_off_attributes(const OffHeader& h, const OffBody& body, const std::ve
     for (std::size_t i = 3; i < frgba.size() && opaque; i += 4) opaque = frgba[i] == 1.0f;
     if (opaque) channels = 3;
   }
-  auto pack = [&](const std::vector<float>& rgba, std::vector<float>& out) {
-    const std::size_t n = rgba.size() / 4;
-    out.resize(n * std::size_t(channels));
-    for (std::size_t i = 0; i < n; ++i)
-      for (int k = 0; k < channels; ++k) out[i * std::size_t(channels) + std::size_t(k)] = rgba[4 * i + std::size_t(k)];
-  };
-  if (h.has_c) pack(vrgba, mesh.vertex_colors);
-  if (!frgba.empty()) pack(frgba, mesh.face_colors);
+  if (h.has_c) pack_rgba(vrgba, channels, mesh.vertex_colors);
+  if (!frgba.empty()) pack_rgba(frgba, channels, mesh.face_colors);
   mesh.color_channels = channels;
   mesh.colors_are_float = body.colors_float;
   if (h.has_st) {
