@@ -79,8 +79,6 @@ struct GltfDocument {
   std::vector<GltfPrimitive> primitives;     // triangle primitives, in file order
   std::size_t passed_through_primitives = 0; // POINTS / LINES primitives left as they are
   std::size_t passed_through_vertices = 0;   // their POSITION accessors' counts (what info reports)
-  std::size_t positionless_primitives = 0;   // triangle primitives without POSITION, left as they are
-                                             // (nothing to draw: glTF 2.0 3.7.2.1; named in notes)
   bool was_binary = false;                   // read from a .glb
   std::vector<std::string> notes;            // what reading changed (compressed geometry decoded)
   // Written with KHR_materials_unlit (baked colours, gltf/gltf_baked.h): a fresh document gets one

@@ -481,11 +481,9 @@ GltfDocument read_document(std::string_view bytes, const std::string& name, io::
       decode_primitive(*source, quantized, gp, name);
       doc.primitives.push_back(std::move(gp));
     }
-  if (!positionless.empty()) {
-    doc.positionless_primitives = positionless.size();
+  if (!positionless.empty())
     doc.notes.push_back(positionless[0] + (positionless.size() > 1 ? " and " + std::to_string(positionless.size() - 1) + " more primitives" : "") +
                         ": no POSITION (nothing to draw, glTF 2.0 3.7.2.1): left as it is, not in the mesh");
-  }
   doc.source = std::move(source);
   return doc;
 }
